@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// locus configuration: version, and the assertion hook for programming errors.
+//
+// LOCUS_ASSERT(cond, msg) checks preconditions (an index out of range, a broken invariant that
+// only a caller's bug can cause). It is active in debug builds (NDEBUG undefined) and whenever
+// LOCUS_ENABLE_ASSERTS is defined; otherwise it compiles to nothing. Bad *data* (NaN, degenerate
+// shapes, malformed files) is never an assertion: queries return documented results and
+// algorithms return a Status.
+//
+// The default handler prints file:line and the message to stderr and aborts. Replace it with
+// set_assert_handler(); the handler is process-wide, set it once at start-up.
+
+#define LOCUS_VERSION_MAJOR 0
+#define LOCUS_VERSION_MINOR 1
+#define LOCUS_VERSION_PATCH 0
+
+namespace locus {
+
+/// Signature of an assertion handler: the failed condition, a message, the source location.
+using AssertHandler = void (*)(const char* condition, const char* message, const char* file,
+                               int line);
+
+/// Installs `handler` (nullptr restores the default) and returns the previous one.
+AssertHandler set_assert_handler(AssertHandler handler) noexcept;
+
+namespace detail {
+[[noreturn]] void assert_failed(const char* condition, const char* message, const char* file,
+                                int line) noexcept;
+}  // namespace detail
+
+}  // namespace locus
+
+#if !defined(NDEBUG) || defined(LOCUS_ENABLE_ASSERTS)
+#define LOCUS_ASSERT(cond, msg) \
+  ((cond) ? static_cast<void>(0) : ::locus::detail::assert_failed(#cond, msg, __FILE__, __LINE__))
+#else
+#define LOCUS_ASSERT(cond, msg) static_cast<void>(0)
+#endif
