@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages locus needs, if any is missing (idempotent). Sourced by the
+# other scripts: `ensure_packages pkg...`.
+ensure_packages() {
+  local missing=()
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "need root to install: ${missing[*]}" >&2; return 1; }
+    sudo="sudo"
+  fi
+  echo "installing Debian packages: ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+# The toolchain every build needs.
+LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build)
+# Test and benchmark dependencies: GoogleTest, GMP rationals (exact oracle), Google Benchmark,
+# Eigen (test/benchmark oracle for the numerics).
+LOCUS_TEST_PACKAGES=(libgtest-dev libgmp-dev libbenchmark-dev libeigen3-dev)

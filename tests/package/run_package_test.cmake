@@ -1,0 +1,20 @@
+# Installs the locus build into a scratch prefix, then builds and runs tests/package twice:
+# once via find_package(locus) against that prefix, once via add_subdirectory(locus source).
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "command failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+endfunction()
+run(${CMAKE_COMMAND} --install ${LOCUS_BUILD_DIR} --prefix ${prefix})
+foreach(mode find_package add_subdirectory)
+  set(bdir ${WORK_DIR}/${mode})
+  run(${CMAKE_COMMAND} -S ${LOCUS_SOURCE_DIR}/tests/package -B ${bdir} -G ${GENERATOR}
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DLOCUS_CONSUMER_MODE=${mode}
+      -DLOCUS_SOURCE_DIR=${LOCUS_SOURCE_DIR})
+  run(${CMAKE_COMMAND} --build ${bdir} -j2)
+  run(${bdir}/consumer)
+  message(STATUS "package consumer via ${mode}: ok")
+endforeach()
