@@ -66,11 +66,21 @@ void append_escaped(std::string& out, std::string_view s) {
   for (char ch : s) {
     const auto u = static_cast<unsigned char>(ch);
     switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
       default:
         if (u < 0x20 && ch != '\t' && ch != '\n') break;  // not allowed in XML 1.0
         if (u == 0x7f) break;
@@ -122,8 +132,10 @@ void style_attrs(Element& e, const SvgStyle& st, std::string_view fill, bool str
     bool dash_ok = !st.dash.empty();
     double dash_sum = 0.0;
     for (double d : st.dash) {
-      if (!nonneg_finite(d)) dash_ok = false;
-      else dash_sum += d;
+      if (!nonneg_finite(d))
+        dash_ok = false;
+      else
+        dash_sum += d;
     }
     if (dash_ok && dash_sum > 0.0) {
       e.raw(" stroke-dasharray=\"");
@@ -138,8 +150,7 @@ void style_attrs(Element& e, const SvgStyle& st, std::string_view fill, bool str
     e.raw(" stroke=\"none\"");
   }
   e.attr("fill", fill.empty() ? std::string_view("none") : fill);
-  if (is_finite(st.opacity) && st.opacity >= 0.0 && st.opacity < 1.0)
-    e.attr("opacity", st.opacity);
+  if (is_finite(st.opacity) && st.opacity >= 0.0 && st.opacity < 1.0) e.attr("opacity", st.opacity);
   if (is_finite(st.fill_opacity) && st.fill_opacity >= 0.0 && st.fill_opacity < 1.0)
     e.attr("fill-opacity", st.fill_opacity);
 }
@@ -195,8 +206,7 @@ void SvgWriter::add_line(const Vec2d& p, const Vec2d& d, bool ray, const SvgStyl
   // Store a unit direction so that clipping parameters stay well scaled.
   const Vec2d u = normalize(d);
   if (u.x == 0.0 && u.y == 0.0) return;
-  items_.push_back(
-      Item{ray ? Item::Kind::ray : Item::Kind::line, {{p, u}}, 0, 0, 0, false, {}, s});
+  items_.push_back(Item{ray ? Item::Kind::ray : Item::Kind::line, {{p, u}}, 0, 0, 0, false, {}, s});
 }
 
 void SvgWriter::add_arrow(const Vec2d& a, const Vec2d& b, const SvgStyle& s) {
@@ -312,8 +322,10 @@ SvgWriter::Mapping SvgWriter::mapping() const {
             const double a = k * (kPi / 2);
             if (a > a0 + span) break;
             const int q = static_cast<int>(std::fmod(std::fmod(k, 4.0) + 4.0, 4.0));
-            const Vec2d dir = q == 0 ? Vec2d{1, 0} : q == 1 ? Vec2d{0, 1} : q == 2 ? Vec2d{-1, 0}
-                                                                                    : Vec2d{0, -1};
+            const Vec2d dir = q == 0   ? Vec2d{1, 0}
+                              : q == 1 ? Vec2d{0, 1}
+                              : q == 2 ? Vec2d{-1, 0}
+                                       : Vec2d{0, -1};
             b.add(c + r * dir);
           }
           break;
@@ -327,11 +339,10 @@ SvgWriter::Mapping SvgWriter::mapping() const {
 
   Mapping m{};
   m.margin = nonneg_finite(options_.margin) ? options_.margin : 0.0;
-  const double mw = is_finite(options_.max_width) && options_.max_width > 1.0 ? options_.max_width
-                                                                               : 480.0;
-  const double mh = is_finite(options_.max_height) && options_.max_height > 1.0
-                        ? options_.max_height
-                        : 480.0;
+  const double mw =
+      is_finite(options_.max_width) && options_.max_width > 1.0 ? options_.max_width : 480.0;
+  const double mh =
+      is_finite(options_.max_height) && options_.max_height > 1.0 ? options_.max_height : 480.0;
   Vec2d lo = b.empty ? Vec2d{-1, -1} : b.lo;
   Vec2d hi = b.empty ? Vec2d{1, 1} : b.hi;
   // Half extents computed without overflow; centre likewise.
@@ -354,9 +365,36 @@ SvgWriter::Mapping SvgWriter::mapping() const {
   m.inner_hi = mid + half;
   m.width = 2.0 * half.x * scale + 2.0 * m.margin;
   m.height = 2.0 * half.y * scale + 2.0 * m.margin;
-  const Vec2d pad{m.margin / scale, m.margin / scale};
-  m.lo = m.inner_lo - pad;
-  m.hi = m.inner_hi + pad;
+  m.origin_px = {m.margin, m.margin};
+
+  // Grow the canvas (never shrink the scale) so that text labels fit. The extent of a label is
+  // estimated: 0.6 em per character (UTF-8 continuation bytes do not count), 1 em high.
+  double grow_l = 0, grow_r = 0, grow_t = 0, grow_b = 0;
+  for (const Item& it : items_) {
+    if (it.kind != Item::Kind::text) continue;
+    const SvgStyle& st = it.style;
+    const double fs = nonneg_finite(st.font_size) ? st.font_size : 14.0;
+    double chars = 0;
+    for (char ch : it.str)
+      if ((static_cast<unsigned char>(ch) & 0xC0) != 0x80) chars += 1;
+    const double tw = 0.6 * fs * chars;
+    const Vec2d p = it.pts[0][0];
+    const double x = (p.x - m.inner_lo.x) * scale + m.margin + (is_finite(st.text_dx) ? st.text_dx : 0);
+    const double y = (m.inner_hi.y - p.y) * scale + m.margin - (is_finite(st.text_dy) ? st.text_dy : 0);
+    const double x0 = st.anchor == SvgAnchor::start    ? x
+                      : st.anchor == SvgAnchor::middle ? x - 0.5 * tw
+                                                       : x - tw;
+    if (!is_finite(x0) || !is_finite(y)) continue;
+    grow_l = std::max(grow_l, -x0 + 2.0);
+    grow_r = std::max(grow_r, x0 + tw + 2.0 - m.width);
+    grow_t = std::max(grow_t, -(y - 0.8 * fs) + 2.0);
+    grow_b = std::max(grow_b, y + 0.3 * fs + 2.0 - m.height);
+  }
+  m.origin_px += Vec2d{grow_l, grow_t};
+  m.width += grow_l + grow_r;
+  m.height += grow_t + grow_b;
+  m.lo = {m.inner_lo.x - m.origin_px.x / scale, m.inner_hi.y - (m.height - m.origin_px.y) / scale};
+  m.hi = {m.inner_lo.x + (m.width - m.origin_px.x) / scale, m.inner_hi.y + m.origin_px.y / scale};
   return m;
 }
 
@@ -417,8 +455,10 @@ void SvgWriter::add_segment3(const Vec3d& a, const Vec3d& b, bool arrow, const S
   };
   Vec2d q0, q1;
   if (!proj(pa, q0) || !proj(pb, q1)) return;
-  if (arrow) add_arrow(q0, q1, s);
-  else add_segment(q0, q1, s);
+  if (arrow)
+    add_arrow(q0, q1, s);
+  else
+    add_segment(q0, q1, s);
 }
 
 void SvgWriter::add_point3(const Vec3d& p, const SvgStyle& s) {
@@ -459,7 +499,8 @@ void SvgWriter::add_polyline3(const std::vector<Vec3d>& pts, bool closed, const 
 std::string SvgWriter::to_string() const {
   const Mapping m = mapping();
   const auto px = [&m](const Vec2d& p) -> Vec2d {
-    return {(p.x - m.inner_lo.x) * m.scale + m.margin, (m.inner_hi.y - p.y) * m.scale + m.margin};
+    return {(p.x - m.inner_lo.x) * m.scale + m.origin_px.x,
+            (m.inner_hi.y - p.y) * m.scale + m.origin_px.y};
   };
 
   std::string out;
@@ -580,8 +621,8 @@ std::string SvgWriter::to_string() const {
           break;
         }
         const Vec2d u = d / len, v = perp(u);
-        const double head = std::min(len, 3.0 * (nonneg_finite(st.marker_size) ? st.marker_size
-                                                                                : 3.0));
+        const double head =
+            std::min(len, 3.0 * (nonneg_finite(st.marker_size) ? st.marker_size : 3.0));
         const Vec2d base = pb - head * u;
         e.raw("<g>");
         if (len > head) {

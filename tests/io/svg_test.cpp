@@ -103,12 +103,18 @@ class XmlParser {
       const auto semi = s_.find(';', k);
       if (semi == std::string::npos || semi > e) return failb("unterminated entity");
       const std::string ent = s_.substr(k + 1, semi - k - 1);
-      if (ent == "amp") out += '&';
-      else if (ent == "lt") out += '<';
-      else if (ent == "gt") out += '>';
-      else if (ent == "quot") out += '"';
-      else if (ent == "apos") out += '\'';
-      else return failb("unknown entity &" + ent + ";");
+      if (ent == "amp")
+        out += '&';
+      else if (ent == "lt")
+        out += '<';
+      else if (ent == "gt")
+        out += '>';
+      else if (ent == "quot")
+        out += '"';
+      else if (ent == "apos")
+        out += '\'';
+      else
+        return failb("unknown entity &" + ent + ";");
       k = semi;
     }
     return true;
@@ -238,8 +244,8 @@ std::vector<PathCmd> parse_path(const std::string& d) {
     }
     if (c == ' ' || c == ',') continue;
     std::size_t j = i;
-    while (j < d.size() && (std::isdigit(static_cast<unsigned char>(d[j])) || d[j] == '-' ||
-                            d[j] == '.'))
+    while (j < d.size() &&
+           (std::isdigit(static_cast<unsigned char>(d[j])) || d[j] == '-' || d[j] == '.'))
       ++j;
     EXPECT_GT(j, i) << "unexpected character '" << c << "' in path " << d;
     if (j == i || cmds.empty()) return cmds;
@@ -386,7 +392,8 @@ TEST(Svg, MarkersHaveTheirShapes) {
   SvgWriter w;
   SvgStyle s;
   s.marker_size = 5;
-  for (SvgMarker mk : {SvgMarker::circle, SvgMarker::square, SvgMarker::triangle, SvgMarker::cross}) {
+  for (SvgMarker mk :
+       {SvgMarker::circle, SvgMarker::square, SvgMarker::triangle, SvgMarker::cross}) {
     s.marker = mk;
     w.point(Vec2d{0, 0}, s);
   }
@@ -428,14 +435,15 @@ TYPED_TEST(SvgTyped, NonFiniteCoordinatesAreNeverEmitted) {
   w.arc(Vec2<T>{0, 0}, T(1), T(1), T(1));  // empty span
   w.text(Vec2<T>{nan, 0}, "nan");
   // A polyline is split at its non-finite vertices; runs of one vertex vanish.
-  w.polyline(std::vector<Vec2<T>>{{0, 0}, {1, 0}, {nan, 0}, {2, 0}, {nan, nan}, {3, 0}, {3, 1},
-                                  {4, 1}});
+  w.polyline(
+      std::vector<Vec2<T>>{{0, 0}, {1, 0}, {nan, 0}, {2, 0}, {nan, nan}, {3, 0}, {3, 1}, {4, 1}});
   // A polygon ring drops them.
   w.polygon(std::vector<Vec2<T>>{{0, 0}, {inf, 0}, {1, 0}, {1, 1}});
   const std::string doc = w.to_string();
   std::string lower = doc;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  });
   EXPECT_EQ(lower.find("nan"), std::string::npos);
   EXPECT_EQ(lower.find("inf"), std::string::npos);
   const Node root = parse_or_fail(doc);
@@ -459,8 +467,9 @@ TYPED_TEST(SvgTyped, NonFiniteCoordinatesAreNeverEmitted) {
   x.line(Vec2<T>{T(0), T(0)}, Vec2<T>{T(1), T(2)});
   const std::string doc2 = x.to_string();
   std::string lower2 = doc2;
-  std::transform(lower2.begin(), lower2.end(), lower2.begin(),
-                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  std::transform(lower2.begin(), lower2.end(), lower2.begin(), [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  });
   EXPECT_EQ(lower2.find("nan"), std::string::npos);
   EXPECT_EQ(lower2.find("inf"), std::string::npos);
   const Node root2 = parse_or_fail(doc2);
@@ -537,7 +546,8 @@ TYPED_TEST(SvgTyped, AutomaticViewContainsEveryEmittedCoordinate) {
                 std::vector<std::vector<Vec2<T>>>{{rp(), rp(), rp()}}, SvgStyle{});
       w.circle(rp(), rr());
       w.ellipse(rp(), rp() - rp(), rr(), rr());
-      w.arc(rp(), rr(), static_cast<T>(rng.uniform(-7.0, 7.0)), static_cast<T>(rng.uniform(-7.0, 7.0)));
+      w.arc(rp(), rr(), static_cast<T>(rng.uniform(-7.0, 7.0)),
+            static_cast<T>(rng.uniform(-7.0, 7.0)));
       w.text(rp(), "t");
     }
     const Node root = parse_or_fail(w.to_string());
@@ -561,8 +571,8 @@ TYPED_TEST(SvgTyped, AutomaticViewContainsEveryEmittedCoordinate) {
     // width or height of the inner box.
     const bool x_tight = maxx - minx >= W - 2 * m - 2 * kPx;
     const bool y_tight = maxy - miny >= H - 2 * m - 2 * kPx;
-    EXPECT_TRUE(x_tight || y_tight) << W << " x " << H << " extent " << (maxx - minx) << " x "
-                                    << (maxy - miny);
+    EXPECT_TRUE(x_tight || y_tight)
+        << W << " x " << H << " extent " << (maxx - minx) << " x " << (maxy - miny);
   }
 }
 
@@ -570,7 +580,8 @@ TEST(Svg, EllipseBoundsAreExact) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int rep = 0; rep < 50; ++rep) {
-    const double a = rng.uniform(0.0, 2 * kPi), e0 = rng.uniform(0.5, 5.0), e1 = rng.uniform(0.5, 5.0);
+    const double a = rng.uniform(0.0, 2 * kPi), e0 = rng.uniform(0.5, 5.0),
+                 e1 = rng.uniform(0.5, 5.0);
     SvgOptions o;
     o.max_width = o.max_height = 400;
     SvgWriter w(o);
@@ -629,14 +640,17 @@ TYPED_TEST(SvgTyped, LinesAndRaysAreClippedToTheView) {
   int emitted = 0, missed = 0;
   for (int rep = 0; rep < 120; ++rep) {
     const bool is_ray = rep % 2 == 1;
-    const Vec2<T> p{static_cast<T>(rng.uniform(-30.0, 30.0)), static_cast<T>(rng.uniform(-30.0, 30.0))};
+    const Vec2<T> p{static_cast<T>(rng.uniform(-30.0, 30.0)),
+                    static_cast<T>(rng.uniform(-30.0, 30.0))};
     Vec2<T> d = rng.unit<T, 2>() * static_cast<T>(rng.uniform(0.01, 100.0));
     if (rep % 17 == 0) d = Vec2<T>{T(0), T(3)};  // axis-parallel
     if (rep % 19 == 0) d = Vec2<T>{T(-2), T(0)};
     SvgWriter w(o);
     w.set_view(lo, hi);
-    if (is_ray) w.ray(p, d);
-    else w.line(p, d);
+    if (is_ray)
+      w.ray(p, d);
+    else
+      w.line(p, d);
     const Node root = parse_or_fail(w.to_string());
     const auto lines = elements(root, "line");
     // Oracle: sample the line densely in the unit-direction parameter.
@@ -843,7 +857,8 @@ TYPED_TEST(SvgTyped, CirclesAndEllipsesMatchTheirWorldShapes) {
 TEST(Svg, PolygonWithHolesUsesEvenOdd) {
   SvgWriter w;
   const std::vector<Vec2d> outer{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
-  const std::vector<std::vector<Vec2d>> holes{{{2, 2}, {4, 2}, {4, 4}}, {{6, 6}, {8, 6}, {8, 8}, {6, 8}}};
+  const std::vector<std::vector<Vec2d>> holes{{{2, 2}, {4, 2}, {4, 4}},
+                                              {{6, 6}, {8, 6}, {8, 8}, {6, 8}}};
   SvgStyle s;
   s.fill = "gray";
   w.polygon(outer, holes, s);
@@ -855,11 +870,14 @@ TEST(Svg, PolygonWithHolesUsesEvenOdd) {
   const auto cmds = parse_path(paths[0]->at("d"));
   std::vector<int> ring_sizes;
   for (const PathCmd& c : cmds) {
-    if (c.op == 'M') ring_sizes.push_back(1);
-    else if (c.op == 'L') ++ring_sizes.back();
+    if (c.op == 'M')
+      ring_sizes.push_back(1);
+    else if (c.op == 'L')
+      ++ring_sizes.back();
   }
   EXPECT_EQ(ring_sizes, (std::vector<int>{4, 3, 4}));
-  EXPECT_EQ(std::count_if(cmds.begin(), cmds.end(), [](const PathCmd& c) { return c.op == 'Z'; }), 3);
+  EXPECT_EQ(std::count_if(cmds.begin(), cmds.end(), [](const PathCmd& c) { return c.op == 'Z'; }),
+            3);
 }
 
 TEST(Svg, ArrowHeadEndsAtTheTip) {
@@ -891,7 +909,8 @@ TEST(Svg, WritesFilesAndReportsIoErrors) {
   SvgWriter w;
   w.circle(Vec2d{0, 0}, 1.0);
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string path = (dir / ("locus_svg_test_" + std::to_string(Rng().engine()()) + ".svg")).string();
+  const std::string path =
+      (dir / ("locus_svg_test_" + std::to_string(Rng().engine()()) + ".svg")).string();
   ASSERT_EQ(w.write_file(path), locus::Status::ok);
   std::ifstream f(path, std::ios::binary);
   std::stringstream ss;
@@ -929,7 +948,8 @@ TYPED_TEST(SvgTyped, OrthographicCameraMatchesTheShadow) {
   }
   EXPECT_EQ(w3.to_string(), w2.to_string());
 
-  // Looking along -x with up = z: image x = y_world... right = f x up = (-1,0,0) x (0,0,1) = (0,1,0).
+  // Looking along -x with up = z: image x = y_world... right = f x up = (-1,0,0) x (0,0,1) =
+  // (0,1,0).
   SvgWriter s3, s2;
   s3.set_view(lo, hi);
   s2.set_view(lo, hi);
@@ -968,7 +988,7 @@ TYPED_TEST(SvgTyped, PerspectiveCameraMatchesThePinholeModel) {
     pts.push_back(rng.vec<T, 3>(T(-3), T(3)));
     w.point(pts.back());
   }
-  w.point(Vec3<T>{0, 0, 6});    // behind the eye
+  w.point(Vec3<T>{0, 0, 6});       // behind the eye
   w.point(Vec3<T>{0, 0, T(4.8)});  // in front of the eye but before the near plane
   const Node root = parse_or_fail(w.to_string());
   const auto cs = elements(root, "circle");

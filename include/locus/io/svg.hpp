@@ -72,27 +72,27 @@ enum class SvgAnchor : unsigned char { start, middle, end };
 
 /// Drawing style. Colours are any SVG colour text ("black", "#3366cc", "none"); lengths in pixels.
 struct SvgStyle {
-  std::string stroke = "black";    ///< outline colour; "none" for no outline
-  std::string fill = "none";       ///< fill colour of closed shapes, markers and arrow heads
-  double width = 1.5;              ///< stroke width in pixels
-  std::vector<double> dash = {};   ///< dash pattern in pixels (empty: solid)
-  double opacity = 1.0;            ///< overall opacity in [0, 1]
-  double fill_opacity = 1.0;       ///< fill opacity in [0, 1]
-  double marker_size = 3.0;        ///< point marker radius; arrow heads are 3x this long
+  std::string stroke = "black";          ///< outline colour; "none" for no outline
+  std::string fill = "none";             ///< fill colour of closed shapes, markers and arrow heads
+  double width = 1.5;                    ///< stroke width in pixels
+  std::vector<double> dash = {};         ///< dash pattern in pixels (empty: solid)
+  double opacity = 1.0;                  ///< overall opacity in [0, 1]
+  double fill_opacity = 1.0;             ///< fill opacity in [0, 1]
+  double marker_size = 3.0;              ///< point marker radius; arrow heads are 3x this long
   SvgMarker marker = SvgMarker::circle;  ///< shape drawn by point()
-  double font_size = 14.0;         ///< text size in pixels
+  double font_size = 14.0;               ///< text size in pixels
   SvgAnchor anchor = SvgAnchor::start;   ///< text alignment
-  double text_dx = 4.0;            ///< text offset from its anchor, pixels to the right
-  double text_dy = 4.0;            ///< text offset from its anchor, pixels UP
+  double text_dx = 4.0;                  ///< text offset from its anchor, pixels to the right
+  double text_dy = 4.0;                  ///< text offset from its anchor, pixels UP
 };
 
 /// Document options.
 struct SvgOptions {
-  double max_width = 480.0;   ///< the drawing (without margins) fits in max_width x max_height
+  double max_width = 480.0;  ///< the drawing (without margins) fits in max_width x max_height
   double max_height = 480.0;
-  double margin = 24.0;       ///< pixels of free space on each side of the fitted view
+  double margin = 24.0;              ///< pixels of free space on each side of the fitted view
   std::string background = "white";  ///< background colour ("none" for transparent)
-  std::string title = {};     ///< optional <title> of the document
+  std::string title = {};            ///< optional <title> of the document
 };
 
 /// Camera for the 3D overloads. fov_y is the full vertical field of view in radians
@@ -122,11 +122,11 @@ struct is_vec3<Vec3<T>> : std::true_type {};
 /// A contiguous range of Vec2<float> or Vec2<double> (std::vector, std::array, std::span, ...).
 template <class R>
 concept SvgPoints2 = std::ranges::contiguous_range<R> && std::ranges::sized_range<R> &&
-                     detail::is_vec2<std::remove_cv_t<std::ranges::range_value_t<R>>>::value;
+    detail::is_vec2<std::remove_cv_t<std::ranges::range_value_t<R>>>::value;
 /// A contiguous range of Vec3<float> or Vec3<double>.
 template <class R>
 concept SvgPoints3 = std::ranges::contiguous_range<R> && std::ranges::sized_range<R> &&
-                     detail::is_vec3<std::remove_cv_t<std::ranges::range_value_t<R>>>::value;
+    detail::is_vec3<std::remove_cv_t<std::ranges::range_value_t<R>>>::value;
 
 /// Collects 2D (and projected 3D) geometry and emits it as an SVG document.
 class SvgWriter {
@@ -153,7 +153,9 @@ class SvgWriter {
   /// A point marker (style.marker, radius style.marker_size, filled with style.fill or, when
   /// fill is "none", with the stroke colour).
   template <Real T>
-  void point(const Vec2<T>& p, const SvgStyle& s = {}) { add_point(d2(p), s); }
+  void point(const Vec2<T>& p, const SvgStyle& s = {}) {
+    add_point(d2(p), s);
+  }
   template <Real T>
   void segment(const Vec2<T>& a, const Vec2<T>& b, const SvgStyle& s = {}) {
     add_segment(d2(a), d2(b), s);
@@ -220,7 +222,9 @@ class SvgWriter {
   // ---- 3D (through the camera) ---------------------------------------------------------------
 
   template <Real T>
-  void point(const Vec3<T>& p, const SvgStyle& s = {}) { add_point3(d3(p), s); }
+  void point(const Vec3<T>& p, const SvgStyle& s = {}) {
+    add_point3(d3(p), s);
+  }
   template <Real T>
   void segment(const Vec3<T>& a, const Vec3<T>& b, const SvgStyle& s = {}) {
     add_segment3(d3(a), d3(b), false, s);
@@ -249,20 +253,33 @@ class SvgWriter {
   [[nodiscard]] Status write_file(const std::string& path) const;
 
   /// The world window the document is emitted with (fitted or fixed) and its pixel mapping:
-  /// pixel = ((x - lo.x) * scale + margin, (hi.y - y) * scale + margin).
+  /// pixel = ((x - inner_lo.x) * scale + origin_px.x, (inner_hi.y - y) * scale + origin_px.y).
+  /// origin_px is (margin, margin) unless text labels stick out of the canvas; then the canvas
+  /// grows on that side (the scale stays) by the label's estimated extent (0.6 em a character).
   struct Mapping {
-    Vec2d lo, hi;        ///< world window, margins included
-    double scale;        ///< pixels per world unit
-    double width, height;  ///< document size in pixels
-    double margin;       ///< pixels
-    Vec2d inner_lo, inner_hi;  ///< world window without the margins
+    Vec2d lo, hi;              ///< world window of the whole canvas (margins included)
+    double scale;              ///< pixels per world unit
+    double width, height;      ///< document size in pixels
+    double margin;             ///< pixels
+    Vec2d inner_lo, inner_hi;  ///< fitted (or fixed) world window without the margins
+    Vec2d origin_px;           ///< pixel position of (inner_lo.x, inner_hi.y)
   };
   [[nodiscard]] Mapping mapping() const;
 
   /// Stored item (public so the implementation file can use it; not part of the API).
   struct Item {
     enum class Kind : unsigned char {
-      point, segment, line, ray, arrow, polyline, polygon, circle, ellipse, arc, text
+      point,
+      segment,
+      line,
+      ray,
+      arrow,
+      polyline,
+      polygon,
+      circle,
+      ellipse,
+      arc,
+      text
     } kind;
     std::vector<std::vector<Vec2d>> pts;  // geometry; meaning depends on kind
     double a = 0, b = 0, c = 0;           // radius / extents / angles

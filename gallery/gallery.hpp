@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The figure gallery: a table of figures of "Geometric Tools for Computer Graphics" redrawn from
+// live locus computations, and the runner that writes them as SVG files with an index page.
+//
+// Each figure is a function drawing into a locus::SvgWriter. It computes the geometry it shows
+// with locus (a rotated shape is the image of the shape under locus::rotation, a projection the
+// result of locus::project_onto, ...); only the INPUTS (the shape, the vectors, the angle) are
+// written as literals. A figure returns false when a locus computation it relies on reports
+// failure (a std::nullopt, a bad Status), which the runner and the gallery test report.
+// Figures live in one source file per chapter topic (ch03_vectors.cpp, ...), each exposing its
+// table; all_figures() concatenates them in book order.
+
+#include <locus/core/frame.hpp>
+#include <locus/core/status.hpp>
+#include <locus/core/transform.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/io/svg.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace locus_gallery {
+
+using locus::SvgStyle;
+using locus::SvgWriter;
+using locus::Vec2d;
+using locus::Vec3d;
+
+/// One gallery entry.
+struct Figure {
+  const char* id;             ///< the book's figure number, "3.15"
+  const char* computed_with;  ///< the locus functions that compute what the figure shows
+  bool (*draw)(SvgWriter&);   ///< draws the figure; false when a computation failed
+};
+
+// The per-file tables, in book order.
+std::vector<Figure> chapter3_vector_figures();  // ch03_vectors.cpp: 3.1-3.17
+std::vector<Figure> chapter3_affine_figures();  // ch03_affine.cpp: 3.19-3.42
+/// Every figure in book order.
+std::vector<Figure> all_figures();
+
+/// gallery/figures.txt, embedded at build time (generated captions.cpp).
+std::string_view figures_txt() noexcept;
+/// The book's caption of figure `id` ("3.15"), from the embedded figures.txt.
+std::optional<std::string> caption(std::string_view id);
+/// "fig_3_15.svg" for id "3.15".
+std::string file_name(std::string_view id);
+
+/// Draws one figure; `ok` is the figure's own success flag.
+struct Rendered {
+  bool ok;
+  std::string svg;
+};
+Rendered render(const Figure& f);
+
+/// Result of run(): how many SVGs were written and what went wrong.
+struct RunResult {
+  locus::Status status;  ///< ok, or io_error / degenerate_input (a figure's computation failed)
+  int written;
+  std::vector<std::string> errors;
+};
+/// Writes every figure and index.html into out_dir (created if missing).
+RunResult run(const std::string& out_dir);
+
+// ---- drawing helpers shared by the figure files ---------------------------------------------
+
+namespace colour {
+inline constexpr const char* blue = "#1f5fbf";
+inline constexpr const char* red = "#c8312a";
+inline constexpr const char* green = "#2a8a3a";
+inline constexpr const char* orange = "#e07b10";
+inline constexpr const char* purple = "#7a3fb0";
+inline constexpr const char* gray = "#808080";
+inline constexpr const char* light = "#c8c8c8";
+inline constexpr const char* black = "#222222";
+}  // namespace colour
+
+/// A solid line style.
+SvgStyle pen(const char* colour, double width = 1.8);
+/// A dashed line style.
+SvgStyle dashed(const char* colour, double width = 1.2);
+/// A translucent fill with an outline of the same colour.
+SvgStyle filled(const char* colour, double fill_opacity = 0.2, double width = 1.5);
+/// A point marker.
+SvgStyle dot(const char* colour, double size = 3.5);
+/// A text style; dx, dy in pixels (dy up).
+SvgStyle text_style(const char* colour = colour::black, double dx = 5, double dy = 5,
+                    locus::SvgAnchor anchor = locus::SvgAnchor::start, double size = 15);
+
+void label(SvgWriter& w, const Vec2d& p, std::string_view s, const char* c = colour::black,
+           double dx = 5, double dy = 5);
+void label(SvgWriter& w, const Vec3d& p, std::string_view s, const char* c = colour::black,
+           double dx = 5, double dy = 5);
+/// A labelled point.
+void point(SvgWriter& w, const Vec2d& p, std::string_view name, const char* c = colour::black);
+void point(SvgWriter& w, const Vec3d& p, std::string_view name, const char* c = colour::black);
+/// A labelled arrow from a to b, the label at the middle offset to the left of the arrow.
+void vector(SvgWriter& w, const Vec2d& a, const Vec2d& b, std::string_view name, const char* c,
+            double label_offset_px = 10);
+/// The arc marking the counter-clockwise angle at `vertex` from direction d0 to d1, of radius r
+/// (world units), optionally labelled at its middle. Uses locus::atan2_positive and
+/// locus::signed_angle.
+void angle_mark(SvgWriter& w, const Vec2d& vertex, const Vec2d& d0, const Vec2d& d1, double r,
+                std::string_view name = "", const char* c = colour::gray);
+/// A small square marking the right angle between d0 and d1 at vertex (size in world units).
+void right_angle_mark(SvgWriter& w, const Vec2d& vertex, const Vec2d& d0, const Vec2d& d1,
+                      double size, const char* c = colour::gray);
+/// The axes of a frame as arrows from its origin, labelled with names[i].
+void frame(SvgWriter& w, const locus::Frame2d& f, const char* c, std::string_view origin_name,
+           std::string_view x_name, std::string_view y_name);
+void frame(SvgWriter& w, const locus::Frame3d& f, const char* c, std::string_view origin_name,
+           std::string_view x_name, std::string_view y_name, std::string_view z_name);
+/// World axes x, y, z from the origin with the given length.
+void axes3(SvgWriter& w, double len, const char* c = colour::gray);
+/// A closed polygon outline.
+void closed(SvgWriter& w, const std::vector<Vec2d>& pts, const SvgStyle& s);
+void closed(SvgWriter& w, const std::vector<Vec3d>& pts, const SvgStyle& s);
+/// Images of points under an affine map (locus::apply_point).
+std::vector<Vec2d> map_points(const locus::Affine2d& a, const std::vector<Vec2d>& pts);
+std::vector<Vec3d> map_points(const locus::Affine3d& a, const std::vector<Vec3d>& pts);
+/// A generic asymmetric "house with a flag" outline so that rotations and mirrors are visible.
+std::vector<Vec2d> house(const Vec2d& at, double size);
+/// An orthographic or perspective camera at `eye` looking at `target` with z up.
+locus::SvgCamera camera(const Vec3d& eye, const Vec3d& target = {0, 0, 0}, bool perspective = false);
+/// The 12 edges of the box with the given 8 corners (index bits: x, y, z) drawn with style s.
+void box_edges(SvgWriter& w, const std::array<Vec3d, 8>& c, const SvgStyle& s);
+
+}  // namespace locus_gallery
