@@ -18,6 +18,8 @@ enum class Status : std::uint8_t {
   degenerate_input,  ///< the input lacks the dimension or rank the algorithm needs
   non_finite_input,  ///< a coordinate or coefficient is NaN or infinite
   invalid_topology,  ///< the input violates a structural precondition (non-manifold, open)
+  invalid_input,     ///< values violate a documented precondition (e.g. a non-symmetric matrix
+                     ///< given to a symmetric solver)
   parse_error,       ///< malformed file or text
   io_error,          ///< a file could not be opened, read or written
   limit_exceeded,    ///< an iteration or size budget ran out; the result is the best so far
@@ -31,6 +33,7 @@ enum class Status : std::uint8_t {
     case Status::degenerate_input: return "degenerate_input";
     case Status::non_finite_input: return "non_finite_input";
     case Status::invalid_topology: return "invalid_topology";
+    case Status::invalid_input: return "invalid_input";
     case Status::parse_error: return "parse_error";
     case Status::io_error: return "io_error";
     case Status::limit_exceeded: return "limit_exceeded";

@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: BSL-1.0
+// Tests for numeric/decompose.hpp (row num.decomp): LU, QR, Cholesky, SVD and polar
+// decomposition against Eigen (peer oracle) on seeded random and adversarial matrices, plus the
+// defining identities of each factorisation.
+#include <locus/numeric/decompose.hpp>
+
+#include "support/typed.hpp"
+
+#include <Eigen/Dense>
+
+#include <iostream>
+#include <limits>
+
+using namespace locus;
+using locus_test::Rng;
+
+template <class T>
+class DecomposeTest : public ::testing::Test {};
+TYPED_TEST_SUITE(DecomposeTest, locus_test::RealTypes);
+
+namespace {
+
+template <class T>
+Eigen::MatrixXd to_eigen(const MatX<T>& a) {
+  Eigen::MatrixXd e(a.rows, a.cols);
+  for (int r = 0; r < a.rows; ++r)
+    for (int c = 0; c < a.cols; ++c) e(r, c) = double(a(r, c));
+  return e;
+}
+
+// Random matrices of the kinds that matter: uniform, graded (columns scaled over many orders of
+// magnitude), nearly rank deficient, small integers (exact zeros, exact dependencies).
+template <class T>
+MatX<T> draw(Rng& rng, int m, int n, int kind) {
+  MatX<T> a(m, n);
+  for (int r = 0; r < m; ++r)
+    for (int c = 0; c < n; ++c) {
+      switch (kind) {
+        case 0: a(r, c) = rng.uniform<T>(-1, 1); break;
+        case 1: a(r, c) = rng.uniform<T>(-1, 1) * T(std::pow(10.0, -3.0 * c)); break;
+        case 2: a(r, c) = T(rng.uniform_int(-3, 3)); break;
+        default: a(r, c) = rng.uniform<T>(-1, 1);
+      }
+    }
+  if (kind == 3 && n >= 2) {  // last column = first + tiny noise: condition ~ 1e6
+    for (int r = 0; r < m; ++r) a(r, n - 1) = a(r, 0) + a(r, 1) * T(1e-6);
+  }
+  return a;
+}
+
+}  // namespace
+
+TYPED_TEST(DecomposeTest, LUReconstructsAndSolvesLikeEigen) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const double eps = double(eps_v<T>);
+  for (int i = 0; i < 4000; ++i) {
+    const int n = 1 + i % 9;
+    const MatX<T> a = draw<T>(rng, n, n, i % 3);
+    const LU<T> f = lu(a);
+    const Eigen::MatrixXd ea = to_eigen(a);
+    // P A = L U.
+    Eigen::MatrixXd l = Eigen::MatrixXd::Identity(n, n), u = Eigen::MatrixXd::Zero(n, n), pa(n, n);
+    for (int r = 0; r < n; ++r) {
+      for (int c = 0; c < n; ++c) (c < r ? l(r, c) : u(r, c)) = double(f.lu(r, c));
+    }
+    for (int r = 0; r < n; ++r) pa.row(r) = ea.row(f.perm[std::size_t(r)]);
+    ASSERT_LE((l * u - pa).norm(), 4.0 * n * eps * std::max(ea.norm(), 1e-300)) << i;
+    Eigen::FullPivLU<Eigen::MatrixXd> oracle(ea);
+    if (f.status == Status::ok) {
+      const double det = oracle.determinant();
+      ASSERT_NEAR(double(determinant(f)), det, 8.0 * n * eps * std::pow(ea.norm(), n) + 1e-300) << i;
+      std::vector<T> b(static_cast<std::size_t>(n));
+      for (auto& x : b) x = rng.uniform<T>(-1, 1);
+      const std::vector<T> x = solve(f, b);
+      ASSERT_EQ(int(x.size()), n);
+      Eigen::VectorXd eb(n), ex(n);
+      for (int k = 0; k < n; ++k) eb(k) = double(b[std::size_t(k)]), ex(k) = double(x[std::size_t(k)]);
+      // Backward stable: the residual is small relative to |A||x| (partial pivoting).
+      ASSERT_LE((ea * ex - eb).norm(), 16.0 * n * eps * (ea.norm() * ex.norm() + eb.norm())) << i;
+    } else {
+      EXPECT_EQ(f.status, Status::degenerate_input);
+      EXPECT_LT(f.rank, n);
+      EXPECT_TRUE(solve(f, std::vector<T>(static_cast<std::size_t>(n), T(1))).empty());
+    }
+  }
+}
+
+TYPED_TEST(DecomposeTest, LUDetectsExactRankDeficiency) {
+  using T = TypeParam;
+  MatX<T> a(3, 3);
+  const T rows[3][3] = {{1, 2, 3}, {4, 5, 6}, {1, 2, 3}};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) a(r, c) = rows[r][c];
+  const LU<T> f = lu(a);
+  EXPECT_EQ(f.status, Status::degenerate_input);
+  EXPECT_EQ(f.rank, 2);
+  EXPECT_EQ(determinant(f), T(0));
+  EXPECT_EQ(lu(MatX<T>(4, 4)).rank, 0);
+  EXPECT_EQ(lu(MatX<T>(2, 3)).status, Status::invalid_input);
+  MatX<T> bad = MatX<T>::identity(2);
+  bad(0, 1) = std::numeric_limits<T>::infinity();
+  EXPECT_EQ(lu(bad).status, Status::non_finite_input);
+}
+
+TYPED_TEST(DecomposeTest, QRIsOrthogonalTimesUpperAndMatchesEigenR) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const double eps = double(eps_v<T>);
+  for (int i = 0; i < 4000; ++i) {
+    const int n = 1 + i % 6, m = n + (i / 6) % 4;
+    const MatX<T> a = draw<T>(rng, m, n, i % 4);
+    const QR<T> f = qr(a);
+    ASSERT_EQ(f.status, Status::ok);
+    const Eigen::MatrixXd ea = to_eigen(a), q = to_eigen(f.q), r = to_eigen(f.r);
+    const double na = std::max(ea.norm(), 1e-300);
+    ASSERT_LE((q * r - ea).norm(), 8.0 * m * eps * na) << i;
+    ASSERT_LE((q.transpose() * q - Eigen::MatrixXd::Identity(m, m)).norm(), 8.0 * m * eps) << i;
+    for (int rr = 0; rr < m; ++rr) {
+      for (int c = 0; c < std::min(rr, n); ++c) ASSERT_EQ(r(rr, c), 0.0);
+    }
+    // |R_kk| is unique for a full-rank A: compare with Eigen's Householder QR.
+    Eigen::HouseholderQR<Eigen::MatrixXd> oracle(ea);
+    const Eigen::MatrixXd er = oracle.matrixQR().template triangularView<Eigen::Upper>();
+    for (int k = 0; k < n; ++k)
+      ASSERT_NEAR(std::abs(r(k, k)), std::abs(er(k, k)), 8.0 * m * eps * na) << i;
+  }
+}
+
+TYPED_TEST(DecomposeTest, CholeskyMatchesEigenAndRejectsIndefinite) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const double eps = double(eps_v<T>);
+  for (int i = 0; i < 4000; ++i) {
+    const int n = 1 + i % 8;
+    const MatX<T> g = draw<T>(rng, n, n, 0);
+    Eigen::MatrixXd eg = to_eigen(g);
+    Eigen::MatrixXd spd = eg * eg.transpose() + 0.1 * Eigen::MatrixXd::Identity(n, n);
+    MatX<T> a(n, n);
+    for (int r = 0; r < n; ++r)
+      for (int c = r; c < n; ++c) a(r, c) = a(c, r) = T(spd(r, c));
+    const Eigen::MatrixXd ea = to_eigen(a);
+    const Cholesky<T> f = cholesky(a);
+    ASSERT_EQ(f.status, Status::ok) << i;
+    const Eigen::MatrixXd l = to_eigen(f.l);
+    ASSERT_LE((l * l.transpose() - ea).norm(), 8.0 * n * eps * ea.norm()) << i;
+    Eigen::LLT<Eigen::MatrixXd> oracle(ea);
+    const Eigen::MatrixXd el = oracle.matrixL();
+    ASSERT_LE((l - el).norm(), 1e3 * n * eps * el.norm()) << i;  // L is unique; kappa(A) <= ~1e2
+  }
+  MatX<T> indef = MatX<T>::identity(3);
+  indef(2, 2) = T(-1);
+  EXPECT_EQ(cholesky(indef).status, Status::degenerate_input);
+  MatX<T> nonsym = MatX<T>::identity(2);
+  nonsym(0, 1) = T(0.5);
+  EXPECT_EQ(cholesky(nonsym).status, Status::invalid_input);
+  EXPECT_EQ(cholesky(MatX<T>(0, 0)).status, Status::ok);  // empty product: L is empty
+}
+
+TYPED_TEST(DecomposeTest, SVDMatchesEigenSingularValuesAndReconstructs) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const double eps = double(eps_v<T>);
+  int cases = 0;
+  for (int i = 0; i < 6000; ++i, ++cases) {
+    const int m = 1 + i % 7, n = 1 + (i / 7) % 7;  // tall, square and wide
+    const MatX<T> a = draw<T>(rng, m, n, i % 4);
+    const SVD<T> f = svd(a);
+    ASSERT_EQ(f.status, Status::ok) << i;
+    const int k = std::min(m, n);
+    ASSERT_EQ(int(f.s.size()), k);
+    const Eigen::MatrixXd ea = to_eigen(a), u = to_eigen(f.u), v = to_eigen(f.v);
+    const double na = std::max(ea.norm(), 1e-300);
+    Eigen::VectorXd s(k);
+    for (int j = 0; j < k; ++j) s(j) = double(f.s[std::size_t(j)]);
+    Eigen::JacobiSVD<Eigen::MatrixXd> oracle(ea);
+    for (int j = 0; j < k; ++j) {
+      ASSERT_NEAR(s(j), oracle.singularValues()(j), 8.0 * k * eps * na) << i;
+      if (j > 0) {
+        ASSERT_GE(s(j - 1), s(j));
+      }
+      ASSERT_GE(s(j), 0.0);
+    }
+    ASSERT_LE((u * s.asDiagonal() * v.transpose() - ea).norm(), 16.0 * k * eps * na) << i;
+    ASSERT_LE((u.transpose() * u - Eigen::MatrixXd::Identity(k, k)).norm(), 16.0 * k * eps) << i;
+    ASSERT_LE((v.transpose() * v - Eigen::MatrixXd::Identity(k, k)).norm(), 16.0 * k * eps) << i;
+  }
+  std::cout << "[svd] " << cases << " matrices checked against Eigen::JacobiSVD\n";
+}
+
+TYPED_TEST(DecomposeTest, SVDOfRankDeficientAndZeroMatricesKeepsOrthonormalU) {
+  using T = TypeParam;
+  const SVD<T> z = svd(MatX<T>(4, 3));
+  for (T s : z.s) EXPECT_EQ(s, T(0));
+  const Eigen::MatrixXd u = to_eigen(z.u);
+  EXPECT_LE((u.transpose() * u - Eigen::MatrixXd::Identity(3, 3)).norm(), 1e-6);
+  MatX<T> r1(3, 3);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) r1(r, c) = T((r + 1) * (c + 1));  // rank one
+  const SVD<T> f = svd(r1);
+  EXPECT_NEAR(double(f.s[0]), 14.0, 1e-5);
+  EXPECT_LE(double(f.s[1]), 1e-5);
+  MatX<T> nan_m = MatX<T>::identity(2);
+  nan_m(1, 0) = std::numeric_limits<T>::quiet_NaN();
+  EXPECT_EQ(svd(nan_m).status, Status::non_finite_input);
+}
+
+TYPED_TEST(DecomposeTest, PolarFactorsAreOrthogonalAndSymmetricPositive) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const double eps = double(eps_v<T>);
+  for (int i = 0; i < 2000; ++i) {
+    const int n = 1 + i % 5;
+    const MatX<T> a = draw<T>(rng, n, n, i % 3);
+    const Polar<T> p = polar(a);
+    ASSERT_EQ(p.status, Status::ok);
+    const Eigen::MatrixXd ea = to_eigen(a), q = to_eigen(p.q), s = to_eigen(p.s);
+    const double na = std::max(ea.norm(), 1e-300);
+    ASSERT_LE((q * s - ea).norm(), 32.0 * n * eps * na) << i;
+    ASSERT_LE((q.transpose() * q - Eigen::MatrixXd::Identity(n, n)).norm(), 32.0 * n * eps) << i;
+    ASSERT_LE((s - s.transpose()).norm(), 8.0 * n * eps * na) << i;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (s + s.transpose()));
+    ASSERT_GE(es.eigenvalues().minCoeff(), -8.0 * n * eps * na) << i;
+  }
+  EXPECT_EQ(polar(MatX<T>(2, 3)).status, Status::invalid_input);
+}
