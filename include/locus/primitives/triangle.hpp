@@ -116,8 +116,8 @@ template <class T>
   return normalize(normal(tri));
 }
 
-/// Area (non-negative). 2D: |signed_area|; 3D: |normal| / 2; other N: Kahan's stable form of
-/// Heron's formula on the sorted edge lengths.
+/// Area (non-negative). 2D: |signed_area|; 3D: |normal| / 2; other N: half the norm of the
+/// bivector u ^ v (sum of the squared projected cross products) of two edges.
 template <class T, int N>
 [[nodiscard]] inline T area(const Triangle<T, N>& tri) noexcept {
   if constexpr (N == 2) {
@@ -125,13 +125,20 @@ template <class T, int N>
   } else if constexpr (N == 3) {
     return T(0.5) * length(normal(tri));
   } else {
-    T a = length(tri.v1 - tri.v0), b = length(tri.v2 - tri.v1), c = length(tri.v0 - tri.v2);
-    if (a < b) { T s = a; a = b; b = s; }
-    if (b < c) { T s = b; b = c; c = s; }
-    if (a < b) { T s = a; a = b; b = s; }
-    // a >= b >= c; the parenthesisation is essential (W. Kahan, "Miscalculating area").
-    const T p = (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c));
-    return p > T(0) ? T(0.25) * std::sqrt(p) : T(0);
+    // |u ^ v|^2 = sum over coordinate planes of the squared projected cross products (the
+    // Lagrange identity), with u, v the edges at the vertex opposite the longest edge: as
+    // accurate as the 3D cross product, unlike Heron-type formulas on rounded edge lengths.
+    const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v1, e2 = tri.v0 - tri.v2;
+    const T l0 = sqr_length(e0), l1 = sqr_length(e1), l2 = sqr_length(e2);
+    const Vec<T, N> u = (l0 >= l1 && l0 >= l2) ? e1 : (l1 >= l2 ? e2 : e0);
+    const Vec<T, N> v = (l0 >= l1 && l0 >= l2) ? e2 : (l1 >= l2 ? e0 : e1);
+    // Scale by the largest component so that the squares cannot overflow or underflow.
+    const T m = max_abs(u) > max_abs(v) ? max_abs(u) : max_abs(v);
+    if (!(m > T(0))) return m == m ? T(0) : m;
+    T sum = T(0);
+    for (int i = 0; i < N; ++i)
+      for (int j = i + 1; j < N; ++j) sum += sqr((u[i] / m) * (v[j] / m) - (u[j] / m) * (v[i] / m));
+    return T(0.5) * m * m * std::sqrt(sum);
   }
 }
 

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Ellipses in the plane and elliptical arcs; row prim2.quadratic (ellipse part); book section
+// 5.2.4, figure 5.16.
+//
+// Axis form Ellipse2<T> {center, axis[2], extent[2]} (fig 5.16): unit orthogonal axes and
+// positive half-axis lengths; the curve is { center + extent[0] cos(a) axis[0] +
+// extent[1] sin(a) axis[1] : a in [0, 2 pi) } and point_at(ellipse, a) evaluates it. With
+// right-handed axes (perp(axis[0]) == axis[1]) increasing a runs counter-clockwise.
+//
+// Matrix (implicit) form ImplicitEllipse2<T> {center, m}: (X - C)^T M (X - C) = 1 with M
+// symmetric positive definite, M = sum_i axis[i] axis[i]^T / extent[i]^2. to_implicit() builds
+// M; to_axes() diagonalises it with a closed-form symmetric 2x2 eigensolver (rotation angle
+// 0.5 atan2(2 m01, m00 - m11), eigenvalues mid +- hypot(...), the small one as det / large to
+// avoid cancellation) and returns extent[0] >= extent[1] (axis[0] is the major axis) with
+// axis[1] = perp(axis[0]). The general quadratic coefficients a x^2 + b xy + ... live in
+// quadratic_curve.hpp (to_quadratic / to_ellipse).
+//
+// Measures: area = pi extent[0] extent[1]; perimeter() is the complete elliptic integral of the
+// second kind evaluated by the arithmetic-geometric mean (Gauss-Legendre: P = 2 pi / M(a, b) *
+// (a^2 - sum_n 2^(n-1) c_n^2)), accurate to a few ulps; perimeter_ramanujan() is Ramanujan's
+// second approximation pi (a + b)(1 + 3h / (10 + sqrt(4 - 3h))), h = ((a - b)/(a + b))^2,
+// relative error 0 for circles, < 1e-9 for b/a >= 0.5 and at most about 4e-4 (at b = 0).
+//
+// EllipseArc2<T> {ellipse, start, sweep}: the points point_at(ellipse, a) for a in
+// [start, start + sweep], sweep in [0, 2 pi] (counter-clockwise in the angle parameter).
+//
+// Degenerate input: to_axes() returns std::nullopt when M is not positive definite or not finite
+// (the quadric is a hyperbola, parabola, empty or degenerate). A zero extent is degenerate
+// (is_degenerate()); perimeter() of a flat ellipse is 4 extent[0]. Eigen and perimeter
+// computations run in compute_t<T> (double for float input). Cost O(1), no allocation.
+
+#include <locus/core/mat.hpp>
+#include <locus/core/scalar.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/primitives/arc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace locus {
+
+/// Axis form: center, unit orthogonal axes, half-axis lengths (book fig 5.16).
+template <class T>
+struct Ellipse2 {
+  Vec2<T> center;
+  Vec2<T> axis[2];
+  T extent[2];
+};
+
+/// Matrix form: the curve (X - center)^T m (X - center) = 1, m symmetric positive definite.
+template <class T>
+struct ImplicitEllipse2 {
+  Vec2<T> center;
+  Mat2<T> m;
+};
+
+/// The arc of an ellipse for angle parameters in [start, start + sweep], 0 <= sweep <= 2 pi.
+template <class T>
+struct EllipseArc2 {
+  Ellipse2<T> ellipse;
+  T start;
+  T sweep;
+};
+
+using Ellipse2f = Ellipse2<float>;
+using Ellipse2d = Ellipse2<double>;
+
+/// center + extent[0] cos(angle) axis[0] + extent[1] sin(angle) axis[1].
+template <class T>
+[[nodiscard]] inline Vec2<T> point_at(const Ellipse2<T>& e, T angle) noexcept {
+  return e.center + (e.extent[0] * std::cos(angle)) * e.axis[0] +
+         (e.extent[1] * std::sin(angle)) * e.axis[1];
+}
+
+/// The point of the underlying ellipse at angle parameter `angle` (meaningful in
+/// [start, start + sweep]).
+template <class T>
+[[nodiscard]] inline Vec2<T> point_at(const EllipseArc2<T>& arc, T angle) noexcept {
+  return point_at(arc.ellipse, angle);
+}
+
+/// (X - C)^T M (X - C) - 1 (rounded): negative inside, zero on, positive outside.
+template <class T>
+[[nodiscard]] constexpr T evaluate(const ImplicitEllipse2<T>& e, const Vec2<T>& p) noexcept {
+  const Vec2<T> d = p - e.center;
+  return dot(d, e.m * d) - T(1);
+}
+
+/// sum_i (dot(X - C, axis_i) / extent_i)^2 - 1 (rounded): negative inside, zero on the curve.
+template <class T>
+[[nodiscard]] constexpr T evaluate(const Ellipse2<T>& e, const Vec2<T>& p) noexcept {
+  const Vec2<T> d = p - e.center;
+  return sqr(dot(d, e.axis[0]) / e.extent[0]) + sqr(dot(d, e.axis[1]) / e.extent[1]) - T(1);
+}
+
+/// True when an extent is not positive or a value is not finite.
+template <class T>
+[[nodiscard]] constexpr bool is_degenerate(const Ellipse2<T>& e) noexcept {
+  return !(e.extent[0] > T(0)) || !(e.extent[1] > T(0)) || !is_finite(e.extent[0]) ||
+         !is_finite(e.extent[1]) || !is_finite(e.center) || !is_finite(e.axis[0]) ||
+         !is_finite(e.axis[1]);
+}
+
+/// pi extent[0] extent[1].
+template <class T>
+[[nodiscard]] constexpr T area(const Ellipse2<T>& e) noexcept {
+  return pi_v<T> * e.extent[0] * e.extent[1];
+}
+
+/// Exact perimeter (to a few ulps) by the arithmetic-geometric mean; 4 a for a flat ellipse.
+template <class T>
+[[nodiscard]] inline T perimeter(const Ellipse2<T>& e) noexcept {
+  using C = compute_t<T>;
+  C a = std::abs(static_cast<C>(e.extent[0])), b = std::abs(static_cast<C>(e.extent[1]));
+  if (a < b) { const C s = a; a = b; b = s; }
+  if (!is_finite(a) || !is_finite(b)) return static_cast<T>(a + b);  // inf or NaN
+  if (b == C(0)) return static_cast<T>(C(4) * a);
+  // Scale to a = 1 so that the squares neither overflow nor underflow.
+  const C scale = a;
+  C an = C(1), bn = b / scale;
+  C sum = C(0.5) * (C(1) - bn * bn);  // 2^(-1) c_0^2 with c_0^2 = a^2 - b^2
+  C pow2 = C(1);
+  for (int it = 0; it < 64; ++it) {
+    const C cn = C(0.5) * (an - bn);
+    if (!(cn > C(0))) break;
+    sum += pow2 * cn * cn;  // 2^(n-1) c_n^2 for n >= 1
+    const C a_next = C(0.5) * (an + bn);
+    bn = std::sqrt(an * bn);
+    an = a_next;
+    pow2 *= C(2);
+    if (cn <= std::numeric_limits<C>::epsilon() * an) break;
+  }
+  return static_cast<T>(scale * (C(2) * pi_v<C> / an) * (C(1) - sum));
+}
+
+/// Ramanujan's second approximation of the perimeter (see the header comment for its error).
+template <class T>
+[[nodiscard]] inline T perimeter_ramanujan(const Ellipse2<T>& e) noexcept {
+  using C = compute_t<T>;
+  const C a = std::abs(static_cast<C>(e.extent[0])), b = std::abs(static_cast<C>(e.extent[1]));
+  const C s = a + b;
+  if (!(s > C(0))) return static_cast<T>(s);  // 0 or NaN
+  const C h = sqr((a - b) / s);
+  return static_cast<T>(pi_v<C> * s * (C(1) + C(3) * h / (C(10) + std::sqrt(C(4) - C(3) * h))));
+}
+
+/// The matrix form: M = sum_i axis_i axis_i^T / extent_i^2 (the axes are assumed orthonormal).
+template <class T>
+[[nodiscard]] constexpr ImplicitEllipse2<T> to_implicit(const Ellipse2<T>& e) noexcept {
+  Mat2<T> m{};
+  for (int i = 0; i < 2; ++i) {
+    const Vec2<T> u = e.axis[i] / e.extent[i];
+    m = m + outer(u, u);
+  }
+  return {e.center, m};
+}
+
+namespace detail {
+/// Eigen decomposition of the symmetric matrix [[p, q], [q, r]]: eigenvalues big >= small and the
+/// unit eigenvector (c, s) of `big`; (-s, c) belongs to `small`.
+template <class C>
+struct SymEigen2 {
+  C big, small, c, s;
+};
+
+template <class C>
+[[nodiscard]] inline SymEigen2<C> sym_eigen2(C p, C q, C r) noexcept {
+  const C mid = C(0.5) * (p + r);
+  const C half_diff = C(0.5) * (p - r);
+  const C rad = std::hypot(half_diff, q);
+  const C theta = C(0.5) * std::atan2(q, half_diff);  // eigenvector angle of the larger eigenvalue
+  const C big = mid + rad;
+  // The other eigenvalue from the determinant when that avoids cancellation in mid - rad.
+  const C small = (mid > C(0) && big != C(0)) ? (p * r - q * q) / big : mid - rad;
+  return {big, small, std::cos(theta), std::sin(theta)};
+}
+}  // namespace detail
+
+/// Axis form of a matrix-form ellipse: extent[0] >= extent[1], axis[1] = perp(axis[0]).
+/// std::nullopt when m is not symmetric positive definite (as rounded) or not finite; only the
+/// upper triangle m(0, 1) is read for the off-diagonal entry.
+template <class T>
+[[nodiscard]] inline std::optional<Ellipse2<T>> to_axes(const ImplicitEllipse2<T>& e) noexcept {
+  using C = compute_t<T>;
+  if (!is_finite(e.center) || !is_finite(e.m)) return std::nullopt;
+  const C p = e.m(0, 0), q = e.m(0, 1), r = e.m(1, 1);
+  // Rescale by the largest entry so that the products in the determinant stay in range.
+  const C scale = std::max(std::abs(p), std::max(std::abs(q), std::abs(r)));
+  if (!(scale > C(0))) return std::nullopt;
+  const detail::SymEigen2<C> eg = detail::sym_eigen2(p / scale, q / scale, r / scale);
+  if (!(eg.small > C(0))) return std::nullopt;
+  // The smaller eigenvalue gives the major (longer) axis: extent = 1 / sqrt(lambda).
+  const Vec2<T> major{static_cast<T>(-eg.s), static_cast<T>(eg.c)};
+  const T e0 = static_cast<T>(C(1) / std::sqrt(eg.small * scale));
+  const T e1 = static_cast<T>(C(1) / std::sqrt(eg.big * scale));
+  if (!is_finite(e0) || !is_finite(e1) || !(e1 > T(0))) return std::nullopt;
+  return Ellipse2<T>{e.center, {major, perp(major)}, {e0, e1}};
+}
+
+/// start + sweep, the angle parameter of the arc's end point.
+template <class T>
+[[nodiscard]] constexpr T end_angle(const EllipseArc2<T>& arc) noexcept {
+  return arc.start + arc.sweep;
+}
+
+/// True when angle (taken modulo 2 pi) lies in [start, start + sweep] (rounded, see arc.hpp).
+template <class T>
+[[nodiscard]] inline bool contains_angle(const EllipseArc2<T>& arc, T angle) noexcept {
+  return detail::angle_in_sweep(angle, arc.start, arc.sweep);
+}
+
+}  // namespace locus
