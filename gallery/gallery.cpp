@@ -15,7 +15,8 @@ namespace locus_gallery {
 
 std::vector<Figure> all_figures() {
   std::vector<Figure> all;
-  for (auto part : {chapter3_vector_figures(), chapter3_affine_figures()})
+  for (auto part : {chapter3_vector_figures(), chapter3_affine_figures(), chapter4_transform_figures(),
+                     chapter4_projection_figures()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }
@@ -179,9 +180,11 @@ void vector(SvgWriter& w, const Vec2d& a, const Vec2d& b, std::string_view name,
 
 void angle_mark(SvgWriter& w, const Vec2d& v, const Vec2d& d0, const Vec2d& d1, double r,
                 std::string_view name, const char* c) {
-  const double a0 = locus::atan2_positive(d0.y, d0.x);
+  // The mark spans the smaller angle between the directions, whichever order they come in.
   double sweep = locus::signed_angle(d0, d1);
-  if (sweep < 0) sweep += locus::two_pi_v<double>;
+  const Vec2d from = sweep < 0 ? d1 : d0;
+  if (sweep < 0) sweep = -sweep;
+  const double a0 = locus::atan2_positive(from.y, from.x);
   w.arc(v, r, a0, a0 + sweep, pen(c, 1.2));
   if (name.empty()) return;
   const double am = a0 + 0.5 * sweep;

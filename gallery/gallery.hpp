@@ -40,6 +40,8 @@ struct Figure {
 // The per-file tables, in book order.
 std::vector<Figure> chapter3_vector_figures();  // ch03_vectors.cpp: 3.1-3.17
 std::vector<Figure> chapter3_affine_figures();  // ch03_affine.cpp: 3.19-3.42
+std::vector<Figure> chapter4_transform_figures();  // ch04_transforms.cpp: 4.1-4.25
+std::vector<Figure> chapter4_projection_figures();  // ch04_projections.cpp: 4.26-4.34
 /// Every figure in book order.
 std::vector<Figure> all_figures();
 
@@ -101,7 +103,7 @@ void point(SvgWriter& w, const Vec3d& p, std::string_view name, const char* c = 
 /// A labelled arrow from a to b, the label at the middle offset to the left of the arrow.
 void vector(SvgWriter& w, const Vec2d& a, const Vec2d& b, std::string_view name, const char* c,
             double label_offset_px = 10);
-/// The arc marking the counter-clockwise angle at `vertex` from direction d0 to d1, of radius r
+/// The arc marking the (smaller) angle at `vertex` between directions d0 and d1, of radius r
 /// (world units), optionally labelled at its middle. Uses locus::atan2_positive and
 /// locus::signed_angle.
 void angle_mark(SvgWriter& w, const Vec2d& vertex, const Vec2d& d0, const Vec2d& d1, double r,
