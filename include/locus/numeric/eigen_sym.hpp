@@ -71,10 +71,12 @@ Status check_symmetric(const Mat<T, N, N>& a, T tol) noexcept {
 // Eigen-pairs of [[a, b], [b, c]] with values ascending; the vector of the larger value is
 // (cs, sn), of the smaller (sn, -cs), so [v0 v1] is a rotation. No cancellation: the larger
 // root's vector is built from d + r or r - d, whichever adds same-signed terms.
+// Precondition: entries scaled to magnitude <= ~1e3 (callers scale), so plain sqrt of sums of
+// squares cannot overflow or underflow harmfully; std::hypot would cost several times more.
 template <class C>
 void eigen2(C a, C b, C c, C& lo, C& hi, C& cs, C& sn) noexcept {
   const C m = (a + c) / C(2), d = (a - c) / C(2);
-  const C r = std::hypot(d, b);
+  const C r = std::sqrt(d * d + b * b);
   lo = m - r;
   hi = m + r;
   if (r == C(0)) {  // multiple of the identity: any basis works
@@ -90,7 +92,7 @@ void eigen2(C a, C b, C c, C& lo, C& hi, C& cs, C& sn) noexcept {
     x = b;
     y = r - d;
   }
-  const C len = std::hypot(x, y);
+  const C len = std::sqrt(x * x + y * y);
   cs = x / len;
   sn = y / len;
 }
@@ -119,9 +121,15 @@ template <class T>
     out.vectors = Mat2<T>::identity();
     return out;
   }
+  const C scale = std::max(std::abs(C(a(0, 0))), std::max(std::abs(C(a(0, 1))), std::abs(C(a(1, 1)))));
+  if (scale == C(0)) {
+    out.values = Vec2<T>{};
+    out.vectors = Mat2<T>::identity();
+    return out;
+  }
   C lo, hi, cs, sn;
-  detail::eigen2(C(a(0, 0)), C(a(0, 1)), C(a(1, 1)), lo, hi, cs, sn);
-  out.values = {T(lo), T(hi)};
+  detail::eigen2(C(a(0, 0)) / scale, C(a(0, 1)) / scale, C(a(1, 1)) / scale, lo, hi, cs, sn);
+  out.values = {T(lo * scale), T(hi * scale)};
   out.vectors = Mat2<T>::from_cols(Vec2<T>{T(sn), T(-cs)}, Vec2<T>{T(cs), T(sn)});
   return out;
 }
