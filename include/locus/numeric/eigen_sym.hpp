@@ -121,6 +121,16 @@ template <class T>
     out.vectors = Mat2<T>::identity();
     return out;
   }
+  if (a(0, 1) == T(0)) {  // diagonal: exact, no rounding at all
+    if (a(0, 0) <= a(1, 1)) {
+      out.values = {a(0, 0), a(1, 1)};
+      out.vectors = Mat2<T>::identity();
+    } else {
+      out.values = {a(1, 1), a(0, 0)};
+      out.vectors = Mat2<T>::from_cols(Vec2<T>{T(0), T(1)}, Vec2<T>{T(-1), T(0)});
+    }
+    return out;
+  }
   const C scale = std::max(std::abs(C(a(0, 0))), std::max(std::abs(C(a(0, 1))), std::abs(C(a(1, 1)))));
   if (scale == C(0)) {
     out.values = Vec2<T>{};
