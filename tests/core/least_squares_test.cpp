@@ -63,7 +63,8 @@ ExactLs exact_ls(const std::vector<T>& a, int m, int n, const std::vector<T>& b)
       g[idx(i, j, n)] = s;
     }
     Q s = 0;
-    for (int r = 0; r < m; ++r) s += Q(double(a[idx(r, i, n)])) * Q(double(b[static_cast<std::size_t>(r)]));
+    for (int r = 0; r < m; ++r)
+      s += Q(double(a[idx(r, i, n)])) * Q(double(b[static_cast<std::size_t>(r)]));
     h[static_cast<std::size_t>(i)] = s;
   }
   ExactLs e;
@@ -96,7 +97,8 @@ ExactLs exact_ls(const std::vector<T>& a, int m, int n, const std::vector<T>& b)
 template <class T>
 double max_abs_diff(const std::vector<T>& x, const std::vector<Q>& ex) {
   double d = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) d = std::fmax(d, std::fabs(Q(Q(double(x[i])) - ex[i]).get_d()));
+  for (std::size_t i = 0; i < x.size(); ++i)
+    d = std::fmax(d, std::fabs(Q(Q(double(x[i])) - ex[i]).get_d()));
   return d;
 }
 double max_abs(const std::vector<Q>& v) {
@@ -228,7 +230,8 @@ TYPED_TEST(LeastSquaresTest, ExactFitWhenRightHandSideIsInTheRange) {
     for (T& v : a) v = T(rng.uniform_int(-8, 8));
     for (T& v : xt) v = T(rng.uniform_int(-8, 8));
     for (int i = 0; i < m; ++i)
-      for (int c = 0; c < n; ++c) b[static_cast<std::size_t>(i)] += a[idx(i, c, n)] * xt[static_cast<std::size_t>(c)];
+      for (int c = 0; c < n; ++c)
+        b[static_cast<std::size_t>(i)] += a[idx(i, c, n)] * xt[static_cast<std::size_t>(c)];
     const LeastSquares<T> probe = least_squares(a, m, n, b);
     if (probe.rank < n) continue;  // the random integer matrix happened to be rank deficient
     const ExactLs ex = exact_ls(a, m, n, b);
@@ -238,8 +241,8 @@ TYPED_TEST(LeastSquaresTest, ExactFitWhenRightHandSideIsInTheRange) {
     const LeastSquares<T> ls = least_squares(a, m, n, b);
     EXPECT_LE(double(ls.residual_norm), double(tol<T>(T(32 * m))) * double(frobenius(b)) * kappa);
     for (int c = 0; c < n; ++c)
-      EXPECT_NEAR(double(ls.x[static_cast<std::size_t>(c)]), double(xt[static_cast<std::size_t>(c)]),
-                  double(tol<T>(T(32 * m))) * kappa * 8);
+      EXPECT_NEAR(double(ls.x[static_cast<std::size_t>(c)]),
+                  double(xt[static_cast<std::size_t>(c)]), double(tol<T>(T(32 * m))) * kappa * 8);
   }
 }
 
@@ -328,7 +331,8 @@ TYPED_TEST(LeastSquaresTest, DegenerateAndInvalidInput) {
   }
   // Zero matrix: rank 0, x = 0, residual ||b||.
   for (LstsqMethod method : kMethods) {
-    const LeastSquares<T> z = least_squares(std::vector<T>(6, T(0)), 3, 2, std::vector<T>{3, 0, 4}, method);
+    const LeastSquares<T> z =
+        least_squares(std::vector<T>(6, T(0)), 3, 2, std::vector<T>{3, 0, 4}, method);
     EXPECT_EQ(z.status, Status::degenerate_input);
     EXPECT_EQ(z.rank, 0);
     EXPECT_EQ(z.x, std::vector<T>(2, T(0)));
@@ -338,9 +342,11 @@ TYPED_TEST(LeastSquaresTest, DegenerateAndInvalidInput) {
   const LeastSquares<T> e = least_squares(std::vector<T>{}, 0, 2, std::vector<T>{});
   EXPECT_EQ(e.status, Status::empty_input);
   EXPECT_EQ(e.x, std::vector<T>(2, T(0)));
-  EXPECT_EQ(least_squares(std::vector<T>{}, 3, 0, std::vector<T>{1, 2, 3}).status, Status::empty_input);
+  EXPECT_EQ(least_squares(std::vector<T>{}, 3, 0, std::vector<T>{1, 2, 3}).status,
+            Status::empty_input);
   // Non-finite.
-  const LeastSquares<T> n1 = least_squares(std::vector<T>{1, nan, 0, 1}, 2, 2, std::vector<T>{1, 1});
+  const LeastSquares<T> n1 =
+      least_squares(std::vector<T>{1, nan, 0, 1}, 2, 2, std::vector<T>{1, 1});
   EXPECT_EQ(n1.status, Status::non_finite_input);
   EXPECT_EQ(n1.x, std::vector<T>(2, T(0)));
   EXPECT_TRUE(std::isnan(n1.residual_norm));
@@ -370,7 +376,8 @@ TYPED_TEST(LeastSquaresTest, PowerOfTwoScalingAndRowOrderInvariance) {
     for (T& v : bs) v = std::ldexp(v, 10);
     const LeastSquares<T> s = least_squares(as, m, n, bs);
     for (int c = 0; c < n; ++c)
-      EXPECT_EQ(s.x[static_cast<std::size_t>(c)], std::ldexp(ls.x[static_cast<std::size_t>(c)], 30));
+      EXPECT_EQ(s.x[static_cast<std::size_t>(c)],
+                std::ldexp(ls.x[static_cast<std::size_t>(c)], 30));
     EXPECT_EQ(s.residual_norm, std::ldexp(ls.residual_norm, 10));
     // Reversing the rows is an orthogonal change of the residual space: same solution.
     std::vector<T> ar, br;
@@ -385,6 +392,7 @@ TYPED_TEST(LeastSquaresTest, PowerOfTwoScalingAndRowOrderInvariance) {
     const double eta = ex.residual / (double(frobenius(a)) * xnorm + 1e-300);
     const double bound = double(tol<T>(T(64 * m))) * (std::sqrt(kappa2) + kappa2 * eta) * xnorm;
     for (int c = 0; c < n; ++c)
-      EXPECT_NEAR(double(rv.x[static_cast<std::size_t>(c)]), double(ls.x[static_cast<std::size_t>(c)]), bound);
+      EXPECT_NEAR(double(rv.x[static_cast<std::size_t>(c)]),
+                  double(ls.x[static_cast<std::size_t>(c)]), bound);
   }
 }

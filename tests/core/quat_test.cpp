@@ -122,8 +122,8 @@ TYPED_TEST(QuatTest, RotateAgreesWithRodriguesAndSandwichProduct) {
     EXPECT_TRUE(locus_test::vec_near(r, vector_part(s), tol<T>(32, scale)));
     // Composition: rotating by q1 * q2 = rotating by q2, then q1.
     const Quat<T> q2 = random_unit<T>(rng);
-    EXPECT_TRUE(locus_test::vec_near(rotate(q * q2, v), rotate(q, rotate(q2, v)),
-                                     tol<T>(32, scale)));
+    EXPECT_TRUE(
+        locus_test::vec_near(rotate(q * q2, v), rotate(q, rotate(q2, v)), tol<T>(32, scale)));
   }
 }
 
@@ -233,8 +233,9 @@ TYPED_TEST(QuatTest, SlerpOfNearlyIdenticalInputsIsFinite) {
   SCOPED_TRACE(rng.trace());
   for (int n = 0; n < 1000; ++n) {
     const Quat<T> a = random_unit<T>(rng);
-    const T tiny_angles[] = {T(0), std::numeric_limits<T>::denorm_min(), T(1e-30), eps_v<T>,
-                             std::sqrt(eps_v<T>) / T(2), std::sqrt(eps_v<T>) * T(2)};
+    const T tiny_angles[] = {
+        T(0),     std::numeric_limits<T>::denorm_min(), T(1e-30),
+        eps_v<T>, std::sqrt(eps_v<T>) / T(2),           std::sqrt(eps_v<T>) * T(2)};
     for (const T ang : tiny_angles) {
       const Vec3<T> u = rng.unit<T, 3>();
       const Quat<T> b = from_axis(u, ang) * a;

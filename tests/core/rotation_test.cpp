@@ -27,12 +27,18 @@ constexpr EulerOrder kOrders[] = {EulerOrder::xyz, EulerOrder::xzy, EulerOrder::
                                   EulerOrder::yzx, EulerOrder::zxy, EulerOrder::zyx};
 const char* order_name(EulerOrder o) {
   switch (o) {
-    case EulerOrder::xyz: return "xyz";
-    case EulerOrder::xzy: return "xzy";
-    case EulerOrder::yxz: return "yxz";
-    case EulerOrder::yzx: return "yzx";
-    case EulerOrder::zxy: return "zxy";
-    case EulerOrder::zyx: return "zyx";
+    case EulerOrder::xyz:
+      return "xyz";
+    case EulerOrder::xzy:
+      return "xzy";
+    case EulerOrder::yxz:
+      return "yxz";
+    case EulerOrder::yzx:
+      return "yzx";
+    case EulerOrder::zxy:
+      return "zxy";
+    case EulerOrder::zyx:
+      return "zyx";
   }
   return "?";
 }
@@ -116,6 +122,9 @@ void check_all_representations(const Quat<T>& q) {
     EXPECT_LE(max_diff(m, rodrigues(u, T(q.w < 0 ? -ang : ang))), tol<T>(16));
   }
   EXPECT_LE(orthonormality_error(m), tol<T>(16));
+  // Rotating a vector by the quaternion and by its matrix agree.
+  const Vec3<T> v{T(1), T(-2), T(0.5)};
+  EXPECT_TRUE(locus_test::vec_near(rotate(q, v), m * v, tol<T>(32)));
   // matrix -> quaternion -> matrix, quaternion -> matrix -> quaternion.
   const Quat<T> q2 = to_quat(m);
   EXPECT_LE(quat_diff_mod_sign(q2, q), tol<T>(16));
@@ -164,11 +173,22 @@ TYPED_TEST(RotationTest, AdversarialAnglesRoundTrip) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   const T pi = pi_v<T>;
-  const T angles[] = {T(0), std::numeric_limits<T>::denorm_min(), T(1e-30), T(1e-10),
-                      eps_v<T>, std::sqrt(eps_v<T>), T(1e-3), pi / T(2), pi - T(1e-3),
-                      pi - std::sqrt(eps_v<T>), pi - T(8) * eps_v<T>, pi, -pi, T(2) * pi};
-  std::vector<Vec3<T>> axes = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {1, 1, 0},
-                               {1, 1, 1}, {0, -1, 1}};
+  const T angles[] = {T(0),
+                      std::numeric_limits<T>::denorm_min(),
+                      T(1e-30),
+                      T(1e-10),
+                      eps_v<T>,
+                      std::sqrt(eps_v<T>),
+                      T(1e-3),
+                      pi / T(2),
+                      pi - T(1e-3),
+                      pi - std::sqrt(eps_v<T>),
+                      pi - T(8) * eps_v<T>,
+                      pi,
+                      -pi,
+                      T(2) * pi};
+  std::vector<Vec3<T>> axes = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0},
+                               {1, 1, 0}, {1, 1, 1}, {0, -1, 1}};
   for (int k = 0; k < 20; ++k) axes.push_back(rng.unit<T, 3>());
   for (const Vec3<T>& ax : axes)
     for (const T t : angles) {
@@ -258,7 +278,8 @@ TYPED_TEST(RotationTest, GimbalLockIsReportedAndTheCanonicalSolutionReproducesTh
           const Mat3<T> mb = to_matrix(EulerAngles<T>{o, b});
           const EulerAngles<T> eb = to_euler(mb, o);
           EXPECT_TRUE(eb.unique) << "delta " << double(delta);
-          EXPECT_LE(max_diff(euler_oracle(o, eb.angles), mb), tol<T>(32)) << "delta " << double(delta);
+          EXPECT_LE(max_diff(euler_oracle(o, eb.angles), mb), tol<T>(32))
+              << "delta " << double(delta);
         }
         // Just inside the lock tolerance: reported locked, reproduces to ~tolerance.
         const Vec3<T> c{a0, sign * (half_pi - default_lock_tolerance<T> / T(4)), a2};

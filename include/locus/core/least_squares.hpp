@@ -135,7 +135,9 @@ template <class T>
 inline void lstsq_normal(const std::vector<T>& a, int m, int n, const std::vector<T>& b, T tol,
                          LeastSquares<T>& out) {
   const std::size_t un = static_cast<std::size_t>(n);
-  auto A = [&](int r, int c) { return a[static_cast<std::size_t>(r) * un + static_cast<std::size_t>(c)]; };
+  auto A = [&](int r, int c) {
+    return a[static_cast<std::size_t>(r) * un + static_cast<std::size_t>(c)];
+  };
   // G = A^T A (lower triangle used), h = A^T b.
   std::vector<T> g(un * un, T(0)), h(un, T(0));
   for (int i = 0; i < n; ++i) {
@@ -148,7 +150,9 @@ inline void lstsq_normal(const std::vector<T>& a, int m, int n, const std::vecto
     for (int r = 0; r < m; ++r) s += A(r, i) * b[static_cast<std::size_t>(r)];
     h[static_cast<std::size_t>(i)] = s;
   }
-  auto G = [&](int i, int j) -> T& { return g[static_cast<std::size_t>(i) * un + static_cast<std::size_t>(j)]; };
+  auto G = [&](int i, int j) -> T& {
+    return g[static_cast<std::size_t>(i) * un + static_cast<std::size_t>(j)];
+  };
   T gmax = T(0);
   for (int i = 0; i < n; ++i) gmax = std::fmax(gmax, G(i, i));
   const T threshold = tol * gmax;
@@ -229,8 +233,8 @@ template <class T>
     return out;
   }
   if (rank_tolerance < T(0))
-    rank_tolerance = T(method == LstsqMethod::normal_equations ? 16 : 1) * T(m > n ? m : n) *
-                     eps_v<T>;
+    rank_tolerance =
+        T(method == LstsqMethod::normal_equations ? 16 : 1) * T(m > n ? m : n) * eps_v<T>;
   std::vector<T> aw(a.begin(), a.end()), bw(b.begin(), b.end());
   if (method == LstsqMethod::normal_equations)
     detail::lstsq_normal(aw, m, n, bw, rank_tolerance, out);
@@ -244,8 +248,7 @@ template <class T>
                                                    const std::vector<T>& b,
                                                    LstsqMethod method = LstsqMethod::qr,
                                                    T rank_tolerance = T(-1)) {
-  return least_squares(std::span<const T>(a), m, n, std::span<const T>(b), method,
-                       rank_tolerance);
+  return least_squares(std::span<const T>(a), m, n, std::span<const T>(b), method, rank_tolerance);
 }
 
 }  // namespace locus

@@ -348,10 +348,16 @@ template <class T, int N>
 [[nodiscard]] inline Lu<T, N> lu_factor(
     const Mat<T, N, N>& a, T rcond_tolerance = default_rcond_tolerance<T>(N)) noexcept {
   Lu<T, N> f{};
-  f.lu = a;
+  // Work on a flat copy: the elimination indexes rows as a[r * N + c], which must stay inside
+  // one array object.
+  T flat[N * N];
+  for (int r = 0; r < N; ++r)
+    for (int c = 0; c < N; ++c) flat[r * N + c] = a.a[r][c];
   T work[5 * N];
-  detail::factor_summary(&f.lu.a[0][0], N, f.perm, work, rcond_tolerance, f.status, f.determinant,
-                         f.rcond, f.singular, f.near_singular);
+  detail::factor_summary(flat, N, f.perm, work, rcond_tolerance, f.status, f.determinant, f.rcond,
+                         f.singular, f.near_singular);
+  for (int r = 0; r < N; ++r)
+    for (int c = 0; c < N; ++c) f.lu.a[r][c] = flat[r * N + c];
   return f;
 }
 
@@ -360,10 +366,13 @@ template <class T, int N>
 [[nodiscard]] inline Vec<T, N> solve(const Lu<T, N>& f, const Vec<T, N>& b) noexcept {
   if (f.singular) return Vec<T, N>{};
   Vec<T, N> x{};
+  T lu[N * N];
+  for (int r = 0; r < N; ++r)
+    for (int c = 0; c < N; ++c) lu[r * N + c] = f.lu.a[r][c];
   T bb[N];
   for (int i = 0; i < N; ++i) bb[i] = b[i];
   T xx[N];
-  detail::lu_solve(&f.lu.a[0][0], f.perm, N, bb, xx);
+  detail::lu_solve(lu, f.perm, N, bb, xx);
   for (int i = 0; i < N; ++i) x[i] = xx[i];
   return x;
 }
@@ -428,8 +437,10 @@ requires(N == 1 || N > 4)
 template <class T, int R, int C>
 [[nodiscard]] inline int rank(const Mat<T, R, C>& a,
                               T rank_tolerance = default_rank_tolerance<T>(R, C)) noexcept {
-  Mat<T, R, C> w = a;
-  return detail::rank_inplace(&w.a[0][0], R, C, rank_tolerance);
+  T w[R * C];
+  for (int r = 0; r < R; ++r)
+    for (int c = 0; c < C; ++c) w[r * C + c] = a.a[r][c];
+  return detail::rank_inplace(w, R, C, rank_tolerance);
 }
 
 // ---- run-time size -------------------------------------------------------------------------
@@ -498,6 +509,9 @@ template <class T>
 [[nodiscard]] inline LinearSolution<T, std::vector<T>> solve(
     std::span<const T> a, int n, std::span<const T> b, int nrhs = 1,
     T rcond_tolerance = use_default_tolerance<T>) {
+  LOCUS_ASSERT(
+      nrhs >= 0 && b.size() == static_cast<std::size_t>(n) * static_cast<std::size_t>(nrhs),
+      "solve: b must hold n * nrhs entries");
   const LuDynamic<T> f = lu_factor(a, n, rcond_tolerance);
   LinearSolution<T, std::vector<T>> s{f.status, {},         f.determinant,
                                       f.rcond,  f.singular, f.near_singular};

@@ -187,11 +187,12 @@ template <class T>
 }
 
 /// Spherical linear interpolation between unit quaternions along the shorter arc: constant
-/// angular velocity, slerp(a, b, 0) == a and slerp(a, b, 1) == b or -b (the same rotation) up
-/// to rounding of sin(theta)/sin(theta). The half angle theta between a and b is computed as
-/// 2 atan2(|a - b|, |a + b|), accurate for all angles (acos(dot) loses half the digits near 0).
-/// When theta < sqrt(eps) the inputs are nearly parallel and the result is nlerp, whose
-/// deviation from slerp is O(theta^3) < eps: finite and unit for identical inputs.
+/// angular velocity; slerp(a, b, 0) == a and slerp(a, b, 1) == b or -b (the same rotation)
+/// exactly, since the weights are sin(theta)/sin(theta) == 1 and sin(0) == 0. The angle theta
+/// between a and b is computed as 2 atan2(|a - b|, |a + b|), accurate for all angles (acos(dot)
+/// loses half the digits near 0). When theta < sqrt(eps) the inputs are nearly parallel and the
+/// result is nlerp, whose deviation from slerp is O(theta^3) < eps: finite and unit also for
+/// identical inputs (endpoints then within an ulp, through the normalisation).
 template <class T>
 [[nodiscard]] inline Quat<T> slerp(const Quat<T>& a, const Quat<T>& b, T t) noexcept {
   const Quat<T> bb = dot(a, b) < T(0) ? -b : b;
