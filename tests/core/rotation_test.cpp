@@ -247,6 +247,29 @@ TYPED_TEST(RotationTest, EulerAnglesAreRecoveredAwayFromGimbalLock) {
   }
 }
 
+// The documented reading of order ABC: intrinsic rotations about the moving body axes, A first
+// (by a0), then the rotated B axis (by a1), then the twice-rotated C axis (by a2).
+TYPED_TEST(RotationTest, EulerOrderIsIntrinsicAboutMovingAxes) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (EulerOrder o : kOrders) {
+    SCOPED_TRACE(order_name(o));
+    const char* name = order_name(o);
+    auto axis = [](char c) { return Vec3<T>{T(c == 'x'), T(c == 'y'), T(c == 'z')}; };
+    for (int n = 0; n < 200; ++n) {
+      const Vec3<T> a = rng.vec<T, 3>(-3, 3);
+      const Mat3<L> r1 = rodrigues(axis(name[0]), a[0]);
+      const Vec3<L> b1 = r1 * vec_cast<L>(axis(name[1]));
+      const Mat3<L> r2 = rodrigues(Vec3<T>{T(b1.x), T(b1.y), T(b1.z)}, a[1]) * r1;
+      const Vec3<L> c2 = r2 * vec_cast<L>(axis(name[2]));
+      const Mat3<L> r3 = rodrigues(Vec3<T>{T(c2.x), T(c2.y), T(c2.z)}, a[2]) * r2;
+      // The moving axes are rounded to T once before use: error ~ eps per step.
+      EXPECT_LE(max_diff(to_matrix(EulerAngles<T>{o, a}), r3), tol<T>(32));
+    }
+  }
+}
+
 TYPED_TEST(RotationTest, GimbalLockIsReportedAndTheCanonicalSolutionReproducesTheMatrix) {
   using T = TypeParam;
   Rng rng;

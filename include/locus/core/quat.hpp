@@ -136,7 +136,7 @@ template <class T>
 }
 
 /// Rotates v by the unit quaternion q: q v q*, evaluated as v + 2 u x (u x v + w v) with
-/// u = (x, y, z). For non-unit q the result is scaled by |q|^2 only approximately; normalise first.
+/// u = (x, y, z). q must be unit (the formula uses |q| = 1); normalise a drifted q first.
 template <class T>
 [[nodiscard]] constexpr Vec3<T> rotate(const Quat<T>& q, const Vec3<T>& v) noexcept {
   const Vec3<T> u{q.x, q.y, q.z};

@@ -22,17 +22,18 @@
 // reports unique = false when cos(a1) <= lock_tolerance (a named parameter; the default 16 eps
 // is a few roundings of the unit-size matrix entries), and returns the canonical solution
 // a2 = 0 with a1 = +-pi/2 (to rounding) and a0 carrying the whole sum. That solution reproduces
-// the matrix to about lock_tolerance. Away from the lock the first angle is recovered from the
-// residual rotation R * R_C(-a2) * R_B(-a1), so the round trip matrix -> angles -> matrix stays at
-// rounding level even when cos(a1) is tiny (the individual a0, a2 are then ill-conditioned, their
-// combination is not).
+// the matrix to about pi * lock_tolerance (the entries it drops are of size cos(a1) |a2|). Away
+// from the lock the first angle is recovered from the residual rotation R * R_C(-a2) * R_B(-a1), so
+// the round trip matrix -> angles -> matrix stays at rounding level even when cos(a1) is tiny (the
+// individual a0, a2 are then ill-conditioned, their combination is not).
 //
 // Degenerate input: a zero or non-finite axis, a non-finite angle, a zero or non-finite
 // quaternion and a non-finite matrix all convert to the identity rotation (to_axis_angle gives
-// {(1, 0, 0), 0}). A matrix that is not a rotation is treated through its quaternion (Shepperd),
-// which normalises; use nearest_rotation() or orthonormalize_rotation() to repair drifted
-// matrices explicitly. Conversions are O(1); nearest_rotation iterates (quadratic convergence,
-// typically 3-6 iterations of a 3x3 inverse) and computes in double for float input.
+// {(1, 0, 0), 0}). A matrix that is not a rotation goes through Shepperd's quaternion, which
+// normalises, in to_quat and to_axis_angle; to_euler reads its entries as if it were a rotation.
+// Use nearest_rotation() or orthonormalize_rotation() to repair drifted matrices explicitly.
+// Conversions are O(1); nearest_rotation iterates (quadratic convergence, typically 3-6 iterations
+// of a 3x3 inverse) and computes in double for float input.
 
 #include <locus/config.hpp>
 #include <locus/core/mat.hpp>
