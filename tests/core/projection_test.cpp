@@ -356,6 +356,16 @@ TYPED_TEST(ProjectionTest, PerspectiveProjectionPreservesCrossRatioFigure4_31) {
     ++checked;
   }
   EXPECT_GT(checked, 50);
+  // Figure 4.31: perspective does not preserve simple ratios (it is not affine), only the
+  // cross-ratio. Eye at the origin, plane z = -1: B is the midpoint of A and C, but its image
+  // (1/2) is not the midpoint of the images 0 and 2/3.
+  const auto pz = perspective_projection(Vec3<T>{}, Vec3<T>{0, 0, -1}, Vec3<T>{0, 0, 1});
+  ASSERT_TRUE(pz.has_value());
+  const auto ia = apply(*pz, Vec3<T>{0, 0, -1}), ib = apply(*pz, Vec3<T>{1, 0, -2}),
+             ic = apply(*pz, Vec3<T>{2, 0, -3});
+  EXPECT_NEAR(ib.x, T(0.5), tol<T>(4));
+  EXPECT_NEAR(ic.x, T(2) / T(3), tol<T>(4));
+  EXPECT_GT(std::abs(ib.x - (ia.x + ic.x) / 2), T(0.1));
   // 2D: a pencil of four lines through an eye cuts every line in the same cross-ratio.
   const auto m1 = perspective_projection(Vec2<T>{0, 0}, Vec2<T>{0, 1}, Vec2<T>{0, 1});
   const auto m2 = perspective_projection(Vec2<T>{0, 0}, Vec2<T>{2, 0}, Vec2<T>{1, 1});
