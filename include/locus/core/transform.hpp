@@ -20,7 +20,7 @@
 //   scaling_along(center, D, factors)        factor i along column i of D (any independent set)
 //   reflection(point, normal)                mirror in the line (2D) / plane (3D) through point
 //   reflection_about_line(point, dir)        x -> 2 * foot(x) - x: a mirror in 2D, the half-turn
-//                                            about the line in 3D (the book's 3D "reflection")
+//                                            about the line in 3D (reflection in a line)
 //   reflection_through_point(center)         x -> 2 * center - x
 //   shear(point, normal, dir, angle)         book's general shear (section 4.7, fig. 4.25), below
 //   shear_by_factor(point, normal, dir, k)   the same with k = tan(angle)
@@ -422,7 +422,7 @@ template <class T, int N>
 
 /// Reflection about the line through `point` with direction `dir`: x -> 2 f - x, f the foot of
 /// x on the line. In 2D this is the mirror in that line (det -1); in 3D it is the half-turn
-/// about it (det +1), the book's 3D reflection about a line (figure 4.19). An involution.
+/// about it (det +1): reflection in a line as opposed to a mirror in a plane. An involution.
 /// A zero direction gives the identity, a non-finite one the all-NaN map.
 template <class T, int N>
 [[nodiscard]] inline Affine<T, N> reflection_about_line(const Vec<T, N>& point,
