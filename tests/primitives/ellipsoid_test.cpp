@@ -50,6 +50,32 @@ double eig_residual(const detail::SymmetricEigen3<double>& e, const Mat3<double>
     for (int j = 0; j < 3; ++j) r = std::max({r, std::fabs(rec.a[i][j] - m.a[i][j]), std::fabs(orth.a[i][j])});
   return r;
 }
+
+// (1/3) * flux of X - p through a parametrised surface patch (quadrature over [u0,u1]x[v0,v1],
+// central differences of point_at); its area in *area: the divergence theorem as a second, independent volume
+// algorithm. When `outward_ref` is given, each normal is flipped to point away from
+// outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation is used.
+template <class F, class G>
+double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, double v1,
+                   const Vec3<double>& p, int nu, int nv, double* area = nullptr) {
+  // Midpoint rule in u (the periodic angle: spectrally accurate), two-point Gauss-Legendre on
+  // each of the nv cells in v (exact for cubics).
+  const double hu = (u1 - u0) / nu, hv = (v1 - v0) / nv, e = 1e-6, g = hv / (2 * std::sqrt(3.0));
+  double s = 0, a = 0;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      for (const double off : {-g, g}) {
+        const double u = u0 + (i + 0.5) * hu, v = v0 + (j + 0.5) * hv + off;
+        const Vec3<double> x = pt(u, v);
+        Vec3<double> nn = cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
+        const Vec3<double> ref = outward_ref(u, v);
+        if (!(ref == x) && dot(nn, x - ref) < 0) nn = -nn;
+        s += dot(x - p, nn) * hu * hv / 2;
+        a += length(nn) * hu * hv / 2;
+      }
+  if (area) *area = a;
+  return s / 3;
+}
 }  // namespace
 
 TEST(SymmetricEigen3, RandomMatricesDecomposeWithSmallResidual) {
@@ -193,4 +219,17 @@ TYPED_TEST(EllipsoidTest, Degenerate) {
   const Ellipsoid3<T> s{{1, 1, 1}, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {2, 2, 2}};
   EXPECT_NEAR(volume(s), T(32) / T(3) * pi_v<T>, tol<T>(8, 40));
   EXPECT_TRUE(vec_near(point_at(s, Vec2<T>{0, 0}), Vec3<T>{1, 1, 3}, tol<T>(8, 3)));
+}
+
+TYPED_TEST(EllipsoidTest, VolumeByDivergenceTheorem) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const auto e = random_ellipsoid<T>(rng);
+  Ellipsoid3<double> ed{vec_cast<double>(e.center), {vec_cast<double>(e.axis[0]), vec_cast<double>(e.axis[1]),
+                        vec_cast<double>(e.axis[2])}, vec_cast<double>(e.extent)};
+  const auto pt = [&](double a, double b) { return point_at(ed, Vec2<double>{a, b}); };
+  const auto ref = [&](double, double) { return ed.center; };
+  const double v = flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, pi_v<double>, Vec3<double>{1, 1, 1}, 64, 32);
+  EXPECT_NEAR(double(volume(e)), v, 1e-6 * v + double(tol<T>(64)) * v);
 }

@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: BSL-1.0
+// Tests for primitives/quadric.hpp (row prim3.quadric: classification by eigenvalue signs and
+// standard form; figures 9.18, 9.19, 9.20).
+#include <locus/primitives/quadric.hpp>
+
+#include "support/typed.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+using namespace locus;
+using locus_test::Rng;
+using locus_test::tol;
+using locus_test::vec_near;
+
+template <class T>
+class QuadricTest : public ::testing::Test {};
+TYPED_TEST_SUITE(QuadricTest, locus_test::RealTypes);
+
+static_assert(std::is_aggregate_v<Quadric3d> && std::is_trivially_copyable_v<Quadric3f>);
+
+namespace {
+using I = std::int64_t;
+
+// A quadric with integer coefficients, x^T A x + b.x + c (A symmetric).
+struct IntQuadric {
+  I a[3][3];
+  I b[3];
+  I c;
+};
+
+struct Case {
+  const char* name;
+  QuadricType type;
+  IntQuadric q;
+};
+
+IntQuadric diag(I d0, I d1, I d2, I b0, I b1, I b2, I c) {
+  return {{{d0, 0, 0}, {0, d1, 0}, {0, 0, d2}}, {b0, b1, b2}, c};
+}
+
+// One standard-form representative per class (the book's figures 9.18-9.20 and their
+// degenerate companions). The linear terms of the paraboloids and of the parabolic cylinder
+// deliberately have nonzero components along squared axes too, so completing squares matters.
+std::vector<Case> all_cases() {
+  using Q = QuadricType;
+  return {
+      {"ellipsoid", Q::ellipsoid, diag(1, 2, 3, 0, 0, 0, -6)},
+      {"hyperboloid_one_sheet", Q::hyperboloid_one_sheet, diag(1, 2, -3, 0, 0, 0, -6)},
+      {"hyperboloid_two_sheets", Q::hyperboloid_two_sheets, diag(1, -2, -3, 0, 0, 0, -6)},
+      {"elliptic_cone", Q::elliptic_cone, diag(1, 2, -3, 0, 0, 0, 0)},
+      {"point", Q::point, diag(1, 2, 3, 2, 0, 0, 1)},  // (x + 1)^2 + 2 y^2 + 3 z^2 = 0
+      {"imaginary_ellipsoid", Q::empty, diag(1, 2, 3, 0, 0, 0, 6)},
+      {"elliptic_paraboloid", Q::elliptic_paraboloid, diag(1, 2, 0, 2, 0, -4, 5)},
+      {"hyperbolic_paraboloid", Q::hyperbolic_paraboloid, diag(1, -2, 0, 0, 4, 3, 1)},
+      {"elliptic_cylinder", Q::elliptic_cylinder, diag(1, 2, 0, 0, 0, 0, -4)},
+      {"imaginary_cylinder", Q::empty, diag(1, 2, 0, 0, 0, 0, 4)},
+      {"hyperbolic_cylinder", Q::hyperbolic_cylinder, diag(1, -2, 0, 0, 0, 0, 4)},
+      {"line", Q::line, diag(1, 2, 0, -2, 0, 0, 1)},  // (x - 1)^2 + 2 y^2 = 0
+      {"intersecting_planes", Q::intersecting_planes, diag(1, -2, 0, 0, 0, 0, 0)},
+      {"parabolic_cylinder", Q::parabolic_cylinder, diag(3, 0, 0, 6, 2, -1, 7)},
+      {"parallel_planes", Q::parallel_planes, diag(3, 0, 0, 0, 0, 0, -12)},
+      {"imaginary_parallel_planes", Q::empty, diag(3, 0, 0, 0, 0, 0, 12)},
+      {"double_plane", Q::plane, diag(3, 0, 0, 6, 0, 0, 3)},  // 3 (x + 1)^2 = 0
+      {"plane", Q::plane, diag(0, 0, 0, 1, 2, -2, 5)},
+      {"contradiction", Q::empty, diag(0, 0, 0, 0, 0, 0, 3)},
+      {"entire_space", Q::entire_space, diag(0, 0, 0, 0, 0, 0, 0)},
+  };
+}
+
+// Rotation by the integer quaternion (w, x, y, z), scaled by N = w^2 + x^2 + y^2 + z^2 so that
+// it is an integer matrix: R = Rn / N is exactly orthogonal.
+void int_rotation(Rng& rng, I rn[3][3], I& n) {
+  I w, x, y, z;
+  do {
+    w = rng.uniform_int(-3, 3), x = rng.uniform_int(-3, 3), y = rng.uniform_int(-3, 3), z = rng.uniform_int(-3, 3);
+    n = w * w + x * x + y * y + z * z;
+  } while (n == 0);
+  const I m[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                     {2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)},
+                     {2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) rn[i][j] = m[i][j];
+}
+
+// The quadric in the coordinates X = R x - t, multiplied by N^2 (a positive factor, so the
+// class is unchanged): every coefficient stays an integer, small enough to be exact in float.
+IntQuadric transform(const IntQuadric& q, Rng& rng) {
+  I r[3][3], n;
+  int_rotation(rng, r, n);
+  IntQuadric o{};
+  // A' = Rn A Rn^T, b' = N Rn b (the quadric of x = R^T X, times N^2).
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      I s = 0;
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) s += r[i][k] * q.a[k][l] * r[j][l];
+      o.a[i][j] = s;
+    }
+  for (int i = 0; i < 3; ++i) {
+    I s = 0;
+    for (int k = 0; k < 3; ++k) s += r[i][k] * q.b[k];
+    o.b[i] = n * s;
+  }
+  o.c = n * n * q.c;
+  // Translate: X = Y - t gives b'' = b' - 2 A' t, c'' = t^T A' t - b'.t + c'.
+  const I t[3] = {rng.uniform_int(-3, 3), rng.uniform_int(-3, 3), rng.uniform_int(-3, 3)};
+  IntQuadric p = o;
+  for (int i = 0; i < 3; ++i) {
+    I s = 0;
+    for (int k = 0; k < 3; ++k) s += o.a[i][k] * t[k];
+    p.b[i] = o.b[i] - 2 * s;
+  }
+  I tat = 0, bt = 0;
+  for (int i = 0; i < 3; ++i) {
+    bt += o.b[i] * t[i];
+    for (int k = 0; k < 3; ++k) tat += t[i] * o.a[i][k] * t[k];
+  }
+  p.c = tat - bt + o.c;
+  return p;
+}
+
+template <class T>
+Quadric3<T> to_real(const IntQuadric& q, I sign = 1) {
+  Quadric3<T> r{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_LT(std::abs(q.a[i][j]), I(1) << 24);  // exact in float
+      r.a.a[i][j] = static_cast<T>(sign * q.a[i][j]);
+    }
+    EXPECT_LT(std::abs(q.b[i]), I(1) << 24);
+    r.b[i] = static_cast<T>(sign * q.b[i]);
+  }
+  EXPECT_LT(std::abs(q.c), I(1) << 24);
+  r.c = static_cast<T>(sign * q.c);
+  return r;
+}
+
+template <class T>
+T coefficient_scale(const Quadric3<T>& q) {
+  T s = std::fabs(q.c);
+  for (int i = 0; i < 3; ++i) {
+    s = std::fmax(s, std::fabs(q.b[i]));
+    for (int j = 0; j < 3; ++j) s = std::fmax(s, std::fabs(q.a.a[i][j]));
+  }
+  return s;
+}
+}  // namespace
+
+TYPED_TEST(QuadricTest, Figures9_18To9_20StandardFormsClassify) {
+  using T = TypeParam;
+  for (const auto& c : all_cases()) {
+    SCOPED_TRACE(c.name);
+    const auto r = classify(to_real<T>(c.q));
+    EXPECT_EQ(r.status, Status::ok);
+    EXPECT_TRUE(r.exact);
+    EXPECT_EQ(to_string(r.type), to_string(c.type));
+  }
+  // Fig 9.18 (three nonzero eigenvalues) / 9.19 (two) / 9.20 (one): the rank of A.
+  EXPECT_EQ(classify(to_real<T>(diag(1, 2, -3, 0, 0, 0, -6))).rank_a, 3);
+  EXPECT_EQ(classify(to_real<T>(diag(1, -2, 0, 0, 4, 3, 1))).rank_a, 2);
+  EXPECT_EQ(classify(to_real<T>(diag(3, 0, 0, 6, 2, -1, 7))).rank_a, 1);
+}
+
+TYPED_TEST(QuadricTest, ExactClassificationIsInvariantUnderRationalRotationsAndTranslations) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (const auto& c : all_cases()) {
+    SCOPED_TRACE(c.name);
+    for (int trial = 0; trial < 25; ++trial) {
+      const IntQuadric iq = transform(c.q, rng);
+      for (const I sign : {I(1), I(-1)}) {  // q = 0 and -q = 0 are the same surface
+        const auto r = classify(to_real<T>(iq, sign));
+        ASSERT_EQ(r.status, Status::ok);
+        EXPECT_TRUE(r.exact);
+        ASSERT_EQ(to_string(r.type), to_string(c.type));
+        EXPECT_EQ(r.positive_a + r.negative_a, r.rank_a);
+        EXPECT_EQ(r.positive_m + r.negative_m, r.rank_m);
+      }
+    }
+  }
+}
+
+TYPED_TEST(QuadricTest, StandardFormRoundTripAndDefinition) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (const auto& c : all_cases()) {
+    SCOPED_TRACE(c.name);
+    for (int trial = 0; trial < 10; ++trial) {
+      const Quadric3<T> q = to_real<T>(transform(c.q, rng));
+      const auto f = standard_form(q);
+      ASSERT_EQ(f.status, Status::ok);
+      ASSERT_EQ(to_string(f.type), to_string(c.type));
+      // Rotation: orthonormal and right-handed (computed in double, rounded to T).
+      const Mat3<T> rtr = transpose(f.rotation) * f.rotation;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) EXPECT_NEAR(rtr.a[i][j], i == j ? T(1) : T(0), tol<T>(16));
+      EXPECT_NEAR(determinant(f.rotation), T(1), tol<T>(16));
+      // Shape of the form: nonzero diagonal entries first; linear term only along axis 2.
+      const auto cls = classify(q);
+      for (int i = 0; i < 3; ++i) EXPECT_EQ(f.diagonal[i] != T(0), i < cls.rank_a);
+      EXPECT_EQ(f.linear.x, T(0));
+      EXPECT_EQ(f.linear.y, T(0));
+      const bool has_linear = cls.rank_m == cls.rank_a + 2;
+      EXPECT_EQ(f.linear.z > T(0), has_linear);
+      if (has_linear || cls.rank_m == cls.rank_a) {
+        EXPECT_EQ(f.constant, T(0));
+      }
+      // Definition: q(P + R y) = sum d_i y_i^2 + e.y + k for random y. The scale bounds the
+      // terms of q at |X| <= |P| + 2: eps-level relative error of each term.
+      const T big = coefficient_scale(q);
+      const T reach = length(f.center) + T(2);
+      const T scale = big * (reach * reach + reach + T(1));
+      for (int s = 0; s < 10; ++s) {
+        const Vec3<T> y = rng.vec<T, 3>(-1, 1);
+        const Vec3<T> x = f.center + f.rotation * y;
+        const T lhs = signed_value(q, x);
+        const T rhs = f.diagonal.x * y.x * y.x + f.diagonal.y * y.y * y.y + f.diagonal.z * y.z * y.z +
+                      dot(f.linear, y) + f.constant;
+        EXPECT_NEAR(lhs, rhs, tol<T>(256, scale));
+      }
+      // Back to the general form.
+      const Quadric3<T> back = to_quadric(f);
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) EXPECT_NEAR(back.a.a[i][j], q.a.a[i][j], tol<T>(256, scale));
+        EXPECT_NEAR(back.b[i], q.b[i], tol<T>(256, scale));
+      }
+      EXPECT_NEAR(back.c, q.c, tol<T>(256, scale));
+    }
+  }
+}
+
+TYPED_TEST(QuadricTest, ToleranceClassificationRecoversRoundedDegenerateClasses) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  int exact_differs = 0;
+  for (const auto& c : all_cases()) {
+    SCOPED_TRACE(c.name);
+    for (int trial = 0; trial < 10; ++trial) {
+      // Rotate and translate in floating point (irrational rotation: the coefficients carry
+      // rounding error, so a cone is typically no longer exactly a cone).
+      const auto qv = rng.unit<double, 4>();
+      const double w = qv.x, x = qv.y, y = qv.z, z = qv.w;
+      const Mat3<double> r{{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                            {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                            {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
+      Quadric3<T> q0 = to_real<T>(c.q);
+      // Same shape via to_quadric of a hand-made standard-form-like description: X = t + R x.
+      QuadricStandardForm<T> f{Status::ok, c.type, {}, rng.vec<T, 3>(-2, 2), {}, {}, T(0)};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) f.rotation.a[i][j] = static_cast<T>(r.a[i][j]);
+      f.diagonal = {q0.a.a[0][0], q0.a.a[1][1], q0.a.a[2][2]};
+      f.linear = q0.b;
+      f.constant = q0.c;
+      const Quadric3<T> q = to_quadric(f);
+      const T rel_tol = tol<T>(1024);  // a few hundred roundings of the coefficients
+      const auto rt = classify(q, rel_tol);
+      ASSERT_EQ(rt.status, Status::ok);
+      EXPECT_FALSE(rt.exact);
+      EXPECT_EQ(to_string(rt.type), to_string(c.type));
+      EXPECT_EQ(to_string(standard_form(q, rel_tol).type), to_string(c.type));
+      exact_differs += classify(q).type != c.type;
+    }
+  }
+  // The rounded inputs really are perturbed: exact classification sees other classes sometimes.
+  EXPECT_GT(exact_differs, 0);
+}
+
+TYPED_TEST(QuadricTest, NonFiniteAndExactnessRange) {
+  using T = TypeParam;
+  const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+  Quadric3<T> q = to_real<T>(diag(1, 2, 3, 0, 0, 0, -1));
+  q.b.y = nan;
+  EXPECT_EQ(classify(q).status, Status::non_finite_input);
+  EXPECT_EQ(classify(q).type, QuadricType::invalid);
+  EXPECT_EQ(standard_form(q).status, Status::non_finite_input);
+  EXPECT_EQ(classify(q, T(1e-3)).status, Status::non_finite_input);
+  q.b.y = 0;
+  q.a.a[0][0] = inf;
+  EXPECT_EQ(classify(q).type, QuadricType::invalid);
+  // Tiny but in-range coefficients are classified exactly: x^2 + 2^-100 (y^2 + z^2) - 2^-120 is
+  // an ellipsoid, x^2 + 2^-100 y^2 - 2^-100 z^2 + 2^-120 a hyperboloid of two sheets.
+  const T t100 = std::ldexp(T(1), -100), t120 = std::ldexp(T(1), -120);
+  const Quadric3<T> e{Mat3<T>::diagonal({1, t100, t100}), {}, -t120};
+  EXPECT_EQ(classify(e).type, QuadricType::ellipsoid);
+  EXPECT_TRUE(classify(e).exact);
+  const Quadric3<T> h{Mat3<T>::diagonal({1, t100, -t100}), {}, t120};
+  EXPECT_EQ(classify(h).type, QuadricType::hyperboloid_two_sheets);
+  EXPECT_TRUE(classify(h).exact);
+  if constexpr (std::is_same_v<T, double>) {
+    // Beyond the documented range the flag says so.
+    const Quadric3<T> far{Mat3<T>::diagonal({1, 1e-80, 1}), {}, -1};
+    EXPECT_FALSE(classify(far).exact);
+    EXPECT_EQ(classify(far).type, QuadricType::ellipsoid);  // still computed the same way
+  }
+}
+
+TYPED_TEST(QuadricTest, SignedValueMatchesDefinition) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 200; ++trial) {
+    const Quadric3<T> q = to_real<T>(transform(all_cases()[std::size_t(trial % 20)].q, rng));
+    const Vec3<T> x = rng.vec<T, 3>(-2, 2);
+    // x^T A x + b.x + c with the full (symmetric) matrix product.
+    const double ref = double(dot(x, q.a * x)) + double(dot(q.b, x)) + double(q.c);
+    EXPECT_NEAR(double(signed_value(q, x)), ref, double(tol<T>(64, coefficient_scale(q) * 16)));
+  }
+}
