@@ -85,7 +85,8 @@ bool fig_3_25(SvgWriter& w) {
   const Vec2d p0{0, 0}, p1{2, 1};
   w.line(p0, p1 - p0, pen(c::light, 1));
   for (double t : {-0.5, 0.25, 0.5, 1.5}) {
-    const auto r = affine_combination(std::array<Vec2d, 2>{p0, p1}, std::array<double, 2>{1 - t, t});
+    const auto r =
+        affine_combination(std::array<Vec2d, 2>{p0, p1}, std::array<double, 2>{1 - t, t});
     if (r.status != Status::ok) return false;
     w.point(r.point, dot(c::green));
     label(w, r.point, "t = " + fmt(t), c::green, 6, -16);
@@ -109,7 +110,8 @@ bool fig_3_26(SvgWriter& w) {
     at += step;
   }
   const char* names[] = {"P\u2080", "P\u2081", "P\u2082", "P\u2083"};
-  for (std::size_t i = 0; i < 4; ++i) point(w, p[i], std::string(names[i]) + " (" + fmt(wt[i], 1) + ")");
+  for (std::size_t i = 0; i < 4; ++i)
+    point(w, p[i], std::string(names[i]) + " (" + fmt(wt[i], 1) + ")");
   point(w, r.point, "R = \u03a3 w\u1d62P\u1d62", c::green);
   return true;
 }
@@ -124,7 +126,8 @@ bool fig_3_27(SvgWriter& w) {
   angle_mark(w, o, u, v, 0.5, "\u03b8");
   const double side = law_of_cosines_side(length(u), length(v), th);
   label(w, Vec2d{0.2, -0.5},
-        "|u \u2212 v| = " + fmt(length(u - v), 3) + ",  law of cosines: " + fmt(side, 3), c::black, 0, 0);
+        "|u \u2212 v| = " + fmt(length(u - v), 3) + ",  law of cosines: " + fmt(side, 3), c::black,
+        0, 0);
   return true;
 }
 
@@ -163,7 +166,8 @@ bool fig_3_30(SvgWriter& w) {
   label(w, par, "proj\u1d65 u", c::green, -10, -20);
   w.segment(par, u, dashed(c::gray));
   right_angle_mark(w, par, v, u - par, 0.15);
-  angle_mark(w, o, v, u, 0.45, "\u03b8 > 90\u00b0, cos \u03b8 = " + fmt(std::cos(angle_between(u, v))));
+  angle_mark(w, o, v, u, 0.45,
+             "\u03b8 > 90\u00b0, cos \u03b8 = " + fmt(std::cos(angle_between(u, v))));
   return true;
 }
 
@@ -232,7 +236,8 @@ bool fig_3_34(SvgWriter& w) {
   label(w, normalize(n) * 1.8, "u \u00d7 v", c::purple);
   label(w, h * 0.5, "height", c::orange);
   label(w, x, "w", c::green);
-  label(w, u + v, "volume = w\u00b7(u \u00d7 v) = " + fmt(triple_product(x, u, v)), c::black, 10, -10);
+  label(w, u + v, "volume = w\u00b7(u \u00d7 v) = " + fmt(triple_product(x, u, v)), c::black, 10,
+        -10);
   return true;
 }
 
@@ -271,8 +276,9 @@ bool fig_3_36(SvgWriter& w) {
 
 // 3.37 - 3.39: an affine map T respects vector sums, scaling and point + vector.
 const Affine2d& sample_map() {
-  static const Affine2d a = compose(translation(Vec2d{3.2, -0.4}),
-                                    compose(rotation_2d(0.5), scaling_axes(Vec2d{0, 0}, Vec2d{1.2, 0.7})));
+  static const Affine2d a =
+      compose(translation(Vec2d{3.2, -0.4}),
+              compose(rotation_2d(0.5), scaling_axes(Vec2d{0, 0}, Vec2d{1.2, 0.7})));
   return a;
 }
 bool fig_3_37(SvgWriter& w) {
@@ -349,7 +355,9 @@ bool fig_3_41(SvgWriter& w) {
       w.arrow(a, cc, pen(c::blue, 1.2));
       point(w, q, "P", c::red);
       label(w, off + Vec2d{-0.2, -0.45},
-            "P = P\u2080 + " + fmt(l.x) + "(P\u2081\u2212P\u2080) + " + fmt(l.y) + "(P\u2082\u2212P\u2080)", c::red, 0, 0);
+            "P = P\u2080 + " + fmt(l.x) + "(P\u2081\u2212P\u2080) + " + fmt(l.y) +
+                "(P\u2082\u2212P\u2080)",
+            c::red, 0, 0);
     } else {
       const auto bc = barycentric(q, a, b, cc);
       if (!bc.valid) return false;
@@ -361,7 +369,8 @@ bool fig_3_41(SvgWriter& w) {
         w1[static_cast<std::size_t>(k)] = s;
         w0[static_cast<std::size_t>((k + 1) % 3)] = 1 - s;
         w1[static_cast<std::size_t>((k + 2) % 3)] = 1 - s;
-        w.segment(from_barycentric(a, b, cc, w0), from_barycentric(a, b, cc, w1), dashed(c::green, 1));
+        w.segment(from_barycentric(a, b, cc, w0), from_barycentric(a, b, cc, w1),
+                  dashed(c::green, 1));
       }
       point(w, q, "P", c::red);
       label(w, off + Vec2d{0.2, -0.45},
@@ -385,10 +394,12 @@ bool fig_3_42(SvgWriter& w) {
   closed(w, std::vector<Vec3d>{t0, t1, t2}, filled(c::blue, 0.15));
   w.point(from_barycentric(t0, t1, t2, std::array<double, 3>{1. / 3, 1. / 3, 1. / 3}), dot(c::red));
   const Vec3d o3{5.2, 0, 0};
-  const Tetrahedron3d tet{{o3, o3 + Vec3d{1.6, 0, 0}, o3 + Vec3d{0.5, 1.2, 0}, o3 + Vec3d{0.7, 0.4, 1.4}}};
+  const Tetrahedron3d tet{
+      {o3, o3 + Vec3d{1.6, 0, 0}, o3 + Vec3d{0.5, 1.2, 0}, o3 + Vec3d{0.7, 0.4, 1.4}}};
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) w.segment(tet.v[i], tet.v[j], pen(c::blue));
-  w.point(from_barycentric(tet.v[0], tet.v[1], tet.v[2], tet.v[3], std::array<double, 4>{0.25, 0.25, 0.25, 0.25}),
+  w.point(from_barycentric(tet.v[0], tet.v[1], tet.v[2], tet.v[3],
+                           std::array<double, 4>{0.25, 0.25, 0.25, 0.25}),
           dot(c::red));
   label(w, Vec3d{0.4, 0, -0.4}, "(a)");
   label(w, o2 + Vec3d{0.6, 0, -0.4}, "(b)");

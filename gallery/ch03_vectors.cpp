@@ -60,7 +60,8 @@ bool fig_3_4(SvgWriter& w) {
 
 // 3.5: a chain of vectors and their sum.
 bool fig_3_5(SvgWriter& w) {
-  const std::array<Vec2d, 4> vs{Vec2d{1.5, 0.3}, Vec2d{0.6, 1.2}, Vec2d{-0.9, 1.0}, Vec2d{0.4, 1.1}};
+  const std::array<Vec2d, 4> vs{Vec2d{1.5, 0.3}, Vec2d{0.6, 1.2}, Vec2d{-0.9, 1.0},
+                                Vec2d{0.4, 1.1}};
   const char* names[] = {"v\u2081", "v\u2082", "v\u2083", "v\u2084"};
   Vec2d p{0, 0}, sum{0, 0};
   for (std::size_t i = 0; i < vs.size(); ++i) {
@@ -206,7 +207,8 @@ bool fig_3_16(SvgWriter& w) {
   // The curled fingers: the path of x under rotations about z by 0..90 degrees.
   std::vector<Vec3d> path;
   for (int i = 0; i <= 24; ++i)
-    path.push_back(apply_point(rotation_about_z(0.5 * pi_v<double> * i / 24.0), Vec3d{0.8, 0, 0.3}));
+    path.push_back(
+        apply_point(rotation_about_z(0.5 * pi_v<double> * i / 24.0), Vec3d{0.8, 0, 0.3}));
   w.polyline(path, pen(c::red, 1.6));
   w.arrow(path[path.size() - 4], path.back(), pen(c::red, 1.6));
   const Vec3d y_image = apply_vector(rz, Vec3d{1.5, 0, 0});
@@ -218,8 +220,9 @@ bool fig_3_16(SvgWriter& w) {
 // 3.17: one vector in two bases; coordinates from locus::basis_coordinates for each.
 bool fig_3_17(SvgWriter& w) {
   const Vec2d v{2.0, 1.6};
-  const std::array<std::array<Vec2d, 2>, 2> bases{std::array<Vec2d, 2>{Vec2d{1, 0}, Vec2d{0, 1}},
-                                                  std::array<Vec2d, 2>{Vec2d{1.0, 0.5}, Vec2d{-0.4, 0.9}}};
+  const std::array<std::array<Vec2d, 2>, 2> bases{
+      std::array<Vec2d, 2>{Vec2d{1, 0}, Vec2d{0, 1}},
+      std::array<Vec2d, 2>{Vec2d{1.0, 0.5}, Vec2d{-0.4, 0.9}}};
   for (std::size_t k = 0; k < 2; ++k) {
     const Vec2d off{3.2 * static_cast<double>(k), 0};
     const auto cs = basis_coordinates(v, bases[k]);
@@ -229,8 +232,8 @@ bool fig_3_17(SvgWriter& w) {
     vector(w, off, off + bases[k][0], k ? "b\u2080" : "i", c::blue, -12);
     vector(w, off, off + bases[k][1], k ? "b\u2081" : "j", c::red);
     vector(w, off, off + v, "v", c::green);
-    label(w, off + Vec2d{0.2, -0.6},
-          "v = (" + fmt((*cs)[0]) + ", " + fmt((*cs)[1]) + ")", c::black, 0, 0);
+    label(w, off + Vec2d{0.2, -0.6}, "v = (" + fmt((*cs)[0]) + ", " + fmt((*cs)[1]) + ")", c::black,
+          0, 0);
   }
   return true;
 }

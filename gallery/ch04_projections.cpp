@@ -37,7 +37,8 @@ std::vector<Vec3d> plane_quad(const Vec3d& p, const Vec3d& n, double a, double b
   return {p - a * s - b * t, p + a * s - b * t, p + a * s + b * t, p - a * s + b * t};
 }
 
-const std::vector<Vec3d> object3{{0.3, 1.6, 0.4}, {1.3, 2.2, 0.6}, {0.9, 2.0, 1.6}, {0.2, 2.6, 1.2}};
+const std::vector<Vec3d> object3{
+    {0.3, 1.6, 0.4}, {1.3, 2.2, 0.6}, {0.9, 2.0, 1.6}, {0.2, 2.6, 1.2}};
 
 // Projects every vertex with a homogeneous matrix; false when a point has no image.
 bool project_all(const Mat4d& m, const std::vector<Vec3d>& pts, std::vector<Vec3d>& out) {
@@ -71,8 +72,8 @@ bool fig_4_26(SvgWriter& w) {
 }
 // 4.27: oblique projection along a direction not parallel to the normal.
 bool fig_4_27(SvgWriter& w) {
-  return projection_figure(w, oblique_projection(Vec3d{0, 0, 0}, Vec3d{0, 1, 0}, Vec3d{0.6, 1, -0.3}),
-                           nullptr);
+  return projection_figure(
+      w, oblique_projection(Vec3d{0, 0, 0}, Vec3d{0, 1, 0}, Vec3d{0.6, 1, -0.3}), nullptr);
 }
 
 // 4.28: an oblique projection seen edge-on: the 2D projection onto a line.
@@ -124,7 +125,8 @@ bool fig_4_30(SvgWriter& w) {
   const auto r0 = cross_ratio(pts[0], pts[1], pts[2], pts[3]);
   const auto r1 = cross_ratio(img[0], img[1], img[2], img[3]);
   if (!r0 || !r1) return false;
-  label(w, Vec2d{-2.2, -0.7}, "(A,B;C,D) = " + fmt(*r0) + ",   (A',B';C',D') = " + fmt(*r1), c::black, 0, 0);
+  label(w, Vec2d{-2.2, -0.7}, "(A,B;C,D) = " + fmt(*r0) + ",   (A',B';C',D') = " + fmt(*r1),
+        c::black, 0, 0);
   return true;
 }
 
@@ -134,7 +136,8 @@ bool fig_4_31(SvgWriter& w) {
   const auto m = perspective_projection(eye, Vec2d{0, 0}, Vec2d{0, 1});
   if (!m) return false;
   const Vec2d a{-1.6, 0.8}, b{1.8, 2.0}, mid = lerp(a, b, 0.5);
-  const auto ia = apply_projective(*m, a), ib = apply_projective(*m, b), im = apply_projective(*m, mid);
+  const auto ia = apply_projective(*m, a), ib = apply_projective(*m, b),
+             im = apply_projective(*m, mid);
   if (!ia || !ib || !im) return false;
   w.line(Vec2d{0, 0}, Vec2d{1, 0}, pen(c::black, 1.2));
   w.arrow(a, b, pen(c::blue));
@@ -191,7 +194,8 @@ bool fig_4_34(SvgWriter& w) {
   w.arrow(p, p + t1, pen(c::blue));
   w.arrow(p, p + normalize(n), pen(c::green));
   label(w, p + normalize(n), "t\u2080 \u00d7 t\u2081", c::green);
-  const Affine3d a = compose(translation(Vec3d{0, 2.8, 0}), scaling_axes(Vec3d{0, 0, 0}, Vec3d{1.6, 0.6, 1}));
+  const Affine3d a =
+      compose(translation(Vec3d{0, 2.8, 0}), scaling_axes(Vec3d{0, 0, 0}, Vec3d{1.6, 0.6, 1}));
   const Vec3d q = apply_point(a, p), s0 = apply_vector(a, t0), s1 = apply_vector(a, t1);
   const Vec3d m = normal_from_tangents(a, t0, t1);
   closed(w, std::vector<Vec3d>{q, q + s0, q + s0 + s1, q + s1}, filled(c::gray, 0.1, 1));

@@ -75,9 +75,10 @@ bool fig_4_4(SvgWriter& w) {
   angle_mark(w, o, u, v, 0.5);
   angle_mark(w, o, v2, u, 0.6);
   label(w, Vec2d{-0.4, -1.6},
-        "u\u22a5\u00b7v = " + fmt(perp_dot(u, v)) + " (\u03b8 = " + fmt(to_degrees(signed_angle(u, v)), 1) +
-            "\u00b0),  u\u22a5\u00b7v' = " + fmt(perp_dot(u, v2)) + " (\u03b8 = " +
-            fmt(to_degrees(signed_angle(u, v2)), 1) + "\u00b0)",
+        "u\u22a5\u00b7v = " + fmt(perp_dot(u, v)) +
+            " (\u03b8 = " + fmt(to_degrees(signed_angle(u, v)), 1) +
+            "\u00b0),  u\u22a5\u00b7v' = " + fmt(perp_dot(u, v2)) +
+            " (\u03b8 = " + fmt(to_degrees(signed_angle(u, v2)), 1) + "\u00b0)",
         c::black, 0, 0);
   return true;
 }
@@ -91,7 +92,8 @@ bool fig_4_5(SvgWriter& w) {
   vector(w, o, u, "u", c::blue, -12);
   vector(w, o, v, "v", c::red);
   label(w, Vec2d{0.3, -0.4},
-        "signed_area = " + fmt(signed_area(t)) + " = \u00bd u\u22a5\u00b7v = " + fmt(0.5 * perp_dot(u, v)),
+        "signed_area = " + fmt(signed_area(t)) +
+            " = \u00bd u\u22a5\u00b7v = " + fmt(0.5 * perp_dot(u, v)),
         c::black, 0, 0);
   return true;
 }
@@ -135,8 +137,8 @@ bool fig_4_8(SvgWriter& w) {
   const Frame2d a{b.origin + Vec2d{1.6, 0.2}, {Vec2d{1.0, 0.4}, Vec2d{-0.3, 0.9}}};
   frame(w, a, c::blue, "", "v\u2081", "v\u2082");
   const Vec2d c1 = to_local_vector(b, a.axis[0]), c2 = to_local_vector(b, a.axis[1]);
-  label(w, a.origin + Vec2d{0, -0.5}, "v\u2081 = " + fmt(c1) + "\u1d2e,  v\u2082 = " + fmt(c2) + "\u1d2e",
-        c::blue, 0, 0);
+  label(w, a.origin + Vec2d{0, -0.5},
+        "v\u2081 = " + fmt(c1) + "\u1d2e,  v\u2082 = " + fmt(c2) + "\u1d2e", c::blue, 0, 0);
   return true;
 }
 
@@ -212,10 +214,12 @@ bool fig_4_13(SvgWriter& w) {
   cam.up = {1, 0, 0};
   w.set_camera(cam);
   std::vector<Vec3d> circle;
-  for (int i = 0; i <= 64; ++i) circle.push_back(apply_point(rotation(q, u, 2 * pi_v<double> * i / 64.0), p));
+  for (int i = 0; i <= 64; ++i)
+    circle.push_back(apply_point(rotation(q, u, 2 * pi_v<double> * i / 64.0), p));
   w.polyline(circle, pen(c::light, 1));
   std::vector<Vec3d> arc;
-  for (int i = 0; i <= 24; ++i) arc.push_back(apply_point(rotation(q, u, angle * i / 24.0), p + 0.3 * (foot - p)));
+  for (int i = 0; i <= 24; ++i)
+    arc.push_back(apply_point(rotation(q, u, angle * i / 24.0), p + 0.3 * (foot - p)));
   w.polyline(arc, pen(c::gray, 1));
   w.arrow(foot, p, pen(c::blue));
   w.arrow(foot, rp, pen(c::red));
@@ -261,7 +265,8 @@ bool fig_4_16(SvgWriter& w) {
 }
 
 // Mirror figures: shape, mirror, image and the connectors of corresponding points.
-void mirror2(SvgWriter& w, const Affine2d& m, const Vec2d& p, const Vec2d& d, const std::vector<Vec2d>& h) {
+void mirror2(SvgWriter& w, const Affine2d& m, const Vec2d& p, const Vec2d& d,
+             const std::vector<Vec2d>& h) {
   w.line(p, d, pen(c::black, 1.2));
   const std::vector<Vec2d> mh = map_points(m, h);
   closed(w, h, filled(c::blue, 0.15));
@@ -278,7 +283,8 @@ bool fig_4_17(SvgWriter& w) {
 
 // 4.18: simple reflection in 2D: about the x axis.
 bool fig_4_18(SvgWriter& w) {
-  mirror2(w, reflection(Vec2d{0, 0}, Vec2d{0, 1}), Vec2d{0, 0}, Vec2d{1, 0}, house(Vec2d{0.4, 0.3}, 1.0));
+  mirror2(w, reflection(Vec2d{0, 0}, Vec2d{0, 1}), Vec2d{0, 0}, Vec2d{1, 0},
+          house(Vec2d{0.4, 0.3}, 1.0));
   label(w, Vec2d{1.8, 0}, "x", c::black);
   return true;
 }
@@ -299,7 +305,9 @@ bool fig_4_19(SvgWriter& w) {
 bool fig_4_20(SvgWriter& w) {
   w.set_camera(camera({6, 4, 3}));
   const Vec3d p{0, 0, 0}, n{0.3, 1, 0.4};
-  const Frame3d pf{p, {normalize(cross(n, Vec3d{0, 0, 1})), normalize(cross(n, cross(n, Vec3d{0, 0, 1}))), normalize(n)}};
+  const Frame3d pf{p,
+                   {normalize(cross(n, Vec3d{0, 0, 1})),
+                    normalize(cross(n, cross(n, Vec3d{0, 0, 1}))), normalize(n)}};
   std::vector<Vec3d> quad;
   for (const Vec2d& s : {Vec2d{-2, -1.5}, Vec2d{2, -1.5}, Vec2d{2, 1.5}, Vec2d{-2, 1.5}})
     quad.push_back(to_world_point(pf, Vec3d{s.x, s.y, 0}));
@@ -325,12 +333,14 @@ bool fig_4_21(SvgWriter& w) {
 bool fig_4_22(SvgWriter& w) {
   w.set_camera(camera({6, -5, 3}));
   const Vec3d p{0, 0, 0}, n{1, 0, 0};
-  closed(w, std::vector<Vec3d>{{0, -1.5, -0.5}, {0, 2, -0.5}, {0, 2, 2}, {0, -1.5, 2}}, filled(c::gray, 0.08, 1));
+  closed(w, std::vector<Vec3d>{{0, -1.5, -0.5}, {0, 2, -0.5}, {0, 2, 2}, {0, -1.5, 2}},
+         filled(c::gray, 0.08, 1));
   const std::vector<Vec3d> tet{{0.8, 0, 0}, {2.0, 0.2, 0}, {1.2, 1.2, 0}, {1.3, 0.5, 1.4}};
   const std::vector<Vec3d> mt = map_points(reflection(p, n), tet);
   for (const auto* t : {&tet, &mt})
     for (std::size_t i = 0; i < 4; ++i)
-      for (std::size_t j = i + 1; j < 4; ++j) w.segment((*t)[i], (*t)[j], pen(t == &tet ? c::blue : c::red));
+      for (std::size_t j = i + 1; j < 4; ++j)
+        w.segment((*t)[i], (*t)[j], pen(t == &tet ? c::blue : c::red));
   w.point(tet[3], dot(c::blue));
   w.point(mt[3], dot(c::red));
   return true;

@@ -15,8 +15,9 @@ namespace locus_gallery {
 
 std::vector<Figure> all_figures() {
   std::vector<Figure> all;
-  for (auto part : {chapter3_vector_figures(), chapter3_affine_figures(), chapter4_transform_figures(),
-                     chapter4_projection_figures()})
+  for (auto part :
+       {chapter3_vector_figures(), chapter3_affine_figures(), chapter4_transform_figures(),
+        chapter4_projection_figures(), chapter5_primitive_figures()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }
@@ -59,11 +60,20 @@ std::string html_escape(std::string_view s) {
   std::string o;
   for (char c : s) {
     switch (c) {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
+      case '&':
+        o += "&amp;";
+        break;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      default:
+        o += c;
     }
   }
   return o;
@@ -209,7 +219,8 @@ void frame(SvgWriter& w, const locus::Frame2d& f, const char* c, std::string_vie
 
 void frame(SvgWriter& w, const locus::Frame3d& f, const char* c, std::string_view o,
            std::string_view x, std::string_view y, std::string_view z) {
-  for (int i = 0; i < 3; ++i) w.arrow(f.origin, f.origin + f.axis[static_cast<std::size_t>(i)], pen(c));
+  for (int i = 0; i < 3; ++i)
+    w.arrow(f.origin, f.origin + f.axis[static_cast<std::size_t>(i)], pen(c));
   point(w, f.origin, o, c);
   label(w, f.origin + f.axis[0], x, c);
   label(w, f.origin + f.axis[1], y, c);
@@ -217,8 +228,8 @@ void frame(SvgWriter& w, const locus::Frame3d& f, const char* c, std::string_vie
 }
 
 void axes3(SvgWriter& w, double len, const char* c) {
-  frame(w, locus::Frame3d{{0, 0, 0}, {Vec3d{len, 0, 0}, Vec3d{0, len, 0}, Vec3d{0, 0, len}}}, c,
-        "", "x", "y", "z");
+  frame(w, locus::Frame3d{{0, 0, 0}, {Vec3d{len, 0, 0}, Vec3d{0, len, 0}, Vec3d{0, 0, len}}}, c, "",
+        "x", "y", "z");
 }
 
 void closed(SvgWriter& w, const std::vector<Vec2d>& pts, const SvgStyle& s) {
@@ -240,7 +251,7 @@ std::vector<Vec3d> map_points(const locus::Affine3d& a, const std::vector<Vec3d>
 }
 
 std::vector<Vec2d> house(const Vec2d& at, double s) {
-  const std::vector<Vec2d> unit{{0, 0},     {1, 0},     {1, 0.6}, {0.5, 1.0}, {0.2, 0.76},
+  const std::vector<Vec2d> unit{{0, 0},     {1, 0},      {1, 0.6},   {0.5, 1.0},  {0.2, 0.76},
                                 {0.2, 1.2}, {0.45, 1.1}, {0.2, 1.0}, {0.2, 0.76}, {0, 0.6}};
   std::vector<Vec2d> out;
   for (const Vec2d& p : unit) out.push_back(at + p * s);

@@ -38,10 +38,11 @@ struct Figure {
 };
 
 // The per-file tables, in book order.
-std::vector<Figure> chapter3_vector_figures();  // ch03_vectors.cpp: 3.1-3.17
-std::vector<Figure> chapter3_affine_figures();  // ch03_affine.cpp: 3.19-3.42
-std::vector<Figure> chapter4_transform_figures();  // ch04_transforms.cpp: 4.1-4.25
+std::vector<Figure> chapter3_vector_figures();      // ch03_vectors.cpp: 3.1-3.17
+std::vector<Figure> chapter3_affine_figures();      // ch03_affine.cpp: 3.19-3.42
+std::vector<Figure> chapter4_transform_figures();   // ch04_transforms.cpp: 4.1-4.25
 std::vector<Figure> chapter4_projection_figures();  // ch04_projections.cpp: 4.26-4.34
+std::vector<Figure> chapter5_primitive_figures();   // ch05_primitives.cpp: 5.1-5.16
 /// Every figure in book order.
 std::vector<Figure> all_figures();
 
@@ -127,7 +128,8 @@ std::vector<Vec3d> map_points(const locus::Affine3d& a, const std::vector<Vec3d>
 /// A generic asymmetric "house with a flag" outline so that rotations and mirrors are visible.
 std::vector<Vec2d> house(const Vec2d& at, double size);
 /// An orthographic or perspective camera at `eye` looking at `target` with z up.
-locus::SvgCamera camera(const Vec3d& eye, const Vec3d& target = {0, 0, 0}, bool perspective = false);
+locus::SvgCamera camera(const Vec3d& eye, const Vec3d& target = {0, 0, 0},
+                        bool perspective = false);
 /// The 12 edges of the box with the given 8 corners (index bits: x, y, z) drawn with style s.
 void box_edges(SvgWriter& w, const std::array<Vec3d, 8>& c, const SvgStyle& s);
 

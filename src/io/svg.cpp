@@ -379,8 +379,10 @@ SvgWriter::Mapping SvgWriter::mapping() const {
       if ((static_cast<unsigned char>(ch) & 0xC0) != 0x80) chars += 1;
     const double tw = 0.6 * fs * chars;
     const Vec2d p = it.pts[0][0];
-    const double x = (p.x - m.inner_lo.x) * scale + m.margin + (is_finite(st.text_dx) ? st.text_dx : 0);
-    const double y = (m.inner_hi.y - p.y) * scale + m.margin - (is_finite(st.text_dy) ? st.text_dy : 0);
+    const double x =
+        (p.x - m.inner_lo.x) * scale + m.margin + (is_finite(st.text_dx) ? st.text_dx : 0);
+    const double y =
+        (m.inner_hi.y - p.y) * scale + m.margin - (is_finite(st.text_dy) ? st.text_dy : 0);
     const double x0 = st.anchor == SvgAnchor::start    ? x
                       : st.anchor == SvgAnchor::middle ? x - 0.5 * tw
                                                        : x - tw;

@@ -116,9 +116,12 @@ TYPED_TEST(SvgPrimitives, EllipticalArcSamplesLieOnTheEllipse) {
   const Model md(lo, hi, o);
   for (int rep = 0; rep < 20; ++rep) {
     const Vec2<T> u = rng.unit<T, 2>();
-    const locus::Ellipse2<T> e{rng.vec<T, 2>(T(-2), T(2)), {u, locus::perp(u)},
-                               {static_cast<T>(rng.uniform(1.0, 5.0)), static_cast<T>(rng.uniform(1.0, 5.0))}};
-    const T start = static_cast<T>(rng.uniform(-3.0, 3.0)), sweep = static_cast<T>(rng.uniform(0.3, 6.2));
+    const locus::Ellipse2<T> e{
+        rng.vec<T, 2>(T(-2), T(2)),
+        {u, locus::perp(u)},
+        {static_cast<T>(rng.uniform(1.0, 5.0)), static_cast<T>(rng.uniform(1.0, 5.0))}};
+    const T start = static_cast<T>(rng.uniform(-3.0, 3.0)),
+            sweep = static_cast<T>(rng.uniform(0.3, 6.2));
     SvgWriter w(o);
     w.set_view(lo, hi);
     draw(w, locus::EllipseArc2<T>{e, start, sweep});
@@ -143,6 +146,33 @@ TYPED_TEST(SvgPrimitives, EllipticalArcSamplesLieOnTheEllipse) {
     EXPECT_NEAR(md.world(pts.back()).x, s1.x, 1e-3);
     EXPECT_NEAR(md.world(pts.back()).y, s1.y, 1e-3);
   }
+}
+
+TYPED_TEST(SvgPrimitives, PolygonsWithHolesKeepTheirRings) {
+  using T = TypeParam;
+  const Vec2d lo{-10, -10}, hi{10, 10};
+  locus::SvgOptions o;
+  o.background = "none";
+  const Model md(lo, hi, o);
+  SvgWriter w(o);
+  w.set_view(lo, hi);
+  const locus::Polygon2<T> outer{{{-4, -4}, {4, -4}, {4, 4}, {-4, 4}}};
+  const locus::Polygon2<T> hole{{{-1, -1}, {-1, 2}, {2, 2}, {2, -1}}};
+  draw(w, locus::PolygonWithHoles2<T>{outer, {hole}}, SvgStyle{});
+  draw(w, outer);
+  const Node root = parse_or_fail(w.to_string());
+  const auto paths = elements(root, "path");
+  ASSERT_EQ(paths.size(), 2u);
+  EXPECT_EQ(paths[0]->at("fill-rule"), "evenodd");
+  // Ring areas by the shoelace formula: 64 and 9 (the hole is clockwise).
+  std::vector<std::vector<Vec2d>> rings;
+  for (const PathCmd& cmd : parse_path(paths[0]->at("d"))) {
+    if (cmd.op == 'M') rings.emplace_back();
+    if (cmd.op == 'M' || cmd.op == 'L') rings.back().push_back({cmd.v.at(0), cmd.v.at(1)});
+  }
+  ASSERT_EQ(rings.size(), 2u);
+  EXPECT_NEAR(world_area(md, rings[0]), 64.0, 1e-3);
+  EXPECT_NEAR(world_area(md, rings[1]), -9.0, 1e-3);
 }
 
 TYPED_TEST(SvgPrimitives, ThreeDimensionalWireframes) {

@@ -42,7 +42,6 @@ using locus_test::Rng;
 
 using namespace svg_test;
 
-
 template <class T>
 class SvgTyped : public ::testing::Test {};
 TYPED_TEST_SUITE(SvgTyped, locus_test::RealTypes);

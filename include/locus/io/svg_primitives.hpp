@@ -4,7 +4,8 @@
 // (io/svg.hpp; no CAPABILITIES row, used by the gallery and the command-line tool).
 //
 // 2D primitives are drawn exactly where SVG has the element (segments, lines and rays clipped to
-// the view, circles, rotated ellipses, circular arcs, polygons); an elliptical arc is sampled
+// the view, circles, rotated ellipses, circular arcs, polygons and polygons with holes as one
+// even-odd path); an elliptical arc is sampled
 // (64 pieces per full turn, at least 8). 3D primitives are drawn through the writer's camera as
 // wireframes: segments, triangles, polylines, boxes (12 edges), tetrahedra (6 edges) and
 // circles (sampled, 64 pieces).
@@ -23,6 +24,7 @@
 #include <locus/primitives/ellipse.hpp>
 #include <locus/primitives/line.hpp>
 #include <locus/primitives/oriented_box.hpp>
+#include <locus/primitives/polygon.hpp>
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/ray.hpp>
 #include <locus/primitives/rectangle.hpp>
@@ -87,6 +89,18 @@ template <Real T, int N>
 void draw(SvgWriter& w, const Polyline<T, N>& p, const SvgStyle& style = {}) {
   w.polyline(p.vertices, style, p.closed);
 }
+/// A polygon (filled with the even-odd rule when style.fill is set).
+template <Real T>
+void draw(SvgWriter& w, const Polygon2<T>& p, const SvgStyle& style = {}) {
+  w.polygon(p.vertices, style);
+}
+/// A polygon with holes: one even-odd path, so the holes stay empty.
+template <Real T>
+void draw(SvgWriter& w, const PolygonWithHoles2<T>& p, const SvgStyle& style = {}) {
+  std::vector<std::vector<Vec2<T>>> holes;
+  for (const Polygon2<T>& h : p.holes) holes.push_back(h.vertices);
+  w.polygon(p.outer.vertices, holes, style);
+}
 /// A 2D circle.
 template <Real T>
 void draw(SvgWriter& w, const Circle2<T>& c, const SvgStyle& style = {}) {
@@ -118,7 +132,8 @@ void draw(SvgWriter& w, const EllipseArc2<T>& a, const SvgStyle& style = {}) {
 template <Real T>
 void draw(SvgWriter& w, const Circle3<T>& c, const SvgStyle& style = {}) {
   std::vector<Vec3<T>> pts;
-  for (int i = 0; i < 64; ++i) pts.push_back(point_at(c, T(2) * pi_v<T> * static_cast<T>(i) / T(64)));
+  for (int i = 0; i < 64; ++i)
+    pts.push_back(point_at(c, T(2) * pi_v<T> * static_cast<T>(i) / T(64)));
   w.polyline(pts, style, true);
 }
 /// An axis-aligned rectangle (2D) or the 12 edges of a box (3D).

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: BSL-1.0
+// The gallery: every figure computes successfully, has a caption from the embedded figures.txt,
+// and renders to a well-formed SVG (strict XML parse, no nan/inf text, every coordinate inside
+// the document, at least a few drawn elements); run() writes every file and an index listing
+// each of them.
+
+#include "gallery.hpp"
+#include "io/svg_xml.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using namespace svg_test;
+
+TEST(Gallery, FiguresAreUniqueCaptionedAndInBookOrder) {
+  const auto figs = locus_gallery::all_figures();
+  EXPECT_GE(figs.size(), 40u);
+  std::set<std::string> ids;
+  std::pair<int, int> prev{0, 0};
+  for (const auto& f : figs) {
+    SCOPED_TRACE(f.id);
+    EXPECT_TRUE(ids.insert(f.id).second) << "duplicate figure";
+    EXPECT_TRUE(locus_gallery::caption(f.id).has_value()) << "no caption in figures.txt";
+    EXPECT_NE(std::string(f.computed_with), "");
+    int ch = 0, num = 0;
+    ASSERT_EQ(std::sscanf(f.id, "%d.%d", &ch, &num), 2);
+    EXPECT_LT(prev, std::make_pair(ch, num));
+    prev = {ch, num};
+    EXPECT_EQ(locus_gallery::file_name(f.id),
+              "fig_" + std::to_string(ch) + "_" + std::to_string(num) + ".svg");
+  }
+  EXPECT_EQ(locus_gallery::caption("3.15").value_or(""), "Angle between vectors.");
+  EXPECT_FALSE(locus_gallery::caption("99.1").has_value());
+}
+
+TEST(Gallery, EveryFigureRendersAWellFormedSvg) {
+  for (const auto& f : locus_gallery::all_figures()) {
+    SCOPED_TRACE(f.id);
+    const locus_gallery::Rendered r = locus_gallery::render(f);
+    EXPECT_TRUE(r.ok) << "a locus computation failed";
+    std::string lower = r.svg;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](char c) {
+      return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    });
+    EXPECT_EQ(lower.find("nan"), std::string::npos);
+    EXPECT_EQ(lower.find("inf"), std::string::npos);
+    const Node root = parse_or_fail(r.svg);
+    const double W = num(root, "width"), H = num(root, "height");
+    std::size_t drawn = 0;
+    for (const Node* n : elements(root)) {
+      if (n->tag == "title" || n->tag == "g") continue;
+      ++drawn;
+      for (const Vec2d& q : covered_points(*n)) {
+        EXPECT_GE(q.x, -kPx) << n->tag;
+        EXPECT_LE(q.x, W + kPx) << n->tag;
+        EXPECT_GE(q.y, -kPx) << n->tag;
+        EXPECT_LE(q.y, H + kPx) << n->tag;
+      }
+    }
+    EXPECT_GE(drawn, 4u);  // background plus at least three items
+    const auto titles = elements(root, "title");
+    ASSERT_EQ(titles.size(), 1u);
+    EXPECT_NE(titles[0]->text.find(std::string("Figure ") + f.id + ":"), std::string::npos);
+  }
+}
+
+TEST(Gallery, RunWritesEveryFileAndTheIndex) {
+  std::random_device rd;
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("locus_gallery_test_" + std::to_string(rd()));
+  const locus_gallery::RunResult r = locus_gallery::run(dir.string());
+  EXPECT_EQ(r.status, locus::Status::ok);
+  EXPECT_TRUE(r.errors.empty());
+  const auto figs = locus_gallery::all_figures();
+  EXPECT_EQ(r.written, static_cast<int>(figs.size()));
+  std::ifstream index(dir / "index.html");
+  std::stringstream ss;
+  ss << index.rdbuf();
+  const std::string html = ss.str();
+  for (const auto& f : figs) {
+    const std::string name = locus_gallery::file_name(f.id);
+    EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
+    EXPECT_GT(std::filesystem::file_size(dir / name), 200u) << name;
+    EXPECT_NE(html.find("src=\"" + name + "\""), std::string::npos) << name;
+  }
+  std::filesystem::remove_all(dir);
+
+  // An output directory that cannot be created is an io_error, not a crash.
+  const auto blocker =
+      std::filesystem::temp_directory_path() / ("locus_gallery_file_" + std::to_string(rd()));
+  std::ofstream(blocker) << "x";
+  const locus_gallery::RunResult bad = locus_gallery::run((blocker / "sub").string());
+  EXPECT_EQ(bad.status, locus::Status::io_error);
+  EXPECT_EQ(bad.written, 0);
+  std::filesystem::remove(blocker);
+}
+
+}  // namespace
