@@ -158,6 +158,36 @@ inline int two_products_diff(double a1, double b1, double a2, double b2, double*
   return grow_zeroelim(tlen, t, -mhi, h);
 }
 
+/// e rewritten with few components (the paper's Compress, section 2.8), in place: a
+/// nonadjacent, hence strongly nonoverlapping, expansion of the same value, so that later
+/// operations get short inputs. Components are renormalised from the top down, then from the
+/// bottom up; each write lands on a slot already read. Returns the new length.
+inline int compress(int elen, double* e) noexcept {
+  if (elen == 0) return 0;
+  int bottom = elen - 1;
+  double q = e[elen - 1];
+  for (int i = elen - 2; i >= 0; --i) {
+    double sum = 0.0, err = 0.0;
+    fast_two_sum(q, e[i], sum, err);
+    if (err != 0.0) {
+      e[bottom--] = sum;
+      q = err;
+    } else {
+      q = sum;
+    }
+  }
+  e[bottom] = q;
+  int top = 0;
+  for (int i = bottom + 1; i < elen; ++i) {
+    double sum = 0.0, err = 0.0;
+    fast_two_sum(e[i], q, sum, err);
+    if (err != 0.0) e[top++] = err;
+    q = sum;
+  }
+  if (q != 0.0) e[top++] = q;
+  return top;
+}
+
 /// An approximation of the value of e (the paper's Estimate: the sum of the components).
 inline double estimate(int elen, const double* e) noexcept {
   double q = 0.0;

@@ -29,6 +29,15 @@
 #endif
 
 #include <cmath>
+#include <optional>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCUS_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define LOCUS_NOINLINE __declspec(noinline)
+#else
+#define LOCUS_NOINLINE
+#endif
 
 namespace locus::detail {
 namespace {
@@ -88,6 +97,13 @@ Exp<4> cross(double a1, double b1, double a2, double b2) noexcept {
   return h;
 }
 
+/// e with few components (in place), to keep later products short.
+template <int N>
+Exp<N> compressed(Exp<N> e) noexcept {
+  e.len = ex::compress(e.len, e.v);
+  return e;
+}
+
 template <int N>
 Sign sign(const Exp<N>& e) noexcept {
   return static_cast<Sign>(ex::sign(e.len, e.v));
@@ -121,7 +137,7 @@ Exp<4> minor2(const P& p, const P& q) noexcept {
 /// det[p; q; r] of 3x3 raw coordinates, from the minors m(q,r), m(p,r), m(p,q).
 Exp<24> minor3(const Vec3<double>& p, const Vec3<double>& q, const Vec3<double>& r,
                const Exp<4>& mqr, const Exp<4>& mpr, const Exp<4>& mpq) noexcept {
-  return (mqr * p.z - mpr * q.z) + mpq * r.z;
+  return compressed((mqr * p.z - mpr * q.z) + mpq * r.z);
 }
 
 /// det of rows (p, 1), (q, 1), (r, 1) in 2D: m(q,r) - m(p,r) + m(p,q) = orient2d(p, q, r).
@@ -138,16 +154,18 @@ Exp<8 * N> lift2_times(const Vec2<double>& p, const Exp<N>& e) noexcept {
 /// (x^2 + y^2 + z^2) * e, exactly. Kept out of line so its temporaries do not add to the
 /// caller's frame.
 template <int N>
-[[gnu::noinline]] Exp<12 * N> lift3_times(const Vec3<double>& p, const Exp<N>& e) noexcept {
+LOCUS_NOINLINE Exp<12 * N> lift3_times(const Vec3<double>& p, const Exp<N>& e) noexcept {
   return (((e * p.x) * p.x) + ((e * p.y) * p.y)) + ((e * p.z) * p.z);
 }
 
-Sign orient2d_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c) noexcept {
+// Out of line: its large buffers must not enlarge the frame of the common path.
+LOCUS_NOINLINE Sign orient2d_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c) noexcept {
   return sign(minor3_affine(minor2(b, c), minor2(a, c), minor2(a, b)));
 }
 
 /// Shewchuk's orient3d, det[a - d; b - d; c - d] = D(abc) - D(abd) + D(acd) - D(bcd).
-Sign orient3d_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
+// Out of line: its large buffers must not enlarge the frame of the common path.
+LOCUS_NOINLINE Sign orient3d_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
                              const Vec3<double>& d) noexcept {
   const Exp<4> ab = minor2(a, b), ac = minor2(a, c), ad = minor2(a, d);
   const Exp<4> bc = minor2(b, c), bd = minor2(b, d), cd = minor2(c, d);
@@ -160,7 +178,8 @@ Sign orient3d_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b, const
 
 /// det of rows (x, y, x^2 + y^2, 1) for a, b, c, d, expanded along the lift column:
 /// lift_a E(bcd) - lift_b E(acd) + lift_c E(abd) - lift_d E(abc). Equals Shewchuk's incircle.
-Sign incircle_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
+// Out of line: its large buffers must not enlarge the frame of the common path.
+LOCUS_NOINLINE Sign incircle_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
                     const Vec2<double>& d) noexcept {
   const Exp<4> ab = minor2(a, b), ac = minor2(a, c), ad = minor2(a, d);
   const Exp<4> bc = minor2(b, c), bd = minor2(b, d), cd = minor2(c, d);
@@ -175,7 +194,8 @@ Sign incircle_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<dou
 /// det of rows (x, y, z, |p|^2, 1) for a..e, expanded along the lift column:
 ///   -lift_a F(bcde) + lift_b F(acde) - lift_c F(abde) + lift_d F(abce) - lift_e F(abcd)
 /// with F(pqrs) = D(pqr) - D(pqs) + D(prs) - D(qrs). Equals Shewchuk's insphere.
-Sign insphere_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
+// Out of line: its large buffers must not enlarge the frame of the common path.
+LOCUS_NOINLINE Sign insphere_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
                              const Vec3<double>& d, const Vec3<double>& e) noexcept {
   const Vec3<double>* p[5] = {&a, &b, &c, &d, &e};
   Exp<4> m[5][5];
@@ -197,8 +217,8 @@ Sign insphere_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b, const
     int q[4], n = 0;
     for (int i = 0; i < 5; ++i)
       if (i != skip) q[n++] = i;
-    return (D(q[0], q[1], q[2]) - D(q[0], q[1], q[3])) +
-           (D(q[0], q[2], q[3]) - D(q[1], q[2], q[3]));
+    return compressed((D(q[0], q[1], q[2]) - D(q[0], q[1], q[3])) +
+                      (D(q[0], q[2], q[3]) - D(q[1], q[2], q[3])));
   };
   // Two ping-pong accumulators; the sum of five terms of 1152 components needs 5760.
   static constexpr int cap = 5 * 1152;
@@ -323,40 +343,111 @@ Sign incircle_adaptive(const Vec2<double>& a, const Vec2<double>& b, const Vec2<
 
 // ---- insphere (computed in Shewchuk's sign, returned in ours) ---------------------------------
 
-Sign insphere_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
-                       const Vec3<double>& d, const Vec3<double>& e) noexcept {
-  if (!finite(a) || !finite(b) || !finite(c) || !finite(d) || !finite(e)) return Sign::zero;
+namespace {
+
+// Stages B and C; nullopt when they cannot decide. Separate from the exact stage so the two
+// large frames are never on the stack together.
+LOCUS_NOINLINE std::optional<Sign> insphere_stages_bc(const Vec3<double>& a, const Vec3<double>& b,
+                                                      const Vec3<double>& c, const Vec3<double>& d,
+                                                      const Vec3<double>& e) noexcept {
   const Vec3<double> ae{a.x - e.x, a.y - e.y, a.z - e.z};
   const Vec3<double> be{b.x - e.x, b.y - e.y, b.z - e.z};
   const Vec3<double> ce{c.x - e.x, c.y - e.y, c.z - e.z};
   const Vec3<double> de{d.x - e.x, d.y - e.y, d.z - e.z};
-  bool exact_differences = true;
   const Vec3<double>* raw[4] = {&a, &b, &c, &d};
   const Vec3<double>* diff[4] = {&ae, &be, &ce, &de};
-  for (int i = 0; i < 4 && exact_differences; ++i)
-    for (int k = 0; k < 3; ++k)
-      if (ex::two_diff_tail((*raw[i])[k], e[k], (*diff[i])[k]) != 0.0) {
-        exact_differences = false;
-        break;
-      }
-  // Stage B: dlift abc - clift dab + blift cda - alift bcd on the rounded differences, with the
-  // 3x3 minors of the translated points (D(pqr) as in the exact stage).
+  Vec3<double> tail[4]{};
+  bool exact_differences = true;
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) {
+      tail[i][k] = ex::two_diff_tail((*raw[i])[k], e[k], (*diff[i])[k]);
+      exact_differences = exact_differences && tail[i][k] == 0.0;
+    }
+  // Stage B: the 4x4 determinant of rows (p - e, |p - e|^2) on the rounded differences,
+  // expanded along the lift column: -alift D(bcd) + blift D(acd) - clift D(abd) + dlift D(abc)
+  // with D(pqr) = det[p; q; r].
+  const Exp<4> ab = minor2(ae, be), ac = minor2(ae, ce), ad = minor2(ae, de);
+  const Exp<4> bc = minor2(be, ce), bd = minor2(be, de), cd = minor2(ce, de);
+  const Exp<24> abc = minor3(ae, be, ce, bc, ac, ab);
+  const Exp<24> abd = minor3(ae, be, de, bd, ad, ab);
+  const Exp<24> acd = minor3(ae, ce, de, cd, ad, ac);
+  const Exp<24> bcd = minor3(be, ce, de, cd, bd, bc);
+  const Exp<1152> B = (lift3_times(de, abc) - lift3_times(ce, abd)) +
+                      (lift3_times(be, acd) - lift3_times(ae, bcd));
+  if (exact_differences) return -sign(B);
+  const double permanent = insphere_terms(a, b, c, d, e).permanent;
+  if (const Sign s = decide(estimate(B), insphere_bound_b * permanent); s != Sign::zero) return -s;
+  // Stage C. The paper gives no stage C for insphere that we reuse; this one follows its idea
+  // with a running error bound. With exact differences P = u + t (u rounded, |t| <= eps |u|),
+  //   det(P) = B + C1 + R,  C1 = sum_p s_p (dL_p D_p + L_p dD_p)  (first order in t),
+  // where L_p = u.u, dL_p = 2 u.t, D_p is the triple product of the other three rows and dD_p
+  // its first-order change. Every monomial of det has degree 5, so the rest R of order >= 2 is
+  // at most ((1+eps)^5 - 1 - 5 eps) <= 10.01 eps^2 times the permanent (12 eps^2 allows for the
+  // permanent's own rounding). In fl(C1) every monomial carries at most 16 rounding factors
+  // (a product adds the counts of its operands plus one, a sum the larger count plus one), so by
+  // Higham's bound |fl(C1) - C1| <= gamma_16 |C1|abs, where |C1|abs is the same expression on
+  // absolute values (20 eps covers gamma_16 / (1 - gamma_16) and the rounding of the bound
+  // itself). B + fl(C1) is summed exactly and compared exactly with the bound.
   {
-    const Exp<4> ab = minor2(ae, be), ac = minor2(ae, ce), ad = minor2(ae, de);
-    const Exp<4> bc = minor2(be, ce), bd = minor2(be, de), cd = minor2(ce, de);
-    const Exp<24> abc = minor3(ae, be, ce, bc, ac, ab);
-    const Exp<24> abd = minor3(ae, be, de, bd, ad, ab);
-    const Exp<24> acd = minor3(ae, ce, de, cd, ad, ac);
-    const Exp<24> bcd = minor3(be, ce, de, cd, bd, bc);
-    // With D(pqr) the 3x3 determinants: det = -alift D(bcd) + blift D(acd) - clift D(abd)
-    // + dlift D(abc) (cofactors of the lift column of the 4x4 matrix).
-    const Exp<1152> B = (lift3_times(de, abc) - lift3_times(ce, abd)) +
-                        (lift3_times(be, acd) - lift3_times(ae, bcd));
-    if (exact_differences) return -sign(B);
-    const InsphereTerms t = insphere_terms(a, b, c, d, e);
-    const double det = estimate(B);
-    if (const Sign s = decide(det, insphere_bound_b * t.permanent); s != Sign::zero) return -s;
+    auto dot = [](const Vec3<double>& x, const Vec3<double>& y) noexcept {
+      return x.x * y.x + x.y * y.y + x.z * y.z;
+    };
+    auto cross3 = [](const Vec3<double>& x, const Vec3<double>& y) noexcept {
+      return Vec3<double>{x.y * y.z - x.z * y.y, x.z * y.x - x.x * y.z, x.x * y.y - x.y * y.x};
+    };
+    auto cross_abs = [](const Vec3<double>& x, const Vec3<double>& y) noexcept {
+      return Vec3<double>{std::abs(x.y * y.z) + std::abs(x.z * y.y),
+                          std::abs(x.z * y.x) + std::abs(x.x * y.z),
+                          std::abs(x.x * y.y) + std::abs(x.y * y.x)};
+    };
+    auto vabs = [](const Vec3<double>& x) noexcept {
+      return Vec3<double>{std::abs(x.x), std::abs(x.y), std::abs(x.z)};
+    };
+    const Vec3<double> u[4] = {ae, be, ce, de};
+    double c1 = 0.0, c1_abs = 0.0;
+    for (int p = 0; p < 4; ++p) {
+      // The other three rows in increasing order: D_p = det[q; r; w] = q . (r x w).
+      int o[3], n = 0;
+      for (int i = 0; i < 4; ++i)
+        if (i != p) o[n++] = i;
+      const Vec3<double>& q = u[o[0]];
+      const Vec3<double>& r = u[o[1]];
+      const Vec3<double>& w = u[o[2]];
+      const Vec3<double>& tq = tail[o[0]];
+      const Vec3<double>& tr = tail[o[1]];
+      const Vec3<double>& tw = tail[o[2]];
+      const double D = dot(q, cross3(r, w));
+      const double D_abs = dot(vabs(q), cross_abs(r, w));
+      const double dD = (dot(tq, cross3(r, w)) + dot(q, cross3(tr, w))) + dot(q, cross3(r, tw));
+      const double dD_abs = (dot(vabs(tq), cross_abs(r, w)) + dot(vabs(q), cross_abs(tr, w))) +
+                            dot(vabs(q), cross_abs(r, tw));
+      const double L = dot(u[p], u[p]);
+      const double dL = 2.0 * dot(u[p], tail[p]);
+      const double dL_abs = 2.0 * dot(vabs(u[p]), vabs(tail[p]));
+      const double term = dL * D + L * dD;
+      const double term_abs = dL_abs * D_abs + L * dD_abs;
+      // Cofactor signs of the lift column: -, +, -, + for a, b, c, d.
+      c1 += (p % 2 == 0) ? -term : term;
+      c1_abs += term_abs;
+    }
+    const double bound = 12.0 * eps * eps * permanent + 20.0 * eps * c1_abs;
+    Exp<1153> S;
+    S.len = ex::grow_zeroelim(B.len, B.v, c1, S.v);
+    Exp<1154> T;
+    T.len = ex::grow_zeroelim(S.len, S.v, -bound, T.v);
+    if (sign(T) == Sign::positive) return Sign::negative;  // det > bound: Shewchuk's sign +
+    T.len = ex::grow_zeroelim(S.len, S.v, bound, T.v);
+    if (sign(T) == Sign::negative) return Sign::positive;
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Sign insphere_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
+                       const Vec3<double>& d, const Vec3<double>& e) noexcept {
+  if (!finite(a) || !finite(b) || !finite(c) || !finite(d) || !finite(e)) return Sign::zero;
+  if (const std::optional<Sign> s = insphere_stages_bc(a, b, c, d, e)) return *s;
   return -insphere_exact_shewchuk(a, b, c, d, e);
 }
 
