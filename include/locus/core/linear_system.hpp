@@ -132,11 +132,13 @@ inline int lu_inplace(T* a, int n, int* perm, int& sign) noexcept {
       sign = -sign;
     }
     const T piv = a[k * n + k];
+    const T* ak = a + k * n;
     for (int r = k + 1; r < n; ++r) {
-      const T l = a[r * n + k] / piv;
-      a[r * n + k] = l;
+      T* ar = a + r * n;
+      const T l = ar[k] / piv;
+      ar[k] = l;
       if (l == T(0)) continue;
-      for (int c = k + 1; c < n; ++c) a[r * n + c] -= l * a[k * n + c];
+      for (int c = k + 1; c < n; ++c) ar[c] -= l * ak[c];
     }
   }
   return n;
