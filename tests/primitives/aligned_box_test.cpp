@@ -107,7 +107,8 @@ TYPED_TEST(AlignedBoxTest, CornersAndParametrisation) {
     const Vec3<T> p{T(k & 1), T((k >> 1) & 1), T((k >> 2) & 1)};
     // point_at is exact at the parameter-space corners and agrees with the corner numbering.
     EXPECT_EQ(point_at(b, p), cs[static_cast<std::size_t>(k)]);
-    for (int j = 0; j < k; ++j) EXPECT_FALSE(cs[static_cast<std::size_t>(j)] == cs[static_cast<std::size_t>(k)]);
+    for (int j = 0; j < k; ++j)
+      EXPECT_FALSE(cs[static_cast<std::size_t>(j)] == cs[static_cast<std::size_t>(k)]);
   }
   EXPECT_EQ(point_at(b, Vec3<T>{T(0.5), T(0.5), T(0.5)}), center(b));
   EXPECT_EQ(extents(b), (Vec3<T>{T(2.5), T(1.5), T(4.5)}));
@@ -131,7 +132,8 @@ TYPED_TEST(AlignedBoxTest, MergeExpandInflateContainTheirInputs) {
   for (int trial = 0; trial < 300; ++trial) {
     auto a0 = rng.vec<T, 3>(-10, 10), a1 = rng.vec<T, 3>(-10, 10);
     auto c0 = rng.vec<T, 3>(-10, 10), c1 = rng.vec<T, 3>(-10, 10);
-    const AlignedBox3<T> a{cwise_min(a0, a1), cwise_max(a0, a1)}, c{cwise_min(c0, c1), cwise_max(c0, c1)};
+    const AlignedBox3<T> a{cwise_min(a0, a1), cwise_max(a0, a1)},
+        c{cwise_min(c0, c1), cwise_max(c0, c1)};
     const auto m = merge(a, c);
     for (const auto& p : corners(a)) EXPECT_TRUE(inside(m, p));
     for (const auto& p : corners(c)) EXPECT_TRUE(inside(m, p));

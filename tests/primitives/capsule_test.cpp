@@ -49,7 +49,8 @@ TYPED_TEST(CapsuleTest, VolumeAndAreaMatchMonteCarlo) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int trial = 0; trial < 3; ++trial) {
-    const Capsule3<T> c{{rng.vec<T, 3>(-2, 2), rng.vec<T, 3>(-2, 2)}, rng.uniform<T>(T(0.3), T(1.5))};
+    const Capsule3<T> c{{rng.vec<T, 3>(-2, 2), rng.vec<T, 3>(-2, 2)},
+                        rng.uniform<T>(T(0.3), T(1.5))};
     const auto box = bounding_box(c);
     const int n = 20000;
     int hits = 0;
@@ -89,8 +90,10 @@ TYPED_TEST(CapsuleTest, LateralAreaIntegratedPlusSphere) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const double a = (i + 0.5) * ha, t = (j + 0.5) * ht;
-      const auto da = (point_at(cd, Vec2<double>{a + e, t}) - point_at(cd, Vec2<double>{a - e, t})) / (2 * e);
-      const auto dt = (point_at(cd, Vec2<double>{a, t + e}) - point_at(cd, Vec2<double>{a, t - e})) / (2 * e);
+      const auto da =
+          (point_at(cd, Vec2<double>{a + e, t}) - point_at(cd, Vec2<double>{a - e, t})) / (2 * e);
+      const auto dt =
+          (point_at(cd, Vec2<double>{a, t + e}) - point_at(cd, Vec2<double>{a, t - e})) / (2 * e);
       lateral += length(cross(da, dt)) * ha * ht;
     }
   // The two hemispherical caps make one sphere.

@@ -40,9 +40,10 @@ Cone3<T> kind(Rng& rng, int k) {
 }
 
 // (1/3) * flux of X - p through a parametrised surface patch (quadrature over [u0,u1]x[v0,v1],
-// central differences of point_at); its area in *area: the divergence theorem as a second, independent volume
-// algorithm. When `outward_ref` is given, each normal is flipped to point away from
-// outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation is used.
+// central differences of point_at); its area in *area: the divergence theorem as a second,
+// independent volume algorithm. When `outward_ref` is given, each normal is flipped to point away
+// from outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation
+// is used.
 template <class F, class G>
 double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, double v1,
                    const Vec3<double>& p, int nu, int nv, double* area = nullptr) {
@@ -55,7 +56,8 @@ double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, dou
       for (const double off : {-g, g}) {
         const double u = u0 + (i + 0.5) * hu, v = v0 + (j + 0.5) * hv + off;
         const Vec3<double> x = pt(u, v);
-        Vec3<double> nn = cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
+        Vec3<double> nn =
+            cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
         const Vec3<double> ref = outward_ref(u, v);
         if (!(ref == x) && dot(nn, x - ref) < 0) nn = -nn;
         s += dot(x - p, nn) * hu * hv / 2;
@@ -120,12 +122,15 @@ TYPED_TEST(ConeTest, LateralAreaMatchesIntegratedAreaElement) {
     // Split at the apex (h = 0) where |h| has its kink; each piece is polynomial in h.
     double sum = 0, part = 0;
     if (cd.min_height < 0) {
-      (void)flux_volume(pt, ref, 0, 2 * pi_v<double>, cd.min_height, 0, Vec3<double>{}, 64, 4, &part);
+      (void)flux_volume(pt, ref, 0, 2 * pi_v<double>, cd.min_height, 0, Vec3<double>{}, 64, 4,
+                        &part);
       sum += part;
     }
-    (void)flux_volume(pt, ref, 0, 2 * pi_v<double>, std::fmax(0.0, cd.min_height), cd.max_height, Vec3<double>{}, 64, 4, &part);
+    (void)flux_volume(pt, ref, 0, 2 * pi_v<double>, std::fmax(0.0, cd.min_height), cd.max_height,
+                      Vec3<double>{}, 64, 4, &part);
     sum += part;
-    EXPECT_NEAR(double(lateral_area(c)), sum, 1e-7 * sum + double(tol<T>(32)) * sum) << "kind " << k;
+    EXPECT_NEAR(double(lateral_area(c)), sum, 1e-7 * sum + double(tol<T>(32)) * sum)
+        << "kind " << k;
     const double caps = pi_v<double> * std::pow(std::tan(cd.angle), 2) *
                         (cd.max_height * cd.max_height + cd.min_height * cd.min_height);
     EXPECT_NEAR(double(surface_area(c)), sum + caps, 1e-7 * sum + double(tol<T>(64, 40)));
@@ -178,11 +183,10 @@ TYPED_TEST(ConeTest, InfiniteAndInvalid) {
   EXPECT_NEAR(volume(one), pi_v<T> * sqr(2 * std::tan(T(0.5))) * 2 / 3, tol<T>(16, 3));
   // Equal heights: a disk.
   EXPECT_EQ(volume(Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), 1, 1}), T(0));
-  for (const Cone3<T>& bad : {Cone3<T>{{0, 0, 0}, {0, 0, 1}, 0, 0, 1},
-                              Cone3<T>{{0, 0, 0}, {0, 0, 1}, pi_v<T> / 2, 0, 1},
-                              Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), 2, 1},
-                              Cone3<T>{{0, 0, 0}, {0, 0, 1}, nan, 0, 1},
-                              Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), nan, 1}}) {
+  for (const Cone3<T>& bad :
+       {Cone3<T>{{0, 0, 0}, {0, 0, 1}, 0, 0, 1}, Cone3<T>{{0, 0, 0}, {0, 0, 1}, pi_v<T> / 2, 0, 1},
+        Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), 2, 1}, Cone3<T>{{0, 0, 0}, {0, 0, 1}, nan, 0, 1},
+        Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), nan, 1}}) {
     EXPECT_FALSE(is_valid(bad));
     EXPECT_TRUE(std::isnan(volume(bad)));
     EXPECT_TRUE(std::isnan(lateral_area(bad)));
@@ -200,11 +204,16 @@ TYPED_TEST(ConeTest, VolumeByDivergenceTheorem) {
     const Vec3<double> p{0, -1, 2}, d = cd.axis;
     const auto pt = [&](double a, double h) { return point_at(cd, Vec2<double>{a, h}); };
     const auto ref = [&](double, double h) { return cd.vertex + h * d; };
-    double v = flux_volume(pt, ref, 0, 2 * pi_v<double>, std::fmax(0.0, cd.min_height), cd.max_height, p, 64, 4);
-    if (cd.min_height < 0) v += flux_volume(pt, ref, 0, 2 * pi_v<double>, cd.min_height, 0, p, 64, 4);
-    const auto disk = [&](double h) { return pi_v<double> * std::pow(std::fabs(h) * std::tan(cd.angle), 2); };
+    double v = flux_volume(pt, ref, 0, 2 * pi_v<double>, std::fmax(0.0, cd.min_height),
+                           cd.max_height, p, 64, 4);
+    if (cd.min_height < 0)
+      v += flux_volume(pt, ref, 0, 2 * pi_v<double>, cd.min_height, 0, p, 64, 4);
+    const auto disk = [&](double h) {
+      return pi_v<double> * std::pow(std::fabs(h) * std::tan(cd.angle), 2);
+    };
     v += (dot(cd.vertex + cd.max_height * d - p, d) * disk(cd.max_height) -
-          dot(cd.vertex + cd.min_height * d - p, d) * disk(cd.min_height)) / 3;
+          dot(cd.vertex + cd.min_height * d - p, d) * disk(cd.min_height)) /
+         3;
     EXPECT_NEAR(double(volume(c)), v, 1e-7 * std::fabs(v) + double(tol<T>(32, 10))) << "kind " << k;
   }
 }

@@ -23,7 +23,9 @@ static_assert(std::is_aggregate_v<Cylinder3d> && std::is_trivially_copyable_v<Cy
 namespace {
 template <class T>
 Cylinder3<T> random_cylinder(Rng& rng) {
-  return {{rng.vec<T, 3>(-5, 5), rng.unit<T, 3>()}, rng.uniform<T>(T(0.3), 2), rng.uniform<T>(T(0.5), 4)};
+  return {{rng.vec<T, 3>(-5, 5), rng.unit<T, 3>()},
+          rng.uniform<T>(T(0.3), 2),
+          rng.uniform<T>(T(0.5), 4)};
 }
 
 // Membership written out independently of the header: axial coordinate and radial distance.
@@ -35,9 +37,10 @@ bool inside(const Cylinder3<T>& c, const Vec3<T>& x) {
 }
 
 // (1/3) * flux of X - p through a parametrised surface patch (quadrature over [u0,u1]x[v0,v1],
-// central differences of point_at); its area in *area: the divergence theorem as a second, independent volume
-// algorithm. When `outward_ref` is given, each normal is flipped to point away from
-// outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation is used.
+// central differences of point_at); its area in *area: the divergence theorem as a second,
+// independent volume algorithm. When `outward_ref` is given, each normal is flipped to point away
+// from outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation
+// is used.
 template <class F, class G>
 double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, double v1,
                    const Vec3<double>& p, int nu, int nv, double* area = nullptr) {
@@ -50,7 +53,8 @@ double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, dou
       for (const double off : {-g, g}) {
         const double u = u0 + (i + 0.5) * hu, v = v0 + (j + 0.5) * hv + off;
         const Vec3<double> x = pt(u, v);
-        Vec3<double> nn = cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
+        Vec3<double> nn =
+            cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
         const Vec3<double> ref = outward_ref(u, v);
         if (!(ref == x) && dot(nn, x - ref) < 0) nn = -nn;
         s += dot(x - p, nn) * hu * hv / 2;
@@ -99,11 +103,13 @@ TYPED_TEST(CylinderTest, VolumeMatchesMonteCarlo) {
 TYPED_TEST(CylinderTest, LateralAreaMatchesIntegratedAreaElement) {
   using T = TypeParam;
   const Cylinder3<double> cd{{{1, 2, 3}, normalize(Vec3<double>{1, -2, 2})}, 1.25, 3.5};
-  const Cylinder3<T> c{{vec_cast<T>(cd.axis.origin), vec_cast<T>(cd.axis.direction)}, T(cd.radius), T(cd.height)};
+  const Cylinder3<T> c{
+      {vec_cast<T>(cd.axis.origin), vec_cast<T>(cd.axis.direction)}, T(cd.radius), T(cd.height)};
   const auto pt = [&](double a, double h) { return point_at(cd, Vec2<double>{a, h}); };
   const auto ref = [&](double, double h) { return cd.axis.origin + h * cd.axis.direction; };
   double sum = 0;
-  (void)flux_volume(pt, ref, 0, 2 * pi_v<double>, -cd.height / 2, cd.height / 2, Vec3<double>{}, 64, 4, &sum);
+  (void)flux_volume(pt, ref, 0, 2 * pi_v<double>, -cd.height / 2, cd.height / 2, Vec3<double>{}, 64,
+                    4, &sum);
   EXPECT_NEAR(double(lateral_area(c)), sum, 1e-6 * sum + double(tol<T>(16)) * sum);
   // The two caps are disks of area pi r^2.
   EXPECT_NEAR(double(surface_area(c) - lateral_area(c)), 2 * pi_v<double> * cd.radius * cd.radius,
@@ -160,13 +166,16 @@ TYPED_TEST(CylinderTest, InfiniteAndDegenerate) {
 TYPED_TEST(CylinderTest, VolumeByDivergenceTheorem) {
   using T = TypeParam;
   const Cylinder3<double> cd{{{1, 2, 3}, normalize(Vec3<double>{1, -2, 2})}, 1.25, 3.5};
-  const Cylinder3<T> c{{vec_cast<T>(cd.axis.origin), vec_cast<T>(cd.axis.direction)}, T(cd.radius), T(cd.height)};
+  const Cylinder3<T> c{
+      {vec_cast<T>(cd.axis.origin), vec_cast<T>(cd.axis.direction)}, T(cd.radius), T(cd.height)};
   const Vec3<double> p{-1, 0.5, 2}, d = cd.axis.direction;
   const auto pt = [&](double a, double h) { return point_at(cd, Vec2<double>{a, h}); };
   const auto ref = [&](double, double h) { return cd.axis.origin + h * d; };
   double v = flux_volume(pt, ref, 0, 2 * pi_v<double>, -cd.height / 2, cd.height / 2, p, 64, 4);
   // The caps: (X - p) . n is constant on each disk of area pi r^2.
   const double cap = pi_v<double> * cd.radius * cd.radius;
-  v += (dot(cd.axis.origin + (cd.height / 2) * d - p, d) - dot(cd.axis.origin - (cd.height / 2) * d - p, d)) * cap / 3;
+  v += (dot(cd.axis.origin + (cd.height / 2) * d - p, d) -
+        dot(cd.axis.origin - (cd.height / 2) * d - p, d)) *
+       cap / 3;
   EXPECT_NEAR(double(volume(c)), v, 1e-7 * v + double(tol<T>(16)) * v);
 }

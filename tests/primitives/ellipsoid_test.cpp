@@ -37,7 +37,8 @@ Mat3<T> random_rotation(Rng& rng) {
 template <class T>
 Ellipsoid3<T> random_ellipsoid(Rng& rng) {
   const Mat3<T> r = random_rotation<T>(rng);
-  return {rng.vec<T, 3>(-5, 5), {col(r, 0), col(r, 1), col(r, 2)},
+  return {rng.vec<T, 3>(-5, 5),
+          {col(r, 0), col(r, 1), col(r, 2)},
           {rng.uniform<T>(T(0.5), 3), rng.uniform<T>(T(0.5), 3), rng.uniform<T>(T(0.5), 3)}};
 }
 
@@ -47,14 +48,16 @@ double eig_residual(const detail::SymmetricEigen3<double>& e, const Mat3<double>
   const Mat3<double> orth = transpose(e.vectors) * e.vectors - Mat3<double>::identity();
   double r = 0;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) r = std::max({r, std::fabs(rec.a[i][j] - m.a[i][j]), std::fabs(orth.a[i][j])});
+    for (int j = 0; j < 3; ++j)
+      r = std::max({r, std::fabs(rec.a[i][j] - m.a[i][j]), std::fabs(orth.a[i][j])});
   return r;
 }
 
 // (1/3) * flux of X - p through a parametrised surface patch (quadrature over [u0,u1]x[v0,v1],
-// central differences of point_at); its area in *area: the divergence theorem as a second, independent volume
-// algorithm. When `outward_ref` is given, each normal is flipped to point away from
-// outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation is used.
+// central differences of point_at); its area in *area: the divergence theorem as a second,
+// independent volume algorithm. When `outward_ref` is given, each normal is flipped to point away
+// from outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation
+// is used.
 template <class F, class G>
 double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, double v1,
                    const Vec3<double>& p, int nu, int nv, double* area = nullptr) {
@@ -67,7 +70,8 @@ double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, dou
       for (const double off : {-g, g}) {
         const double u = u0 + (i + 0.5) * hu, v = v0 + (j + 0.5) * hv + off;
         const Vec3<double> x = pt(u, v);
-        Vec3<double> nn = cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
+        Vec3<double> nn =
+            cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
         const Vec3<double> ref = outward_ref(u, v);
         if (!(ref == x) && dot(nn, x - ref) < 0) nn = -nn;
         s += dot(x - p, nn) * hu * hv / 2;
@@ -103,7 +107,8 @@ TEST(SymmetricEigen3, RepeatedZeroExtremeAndNonFinite) {
   for (int trial = 0; trial < 200; ++trial) {
     // Repeated eigenvalues (1, 1, 2) and (0, 0, 3) in a random frame.
     const Mat3<double> r = random_rotation<double>(rng);
-    for (const Vec3<double> d : {Vec3<double>{1, 1, 2}, Vec3<double>{0, 0, 3}, Vec3<double>{-2, 5, 5}}) {
+    for (const Vec3<double> d :
+         {Vec3<double>{1, 1, 2}, Vec3<double>{0, 0, 3}, Vec3<double>{-2, 5, 5}}) {
       const Mat3<double> m = r * Mat3<double>::diagonal(d) * transpose(r);
       const auto e = detail::symmetric_eigen3(m);
       ASSERT_TRUE(e.converged);
@@ -170,8 +175,12 @@ TYPED_TEST(EllipsoidTest, ImplicitRoundTrip) {
   // Not positive definite, or not finite.
   EXPECT_FALSE(ellipsoid_from_implicit(Vec3<T>{}, Mat3<T>::diagonal({1, 1, 0})).has_value());
   EXPECT_FALSE(ellipsoid_from_implicit(Vec3<T>{}, Mat3<T>::diagonal({1, -1, 1})).has_value());
-  EXPECT_FALSE(ellipsoid_from_implicit(Vec3<T>{}, Mat3<T>::diagonal({1, std::numeric_limits<T>::infinity(), 1})).has_value());
-  EXPECT_FALSE(ellipsoid_from_implicit(Vec3<T>{std::numeric_limits<T>::quiet_NaN(), 0, 0}, Mat3<T>::identity()).has_value());
+  EXPECT_FALSE(ellipsoid_from_implicit(
+                   Vec3<T>{}, Mat3<T>::diagonal({1, std::numeric_limits<T>::infinity(), 1}))
+                   .has_value());
+  EXPECT_FALSE(ellipsoid_from_implicit(Vec3<T>{std::numeric_limits<T>::quiet_NaN(), 0, 0},
+                                       Mat3<T>::identity())
+                   .has_value());
   const auto unit = ellipsoid_from_implicit(Vec3<T>{}, Mat3<T>::diagonal({4, 1, T(0.25)}));
   ASSERT_TRUE(unit.has_value());
   EXPECT_TRUE(vec_near(unit->extent, Vec3<T>{2, 1, T(0.5)}, tol<T>(8, 2)));
@@ -226,10 +235,13 @@ TYPED_TEST(EllipsoidTest, VolumeByDivergenceTheorem) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   const auto e = random_ellipsoid<T>(rng);
-  Ellipsoid3<double> ed{vec_cast<double>(e.center), {vec_cast<double>(e.axis[0]), vec_cast<double>(e.axis[1]),
-                        vec_cast<double>(e.axis[2])}, vec_cast<double>(e.extent)};
+  Ellipsoid3<double> ed{
+      vec_cast<double>(e.center),
+      {vec_cast<double>(e.axis[0]), vec_cast<double>(e.axis[1]), vec_cast<double>(e.axis[2])},
+      vec_cast<double>(e.extent)};
   const auto pt = [&](double a, double b) { return point_at(ed, Vec2<double>{a, b}); };
   const auto ref = [&](double, double) { return ed.center; };
-  const double v = flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, pi_v<double>, Vec3<double>{1, 1, 1}, 64, 32);
+  const double v =
+      flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, pi_v<double>, Vec3<double>{1, 1, 1}, 64, 32);
   EXPECT_NEAR(double(volume(e)), v, 1e-6 * v + double(tol<T>(64)) * v);
 }

@@ -28,7 +28,13 @@ Frustum3<T> random_frustum(Rng& rng) {
   Vec3<T> u = normalize(cross(d, rng.unit<T, 3>()));
   const Vec3<T> r = cross(d, u);
   const T n = rng.uniform<T>(T(0.5), 2);
-  return {rng.vec<T, 3>(-3, 3), d, u, r, n, n + rng.uniform<T>(T(0.5), 5), rng.uniform<T>(T(0.3), 2),
+  return {rng.vec<T, 3>(-3, 3),
+          d,
+          u,
+          r,
+          n,
+          n + rng.uniform<T>(T(0.5), 5),
+          rng.uniform<T>(T(0.3), 2),
           rng.uniform<T>(T(0.3), 2)};
 }
 }  // namespace
@@ -48,7 +54,8 @@ TYPED_TEST(FrustumTest, CornersLieOnTheNearAndFarFaces) {
       EXPECT_NEAR(dot(p, f.right), ((k & 1) ? 1 : -1) * q * f.r_bound, tol<T>(64, 20));
       EXPECT_NEAR(dot(p, f.up), ((k & 2) ? 1 : -1) * q * f.u_bound, tol<T>(64, 20));
       if (k & 4) {  // far corner = near corner scaled from the apex
-        EXPECT_TRUE(vec_near(p, (f.d_max / f.d_min) * (cs[std::size_t(k - 4)] - f.origin), tol<T>(128, 40)));
+        EXPECT_TRUE(vec_near(p, (f.d_max / f.d_min) * (cs[std::size_t(k - 4)] - f.origin),
+                             tol<T>(128, 40)));
       }
     }
     // point_at agrees with the corners and keeps w = 0 on the near plane.
@@ -63,15 +70,18 @@ TYPED_TEST(FrustumTest, VolumeMatchesSixTetrahedraAndAreaMatchesFaces) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   // The six monotone corner paths 0 -> 7 tile the hexahedron (a projective image of a cube).
-  constexpr int tets[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
-  constexpr int faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+  constexpr int tets[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7},
+                              {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
+  constexpr int faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                               {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
   for (int trial = 0; trial < 300; ++trial) {
     const auto f = random_frustum<T>(rng);
     const auto c = corners(f);
     double vol = 0, area = 0;
     for (const auto& t : tets) {
-      const Tetrahedron3<double> td{{vec_cast<double>(c[std::size_t(t[0])]), vec_cast<double>(c[std::size_t(t[1])]),
-                                     vec_cast<double>(c[std::size_t(t[2])]), vec_cast<double>(c[std::size_t(t[3])])}};
+      const Tetrahedron3<double> td{
+          {vec_cast<double>(c[std::size_t(t[0])]), vec_cast<double>(c[std::size_t(t[1])]),
+           vec_cast<double>(c[std::size_t(t[2])]), vec_cast<double>(c[std::size_t(t[3])])}};
       vol += double(volume(td));
     }
     for (const auto& q : faces) {
@@ -100,11 +110,13 @@ TYPED_TEST(FrustumTest, TwoDimensionalFrustum) {
   for (int trial = 0; trial < 300; ++trial) {
     const Vec2<T> d = rng.unit<T, 2>();
     const T n = rng.uniform<T>(T(0.5), 2);
-    const Frustum2<T> f{rng.vec<T, 2>(-3, 3), d, perp(d), n, n + rng.uniform<T>(T(0.1), 4), rng.uniform<T>(T(0.2), 2)};
+    const Frustum2<T> f{rng.vec<T, 2>(-3, 3),     d, perp(d), n, n + rng.uniform<T>(T(0.1), 4),
+                        rng.uniform<T>(T(0.2), 2)};
     ASSERT_TRUE(is_valid(f));
     const Vec2<T> ring[4] = {corner(f, 0), corner(f, 1), corner(f, 3), corner(f, 2)};
     T shoelace = 0;
-    for (int i = 0; i < 4; ++i) shoelace += perp_dot(ring[i] - f.origin, ring[(i + 1) % 4] - f.origin);
+    for (int i = 0; i < 4; ++i)
+      shoelace += perp_dot(ring[i] - f.origin, ring[(i + 1) % 4] - f.origin);
     EXPECT_NEAR(std::fabs(shoelace) / 2, area(f), tol<T>(256, 50));
     EXPECT_NEAR(dot(corner(f, 3) - f.origin, f.direction), f.d_max, tol<T>(64, 10));
     EXPECT_TRUE(vec_near(point_at(f, Vec2<T>{-1, 0}), corner(f, 0), tol<T>(16, 10)));
@@ -118,9 +130,10 @@ TYPED_TEST(FrustumTest, InvalidAndFlat) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
   const Vec3<T> d{0, 0, 1}, u{0, 1, 0}, r{1, 0, 0};
-  for (const Frustum3<T>& bad : {Frustum3<T>{{}, d, u, r, 0, 1, 1, 1}, Frustum3<T>{{}, d, u, r, 2, 1, 1, 1},
-                                 Frustum3<T>{{}, d, u, r, 1, 2, -1, 1}, Frustum3<T>{{}, d, u, r, 1, 2, 1, nan},
-                                 Frustum3<T>{{}, d, u, r, 1, inf, 1, 1}}) {
+  for (const Frustum3<T>& bad :
+       {Frustum3<T>{{}, d, u, r, 0, 1, 1, 1}, Frustum3<T>{{}, d, u, r, 2, 1, 1, 1},
+        Frustum3<T>{{}, d, u, r, 1, 2, -1, 1}, Frustum3<T>{{}, d, u, r, 1, 2, 1, nan},
+        Frustum3<T>{{}, d, u, r, 1, inf, 1, 1}}) {
     EXPECT_FALSE(is_valid(bad));
     EXPECT_TRUE(std::isnan(volume(bad)));
     EXPECT_TRUE(std::isnan(surface_area(bad)));

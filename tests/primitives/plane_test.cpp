@@ -30,7 +30,8 @@ mpq_class q(double x) { return mpq_class(x); }
 
 template <class T>
 Vec3<T> int_vec(Rng& rng, int lim) {
-  return {T(rng.uniform_int(-lim, lim)), T(rng.uniform_int(-lim, lim)), T(rng.uniform_int(-lim, lim))};
+  return {T(rng.uniform_int(-lim, lim)), T(rng.uniform_int(-lim, lim)),
+          T(rng.uniform_int(-lim, lim))};
 }
 }  // namespace
 
@@ -92,12 +93,14 @@ TYPED_TEST(PlaneTest, CollinearAndCoincidentGiveNullopt) {
   }
   // Nearly collinear but not collinear: the exact test keeps it.
   const T e = std::numeric_limits<T>::epsilon();
-  EXPECT_TRUE(plane_through(Vec3<T>{0, 0, 0}, Vec3<T>{1, 1, 1}, Vec3<T>{2, 2, 2 + 4 * e}).has_value());
+  EXPECT_TRUE(
+      plane_through(Vec3<T>{0, 0, 0}, Vec3<T>{1, 1, 1}, Vec3<T>{2, 2, 2 + 4 * e}).has_value());
   // Non-finite points and a zero normal from underflow.
   const T nan = std::numeric_limits<T>::quiet_NaN();
   EXPECT_FALSE(plane_through(Vec3<T>{nan, 0, 0}, Vec3<T>{1, 0, 0}, Vec3<T>{0, 1, 0}).has_value());
   const T tiny = std::numeric_limits<T>::denorm_min();
-  EXPECT_FALSE(plane_through(Vec3<T>{0, 0, 0}, Vec3<T>{tiny, 0, 0}, Vec3<T>{0, tiny, 0}).has_value());
+  EXPECT_FALSE(
+      plane_through(Vec3<T>{0, 0, 0}, Vec3<T>{tiny, 0, 0}, Vec3<T>{0, tiny, 0}).has_value());
 }
 
 TYPED_TEST(PlaneTest, SignedDistanceAndProjectionAgainstExactOracle) {
@@ -108,14 +111,18 @@ TYPED_TEST(PlaneTest, SignedDistanceAndProjectionAgainstExactOracle) {
     const Plane3<T> pl{rng.vec<T, 3>(-4, 4), rng.uniform<T>(-10, 10)};
     if (length(pl.normal) < T(0.1)) continue;
     const auto x = rng.vec<T, 3>(-10, 10);
-    const mpq_class v = q(pl.normal.x) * q(x.x) + q(pl.normal.y) * q(x.y) + q(pl.normal.z) * q(x.z) - q(pl.constant);
-    const double nl = std::sqrt(mpq_class(q(pl.normal.x) * q(pl.normal.x) + q(pl.normal.y) * q(pl.normal.y) +
-                                          q(pl.normal.z) * q(pl.normal.z)).get_d());
+    const mpq_class v = q(pl.normal.x) * q(x.x) + q(pl.normal.y) * q(x.y) +
+                        q(pl.normal.z) * q(x.z) - q(pl.constant);
+    const double nl =
+        std::sqrt(mpq_class(q(pl.normal.x) * q(pl.normal.x) + q(pl.normal.y) * q(pl.normal.y) +
+                            q(pl.normal.z) * q(pl.normal.z))
+                      .get_d());
     const double dist = v.get_d() / nl;
     // Terms up to |n||x| + |c| ~ 80 / |n| >= 0.1: a few dozen eps of that scale.
     const T scale = (length(pl.normal) * length(x) + std::fabs(pl.constant)) / length(pl.normal);
     EXPECT_NEAR(double(signed_distance(pl, x)), dist, double(tol<T>(16, scale)));
-    EXPECT_NEAR(double(signed_value(pl, x)), v.get_d(), double(tol<T>(8, scale * length(pl.normal))));
+    EXPECT_NEAR(double(signed_value(pl, x)), v.get_d(),
+                double(tol<T>(8, scale * length(pl.normal))));
     const auto p = project(pl, x);
     EXPECT_NEAR(signed_distance(pl, p), T(0), tol<T>(32, scale));
     // x - p is parallel to the normal, of length |dist|.

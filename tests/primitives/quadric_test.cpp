@@ -77,7 +77,8 @@ std::vector<Case> all_cases() {
 void int_rotation(Rng& rng, I rn[3][3], I& n) {
   I w, x, y, z;
   do {
-    w = rng.uniform_int(-3, 3), x = rng.uniform_int(-3, 3), y = rng.uniform_int(-3, 3), z = rng.uniform_int(-3, 3);
+    w = rng.uniform_int(-3, 3), x = rng.uniform_int(-3, 3), y = rng.uniform_int(-3, 3),
+    z = rng.uniform_int(-3, 3);
     n = w * w + x * x + y * y + z * z;
   } while (n == 0);
   const I m[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
@@ -221,8 +222,8 @@ TYPED_TEST(QuadricTest, StandardFormRoundTripAndDefinition) {
         const Vec3<T> y = rng.vec<T, 3>(-1, 1);
         const Vec3<T> x = f.center + f.rotation * y;
         const T lhs = signed_value(q, x);
-        const T rhs = f.diagonal.x * y.x * y.x + f.diagonal.y * y.y * y.y + f.diagonal.z * y.z * y.z +
-                      dot(f.linear, y) + f.constant;
+        const T rhs = f.diagonal.x * y.x * y.x + f.diagonal.y * y.y * y.y +
+                      f.diagonal.z * y.z * y.z + dot(f.linear, y) + f.constant;
         EXPECT_NEAR(lhs, rhs, tol<T>(256, scale));
       }
       // Back to the general form.

@@ -21,9 +21,10 @@ static_assert(std::is_aggregate_v<Sphere3d> && std::is_trivially_copyable_v<Sphe
 
 namespace {
 // (1/3) * flux of X - p through a parametrised surface patch (quadrature over [u0,u1]x[v0,v1],
-// central differences of point_at); its area in *area: the divergence theorem as a second, independent volume
-// algorithm. When `outward_ref` is given, each normal is flipped to point away from
-// outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation is used.
+// central differences of point_at); its area in *area: the divergence theorem as a second,
+// independent volume algorithm. When `outward_ref` is given, each normal is flipped to point away
+// from outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation
+// is used.
 template <class F, class G>
 double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, double v1,
                    const Vec3<double>& p, int nu, int nv, double* area = nullptr) {
@@ -36,7 +37,8 @@ double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, dou
       for (const double off : {-g, g}) {
         const double u = u0 + (i + 0.5) * hu, v = v0 + (j + 0.5) * hv + off;
         const Vec3<double> x = pt(u, v);
-        Vec3<double> nn = cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
+        Vec3<double> nn =
+            cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
         const Vec3<double> ref = outward_ref(u, v);
         if (!(ref == x) && dot(nn, x - ref) < 0) nn = -nn;
         s += dot(x - p, nn) * hu * hv / 2;
@@ -51,10 +53,11 @@ TYPED_TEST(SphereTest, ParametrisationConventions) {
   using T = TypeParam;
   const Sphere3<T> s{{1, 2, 3}, 2};
   const T pi = pi_v<T>;
-  EXPECT_TRUE(vec_near(point_at(s, Vec2<T>{0, 0}), Vec3<T>{1, 2, 5}, tol<T>(8, 4)));        // north pole
-  EXPECT_TRUE(vec_near(point_at(s, Vec2<T>{0, pi / 2}), Vec3<T>{3, 2, 3}, tol<T>(8, 4)));   // +x
-  EXPECT_TRUE(vec_near(point_at(s, Vec2<T>{pi / 2, pi / 2}), Vec3<T>{1, 4, 3}, tol<T>(8, 4)));  // +y
-  EXPECT_TRUE(vec_near(point_at(s, Vec2<T>{0, pi}), Vec3<T>{1, 2, 1}, tol<T>(8, 4)));       // south
+  EXPECT_TRUE(vec_near(point_at(s, Vec2<T>{0, 0}), Vec3<T>{1, 2, 5}, tol<T>(8, 4)));  // north pole
+  EXPECT_TRUE(vec_near(point_at(s, Vec2<T>{0, pi / 2}), Vec3<T>{3, 2, 3}, tol<T>(8, 4)));  // +x
+  EXPECT_TRUE(
+      vec_near(point_at(s, Vec2<T>{pi / 2, pi / 2}), Vec3<T>{1, 4, 3}, tol<T>(8, 4)));  // +y
+  EXPECT_TRUE(vec_near(point_at(s, Vec2<T>{0, pi}), Vec3<T>{1, 2, 1}, tol<T>(8, 4)));   // south
 }
 
 TYPED_TEST(SphereTest, PointAtSatisfiesImplicitEquation) {
@@ -144,6 +147,7 @@ TYPED_TEST(SphereTest, VolumeByDivergenceTheorem) {
   const Sphere3<T> s{vec_cast<T>(sd.center), T(sd.radius)};
   const auto pt = [&](double a, double b) { return point_at(sd, Vec2<double>{a, b}); };
   const auto ref = [&](double, double) { return sd.center; };
-  const double v = flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, pi_v<double>, Vec3<double>{3, 1, -2}, 64, 32);
+  const double v =
+      flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, pi_v<double>, Vec3<double>{3, 1, -2}, 64, 32);
   EXPECT_NEAR(double(volume(s)), v, 1e-6 * v + double(tol<T>(16)) * v);
 }

@@ -27,8 +27,10 @@ template <class T>
 mpq_class exact_det(const Tetrahedron3<T>& t) {
   mpq_class m[3][3];
   for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) m[i][k] = mpq_class(double(t.v[i + 1][k])) - mpq_class(double(t.v[0][k]));
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+    for (int k = 0; k < 3; ++k)
+      m[i][k] = mpq_class(double(t.v[i + 1][k])) - mpq_class(double(t.v[0][k]));
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+         m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
@@ -117,7 +119,8 @@ TYPED_TEST(TetrahedronTest, FacesPointOutwardForBothOrientations) {
     T area = 0;
     for (int i = 0; i < 4; ++i) {
       const auto f = face(t, i);
-      const double a = length(vec_cast<double>(f.v1 - f.v0)), b = length(vec_cast<double>(f.v2 - f.v1)),
+      const double a = length(vec_cast<double>(f.v1 - f.v0)),
+                   b = length(vec_cast<double>(f.v2 - f.v1)),
                    c = length(vec_cast<double>(f.v0 - f.v2)), s = (a + b + c) / 2;
       area += T(std::sqrt(std::fmax(0.0, s * (s - a) * (s - b) * (s - c))));
     }
@@ -137,7 +140,8 @@ TYPED_TEST(TetrahedronTest, ParametrisationsCentroidAndBox) {
       EXPECT_EQ(point_at_barycentric(t, b), t.v[i]);  // exact at the vertices
     }
     EXPECT_EQ(point_at(t, Vec3<T>{0, 0, 0}), t.v[0]);
-    EXPECT_TRUE(vec_near(centroid(t), point_at_barycentric(t, Vec4<T>{T(0.25), T(0.25), T(0.25), T(0.25)}),
+    EXPECT_TRUE(vec_near(centroid(t),
+                         point_at_barycentric(t, Vec4<T>{T(0.25), T(0.25), T(0.25), T(0.25)}),
                          tol<T>(16, 5)));
     T s = rng.uniform<T>(0, 1), u = rng.uniform<T>(0, 1), w = rng.uniform<T>(0, 1);
     if (s + u + w > 1) {
@@ -145,12 +149,14 @@ TYPED_TEST(TetrahedronTest, ParametrisationsCentroidAndBox) {
       s *= k, u *= k, w *= k;
     }
     const Vec3<T> p = point_at(t, Vec3<T>{s, u, w});
-    EXPECT_TRUE(vec_near(p, point_at_barycentric(t, Vec4<T>{1 - s - u - w, s, u, w}), tol<T>(64, 10)));
+    EXPECT_TRUE(
+        vec_near(p, point_at_barycentric(t, Vec4<T>{1 - s - u - w, s, u, w}), tol<T>(64, 10)));
     const auto box = bounding_box(t);
     for (int k = 0; k < 3; ++k) {
       EXPECT_LE(box.min[k], p[k] + tol<T>(64, 10));
       EXPECT_GE(box.max[k], p[k] - tol<T>(64, 10));
-      EXPECT_EQ(box.min[k], std::fmin(std::fmin(t.v[0][k], t.v[1][k]), std::fmin(t.v[2][k], t.v[3][k])));
+      EXPECT_EQ(box.min[k],
+                std::fmin(std::fmin(t.v[0][k], t.v[1][k]), std::fmin(t.v[2][k], t.v[3][k])));
     }
   }
 }

@@ -36,9 +36,10 @@ Torus3<T> random_torus(Rng& rng) {
 }
 
 // (1/3) * flux of X - p through a parametrised surface patch (quadrature over [u0,u1]x[v0,v1],
-// central differences of point_at); its area in *area: the divergence theorem as a second, independent volume
-// algorithm. When `outward_ref` is given, each normal is flipped to point away from
-// outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation is used.
+// central differences of point_at); its area in *area: the divergence theorem as a second,
+// independent volume algorithm. When `outward_ref` is given, each normal is flipped to point away
+// from outward_ref(u, v) (for open lateral surfaces); otherwise the parametrisation's orientation
+// is used.
 template <class F, class G>
 double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, double v1,
                    const Vec3<double>& p, int nu, int nv, double* area = nullptr) {
@@ -51,7 +52,8 @@ double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, dou
       for (const double off : {-g, g}) {
         const double u = u0 + (i + 0.5) * hu, v = v0 + (j + 0.5) * hv + off;
         const Vec3<double> x = pt(u, v);
-        Vec3<double> nn = cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
+        Vec3<double> nn =
+            cross((pt(u + e, v) - pt(u - e, v)) / (2 * e), (pt(u, v + e) - pt(u, v - e)) / (2 * e));
         const Vec3<double> ref = outward_ref(u, v);
         if (!(ref == x) && dot(nn, x - ref) < 0) nn = -nn;
         s += dot(x - p, nn) * hu * hv / 2;
@@ -66,9 +68,12 @@ TYPED_TEST(TorusTest, Figure9_21StandardRingTorus) {
   using T = TypeParam;
   // Center at the origin, axis +z, R = 2, r = 0.5.
   const Torus3<T> t{{0, 0, 0}, {0, 0, 1}, 2, T(0.5)};
-  EXPECT_TRUE(vec_near(point_at(t, Vec2<T>{0, 0}), Vec3<T>{T(2.5), 0, 0}, tol<T>(8, 3)));  // outer equator
-  EXPECT_TRUE(vec_near(point_at(t, Vec2<T>{0, pi_v<T>}), Vec3<T>{T(1.5), 0, 0}, tol<T>(8, 3)));  // inner
-  EXPECT_TRUE(vec_near(point_at(t, Vec2<T>{0, pi_v<T> / 2}), Vec3<T>{2, 0, T(0.5)}, tol<T>(8, 3)));  // top
+  EXPECT_TRUE(
+      vec_near(point_at(t, Vec2<T>{0, 0}), Vec3<T>{T(2.5), 0, 0}, tol<T>(8, 3)));  // outer equator
+  EXPECT_TRUE(
+      vec_near(point_at(t, Vec2<T>{0, pi_v<T>}), Vec3<T>{T(1.5), 0, 0}, tol<T>(8, 3)));  // inner
+  EXPECT_TRUE(
+      vec_near(point_at(t, Vec2<T>{0, pi_v<T> / 2}), Vec3<T>{2, 0, T(0.5)}, tol<T>(8, 3)));  // top
   EXPECT_LT(signed_value(t, Vec3<T>{2, 0, 0}), T(0));  // tube center is inside
   EXPECT_GT(signed_value(t, Vec3<T>{0, 0, 0}), T(0));  // the hole is outside
   EXPECT_GT(signed_value(t, Vec3<T>{3, 0, 0}), T(0));
@@ -118,11 +123,13 @@ TYPED_TEST(TorusTest, VolumeByPappusMatchesSampling) {
 TYPED_TEST(TorusTest, SurfaceAreaMatchesIntegratedAreaElement) {
   using T = TypeParam;
   const Torus3<double> td{{1, 0, -1}, normalize(Vec3<double>{1, 2, -2}), 2.2, 0.7};
-  const Torus3<T> t{vec_cast<T>(td.center), vec_cast<T>(td.normal), T(td.major_radius), T(td.minor_radius)};
+  const Torus3<T> t{vec_cast<T>(td.center), vec_cast<T>(td.normal), T(td.major_radius),
+                    T(td.minor_radius)};
   const auto pt = [&](double a, double b) { return point_at(td, Vec2<double>{a, b}); };
   const auto ref = [&](double, double) { return td.center; };
   double sum = 0;
-  (void)flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, 2 * pi_v<double>, Vec3<double>{}, 64, 32, &sum);
+  (void)flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, 2 * pi_v<double>, Vec3<double>{}, 64, 32,
+                    &sum);
   // Periodic integrand: spectrally accurate quadrature; the differences cost ~1e-10.
   EXPECT_NEAR(double(surface_area(t)), sum, 1e-7 * sum + double(tol<T>(32)) * sum);
 }
@@ -160,10 +167,14 @@ TYPED_TEST(TorusTest, BoundingBoxIsTightAndDegenerateRadii) {
 TYPED_TEST(TorusTest, VolumeByDivergenceTheorem) {
   using T = TypeParam;
   const Torus3<double> td{{1, 0, -1}, normalize(Vec3<double>{1, 2, -2}), 2.2, 0.7};
-  const Torus3<T> t{vec_cast<T>(td.center), vec_cast<T>(td.normal), T(td.major_radius), T(td.minor_radius)};
+  const Torus3<T> t{vec_cast<T>(td.center), vec_cast<T>(td.normal), T(td.major_radius),
+                    T(td.minor_radius)};
   const auto pt = [&](double a, double b) { return point_at(td, Vec2<double>{a, b}); };
   // Outward = away from the center circle point at the same angle a.
-  const auto ref = [&](double a, double) { return point_at(Torus3<double>{td.center, td.normal, td.major_radius, 0}, Vec2<double>{a, 0}); };
-  const double v = flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, 2 * pi_v<double>, Vec3<double>{-2, 3, 1}, 64, 32);
+  const auto ref = [&](double a, double) {
+    return point_at(Torus3<double>{td.center, td.normal, td.major_radius, 0}, Vec2<double>{a, 0});
+  };
+  const double v = flux_volume(pt, ref, 0, 2 * pi_v<double>, 0, 2 * pi_v<double>,
+                               Vec3<double>{-2, 3, 1}, 64, 32);
   EXPECT_NEAR(double(volume(t)), v, 1e-6 * v);  // periodic integrand: spectral accuracy
 }

@@ -39,8 +39,10 @@ struct AlignedBox {
   Vec<T, N> max;
 };
 
-template <class T> using AlignedBox2 = AlignedBox<T, 2>;
-template <class T> using AlignedBox3 = AlignedBox<T, 3>;
+template <class T>
+using AlignedBox2 = AlignedBox<T, 2>;
+template <class T>
+using AlignedBox3 = AlignedBox<T, 3>;
 using AlignedBox2f = AlignedBox2<float>;
 using AlignedBox2d = AlignedBox2<double>;
 using AlignedBox3f = AlignedBox3<float>;

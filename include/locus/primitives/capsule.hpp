@@ -37,8 +37,10 @@ struct Capsule {
   T radius;
 };
 
-template <class T> using Capsule2 = Capsule<T, 2>;
-template <class T> using Capsule3 = Capsule<T, 3>;
+template <class T>
+using Capsule2 = Capsule<T, 2>;
+template <class T>
+using Capsule3 = Capsule<T, 3>;
 using Capsule3f = Capsule3<float>;
 using Capsule3d = Capsule3<double>;
 

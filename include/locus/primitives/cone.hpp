@@ -90,7 +90,8 @@ template <class T>
 template <class T>
 [[nodiscard]] inline Vec3<T> point_at(const Cone3<T>& c, const Vec2<T>& th) noexcept {
   const auto b = perpendicular_basis(c.axis);
-  return c.vertex + th.y * c.axis + radius_at(c, th.y) * (std::cos(th.x) * b.u + std::sin(th.x) * b.v);
+  return c.vertex + th.y * c.axis +
+         radius_at(c, th.y) * (std::cos(th.x) * b.u + std::sin(th.x) * b.v);
 }
 
 /// pi tan^2(alpha) (max^3 - min^3) / 3; NaN if invalid.

@@ -70,8 +70,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr Vec3<T> corner(const Frustum3<T>& f, int k) noexcept {
   LOCUS_ASSERT(k >= 0 && k < 8, "Frustum corner index out of range");
-  return point_at(f, Vec3<T>{(k & 1) ? T(1) : T(-1), (k & 2) ? T(1) : T(-1),
-                             (k & 4) ? T(1) : T(0)});
+  return point_at(f,
+                  Vec3<T>{(k & 1) ? T(1) : T(-1), (k & 2) ? T(1) : T(-1), (k & 4) ? T(1) : T(0)});
 }
 
 /// All 8 corners, corner(f, k) at index k.

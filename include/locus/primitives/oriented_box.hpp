@@ -39,8 +39,10 @@ struct OrientedBox {
   Vec<T, N> extent;
 };
 
-template <class T> using OrientedBox2 = OrientedBox<T, 2>;
-template <class T> using OrientedBox3 = OrientedBox<T, 3>;
+template <class T>
+using OrientedBox2 = OrientedBox<T, 2>;
+template <class T>
+using OrientedBox3 = OrientedBox<T, 3>;
 using OrientedBox2f = OrientedBox2<float>;
 using OrientedBox2d = OrientedBox2<double>;
 using OrientedBox3f = OrientedBox3<float>;
@@ -48,7 +50,8 @@ using OrientedBox3d = OrientedBox3<double>;
 
 /// center + sum_i s[i] extent[i] axis[i], s in [-1, 1]^N.
 template <class T, int N>
-[[nodiscard]] constexpr Vec<T, N> point_at(const OrientedBox<T, N>& b, const Vec<T, N>& s) noexcept {
+[[nodiscard]] constexpr Vec<T, N> point_at(const OrientedBox<T, N>& b,
+                                           const Vec<T, N>& s) noexcept {
   Vec<T, N> p = b.center;
   for (int i = 0; i < N; ++i) p += (s[i] * b.extent[i]) * b.axis[i];
   return p;

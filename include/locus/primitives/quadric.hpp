@@ -100,23 +100,40 @@ enum class QuadricType : std::uint8_t {
 /// A short snake_case name of a quadric type.
 [[nodiscard]] constexpr std::string_view to_string(QuadricType t) noexcept {
   switch (t) {
-    case QuadricType::ellipsoid: return "ellipsoid";
-    case QuadricType::hyperboloid_one_sheet: return "hyperboloid_one_sheet";
-    case QuadricType::hyperboloid_two_sheets: return "hyperboloid_two_sheets";
-    case QuadricType::elliptic_cone: return "elliptic_cone";
-    case QuadricType::elliptic_paraboloid: return "elliptic_paraboloid";
-    case QuadricType::hyperbolic_paraboloid: return "hyperbolic_paraboloid";
-    case QuadricType::elliptic_cylinder: return "elliptic_cylinder";
-    case QuadricType::hyperbolic_cylinder: return "hyperbolic_cylinder";
-    case QuadricType::parabolic_cylinder: return "parabolic_cylinder";
-    case QuadricType::intersecting_planes: return "intersecting_planes";
-    case QuadricType::parallel_planes: return "parallel_planes";
-    case QuadricType::plane: return "plane";
-    case QuadricType::line: return "line";
-    case QuadricType::point: return "point";
-    case QuadricType::empty: return "empty";
-    case QuadricType::entire_space: return "entire_space";
-    case QuadricType::invalid: return "invalid";
+    case QuadricType::ellipsoid:
+      return "ellipsoid";
+    case QuadricType::hyperboloid_one_sheet:
+      return "hyperboloid_one_sheet";
+    case QuadricType::hyperboloid_two_sheets:
+      return "hyperboloid_two_sheets";
+    case QuadricType::elliptic_cone:
+      return "elliptic_cone";
+    case QuadricType::elliptic_paraboloid:
+      return "elliptic_paraboloid";
+    case QuadricType::hyperbolic_paraboloid:
+      return "hyperbolic_paraboloid";
+    case QuadricType::elliptic_cylinder:
+      return "elliptic_cylinder";
+    case QuadricType::hyperbolic_cylinder:
+      return "hyperbolic_cylinder";
+    case QuadricType::parabolic_cylinder:
+      return "parabolic_cylinder";
+    case QuadricType::intersecting_planes:
+      return "intersecting_planes";
+    case QuadricType::parallel_planes:
+      return "parallel_planes";
+    case QuadricType::plane:
+      return "plane";
+    case QuadricType::line:
+      return "line";
+    case QuadricType::point:
+      return "point";
+    case QuadricType::empty:
+      return "empty";
+    case QuadricType::entire_space:
+      return "entire_space";
+    case QuadricType::invalid:
+      return "invalid";
   }
   return "unknown";
 }
@@ -363,8 +380,8 @@ namespace detail {
 /// space of A, whether the constant is zero. (Inputs in compute type C, already scaled.)
 template <class T, class C>
 [[nodiscard]] inline QuadricStandardForm<T> quadric_standard_form(const Mat3<C>& a,
-                                                                  const Vec3<C>& b, C c,
-                                                                  int rank, bool has_linear,
+                                                                  const Vec3<C>& b, C c, int rank,
+                                                                  bool has_linear,
                                                                   bool zero_constant) noexcept {
   const auto eig = symmetric_eigen3(a);
   // Order: the `rank` largest |lambda| are the nonzero ones; positives first, then |d| descending.

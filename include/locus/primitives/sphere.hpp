@@ -37,7 +37,8 @@ struct Sphere {
   T radius;
 };
 
-template <class T> using Sphere3 = Sphere<T, 3>;
+template <class T>
+using Sphere3 = Sphere<T, 3>;
 using Sphere3f = Sphere3<float>;
 using Sphere3d = Sphere3<double>;
 
