@@ -124,7 +124,8 @@ TYPED_TEST(AffineTest, Fig3_26SeveralPointsMatchExactSum) {
     std::vector<Vec3<T>> moved(pts);
     for (auto& p : moved) p += shift;
     const auto cm = affine_combination(moved.data(), w.data(), k);
-    EXPECT_TRUE(locus_test::vec_near(cm.point - shift, c.point, tol<T>(T(4 * k + 8), scale + T(200))));
+    EXPECT_TRUE(
+        locus_test::vec_near(cm.point - shift, c.point, tol<T>(T(4 * k + 8), scale + T(200))));
   }
 }
 
@@ -153,7 +154,8 @@ TYPED_TEST(AffineTest, BadWeightsEmptyAndNonFiniteInput) {
   EXPECT_EQ(affine_combination(inf_pts, std::array<T, 2>{T(0), T(1)}).status,
             Status::non_finite_input);
   // A single point with weight 1 is itself.
-  const auto one = affine_combination(std::array<Vec2<T>, 1>{Vec2<T>{3, 4}}, std::array<T, 1>{T(1)});
+  const auto one =
+      affine_combination(std::array<Vec2<T>, 1>{Vec2<T>{3, 4}}, std::array<T, 1>{T(1)});
   EXPECT_EQ(one.status, Status::ok);
   EXPECT_EQ(one.point, (Vec2<T>{3, 4}));
 }

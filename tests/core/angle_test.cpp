@@ -240,8 +240,7 @@ TYPED_TEST(AngleTest, LawOfCosinesAngleMatchesExactOracle) {
     if (!(a > std::abs(b - c) && a < b + c)) continue;
     const long double exact = exact_angle(a, b, c);
     // Kahan's formula has a small relative error in the angle (needle triangles included).
-    EXPECT_NEAR(double(law_of_cosines_angle(a, b, c)), double(exact),
-                double(tol<T>(16, T(exact))));
+    EXPECT_NEAR(double(law_of_cosines_angle(a, b, c)), double(exact), double(tol<T>(16, T(exact))));
   }
   // Flat triangles, violations, bad input.
   EXPECT_EQ(law_of_cosines_angle(T(3), T(1), T(2)), pi_v<T>);
@@ -260,7 +259,8 @@ TYPED_TEST(AngleTest, FigB8B9LawOfSines) {
   for (int k = 0; k < 1000; ++k) {
     const T alpha = rng.uniform<T>(T(0.1), T(1.5)), beta = rng.uniform<T>(T(0.1), T(1.5));
     const T a = rng.uniform<T>(T(0.5), T(5));
-    const long double exact = static_cast<long double>(a) * std::sin(static_cast<long double>(beta)) /
+    const long double exact = static_cast<long double>(a) *
+                              std::sin(static_cast<long double>(beta)) /
                               std::sin(static_cast<long double>(alpha));
     const T b = law_of_sines_side(a, alpha, beta);
     EXPECT_NEAR(double(b), double(exact), double(tol<T>(8, T(exact))));
@@ -318,7 +318,7 @@ TYPED_TEST(AngleTest, SolveSasAsaAasRecoverTheTriangle) {
     const long double la = alpha, lb = beta, lc = c, lg = kPi - la - lb;
     const long double A = lc * std::sin(la) / std::sin(lg), B = lc * std::sin(lb) / std::sin(lg);
     const T kk = T(64) / std::sin(T(lg));  // conditioning of the sine ratio near gamma = 0
-    {  // ASA
+    {                                      // ASA
       const auto s = solve_asa(alpha, c, beta);
       ASSERT_EQ(s.count, 1);
       const auto& t = s.solution[0];

@@ -21,7 +21,8 @@ TYPED_TEST_SUITE(BarycentricTest, locus_test::RealTypes);
 
 namespace {
 
-std::vector<mpq_class> exact_solve(std::vector<std::vector<mpq_class>> m, std::vector<mpq_class> r) {
+std::vector<mpq_class> exact_solve(std::vector<std::vector<mpq_class>> m,
+                                   std::vector<mpq_class> r) {
   const std::size_t n = r.size();
   for (std::size_t c = 0; c < n; ++c) {
     std::size_t p = c;
@@ -46,7 +47,9 @@ std::vector<mpq_class> exact_bary(const Vec<T, N>& p, const std::vector<Vec<T, N
   const std::size_t m = v.size() - 1;
   std::vector<std::vector<mpq_class>> g(m, std::vector<mpq_class>(m));
   std::vector<mpq_class> r(m);
-  auto e = [&](std::size_t i, int k) -> mpq_class { return mpq_class(v[i + 1][k]) - mpq_class(v[0][k]); };
+  auto e = [&](std::size_t i, int k) -> mpq_class {
+    return mpq_class(v[i + 1][k]) - mpq_class(v[0][k]);
+  };
   for (std::size_t i = 0; i < m; ++i) {
     for (std::size_t j = 0; j < m; ++j)
       for (int k = 0; k < N; ++k) g[i][j] += e(i, k) * e(j, k);
@@ -218,7 +221,8 @@ TYPED_TEST(BarycentricTest, Triangle3DProjectsOntoThePlane) {
     // The rebuilt point is p's projection: p minus it is normal to the plane.
     const auto q = from_barycentric(v[0], v[1], v[2], w.w);
     const auto nrm = normalize(cross(v[1] - v[0], v[2] - v[0]));
-    EXPECT_NEAR(double(length(cross(p - q, nrm))), 0.0, double(tol<T>(64)) * k * 10 * weight_scale(e));
+    EXPECT_NEAR(double(length(cross(p - q, nrm))), 0.0,
+                double(tol<T>(64)) * k * 10 * weight_scale(e));
   }
 }
 
@@ -292,8 +296,8 @@ TYPED_TEST(BarycentricTest, DegenerateSimplicesGiveValidFalseAndNoNaN) {
   EXPECT_EQ(c.w[1], T(0));
   EXPECT_NEAR(c.w[2], T(2) / T(3), tol<T>(4));
   // Same in 3D, and a point off the line.
-  const auto c3 = barycentric(Vec3<T>{2, 2, 5}, Vec3<T>{0, 0, 0}, Vec3<T>{3, 3, 0},
-                              Vec3<T>{1, 1, 0});
+  const auto c3 =
+      barycentric(Vec3<T>{2, 2, 5}, Vec3<T>{0, 0, 0}, Vec3<T>{3, 3, 0}, Vec3<T>{1, 1, 0});
   EXPECT_FALSE(c3.valid);
   EXPECT_NEAR(c3.w[0], T(1) / T(3), tol<T>(4));
   EXPECT_NEAR(c3.w[1], T(2) / T(3), tol<T>(4));
@@ -319,13 +323,15 @@ TYPED_TEST(BarycentricTest, DegenerateSimplicesGiveValidFalseAndNoNaN) {
   // Collinear tetrahedron: down to a segment.
   const auto lt = barycentric(Vec3<T>{1, 0, 0}, ta, tb, Vec3<T>{2, 0, 0}, Vec3<T>{3, 0, 0});
   EXPECT_FALSE(lt.valid);
-  EXPECT_TRUE(locus_test::vec_near(from_barycentric(ta, tb, Vec3<T>{2, 0, 0}, Vec3<T>{3, 0, 0}, lt.w),
-                                   Vec3<T>{1, 0, 0}, tol<T>(16, T(4))));
+  EXPECT_TRUE(
+      locus_test::vec_near(from_barycentric(ta, tb, Vec3<T>{2, 0, 0}, Vec3<T>{3, 0, 0}, lt.w),
+                           Vec3<T>{1, 0, 0}, tol<T>(16, T(4))));
   // General simplex with a dependent vertex: valid = false, weights still rebuild p.
   const std::array<Vec3<T>, 4> dep{ta, tb, tc, Vec3<T>{2, 2, 0}};
   const auto gd = barycentric(Vec3<T>{1, 1, 0}, dep);
   EXPECT_FALSE(gd.valid);
-  EXPECT_TRUE(locus_test::vec_near(from_barycentric(dep, gd.w), Vec3<T>{1, 1, 0}, tol<T>(16, T(4))));
+  EXPECT_TRUE(
+      locus_test::vec_near(from_barycentric(dep, gd.w), Vec3<T>{1, 1, 0}, tol<T>(16, T(4))));
 }
 
 TYPED_TEST(BarycentricTest, NonFiniteAndOverflowingInput) {

@@ -57,8 +57,8 @@ template <class T, int M>
   for (int r = 0; r < M; ++r)
     for (int c = 0; c < M; ++c)
       if (!(std::abs(a(r, c) - b(r, c)) <= t))
-        return ::testing::AssertionFailure() << "entry (" << r << "," << c << "): " << a(r, c)
-                                             << " vs " << b(r, c);
+        return ::testing::AssertionFailure()
+               << "entry (" << r << "," << c << "): " << a(r, c) << " vs " << b(r, c);
   return ::testing::AssertionSuccess();
 }
 
@@ -101,14 +101,19 @@ void check_round_trips(Rng& rng) {
   for (int n = 0; n < 500; ++n) {
     const auto f = random_frame<T, N>(rng);
     const auto p = rng.vec<T, N>(-10, 10), v = rng.vec<T, N>(-3, 3);
-    EXPECT_TRUE(locus_test::vec_near(to_world_point(f, to_local_point(f, p)), p, tol<T>(64, T(1000))));
-    EXPECT_TRUE(locus_test::vec_near(to_local_point(f, to_world_point(f, p)), p, tol<T>(64, T(1000))));
-    EXPECT_TRUE(locus_test::vec_near(to_world_vector(f, to_local_vector(f, v)), v, tol<T>(64, T(100))));
+    EXPECT_TRUE(
+        locus_test::vec_near(to_world_point(f, to_local_point(f, p)), p, tol<T>(64, T(1000))));
+    EXPECT_TRUE(
+        locus_test::vec_near(to_local_point(f, to_world_point(f, p)), p, tol<T>(64, T(1000))));
+    EXPECT_TRUE(
+        locus_test::vec_near(to_world_vector(f, to_local_vector(f, v)), v, tol<T>(64, T(100))));
     const auto r = random_rigid_frame<T, N>(rng);
     ASSERT_TRUE(is_orthonormal(r));
     const auto ri = rigid_inverse(r);
-    EXPECT_TRUE(locus_test::vec_near(to_world_point(r, to_world_point(ri, p)), p, tol<T>(16, T(20))));
-    EXPECT_TRUE(locus_test::vec_near(to_world_point(ri, p), to_local_point(r, p), tol<T>(16, T(20))));
+    EXPECT_TRUE(
+        locus_test::vec_near(to_world_point(r, to_world_point(ri, p)), p, tol<T>(16, T(20))));
+    EXPECT_TRUE(
+        locus_test::vec_near(to_world_point(ri, p), to_local_point(r, p), tol<T>(16, T(20))));
     // Rigid frames preserve lengths.
     EXPECT_NEAR(length(to_world_vector(r, v)), length(v), tol<T>(8, T(6)));
   }
@@ -139,7 +144,8 @@ void check_matrix_form(Rng& rng) {
     const auto back = to_frame(m);
     ASSERT_TRUE(back.has_value());
     EXPECT_EQ(back->origin, f.origin);
-    for (std::size_t i = 0; i < static_cast<std::size_t>(N); ++i) EXPECT_EQ(back->axis[i], f.axis[i]);
+    for (std::size_t i = 0; i < static_cast<std::size_t>(N); ++i)
+      EXPECT_EQ(back->axis[i], f.axis[i]);
     // Composition is the matrix product.
     EXPECT_TRUE(mat_near(to_matrix(compose(f, g)), m * to_matrix(g), tol<T>(32, T(200))));
     // Inverse against the (N+1)x(N+1) matrix inverse (a different code path in mat.hpp).
@@ -178,13 +184,17 @@ TYPED_TEST(FrameTest, Fig4_6To4_8ChangeOfFrame) {
     const auto pA = rng.vec<T, 3>(-5, 5);
     const auto pB = to_world_point(AtoB, pA);
     // Figure 4.6: P in A and P in B name the same world point.
-    EXPECT_TRUE(locus_test::vec_near(to_world_point(B, pB), to_world_point(A, pA), tol<T>(256, T(1000))));
-    EXPECT_TRUE(locus_test::vec_near(pB, to_local_point(B, to_world_point(A, pA)), tol<T>(256, T(1000))));
+    EXPECT_TRUE(
+        locus_test::vec_near(to_world_point(B, pB), to_world_point(A, pA), tol<T>(256, T(1000))));
+    EXPECT_TRUE(
+        locus_test::vec_near(pB, to_local_point(B, to_world_point(A, pA)), tol<T>(256, T(1000))));
     // Figure 4.7: A's origin represented in B.
-    EXPECT_TRUE(locus_test::vec_near(AtoB.origin, to_local_point(B, A.origin), tol<T>(256, T(1000))));
+    EXPECT_TRUE(
+        locus_test::vec_near(AtoB.origin, to_local_point(B, A.origin), tol<T>(256, T(1000))));
     // Figure 4.8: A's basis vectors represented in B.
     for (std::size_t i = 0; i < 3; ++i)
-      EXPECT_TRUE(locus_test::vec_near(AtoB.axis[i], to_local_vector(B, A.axis[i]), tol<T>(256, T(100))));
+      EXPECT_TRUE(
+          locus_test::vec_near(AtoB.axis[i], to_local_vector(B, A.axis[i]), tol<T>(256, T(100))));
   }
 }
 
@@ -257,6 +267,12 @@ TYPED_TEST(FrameTest, SingularNonFiniteAndProjectiveInput) {
   m = to_matrix(Frame3<T>::identity());
   m(3, 3) = T(2);
   EXPECT_FALSE(to_frame(m).has_value());
+  // NaN frames propagate NaN through to_world_* (IEEE), never crash.
+  Frame3<T> nan_origin = Frame3<T>::identity();
+  nan_origin.origin.z = std::numeric_limits<T>::quiet_NaN();
+  EXPECT_FALSE(is_finite(to_world_point(nan_origin, Vec3<T>{1, 2, 3})));
+  EXPECT_TRUE(is_finite(to_world_vector(nan_origin, Vec3<T>{1, 2, 3})));
+  EXPECT_FALSE(is_orthonormal(nf));
   // The identity frame.
   const auto id = Frame3<T>::identity();
   EXPECT_TRUE(is_orthonormal(id));

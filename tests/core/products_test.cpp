@@ -114,17 +114,17 @@ TYPED_TEST(ProductsTest, Fig3_15AngleBetweenVectorsSpecialCases) {
   EXPECT_EQ(angle_between(Vec3<T>{0, 0, 0}, Vec3<T>{-1, 0, 0}), T(0));
   EXPECT_EQ(angle_between(Vec2<T>{-1, 0}, Vec2<T>{0, 0}), T(0));
   EXPECT_EQ(angle_between(Vec<T, 5>{}, Vec<T, 5>{}), T(0));
-  EXPECT_TRUE(std::isnan(angle_between(Vec3<T>{std::numeric_limits<T>::quiet_NaN(), 0, 0},
-                                       Vec3<T>{1, 0, 0})));
-  EXPECT_TRUE(std::isnan(angle_between(Vec2<T>{1, 0},
-                                       Vec2<T>{std::numeric_limits<T>::infinity(), 0})));
+  EXPECT_TRUE(std::isnan(
+      angle_between(Vec3<T>{std::numeric_limits<T>::quiet_NaN(), 0, 0}, Vec3<T>{1, 0, 0})));
+  EXPECT_TRUE(
+      std::isnan(angle_between(Vec2<T>{1, 0}, Vec2<T>{std::numeric_limits<T>::infinity(), 0})));
   // Tiny and huge vectors (their dot product under/overflows) keep the right angle.
   const T tiny = std::numeric_limits<T>::denorm_min() * T(64);
   const T huge = std::numeric_limits<T>::max() / T(4);
   EXPECT_NEAR(angle_between(Vec3<T>{tiny, 0, 0}, Vec3<T>{tiny, tiny, 0}), pi_v<T> / T(4),
               tol<T>(4));
-  EXPECT_NEAR(angle_between(Vec3<T>{huge, 0, 0}, Vec3<T>{-huge, huge, 0}),
-              T(3) * pi_v<T> / T(4), tol<T>(4, T(4)));
+  EXPECT_NEAR(angle_between(Vec3<T>{huge, 0, 0}, Vec3<T>{-huge, huge, 0}), T(3) * pi_v<T> / T(4),
+              tol<T>(4, T(4)));
 }
 
 template <class T, int N>
@@ -161,8 +161,8 @@ TYPED_TEST(ProductsTest, Fig4_4SignedAngleFollowsPerpDot) {
   EXPECT_EQ(signed_angle(Vec2<T>{1, 0}, Vec2<T>{-1, 0}), pi_v<T>);
   EXPECT_EQ(signed_angle(Vec2<T>{1, 0}, Vec2<T>{-1, -T(0)}), pi_v<T>);
   EXPECT_EQ(signed_angle(Vec2<T>{0, 0}, Vec2<T>{-1, 0}), T(0));
-  EXPECT_TRUE(std::isnan(signed_angle(Vec2<T>{std::numeric_limits<T>::quiet_NaN(), 0},
-                                      Vec2<T>{1, 0})));
+  EXPECT_TRUE(
+      std::isnan(signed_angle(Vec2<T>{std::numeric_limits<T>::quiet_NaN(), 0}, Vec2<T>{1, 0})));
   Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int n = 0; n < 2000; ++n) {
@@ -223,7 +223,8 @@ TYPED_TEST(ProductsTest, Fig3_29ProjectionAndRejection) {
     }
     EXPECT_NEAR(dot(r, d), T(0), tol<T>(16, lv * length(d)));
     EXPECT_NEAR(length(cross(p, d)), T(0), tol<T>(16, lv * length(d)));
-    const double sp = mpf_class(mpf_class(qdot(v, d), 128) / sqrt(mpf_class(qdot(d, d), 128))).get_d();
+    const double sp =
+        mpf_class(mpf_class(qdot(v, d), 128) / sqrt(mpf_class(qdot(d, d), 128))).get_d();
     EXPECT_NEAR(double(scalar_projection(v, d)), sp, double(tol<T>(8, lv)));
   }
 }

@@ -230,7 +230,11 @@ template <Real T>
     r.status = Status::non_finite_input;
     return r;
   }
-  const Vec3<T> n = normalize(d);
+  // Fast path: one square root when |d|^2 is a normal number; normalize() rescales otherwise.
+  const T s = sqr_length(d);
+  const Vec3<T> n = s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()
+                        ? d / std::sqrt(s)
+                        : normalize(d);
   if (n == Vec3<T>{}) {
     r.status = Status::degenerate_input;
     return r;
