@@ -40,6 +40,7 @@ int gmp_orient(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c) {
 // p on the closed segment [a, b] (exact).
 template <class T>
 bool gmp_on_segment(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
+  if (a == b) return p == a;
   if (gmp_orient(a, b, p) != 0) return false;
   const mpq_class t = (mpq_class(p.x) - a.x) * (mpq_class(b.x) - a.x) + (mpq_class(p.y) - a.y) * (mpq_class(b.y) - a.y);
   const mpq_class len2 = (mpq_class(b.x) - a.x) * (mpq_class(b.x) - a.x) + (mpq_class(b.y) - a.y) * (mpq_class(b.y) - a.y);
@@ -179,7 +180,7 @@ std::vector<Vec2<T>> random_polygon(Rng& rng, int kind) {
     }
     default: {  // star-shaped (simple) around the origin, sometimes with one vertex moved
       v = star_polygon<T>(rng, n + 2, T(0.3), T(1));
-      if (rng.uniform_int(0, 1) && v.size() >= 3) v[rng.uniform_int(0, int(v.size()) - 1)] = rng.vec<T, 2>(-1, 1);
+      if (rng.uniform_int(0, 1) && v.size() >= 3) v[static_cast<std::size_t>(rng.uniform_int(0, int(v.size()) - 1))] = rng.vec<T, 2>(-1, 1);
       break;
     }
   }
@@ -338,7 +339,7 @@ TYPED_TEST(PolygonTest, ConvexityMatchesBruteForceHullCheck) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int convex = 0, nonconvex = 0;
-  for (int it = 0; it < 6000; ++it) {
+  for (int it = 0; it < 4000; ++it) {
     std::vector<Vec2<T>> v;
     const int kind = it % 6;
     if (kind <= 2) {
@@ -447,6 +448,27 @@ TYPED_TEST(PolygonTest, MonotonePolygonMatchesBruteForce) {
   EXPECT_GT(nonmono, 500);
 }
 
+// The exact closed-segment test against GMP on grid segments (touching, collinear overlap,
+// degenerate point segments) and random ones.
+TYPED_TEST(PolygonTest, SegmentsIntersectExactMatchesGmp) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  int meet = 0, apart = 0;
+  for (int it = 0; it < 20000; ++it) {
+    Vec2<T> p[4];
+    for (auto& q : p) {
+      q = it % 2 ? rng.vec<T, 2>(-1, 1) : Vec2<T>{T(rng.uniform_int(0, 3)), T(rng.uniform_int(0, 3))};
+    }
+    const bool expect = gmp_segments_meet(p[0], p[1], p[2], p[3]);
+    EXPECT_EQ(segments_intersect_exact(p[0], p[1], p[2], p[3]), expect) << p[0].x << "," << p[0].y << " " << p[1].x << "," << p[1].y << " " << p[2].x << "," << p[2].y << " " << p[3].x << "," << p[3].y;
+    EXPECT_EQ(segments_intersect_exact(p[3], p[2], p[1], p[0]), expect);
+    (expect ? meet : apart)++;
+  }
+  EXPECT_GT(meet, 3000);
+  EXPECT_GT(apart, 3000);
+}
+
 // ---- degenerate input, holes ---------------------------------------------------------------
 
 TYPED_TEST(PolygonTest, DegeneratePolygons) {
@@ -471,6 +493,9 @@ TYPED_TEST(PolygonTest, DegeneratePolygons) {
   EXPECT_EQ(polygon_orientation<T>(bad), Sign::zero);
   EXPECT_FALSE(polygon_is_monotone<T>(bad, Vec2<T>{T(1), T(0)}));
   EXPECT_FALSE(polygon_is_monotone<T>(std::vector<Vec2<T>>{{T(0), T(0)}, {T(1), T(0)}, {T(0), T(1)}}, Vec2<T>{}));
+  // A spike at the lowest-leftmost vertex: orientation is undefined there (zero).
+  const std::vector<Vec2<T>> spike{{T(0), T(0)}, {T(3), T(0)}, {T(1), T(0)}, {T(1), T(2)}, {T(2), T(0)}};
+  EXPECT_EQ(polygon_orientation<T>(spike), Sign::zero);
   // A closed ring with the first vertex repeated at the end is the same polygon.
   const std::vector<Vec2<T>> ring{{T(0), T(0)}, {T(2), T(0)}, {T(2), T(2)}, {T(0), T(2)}, {T(0), T(0)}};
   EXPECT_TRUE(polygon_is_simple<T>(ring));

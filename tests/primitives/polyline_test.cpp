@@ -146,7 +146,7 @@ TYPED_TEST(PolylineTest, MonotoneChainMatchesExactProjections) {
     }
     int dir = 0;
     bool is_mono = true, is_strict = true;
-    for (int i = 1; i < n; ++i) {
+    for (std::size_t i = 1; i < v.size(); ++i) {
       const mpq_class proj = (mpq_class(v[i].x) - v[i - 1].x) * d.x + (mpq_class(v[i].y) - v[i - 1].y) * d.y;
       const int s = sgn(proj);
       if (s == 0) { is_strict = false; continue; }

@@ -5,6 +5,7 @@
 #include "support/typed.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 
@@ -57,7 +58,7 @@ TYPED_TEST(RectangleTest, Fig5_7_SymmetricFormCornersAndArea) {
   EXPECT_EQ(point_at(r, Vec2<T>{T(3), T(1)}), c[2]);
   // Right-handed axes: corners are counter-clockwise (positive shoelace sum).
   T twice = T(0);
-  for (int i = 0; i < 4; ++i) twice += perp_dot(c[i], c[(i + 1) % 4]);
+  for (std::size_t i = 0; i < 4; ++i) twice += perp_dot(c[i], c[(i + 1) % 4]);
   EXPECT_EQ(twice, T(24));
   EXPECT_TRUE(is_orthonormal(r));
 }
@@ -81,7 +82,7 @@ TYPED_TEST(RectangleTest, FormConversionsRoundTrip2DAnd3D) {
     const Vec2<T> uv{(s / r.extent[0] + T(1)) / T(2), (t / r.extent[1] + T(1)) / T(2)};
     EXPECT_TRUE(locus_test::vec_near(point_at(r, Vec2<T>{s, t}), point_at(c, uv), tol<T>(64, T(8))));
     const auto cr = corners(r), cc = corners(c);
-    for (int i = 0; i < 4; ++i) EXPECT_TRUE(locus_test::vec_near(cr[i], cc[i], tol<T>(32, T(8))));
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_TRUE(locus_test::vec_near(cr[i], cc[i], tol<T>(32, T(8))));
   }
   // A rectangle embedded in 3D.
   for (int k = 0; k < 500; ++k) {
