@@ -25,9 +25,9 @@
 //     as given. Every loop has an iteration budget (Status::limit_exceeded if ever exhausted;
 //     the root is then the midpoint of the remaining bracket).
 //  4. Multiple roots: at a critical point c that is a root of p' of multiplicity k, when |p(c)|
-//     is within the evaluation-noise level gamma_{2n+1} * sum |a_i| |c|^i (or within the caller's
-//     RootOptions::multiplicity_tolerance times that sum, whichever is larger), c is reported as
-//     a root of multiplicity k + 1. This is how double and triple roots are never lost to a
+//     is within the evaluation-noise level gamma_{2n+1} * sum |a_i| |c|^i (plus the caller's
+//     tolerances, see RootOptions), c is reported as a root of multiplicity k + 1 (consecutive
+//     touching critical points form one cluster root), polished as a simple root of p^(k). This is how double and triple roots are never lost to a
 //     rounded discriminant, and what "multiplicity" means in floating point: the returned
 //     multiple root is an exact multiple root of a polynomial within that relative coefficient
 //     perturbation. Consequently roots closer than about sqrt(noise) are reported as ONE root
@@ -49,6 +49,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <type_traits>
 #include <vector>
 
@@ -61,12 +62,17 @@ struct Root {
   int multiplicity;
 };
 
-/// Options of the root finders. multiplicity_tolerance is relative to sum |a_i| |x|^i: a local
-/// extremum of p whose value is within it counts as touching zero (a multiple root). The default
-/// 0 means "the evaluation-noise level of compute_t<T>"; raise it for coefficients that carry
-/// their own errors (e.g. 1e-10 for data computed in double from measured input).
+/// Options of the root finders: how far from zero a local extremum of p may be and still count
+/// as touching zero (a multiple root). The tolerance at x is the sum of
+///  * the evaluation noise of compute_t<T> (always), gamma_{2n+1} sum |a_i| |x|^i;
+///  * multiplicity_tolerance * sum |a_i| |x|^i (relative; default 0);
+///  * sum coefficient_error[i] |x|^i, when the caller knows absolute error bounds of the
+///    coefficients (e.g. coefficients computed from other data; entries beyond the span are 0).
+/// Raise them for coefficients that carry their own errors, so that a tangency computed from
+/// rounded data is reported as a double root rather than as two close roots or none.
 struct RootOptions {
   double multiplicity_tolerance = 0.0;
+  std::span<const double> coefficient_error{};
 };
 
 /// Roots of a polynomial of degree <= 4: no allocation.
@@ -254,7 +260,8 @@ inline double polish_simple(const double* d, int n, double x) noexcept {
 /// the (M-1)-th derivative, which is deeper in the chain (deriv_of(M - 1)).
 template <class DerivOf>
 inline int roots_from_critical(const double* q, int m, const R* crit, int nc, R* out,
-                               double rtol, bool polish, DerivOf deriv_of, bool& budget_hit) noexcept {
+                               const double* eq, double rtol, bool polish, DerivOf deriv_of,
+                               bool& budget_hit) noexcept {
   // Starting points: for a quadratic the closed form (cancellation-free), else midpoints.
   double seeds[2] = {std::numeric_limits<double>::quiet_NaN(),
                      std::numeric_limits<double>::quiet_NaN()};
@@ -305,7 +312,12 @@ inline int roots_from_critical(const double* q, int m, const R* crit, int nc, R*
       x = crit[i].x;
       const Eval e = horner(q, m, x);
       const double noise = gamma(2 * m + 1) * e.abs_sum;
-      const double tol = noise > rtol * e.abs_sum ? noise : rtol * e.abs_sum;
+      double tol = noise > rtol * e.abs_sum ? noise : rtol * e.abs_sum;
+      if (eq) {
+        double es = 0.0;
+        for (int t = m; t >= 0; --t) es = es * std::abs(x) + eq[t];
+        tol += es;
+      }
       v = e.v;
       s = std::abs(e.v) <= tol ? 0 : sgn(e.v);
     } else {
@@ -336,16 +348,16 @@ inline int roots_from_critical(const double* q, int m, const R* crit, int nc, R*
   return count;
 }
 
-/// Work space sizes for degree n.
+/// Work space size for degree n (the derivative chains of p and of its coefficient errors).
 inline constexpr std::size_t work_doubles(int n) noexcept {
-  return static_cast<std::size_t>((n + 1) * (n + 2) / 2);
+  return static_cast<std::size_t>((n + 1) * (n + 2));
 }
 
 /// Distinct real roots of a[0..n] (finite, a[n] != 0 not required: exact zeros are trimmed).
 /// work: work_doubles(n) doubles; r1, r2: n entries each. Returns the number of roots, written
 /// to r1 in increasing order. Roots that overflow double are dropped.
-inline int real_roots_engine(const double* a_in, int n, double* work, R* r1, R* r2, double rtol,
-                             bool& budget_hit) noexcept {
+inline int real_roots_engine(const double* a_in, const double* err_in, int n, double* work, R* r1,
+                             R* r2, double rtol, bool& budget_hit) noexcept {
   while (n >= 0 && a_in[n] == 0.0) --n;
   if (n <= 0) return 0;
   int z = 0;  // multiplicity of the root 0
@@ -372,12 +384,18 @@ inline int real_roots_engine(const double* a_in, int n, double* work, R* r1, R* 
     if (a[i] != 0.0 && std::ilogb(a[i]) + i * k > big) big = std::ilogb(a[i]) + i * k;
   double* q = work;  // level 0: the scaled polynomial, then its derivatives
   for (int i = 0; i <= m; ++i) q[i] = a[i] == 0.0 ? 0.0 : std::ldexp(a[i], i * k - big);
-  // Derivative chain: level j (the j-th derivative, degree m - j) starts at offset(j).
+  // Derivative chain: level j (the j-th derivative, degree m - j) starts at offset(j); the
+  // coefficient error bounds, scaled alike, follow the same chain in the second half.
   const auto offset = [m](int j) { return static_cast<std::size_t>(j * (m + 1) - j * (j - 1) / 2); };
+  double* err = err_in ? work + work_doubles(n) / 2 : nullptr;
+  if (err)
+    for (int i = 0; i <= m; ++i) err[i] = err_in[z + i] == 0.0 ? 0.0 : std::ldexp(std::abs(err_in[z + i]), i * k - big);
   for (int j = 1; j < m; ++j) {
     const double* prev = work + offset(j - 1);
     double* lj = work + offset(j);
     for (int i = 0; i <= m - j; ++i) lj[i] = prev[i + 1] * static_cast<double>(i + 1);
+    if (err)
+      for (int i = 0; i <= m - j; ++i) err[offset(j) + static_cast<std::size_t>(i)] = err[offset(j - 1) + static_cast<std::size_t>(i) + 1] * static_cast<double>(i + 1);
   }
   // The last level is linear; climb back up, each level's roots being the next one's critical
   // points.
@@ -388,7 +406,7 @@ inline int real_roots_engine(const double* a_in, int n, double* work, R* r1, R* 
   int nc = 1;
   for (int j = m - 2; j >= 0; --j) {
     nc = roots_from_critical(
-        work + offset(j), m - j, cur, nc, nxt, rtol, j == 0,
+        work + offset(j), m - j, cur, nc, nxt, err ? err + offset(j) : nullptr, rtol, j == 0,
         [&](int order) -> const double* { return work + offset(j + order); }, budget_hit);
     R* t = cur;
     cur = nxt;
@@ -422,17 +440,24 @@ RootsResult<T> solve_fixed(const std::array<T, N>& c, const RootOptions& opt) no
     }
     if (v != T(0)) all_zero = false;
   }
+  for (const double e : opt.coefficient_error)
+    if (!locus::is_finite(e)) {
+      res.status = Status::non_finite_input;
+      return res;
+    }
   if (all_zero) {
     res.status = Status::degenerate_input;
     return res;
   }
   constexpr int n = static_cast<int>(N) - 1;
-  double a[N];
+  double a[N], err[N] = {};
   for (std::size_t i = 0; i < N; ++i) a[i] = static_cast<double>(c[i]);
+  for (std::size_t i = 0; i < N && i < opt.coefficient_error.size(); ++i) err[i] = opt.coefficient_error[i];
   double work[work_doubles(n)];
   R r1[n > 0 ? n : 1], r2[n > 0 ? n : 1];
   bool budget_hit = false;
-  const int cnt = real_roots_engine(a, n, work, r1, r2, opt.multiplicity_tolerance, budget_hit);
+  const int cnt = real_roots_engine(a, opt.coefficient_error.empty() ? nullptr : err, n, work, r1, r2,
+                                    opt.multiplicity_tolerance, budget_hit);
   for (int i = 0; i < cnt; ++i) {
     const T x = static_cast<T>(r1[i].x);
     if (!locus::is_finite(x)) continue;
@@ -490,7 +515,9 @@ template <Real T>
                                             T b = std::numeric_limits<T>::infinity(),
                                             const RootOptions& opt = {}) {
   RealRootsResult<T> res;
-  if (!is_finite(p)) {
+  bool finite = is_finite(p);
+  for (const double e : opt.coefficient_error) finite = finite && locus::is_finite(e);
+  if (!finite) {
     res.status = Status::non_finite_input;
     return res;
   }
@@ -502,10 +529,13 @@ template <Real T>
   if (n == 0) return res;
   std::vector<double> c(static_cast<std::size_t>(n) + 1);
   for (int i = 0; i <= n; ++i) c[static_cast<std::size_t>(i)] = static_cast<double>(p[i]);
+  std::vector<double> err(static_cast<std::size_t>(n) + 1, 0.0);
+  for (std::size_t i = 0; i < err.size() && i < opt.coefficient_error.size(); ++i) err[i] = opt.coefficient_error[i];
   std::vector<double> work(detail::roots::work_doubles(n));
   std::vector<detail::roots::R> r1(static_cast<std::size_t>(n)), r2(static_cast<std::size_t>(n));
   bool budget_hit = false;
-  const int cnt = detail::roots::real_roots_engine(c.data(), n, work.data(), r1.data(), r2.data(),
+  const int cnt = detail::roots::real_roots_engine(c.data(), opt.coefficient_error.empty() ? nullptr : err.data(), n,
+                                                   work.data(), r1.data(), r2.data(),
                                                    opt.multiplicity_tolerance, budget_hit);
   for (int i = 0; i < cnt; ++i) {
     const T x = static_cast<T>(r1[static_cast<std::size_t>(i)].x);
