@@ -47,15 +47,18 @@ TYPED_TEST(ArcTest, DirectionTestAgreesWithAngleTest) {
     T sweep = rng.uniform<T>(0, T(2) * pi_v<T>);
     if (k % 10 == 0) sweep = pi_v<T>;
     if (k % 10 == 1) sweep = T(2) * pi_v<T>;
-    const Arc2<T> arc{{rng.vec<T, 2>(-3, 3), rng.uniform<T>(T(0.5), 2)}, rng.uniform<T>(-10, 10), sweep};
+    const Arc2<T> arc{
+        {rng.vec<T, 2>(-3, 3), rng.uniform<T>(T(0.5), 2)}, rng.uniform<T>(-10, 10), sweep};
     const T ang = rng.uniform<T>(-10, 10);
-    const Vec2<T> p = arc.circle.center + rng.uniform<T>(T(0.1), 3) * Vec2<T>{std::cos(ang), std::sin(ang)};
+    const Vec2<T> p =
+        arc.circle.center + rng.uniform<T>(T(0.1), 3) * Vec2<T>{std::cos(ang), std::sin(ang)};
     // Skip directions within 1e-3 rad of an end ray, where both tests round differently.
     const auto near_angle = [&](T x, T y) {
       T d = std::fmod(std::abs(x - y), T(2) * pi_v<T>);
       return std::min(d, T(2) * pi_v<T> - d) < T(1e-3);
     };
-    if (sweep < T(2) * pi_v<T> && (near_angle(ang, arc.start) || near_angle(ang, end_angle(arc)))) continue;
+    if (sweep < T(2) * pi_v<T> && (near_angle(ang, arc.start) || near_angle(ang, end_angle(arc))))
+      continue;
     const bool a = contains_angle(arc, ang), d = contains_direction(arc, p);
     EXPECT_EQ(a, d) << "start " << arc.start << " sweep " << sweep << " angle " << ang;
     (a ? inside : outside)++;

@@ -53,7 +53,8 @@ TYPED_TEST(CircleTest, Circle3AndDisk3InTheirPlane) {
   SCOPED_TRACE(rng.trace());
   for (int k = 0; k < 2000; ++k) {
     Vec3<T> n = rng.unit<T, 3>() * rng.uniform<T>(T(0.01), 100);
-    if (k < 6) n = (k % 2 ? T(-1) : T(1)) * unit_vec<T, 3>(k / 2);  // the axis directions, both signs
+    if (k < 6)
+      n = (k % 2 ? T(-1) : T(1)) * unit_vec<T, 3>(k / 2);  // the axis directions, both signs
     const Circle3<T> c{rng.vec<T, 3>(-5, 5), n, rng.uniform<T>(T(0.1), 3)};
     const CircleAxes<T> ax = in_plane_axes(c);
     const Vec3<T> un = normalize(n);

@@ -19,14 +19,17 @@ class EllipseTest : public ::testing::Test {};
 TYPED_TEST_SUITE(EllipseTest, locus_test::RealTypes);
 
 static_assert(std::is_aggregate_v<Ellipse2d> && std::is_trivially_copyable_v<Ellipse2f>);
-static_assert(std::is_aggregate_v<ImplicitEllipse2<double>> && std::is_aggregate_v<EllipseArc2<float>>);
+static_assert(std::is_aggregate_v<ImplicitEllipse2<double>> &&
+              std::is_aggregate_v<EllipseArc2<float>>);
 
 namespace {
 template <class T>
 Ellipse2<T> random_ellipse(Rng& rng, T min_extent = T(0.2)) {
   const T ang = rng.uniform<T>(-4, 4);
   const Vec2<T> u{std::cos(ang), std::sin(ang)};
-  return {rng.vec<T, 2>(-5, 5), {u, perp(u)}, {rng.uniform<T>(min_extent, 4), rng.uniform<T>(min_extent, 4)}};
+  return {rng.vec<T, 2>(-5, 5),
+          {u, perp(u)},
+          {rng.uniform<T>(min_extent, 4), rng.uniform<T>(min_extent, 4)}};
 }
 
 // Independent oracle: the perimeter as the integral of |d/da point_at| over a full period by the
@@ -48,8 +51,10 @@ TYPED_TEST(EllipseTest, Fig5_16_AxisAndMatrixFormsDescribeTheSameCurve) {
   using T = TypeParam;
   const T r = T(1) / std::sqrt(T(2));
   const Ellipse2<T> e{{T(1), T(2)}, {{r, r}, {-r, r}}, {T(3), T(1)}};
-  EXPECT_TRUE(locus_test::vec_near(point_at(e, T(0)), Vec2<T>{T(1) + T(3) * r, T(2) + T(3) * r}, tol<T>(8, T(4))));
-  EXPECT_TRUE(locus_test::vec_near(point_at(e, pi_v<T> / 2), Vec2<T>{T(1) - r, T(2) + r}, tol<T>(8, T(4))));
+  EXPECT_TRUE(locus_test::vec_near(point_at(e, T(0)), Vec2<T>{T(1) + T(3) * r, T(2) + T(3) * r},
+                                   tol<T>(8, T(4))));
+  EXPECT_TRUE(
+      locus_test::vec_near(point_at(e, pi_v<T> / 2), Vec2<T>{T(1) - r, T(2) + r}, tol<T>(8, T(4))));
   const ImplicitEllipse2<T> im = to_implicit(e);
   EXPECT_NEAR(im.m(0, 1), im.m(1, 0), tol<T>(2));
   Rng rng;
@@ -120,7 +125,8 @@ TYPED_TEST(EllipseTest, PerimeterAgainstQuadratureAndRamanujan) {
     const long double ratio = std::max(a, b) / std::min(a, b);
     const long double ref = perimeter_by_quadrature(a, b, static_cast<int>(60 * ratio) + 64);
     const T p = perimeter(e);
-    EXPECT_LE(std::abs(static_cast<long double>(p) - ref), static_cast<long double>(tol<T>(32)) * ref)
+    EXPECT_LE(std::abs(static_cast<long double>(p) - ref),
+              static_cast<long double>(tol<T>(32)) * ref)
         << "a " << double(a) << " b " << double(b);
     const T pr = perimeter_ramanujan(e);
     const long double h = ((a - b) / (a + b)) * ((a - b) / (a + b));
@@ -143,10 +149,13 @@ TYPED_TEST(EllipseTest, DegenerateAndNonDefiniteInput) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN();
   // Indefinite (a hyperbola's matrix), semidefinite (parallel lines), zero, NaN: no ellipse.
-  EXPECT_FALSE(to_axes(ImplicitEllipse2<T>{{T(0), T(0)}, Mat2<T>::diagonal({T(1), T(-1)})}).has_value());
-  EXPECT_FALSE(to_axes(ImplicitEllipse2<T>{{T(0), T(0)}, Mat2<T>::diagonal({T(1), T(0)})}).has_value());
+  EXPECT_FALSE(
+      to_axes(ImplicitEllipse2<T>{{T(0), T(0)}, Mat2<T>::diagonal({T(1), T(-1)})}).has_value());
+  EXPECT_FALSE(
+      to_axes(ImplicitEllipse2<T>{{T(0), T(0)}, Mat2<T>::diagonal({T(1), T(0)})}).has_value());
   EXPECT_FALSE(to_axes(ImplicitEllipse2<T>{{T(0), T(0)}, Mat2<T>{}}).has_value());
-  EXPECT_FALSE(to_axes(ImplicitEllipse2<T>{{T(0), T(0)}, Mat2<T>::diagonal({nan, T(1)})}).has_value());
+  EXPECT_FALSE(
+      to_axes(ImplicitEllipse2<T>{{T(0), T(0)}, Mat2<T>::diagonal({nan, T(1)})}).has_value());
   EXPECT_FALSE(to_axes(ImplicitEllipse2<T>{{nan, T(0)}, Mat2<T>::identity()}).has_value());
   // [[1, 2], [2, 1]] has eigenvalues 3 and -1.
   const Mat2<T> ind{{{T(1), T(2)}, {T(2), T(1)}}};

@@ -41,7 +41,7 @@ TYPED_TEST(LineTest, Fig5_2_ImplicitFormSidesAndConversion) {
   ASSERT_TRUE(imp.has_value());
   EXPECT_EQ(imp->normal, (Vec2<T>{T(0), T(1)}));
   EXPECT_EQ(imp->c, T(-1));
-  EXPECT_GT(evaluate(*imp, Vec2<T>{T(5), T(3)}), T(0));   // left of +x is +y
+  EXPECT_GT(evaluate(*imp, Vec2<T>{T(5), T(3)}), T(0));  // left of +x is +y
   EXPECT_LT(evaluate(*imp, Vec2<T>{T(-5), T(0)}), T(0));
   EXPECT_EQ(evaluate(*imp, Vec2<T>{T(-7), T(1)}), T(0));
   // Implicit 3x + 4y - 10 = 0: the closest point to the origin is (6/5, 8/5), distance 2.
@@ -73,7 +73,8 @@ TYPED_TEST(LineTest, ImplicitSignMatchesExactOrientationOnIntegers) {
       continue;
     }
     ASSERT_TRUE(imp.has_value());
-    const mpq_class det = mpq_class(d.x) * (mpq_class(p.y) - o.y) - mpq_class(d.y) * (mpq_class(p.x) - o.x);
+    const mpq_class det =
+        mpq_class(d.x) * (mpq_class(p.y) - o.y) - mpq_class(d.y) * (mpq_class(p.x) - o.x);
     const T v = evaluate(*imp, p);
     EXPECT_EQ(sgn(det), (v > T(0)) - (v < T(0)));
   }
@@ -99,7 +100,8 @@ TYPED_TEST(LineTest, ConversionRoundTripKeepsThePointSet) {
     EXPECT_EQ(perp(back->direction), imp->normal);
     EXPECT_EQ(back->direction, line.direction);
     // The origin of the parametric form is the foot of the perpendicular from (0, 0).
-    EXPECT_NEAR(dot(back->origin, back->direction), T(0), tol<T>(64, T(10) * length(line.direction)));
+    EXPECT_NEAR(dot(back->origin, back->direction), T(0),
+                tol<T>(64, T(10) * length(line.direction)));
     const auto nl = normalized(line);
     ASSERT_TRUE(nl.has_value());
     EXPECT_NEAR(length(nl->direction), T(1), tol<T>(4));

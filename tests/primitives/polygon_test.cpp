@@ -42,16 +42,20 @@ template <class T>
 bool gmp_on_segment(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
   if (a == b) return p == a;
   if (gmp_orient(a, b, p) != 0) return false;
-  const mpq_class t = (mpq_class(p.x) - a.x) * (mpq_class(b.x) - a.x) + (mpq_class(p.y) - a.y) * (mpq_class(b.y) - a.y);
-  const mpq_class len2 = (mpq_class(b.x) - a.x) * (mpq_class(b.x) - a.x) + (mpq_class(b.y) - a.y) * (mpq_class(b.y) - a.y);
+  const mpq_class t = (mpq_class(p.x) - a.x) * (mpq_class(b.x) - a.x) +
+                      (mpq_class(p.y) - a.y) * (mpq_class(b.y) - a.y);
+  const mpq_class len2 = (mpq_class(b.x) - a.x) * (mpq_class(b.x) - a.x) +
+                         (mpq_class(b.y) - a.y) * (mpq_class(b.y) - a.y);
   return t >= 0 && t <= len2;
 }
 
 template <class T>
 bool gmp_segments_meet(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c, const Vec2<T>& d) {
-  const int o1 = gmp_orient(a, b, c), o2 = gmp_orient(a, b, d), o3 = gmp_orient(c, d, a), o4 = gmp_orient(c, d, b);
+  const int o1 = gmp_orient(a, b, c), o2 = gmp_orient(a, b, d), o3 = gmp_orient(c, d, a),
+            o4 = gmp_orient(c, d, b);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return gmp_on_segment(a, b, c) || gmp_on_segment(a, b, d) || gmp_on_segment(c, d, a) || gmp_on_segment(c, d, b);
+  return gmp_on_segment(a, b, c) || gmp_on_segment(a, b, d) || gmp_on_segment(c, d, a) ||
+         gmp_on_segment(c, d, b);
 }
 
 template <class T>
@@ -78,7 +82,8 @@ bool brute_simple(const std::vector<Vec2<T>>& raw) {
         const Vec2<T>& s = adj_ij ? b : a;
         const Vec2<T>& e_far = adj_ij ? a : b;  // far end of edge i
         const Vec2<T>& f_far = adj_ij ? d : c;  // far end of edge j
-        if ((gmp_on_segment(s, e_far, f_far) && !(f_far == s)) || (gmp_on_segment(s, f_far, e_far) && !(e_far == s)))
+        if ((gmp_on_segment(s, e_far, f_far) && !(f_far == s)) ||
+            (gmp_on_segment(s, f_far, e_far) && !(e_far == s)))
           return false;
         if (adj_ij && adj_ji && m == 2) return false;
         continue;
@@ -101,8 +106,10 @@ bool brute_convex(const std::vector<Vec2<T>>& raw) {
     for (std::size_t k = 0; k < m; ++k) {
       const int s = gmp_orient(v[i], v[(i + 1) % m], v[k]);
       if (s == 0) continue;
-      if (side == 0) side = s;
-      else if (s != side) return false;
+      if (side == 0)
+        side = s;
+      else if (s != side)
+        return false;
     }
   return side != 0;
 }
@@ -150,7 +157,8 @@ std::vector<Vec2<T>> star_polygon(Rng& rng, int n, T r_min, T r_max) {
   // inside every fan triangle (origin, v_i, v_i+1): star-shaped with the origin in the kernel,
   // hence simple and counter-clockwise.
   std::vector<T> ang;
-  for (int i = 0; i < n; ++i) ang.push_back((T(i) + T(0.45) * rng.uniform<T>(0, 1)) * T(2) * pi_v<T> / T(n));
+  for (int i = 0; i < n; ++i)
+    ang.push_back((T(i) + T(0.45) * rng.uniform<T>(0, 1)) * T(2) * pi_v<T> / T(n));
   std::vector<Vec2<T>> v;
   for (T a : ang) {
     const T r = rng.uniform<T>(r_min, r_max);
@@ -169,7 +177,8 @@ std::vector<Vec2<T>> random_polygon(Rng& rng, int kind) {
       break;
     }
     case 1: {  // the same grid mapped by a rounded affine map (exact predicates still decide)
-      const T s = rng.uniform<T>(T(0.05), T(3)), ox = rng.uniform<T>(-5, 5), oy = rng.uniform<T>(-5, 5);
+      const T s = rng.uniform<T>(T(0.05), T(3)), ox = rng.uniform<T>(-5, 5),
+              oy = rng.uniform<T>(-5, 5);
       for (int i = 0; i < n; ++i)
         v.push_back({T(rng.uniform_int(0, 4)) * s + ox, T(rng.uniform_int(0, 4)) * s + oy});
       break;
@@ -180,7 +189,8 @@ std::vector<Vec2<T>> random_polygon(Rng& rng, int kind) {
     }
     default: {  // star-shaped (simple) around the origin, sometimes with one vertex moved
       v = star_polygon<T>(rng, n + 2, T(0.3), T(1));
-      if (rng.uniform_int(0, 1) && v.size() >= 3) v[static_cast<std::size_t>(rng.uniform_int(0, int(v.size()) - 1))] = rng.vec<T, 2>(-1, 1);
+      if (rng.uniform_int(0, 1) && v.size() >= 3)
+        v[static_cast<std::size_t>(rng.uniform_int(0, int(v.size()) - 1))] = rng.vec<T, 2>(-1, 1);
       break;
     }
   }
@@ -209,7 +219,8 @@ TYPED_TEST(PolygonTest, Fig5_9_SimpleConcaveAndConvex) {
   EXPECT_EQ(orientation(cw), Sign::negative);
   EXPECT_EQ(signed_area(cw), -signed_area(convex));
   // Collinear consecutive vertices keep it (weakly) convex; a duplicate vertex changes nothing.
-  Polygon2<T> with_mid{{{T(0), T(0)}, {T(2), T(0)}, {T(4), T(0)}, {T(4), T(4)}, {T(4), T(4)}, {T(0), T(4)}}};
+  Polygon2<T> with_mid{
+      {{T(0), T(0)}, {T(2), T(0)}, {T(4), T(0)}, {T(4), T(4)}, {T(4), T(4)}, {T(0), T(4)}}};
   EXPECT_TRUE(is_convex(with_mid));
   EXPECT_TRUE(is_simple(with_mid));
   EXPECT_EQ(area(with_mid), T(16));
@@ -227,7 +238,8 @@ TYPED_TEST(PolygonTest, Fig5_10_NonsimplePolygons) {
   EXPECT_EQ(x->second, 2u);
   EXPECT_FALSE(is_convex(bowtie));
   // Two triangles sharing the vertex (2, 1).
-  const Polygon2<T> touching{{{T(0), T(0)}, {T(2), T(1)}, {T(4), T(0)}, {T(4), T(2)}, {T(2), T(1)}, {T(0), T(2)}}};
+  const Polygon2<T> touching{
+      {{T(0), T(0)}, {T(2), T(1)}, {T(4), T(0)}, {T(4), T(2)}, {T(2), T(1)}, {T(0), T(2)}}};
   EXPECT_FALSE(is_simple(touching));
   const auto y = self_intersection(touching);
   ASSERT_TRUE(y.has_value());
@@ -251,7 +263,8 @@ TYPED_TEST(PolygonTest, Fig5_10_NonsimplePolygons) {
   EXPECT_FALSE(polygon_is_convex<T>(twice));
   EXPECT_FALSE(polygon_is_simple<T>(twice));
   // A spike (collinear fold-back) is neither simple nor convex.
-  const std::vector<Vec2<T>> spike{{T(0), T(0)}, {T(2), T(0)}, {T(3), T(0)}, {T(1), T(0)}, {T(1), T(2)}};
+  const std::vector<Vec2<T>> spike{
+      {T(0), T(0)}, {T(2), T(0)}, {T(3), T(0)}, {T(1), T(0)}, {T(1), T(2)}};
   EXPECT_FALSE(polygon_is_simple<T>(spike));
   EXPECT_FALSE(polygon_is_convex<T>(spike));
 }
@@ -261,8 +274,15 @@ TYPED_TEST(PolygonTest, Fig5_10_NonsimplePolygons) {
 TYPED_TEST(PolygonTest, Fig5_12_MonotonePolygon) {
   using T = TypeParam;
   const Vec2<T> x{T(1), T(0)};
-  const Polygon2<T> mono{{{T(0), T(1)}, {T(2), T(0)}, {T(3), T(1)}, {T(5), T(0)}, {T(7), T(2)},
-                          {T(5), T(4)}, {T(4), T(3)}, {T(2), T(4)}, {T(1), T(3)}}};
+  const Polygon2<T> mono{{{T(0), T(1)},
+                          {T(2), T(0)},
+                          {T(3), T(1)},
+                          {T(5), T(0)},
+                          {T(7), T(2)},
+                          {T(5), T(4)},
+                          {T(4), T(3)},
+                          {T(2), T(4)},
+                          {T(1), T(3)}}};
   const MonotoneSplit s = monotone_split(mono, x);
   EXPECT_TRUE(s.monotone);
   EXPECT_EQ(s.min_vertex, 0u);
@@ -272,13 +292,26 @@ TYPED_TEST(PolygonTest, Fig5_12_MonotonePolygon) {
   // With a vertical edge at the left (a plateau of the projection) it is still monotone.
   const Polygon2<T> plateau{{{T(0), T(0)}, {T(3), T(1)}, {T(6), T(0)}, {T(6), T(3)}, {T(0), T(3)}}};
   EXPECT_TRUE(is_monotone(plateau, x));
-  const Polygon2<T> comb{{{T(0), T(0)}, {T(6), T(0)}, {T(6), T(3)}, {T(5), T(1)}, {T(4), T(3)},
-                          {T(3), T(1)}, {T(2), T(3)}, {T(1), T(1)}, {T(0), T(3)}}};
+  const Polygon2<T> comb{{{T(0), T(0)},
+                          {T(6), T(0)},
+                          {T(6), T(3)},
+                          {T(5), T(1)},
+                          {T(4), T(3)},
+                          {T(3), T(1)},
+                          {T(2), T(3)},
+                          {T(1), T(1)},
+                          {T(0), T(3)}}};
   EXPECT_TRUE(is_monotone(comb, x));  // teeth along y: every vertical line meets it twice
   EXPECT_FALSE(is_monotone(comb, Vec2<T>{T(0), T(1)}));
   // A "C" opening to the right is monotone along y but not along x.
-  const Polygon2<T> c_shape{{{T(0), T(0)}, {T(4), T(0)}, {T(4), T(1)}, {T(1), T(1)}, {T(1), T(3)},
-                             {T(4), T(3)}, {T(4), T(4)}, {T(0), T(4)}}};
+  const Polygon2<T> c_shape{{{T(0), T(0)},
+                             {T(4), T(0)},
+                             {T(4), T(1)},
+                             {T(1), T(1)},
+                             {T(1), T(3)},
+                             {T(4), T(3)},
+                             {T(4), T(4)},
+                             {T(0), T(4)}}};
   EXPECT_FALSE(is_monotone(c_shape, x));
   EXPECT_TRUE(is_monotone(c_shape, Vec2<T>{T(0), T(1)}));
   EXPECT_TRUE(is_simple(comb));
@@ -349,13 +382,16 @@ TYPED_TEST(PolygonTest, ConvexityMatchesBruteForceHullCheck) {
       for (int i = 0; i < n; ++i) ang.push_back(rng.uniform<T>(0, T(2) * pi_v<T>));
       std::sort(ang.begin(), ang.end());
       const T grid = kind == 0 ? T(1) : T(64);
-      for (T a : ang) v.push_back({std::round(T(8) * std::cos(a) * grid) / grid, std::round(T(8) * std::sin(a) * grid) / grid});
+      for (T a : ang)
+        v.push_back({std::round(T(8) * std::cos(a) * grid) / grid,
+                     std::round(T(8) * std::sin(a) * grid) / grid});
       if (kind == 1 && v.size() >= 2) {  // insert an exact midpoint on an edge (collinear)
         const std::size_t k = static_cast<std::size_t>(rng.uniform_int(0, int(v.size()) - 1));
         const Vec2<T> mid = T(0.5) * (v[k] + v[(k + 1) % v.size()]);
         v.insert(v.begin() + static_cast<std::ptrdiff_t>(k) + 1, mid);
       }
-      if (kind == 2 && !v.empty()) v.insert(v.begin() + rng.uniform_int(0, int(v.size()) - 1), v[0]);  // duplicate
+      if (kind == 2 && !v.empty())
+        v.insert(v.begin() + rng.uniform_int(0, int(v.size()) - 1), v[0]);  // duplicate
       if (rng.uniform_int(0, 1)) std::reverse(v.begin(), v.end());
       if (rng.uniform_int(0, 9) == 0) {  // wind twice
         const auto w = v;
@@ -458,10 +494,13 @@ TYPED_TEST(PolygonTest, SegmentsIntersectExactMatchesGmp) {
   for (int it = 0; it < 20000; ++it) {
     Vec2<T> p[4];
     for (auto& q : p) {
-      q = it % 2 ? rng.vec<T, 2>(-1, 1) : Vec2<T>{T(rng.uniform_int(0, 3)), T(rng.uniform_int(0, 3))};
+      q = it % 2 ? rng.vec<T, 2>(-1, 1)
+                 : Vec2<T>{T(rng.uniform_int(0, 3)), T(rng.uniform_int(0, 3))};
     }
     const bool expect = gmp_segments_meet(p[0], p[1], p[2], p[3]);
-    EXPECT_EQ(segments_intersect_exact(p[0], p[1], p[2], p[3]), expect) << p[0].x << "," << p[0].y << " " << p[1].x << "," << p[1].y << " " << p[2].x << "," << p[2].y << " " << p[3].x << "," << p[3].y;
+    EXPECT_EQ(segments_intersect_exact(p[0], p[1], p[2], p[3]), expect)
+        << p[0].x << "," << p[0].y << " " << p[1].x << "," << p[1].y << " " << p[2].x << ","
+        << p[2].y << " " << p[3].x << "," << p[3].y;
     EXPECT_EQ(segments_intersect_exact(p[3], p[2], p[1], p[0]), expect);
     (expect ? meet : apart)++;
   }
@@ -486,18 +525,22 @@ TYPED_TEST(PolygonTest, DegeneratePolygons) {
     EXPECT_EQ(polygon_orientation<T>(v), Sign::zero);
   }
   EXPECT_EQ(polygon_centroid<T>(std::vector<Vec2<T>>{}), (Vec2<T>{}));
-  EXPECT_EQ(polygon_centroid<T>(std::vector<Vec2<T>>{{T(0), T(0)}, {T(2), T(0)}, {T(4), T(0)}}), (Vec2<T>{T(2), T(0)}));
+  EXPECT_EQ(polygon_centroid<T>(std::vector<Vec2<T>>{{T(0), T(0)}, {T(2), T(0)}, {T(4), T(0)}}),
+            (Vec2<T>{T(2), T(0)}));
   const std::vector<Vec2<T>> bad{{T(0), T(0)}, {nan, T(0)}, {T(0), T(1)}};
   EXPECT_FALSE(polygon_is_simple<T>(bad));
   EXPECT_FALSE(polygon_is_convex<T>(bad));
   EXPECT_EQ(polygon_orientation<T>(bad), Sign::zero);
   EXPECT_FALSE(polygon_is_monotone<T>(bad, Vec2<T>{T(1), T(0)}));
-  EXPECT_FALSE(polygon_is_monotone<T>(std::vector<Vec2<T>>{{T(0), T(0)}, {T(1), T(0)}, {T(0), T(1)}}, Vec2<T>{}));
+  EXPECT_FALSE(polygon_is_monotone<T>(
+      std::vector<Vec2<T>>{{T(0), T(0)}, {T(1), T(0)}, {T(0), T(1)}}, Vec2<T>{}));
   // A spike at the lowest-leftmost vertex: orientation is undefined there (zero).
-  const std::vector<Vec2<T>> spike{{T(0), T(0)}, {T(3), T(0)}, {T(1), T(0)}, {T(1), T(2)}, {T(2), T(0)}};
+  const std::vector<Vec2<T>> spike{
+      {T(0), T(0)}, {T(3), T(0)}, {T(1), T(0)}, {T(1), T(2)}, {T(2), T(0)}};
   EXPECT_EQ(polygon_orientation<T>(spike), Sign::zero);
   // A closed ring with the first vertex repeated at the end is the same polygon.
-  const std::vector<Vec2<T>> ring{{T(0), T(0)}, {T(2), T(0)}, {T(2), T(2)}, {T(0), T(2)}, {T(0), T(0)}};
+  const std::vector<Vec2<T>> ring{
+      {T(0), T(0)}, {T(2), T(0)}, {T(2), T(2)}, {T(0), T(2)}, {T(0), T(0)}};
   EXPECT_TRUE(polygon_is_simple<T>(ring));
   EXPECT_TRUE(polygon_is_convex<T>(ring));
   EXPECT_EQ(polygon_area<T>(ring), T(4));
@@ -512,7 +555,8 @@ TYPED_TEST(PolygonTest, PolygonWithHoles) {
   EXPECT_EQ(area(p), T(15));
   EXPECT_EQ(perimeter(p), T(20));
   // Centroid: (16 * (2, 2) - 1 * (1.5, 1.5)) / 15.
-  EXPECT_TRUE(locus_test::vec_near(centroid(p), Vec2<T>{T(30.5) / T(15), T(30.5) / T(15)}, tol<T>(8, T(4))));
+  EXPECT_TRUE(locus_test::vec_near(centroid(p), Vec2<T>{T(30.5) / T(15), T(30.5) / T(15)},
+                                   tol<T>(8, T(4))));
   // A hole that fills everything: zero area; the centroid falls back to the outer one.
   PolygonWithHoles2<T> none{p.outer, {p.outer}};
   EXPECT_EQ(area(none), T(0));

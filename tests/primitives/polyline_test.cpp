@@ -29,7 +29,8 @@ TYPED_TEST(PolylineTest, Fig5_8_LengthAndParametrisations) {
   EXPECT_EQ(point_at(p, T(0.5)), (Vec2<T>{T(1.5), T(2)}));
   EXPECT_EQ(point_at(p, T(-1)), p.vertices[0]);  // clamped
   EXPECT_EQ(point_at(p, T(9)), p.vertices[3]);
-  EXPECT_TRUE(locus_test::vec_near(point_at_arc_length(p, T(7)), Vec2<T>{T(3), T(2)}, tol<T>(8, T(8))));
+  EXPECT_TRUE(
+      locus_test::vec_near(point_at_arc_length(p, T(7)), Vec2<T>{T(3), T(2)}, tol<T>(8, T(8))));
   EXPECT_EQ(point_at_arc_length(p, T(100)), p.vertices[3]);
   p.closed = true;
   EXPECT_EQ(segment_count(p), 4u);
@@ -50,7 +51,8 @@ TYPED_TEST(PolylineTest, ArcLengthTableAgreesWithWalk) {
     const int n = rng.uniform_int(1, 12);
     for (int i = 0; i < n; ++i) {
       p.vertices.push_back(rng.vec<T, 3>(-5, 5));
-      if (i > 0 && rng.uniform_int(0, 5) == 0) p.vertices.push_back(p.vertices.back());  // zero-length
+      if (i > 0 && rng.uniform_int(0, 5) == 0)
+        p.vertices.push_back(p.vertices.back());  // zero-length
     }
     const std::span<const Vec3<T>> v(p.vertices);
     const std::vector<T> cum = cumulative_lengths(v, p.closed);
@@ -67,7 +69,9 @@ TYPED_TEST(PolylineTest, ArcLengthTableAgreesWithWalk) {
       for (std::size_t i = 0; i + 1 < cum.size(); ++i) {
         const Segment3<T> e = edge(p, i);
         const T len = length(e);
-        if (sc < cum[i] - tol<T>(64, cum.back() + T(1)) || sc > cum[i + 1] + tol<T>(64, cum.back() + T(1))) continue;
+        if (sc < cum[i] - tol<T>(64, cum.back() + T(1)) ||
+            sc > cum[i + 1] + tol<T>(64, cum.back() + T(1)))
+          continue;
         const T t = len > T(0) ? clamp((sc - cum[i]) / len, T(0), T(1)) : T(0);
         best = std::min(best, length(point_at(e, t) - a));
       }
@@ -106,8 +110,10 @@ TYPED_TEST(PolylineTest, DegeneratePolylines) {
 TYPED_TEST(PolylineTest, Fig5_11_MonotoneChains) {
   using T = TypeParam;
   const Vec2<T> x{T(1), T(0)};
-  const std::vector<Vec2<T>> a{{T(0), T(0)}, {T(1), T(2)}, {T(2), T(1)}, {T(4), T(3)}, {T(5), T(0)}};
-  const std::vector<Vec2<T>> b{{T(0), T(0)}, {T(1), T(2)}, {T(1), T(-1)}, {T(4), T(3)}, {T(5), T(0)}};
+  const std::vector<Vec2<T>> a{
+      {T(0), T(0)}, {T(1), T(2)}, {T(2), T(1)}, {T(4), T(3)}, {T(5), T(0)}};
+  const std::vector<Vec2<T>> b{
+      {T(0), T(0)}, {T(1), T(2)}, {T(1), T(-1)}, {T(4), T(3)}, {T(5), T(0)}};
   const std::vector<Vec2<T>> c{{T(0), T(0)}, {T(2), T(2)}, {T(1), T(-1)}, {T(4), T(3)}};
   EXPECT_TRUE(is_monotone_chain<T>(a, x, true));
   EXPECT_TRUE(is_monotone_chain<T>(a, x));
@@ -147,11 +153,17 @@ TYPED_TEST(PolylineTest, MonotoneChainMatchesExactProjections) {
     int dir = 0;
     bool is_mono = true, is_strict = true;
     for (std::size_t i = 1; i < v.size(); ++i) {
-      const mpq_class proj = (mpq_class(v[i].x) - v[i - 1].x) * d.x + (mpq_class(v[i].y) - v[i - 1].y) * d.y;
+      const mpq_class proj =
+          (mpq_class(v[i].x) - v[i - 1].x) * d.x + (mpq_class(v[i].y) - v[i - 1].y) * d.y;
       const int s = sgn(proj);
-      if (s == 0) { is_strict = false; continue; }
-      if (dir == 0) dir = s;
-      else if (s != dir) is_mono = is_strict = false;
+      if (s == 0) {
+        is_strict = false;
+        continue;
+      }
+      if (dir == 0)
+        dir = s;
+      else if (s != dir)
+        is_mono = is_strict = false;
     }
     EXPECT_EQ(is_monotone_chain<T>(v, d), is_mono);
     EXPECT_EQ(is_monotone_chain<T>(v, d, true), is_strict && is_mono);

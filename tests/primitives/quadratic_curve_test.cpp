@@ -19,7 +19,8 @@ template <class T>
 class QuadraticCurveTest : public ::testing::Test {};
 TYPED_TEST_SUITE(QuadraticCurveTest, locus_test::RealTypes);
 
-static_assert(std::is_aggregate_v<QuadraticCurve2d> && std::is_trivially_copyable_v<QuadraticCurve2f>);
+static_assert(std::is_aggregate_v<QuadraticCurve2d> &&
+              std::is_trivially_copyable_v<QuadraticCurve2f>);
 
 namespace {
 
@@ -36,8 +37,10 @@ IntConic transform(const IntConic& q, const long long l[2][2], const long long t
     for (int j = 0; j < 2; ++j) AL[i][j] = A2[i][0] * l[0][j] + A2[i][1] * l[1][j];
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j) R[i][j] = l[0][i] * AL[0][j] + l[1][i] * AL[1][j];
-  const long long g[2] = {A2[0][0] * t[0] + A2[0][1] * t[1] + q.d, A2[1][0] * t[0] + A2[1][1] * t[1] + q.e};
-  const long long tAt = t[0] * (A2[0][0] * t[0] + A2[0][1] * t[1]) + t[1] * (A2[1][0] * t[0] + A2[1][1] * t[1]);
+  const long long g[2] = {A2[0][0] * t[0] + A2[0][1] * t[1] + q.d,
+                          A2[1][0] * t[0] + A2[1][1] * t[1] + q.e};
+  const long long tAt =
+      t[0] * (A2[0][0] * t[0] + A2[0][1] * t[1]) + t[1] * (A2[1][0] * t[0] + A2[1][1] * t[1]);
   IntConic r{};
   r.a = R[0][0] / 2;
   r.b = R[0][1];
@@ -61,7 +64,9 @@ QuadraticCurve2<T> scaled(const IntConic& q, long long sign, int pow2) {
 // of fig 5.16.
 TYPED_TEST(QuadraticCurveTest, Fig5_13_to_5_16_CanonicalCases) {
   using T = TypeParam;
-  auto k = [](T a, T b, T c, T d, T e, T f) { return classify_conic(QuadraticCurve2<T>{a, b, c, d, e, f}); };
+  auto k = [](T a, T b, T c, T d, T e, T f) {
+    return classify_conic(QuadraticCurve2<T>{a, b, c, d, e, f});
+  };
   // Fig 5.13, d0 d1 > 0: ellipse (r same sign), point (r = 0), empty (r opposite sign).
   EXPECT_EQ(k(1, 0, 4, 0, 0, -4), ConicKind::ellipse);
   EXPECT_EQ(k(-1, 0, -4, 0, 0, 4), ConicKind::ellipse);
@@ -82,7 +87,7 @@ TYPED_TEST(QuadraticCurveTest, Fig5_13_to_5_16_CanonicalCases) {
   EXPECT_EQ(k(1, 2, 1, 0, 0, -1), ConicKind::parallel_lines);  // (x + y)^2 = 1
   EXPECT_EQ(k(1, 2, 1, 0, 0, 0), ConicKind::double_line);
   EXPECT_EQ(k(1, 2, 1, 0, 0, 1), ConicKind::empty);
-  EXPECT_EQ(k(1, 2, 1, 1, -1, 0), ConicKind::parabola);       // (x + y)^2 + (x - y) = 0
+  EXPECT_EQ(k(1, 2, 1, 1, -1, 0), ConicKind::parabola);  // (x + y)^2 + (x - y) = 0
   // Fig 5.15: (x - 1)^2 + (y + 2)^2 = 9.
   const QuadraticCurve2<T> circ{T(1), T(0), T(1), T(-2), T(4), T(-4)};
   EXPECT_EQ(classify_conic(circ), ConicKind::circle);
@@ -119,26 +124,68 @@ TYPED_TEST(QuadraticCurveTest, ClassifiesConstructedConicsExactly) {
     IntConic base{};
     ConicKind expect{};
     switch (cls) {
-      case 0: base = {p, 0, p == q ? q + 1 : q, 0, 0, -r}; expect = ConicKind::ellipse; break;
-      case 1: base = {p, 0, p, 0, 0, -r}; expect = ConicKind::circle; break;
-      case 2: base = {p, 0, q, 0, 0, 0}; expect = ConicKind::point; break;
-      case 3: base = {p, 0, q, 0, 0, r}; expect = ConicKind::empty; break;
-      case 4: base = {p, 0, -q, 0, 0, it % 2 ? r : -r}; expect = ConicKind::hyperbola; break;
-      case 5: base = {p, 0, -q, 0, 0, 0}; expect = ConicKind::intersecting_lines; break;
-      case 6: base = {p, 0, 0, 0, it % 2 ? q : -q, r - 3}; expect = ConicKind::parabola; break;
-      case 7: base = {p, 0, 0, 0, 0, -r}; expect = ConicKind::parallel_lines; break;
-      case 8: base = {p, 0, 0, 0, 0, 0}; expect = ConicKind::double_line; break;
-      case 9: base = {p, 0, 0, 0, 0, r}; expect = ConicKind::empty; break;
-      case 10: base = {0, 0, 0, p, q - 3, r}; expect = ConicKind::line; break;
-      case 11: base = {0, 0, 0, 0, 0, 0}; expect = ConicKind::plane; break;
-      default: base = {0, 0, 0, 0, 0, r}; expect = ConicKind::empty; break;
+      case 0:
+        base = {p, 0, p == q ? q + 1 : q, 0, 0, -r};
+        expect = ConicKind::ellipse;
+        break;
+      case 1:
+        base = {p, 0, p, 0, 0, -r};
+        expect = ConicKind::circle;
+        break;
+      case 2:
+        base = {p, 0, q, 0, 0, 0};
+        expect = ConicKind::point;
+        break;
+      case 3:
+        base = {p, 0, q, 0, 0, r};
+        expect = ConicKind::empty;
+        break;
+      case 4:
+        base = {p, 0, -q, 0, 0, it % 2 ? r : -r};
+        expect = ConicKind::hyperbola;
+        break;
+      case 5:
+        base = {p, 0, -q, 0, 0, 0};
+        expect = ConicKind::intersecting_lines;
+        break;
+      case 6:
+        base = {p, 0, 0, 0, it % 2 ? q : -q, r - 3};
+        expect = ConicKind::parabola;
+        break;
+      case 7:
+        base = {p, 0, 0, 0, 0, -r};
+        expect = ConicKind::parallel_lines;
+        break;
+      case 8:
+        base = {p, 0, 0, 0, 0, 0};
+        expect = ConicKind::double_line;
+        break;
+      case 9:
+        base = {p, 0, 0, 0, 0, r};
+        expect = ConicKind::empty;
+        break;
+      case 10:
+        base = {0, 0, 0, p, q - 3, r};
+        expect = ConicKind::line;
+        break;
+      case 11:
+        base = {0, 0, 0, 0, 0, 0};
+        expect = ConicKind::plane;
+        break;
+      default:
+        base = {0, 0, 0, 0, 0, r};
+        expect = ConicKind::empty;
+        break;
     }
     long long l[2][2];
     if (cls == 1) {
       long long u = rng.uniform_int(-3, 3), v = rng.uniform_int(-3, 3);
       if (u == 0 && v == 0) u = 2;
       const long long refl = rng.uniform_int(0, 1) ? 1 : -1;  // rotation-scale or reflection
-      l[0][0] = u; l[0][1] = -v * refl; l[1][0] = v; l[1][1] = u * refl;
+      l[0][0] = u;
+      l[0][1] = -v * refl;
+      l[1][0] = v;
+      l[1][1] = u * refl;
     } else {
       do {
         for (auto& row : l)
@@ -222,31 +269,39 @@ TYPED_TEST(QuadraticCurveTest, ClassificationMatchesGmpInvariants) {
       // (p0 x + p1 y + p2)(r0 x + r1 y + r2), possibly with the second line parallel.
       const T p0 = small(), p1 = small(), p2 = small();
       T r0 = small(), r1 = small(), r2 = small();
-      if (it % 4 == 1) { r0 = p0 * T(2); r1 = p1 * T(2); }
+      if (it % 4 == 1) {
+        r0 = p0 * T(2);
+        r1 = p1 * T(2);
+      }
       q = {p0 * r0, p0 * r1 + p1 * r0, p1 * r1, p0 * r2 + p2 * r0, p1 * r2 + p2 * r1, p2 * r2};
     }
     const mpq_class a(q.a), b(q.b), c(q.c), d(q.d), e(q.e), f(q.f);
     const int disc = sgn(mpq_class(b * b - 4 * a * c));
-    const int det = sgn(mpq_class(8 * a * c * f - 2 * a * e * e - 2 * b * b * f + 2 * b * d * e - 2 * c * d * d));
+    const int det = sgn(
+        mpq_class(8 * a * c * f - 2 * a * e * e - 2 * b * b * f + 2 * b * d * e - 2 * c * d * d));
     const int kk = sgn(mpq_class(4 * a * f - d * d + 4 * c * f - e * e));
     const ConicKind got = classify_conic(q);
     const bool quad = !(q.a == 0 && q.b == 0 && q.c == 0);
     if (!quad) continue;
     if (disc < 0) {
-      if (det == 0) EXPECT_EQ(got, ConicKind::point);
-      else if (sgn(a) * det > 0) EXPECT_EQ(got, ConicKind::empty);
-      else EXPECT_TRUE(got == ConicKind::ellipse || got == ConicKind::circle);
+      if (det == 0)
+        EXPECT_EQ(got, ConicKind::point);
+      else if (sgn(a) * det > 0)
+        EXPECT_EQ(got, ConicKind::empty);
+      else
+        EXPECT_TRUE(got == ConicKind::ellipse || got == ConicKind::circle);
     } else if (disc > 0) {
       EXPECT_EQ(got, det == 0 ? ConicKind::intersecting_lines : ConicKind::hyperbola);
     } else if (det != 0) {
       EXPECT_EQ(got, ConicKind::parabola);
     } else {
-      EXPECT_EQ(got, kk < 0 ? ConicKind::parallel_lines : (kk == 0 ? ConicKind::double_line : ConicKind::empty));
+      EXPECT_EQ(got, kk < 0 ? ConicKind::parallel_lines
+                            : (kk == 0 ? ConicKind::double_line : ConicKind::empty));
     }
     if (it % 2 == 1) {  // a product of two real lines is never a proper conic
       EXPECT_TRUE(got == ConicKind::intersecting_lines || got == ConicKind::parallel_lines ||
-                  got == ConicKind::double_line || got == ConicKind::line || got == ConicKind::plane ||
-                  got == ConicKind::empty)
+                  got == ConicKind::double_line || got == ConicKind::line ||
+                  got == ConicKind::plane || got == ConicKind::empty)
           << to_string(got);
     }
   }
@@ -260,7 +315,8 @@ TYPED_TEST(QuadraticCurveTest, EllipseAndCircleConversionsRoundTrip) {
   for (int it = 0; it < 2000; ++it) {
     const T ang = rng.uniform<T>(-4, 4);
     const Vec2<T> u{std::cos(ang), std::sin(ang)};
-    const Ellipse2<T> e{rng.vec<T, 2>(-5, 5), {u, perp(u)}, {rng.uniform<T>(T(0.3), 4), rng.uniform<T>(T(0.3), 4)}};
+    const Ellipse2<T> e{
+        rng.vec<T, 2>(-5, 5), {u, perp(u)}, {rng.uniform<T>(T(0.3), 4), rng.uniform<T>(T(0.3), 4)}};
     const QuadraticCurve2<T> q = to_quadratic(e);
     const ConicKind kind = classify_conic(q);
     ASSERT_TRUE(kind == ConicKind::ellipse || kind == ConicKind::circle) << to_string(kind);
@@ -295,14 +351,17 @@ TYPED_TEST(QuadraticCurveTest, EllipseAndCircleConversionsRoundTrip) {
 TYPED_TEST(QuadraticCurveTest, NonFiniteAndEvaluate) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
-  EXPECT_EQ(classify_conic(QuadraticCurve2<T>{nan, T(0), T(1), T(0), T(0), T(-1)}), ConicKind::non_finite);
-  EXPECT_EQ(classify_conic(QuadraticCurve2<T>{T(1), T(0), T(1), T(0), T(0), -inf}), ConicKind::non_finite);
+  EXPECT_EQ(classify_conic(QuadraticCurve2<T>{nan, T(0), T(1), T(0), T(0), T(-1)}),
+            ConicKind::non_finite);
+  EXPECT_EQ(classify_conic(QuadraticCurve2<T>{T(1), T(0), T(1), T(0), T(0), -inf}),
+            ConicKind::non_finite);
   EXPECT_FALSE(to_ellipse(QuadraticCurve2<T>{T(1), T(0), T(1), T(0), nan, T(-1)}).has_value());
   // Extreme but finite coefficients: still classified exactly.
   const T mx = std::numeric_limits<T>::max(), dn = std::numeric_limits<T>::denorm_min();
   EXPECT_EQ(classify_conic(QuadraticCurve2<T>{mx, T(0), mx, T(0), T(0), -mx}), ConicKind::circle);
   EXPECT_EQ(classify_conic(QuadraticCurve2<T>{dn, T(0), dn, T(0), T(0), dn}), ConicKind::empty);
-  EXPECT_EQ(classify_conic(QuadraticCurve2<T>{dn, T(0), -dn, T(0), T(0), T(0)}), ConicKind::intersecting_lines);
+  EXPECT_EQ(classify_conic(QuadraticCurve2<T>{dn, T(0), -dn, T(0), T(0), T(0)}),
+            ConicKind::intersecting_lines);
   const QuadraticCurve2<T> q{T(1), T(2), T(3), T(4), T(5), T(6)};
   EXPECT_EQ(evaluate(q, Vec2<T>{T(1), T(-1)}), T(1 - 2 + 3 + 4 - 5 + 6));
 }

@@ -25,7 +25,8 @@ template <class T>
 Rectangle2<T> random_rect2(Rng& rng) {
   const T ang = rng.uniform<T>(-3, 3);
   const Vec2<T> u{std::cos(ang), std::sin(ang)};
-  return {rng.vec<T, 2>(-5, 5), {u, perp(u)}, {rng.uniform<T>(T(0.1), 3), rng.uniform<T>(T(0.1), 3)}};
+  return {
+      rng.vec<T, 2>(-5, 5), {u, perp(u)}, {rng.uniform<T>(T(0.1), 3), rng.uniform<T>(T(0.1), 3)}};
 }
 }  // namespace
 
@@ -80,9 +81,11 @@ TYPED_TEST(RectangleTest, FormConversionsRoundTrip2DAnd3D) {
     // point_at agrees: symmetric (s, t) <-> corner ((s/a0 + 1)/2, (t/a1 + 1)/2).
     const T s = rng.uniform<T>(-1, 1) * r.extent[0], t = rng.uniform<T>(-1, 1) * r.extent[1];
     const Vec2<T> uv{(s / r.extent[0] + T(1)) / T(2), (t / r.extent[1] + T(1)) / T(2)};
-    EXPECT_TRUE(locus_test::vec_near(point_at(r, Vec2<T>{s, t}), point_at(c, uv), tol<T>(64, T(8))));
+    EXPECT_TRUE(
+        locus_test::vec_near(point_at(r, Vec2<T>{s, t}), point_at(c, uv), tol<T>(64, T(8))));
     const auto cr = corners(r), cc = corners(c);
-    for (std::size_t i = 0; i < 4; ++i) EXPECT_TRUE(locus_test::vec_near(cr[i], cc[i], tol<T>(32, T(8))));
+    for (std::size_t i = 0; i < 4; ++i)
+      EXPECT_TRUE(locus_test::vec_near(cr[i], cc[i], tol<T>(32, T(8))));
   }
   // A rectangle embedded in 3D.
   for (int k = 0; k < 500; ++k) {
@@ -90,7 +93,8 @@ TYPED_TEST(RectangleTest, FormConversionsRoundTrip2DAnd3D) {
     Vec3<T> w = rng.unit<T, 3>();
     const Vec3<T> v = normalize(w - dot(w, u) * u);
     if (v == Vec3<T>{}) continue;
-    const Rectangle3<T> r{rng.vec<T, 3>(-5, 5), {u, v}, {rng.uniform<T>(T(0.1), 2), rng.uniform<T>(T(0.1), 2)}};
+    const Rectangle3<T> r{
+        rng.vec<T, 3>(-5, 5), {u, v}, {rng.uniform<T>(T(0.1), 2), rng.uniform<T>(T(0.1), 2)}};
     EXPECT_TRUE(is_orthonormal(r, tol<T>(64)));
     const auto c = corners(r);
     // Opposite sides are equal and the diagonals have the same length.
@@ -114,7 +118,10 @@ TYPED_TEST(RectangleTest, DegenerateRectangles) {
   EXPECT_EQ(s.extent[1], T(0));
   EXPECT_EQ(s.center, (Vec2<T>{T(2), T(1)}));
   const T nan = std::numeric_limits<T>::quiet_NaN();
-  EXPECT_TRUE(is_degenerate(Rectangle2<T>{{T(0), T(0)}, {{T(1), T(0)}, {T(0), T(1)}}, {nan, T(1)}}));
-  EXPECT_TRUE(is_degenerate(Rectangle2<T>{{nan, T(0)}, {{T(1), T(0)}, {T(0), T(1)}}, {T(1), T(1)}}));
-  EXPECT_FALSE(is_orthonormal(Rectangle2<T>{{T(0), T(0)}, {{T(1), T(0)}, {T(1), T(1)}}, {T(1), T(1)}}));
+  EXPECT_TRUE(
+      is_degenerate(Rectangle2<T>{{T(0), T(0)}, {{T(1), T(0)}, {T(0), T(1)}}, {nan, T(1)}}));
+  EXPECT_TRUE(
+      is_degenerate(Rectangle2<T>{{nan, T(0)}, {{T(1), T(0)}, {T(0), T(1)}}, {T(1), T(1)}}));
+  EXPECT_FALSE(
+      is_orthonormal(Rectangle2<T>{{T(0), T(0)}, {{T(1), T(0)}, {T(1), T(1)}}, {T(1), T(1)}}));
 }

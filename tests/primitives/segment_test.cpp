@@ -33,8 +33,8 @@ TYPED_TEST(SegmentTest, Fig5_1c_EndpointForm) {
   EXPECT_EQ(sqr_length(s3), T(36));
   EXPECT_EQ(direction(s3), (Vec3<T>{T(2), T(4), T(4)}));
   EXPECT_EQ(midpoint(s3), (Vec3<T>{T(1), T(2), T(2)}));
-  EXPECT_TRUE(locus_test::vec_near(unit_direction(s3), Vec3<T>{T(1) / 3, T(2) / 3, T(2) / 3},
-                                   tol<T>(2)));
+  EXPECT_TRUE(
+      locus_test::vec_near(unit_direction(s3), Vec3<T>{T(1) / 3, T(2) / 3, T(2) / 3}, tol<T>(2)));
 }
 
 // The center-direction-extent form of figure 5.1(c) (the symmetric form): round trips.
@@ -56,8 +56,8 @@ TYPED_TEST(SegmentTest, CenterDirectionExtentRoundTrip) {
     EXPECT_TRUE(locus_test::vec_near(point_at(c, (t - T(0.5)) * length(s)), point_at(s, t),
                                      tol<T>(64, T(10))));
     // The supporting line has the same parameter.
-    EXPECT_TRUE(locus_test::vec_near(point_at(supporting_line(s), t), point_at(s, t),
-                                     tol<T>(8, T(20))));
+    EXPECT_TRUE(
+        locus_test::vec_near(point_at(supporting_line(s), t), point_at(s, t), tol<T>(8, T(20))));
   }
 }
 
@@ -75,7 +75,8 @@ TYPED_TEST(SegmentTest, DegenerateSegments) {
   EXPECT_EQ(point_at(pt, T(0.3)), pt.p0);
   const T nan = std::numeric_limits<T>::quiet_NaN();
   EXPECT_TRUE(is_degenerate(Segment2<T>{{nan, T(0)}, {T(1), T(1)}}));
-  EXPECT_FALSE(is_degenerate(Segment2<T>{{T(0), T(0)}, {T(0), std::numeric_limits<T>::denorm_min()}}));
+  EXPECT_FALSE(
+      is_degenerate(Segment2<T>{{T(0), T(0)}, {T(0), std::numeric_limits<T>::denorm_min()}}));
   // The midpoint of far-apart huge coordinates does not overflow.
   const T big = std::numeric_limits<T>::max();
   const Segment2<T> h{{big, -big}, {big, big}};

@@ -66,7 +66,10 @@ TYPED_TEST(TriangleTest, Fig5_4_5_5_ParametricAndBarycentricForms) {
   for (int k = 0; k < 2000; ++k) {
     const Triangle2<T> r{rng.vec<T, 2>(-5, 5), rng.vec<T, 2>(-5, 5), rng.vec<T, 2>(-5, 5)};
     T s = rng.uniform<T>(0, 1), t = rng.uniform<T>(0, 1);
-    if (s + t > T(1)) { s = T(1) - s; t = T(1) - t; }
+    if (s + t > T(1)) {
+      s = T(1) - s;
+      t = T(1) - t;
+    }
     const Vec2<T> p = point_at(r, Vec2<T>{s, t});
     const Vec2<T> q = point_at_barycentric(r, Vec3<T>{T(1) - s - t, s, t});
     EXPECT_TRUE(locus_test::vec_near(p, q, tol<T>(32, T(5))));
@@ -162,12 +165,14 @@ TYPED_TEST(TriangleTest, AreaCentroidNormalAgainstIndependentFormulas) {
     EXPECT_NEAR(area(t4), a3, tol<T>(256, T(100)));
     const Vec3<T> c = centroid(t3);
     EXPECT_TRUE(locus_test::vec_near(c, (t3.v0 + t3.v1 + t3.v2) / T(3), tol<T>(8, T(10))));
-    EXPECT_NEAR(perimeter(t3), length(t3.v1 - t3.v0) + length(t3.v2 - t3.v1) + length(t3.v0 - t3.v2),
+    EXPECT_NEAR(perimeter(t3),
+                length(t3.v1 - t3.v0) + length(t3.v2 - t3.v1) + length(t3.v0 - t3.v2),
                 tol<T>(8, T(30)));
   }
   // Needle triangle in 4D: the bivector form keeps the tiny area to a few ulps (a Heron-type
   // formula on the rounded edge lengths loses about log2(1 / 2e-6) bits here).
-  const Triangle<T, 4> needle{{T(0), T(0), T(0), T(0)}, {T(1), T(0), T(0), T(0)}, {T(0.5), T(1e-3), T(0), T(0)}};
+  const Triangle<T, 4> needle{
+      {T(0), T(0), T(0), T(0)}, {T(1), T(0), T(0), T(0)}, {T(0.5), T(1e-3), T(0), T(0)}};
   EXPECT_NEAR(area(needle), T(0.5) * T(1e-3), tol<T>(8, T(5e-4)));
 }
 
@@ -186,9 +191,12 @@ TYPED_TEST(TriangleTest, DegenerateTriangles) {
   EXPECT_TRUE(is_degenerate(line3));
   EXPECT_EQ(unit_normal(line3), (Vec3<T>{}));
   EXPECT_TRUE(is_degenerate(Triangle2<T>{{nan, T(0)}, {T(1), T(0)}, {T(0), T(1)}}));
-  EXPECT_TRUE(is_degenerate(Triangle3<T>{{T(0), T(0), T(0)}, {inf, T(0), T(0)}, {T(0), T(1), T(0)}}));
-  EXPECT_FALSE(barycentric(Triangle2<T>{{nan, T(0)}, {T(1), T(0)}, {T(0), T(1)}}, Vec2<T>{}).has_value());
-  EXPECT_TRUE(is_degenerate(Triangle<T, 4>{{T(0), T(0), T(0), T(0)}, {T(1), T(1), T(1), T(1)}, {T(2), T(2), T(2), T(2)}}));
+  EXPECT_TRUE(
+      is_degenerate(Triangle3<T>{{T(0), T(0), T(0)}, {inf, T(0), T(0)}, {T(0), T(1), T(0)}}));
+  EXPECT_FALSE(
+      barycentric(Triangle2<T>{{nan, T(0)}, {T(1), T(0)}, {T(0), T(1)}}, Vec2<T>{}).has_value());
+  EXPECT_TRUE(is_degenerate(Triangle<T, 4>{
+      {T(0), T(0), T(0), T(0)}, {T(1), T(1), T(1), T(1)}, {T(2), T(2), T(2), T(2)}}));
   // Tiny but non-degenerate: exact orientation still decides.
   const T tiny = std::numeric_limits<T>::denorm_min();
   const Triangle2<T> small{{T(0), T(0)}, {T(1), T(0)}, {T(0), tiny}};

@@ -115,7 +115,11 @@ template <class T>
 [[nodiscard]] inline T perimeter(const Ellipse2<T>& e) noexcept {
   using C = compute_t<T>;
   C a = std::abs(static_cast<C>(e.extent[0])), b = std::abs(static_cast<C>(e.extent[1]));
-  if (a < b) { const C s = a; a = b; b = s; }
+  if (a < b) {
+    const C s = a;
+    a = b;
+    b = s;
+  }
   if (!is_finite(a) || !is_finite(b)) return static_cast<T>(a + b);  // inf or NaN
   if (b == C(0)) return static_cast<T>(C(4) * a);
   // Scale to a = 1 so that the squares neither overflow nor underflow.

@@ -34,8 +34,10 @@ struct Line {
   Vec<T, N> direction;
 };
 
-template <class T> using Line2 = Line<T, 2>;
-template <class T> using Line3 = Line<T, 3>;
+template <class T>
+using Line2 = Line<T, 2>;
+template <class T>
+using Line3 = Line<T, 3>;
 using Line2f = Line2<float>;
 using Line2d = Line2<double>;
 using Line3f = Line3<float>;
@@ -60,8 +62,7 @@ template <class T, int N>
 /// True when the direction is zero or a coordinate of the line is not finite.
 template <class T, int N>
 [[nodiscard]] constexpr bool is_degenerate(const Line<T, N>& line) noexcept {
-  return !is_finite(line.origin) || !is_finite(line.direction) ||
-         line.direction == Vec<T, N>{};
+  return !is_finite(line.origin) || !is_finite(line.direction) || line.direction == Vec<T, N>{};
 }
 
 /// True when the normal is zero or a coefficient is not finite.

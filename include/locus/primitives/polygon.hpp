@@ -240,8 +240,10 @@ template <class T>
       if (detail::folds_back(a, b, c)) return false;
       continue;
     }
-    if (turn == 0) turn = s;
-    else if (s != turn) return false;
+    if (turn == 0)
+      turn = s;
+    else if (s != turn)
+      return false;
   }
   if (turn == 0) return false;  // all collinear
   // Winding number one: the x-direction of the edges changes sign exactly twice (each full
@@ -252,8 +254,10 @@ template <class T>
     const Vec2<T>& b = v[d[(i + 1) % m]];
     const int sx = (b.x > a.x) - (b.x < a.x);
     if (sx == 0) continue;
-    if (first == 0) first = sx;
-    else if (sx != last) ++changes;
+    if (first == 0)
+      first = sx;
+    else if (sx != last)
+      ++changes;
     last = sx;
   }
   if (last != first) ++changes;
@@ -269,7 +273,8 @@ template <class T>
 [[nodiscard]] inline std::optional<std::pair<std::size_t, std::size_t>> polygon_self_intersection(
     std::span<const Vec2<T>> v) {
   using Result = std::optional<std::pair<std::size_t, std::size_t>>;
-  if (v.size() < 3 || !detail::all_finite(v)) return Result{std::pair<std::size_t, std::size_t>{0, 0}};
+  if (v.size() < 3 || !detail::all_finite(v))
+    return Result{std::pair<std::size_t, std::size_t>{0, 0}};
   const std::vector<std::size_t> d = detail::distinct_cycle(v);
   const std::size_t m = d.size();
   if (m < 3) return Result{std::pair<std::size_t, std::size_t>{0, 0}};
@@ -291,13 +296,19 @@ template <class T>
   // Adjacent edges meet at a shared vertex; they conflict only by folding back onto each other.
   auto conflict = [&](std::size_t e, std::size_t f) {
     if (e == f) return false;
-    if ((e + 1) % m == f) return orient2d(p0(e), p1(e), p1(f)) == Sign::zero && detail::folds_back(p0(e), p1(e), p1(f));
-    if ((f + 1) % m == e) return orient2d(p0(f), p1(f), p1(e)) == Sign::zero && detail::folds_back(p0(f), p1(f), p1(e));
+    if ((e + 1) % m == f)
+      return orient2d(p0(e), p1(e), p1(f)) == Sign::zero && detail::folds_back(p0(e), p1(e), p1(f));
+    if ((f + 1) % m == e)
+      return orient2d(p0(f), p1(f), p1(e)) == Sign::zero && detail::folds_back(p0(f), p1(f), p1(e));
     return segments_intersect_exact(p0(e), p1(e), p0(f), p1(f));
   };
   // Left/right endpoints in the lexicographic sweep order.
-  auto left = [&](std::size_t e) -> const Vec2<T>& { return detail::lex_less(p1(e), p0(e)) ? p1(e) : p0(e); };
-  auto right = [&](std::size_t e) -> const Vec2<T>& { return detail::lex_less(p1(e), p0(e)) ? p0(e) : p1(e); };
+  auto left = [&](std::size_t e) -> const Vec2<T>& {
+    return detail::lex_less(p1(e), p0(e)) ? p1(e) : p0(e);
+  };
+  auto right = [&](std::size_t e) -> const Vec2<T>& {
+    return detail::lex_less(p1(e), p0(e)) ? p0(e) : p1(e);
+  };
   // "e below f" on the sweep line; decided on the line of the segment that started first.
   auto below = [&](std::size_t e, std::size_t f) {
     if (e == f) return false;
@@ -322,7 +333,9 @@ template <class T>
     events.push_back({e, true});
     events.push_back({e, false});
   }
-  auto point_of = [&](const Event& ev) -> const Vec2<T>& { return ev.insert ? left(ev.edge) : right(ev.edge); };
+  auto point_of = [&](const Event& ev) -> const Vec2<T>& {
+    return ev.insert ? left(ev.edge) : right(ev.edge);
+  };
   std::sort(events.begin(), events.end(), [&](const Event& a, const Event& b) {
     const Vec2<T>& pa = point_of(a);
     const Vec2<T>& pb = point_of(b);
@@ -337,8 +350,10 @@ template <class T>
     if (ev.insert) {
       const auto it = status.insert(ev.edge).first;
       where[ev.edge] = it;
-      if (it != status.begin() && conflict(*std::prev(it), ev.edge)) return pair_of(*std::prev(it), ev.edge);
-      if (std::next(it) != status.end() && conflict(*std::next(it), ev.edge)) return pair_of(*std::next(it), ev.edge);
+      if (it != status.begin() && conflict(*std::prev(it), ev.edge))
+        return pair_of(*std::prev(it), ev.edge);
+      if (std::next(it) != status.end() && conflict(*std::next(it), ev.edge))
+        return pair_of(*std::next(it), ev.edge);
     } else {
       const auto it = where[ev.edge];
       if (it != status.begin() && std::next(it) != status.end()) {
@@ -373,7 +388,7 @@ struct MonotoneSplit {
 /// non-finite vertices, fewer than three vertices, or all vertices on one perpendicular line.
 template <class T>
 [[nodiscard]] inline MonotoneSplit polygon_monotone_split(std::span<const Vec2<T>> v,
-                                                         const Vec2<T>& d) noexcept {
+                                                          const Vec2<T>& d) noexcept {
   const std::size_t n = v.size();
   MonotoneSplit r{false, 0, 0};
   if (n < 3 || !is_finite(d) || d == Vec2<T>{} || !detail::all_finite(v)) return r;
@@ -385,7 +400,10 @@ template <class T>
   // Start at an edge with a nonzero sign so the cyclic scan sees each run once.
   std::size_t start = n;
   for (std::size_t i = 0; i < n; ++i)
-    if (sign_at(i) != 0) { start = i; break; }
+    if (sign_at(i) != 0) {
+      start = i;
+      break;
+    }
   if (start == n) return r;
   int prev = sign_at(start), changes = 0;
   for (std::size_t k = 1; k <= n; ++k) {
@@ -394,8 +412,10 @@ template <class T>
     if (s == 0 || s == prev) continue;
     ++changes;
     // The edge i starts a new run: its first vertex is a local extreme.
-    if (s > 0) r.min_vertex = i;
-    else r.max_vertex = i;
+    if (s > 0)
+      r.min_vertex = i;
+    else
+      r.max_vertex = i;
     prev = s;
   }
   r.monotone = changes == 2;
@@ -404,7 +424,8 @@ template <class T>
 
 /// Exact monotone-polygon test along direction d (fig 5.12).
 template <class T>
-[[nodiscard]] inline bool polygon_is_monotone(std::span<const Vec2<T>> v, const Vec2<T>& d) noexcept {
+[[nodiscard]] inline bool polygon_is_monotone(std::span<const Vec2<T>> v,
+                                              const Vec2<T>& d) noexcept {
   return polygon_monotone_split(v, d).monotone;
 }
 

@@ -48,8 +48,10 @@ struct Polyline {
   bool closed = false;
 };
 
-template <class T> using Polyline2 = Polyline<T, 2>;
-template <class T> using Polyline3 = Polyline<T, 3>;
+template <class T>
+using Polyline2 = Polyline<T, 2>;
+template <class T>
+using Polyline3 = Polyline<T, 3>;
 using Polyline2f = Polyline2<float>;
 using Polyline2d = Polyline2<double>;
 using Polyline3f = Polyline3<float>;
@@ -174,8 +176,10 @@ template <class T>
       if (strict) return false;
       continue;
     }
-    if (dir == 0) dir = s;
-    else if (s != dir) return false;
+    if (dir == 0)
+      dir = s;
+    else if (s != dir)
+      return false;
   }
   return true;
 }

@@ -40,12 +40,12 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/primitives/circle.hpp>
-#include <locus/primitives/ellipse.hpp>
 #include <locus/primitives/detail/exact_sign.hpp>
+#include <locus/primitives/ellipse.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <algorithm>
 #include <optional>
 #include <string_view>
 
@@ -79,18 +79,30 @@ enum class ConicKind : std::uint8_t {
 /// A short lower-case name ("ellipse", "intersecting_lines", ...).
 [[nodiscard]] constexpr std::string_view to_string(ConicKind k) noexcept {
   switch (k) {
-    case ConicKind::ellipse: return "ellipse";
-    case ConicKind::circle: return "circle";
-    case ConicKind::parabola: return "parabola";
-    case ConicKind::hyperbola: return "hyperbola";
-    case ConicKind::point: return "point";
-    case ConicKind::empty: return "empty";
-    case ConicKind::intersecting_lines: return "intersecting_lines";
-    case ConicKind::parallel_lines: return "parallel_lines";
-    case ConicKind::double_line: return "double_line";
-    case ConicKind::line: return "line";
-    case ConicKind::plane: return "plane";
-    case ConicKind::non_finite: return "non_finite";
+    case ConicKind::ellipse:
+      return "ellipse";
+    case ConicKind::circle:
+      return "circle";
+    case ConicKind::parabola:
+      return "parabola";
+    case ConicKind::hyperbola:
+      return "hyperbola";
+    case ConicKind::point:
+      return "point";
+    case ConicKind::empty:
+      return "empty";
+    case ConicKind::intersecting_lines:
+      return "intersecting_lines";
+    case ConicKind::parallel_lines:
+      return "parallel_lines";
+    case ConicKind::double_line:
+      return "double_line";
+    case ConicKind::line:
+      return "line";
+    case ConicKind::plane:
+      return "plane";
+    case ConicKind::non_finite:
+      return "non_finite";
   }
   return "unknown";
 }
@@ -112,10 +124,8 @@ struct ConicSigns {
                                 {-1, 1, 3, {b, b, f}},
                                 {1, 1, 3, {b, d, e}},
                                 {-1, 1, 3, {c, d, d}}};
-  const ExactMonomial kk[4] = {{1, 2, 2, {a, f, 0}},
-                               {-1, 0, 2, {d, d, 0}},
-                               {1, 2, 2, {c, f, 0}},
-                               {-1, 0, 2, {e, e, 0}}};
+  const ExactMonomial kk[4] = {
+      {1, 2, 2, {a, f, 0}}, {-1, 0, 2, {d, d, 0}}, {1, 2, 2, {c, f, 0}}, {-1, 0, 2, {e, e, 0}}};
   return {exact_sign_of_sum(disc, 2), exact_sign_of_sum(det, 5), exact_sign_of_sum(kk, 4)};
 }
 
@@ -130,8 +140,8 @@ template <class T>
 /// The exact class of the conic (see the header comment for the decision table).
 template <class T>
 [[nodiscard]] inline ConicKind classify_conic(const QuadraticCurve2<T>& q) noexcept {
-  if (!is_finite(q.a) || !is_finite(q.b) || !is_finite(q.c) || !is_finite(q.d) ||
-      !is_finite(q.e) || !is_finite(q.f))
+  if (!is_finite(q.a) || !is_finite(q.b) || !is_finite(q.c) || !is_finite(q.d) || !is_finite(q.e) ||
+      !is_finite(q.f))
     return ConicKind::non_finite;
   if (q.a == T(0) && q.b == T(0) && q.c == T(0)) {
     if (q.d != T(0) || q.e != T(0)) return ConicKind::line;
@@ -154,7 +164,11 @@ template <class T>
 /// The coefficients of |X - center|^2 - radius^2 = 0 (rounded).
 template <class T>
 [[nodiscard]] constexpr QuadraticCurve2<T> to_quadratic(const Circle2<T>& c) noexcept {
-  return {T(1), T(0), T(1), T(-2) * c.center.x, T(-2) * c.center.y,
+  return {T(1),
+          T(0),
+          T(1),
+          T(-2) * c.center.x,
+          T(-2) * c.center.y,
           sqr_length(c.center) - c.radius * c.radius};
 }
 
@@ -164,8 +178,8 @@ template <class T>
   const ImplicitEllipse2<T> im = to_implicit(e);
   const Mat2<T>& m = im.m;
   const Vec2<T> mc = m * e.center;
-  return {m(0, 0), m(0, 1) + m(1, 0), m(1, 1), T(-2) * mc.x, T(-2) * mc.y,
-          dot(e.center, mc) - T(1)};
+  return {m(0, 0),      m(0, 1) + m(1, 0), m(1, 1),
+          T(-2) * mc.x, T(-2) * mc.y,      dot(e.center, mc) - T(1)};
 }
 
 /// The axis form of the conic when classify_conic(q) is ellipse or circle, else std::nullopt.
@@ -175,8 +189,8 @@ template <class T>
   if (k != ConicKind::ellipse && k != ConicKind::circle) return std::nullopt;
   using C = compute_t<T>;
   // Normalise by the largest quadratic coefficient (a power of two: exact) against overflow.
-  const C s = std::ldexp(C(1), -std::ilogb(std::max(std::abs(C(q.a)),
-                                                    std::max(std::abs(C(q.b)), std::abs(C(q.c))))));
+  const C s = std::ldexp(
+      C(1), -std::ilogb(std::max(std::abs(C(q.a)), std::max(std::abs(C(q.b)), std::abs(C(q.c))))));
   const C a = C(q.a) * s, b = C(q.b) * s, c = C(q.c) * s, d = C(q.d) * s, e = C(q.e) * s,
           f = C(q.f) * s;
   // Centre: gradient zero, [[2a, b], [b, 2c]] X = -(d, e).

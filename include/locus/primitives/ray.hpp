@@ -23,8 +23,10 @@ struct Ray {
   Vec<T, N> direction;
 };
 
-template <class T> using Ray2 = Ray<T, 2>;
-template <class T> using Ray3 = Ray<T, 3>;
+template <class T>
+using Ray2 = Ray<T, 2>;
+template <class T>
+using Ray3 = Ray<T, 3>;
 using Ray2f = Ray2<float>;
 using Ray2d = Ray2<double>;
 using Ray3f = Ray3<float>;

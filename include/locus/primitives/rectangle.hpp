@@ -49,8 +49,10 @@ struct CornerRectangle {
   Vec<T, N> edge1;
 };
 
-template <class T> using Rectangle2 = Rectangle<T, 2>;
-template <class T> using Rectangle3 = Rectangle<T, 3>;
+template <class T>
+using Rectangle2 = Rectangle<T, 2>;
+template <class T>
+using Rectangle3 = Rectangle<T, 3>;
 using Rectangle2f = Rectangle2<float>;
 using Rectangle2d = Rectangle2<double>;
 using Rectangle3f = Rectangle3<float>;
@@ -139,7 +141,8 @@ template <class T, int N>
 template <class T, int N>
 [[nodiscard]] inline Rectangle<T, N> to_symmetric_form(const CornerRectangle<T, N>& r) noexcept {
   const Normalized<T, N> a = normalize_with_length(r.edge0), b = normalize_with_length(r.edge1);
-  return {r.corner + T(0.5) * r.edge0 + T(0.5) * r.edge1, {a.dir, b.dir},
+  return {r.corner + T(0.5) * r.edge0 + T(0.5) * r.edge1,
+          {a.dir, b.dir},
           {T(0.5) * a.length, T(0.5) * b.length}};
 }
 

@@ -41,8 +41,10 @@ struct Segment {
   }
 };
 
-template <class T> using Segment2 = Segment<T, 2>;
-template <class T> using Segment3 = Segment<T, 3>;
+template <class T>
+using Segment2 = Segment<T, 2>;
+template <class T>
+using Segment3 = Segment<T, 3>;
 using Segment2f = Segment2<float>;
 using Segment2d = Segment2<double>;
 using Segment3f = Segment3<float>;
@@ -56,8 +58,10 @@ struct SegmentCDE {
   T extent;
 };
 
-template <class T> using SegmentCDE2 = SegmentCDE<T, 2>;
-template <class T> using SegmentCDE3 = SegmentCDE<T, 3>;
+template <class T>
+using SegmentCDE2 = SegmentCDE<T, 2>;
+template <class T>
+using SegmentCDE3 = SegmentCDE<T, 3>;
 
 /// (1 - t) p0 + t p1; exact at t = 0 and t = 1.
 template <class T, int N>

@@ -52,8 +52,10 @@ struct Triangle {
   }
 };
 
-template <class T> using Triangle2 = Triangle<T, 2>;
-template <class T> using Triangle3 = Triangle<T, 3>;
+template <class T>
+using Triangle2 = Triangle<T, 2>;
+template <class T>
+using Triangle3 = Triangle<T, 3>;
 using Triangle2f = Triangle2<float>;
 using Triangle2d = Triangle2<double>;
 using Triangle3f = Triangle3<float>;

@@ -79,7 +79,7 @@ struct ExactAccumulator {
     for (int j = 0; j < m[k].count; ++j) {
       int ex = 0;
       if (m[k].f[j] < 0.0) sg = -sg;
-      const double fr = std::frexp(std::abs(m[k].f[j]), &ex);  // fr in [0.5, 1)
+      const double fr = std::frexp(std::abs(m[k].f[j]), &ex);          // fr in [0.5, 1)
       const auto mi = static_cast<std::uint64_t>(std::ldexp(fr, 53));  // exact 53-bit integer
       e += ex - 53;
       const std::uint32_t ml[2] = {static_cast<std::uint32_t>(mi),
@@ -120,7 +120,6 @@ struct ExactAccumulator {
   }
   return 0;
 }
-
 
 /// Exact sign of dot(b - a, d) (the order of a and b along direction d); inputs must be finite.
 /// A floating-point filter decides all but near-ties; the rest go to exact_sign_of_sum.
