@@ -40,7 +40,8 @@
 //    problems", FOCS 1976) over lexicographically (x, then y) sorted endpoints, with the
 //    sweep-line order decided by orient2d; at equal event points insertions come before
 //    deletions, so segments that only touch at an endpoint are neighbours at some moment and
-//    are tested. O(n log n) time, O(n) memory (the only allocating functions in this header).
+//    are tested. O(n log n) time, O(n) memory (the only allocating functions in this header;
+//    everything else is O(n) or O(1) without allocation).
 //  * Monotone polygon (fig 5.12) with respect to a direction d: the boundary splits into two
 //    chains, each monotone along d (non-strictly), i.e. the cyclic sequence of signs of
 //    dot(v[i+1] - v[i], d), zeros skipped, changes sign exactly twice. Simplicity is not
@@ -225,39 +226,60 @@ template <class T>
 
 /// Exact weak convexity (see the header comment).
 template <class T>
-[[nodiscard]] inline bool polygon_is_convex(std::span<const Vec2<T>> v) {
-  if (v.size() < 3 || !detail::all_finite(v)) return false;
-  const std::vector<std::size_t> d = detail::distinct_cycle(v);
-  const std::size_t m = d.size();
+[[nodiscard]] inline bool polygon_is_convex(std::span<const Vec2<T>> v) noexcept {
+  const std::size_t n = v.size();
+  if (n < 3 || !detail::all_finite(v)) return false;
+  // Walk the distinct vertices without allocating: start at the first vertex of a run of
+  // duplicates, and step to the first vertex of the next run.
+  std::size_t s = n;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(v[i] == v[(i + n - 1) % n])) {
+      s = i;
+      break;
+    }
+  if (s == n) return false;  // all vertices coincide
+  auto next = [&](std::size_t i) {
+    std::size_t j = (i + 1) % n;
+    while (v[j] == v[i]) j = (j + 1) % n;
+    return j;
+  };
+  std::size_t m = 0;
+  for (std::size_t c = s;;) {
+    ++m;
+    c = next(c);
+    if (c == s) break;
+  }
   if (m < 3) return false;
   int turn = 0;
-  for (std::size_t i = 0; i < m; ++i) {
-    const Vec2<T>& a = v[d[(i + m - 1) % m]];
-    const Vec2<T>& b = v[d[i]];
-    const Vec2<T>& c = v[d[(i + 1) % m]];
-    const int s = to_int(orient2d(a, b, c));
-    if (s == 0) {
+  std::size_t ia = s, ib = next(s), ic = next(ib);
+  for (std::size_t k = 0; k < m; ++k, ia = ib, ib = ic, ic = next(ic)) {
+    const Vec2<T>&a = v[ia], &b = v[ib], &c = v[ic];
+    const int t = to_int(orient2d(a, b, c));
+    if (t == 0) {
       if (detail::folds_back(a, b, c)) return false;
       continue;
     }
-    if (turn == 0)
-      turn = s;
-    else if (s != turn)
+    if (turn == 0) {
+      turn = t;
+    } else if (t != turn) {
       return false;
+    }
   }
   if (turn == 0) return false;  // all collinear
   // Winding number one: the x-direction of the edges changes sign exactly twice (each full
   // turn of a monotonically turning boundary contributes two changes).
   int changes = 0, first = 0, last = 0;
-  for (std::size_t i = 0; i < m; ++i) {
-    const Vec2<T>& a = v[d[i]];
-    const Vec2<T>& b = v[d[(i + 1) % m]];
-    const int sx = (b.x > a.x) - (b.x < a.x);
+  std::size_t i = s;
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t j = next(i);
+    const int sx = (v[j].x > v[i].x) - (v[j].x < v[i].x);
+    i = j;
     if (sx == 0) continue;
-    if (first == 0)
+    if (first == 0) {
       first = sx;
-    else if (sx != last)
+    } else if (sx != last) {
       ++changes;
+    }
     last = sx;
   }
   if (last != first) ++changes;
@@ -452,7 +474,7 @@ template <class T>
   return polygon_orientation(std::span<const Vec2<T>>(p.vertices));
 }
 template <class T>
-[[nodiscard]] inline bool is_convex(const Polygon2<T>& p) {
+[[nodiscard]] inline bool is_convex(const Polygon2<T>& p) noexcept {
   return polygon_is_convex(std::span<const Vec2<T>>(p.vertices));
 }
 template <class T>
