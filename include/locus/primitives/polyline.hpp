@@ -6,7 +6,8 @@
 // Polyline<T, N> {vertices, closed}: an owning vertex list; an open polyline has the n - 1
 // segments (v[i], v[i+1]); a closed one also the segment (v[n-1], v[0]) (a closed polyline is
 // a polygon's boundary). Every algorithm here also takes the vertices as
-// std::span<const Vec<T, N>> plus the `closed` flag, so any contiguous storage works.
+// std::span<const Vec<T, N>> plus the `closed` flag, so any contiguous storage works (from a
+// std::vector, name the types: polyline_length<double, 2>(vec, closed)).
 //
 // Parametrisations:
 //   vertex parameter: point_at(poly, t) for t in [0, segment_count]: segment i = floor(t) at
