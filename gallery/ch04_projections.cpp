@@ -9,6 +9,7 @@
 #include <locus/core/products.hpp>
 #include <locus/core/projection.hpp>
 #include <locus/core/transform.hpp>
+#include <locus/primitives/plane.hpp>
 
 #include <array>
 #include <cmath>
@@ -28,13 +29,12 @@ std::string fmt(double x, int prec = 3) {
   return buf;
 }
 
-// A rectangle of the plane through p with normal n, half-sizes a x b.
+// A rectangle of the plane through p with normal n, half-sizes a x b (locus::plane_frame).
 std::vector<Vec3d> plane_quad(const Vec3d& p, const Vec3d& n, double a, double b) {
-  Vec3d s = cross(n, Vec3d{0, 0, 1});
-  if (length(s) < 1e-9) s = cross(n, Vec3d{1, 0, 0});
-  s = normalize(s);
-  const Vec3d t = normalize(cross(n, s));
-  return {p - a * s - b * t, p + a * s - b * t, p + a * s + b * t, p - a * s + b * t};
+  const auto f = plane_frame(p, n);
+  if (!f) return {};
+  return {to_world(*f, Vec2d{-a, -b}), to_world(*f, Vec2d{a, -b}), to_world(*f, Vec2d{a, b}),
+          to_world(*f, Vec2d{-a, b})};
 }
 
 const std::vector<Vec3d> object3{
@@ -152,17 +152,17 @@ bool fig_4_31(SvgWriter& w) {
   return true;
 }
 
-// 4.32: the plane x + y = k with its normal (1, 1, 0).
+// 4.32: the plane x + y = k with its normal (1, 1, 0) (locus::Plane3, closest_to_origin).
 bool fig_4_32(SvgWriter& w) {
   w.set_camera(camera({6, 5, 3.5}));
-  const double k = 2.0;
-  const Vec3d n{1, 1, 0};
-  const Vec3d p0 = n * (k / dot(n, n));  // the point of the plane closest to the origin
+  const Plane3<double> pl{{1, 1, 0}, 2.0};  // n . X = k
+  const Vec3d p0 = closest_to_origin(pl);
   axes3(w, 2.6, c::gray);
-  closed(w, plane_quad(p0, n, 1.8, 1.2), filled(c::blue, 0.15, 1));
-  w.arrow(p0, p0 + normalize(n), pen(c::red));
-  label(w, p0 + normalize(n), "n = (1, 1, 0)", c::red);
-  point(w, p0, "x + y = " + fmt(dot(n, p0), 1), c::blue);
+  closed(w, plane_quad(p0, pl.normal, 1.8, 1.2), filled(c::blue, 0.15, 1));
+  w.arrow(p0, p0 + normalize(pl.normal), pen(c::red));
+  label(w, p0 + normalize(pl.normal), "n = (1, 1, 0)", c::red);
+  point(w, p0, "x + y = " + fmt(p0.x + p0.y, 1), c::blue);
+  w.segment(Vec3d{0, 0, 0}, p0, dashed(c::gray, 1));
   return true;
 }
 
@@ -216,7 +216,7 @@ std::vector<Figure> chapter4_projection_figures() {
       {"4.29", "perspective_projection, apply_projective", fig_4_29},
       {"4.30", "perspective_projection (2D), cross_ratio", fig_4_30},
       {"4.31", "perspective_projection (2D), lerp", fig_4_31},
-      {"4.32", "plane point closest to the origin, dot", fig_4_32},
+      {"4.32", "Plane3, closest_to_origin, plane_frame", fig_4_32},
       {"4.33", "scaling_axes, apply_vector vs apply_normal", fig_4_33},
       {"4.34", "normal_from_tangents (plain and transformed)", fig_4_34},
   };

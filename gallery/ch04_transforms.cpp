@@ -8,6 +8,7 @@
 #include <locus/core/frame.hpp>
 #include <locus/core/products.hpp>
 #include <locus/core/transform.hpp>
+#include <locus/primitives/plane.hpp>
 #include <locus/primitives/triangle.hpp>
 
 #include <array>
@@ -305,12 +306,11 @@ bool fig_4_19(SvgWriter& w) {
 bool fig_4_20(SvgWriter& w) {
   w.set_camera(camera({6, 4, 3}));
   const Vec3d p{0, 0, 0}, n{0.3, 1, 0.4};
-  const Frame3d pf{p,
-                   {normalize(cross(n, Vec3d{0, 0, 1})),
-                    normalize(cross(n, cross(n, Vec3d{0, 0, 1}))), normalize(n)}};
+  const auto pf = plane_frame(p, n);
+  if (!pf) return false;
   std::vector<Vec3d> quad;
   for (const Vec2d& s : {Vec2d{-2, -1.5}, Vec2d{2, -1.5}, Vec2d{2, 1.5}, Vec2d{-2, 1.5}})
-    quad.push_back(to_world_point(pf, Vec3d{s.x, s.y, 0}));
+    quad.push_back(to_world(*pf, s));
   closed(w, quad, filled(c::gray, 0.08, 1));
   w.arrow(p, p + normalize(n), pen(c::black, 1.4));
   label(w, p + normalize(n), "n", c::black);
@@ -413,7 +413,7 @@ std::vector<Figure> chapter4_transform_figures() {
       {"4.17", "reflection(point, normal) in 2D", fig_4_17},
       {"4.18", "reflection about the x axis", fig_4_18},
       {"4.19", "reflection_about_line in 3D", fig_4_19},
-      {"4.20", "reflection(point, normal) in 3D", fig_4_20},
+      {"4.20", "reflection(point, normal) in 3D, plane_frame", fig_4_20},
       {"4.21", "reflection_about_line in 2D", fig_4_21},
       {"4.22", "reflection(point, normal) of a tetrahedron", fig_4_22},
       {"4.23", "shear(point, dir, angle)", fig_4_23},
