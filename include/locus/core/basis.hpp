@@ -39,8 +39,10 @@
 // basis. is_right_handed is the sign of the rounded determinant (exact for well-conditioned
 // bases; use core/predicates.hpp orient3d for an exact orientation of points).
 //
-// Cost: Gram-Schmidt O(N K^2) flops, K square roots; complete_basis(Vec3) one division.
+// Cost: Gram-Schmidt O(N K^2) flops, about 2K square roots; complete_basis(Vec3) one square root
+// and two divisions.
 
+#include <locus/core/products.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -103,7 +105,7 @@ template <class T, int N, std::size_t K>
     if (!is_finite(v[static_cast<std::size_t>(i)])) f.finite = false;
   if (!f.finite) return f;
   for (int i = 0; i < KI; ++i) {
-    const Normalized<T, N> n = normalize_with_length(v[static_cast<std::size_t>(i)]);
+    const Normalized<T, N> n = unit_and_length(v[static_cast<std::size_t>(i)]);
     f.len[i] = n.length;
     f.q_of[i] = -1;
     Vec<T, N> w = n.dir;
@@ -230,11 +232,7 @@ template <Real T>
     r.status = Status::non_finite_input;
     return r;
   }
-  // Fast path: one square root when |d|^2 is a normal number; normalize() rescales otherwise.
-  const T s = sqr_length(d);
-  const Vec3<T> n = s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()
-                        ? d / std::sqrt(s)
-                        : normalize(d);
+  const Vec3<T> n = detail::unit_and_length(d).dir;
   if (n == Vec3<T>{}) {
     r.status = Status::degenerate_input;
     return r;
