@@ -223,6 +223,7 @@ TYPED_TEST(PlaneTest, NewellNormalIsTwiceAreaTimesNormal) {
     T area2 = 0;  // shoelace, twice the area
     for (int k = 0; k < n; ++k) area2 += perp_dot(p2[std::size_t(k)], p2[std::size_t((k + 1) % n)]);
     const auto nn = newell_normal(std::span<const Vec3<T>>(p3));
+    EXPECT_EQ(newell_normal(p3.data(), p3.size()), nn);
     EXPECT_TRUE(vec_near(nn, area2 * f->normal, tol<T>(256, 10)));
     const auto bp = best_fit_plane_newell(std::span<const Vec3<T>>(p3));
     ASSERT_TRUE(bp.has_value());

@@ -315,3 +315,38 @@ TYPED_TEST(QuadricTest, SignedValueMatchesDefinition) {
     EXPECT_NEAR(double(signed_value(q, x)), ref, double(tol<T>(64, coefficient_scale(q) * 16)));
   }
 }
+
+TYPED_TEST(QuadricTest, QuadricSolidsConvertToTheirClass) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const T rel_tol = tol<T>(1024);
+  for (int trial = 0; trial < 100; ++trial) {
+    const Vec3<T> c = rng.vec<T, 3>(-3, 3), d = rng.unit<T, 3>();
+    const Sphere3<T> s{c, rng.uniform<T>(T(0.5), 2)};
+    const Cylinder3<T> cy{{c, d}, rng.uniform<T>(T(0.5), 2), T(1)};
+    const Cone3<T> co{c, d, rng.uniform<T>(T(0.2), T(1.3)), 0, T(1)};
+    Ellipsoid3<T> e{
+        c, {}, {rng.uniform<T>(T(0.5), 2), rng.uniform<T>(T(0.5), 2), rng.uniform<T>(T(0.5), 2)}};
+    const auto pb = perpendicular_basis(d);
+    e.axis[0] = d, e.axis[1] = pb.u, e.axis[2] = pb.v;
+    EXPECT_EQ(classify(to_quadric(s), rel_tol).type, QuadricType::ellipsoid);
+    EXPECT_EQ(classify(to_quadric(e), rel_tol).type, QuadricType::ellipsoid);
+    EXPECT_EQ(classify(to_quadric(cy), rel_tol).type, QuadricType::elliptic_cylinder);
+    EXPECT_EQ(classify(to_quadric(co), rel_tol).type, QuadricType::elliptic_cone);
+    // The general form evaluates to the solid's own implicit function.
+    const Vec3<T> x = rng.vec<T, 3>(-4, 4);
+    const T scale = T(100);  // |x - c|^2 <= 7^2 * 3 plus radii: terms of size ~100
+    EXPECT_NEAR(signed_value(to_quadric(s), x), signed_value(s, x), tol<T>(64, scale));
+    EXPECT_NEAR(signed_value(to_quadric(e), x), signed_value(e, x), tol<T>(64, 4 * scale));
+    EXPECT_NEAR(signed_value(to_quadric(cy), x), signed_value(cy, x), tol<T>(64, scale));
+    EXPECT_NEAR(signed_value(to_quadric(co), x), signed_value(co, x), tol<T>(64, scale));
+  }
+  // Exactly representable solids classify exactly.
+  EXPECT_EQ(classify(to_quadric(Sphere3<T>{{1, -2, 3}, 2})).type, QuadricType::ellipsoid);
+  EXPECT_EQ(classify(to_quadric(Sphere3<T>{{1, -2, 3}, 0})).type, QuadricType::point);
+  EXPECT_EQ(classify(to_quadric(Cylinder3<T>{{{1, 2, 3}, {0, 1, 0}}, 3, 1})).type,
+            QuadricType::elliptic_cylinder);
+  EXPECT_EQ(classify(to_quadric(Cylinder3<T>{{{1, 2, 3}, {0, 1, 0}}, 0, 1})).type,
+            QuadricType::line);
+}

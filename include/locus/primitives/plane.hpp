@@ -40,6 +40,7 @@
 #include <locus/primitives/triangle.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <optional>
 #include <span>
@@ -213,6 +214,12 @@ template <class T>
   return n;
 }
 
+/// Newell's normal of the n vertices starting at p.
+template <class T>
+[[nodiscard]] constexpr Vec3<T> newell_normal(const Vec3<T>* p, std::size_t n) noexcept {
+  return newell_normal(std::span<const Vec3<T>>(p, n));
+}
+
 /// The plane with Newell's normal through the vertex average; std::nullopt when the normal is
 /// zero or not finite (fewer than 3 points, all collinear, or zero net area).
 template <class T>
@@ -224,6 +231,13 @@ template <class T>
   const T w = T(1) / static_cast<T>(p.size());
   for (const auto& q : p) mean += w * q;
   return plane_from_point_normal(mean, n);
+}
+
+/// best_fit_plane_newell of the n vertices starting at p.
+template <class T>
+[[nodiscard]] inline std::optional<Plane3<T>> best_fit_plane_newell(const Vec3<T>* p,
+                                                                    std::size_t n) noexcept {
+  return best_fit_plane_newell(std::span<const Vec3<T>>(p, n));
 }
 
 }  // namespace locus

@@ -23,11 +23,12 @@
 // minors; Descartes' rule of signs is exact for the real-rooted characteristic polynomial of a
 // symmetric matrix), evaluated exactly with floating-point expansion arithmetic (error-free
 // two-sum and fma two-product, written after Shewchuk's paper; fma keeps it immune to
-// -ffp-contract). The coefficients are first scaled by a power of two (sign-preserving, since
-// every invariant is homogeneous). The result is exact whenever every nonzero coefficient has
-// its unit in the last place >= 2^-268 times the largest coefficient's scale (about 2^-215
-// relative magnitude) - always for float input; otherwise some product may underflow and
-// `exact` is false (the answer is still computed the same way).
+// -ffp-contract, but like all error-free transformations it is invalid under -ffast-math). The
+// coefficients are first scaled by a power of two (sign-preserving, since every invariant is
+// homogeneous). The result is exact whenever every nonzero coefficient has its unit in the last
+// place >= 2^-268 times the largest coefficient's scale (about 2^-215 relative magnitude) - always
+// for float input; otherwise some product may underflow and `exact` is false (the answer is still
+// computed the same way).
 //
 // classify(q, rel_tol) is the tolerance-based alternative for coefficients that carry rounding
 // error (e.g. a cone transformed in floating point is exactly a hyperboloid): after scaling
@@ -47,6 +48,13 @@
 // d, k) are rounded and computed in compute_t<T> (double for float). The eigenvectors come from
 // ellipsoid.hpp's detail::symmetric_eigen3 (cyclic Jacobi). to_quadric(form) converts back.
 //
+// The quadric solids convert to general form with to_quadric(): sphere |X - C|^2 - r^2,
+// ellipsoid (X - C)^T M (X - C) - 1, infinite cylinder |X - C|^2 - dot(D, X - C)^2 - r^2 and
+// infinite double cone cos^2(a) |X - V|^2 - dot(D, X - V)^2; signed_value() of the result equals
+// signed_value() of the solid (up to rounding), so "negative inside" carries over. The height
+// range of a finite cylinder or cone is not part of a quadric. The coefficients are rounded, so
+// classify the result with the tolerance overload (a rounded cone is exactly a hyperboloid).
+//
 // Degenerate input: NaN or infinite coefficients give status non_finite_input and type
 // QuadricType::invalid. Cost: classify(q) evaluates 13 exact principal minors (a few thousand
 // flops, no allocation; the expansions live on the stack, about 2 KB each).
@@ -56,8 +64,11 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/primitives/cone.hpp>
+#include <locus/primitives/cylinder.hpp>
 #include <locus/primitives/ellipsoid.hpp>
 #include <locus/primitives/plane.hpp>
+#include <locus/primitives/sphere.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -555,6 +566,42 @@ template <class T>
   const Vec3<T> re = r * f.linear;
   const Vec3<T> ap = a * f.center;
   return {a, re - T(2) * ap, dot(f.center, ap) - dot(re, f.center) + f.constant};
+}
+
+namespace detail {
+/// x^T A x + b.x + c for A symmetric, re-centred at p: A, -2 A p, p^T A p + c.
+template <class T>
+[[nodiscard]] constexpr Quadric3<T> quadric_about(const Mat3<T>& a, const Vec3<T>& p,
+                                                  T c) noexcept {
+  const Vec3<T> ap = a * p;
+  return {a, T(-2) * ap, dot(p, ap) + c};
+}
+}  // namespace detail
+
+/// |X - C|^2 - r^2 in general form.
+template <class T>
+[[nodiscard]] constexpr Quadric3<T> to_quadric(const Sphere3<T>& s) noexcept {
+  return detail::quadric_about(Mat3<T>::identity(), s.center, -s.radius * s.radius);
+}
+
+/// (X - C)^T M (X - C) - 1 in general form (M = implicit_matrix(e)).
+template <class T>
+[[nodiscard]] constexpr Quadric3<T> to_quadric(const Ellipsoid3<T>& e) noexcept {
+  return detail::quadric_about(implicit_matrix(e), e.center, T(-1));
+}
+
+/// |X - C|^2 - dot(D, X - C)^2 - r^2 (the infinite cylinder) in general form.
+template <class T>
+[[nodiscard]] constexpr Quadric3<T> to_quadric(const Cylinder3<T>& c) noexcept {
+  const Mat3<T> a = Mat3<T>::identity() - outer(c.axis.direction, c.axis.direction);
+  return detail::quadric_about(a, c.axis.origin, -c.radius * c.radius);
+}
+
+/// cos^2(a) |X - V|^2 - dot(D, X - V)^2 (the infinite double cone) in general form.
+template <class T>
+[[nodiscard]] inline Quadric3<T> to_quadric(const Cone3<T>& c) noexcept {
+  const Mat3<T> a = Mat3<T>::identity() * sqr(std::cos(c.angle)) - outer(c.axis, c.axis);
+  return detail::quadric_about(a, c.vertex, T(0));
 }
 
 }  // namespace locus
