@@ -58,6 +58,21 @@
 #include <cstdint>
 #include <type_traits>
 
+// orient2d's filter packs its two products into one SSE2 register where available (always on
+// x86-64): the same IEEE operations on the same operands, so bit-identical to the scalar code,
+// with fewer instructions on the hot path.
+// Define LOCUS_PREDICATES_SSE2 to 0 to force the scalar code.
+#if !defined(LOCUS_PREDICATES_SSE2)
+#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#define LOCUS_PREDICATES_SSE2 1
+#else
+#define LOCUS_PREDICATES_SSE2 0
+#endif
+#endif
+#if LOCUS_PREDICATES_SSE2
+#include <emmintrin.h>
+#endif
+
 namespace locus {
 
 /// The sign of a predicate's determinant.
@@ -122,20 +137,30 @@ template <class T, int N>
   return r;
 }
 
-/// The sign of a nonzero, non-NaN x, from its sign bit (branch-free; data-dependent branches on
-/// random input cost more than the whole filter).
+/// The sign of a nonzero, non-NaN x, branch-free (a data-dependent branch on random input
+/// costs more than the whole filter): one compare and 2 b - 1.
 [[nodiscard]] inline Sign nonzero_sign(double x) noexcept {
-  return static_cast<Sign>(1 - 2 * static_cast<int>(std::signbit(x)));
+  return static_cast<Sign>(2 * static_cast<int>(x > 0.0) - 1);
 }
 
 // The filters. Strict comparisons: with a non-finite input the bound is +inf or NaN, so no
 // determinant can pass and the fallback reports zero.
 [[nodiscard]] inline Sign orient2d_filtered(const Vec2<double>& a, const Vec2<double>& b,
                                             const Vec2<double>& c) noexcept {
+#if LOCUS_PREDICATES_SSE2
+  static_assert(sizeof(Vec2<double>) == 2 * sizeof(double), "Vec2 must be two packed doubles");
+  const __m128d ac = _mm_sub_pd(_mm_loadu_pd(&a.x), _mm_loadu_pd(&c.x));  // (acx, acy)
+  const __m128d bc = _mm_sub_pd(_mm_loadu_pd(&b.x), _mm_loadu_pd(&c.x));  // (bcx, bcy)
+  const __m128d products = _mm_mul_pd(ac, _mm_shuffle_pd(bc, bc, 1));    // (acx bcy, acy bcx)
+  const __m128d high = _mm_unpackhi_pd(products, products);
+  const double left = _mm_cvtsd_f64(products);
+  const double right = _mm_cvtsd_f64(high);
+#else
   const double acx = a.x - c.x, bcx = b.x - c.x;
   const double acy = a.y - c.y, bcy = b.y - c.y;
   const double left = acx * bcy;
   const double right = acy * bcx;
+#endif
   const double det = left - right;
   // The paper's bound is c (|left| + |right|). When left and right share a sign that equals
   // c |left + right| (rounding is symmetric); when they differ, det cannot change sign and any
