@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Circular arcs in the plane; row prim2.quadratic (arcs); book section 5.2.3 (arcs of circles,
+// Circular arcs in the plane; row prim2.quadratic (arcs); book section 5.5.1 (arcs of circles,
 // parametrised by an angle interval).
 //
 // Arc2<T> {circle, start, sweep}: the points point_at(circle, a) for angles a in

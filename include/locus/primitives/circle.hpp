@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Circles in the plane, circles and disks in 3D; row prim2.quadratic (circle part); book
-// section 5.2.3, figure 5.15 (distance/implicit and parametric forms), and 9.2.3 (2D objects in
+// section 5.5.1, figure 5.15 (distance/implicit and parametric forms), and 9.2.3 (2D objects in
 // a plane of 3D).
 //
 // Circle2<T> {center, radius}: implicit form |X - center|^2 - radius^2 = 0, evaluated (rounded)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Ellipses in the plane and elliptical arcs; row prim2.quadratic (ellipse part); book section
-// 5.2.4, figure 5.16.
+// 5.5.2, figure 5.16.
 //
 // Axis form Ellipse2<T> {center, axis[2], extent[2]} (fig 5.16): unit orthogonal axes and
 // positive half-axis lengths; the curve is { center + extent[0] cos(a) axis[0] +

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Lines in N dimensions (parametric form) and in 2D (implicit form); rows prim2.linear and
-// prim3.linear; book section 5.1.1, figures 5.1(a) and 5.2.
+// prim3.linear; book section 5.1 (linear components), figures 5.1(a) and 5.2.
 //
 // Parametric form Line<T, N> {origin, direction}: the point set { origin + t * direction, t in R }.
 // The direction need not be unit length; point_at(line, t) = origin + t * direction, so t is

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Polygons in the plane: area, orientation, convexity, simplicity, monotonicity, centroid;
-// row prim2.polyline (polygon part); book section 5.1.4-5.1.5, figures 5.9 (simple concave and
+// row prim2.polyline (polygon part); book section 5.4, figures 5.9 (simple concave and
 // convex polygons), 5.10 (nonsimple polygons: crossing edges, a shared vertex), 5.12 (a monotone
 // polygon split into two monotone chains).
 //

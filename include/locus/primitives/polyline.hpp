@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Polylines (polygonal chains) in N dimensions and monotone chains; row prim2.polyline; book
-// section 5.1.4, figures 5.8 (a polyline) and 5.11 (strictly monotone and monotone chains).
+// section 5.4, figures 5.8 (a polyline) and 5.11 (strictly monotone and monotone chains).
 //
 // Polyline<T, N> {vertices, closed}: an owning vertex list; an open polyline has the n - 1
 // segments (v[i], v[i+1]); a closed one also the segment (v[n-1], v[0]) (a closed polyline is

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // General quadratic curves (conics) in the plane: classification and conversions; row
-// prim2.quadratic; book section 5.2.2-5.2.4, figures 5.13, 5.14 (solution sets by the signs of
+// prim2.quadratic; book section 5.5 (quadratic curves), figures 5.13, 5.14 (solution sets by the signs of
 // the eigenvalues d0, d1 and of r), 5.15 (circles), 5.16 (ellipses).
 //
 // QuadraticCurve2<T> {a, b, c, d, e, f} is the point set

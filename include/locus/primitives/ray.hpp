@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Rays in N dimensions; rows prim2.linear and prim3.linear; book section 5.1.1, figure 5.1(b).
+// Rays in N dimensions; rows prim2.linear and prim3.linear; book section 5.1, figure 5.1(b).
 //
 // Ray<T, N> {origin, direction}: the point set { origin + t * direction, t >= 0 }. The direction
 // need not be unit length; point_at(ray, t) = origin + t * direction for t >= 0 (t < 0 is not

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Rectangles in the plane and embedded in 3D (N = 2 or 3); row prim2.rectangle; book section
-// 5.1.3, figures 5.6 (parametric form) and 5.7 (symmetric form).
+// 5.3, figures 5.6 (parametric form) and 5.7 (symmetric form).
 //
 // Symmetric form Rectangle<T, N> {center, axis[2], extent[2]} (fig 5.7): axis[0], axis[1] unit
 // and orthogonal, extent[i] >= 0 the half side lengths; the point set is

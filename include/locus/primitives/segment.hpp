@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Line segments in N dimensions, endpoint and center-direction-extent forms; rows prim2.linear
-// and prim3.linear; book section 5.1.1, figure 5.1(c).
+// and prim3.linear; book section 5.1, figure 5.1(c).
 //
 // Endpoint form Segment<T, N> {p0, p1}: the point set { (1 - t) p0 + t p1 : t in [0, 1] }.
 // point_at(seg, t) evaluates (1 - t) p0 + t p1 (mathematically p0 + t (p1 - p0)); this form is

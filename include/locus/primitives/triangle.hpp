@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Triangles in N dimensions; row prim2.triangle (and the 3D triangle used by prim3); book
-// section 5.1.2, figures 5.3 (orderings), 5.4 (parametric form), 5.5 (barycentric form).
+// section 5.2, figures 5.3 (orderings), 5.4 (parametric form), 5.5 (barycentric form).
 //
 // Triangle<T, N> {v0, v1, v2}: three vertices, also reachable as tri[0..2]. Two
 // parametrisations:
