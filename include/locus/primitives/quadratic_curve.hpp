@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // General quadratic curves (conics) in the plane: classification and conversions; row
-// prim2.quadratic; book section 5.5 (quadratic curves), figures 5.13, 5.14 (solution sets by the signs of
-// the eigenvalues d0, d1 and of r), 5.15 (circles), 5.16 (ellipses).
+// prim2.quadratic; book section 5.5 (quadratic curves), figures 5.13, 5.14 (solution sets by the
+// signs of the eigenvalues d0, d1 and of r), 5.15 (circles), 5.16 (ellipses).
 //
 // QuadraticCurve2<T> {a, b, c, d, e, f} is the point set
 //   { (x, y) : a x^2 + b x y + c y^2 + d x + e y + f = 0 },
