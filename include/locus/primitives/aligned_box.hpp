@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Axis-aligned boxes in N dimensions (AABB); row prim3.solids (and the 2D aligned rectangle);
-// book section 9.3 / figure 9.21 list of solids, and the bounding boxes of chapter 13.
+// the solid primitives the book uses in chapters 10-11 and the bounding boxes of chapter 13.
 //
 // AlignedBox<T, N> {min, max} is the closed set { X : min[i] <= X[i] <= max[i] for all i }.
 // Empty-box convention: a box is empty when min[i] > max[i] for some i (or a bound is NaN);

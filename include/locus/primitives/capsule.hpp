@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Capsules (sphere-swept segments; "stadiums" in 2D); row prim3.solids; figure 9.21's list of
-// solids (the capsule of the book's distance and intersection chapters).
+// Capsules (sphere-swept segments; "stadiums" in 2D); row prim3.solids (the capsule of
+// the book's distance and intersection chapters).
 //
 // Capsule<T, N> {segment, radius} is the set of points within distance radius of the segment
 // (prim2's Segment {p0, p1}). Capsule3<T> is the 3D case.

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Right circular cones: finite, infinite, truncated (frustum of a cone) and double; row
-// prim3.solids; book section 9.4.1 (the elliptic cone quadric, figure 9.18) and figure 9.21's
-// list of solids.
+// prim3.solids; book section 9.4.1 (the elliptic cone quadric, figure 9.18) and the cone
+// representations of chapter 11 (figures 11.13-11.16: acute cone, acute double cone).
 //
 // Cone3<T> {vertex V, axis D (unit, precondition), angle alpha (half-angle, in (0, pi/2)),
 // min_height, max_height}. With the height h = dot(D, X - V) of a point, the solid is

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Right circular cylinders, finite and infinite; row prim3.solids; book section 9.4.2 (the
-// elliptic cylinder quadric, figure 9.19) and figure 9.21's list of solids.
+// elliptic cylinder quadric, figure 9.19) and the cylinder representations of
+// chapter 11 (figures 11.11, 11.12).
 //
 // Cylinder3<T> {axis, radius, height}: axis.origin is the CENTER of the cylinder and
 // axis.direction its unit direction D (precondition). The solid is

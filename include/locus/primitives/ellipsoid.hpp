@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Ellipsoids in 3D in axis form and implicit matrix form; row prim3.solids; book section 9.4.1
-// (the quadric with three positive eigenvalues, figure 9.18) and figure 9.21's list of solids.
+// (the quadric with three positive eigenvalues, figure 9.18).
 //
 // Axis form Ellipsoid3<T> {center, axis[3], extent}: the surface
 //   { C + sum_i u_i extent[i] axis[i] : |u| = 1 },

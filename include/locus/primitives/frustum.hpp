@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Orthogonal view frusta in 3D and 2D; row prim3.solids; the book's orthogonal frustum of the
-// distance chapters (figure 10.23 in 3D, the 2D frustum of figure 6.11) and figure 9.21's list
-// of solids.
+// distance chapters (figure 10.23 in 3D; the 2D orthogonal frustum of figure 6.11(c)).
 //
 // Frustum3<T> {origin E, direction D, up U, right R, d_min n, d_max f, u_bound u, r_bound r}:
 // D, U, R orthonormal (precondition; handedness free), 0 < n < f, u, r > 0. The near face is

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Oriented boxes in N dimensions (OBB); row prim3.solids; book figure 9.21 list of solids and
-// the symmetric (center-axes-extents) form of the rectangle, section 5.1.3 / 9.2.3.
+// Oriented boxes in N dimensions (OBB); row prim3.solids; the solid primitives of the book's
+// chapters 10-11 and the symmetric (center-axes-extents) form of the rectangle, section 5.1.3
+// / 9.2.3.
 //
 // OrientedBox<T, N> {center, axis[N], extent} is the set
 //   { center + sum_i s_i extent[i] axis[i] : s in [-1, 1]^N },

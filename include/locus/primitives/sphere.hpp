@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Spheres (and N-dimensional hyperspheres); row prim3.solids; book sections 9.4.1 (the sphere
-// as the quadric |X - C|^2 = r^2) and figure 9.21's list of solids.
+// as the quadric |X - C|^2 = r^2).
 //
 // Sphere<T, N> {center, radius} is the surface { X : |X - C| = r } bounding the ball
 // { X : |X - C| <= r }; Sphere3<T> is the 3D case (a Sphere<T, 2> is a circle; prim2's

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Tetrahedra; row prim3.solids; book section 9.3 (polyhedra; the tetrahedron of figures 9.11
-// and 9.17) and figure 9.21's list of solids.
+// and 9.17, and the point-tetrahedron distance of figure 10.20).
 //
 // Tetrahedron3<T> {v[4]}. Orientation: orientation(tet) is the EXACT sign of
 // orient3d(v0, v1, v2, v3) (core/predicates.hpp): positive when v3 lies on the side of the plane
