@@ -221,6 +221,13 @@ TYPED_TEST(BasisTest, Fig3_16RightHandedness) {
   EXPECT_FALSE(is_right_handed(y, x, z));
   EXPECT_FALSE(is_right_handed(x, y, -z));
   EXPECT_FALSE(is_right_handed(x, y, x));  // degenerate: not right-handed
+  // det = (1 + e)^2 - (1 + 2e) = e^2 > 0 exactly, while the rounded determinant is 0.
+  const T e = eps_v<T>;
+  const Vec3<T> b{0, T(1) + e, T(1) + T(2) * e}, c{0, T(1), T(1) + e};
+  EXPECT_TRUE(is_right_handed(x, b, c));
+  EXPECT_FALSE(is_right_handed(x, c, b));
+  EXPECT_TRUE(is_right_handed(Vec2<T>{T(1) + e, T(1) + T(2) * e}, Vec2<T>{T(1), T(1) + e}));
+  EXPECT_FALSE(is_right_handed(x, y, Vec3<T>{0, 0, std::numeric_limits<T>::quiet_NaN()}));
   EXPECT_TRUE(is_right_handed(Vec2<T>{1, 0}, Vec2<T>{0, 1}));
   EXPECT_FALSE(is_right_handed(Vec2<T>{0, 1}, Vec2<T>{1, 0}));
   EXPECT_TRUE(is_orthonormal(std::array<Vec3<T>, 3>{x, y, z}));

@@ -36,12 +36,13 @@
 // basis: from a zero or non-finite vector the standard basis with status degenerate_input /
 // non_finite_input; from two dependent vectors the completion of the first non-zero one with
 // status degenerate_input. basis_coordinates returns std::nullopt for a dependent or non-finite
-// basis. is_right_handed is the sign of the rounded determinant (exact for well-conditioned
-// bases; use core/predicates.hpp orient3d for an exact orientation of points).
+// basis. is_right_handed is the exact sign of the determinant (core/predicates.hpp): false for
+// dependent, NaN or infinite vectors.
 //
 // Cost: Gram-Schmidt O(N K^2) flops, about 2K square roots; complete_basis(Vec3) one square root
 // and two divisions.
 
+#include <locus/core/predicates.hpp>
 #include <locus/core/products.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -182,16 +183,17 @@ template <Real T, int N>
   return gram_schmidt(std::array<Vec<T, N>, 3>{a, b, c}, tol).status == Status::ok;
 }
 
-/// True when (a, b) is counter-clockwise (perp_dot(a, b) > 0).
+/// True when (a, b) is counter-clockwise: perp_dot(a, b) > 0, decided exactly (orient2d).
 template <Real T>
-[[nodiscard]] constexpr bool is_right_handed(const Vec2<T>& a, const Vec2<T>& b) noexcept {
-  return perp_dot(a, b) > T(0);
+[[nodiscard]] inline bool is_right_handed(const Vec2<T>& a, const Vec2<T>& b) noexcept {
+  return orient2d(Vec2<T>{T(0), T(0)}, a, b) == Sign::positive;
 }
-/// True when (a, b, c) is right-handed: a . (b x c) > 0 (rounded; see the header comment).
+/// True when (a, b, c) is right-handed: a . (b x c) > 0, decided exactly (orient3d).
 template <Real T>
-[[nodiscard]] constexpr bool is_right_handed(const Vec3<T>& a, const Vec3<T>& b,
-                                             const Vec3<T>& c) noexcept {
-  return dot(a, cross(b, c)) > T(0);
+[[nodiscard]] inline bool is_right_handed(const Vec3<T>& a, const Vec3<T>& b,
+                                          const Vec3<T>& c) noexcept {
+  // orient3d(0, a, b, c) = sign det[a; b; c]; the differences with the origin are exact.
+  return orient3d(Vec3<T>{T(0), T(0), T(0)}, a, b, c) == Sign::positive;
 }
 
 /// True when |v_i . v_j - delta_ij| <= tol for all pairs (unit length and mutually orthogonal).
