@@ -267,46 +267,104 @@ TYPED_TEST(SvgTyped, AutomaticViewContainsEveryEmittedCoordinate) {
                      static_cast<T>(off.y + rng.uniform(-1.0, 1.0) * scale)};
     };
     auto rr = [&]() { return static_cast<T>(rng.uniform(0.05, 0.5) * scale); };
-    SvgWriter w;
+    // w gets everything; g only the bounded geometry without markers, arrow heads or labels,
+    // whose extent the fitted view must match exactly.
+    SvgWriter w, g;
     for (int i = 0; i < 3; ++i) {
       w.point(rp());
-      w.segment(rp(), rp());
       w.arrow(rp(), rp());
       w.line(rp(), rp() - rp());
       w.ray(rp(), rp() - rp());
-      w.polyline(std::vector<Vec2<T>>{rp(), rp(), rp(), rp()});
-      w.polygon(std::vector<Vec2<T>>{rp(), rp(), rp()},
-                std::vector<std::vector<Vec2<T>>>{{rp(), rp(), rp()}}, SvgStyle{});
-      w.circle(rp(), rr());
-      w.ellipse(rp(), rp() - rp(), rr(), rr());
-      w.arc(rp(), rr(), static_cast<T>(rng.uniform(-7.0, 7.0)),
-            static_cast<T>(rng.uniform(-7.0, 7.0)));
       w.text(rp(), "t");
+      const Vec2<T> s0 = rp(), s1 = rp();
+      const std::vector<Vec2<T>> pl{rp(), rp(), rp(), rp()};
+      const std::vector<Vec2<T>> outer{rp(), rp(), rp()};
+      const std::vector<std::vector<Vec2<T>>> holes{{rp(), rp(), rp()}};
+      const Vec2<T> cc = rp(), ec = rp(), ea = rp() - rp(), ac = rp();
+      const T cr = rr(), e0 = rr(), e1 = rr(), ar = rr();
+      const T a0 = static_cast<T>(rng.uniform(-7.0, 7.0)),
+              a1 = static_cast<T>(rng.uniform(-7.0, 7.0));
+      for (SvgWriter* x : {&w, &g}) {
+        x->segment(s0, s1);
+        x->polyline(pl);
+        x->polygon(outer, holes, SvgStyle{});
+        x->circle(cc, cr);
+        x->ellipse(ec, ea, e0, e1);
+      }
+      w.arc(ac, ar, a0, a1);  // covered_points sees only an arc's end points
     }
     const Node root = parse_or_fail(w.to_string());
     const double W = num(root, "width"), H = num(root, "height");
-    const double m = w.options().margin;
-    double minx = 1e300, maxx = -1e300, miny = 1e300, maxy = -1e300;
     for (const Node* n : elements(root)) {
       for (const Vec2d& q : covered_points(*n)) {
         EXPECT_GE(q.x, -kPx) << n->tag;
         EXPECT_LE(q.x, W + kPx) << n->tag;
         EXPECT_GE(q.y, -kPx) << n->tag;
         EXPECT_LE(q.y, H + kPx) << n->tag;
-        if (n->tag == "rect" || n->tag == "text") continue;  // background, labels
+      }
+    }
+    // The bounded geometry alone: inside the inner box [m, W - m] x [m, H - m] and touching
+    // both of its sides along the limiting axis (so the view is fitted, not merely enclosing).
+    const Node groot = parse_or_fail(g.to_string());
+    const double gw = num(groot, "width"), gh = num(groot, "height");
+    const double m = g.options().margin;
+    double minx = 1e300, maxx = -1e300, miny = 1e300, maxy = -1e300;
+    for (const Node* n : elements(groot)) {
+      if (n->tag == "rect") continue;  // background
+      for (const Vec2d& q : covered_points(*n)) {
         minx = std::min(minx, q.x);
         maxx = std::max(maxx, q.x);
         miny = std::min(miny, q.y);
         maxy = std::max(maxy, q.y);
       }
     }
-    // Markers and arrow heads stick out by a few pixels; the geometry itself spans the full
-    // width or height of the inner box.
-    const bool x_tight = maxx - minx >= W - 2 * m - 2 * kPx;
-    const bool y_tight = maxy - miny >= H - 2 * m - 2 * kPx;
-    EXPECT_TRUE(x_tight || y_tight)
-        << W << " x " << H << " extent " << (maxx - minx) << " x " << (maxy - miny);
+    // Circles and ellipses cover their exact bounding boxes (from the printed attributes).
+    const double tol = 4 * kPx;
+    EXPECT_NEAR(minx, m, tol);
+    EXPECT_NEAR(maxx, gw - m, tol);
+    EXPECT_NEAR(miny, m, tol);
+    EXPECT_NEAR(maxy, gh - m, tol);
+    const bool x_full = gw - 2 * m >= g.options().max_width - kPx;
+    const bool y_full = gh - 2 * m >= g.options().max_height - kPx;
+    EXPECT_TRUE(x_full || y_full) << gw << " x " << gh;
   }
+}
+
+// A long label at the right edge grows the canvas (the scale stays): its estimated extent,
+// 0.6 em per character, fits the document, and the geometry keeps its pixel positions.
+TEST(Svg, LabelsGrowTheCanvas) {
+  SvgOptions o;
+  o.background = "none";
+  SvgWriter plain(o), labelled(o);
+  for (SvgWriter* w : {&plain, &labelled}) w->segment(Vec2d{0, 0}, Vec2d{4, 2});
+  SvgStyle ts;
+  ts.font_size = 20;
+  ts.text_dx = 0;
+  ts.text_dy = 0;
+  const std::string text = "a label much longer than the margin";
+  labelled.text(Vec2d{4, 2}, text, ts);  // anchored at the top-right corner of the drawing
+  ts.anchor = SvgAnchor::end;
+  labelled.text(Vec2d{0, 0}, "left\u00b7label", ts);  // the middle dot counts as one character
+  const Node a = parse_or_fail(plain.to_string());
+  const Node b = parse_or_fail(labelled.to_string());
+  const double wa = num(a, "width"), wb = num(b, "width"), hb = num(b, "height");
+  EXPECT_GT(wb, wa);
+  const auto texts = elements(b, "text");
+  ASSERT_EQ(texts.size(), 2u);
+  const double x0 = num(*texts[0], "x"), y0 = num(*texts[0], "y");
+  EXPECT_LE(x0 + 0.6 * 20 * static_cast<double>(text.size()), wb + kPx);
+  EXPECT_GE(y0 - 0.8 * 20, -kPx);
+  const double x1 = num(*texts[1], "x");
+  EXPECT_GE(x1 - 0.6 * 20 * 10, -kPx);
+  EXPECT_LE(num(*texts[1], "y"), hb + kPx);
+  // Same scale: the segment has the same pixel length in both documents.
+  const auto la = elements(a, "line"), lb = elements(b, "line");
+  ASSERT_EQ(la.size(), 1u);
+  ASSERT_EQ(lb.size(), 1u);
+  EXPECT_NEAR(num(*la[0], "x2") - num(*la[0], "x1"), num(*lb[0], "x2") - num(*lb[0], "x1"), kPx);
+  EXPECT_NEAR(num(*la[0], "y2") - num(*la[0], "y1"), num(*lb[0], "y2") - num(*lb[0], "y1"), kPx);
+  // The segment's start is pushed right by the left label's extent.
+  EXPECT_GT(num(*lb[0], "x1"), num(*la[0], "x1"));
 }
 
 TEST(Svg, EllipseBoundsAreExact) {
