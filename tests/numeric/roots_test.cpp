@@ -428,3 +428,48 @@ TYPED_TEST(RootsTest, InvariantUnderNegatingTheVariableAndScalingThePolynomial) 
     }
   }
 }
+
+TYPED_TEST(RootsTest, ToleranceOptionsTurnNearTangenciesIntoDoubleRoots) {
+  using T = TypeParam;
+  // (x - 1)^2 + d and (x - 1)^2 - d, d = 2^-20 (exact in float and double): by default a miss and
+  // two roots 1 +- 2^-10; told that the constant term is only known to 2^-18, both are a double
+  // root at 1.
+  const T d = std::ldexp(T(1), -20);
+  const auto miss = solve_quadratic(T(1) + d, T(-2), T(1));
+  EXPECT_EQ(miss.count, 0);
+  const auto two = solve_quadratic(T(1) - d, T(-2), T(1));
+  ASSERT_EQ(two.count, 2);
+  EXPECT_NEAR(two.roots[0].value, T(1) - std::ldexp(T(1), -10), tol<T>(4));
+  EXPECT_NEAR(two.roots[1].value, T(1) + std::ldexp(T(1), -10), tol<T>(4));
+  const double err[3] = {std::ldexp(1.0, -18), 0, 0};
+  RootOptions opt;
+  opt.coefficient_error = err;
+  for (const auto& r : {solve_quadratic(T(1) + d, T(-2), T(1), opt), solve_quadratic(T(1) - d, T(-2), T(1), opt)}) {
+    ASSERT_EQ(r.count, 1);
+    EXPECT_EQ(r.roots[0].multiplicity, 2);
+    EXPECT_NEAR(r.roots[0].value, T(1), tol<T>(4));
+  }
+  // The relative form: |p(1)| = 2^-20 against 2^-16 * sum |a_i| = 2^-14.
+  RootOptions rel;
+  rel.multiplicity_tolerance = std::ldexp(1.0, -16);
+  const auto r = solve_quadratic(T(1) + d, T(-2), T(1), rel);
+  ASSERT_EQ(r.count, 1);
+  EXPECT_EQ(r.roots[0].multiplicity, 2);
+  // Same through real_roots on a quartic: ((x-1)^2 + d)(x + 3)(x - 5).
+  std::vector<Q> lin = {Q(-3), Q(5)};
+  const po::QPoly p = po::mul(po::expand(lin, Q(1)), po::QPoly{Q(1) + Q(double(d)), Q(-2), Q(1)});
+  const auto c = po::round_to<T>(p);
+  EXPECT_EQ(real_roots(Polynomial<T>(c)).count(), 2);
+  const double e4[5] = {std::ldexp(1.0, -14), 0, 0, 0, 0};
+  RootOptions o4;
+  o4.coefficient_error = e4;
+  const auto q = real_roots(Polynomial<T>(c), -std::numeric_limits<T>::infinity(), std::numeric_limits<T>::infinity(), o4);
+  ASSERT_EQ(q.count(), 3);
+  EXPECT_EQ(q.roots[1].multiplicity, 2);
+  EXPECT_NEAR(q.roots[1].value, T(1), T(1e-3));
+  // A non-finite error bound is bad input.
+  const double bad[1] = {std::numeric_limits<double>::quiet_NaN()};
+  RootOptions ob;
+  ob.coefficient_error = bad;
+  EXPECT_EQ(solve_quadratic(T(1), T(-2), T(1), ob).status, Status::non_finite_input);
+}

@@ -334,9 +334,21 @@ inline int roots_from_critical(const double* q, int m, const R* crit, int nc, R*
       double lo = px, lv = pv, hi = x, hv = v;
       if (p_outer) outer(-1.0, ps, lo, lv);
       if (i == nc) outer(1.0, s, hi, hv);
-      // Starting point: the closed form for a quadratic, else regula falsi on the bracket.
-      double seed = (m == 2) ? seeds[i < 2 ? i : 1] : lo - lv * (hi - lo) / (hv - lv);
-      if (!(seed == seed)) seed = lo - lv * (hi - lo) / (hv - lv);
+      // Starting point: the closed form for a quadratic; else the second-order Taylor model at
+      // the bracket's critical point with the smaller |q| (where the root is nearer), c +- sqrt(
+      // -2 q(c) / q''(c)); else regula falsi on the bracket.
+      double seed = (m == 2) ? seeds[i < 2 ? i : 1] : std::numeric_limits<double>::quiet_NaN();
+      if (m >= 3) {
+        const bool left_crit = !p_outer, right_crit = i < nc;
+        const bool use_left = left_crit && (!right_crit || std::abs(pv) <= std::abs(v));
+        if (left_crit || right_crit) {
+          const double c = use_left ? px : x, vc = use_left ? pv : v;
+          const double d2 = horner(deriv_of(2), m - 2, c).v;
+          const double t = d2 != 0.0 ? -2.0 * vc / d2 : -1.0;
+          if (t > 0.0) seed = use_left ? c + std::sqrt(t) : c - std::sqrt(t);
+        }
+      }
+      if (!(seed > lo && seed < hi)) seed = lo - lv * (hi - lo) / (hv - lv);
       out[count++] = {refine(q, m, lo, hi, ps, seed, polish, budget_hit), 1};
     }
     px = x;
