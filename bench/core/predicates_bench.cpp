@@ -45,7 +45,9 @@ std::mt19937_64& engine() {
   static std::mt19937_64 g(20261122);
   return g;
 }
-double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine()); }
+double uniform(double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(engine());
+}
 int uniform_int(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine()); }
 double bump(double x) {
   const int k = uniform_int(-2, 2);
@@ -117,10 +119,10 @@ void run(benchmark::State& state, const Cases& data, F f) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(data.size()));
 }
 
-#define LOCUS_PRED_BENCH(name, data, call)                                         \
-  void name(benchmark::State& state) {                                             \
-    run(state, data, [](const auto& c) { return call; });                         \
-  }                                                                                \
+#define LOCUS_PRED_BENCH(name, data, call)                \
+  void name(benchmark::State& state) {                    \
+    run(state, data, [](const auto& c) { return call; }); \
+  }                                                       \
   BENCHMARK(name)
 
 LOCUS_PRED_BENCH(BM_orient2d_naive_random, o2_random, naive_orient2d(c[0], c[1], c[2]));
@@ -142,8 +144,7 @@ LOCUS_PRED_BENCH(BM_incircle_naive_degenerate, ic_degenerate,
 LOCUS_PRED_BENCH(BM_incircle_exact_degenerate, ic_degenerate,
                  locus::incircle(c[0], c[1], c[2], c[3]));
 
-LOCUS_PRED_BENCH(BM_insphere_naive_random, is_random,
-                 naive_insphere(c[0], c[1], c[2], c[3], c[4]));
+LOCUS_PRED_BENCH(BM_insphere_naive_random, is_random, naive_insphere(c[0], c[1], c[2], c[3], c[4]));
 LOCUS_PRED_BENCH(BM_insphere_exact_random, is_random,
                  locus::insphere(c[0], c[1], c[2], c[3], c[4]));
 LOCUS_PRED_BENCH(BM_insphere_naive_degenerate, is_degenerate,

@@ -159,14 +159,15 @@ LOCUS_NOINLINE Exp<12 * N> lift3_times(const Vec3<double>& p, const Exp<N>& e) n
 }
 
 // Out of line: its large buffers must not enlarge the frame of the common path.
-LOCUS_NOINLINE Sign orient2d_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c) noexcept {
+LOCUS_NOINLINE Sign orient2d_exact(const Vec2<double>& a, const Vec2<double>& b,
+                                   const Vec2<double>& c) noexcept {
   return sign(minor3_affine(minor2(b, c), minor2(a, c), minor2(a, b)));
 }
 
 /// Shewchuk's orient3d, det[a - d; b - d; c - d] = D(abc) - D(abd) + D(acd) - D(bcd).
 // Out of line: its large buffers must not enlarge the frame of the common path.
-LOCUS_NOINLINE Sign orient3d_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
-                             const Vec3<double>& d) noexcept {
+LOCUS_NOINLINE Sign orient3d_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b,
+                                            const Vec3<double>& c, const Vec3<double>& d) noexcept {
   const Exp<4> ab = minor2(a, b), ac = minor2(a, c), ad = minor2(a, d);
   const Exp<4> bc = minor2(b, c), bd = minor2(b, d), cd = minor2(c, d);
   const Exp<24> abc = minor3(a, b, c, bc, ac, ab);
@@ -179,8 +180,8 @@ LOCUS_NOINLINE Sign orient3d_exact_shewchuk(const Vec3<double>& a, const Vec3<do
 /// det of rows (x, y, x^2 + y^2, 1) for a, b, c, d, expanded along the lift column:
 /// lift_a E(bcd) - lift_b E(acd) + lift_c E(abd) - lift_d E(abc). Equals Shewchuk's incircle.
 // Out of line: its large buffers must not enlarge the frame of the common path.
-LOCUS_NOINLINE Sign incircle_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
-                    const Vec2<double>& d) noexcept {
+LOCUS_NOINLINE Sign incircle_exact(const Vec2<double>& a, const Vec2<double>& b,
+                                   const Vec2<double>& c, const Vec2<double>& d) noexcept {
   const Exp<4> ab = minor2(a, b), ac = minor2(a, c), ad = minor2(a, d);
   const Exp<4> bc = minor2(b, c), bd = minor2(b, d), cd = minor2(c, d);
   const Exp<12> bcd = minor3_affine(cd, bd, bc);
@@ -195,8 +196,9 @@ LOCUS_NOINLINE Sign incircle_exact(const Vec2<double>& a, const Vec2<double>& b,
 ///   -lift_a F(bcde) + lift_b F(acde) - lift_c F(abde) + lift_d F(abce) - lift_e F(abcd)
 /// with F(pqrs) = D(pqr) - D(pqs) + D(prs) - D(qrs). Equals Shewchuk's insphere.
 // Out of line: its large buffers must not enlarge the frame of the common path.
-LOCUS_NOINLINE Sign insphere_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
-                             const Vec3<double>& d, const Vec3<double>& e) noexcept {
+LOCUS_NOINLINE Sign insphere_exact_shewchuk(const Vec3<double>& a, const Vec3<double>& b,
+                                            const Vec3<double>& c, const Vec3<double>& d,
+                                            const Vec3<double>& e) noexcept {
   const Vec3<double>* p[5] = {&a, &b, &c, &d, &e};
   Exp<4> m[5][5];
   for (int i = 0; i < 5; ++i)
@@ -313,8 +315,8 @@ Sign incircle_adaptive(const Vec2<double>& a, const Vec2<double>& b, const Vec2<
   const Exp<4> bc = cross(bdx, cdy, cdx, bdy);
   const Exp<4> ca = cross(cdx, ady, adx, cdy);
   const Exp<4> ab = cross(adx, bdy, bdx, ady);
-  const Exp<96> B = (lift2_times({adx, ady}, bc) + lift2_times({bdx, bdy}, ca)) +
-                    lift2_times({cdx, cdy}, ab);
+  const Exp<96> B =
+      (lift2_times({adx, ady}, bc) + lift2_times({bdx, bdy}, ca)) + lift2_times({cdx, cdy}, ab);
   const double adxt = ex::two_diff_tail(a.x, d.x, adx), bdxt = ex::two_diff_tail(b.x, d.x, bdx),
                cdxt = ex::two_diff_tail(c.x, d.x, cdx);
   const double adyt = ex::two_diff_tail(a.y, d.y, ady), bdyt = ex::two_diff_tail(b.y, d.y, bdy),
@@ -372,8 +374,8 @@ LOCUS_NOINLINE std::optional<Sign> insphere_stages_bc(const Vec3<double>& a, con
   const Exp<24> abd = minor3(ae, be, de, bd, ad, ab);
   const Exp<24> acd = minor3(ae, ce, de, cd, ad, ac);
   const Exp<24> bcd = minor3(be, ce, de, cd, bd, bc);
-  const Exp<1152> B = (lift3_times(de, abc) - lift3_times(ce, abd)) +
-                      (lift3_times(be, acd) - lift3_times(ae, bcd));
+  const Exp<1152> B =
+      (lift3_times(de, abc) - lift3_times(ce, abd)) + (lift3_times(be, acd) - lift3_times(ae, bcd));
   if (exact_differences) return -sign(B);
   const double permanent = insphere_terms(a, b, c, d, e).permanent;
   if (const Sign s = decide(estimate(B), insphere_bound_b * permanent); s != Sign::zero) return -s;
@@ -453,8 +455,7 @@ Sign insphere_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<
 
 // ---- squared-distance comparison --------------------------------------------------------------
 
-Sign compare_sqr_distance_exact(const double* p, const double* q, const double* r,
-                                int n) noexcept {
+Sign compare_sqr_distance_exact(const double* p, const double* q, const double* r, int n) noexcept {
   // sum_i q_i^2 - r_i^2 - 2 p_i q_i + 2 p_i r_i, every product exact (doubling is exact).
   Exp<24> acc;
   for (int i = 0; i < n; ++i) {

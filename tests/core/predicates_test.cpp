@@ -85,7 +85,8 @@ template <class N>
 int orient3d_exact(const std::array<N, 12>& z) {
   std::array<N, 9> r;
   for (int p = 0; p < 3; ++p)
-    for (int k = 0; k < 3; ++k) r[std::size_t(3 * p + k)] = z[std::size_t(3 * (p + 1) + k)] - z[std::size_t(k)];
+    for (int k = 0; k < 3; ++k)
+      r[std::size_t(3 * p + k)] = z[std::size_t(3 * (p + 1) + k)] - z[std::size_t(k)];
   return sign_num(det3(r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8]));
 }
 // incircle = det[p - d, |p - d|^2] over p = a, b, c.
@@ -297,9 +298,12 @@ std::array<int, P> distinct(Rng& rng, int n) {
 }
 
 constexpr int generator_kinds = 6;
-constexpr const char* generator_names[generator_kinds] = {
-    "uniform", "rounded-degenerate+ulps", "exact-degenerate+1ulp-grid",
-    "huge/tiny magnitudes", "mixed-scale-degenerate", "small-integer"};
+constexpr const char* generator_names[generator_kinds] = {"uniform",
+                                                          "rounded-degenerate+ulps",
+                                                          "exact-degenerate+1ulp-grid",
+                                                          "huge/tiny magnitudes",
+                                                          "mixed-scale-degenerate",
+                                                          "small-integer"};
 
 /// A random unit vector in double.
 template <int D>
@@ -329,11 +333,13 @@ PointsOf<Pred, T> generate(Rng& rng, int kind) {
       const double radius = rng.uniform(0.1, 10.0);
       if constexpr (Pred::degree <= 3) {
         // Affine combination of the first D points (line / plane), in double.
-        for (int i = 0; i < D; ++i) p[std::size_t(i)] = vec_cast<T>(rng.vec<double, D>(-10.0, 10.0));
+        for (int i = 0; i < D; ++i)
+          p[std::size_t(i)] = vec_cast<T>(rng.vec<double, D>(-10.0, 10.0));
         for (int i = D; i < P; ++i) {
           Vec<double, D> q = vec_cast<double>(p[0]);
           for (int j = 1; j < D; ++j)
-            q = q + rng.uniform(-2.0, 3.0) * (vec_cast<double>(p[std::size_t(j)]) - vec_cast<double>(p[0]));
+            q = q + rng.uniform(-2.0, 3.0) *
+                        (vec_cast<double>(p[std::size_t(j)]) - vec_cast<double>(p[0]));
           p[std::size_t(i)] = vec_cast<T>(q);
         }
       } else {
@@ -362,20 +368,22 @@ PointsOf<Pred, T> generate(Rng& rng, int kind) {
         const auto& lat = circle_lattice();
         const auto idx = distinct<P>(rng, int(lat.size()));
         for (int i = 0; i < P; ++i)
-          p[std::size_t(i)] = vec_cast<T>(base + Vec<double, 2>{double(lat[std::size_t(idx[std::size_t(i)])][0]),
-                                                                   double(lat[std::size_t(idx[std::size_t(i)])][1])});
+          p[std::size_t(i)] =
+              vec_cast<T>(base + Vec<double, 2>{double(lat[std::size_t(idx[std::size_t(i)])][0]),
+                                                double(lat[std::size_t(idx[std::size_t(i)])][1])});
       } else {
         const auto& lat = sphere_lattice();
         const auto idx = distinct<P>(rng, int(lat.size()));
         for (int i = 0; i < P; ++i) {
           const auto& l = lat[std::size_t(idx[std::size_t(i)])];
-          p[std::size_t(i)] = vec_cast<T>(base + Vec<double, 3>{double(l[0]), double(l[1]), double(l[2])});
+          p[std::size_t(i)] =
+              vec_cast<T>(base + Vec<double, 3>{double(l[0]), double(l[1]), double(l[2])});
         }
       }
       perturb_last(2);
       break;
     }
-    case 3: {  // huge and tiny magnitudes, random signs and exponents
+    case 3: {                      // huge and tiny magnitudes, random signs and exponents
       int emin = -14, emax = 100;  // the corpus range, about 1e-4 .. 1e30
       if (is_double && rng.uniform_int(0, 1) == 1) {
         emin = Pred::min_exp;
@@ -456,7 +464,8 @@ void check_oracle(long count, const char* label) {
   std::cout << "[ oracle   ] " << Pred::name << "<" << label << ">: " << count
             << " GMP-checked cases (";
   for (int k = 0; k < generator_kinds; ++k)
-    std::cout << generator_names[k] << " " << per_kind[std::size_t(k)] << (k + 1 < generator_kinds ? ", " : "");
+    std::cout << generator_names[k] << " " << per_kind[std::size_t(k)]
+              << (k + 1 < generator_kinds ? ", " : "");
   std::cout << "); exactly degenerate " << degenerate << ", naive double sign wrong " << naive_wrong
             << "\n";
   ::testing::Test::RecordProperty(std::string(Pred::name) + "_" + label + "_oracle_cases",
@@ -506,10 +515,13 @@ TEST(PredicateOracle, OracleEncodesTheDocumentedConventions) {
   // The same configurations through the GMP oracle: the oracle is the definition used below.
   using P2 = Points<double, 2, 3>;
   EXPECT_EQ((oracle<Orient2dP, double>(P2{{{0, 0}, {1, 0}, {0, 1}}})), 1);
-  EXPECT_EQ((oracle<Orient3dP, double>(Points<double, 3, 4>{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}})), 1);
-  EXPECT_EQ((oracle<IncircleP, double>(Points<double, 2, 4>{{{1, 0}, {0, 1}, {-1, 0}, {0, 0}}})), 1);
-  EXPECT_EQ((oracle<InsphereP, double>(
-                Points<double, 3, 5>{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.25, 0.25, 0.25}}})),
+  EXPECT_EQ((oracle<Orient3dP, double>(
+                Points<double, 3, 4>{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}})),
+            1);
+  EXPECT_EQ((oracle<IncircleP, double>(Points<double, 2, 4>{{{1, 0}, {0, 1}, {-1, 0}, {0, 0}}})),
+            1);
+  EXPECT_EQ((oracle<InsphereP, double>(Points<double, 3, 5>{
+                {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.25, 0.25, 0.25}}})),
             1);
 }
 
@@ -541,7 +553,8 @@ TEST(PredicateOracle, ScaledIntegerOracleMatchesRationals) {
 
 template <class Pred>
 void check_corpus(const char* file) {
-  const std::string path = std::string(LOCUS_SHARED_DIR) + "/corpus/robust-predicates/fixtures/" + file;
+  const std::string path =
+      std::string(LOCUS_SHARED_DIR) + "/corpus/robust-predicates/fixtures/" + file;
   std::ifstream in(path);
   ASSERT_TRUE(in) << "cannot open " << path;
   constexpr int n = Pred::dim * Pred::points;
@@ -653,7 +666,8 @@ TYPED_TEST(PredicateTest, OddPermutationsFlipEvenPermutationsKeepTheSign) {
 
 /// True when every coordinate of p + t is exactly representable (checked with rationals).
 template <class Pred, class T>
-bool translate_exactly(const PointsOf<Pred, T>& p, const Vec<T, Pred::dim>& t, PointsOf<Pred, T>& out) {
+bool translate_exactly(const PointsOf<Pred, T>& p, const Vec<T, Pred::dim>& t,
+                       PointsOf<Pred, T>& out) {
   for (int i = 0; i < Pred::points; ++i)
     for (int k = 0; k < Pred::dim; ++k) {
       const T s = p[std::size_t(i)][k] + t[k];
@@ -799,11 +813,16 @@ TEST(PredicateRange, EveryFloatIsExact) {
   const float tiny = std::numeric_limits<float>::denorm_min();
   auto pick = [&]() {
     switch (rng.uniform_int(0, 4)) {
-      case 0: return rng.uniform_int(0, 1) ? big : -big;
-      case 1: return rng.uniform_int(0, 1) ? tiny : -tiny;
-      case 2: return 0.0f;
-      case 3: return bump(big, -rng.uniform_int(1, 3));
-      default: return signed_magnitude<float>(rng, -149, 127);
+      case 0:
+        return rng.uniform_int(0, 1) ? big : -big;
+      case 1:
+        return rng.uniform_int(0, 1) ? tiny : -tiny;
+      case 2:
+        return 0.0f;
+      case 3:
+        return bump(big, -rng.uniform_int(1, 3));
+      default:
+        return signed_magnitude<float>(rng, -149, 127);
     }
   };
   for (int i = 0; i < 3000; ++i) {
@@ -813,10 +832,14 @@ TEST(PredicateRange, EveryFloatIsExact) {
     for (auto& x : p3) x = {pick(), pick(), pick()};
     Points<float, 2, 3> o2{{p2[0], p2[1], p2[2]}};
     Points<float, 3, 4> o3{{p3[0], p3[1], p3[2], p3[3]}};
-    ASSERT_EQ(to_int(Orient2dP::eval(o2)), (oracle<Orient2dP, float>(o2))) << describe<Orient2dP, float>(o2);
-    ASSERT_EQ(to_int(Orient3dP::eval(o3)), (oracle<Orient3dP, float>(o3))) << describe<Orient3dP, float>(o3);
-    ASSERT_EQ(to_int(IncircleP::eval(p2)), (oracle<IncircleP, float>(p2))) << describe<IncircleP, float>(p2);
-    ASSERT_EQ(to_int(InsphereP::eval(p3)), (oracle<InsphereP, float>(p3))) << describe<InsphereP, float>(p3);
+    ASSERT_EQ(to_int(Orient2dP::eval(o2)), (oracle<Orient2dP, float>(o2)))
+        << describe<Orient2dP, float>(o2);
+    ASSERT_EQ(to_int(Orient3dP::eval(o3)), (oracle<Orient3dP, float>(o3)))
+        << describe<Orient3dP, float>(o3);
+    ASSERT_EQ(to_int(IncircleP::eval(p2)), (oracle<IncircleP, float>(p2)))
+        << describe<IncircleP, float>(p2);
+    ASSERT_EQ(to_int(InsphereP::eval(p3)), (oracle<InsphereP, float>(p3)))
+        << describe<InsphereP, float>(p3);
   }
 }
 

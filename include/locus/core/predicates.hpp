@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Exact geometric predicates: orient2d, orient3d, incircle, insphere, and small exact helpers
-// (orient1d, lexicographic_compare, compare_sqr_distance). Row core.predicates.
+// (orient1d, lexicographic_compare, compare_sqr_distance). CAPABILITIES row core.predicates.
 //
 // Each predicate returns the *exact* sign of a polynomial in the input coordinates. A fast
 // filter, inline here, evaluates the determinant in double and accepts its sign when it exceeds
@@ -16,7 +16,8 @@
 //   orient2d(a, b, c)       > 0 iff a, b, c are counter-clockwise: sign of det[b - a; c - a].
 //   orient3d(a, b, c, d)    > 0 iff d lies on the side of plane abc toward which
 //                           (b - a) x (c - a) points: sign of det[b - a; c - a; d - a].
-//                           This is the NEGATION of Shewchuk's orient3d (his is det[a-d; b-d; c-d]).
+//                           This is the NEGATION of Shewchuk's orient3d (his is det[a-d; b-d;
+//                           c-d]).
 //   incircle(a, b, c, d)    > 0 iff d is strictly inside the circle through a, b, c when
 //                           orient2d(a, b, c) > 0 (Shewchuk's convention); the sign flips with
 //                           the orientation of a, b, c.
@@ -34,22 +35,28 @@
 // of promoted floats stay far inside double range). Double input: the result is exact whenever
 // no intermediate product overflows or underflows, which holds when every nonzero coordinate c
 // satisfies 2^-L <= |c| <= 2^H with
-//     orient2d   L = 480, H = 500   (about 1e-144 .. 3e150)
+//     orient2d   L = 480, H = 500   (about 3e-145 .. 3e150)
 //     orient3d   L = 300, H = 330   (about 5e-91  .. 2e99)
 //     incircle   L = 210, H = 245   (about 6e-64  .. 6e73)
 //     insphere   L = 160, H = 195   (about 7e-49  .. 5e58)
-// (a degree-n predicate needs n*(L+52) <= 1074 so every product is a multiple of the smallest
-// subnormal, and n*(H+1) + 27 + 8 < 1024 so the Dekker split and the sums cannot overflow).
+// (a degree-n predicate needs n*(L+52) <= 1074, so every difference, product and expansion
+// component is a multiple of the smallest subnormal and no rounding is ever absolute; and
+// n*(H+2) + 9 < 1024, so no sum of the at most 2^9 monomials overflows, which also keeps every
+// Veltkamp-Dekker split, applied to values of degree <= n-1, 2^27 below overflow.)
 // Outside that range the result is still a deterministic Sign with no UB and no hang, but may be
 // wrong. Compiling the *calling* code with -ffast-math (-ffinite-math-only) voids the NaN rule;
-// FMA contraction in the caller is harmless (it only removes roundings from the filter).
+// FMA contraction in the caller does not invalidate the filter (a fused operation only drops
+// roundings that the error bounds allow for).
 //
 // Cost: the filter is the naive determinant plus an error bound (a few more flops and one
-// well-predicted branch: about 1.2-1.3x the naive determinant on random input, see
-// bench/core/predicates_bench.cpp); the fallback runs only for nearly degenerate input (tens of
-// ns for orient2d, about 1.5 us for insphere). No allocation; stack use of the fallbacks is a
-// few KB except insphere (about 40 KB in stages B/C, about 140 KB in its rarely reached exact
-// stage).
+// well-predicted branch): on random input about 1.15x the naive determinant for orient2d and
+// 1.4-1.8x for the others (bench/core/predicates_bench.cpp). The fallback runs only for nearly
+// degenerate input: about 10 ns for orient2d, 0.1 us orient3d, 0.5 us incircle, 1.5-3 us
+// insphere. No allocation; stack use of the fallbacks is a few KB except insphere (about 40 KB
+// in stages B/C, about 140 KB in its rarely reached exact stage).
+//
+// Book: chapter 13 uses these signs throughout; figure 13.35 (the five relations of a point and a
+// segment) is decided exactly by orient2d plus lexicographic_compare (see the tests).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -115,20 +122,28 @@ inline constexpr double sqr_distance_bound_a = (8.0 + 64.0 * predicate_eps) * pr
 #define LOCUS_PREDICATE_COLD
 #endif
 
-// The slow paths, called only when the filter cannot decide (cold: kept out of hot loops). They take double arguments, return
-// the exact sign in OUR conventions, and return Sign::zero for non-finite input.
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign orient2d_adaptive(const Vec2<double>& a, const Vec2<double>& b,
-                                     const Vec2<double>& c) noexcept;
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign orient3d_adaptive(const Vec3<double>& a, const Vec3<double>& b,
-                                     const Vec3<double>& c, const Vec3<double>& d) noexcept;
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign incircle_adaptive(const Vec2<double>& a, const Vec2<double>& b,
-                                     const Vec2<double>& c, const Vec2<double>& d) noexcept;
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign insphere_adaptive(const Vec3<double>& a, const Vec3<double>& b,
-                                     const Vec3<double>& c, const Vec3<double>& d,
-                                     const Vec3<double>& e) noexcept;
+// The slow paths, called only when the filter cannot decide (cold: kept out of hot loops). They
+// take double arguments, return the exact sign in OUR conventions, and return Sign::zero for
+// non-finite input.
+LOCUS_PREDICATE_COLD [[nodiscard]] Sign orient2d_adaptive(const Vec2<double>& a,
+                                                          const Vec2<double>& b,
+                                                          const Vec2<double>& c) noexcept;
+LOCUS_PREDICATE_COLD [[nodiscard]] Sign orient3d_adaptive(const Vec3<double>& a,
+                                                          const Vec3<double>& b,
+                                                          const Vec3<double>& c,
+                                                          const Vec3<double>& d) noexcept;
+LOCUS_PREDICATE_COLD [[nodiscard]] Sign incircle_adaptive(const Vec2<double>& a,
+                                                          const Vec2<double>& b,
+                                                          const Vec2<double>& c,
+                                                          const Vec2<double>& d) noexcept;
+LOCUS_PREDICATE_COLD [[nodiscard]] Sign insphere_adaptive(const Vec3<double>& a,
+                                                          const Vec3<double>& b,
+                                                          const Vec3<double>& c,
+                                                          const Vec3<double>& d,
+                                                          const Vec3<double>& e) noexcept;
 /// Exact sign of |q - p|^2 - |r - p|^2 for n = 2 or 3 coordinates per point.
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign compare_sqr_distance_exact(const double* p, const double* q, const double* r,
-                                              int n) noexcept;
+LOCUS_PREDICATE_COLD [[nodiscard]] Sign compare_sqr_distance_exact(const double* p, const double* q,
+                                                                   const double* r, int n) noexcept;
 
 template <class T, int N>
 [[nodiscard]] constexpr Vec<double, N> to_double(const Vec<T, N>& v) noexcept {
@@ -151,7 +166,7 @@ template <class T, int N>
   static_assert(sizeof(Vec2<double>) == 2 * sizeof(double), "Vec2 must be two packed doubles");
   const __m128d ac = _mm_sub_pd(_mm_loadu_pd(&a.x), _mm_loadu_pd(&c.x));  // (acx, acy)
   const __m128d bc = _mm_sub_pd(_mm_loadu_pd(&b.x), _mm_loadu_pd(&c.x));  // (bcx, bcy)
-  const __m128d products = _mm_mul_pd(ac, _mm_shuffle_pd(bc, bc, 1));    // (acx bcy, acy bcx)
+  const __m128d products = _mm_mul_pd(ac, _mm_shuffle_pd(bc, bc, 1));     // (acx bcy, acy bcx)
   const __m128d high = _mm_unpackhi_pd(products, products);
   const double left = _mm_cvtsd_f64(products);
   const double right = _mm_cvtsd_f64(high);
@@ -201,8 +216,8 @@ template <class T, int N>
   const double alift = adx * adx + ady * ady;
   const double blift = bdx * bdx + bdy * bdy;
   const double clift = cdx * cdx + cdy * cdy;
-  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
-                     clift * (adxbdy - bdxady);
+  const double det =
+      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
   const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
                            (std::abs(cdxady) + std::abs(adxcdy)) * blift +
                            (std::abs(adxbdy) + std::abs(bdxady)) * clift;
@@ -372,7 +387,8 @@ template <Real T>
 /// Three-way lexicographic comparison (x, then y, then z): negative iff p < q, zero iff equal.
 /// A NaN coordinate compares equal to everything (it never decides).
 template <Real T, int N>
-[[nodiscard]] constexpr Sign lexicographic_compare(const Vec<T, N>& p, const Vec<T, N>& q) noexcept {
+[[nodiscard]] constexpr Sign lexicographic_compare(const Vec<T, N>& p,
+                                                   const Vec<T, N>& q) noexcept {
   for (int i = 0; i < N; ++i) {
     if (p[i] < q[i]) return Sign::negative;
     if (q[i] < p[i]) return Sign::positive;
@@ -383,9 +399,8 @@ template <Real T, int N>
 /// Exact sign of |q - p|^2 - |r - p|^2: positive iff q is farther from p than r is. Non-finite
 /// input gives zero; exact range as orient2d (it has degree 2).
 template <Real T, int N>
-  requires(N == 2 || N == 3)
-[[nodiscard]] inline Sign compare_sqr_distance(const Vec<T, N>& p, const Vec<T, N>& q,
-                                               const Vec<T, N>& r) noexcept {
+requires(N == 2 || N == 3) [[nodiscard]] inline Sign
+    compare_sqr_distance(const Vec<T, N>& p, const Vec<T, N>& q, const Vec<T, N>& r) noexcept {
   double value = 0.0, permanent = 0.0;
   for (int i = 0; i < N; ++i) {
     const double dq = double(q[i]) - double(p[i]);
