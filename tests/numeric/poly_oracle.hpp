@@ -142,8 +142,8 @@ struct Sturm {
 
 /// Isolates every distinct real root of p in (lo, hi] to an interval of width <= width by
 /// Sturm bisection; returns the midpoints (as doubles).
-inline void isolate(const Sturm& s, const Q& lo, const Q& hi, const Q& width, std::vector<double>& out,
-                    int depth = 0) {
+inline void isolate(const Sturm& s, const Q& lo, const Q& hi, const Q& width,
+                    std::vector<double>& out, int depth = 0) {
   const int c = s.count(lo, hi);
   if (c == 0) return;
   if ((c == 1 && hi - lo <= width) || depth > 200) {
@@ -193,8 +193,10 @@ inline bool exact_root_near(const QPoly& p, double r, double& root) {
       lo = hi = mid;
       break;
     }
-    if (sm == slo) lo = mid;
-    else hi = mid;
+    if (sm == slo)
+      lo = mid;
+    else
+      hi = mid;
   }
   root = Q((lo + hi) / 2).get_d();
   return true;

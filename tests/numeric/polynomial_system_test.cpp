@@ -34,7 +34,9 @@ struct QPt {
   Q x, y;
 };
 
-Q rand_q(Rng& rng, int num, int den) { return po::frac(rng.uniform_int(-num, num), rng.uniform_int(1, den)); }
+Q rand_q(Rng& rng, int num, int den) {
+  return po::frac(rng.uniform_int(-num, num), rng.uniform_int(1, den));
+}
 
 Q conic_at(const QC& c, const QPt& p) {
   return c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.y * p.y + c[3] * p.x + c[4] * p.y + c[5];
@@ -59,7 +61,8 @@ std::array<QC, 2> pencil(const std::array<QPt, 4>& p) {
       if (r == row) continue;
       const Q f = m[static_cast<std::size_t>(r)][static_cast<std::size_t>(col)];
       for (int k = 0; k < 6; ++k)
-        m[static_cast<std::size_t>(r)][static_cast<std::size_t>(k)] -= f * m[static_cast<std::size_t>(row)][static_cast<std::size_t>(k)];
+        m[static_cast<std::size_t>(r)][static_cast<std::size_t>(k)] -=
+            f * m[static_cast<std::size_t>(row)][static_cast<std::size_t>(k)];
     }
     pivot_col.push_back(col);
     ++row;
@@ -81,7 +84,8 @@ std::array<QC, 2> pencil(const std::array<QPt, 4>& p) {
 
 template <class T>
 QuadraticCurveCoefficients<T> to_t(const QC& c) {
-  return {T(c[0].get_d()), T(c[1].get_d()), T(c[2].get_d()), T(c[3].get_d()), T(c[4].get_d()), T(c[5].get_d())};
+  return {T(c[0].get_d()), T(c[1].get_d()), T(c[2].get_d()),
+          T(c[3].get_d()), T(c[4].get_d()), T(c[5].get_d())};
 }
 
 QC circle(const Q& cx, const Q& cy, const Q& r2) {
@@ -92,25 +96,30 @@ QC circle(const Q& cx, const Q& cy, const Q& r2) {
 // rounded to T: |dp| <= |J^-1| (eps |terms of q1|, eps |terms of q2|), J the Jacobian at p.
 double conditioned_tol(const QC& c1, const QC& c2, const QPt& p, double eps) {
   const auto grad = [&](const QC& c) {
-    return std::array<double, 2>{Q(2 * c[0] * p.x + c[1] * p.y + c[3]).get_d(), Q(c[1] * p.x + 2 * c[2] * p.y + c[4]).get_d()};
+    return std::array<double, 2>{Q(2 * c[0] * p.x + c[1] * p.y + c[3]).get_d(),
+                                 Q(c[1] * p.x + 2 * c[2] * p.y + c[4]).get_d()};
   };
   const auto terms = [&](const QC& c) {
     const double x = std::abs(p.x.get_d()), y = std::abs(p.y.get_d());
-    return std::abs(c[0].get_d()) * x * x + std::abs(c[1].get_d()) * x * y + std::abs(c[2].get_d()) * y * y +
-           std::abs(c[3].get_d()) * x + std::abs(c[4].get_d()) * y + std::abs(c[5].get_d());
+    return std::abs(c[0].get_d()) * x * x + std::abs(c[1].get_d()) * x * y +
+           std::abs(c[2].get_d()) * y * y + std::abs(c[3].get_d()) * x +
+           std::abs(c[4].get_d()) * y + std::abs(c[5].get_d());
   };
   const auto g1 = grad(c1), g2 = grad(c2);
   const double det = std::abs(g1[0] * g2[1] - g1[1] * g2[0]);
   const double e1 = eps * terms(c1), e2 = eps * terms(c2);
   // |J^-1 (e1, e2)| with J^-1 = adj(J) / det, componentwise with absolute values.
-  return (std::max(std::abs(g2[1]) * e1 + std::abs(g1[1]) * e2, std::abs(g2[0]) * e1 + std::abs(g1[0]) * e2)) / det;
+  return (std::max(std::abs(g2[1]) * e1 + std::abs(g1[1]) * e2,
+                   std::abs(g2[0]) * e1 + std::abs(g1[0]) * e2)) /
+         det;
 }
 
 // Each expected point is matched by exactly one returned point within tol, and nothing else.
 template <class T>
 ::testing::AssertionResult same_points(const QuadraticCurvesIntersection<T>& r,
-                                       const std::vector<std::array<double, 2>>& want, double tolerance,
-                                       const std::vector<int>& mult = {}, bool relative = false) {
+                                       const std::vector<std::array<double, 2>>& want,
+                                       double tolerance, const std::vector<int>& mult = {},
+                                       bool relative = false) {
   if (r.count != static_cast<int>(want.size()))
     return ::testing::AssertionFailure() << "count " << r.count << " expected " << want.size();
   std::vector<bool> used(want.size(), false);
@@ -119,18 +128,21 @@ template <class T>
     bool ok = false;
     for (std::size_t k = 0; k < want.size(); ++k) {
       if (used[k]) continue;
-      const double t = relative ? tolerance * (1 + std::max(std::abs(want[k][0]), std::abs(want[k][1]))) : tolerance;
+      const double t = relative
+                           ? tolerance * (1 + std::max(std::abs(want[k][0]), std::abs(want[k][1])))
+                           : tolerance;
       if (std::abs(double(p.x) - want[k][0]) <= t && std::abs(double(p.y) - want[k][1]) <= t) {
         if (!mult.empty() && r.multiplicity[static_cast<std::size_t>(i)] != mult[k])
-          return ::testing::AssertionFailure() << "multiplicity " << r.multiplicity[static_cast<std::size_t>(i)]
-                                               << " expected " << mult[k];
+          return ::testing::AssertionFailure()
+                 << "multiplicity " << r.multiplicity[static_cast<std::size_t>(i)] << " expected "
+                 << mult[k];
         used[k] = ok = true;
         break;
       }
     }
     if (!ok)
-      return ::testing::AssertionFailure() << "unexpected point (" << double(p.x) << ", " << double(p.y)
-                                           << ") tol " << tolerance;
+      return ::testing::AssertionFailure()
+             << "unexpected point (" << double(p.x) << ", " << double(p.y) << ") tol " << tolerance;
   }
   return ::testing::AssertionSuccess();
 }
@@ -171,7 +183,8 @@ TEST(PolynomialSystem, BivariateResultantCommutesWithEvaluation) {
   for (int trial = 0; trial < 60; ++trial) {
     BivariatePolynomial<Q> f, g;
     const int m = rng.uniform_int(1, 3), n = rng.uniform_int(1, 3);
-    for (int i = 0; i <= m; ++i) f.coeff.push_back(PQ{rand_q(rng, 9, 3), rand_q(rng, 9, 3), rand_q(rng, 9, 3)});
+    for (int i = 0; i <= m; ++i)
+      f.coeff.push_back(PQ{rand_q(rng, 9, 3), rand_q(rng, 9, 3), rand_q(rng, 9, 3)});
     for (int i = 0; i <= n; ++i) g.coeff.push_back(PQ{rand_q(rng, 9, 3), rand_q(rng, 9, 3)});
     const PQ r = resultant_x(f, g);
     for (int k = 0; k < 4; ++k) {
@@ -200,12 +213,14 @@ TYPED_TEST(PolySysTest, FourRationalPointsOfAPencilAreFound) {
     for (int i = 0; i < 4 && good; ++i)
       for (int j = i + 1; j < 4 && good; ++j)
         for (int k = j + 1; k < 4 && good; ++k) {
-          const Q cr = (p[j].x - p[i].x) * (p[k].y - p[i].y) - (p[j].y - p[i].y) * (p[k].x - p[i].x);
+          const Q cr =
+              (p[j].x - p[i].x) * (p[k].y - p[i].y) - (p[j].y - p[i].y) * (p[k].x - p[i].x);
           good = Q(abs(cr)).get_d() > 1.0;
         }
     if (!good) continue;
     const auto basis = pencil(p);
-    const Q s1 = rand_q(rng, 9, 1), t1 = rand_q(rng, 9, 1), s2 = rand_q(rng, 9, 1), t2 = rand_q(rng, 9, 1);
+    const Q s1 = rand_q(rng, 9, 1), t1 = rand_q(rng, 9, 1), s2 = rand_q(rng, 9, 1),
+            t2 = rand_q(rng, 9, 1);
     if (s1 * t2 - s2 * t1 == 0) continue;
     QC c1, c2;
     for (std::size_t i = 0; i < 6; ++i) {
@@ -222,14 +237,16 @@ TYPED_TEST(PolySysTest, FourRationalPointsOfAPencilAreFound) {
     // The coefficients are rounded to T, which moves each intersection by up to its first-order
     // bound (conditioned_tol); the solver may add a few times that (double: computed in double).
     double tolerance = 0;
-    for (const auto& q : p) tolerance = std::max(tolerance, conditioned_tol(c1, c2, q, double(eps_v<T>)));
+    for (const auto& q : p)
+      tolerance = std::max(tolerance, conditioned_tol(c1, c2, q, double(eps_v<T>)));
     tolerance = 16 * tolerance + 64 * double(eps_v<T>) * 40;
     EXPECT_TRUE(same_points(r, want, tolerance)) << "trial " << trial;
     for (int i = 0; i < r.count; ++i) {
       double best = 1e300;
       for (const auto& w : want)
-        best = std::min(best, std::max(std::abs(double(r.point[static_cast<std::size_t>(i)].x) - w[0]),
-                                       std::abs(double(r.point[static_cast<std::size_t>(i)].y) - w[1])));
+        best = std::min(best,
+                        std::max(std::abs(double(r.point[static_cast<std::size_t>(i)].x) - w[0]),
+                                 std::abs(double(r.point[static_cast<std::size_t>(i)].y) - w[1])));
       max_err = std::max(max_err, best);
       EXPECT_EQ(r.multiplicity[static_cast<std::size_t>(i)], 1);
     }
@@ -250,16 +267,20 @@ TYPED_TEST(PolySysTest, CirclesThroughTwoPointsMeetExactlyThere) {
     const QPt m{(a.x + b.x) / 2, (a.y + b.y) / 2};
     const Q t1 = rand_q(rng, 5, 3), t2 = rand_q(rng, 5, 3);
     if (t1 == t2) continue;
-    const QPt c1{m.x - t1 * (b.y - a.y), m.y + t1 * (b.x - a.x)}, c2{m.x - t2 * (b.y - a.y), m.y + t2 * (b.x - a.x)};
+    const QPt c1{m.x - t1 * (b.y - a.y), m.y + t1 * (b.x - a.x)},
+        c2{m.x - t2 * (b.y - a.y), m.y + t2 * (b.x - a.x)};
     const Q r1 = (a.x - c1.x) * (a.x - c1.x) + (a.y - c1.y) * (a.y - c1.y);
     const Q r2 = (a.x - c2.x) * (a.x - c2.x) + (a.y - c2.y) * (a.y - c2.y);
-    const auto r = intersect_quadratic_curves(to_t<T>(circle(c1.x, c1.y, r1)), to_t<T>(circle(c2.x, c2.y, r2)));
-    const double scale = 1 + std::max({std::abs(c1.x.get_d()), std::abs(c1.y.get_d()), std::abs(c2.x.get_d()),
-                                        std::abs(c2.y.get_d())});
+    const auto r = intersect_quadratic_curves(to_t<T>(circle(c1.x, c1.y, r1)),
+                                              to_t<T>(circle(c2.x, c2.y, r2)));
+    const double scale = 1 + std::max({std::abs(c1.x.get_d()), std::abs(c1.y.get_d()),
+                                       std::abs(c2.x.get_d()), std::abs(c2.y.get_d())});
     const QC k1 = circle(c1.x, c1.y, r1), k2 = circle(c2.x, c2.y, r2);
-    const double tolerance = 16 * std::max(conditioned_tol(k1, k2, a, double(eps_v<T>)), conditioned_tol(k1, k2, b, double(eps_v<T>))) +
+    const double tolerance = 16 * std::max(conditioned_tol(k1, k2, a, double(eps_v<T>)),
+                                           conditioned_tol(k1, k2, b, double(eps_v<T>))) +
                              64 * double(eps_v<T>) * scale;
-    EXPECT_TRUE(same_points(r, {{a.x.get_d(), a.y.get_d()}, {b.x.get_d(), b.y.get_d()}}, tolerance, {1, 1}))
+    EXPECT_TRUE(
+        same_points(r, {{a.x.get_d(), a.y.get_d()}, {b.x.get_d(), b.y.get_d()}}, tolerance, {1, 1}))
         << "trial " << trial;
   }
 }
@@ -278,7 +299,8 @@ TYPED_TEST(PolySysTest, TangentCurvesGiveOnePointOfMultiplityTwo) {
     const QPt c1{rand_q(rng, 10, 2), rand_q(rng, 10, 2)};
     const Q rad1 = po::frac(rng.uniform_int(1, 20), 2), rad2 = po::frac(rng.uniform_int(1, 20), 2);
     const bool internal = trial % 2 == 1 && rad1 != rad2;
-    const Q dist = internal ? Q(rad1 - rad2) : Q(rad1 + rad2);  // signed: internal may put c2 behind
+    const Q dist =
+        internal ? Q(rad1 - rad2) : Q(rad1 + rad2);  // signed: internal may put c2 behind
     const QPt c2{c1.x + dist * ux, c1.y + dist * uy};
     const QPt t{c1.x + rad1 * ux, c1.y + rad1 * uy};
     // The circles' coefficients are rounded to T, which turns the tangency into a near miss or
@@ -289,7 +311,8 @@ TYPED_TEST(PolySysTest, TangentCurvesGiveOnePointOfMultiplityTwo) {
                                               to_t<T>(circle(c2.x, c2.y, rad2 * rad2)), opt);
     ASSERT_EQ(r.status, Status::ok);
     // A tangency is located to about sqrt(eps) along the common tangent (it is a double root).
-    EXPECT_TRUE(same_points(r, {{t.x.get_d(), t.y.get_d()}}, 1e2 * std::sqrt(double(eps_v<T>)) * 20, {2}))
+    EXPECT_TRUE(
+        same_points(r, {{t.x.get_d(), t.y.get_d()}}, 1e2 * std::sqrt(double(eps_v<T>)) * 20, {2}))
         << "trial " << trial << (internal ? " internal" : " external");
     ++n;
   }
@@ -303,7 +326,8 @@ TYPED_TEST(PolySysTest, TangentCurvesGiveOnePointOfMultiplityTwo) {
                                                         {T(1), T(0), T(1), T(0), T(0), T(-1)}),
                           {{0, -1}, {0, 1}}, 1e-3, {2, 2}));
   // Parabola y = x^2 and the line pair y = 0 (y^2 = 0): the x axis touches at the origin.
-  const auto pl = intersect_quadratic_curves<T>({T(1), T(0), T(0), T(0), T(-1), T(0)}, {T(0), T(0), T(1), T(0), T(0), T(0)});
+  const auto pl = intersect_quadratic_curves<T>({T(1), T(0), T(0), T(0), T(-1), T(0)},
+                                                {T(0), T(0), T(1), T(0), T(0), T(0)});
   ASSERT_GE(pl.count, 1);
   EXPECT_NEAR(pl.point[0].x, T(0), T(1e-3));
   EXPECT_NEAR(pl.point[0].y, T(0), T(1e-3));
@@ -318,8 +342,9 @@ TYPED_TEST(PolySysTest, CoincidentSharedComponentAndEmpty) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int trial = 0; trial < 50; ++trial) {
-    QuadraticCurveCoefficients<T> q{rng.uniform<T>(-3, 3), rng.uniform<T>(-3, 3), rng.uniform<T>(-3, 3),
-                                    rng.uniform<T>(-3, 3), rng.uniform<T>(-3, 3), rng.uniform<T>(-3, 3)};
+    QuadraticCurveCoefficients<T> q{rng.uniform<T>(-3, 3), rng.uniform<T>(-3, 3),
+                                    rng.uniform<T>(-3, 3), rng.uniform<T>(-3, 3),
+                                    rng.uniform<T>(-3, 3), rng.uniform<T>(-3, 3)};
     const T s = rng.uniform<T>(0.1f, 10) * (trial % 2 ? T(-1) : T(1));
     const QuadraticCurveCoefficients<T> p{q.a * s, q.b * s, q.c * s, q.d * s, q.e * s, q.f * s};
     const auto r = intersect_quadratic_curves(q, p);
@@ -332,22 +357,29 @@ TYPED_TEST(PolySysTest, CoincidentSharedComponentAndEmpty) {
                                                 {T(2), T(-3), T(1), T(3), T(-3), T(0)});
   EXPECT_TRUE(sh.infinite);
   // Concentric circles, disjoint ellipses, a circle inside another: no point.
-  const auto c = intersect_quadratic_curves<T>({T(1), T(0), T(1), T(0), T(0), T(-1)}, {T(1), T(0), T(1), T(0), T(0), T(-4)});
+  const auto c = intersect_quadratic_curves<T>({T(1), T(0), T(1), T(0), T(0), T(-1)},
+                                               {T(1), T(0), T(1), T(0), T(0), T(-4)});
   EXPECT_EQ(c.count, 0);
   EXPECT_FALSE(c.infinite);
-  const auto e = intersect_quadratic_curves<T>({T(1), T(0), T(4), T(0), T(0), T(-4)},
-                                               {T(1), T(0), T(4), T(-20), T(0), T(96)});  // centred at (10, 0)
+  const auto e =
+      intersect_quadratic_curves<T>({T(1), T(0), T(4), T(0), T(0), T(-4)},
+                                    {T(1), T(0), T(4), T(-20), T(0), T(96)});  // centred at (10, 0)
   EXPECT_EQ(e.count, 0);
-  const auto in = intersect_quadratic_curves<T>({T(1), T(0), T(1), T(-1), T(0), T(-3)}, {T(1), T(0), T(1), T(0), T(0), T(-100)});
+  const auto in = intersect_quadratic_curves<T>({T(1), T(0), T(1), T(-1), T(0), T(-3)},
+                                                {T(1), T(0), T(1), T(0), T(0), T(-100)});
   EXPECT_EQ(in.count, 0);
   // Imaginary ellipse x^2 + y^2 + 1 = 0 has no real points at all.
-  EXPECT_EQ(intersect_quadratic_curves<T>({T(1), T(0), T(1), T(0), T(0), T(1)}, {T(1), T(0), T(-1), T(0), T(0), T(0)}).count, 0);
+  EXPECT_EQ(intersect_quadratic_curves<T>({T(1), T(0), T(1), T(0), T(0), T(1)},
+                                          {T(1), T(0), T(-1), T(0), T(0), T(0)})
+                .count,
+            0);
 }
 
 TYPED_TEST(PolySysTest, BadInput) {
   using T = TypeParam;
   const QuadraticCurveCoefficients<T> unit{T(1), T(0), T(1), T(0), T(0), T(-1)};
-  const auto z = intersect_quadratic_curves(unit, QuadraticCurveCoefficients<T>{T(0), T(0), T(0), T(0), T(0), T(0)});
+  const auto z = intersect_quadratic_curves(
+      unit, QuadraticCurveCoefficients<T>{T(0), T(0), T(0), T(0), T(0), T(0)});
   EXPECT_EQ(z.status, Status::degenerate_input);
   EXPECT_TRUE(z.infinite);
   EXPECT_EQ(z.count, 0);
@@ -355,14 +387,19 @@ TYPED_TEST(PolySysTest, BadInput) {
   for (int k = 0; k < 6; ++k) {
     T c[6] = {T(1), T(0), T(1), T(0), T(0), T(-2)};
     c[k] = k % 2 ? nan : inf;
-    const auto r = intersect_quadratic_curves(unit, QuadraticCurveCoefficients<T>{c[0], c[1], c[2], c[3], c[4], c[5]});
+    const auto r = intersect_quadratic_curves(
+        unit, QuadraticCurveCoefficients<T>{c[0], c[1], c[2], c[3], c[4], c[5]});
     EXPECT_EQ(r.status, Status::non_finite_input);
     EXPECT_EQ(r.count, 0);
   }
   // Two lines (degenerate "conics" of degree 1) meet in one point; parallel lines in none.
-  const auto ll = intersect_quadratic_curves<T>({T(0), T(0), T(0), T(1), T(-1), T(0)}, {T(0), T(0), T(0), T(1), T(1), T(-2)});
+  const auto ll = intersect_quadratic_curves<T>({T(0), T(0), T(0), T(1), T(-1), T(0)},
+                                                {T(0), T(0), T(0), T(1), T(1), T(-2)});
   EXPECT_TRUE(same_points(ll, {{1, 1}}, double(tol<T>(16))));
-  EXPECT_EQ(intersect_quadratic_curves<T>({T(0), T(0), T(0), T(1), T(-1), T(0)}, {T(0), T(0), T(0), T(1), T(-1), T(3)}).count, 0);
+  EXPECT_EQ(intersect_quadratic_curves<T>({T(0), T(0), T(0), T(1), T(-1), T(0)},
+                                          {T(0), T(0), T(0), T(1), T(-1), T(3)})
+                .count,
+            0);
 }
 
 TYPED_TEST(PolySysTest, InvariantUnderSwapAndExactRotation) {
@@ -394,14 +431,16 @@ TYPED_TEST(PolySysTest, InvariantUnderSwapAndExactRotation) {
     // Points (x, y) of the original map to u = ca x - sa y, v = sa x + ca y. Near-tangent random
     // pairs are ill-conditioned; compare only when every intersection is clearly transversal.
     bool transversal = true;
-    for (int i = 0; i < r.count; ++i) transversal = transversal && r.multiplicity[static_cast<std::size_t>(i)] == 1;
+    for (int i = 0; i < r.count; ++i)
+      transversal = transversal && r.multiplicity[static_cast<std::size_t>(i)] == 1;
     if (!transversal || rr.count != r.count) {
       EXPECT_LE(std::abs(rr.count - r.count), 2) << trial;  // only a near-tangency may differ
       continue;
     }
     std::vector<std::array<double, 2>> want;
     for (int i = 0; i < r.count; ++i) {
-      const double x = double(r.point[static_cast<std::size_t>(i)].x), y = double(r.point[static_cast<std::size_t>(i)].y);
+      const double x = double(r.point[static_cast<std::size_t>(i)].x),
+                   y = double(r.point[static_cast<std::size_t>(i)].y);
       want.push_back({0.6 * x - 0.8 * y, 0.8 * x + 0.6 * y});
     }
     // Relative: random conic pairs may meet very far out (a nearly vanishing leading term of R).

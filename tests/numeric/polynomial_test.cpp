@@ -29,7 +29,8 @@ namespace {
 
 PQ random_q(Rng& rng, int deg) {
   std::vector<Q> c;
-  for (int i = 0; i <= deg; ++i) c.push_back(po::frac(rng.uniform_int(-20, 20), rng.uniform_int(1, 7)));
+  for (int i = 0; i <= deg; ++i)
+    c.push_back(po::frac(rng.uniform_int(-20, 20), rng.uniform_int(1, 7)));
   if (deg >= 0 && c.back() == 0) c.back() = 1;
   return PQ(c);
 }
@@ -114,7 +115,8 @@ TEST(Polynomial, ExactGcdOfPolynomialsWithKnownCommonRoots) {
     std::vector<Q> fr = common, gr = common;
     fr.insert(fr.end(), roots.begin() + k, roots.begin() + k + 2);
     gr.insert(gr.end(), roots.begin() + k + 2, roots.begin() + k + 4);
-    const PQ f = from_roots(fr, Q(rng.uniform_int(1, 9))), g = from_roots(gr, Q(-rng.uniform_int(1, 9)));
+    const PQ f = from_roots(fr, Q(rng.uniform_int(1, 9))),
+             g = from_roots(gr, Q(-rng.uniform_int(1, 9)));
     EXPECT_EQ(gcd(f, g), from_roots(common));
     EXPECT_EQ(gcd(g, f), from_roots(common));
   }
@@ -132,7 +134,8 @@ TYPED_TEST(PolynomialTest, FloatingGcdWithTolerance) {
   EXPECT_NEAR(h[1], T(2), tol<T>(64, 2));
   EXPECT_EQ(h[2], T(1));
   // Coprime: the gcd is the constant 1.
-  EXPECT_EQ(gcd(Polynomial<T>{T(-1), T(0), T(1)}, Polynomial<T>{T(-4), T(0), T(1)}), (Polynomial<T>{T(1)}));
+  EXPECT_EQ(gcd(Polynomial<T>{T(-1), T(0), T(1)}, Polynomial<T>{T(-4), T(0), T(1)}),
+            (Polynomial<T>{T(1)}));
 }
 
 TYPED_TEST(PolynomialTest, FloatingArithmeticMatchesExactWithinRoundoff) {
@@ -140,7 +143,8 @@ TYPED_TEST(PolynomialTest, FloatingArithmeticMatchesExactWithinRoundoff) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int trial = 0; trial < 200; ++trial) {
-    const auto a = random_poly<T>(rng, rng.uniform_int(1, 8)), b = random_poly<T>(rng, rng.uniform_int(1, 4));
+    const auto a = random_poly<T>(rng, rng.uniform_int(1, 8)),
+               b = random_poly<T>(rng, rng.uniform_int(1, 4));
     const auto d = divide(a, b);
     const auto back = d.quotient * b + d.remainder;
     // Long division is backward stable relative to |q| |b|: check coefficient-wise against
@@ -229,7 +233,8 @@ TEST(Polynomial, SturmCountMatchesIndependentOracleAndKnownRoots) {
     }
     PQ p = from_roots(roots, Q(rng.uniform_int(1, 5)));
     if (trial % 2) p = p * PQ{Q(rng.uniform_int(1, 20)), Q(0), Q(1)};  // x^2 + c: no real roots
-    const Q a = po::frac(rng.uniform_int(-40, 0) * 2 + 1, 3), b = po::frac(rng.uniform_int(0, 40) * 2 + 1, 3);
+    const Q a = po::frac(rng.uniform_int(-40, 0) * 2 + 1, 3),
+            b = po::frac(rng.uniform_int(0, 40) * 2 + 1, 3);
     int expected = 0;
     for (const Q& r : distinct) expected += (r > a && r <= b);
     EXPECT_EQ(sturm_count(p, a, b), expected);
@@ -257,7 +262,8 @@ TEST(Polynomial, FiguresA9AndA10) {
   Polynomial<double> fd{19, -7, 6, 1};
   const double crit_hi = -2 + std::sqrt(228.0) / 6;  // the local minimum
   const auto e = evaluate_with_bound(fd, crit_hi);
-  EXPECT_NEAR(e.value, 19 - 7 * crit_hi + 6 * crit_hi * crit_hi + crit_hi * crit_hi * crit_hi, 1e-12);
+  EXPECT_NEAR(e.value, 19 - 7 * crit_hi + 6 * crit_hi * crit_hi + crit_hi * crit_hi * crit_hi,
+              1e-12);
   EXPECT_GT(e.value, 0.0);
   // Floating Sturm sequence agrees on this well-conditioned case.
   EXPECT_EQ(sturm_count(fd, -8.0, 3.0), 1);

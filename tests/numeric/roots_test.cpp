@@ -34,10 +34,14 @@ RootsResult<T> solve(const std::vector<T>& c) {
   std::vector<T> p = c;
   p.resize(5, T(0));
   switch (c.size()) {
-    case 2: return solve_linear(p[0], p[1]);
-    case 3: return solve_quadratic(p[0], p[1], p[2]);
-    case 4: return solve_cubic(p[0], p[1], p[2], p[3]);
-    default: return solve_quartic(p[0], p[1], p[2], p[3], p[4]);
+    case 2:
+      return solve_linear(p[0], p[1]);
+    case 3:
+      return solve_quadratic(p[0], p[1], p[2]);
+    case 4:
+      return solve_cubic(p[0], p[1], p[2], p[3]);
+    default:
+      return solve_quartic(p[0], p[1], p[2], p[3], p[4]);
   }
 }
 
@@ -101,10 +105,12 @@ TYPED_TEST(RootsTest, WellSeparatedRandomRootsAreAllFoundAccurately) {
     for (int i = 1; i < res.count; ++i) EXPECT_LT(res.roots[i - 1].value, res.roots[i].value);
     lost += expected - res.count;
   }
-  g_max_rel_err[std::is_same_v<T, double>] = std::max(g_max_rel_err[std::is_same_v<T, double>], max_err);
-  std::printf("[roots] %s: %d roots of random well-separated polynomials (deg 1-4), lost %d, "
-              "max relative error %.3g\n",
-              std::is_same_v<T, double> ? "double" : "float", total, lost, max_err);
+  g_max_rel_err[std::is_same_v<T, double>] =
+      std::max(g_max_rel_err[std::is_same_v<T, double>], max_err);
+  std::printf(
+      "[roots] %s: %d roots of random well-separated polynomials (deg 1-4), lost %d, "
+      "max relative error %.3g\n",
+      std::is_same_v<T, double> ? "double" : "float", total, lost, max_err);
 }
 
 TYPED_TEST(RootsTest, RandomQuarticsWithComplexRootsCountMatchesSturm) {
@@ -141,7 +147,8 @@ TYPED_TEST(RootsTest, ExactMultipleRootsHaveTheirMultiplicity) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   // Roots k/8 with small k: every coefficient of the expansion is exact in float and double.
-  const std::vector<std::vector<int>> patterns = {{2}, {3}, {4}, {2, 1}, {2, 1, 1}, {3, 1}, {2, 2}, {1, 1}};
+  const std::vector<std::vector<int>> patterns = {{2},       {3},    {4},    {2, 1},
+                                                  {2, 1, 1}, {3, 1}, {2, 2}, {1, 1}};
   int checked = 0;
   for (int trial = 0; trial < 400; ++trial) {
     const auto& pat = patterns[static_cast<std::size_t>(trial) % patterns.size()];
@@ -165,13 +172,15 @@ TYPED_TEST(RootsTest, ExactMultipleRootsHaveTheirMultiplicity) {
       const double want = ks[i] / 8.0;
       const Root<T>* best = nullptr;
       for (const auto& root : res)
-        if (!best || std::abs(double(root.value) - want) < std::abs(double(best->value) - want)) best = &root;
+        if (!best || std::abs(double(root.value) - want) < std::abs(double(best->value) - want))
+          best = &root;
       ASSERT_NE(best, nullptr);
       EXPECT_EQ(best->multiplicity, pat[i]) << "root " << want;
       // A root of multiplicity m is conditioned like eps^(1/m); exact data and twice-precision
       // evaluation leave an error of a few ulps for m <= 2 and about eps^(1/2) for m = 3, 4.
       const double k = pat[i] <= 2 ? 1e-14 : 1e-7;
-      EXPECT_LE(std::abs(double(best->value) - want), std::max(k, double(tol<T>(4))) * (1 + std::abs(want)));
+      EXPECT_LE(std::abs(double(best->value) - want),
+                std::max(k, double(tol<T>(4))) * (1 + std::abs(want)));
     }
   }
   EXPECT_GT(checked, 200);
@@ -188,9 +197,13 @@ TYPED_TEST(RootsTest, ClusteredRootsAreNeverLost) {
   struct Case {
     std::vector<double> roots;
   };
-  std::vector<Case> cases = {
-      {{1, 1, 1, 1 + 1e-7}}, {{1, 1, 1 + 1e-9, -2}}, {{1, 1, 1, 1}}, {{0.1, 0.1, 0.1 + 1e-6, -5}},
-      {{-3, -3 + 1e-8, 2, 2 + 1e-8}}, {{1, 1 + 1e-12}}, {{1e-5, 1e-5 + 1e-12, 1e-5 + 2e-12}}};
+  std::vector<Case> cases = {{{1, 1, 1, 1 + 1e-7}},
+                             {{1, 1, 1 + 1e-9, -2}},
+                             {{1, 1, 1, 1}},
+                             {{0.1, 0.1, 0.1 + 1e-6, -5}},
+                             {{-3, -3 + 1e-8, 2, 2 + 1e-8}},
+                             {{1, 1 + 1e-12}},
+                             {{1e-5, 1e-5 + 1e-12, 1e-5 + 2e-12}}};
   for (int i = 0; i < 60; ++i) {
     const double c = rng.uniform<double>(-4, 4), d = std::pow(10.0, rng.uniform_int(-12, -3));
     const int n = rng.uniform_int(2, 4);
@@ -217,7 +230,8 @@ TYPED_TEST(RootsTest, ClusteredRootsAreNeverLost) {
     for (double e : ex) {
       int near_mult = 0, near_exact = 0;
       for (const auto& root : res)
-        if (std::abs(double(root.value) - e) <= radius * (1 + std::abs(e))) near_mult += root.multiplicity;
+        if (std::abs(double(root.value) - e) <= radius * (1 + std::abs(e)))
+          near_mult += root.multiplicity;
       for (double e2 : ex)
         if (std::abs(e2 - e) <= radius * (1 + std::abs(e))) ++near_exact;
       EXPECT_GE(near_mult, 1) << "exact root " << e << " lost";
@@ -237,7 +251,12 @@ TYPED_TEST(RootsTest, ClusteredRootsAreNeverLost) {
           pw *= xa;
         }
         const double bound = 16.0 * n * double(eps_v<T>) * abs_sum.get_d();
-        EXPECT_LE(std::abs(po::eval(exact, x).get_d()), bound) << "spurious root " << root.value << " of " << ::testing::PrintToString(cs.roots) << " coefficients " << ::testing::PrintToString(c) << " res " << ::testing::PrintToString(std::vector<double>{double(res.roots[0].value), double(res.roots[1].value), double(res.roots[2].value), double(res.count)});
+        EXPECT_LE(std::abs(po::eval(exact, x).get_d()), bound)
+            << "spurious root " << root.value << " of " << ::testing::PrintToString(cs.roots)
+            << " coefficients " << ::testing::PrintToString(c) << " res "
+            << ::testing::PrintToString(
+                   std::vector<double>{double(res.roots[0].value), double(res.roots[1].value),
+                                       double(res.roots[2].value), double(res.count)});
         EXPECT_GE(root.multiplicity, 2);
       }
     }
@@ -340,8 +359,9 @@ TYPED_TEST(RootsTest, BadInputHasADocumentedStatusAndNoRoots) {
   EXPECT_EQ(k.count, 0);
   // Extreme but finite coefficients never hang nor leak NaN.
   const T big = std::numeric_limits<T>::max(), small = std::numeric_limits<T>::denorm_min();
-  for (const auto& r : {solve_quartic(small, T(0), T(0), T(0), big), solve_quartic(big, -big, big, -big, small),
-                        solve_quartic(small, small, -big, T(1), T(1)), solve_quadratic(-big, T(0), small)}) {
+  for (const auto& r :
+       {solve_quartic(small, T(0), T(0), T(0), big), solve_quartic(big, -big, big, -big, small),
+        solve_quartic(small, small, -big, T(1), T(1)), solve_quadratic(-big, T(0), small)}) {
     EXPECT_TRUE(r.status == Status::ok);
     for (const auto& root : r) EXPECT_TRUE(is_finite(root.value));
   }
@@ -390,7 +410,8 @@ TYPED_TEST(RootsTest, GeneralDegreeRealRootsAgainstSturmAndExactBisection) {
   const auto wc = po::round_to<double>(po::expand(w, Q(1)));
   const auto wr = real_roots(Polynomial<double>(wc));
   ASSERT_EQ(wr.count(), 10);
-  for (int i = 0; i < 10; ++i) EXPECT_NEAR(wr.roots[static_cast<std::size_t>(i)].value, i + 1.0, 1e-12 * (i + 1));
+  for (int i = 0; i < 10; ++i)
+    EXPECT_NEAR(wr.roots[static_cast<std::size_t>(i)].value, i + 1.0, 1e-12 * (i + 1));
   // x^n - 1 has the roots 1 and (n even) -1; (x - 1/2)^6 is one root of multiplicity 6.
   for (int n = 1; n <= 20; ++n) {
     std::vector<T> c(static_cast<std::size_t>(n) + 1, T(0));
@@ -418,7 +439,8 @@ TYPED_TEST(RootsTest, InvariantUnderNegatingTheVariableAndScalingThePolynomial) 
     // p(-x): negate odd coefficients (exact). Roots negate.
     const auto m = solve_quartic(c[0], -c[1], c[2], -c[3], c[4]);
     // 2^k p(x): exact scaling; identical roots.
-    const auto s = solve_quartic(c[0] * T(1024), c[1] * T(1024), c[2] * T(1024), c[3] * T(1024), c[4] * T(1024));
+    const auto s = solve_quartic(c[0] * T(1024), c[1] * T(1024), c[2] * T(1024), c[3] * T(1024),
+                                 c[4] * T(1024));
     ASSERT_EQ(r.count, m.count);
     ASSERT_EQ(r.count, s.count);
     for (int i = 0; i < r.count; ++i) {
@@ -444,7 +466,8 @@ TYPED_TEST(RootsTest, ToleranceOptionsTurnNearTangenciesIntoDoubleRoots) {
   const double err[3] = {std::ldexp(1.0, -18), 0, 0};
   RootOptions opt;
   opt.coefficient_error = err;
-  for (const auto& r : {solve_quadratic(T(1) + d, T(-2), T(1), opt), solve_quadratic(T(1) - d, T(-2), T(1), opt)}) {
+  for (const auto& r :
+       {solve_quadratic(T(1) + d, T(-2), T(1), opt), solve_quadratic(T(1) - d, T(-2), T(1), opt)}) {
     ASSERT_EQ(r.count, 1);
     EXPECT_EQ(r.roots[0].multiplicity, 2);
     EXPECT_NEAR(r.roots[0].value, T(1), tol<T>(4));
@@ -463,7 +486,8 @@ TYPED_TEST(RootsTest, ToleranceOptionsTurnNearTangenciesIntoDoubleRoots) {
   const double e4[5] = {std::ldexp(1.0, -14), 0, 0, 0, 0};
   RootOptions o4;
   o4.coefficient_error = e4;
-  const auto q = real_roots(Polynomial<T>(c), -std::numeric_limits<T>::infinity(), std::numeric_limits<T>::infinity(), o4);
+  const auto q = real_roots(Polynomial<T>(c), -std::numeric_limits<T>::infinity(),
+                            std::numeric_limits<T>::infinity(), o4);
   ASSERT_EQ(q.count(), 3);
   EXPECT_EQ(q.roots[1].multiplicity, 2);
   EXPECT_NEAR(q.roots[1].value, T(1), T(1e-3));

@@ -245,13 +245,14 @@ T max_abs_coeff(const Polynomial<T>& p) {
 /// exact up to a few roundings; noisier data needs a larger tolerance (the gcd of perturbed
 /// polynomials is ill-posed, the tolerance says how much perturbation is forgiven).
 template <class T>
-[[nodiscard]] Polynomial<T> gcd(Polynomial<T> a, Polynomial<T> b, [[maybe_unused]] double rel_tol = -1.0) {
+[[nodiscard]] Polynomial<T> gcd(Polynomial<T> a, Polynomial<T> b,
+                                [[maybe_unused]] double rel_tol = -1.0) {
   if (a.degree() < b.degree()) std::swap(a, b);
   for (int guard = 0; guard <= a.degree() + 2 && !b.is_zero(); ++guard) {
     Polynomial<T> r = divide(a, b).remainder;
     if constexpr (Real<T>) {
-      const T tol = static_cast<T>(rel_tol < 0 ? 1e3 * double(eps_v<T>) : rel_tol) *
-                    detail::max_abs_coeff(b);
+      const T tol =
+          static_cast<T>(rel_tol < 0 ? 1e3 * double(eps_v<T>) : rel_tol) * detail::max_abs_coeff(b);
       if (!(detail::max_abs_coeff(r) > tol)) r = Polynomial<T>{};
     }
     a = std::move(b);

@@ -109,7 +109,8 @@ E ring_determinant(const std::vector<std::vector<E>>& m, const E& zero, const E&
         const std::size_t ns = s | (std::size_t(1) << r);
         E term = entry * cur[s];
         if ((pos + k) % 2 != 0) term = -term;
-        if (nxt_set[ns]) nxt[ns] = nxt[ns] + term;
+        if (nxt_set[ns])
+          nxt[ns] = nxt[ns] + term;
         else {
           nxt[ns] = term;
           nxt_set[ns] = 1;
@@ -130,10 +131,12 @@ std::vector<std::vector<E>> sylvester(const std::vector<E>& f, int m, const std:
                                 std::vector<E>(static_cast<std::size_t>(size), zero));
   for (int r = 0; r < n; ++r)
     for (int i = 0; i <= m; ++i)
-      s[static_cast<std::size_t>(r)][static_cast<std::size_t>(r + m - i)] = f[static_cast<std::size_t>(i)];
+      s[static_cast<std::size_t>(r)][static_cast<std::size_t>(r + m - i)] =
+          f[static_cast<std::size_t>(i)];
   for (int r = 0; r < m; ++r)
     for (int i = 0; i <= n; ++i)
-      s[static_cast<std::size_t>(n + r)][static_cast<std::size_t>(r + n - i)] = g[static_cast<std::size_t>(i)];
+      s[static_cast<std::size_t>(n + r)][static_cast<std::size_t>(r + n - i)] =
+          g[static_cast<std::size_t>(i)];
   return s;
 }
 
@@ -207,7 +210,9 @@ using P4 = std::array<double, 5>;
 inline P4 mul(const P4& p, const P4& q) noexcept {
   P4 r{};
   for (int i = 0; i < 5; ++i)
-    for (int j = 0; i + j < 5; ++j) r[static_cast<std::size_t>(i + j)] += p[static_cast<std::size_t>(i)] * q[static_cast<std::size_t>(j)];
+    for (int j = 0; i + j < 5; ++j)
+      r[static_cast<std::size_t>(i + j)] +=
+          p[static_cast<std::size_t>(i)] * q[static_cast<std::size_t>(j)];
   return r;
 }
 inline P4 sub(const P4& p, const P4& q) noexcept {
@@ -265,8 +270,8 @@ template <Real T>
     k[i] = {c[0], c[1], c[2], c[3], c[4], c[5]};
   }
   // Keep the variable with the larger square coefficient as the resultant's variable "y".
-  const bool swap_xy = std::max(std::abs(k[0].a), std::abs(k[1].a)) <
-                       std::max(std::abs(k[0].c), std::abs(k[1].c));
+  const bool swap_xy =
+      std::max(std::abs(k[0].a), std::abs(k[1].a)) < std::max(std::abs(k[0].c), std::abs(k[1].c));
   Conic w[2] = {k[0], k[1]};
   if (swap_xy)
     for (Conic& q : w) {
@@ -291,8 +296,8 @@ template <Real T>
   } else {
     const P4 a1{A[0], 0, 0, 0, 0}, a2{A[1], 0, 0, 0, 0};
     const P4 aa1{std::abs(A[0]), 0, 0, 0, 0}, aa2{std::abs(A[1]), 0, 0, 0, 0};
-    const P4 u = sub(mul(a1, C[1]), mul(a2, C[0]));    // A1 C2 - A2 C1
-    const P4 v = sub(mul(a1, B[1]), mul(a2, B[0]));    // A1 B2 - A2 B1
+    const P4 u = sub(mul(a1, C[1]), mul(a2, C[0]));      // A1 C2 - A2 C1
+    const P4 v = sub(mul(a1, B[1]), mul(a2, B[0]));      // A1 B2 - A2 B1
     const P4 t = sub(mul(B[0], C[1]), mul(B[1], C[0]));  // B1 C2 - B2 C1
     R = sub(mul(u, u), mul(v, t));
     const P4 ua = add(mul(aa1, Cab[1]), mul(aa2, Cab[0]));
@@ -301,9 +306,12 @@ template <Real T>
     Rabs = add(mul(ua, ua), mul(va, ta));
   }
   const double eps_t = static_cast<double>(eps_v<T>);
-  const double coincidence_tol = opt.coincidence_tolerance > 0 ? opt.coincidence_tolerance : 16.0 * eps_t;
-  const double tangency_tol = opt.tangency_tolerance > 0 ? opt.tangency_tolerance : 16.0 * eps_v<double>;
-  const double residual_tol = opt.residual_tolerance > 0 ? opt.residual_tolerance : 8.0 * std::sqrt(eps_t);
+  const double coincidence_tol =
+      opt.coincidence_tolerance > 0 ? opt.coincidence_tolerance : 16.0 * eps_t;
+  const double tangency_tol =
+      opt.tangency_tolerance > 0 ? opt.tangency_tolerance : 16.0 * eps_v<double>;
+  const double residual_tol =
+      opt.residual_tolerance > 0 ? opt.residual_tolerance : 8.0 * std::sqrt(eps_t);
   // Common component. Coincident curves: the normalised coefficient vectors are parallel (all
   // 2x2 minors small), which also catches multiples rounded to T. Other shared components
   // (degenerate conics sharing a line): R vanishes identically up to its rounding errors.
@@ -314,7 +322,8 @@ template <Real T>
     for (int i = 0; i < 6; ++i) {
       n0 = std::max(n0, std::abs(c0[i]));
       n1 = std::max(n1, std::abs(c1[i]));
-      for (int j = i + 1; j < 6; ++j) minor = std::max(minor, std::abs(c0[i] * c1[j] - c0[j] * c1[i]));
+      for (int j = i + 1; j < 6; ++j)
+        minor = std::max(minor, std::abs(c0[i] * c1[j] - c0[j] * c1[i]));
     }
     bool r_zero = true;
     for (std::size_t i = 0; i < 5; ++i)
@@ -327,7 +336,9 @@ template <Real T>
   // A leading coefficient of R within its rounding error is zero: the curves then share a point
   // at infinity (a common asymptotic direction), which must not turn into a huge spurious root.
   for (int i = 4; i > 0; --i) {
-    if (std::abs(R[static_cast<std::size_t>(i)]) > 64.0 * eps_v<double> * Rabs[static_cast<std::size_t>(i)]) break;
+    if (std::abs(R[static_cast<std::size_t>(i)]) >
+        64.0 * eps_v<double> * Rabs[static_cast<std::size_t>(i)])
+      break;
     R[static_cast<std::size_t>(i)] = 0.0;
   }
   // R's coefficients carry rounding errors up to about eps * Rabs, and the data itself is only
@@ -355,7 +366,8 @@ template <Real T>
       if (!transversal) break;
       const double dx = (f1 * j22 - f2 * j12) / det, dy = (j11 * f2 - j21 * f1) / det;
       const double nx = x - dx, ny = y - dy;
-      const double before = std::abs(f1) / w[0].abs_terms(x, y) + std::abs(f2) / w[1].abs_terms(x, y);
+      const double before =
+          std::abs(f1) / w[0].abs_terms(x, y) + std::abs(f2) / w[1].abs_terms(x, y);
       const double after = std::abs(w[0](nx, ny)) / w[0].abs_terms(nx, ny) +
                            std::abs(w[1](nx, ny)) / w[1].abs_terms(nx, ny);
       if (!(after < before)) break;
@@ -372,8 +384,10 @@ template <Real T>
     const double sc = 1.0 + std::max(std::abs(x), std::abs(y));
     for (int i = 0; i < nc; ++i)
       if (std::abs(cand[i].x - x) <= 1e-7 * sc && std::abs(cand[i].y - y) <= 1e-7 * sc) {
-        if (r < cand[i].residual) cand[i] = {x, y, std::max(mult, cand[i].mult), r};
-        else cand[i].mult = std::max(mult, cand[i].mult);
+        if (r < cand[i].residual)
+          cand[i] = {x, y, std::max(mult, cand[i].mult), r};
+        else
+          cand[i].mult = std::max(mult, cand[i].mult);
         return false;
       }
     if (nc < 16) cand[nc++] = {x, y, mult, r};
@@ -424,12 +438,14 @@ template <Real T>
         }
     // Multiplicity: R's multiplicity shared among the distinct points found on this line.
     const int found = nc - before;
-    for (int i = before; i < nc; ++i) cand[i].mult = std::max(1, found > 0 ? root.multiplicity / found : 1);
+    for (int i = before; i < nc; ++i)
+      cand[i].mult = std::max(1, found > 0 ? root.multiplicity / found : 1);
   }
   // Keep the (at most 4) best, sorted by x then y in the caller's coordinates.
   for (int i = 0; i < nc; ++i)
     if (swap_xy) std::swap(cand[i].x, cand[i].y);
-  std::sort(cand, cand + nc, [](const Candidate& p, const Candidate& q) { return p.residual < q.residual; });
+  std::sort(cand, cand + nc,
+            [](const Candidate& p, const Candidate& q) { return p.residual < q.residual; });
   nc = std::min(nc, 4);
   std::sort(cand, cand + nc, [](const Candidate& p, const Candidate& q) {
     return p.x < q.x || (p.x == q.x && p.y < q.y);
