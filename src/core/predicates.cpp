@@ -20,13 +20,24 @@
 // This file must be compiled with -ffp-contract=off (CMake sets it): the expansion theorems need
 // each operation rounded on its own.
 
-#include <locus/core/predicates.hpp>
-
-#include "expansion.hpp"
-
 #if defined(__FAST_MATH__)
 #error "locus: src/core/predicates.cpp must not be compiled with -ffast-math (exact arithmetic)"
 #endif
+
+#include <cfloat>
+// Expansion arithmetic needs every double operation rounded to double: no x87 extended precision.
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
+#error "locus: exact predicates need FLT_EVAL_METHOD == 0 (e.g. SSE2 arithmetic, not x87)"
+#endif
+// Belt and braces for builds that miss CMake's -ffp-contract=off: clang honours the standard
+// pragma (GCC ignores it, and gets the flag).
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+
+#include <locus/core/predicates.hpp>
+
+#include "expansion.hpp"
 
 #include <cmath>
 #include <optional>
