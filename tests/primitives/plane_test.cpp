@@ -237,3 +237,29 @@ TYPED_TEST(PlaneTest, NewellNormalIsTwiceAreaTimesNormal) {
   std::vector<Vec3<T>> line{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};
   EXPECT_FALSE(best_fit_plane_newell(std::span<const Vec3<T>>(line)).has_value());
 }
+
+TYPED_TEST(PlaneTest, ThroughIsTranslationAndRotationCovariant) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 500; ++trial) {
+    // Integer points and offsets: every quantity below is exact, so the checks are equalities.
+    const auto a = int_vec<T>(rng, 30), b = int_vec<T>(rng, 30), c = int_vec<T>(rng, 30);
+    const auto off = int_vec<T>(rng, 100);
+    const auto p = plane_through(a, b, c);
+    const auto q = plane_through(Vec3<T>(a + off), Vec3<T>(b + off), Vec3<T>(c + off));
+    ASSERT_EQ(p.has_value(), q.has_value());
+    if (!p) continue;
+    EXPECT_EQ(q->normal, p->normal);
+    EXPECT_EQ(q->constant, p->constant + dot(p->normal, off));
+    // A cyclic vertex order keeps the plane, a swap flips the normal.
+    const auto r = plane_through(b, c, a), s = plane_through(b, a, c);
+    EXPECT_EQ(r->normal, p->normal);
+    EXPECT_EQ(s->normal, -p->normal);
+    // The coordinate permutation (x, y, z) -> (y, z, x) is a rotation: the normal permutes too.
+    const auto rot = [](const Vec3<T>& v) { return Vec3<T>{v.y, v.z, v.x}; };
+    const auto pr = plane_through(rot(a), rot(b), rot(c));
+    EXPECT_EQ(pr->normal, rot(p->normal));
+    EXPECT_EQ(pr->constant, p->constant);
+  }
+}

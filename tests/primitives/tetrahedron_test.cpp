@@ -6,6 +6,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -158,5 +159,38 @@ TYPED_TEST(TetrahedronTest, ParametrisationsCentroidAndBox) {
       EXPECT_EQ(box.min[k],
                 std::fmin(std::fmin(t.v[0][k], t.v[1][k]), std::fmin(t.v[2][k], t.v[3][k])));
     }
+  }
+}
+
+TYPED_TEST(TetrahedronTest, PermutationAndTranslationInvariance) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  // All 24 permutations of (0, 1, 2, 3) with their parities.
+  int perm[4] = {0, 1, 2, 3};
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto t = random_tet<T>(rng);
+    const int o = orientation(t);
+    const T v = volume(t);
+    std::sort(perm, perm + 4);
+    do {
+      int inversions = 0;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j];
+      const Tetrahedron3<T> p{{t.v[perm[0]], t.v[perm[1]], t.v[perm[2]], t.v[perm[3]]}};
+      EXPECT_EQ(orientation(p), inversions % 2 ? -o : o);
+      EXPECT_NEAR(volume(p), v, tol<T>(64, 1000) / 6);
+    } while (std::next_permutation(perm, perm + 4));
+    // Translation by an exactly representable offset keeps the exact orientation when the
+    // translated coordinates are exact too (integer grid).
+    Tetrahedron3<T> g{};
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 3; ++k) g.v[i][k] = T(rng.uniform_int(-100, 100));
+    const Vec3<T> off{T(rng.uniform_int(-1000, 1000)), T(rng.uniform_int(-1000, 1000)),
+                      T(rng.uniform_int(-1000, 1000))};
+    Tetrahedron3<T> h = g;
+    for (auto& p : h.v) p += off;
+    EXPECT_EQ(orientation(h), orientation(g));
+    EXPECT_EQ(orientation(h), sgn(exact_det(g)));
   }
 }
