@@ -16,8 +16,8 @@ namespace locus_gallery {
 std::vector<Figure> all_figures() {
   std::vector<Figure> all;
   for (auto part :
-       {chapter3_vector_figures(), chapter3_affine_figures(), chapter4_transform_figures(),
-        chapter4_projection_figures(), chapter5_primitive_figures()})
+       {chapter2_linear_figures(), chapter3_vector_figures(), chapter3_affine_figures(),
+        chapter4_transform_figures(), chapter4_projection_figures(), chapter5_primitive_figures()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }
@@ -92,7 +92,7 @@ RunResult run(const std::string& out_dir) {
        << "figure{display:inline-block;vertical-align:top;width:520px;margin:10px;padding:8px;"
        << "background:white;border:1px solid #ddd}img{max-width:100%}"
        << "figcaption{font-size:14px}code{font-size:12px;color:#555}</style>\n</head>\n<body>\n"
-       << "<h1>locus gallery</h1>\n<p>Figures of chapters 3&ndash;5 of <i>Geometric Tools for "
+       << "<h1>locus gallery</h1>\n<p>Figures of chapters 2&ndash;5 of <i>Geometric Tools for "
        << "Computer Graphics</i> (Schneider &amp; Eberly), redrawn from live locus computations "
        << "by <code>locus_gallery</code>.</p>\n";
   for (const Figure& f : all_figures()) {

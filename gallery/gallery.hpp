@@ -38,6 +38,7 @@ struct Figure {
 };
 
 // The per-file tables, in book order.
+std::vector<Figure> chapter2_linear_figures();      // ch02_linear.cpp: 2.2, 2.3, 2.9
 std::vector<Figure> chapter3_vector_figures();      // ch03_vectors.cpp: 3.1-3.17
 std::vector<Figure> chapter3_affine_figures();      // ch03_affine.cpp: 3.19-3.42
 std::vector<Figure> chapter4_transform_figures();   // ch04_transforms.cpp: 4.1-4.25

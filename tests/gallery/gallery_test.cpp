@@ -56,16 +56,20 @@ TEST(Gallery, EveryFigureRendersAWellFormedSvg) {
     SCOPED_TRACE(f.id);
     const locus_gallery::Rendered r = locus_gallery::render(f);
     EXPECT_TRUE(r.ok) << "a locus computation failed";
-    std::string lower = r.svg;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](char c) {
-      return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    });
-    EXPECT_EQ(lower.find("nan"), std::string::npos);
-    EXPECT_EQ(lower.find("inf"), std::string::npos);
     const Node root = parse_or_fail(r.svg);
     const double W = num(root, "width"), H = num(root, "height");
     std::size_t drawn = 0;
     for (const Node* n : elements(root)) {
+      // No attribute (coordinates, sizes, transforms) spells a non-finite number; text content
+      // may ("infinitely many solutions").
+      for (const auto& [key, value] : n->attrs) {
+        std::string v = value;
+        std::transform(v.begin(), v.end(), v.begin(), [](char ch) {
+          return static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        });
+        EXPECT_EQ(v.find("nan"), std::string::npos) << n->tag << " " << key << "=" << value;
+        EXPECT_EQ(v.find("inf"), std::string::npos) << n->tag << " " << key << "=" << value;
+      }
       if (n->tag == "title" || n->tag == "g") continue;
       ++drawn;
       for (const Vec2d& q : covered_points(*n)) {
