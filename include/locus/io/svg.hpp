@@ -14,14 +14,17 @@
 // item (points, segments, polylines, polygons, circles, ellipses, arcs, arrows, text anchors,
 // ray origins and line base points) is scaled to fit within options.max_width x
 // options.max_height pixels, plus options.margin pixels on each side. set_view() fixes the world
-// window instead. Lines and rays are clipped to the final view rectangle (margin included), so
-// they run from edge to edge; a line that misses the view is not emitted.
+// window instead. Where a text label would stick out of the canvas (its extent is estimated at
+// 0.6 em per character, 1 em high), the canvas grows on that side; the scale stays. Lines and
+// rays are clipped to the final canvas rectangle (margin included), so they run from edge to
+// edge; a line that misses it is not emitted.
 //
 // Curves. Circles, ellipses (rotated: center, unit-ish direction of the first axis, two
 // extents) and circular arcs are emitted as exact SVG elements (<circle>, <ellipse> with a
 // rotate transform, path 'A' commands). An arc runs COUNTER-CLOCKWISE in the world from angle0
-// to angle1 (radians, from the +x axis); a span of 2*pi or more draws the full circle. Any other
-// curve can be drawn by sampling it (curve()).
+// to angle1 (radians, from the +x axis); when angle1 < angle0 it ends at the first angle
+// equivalent to angle1 (mod 2 pi) after angle0; angle1 - angle0 >= 2 pi draws the full circle
+// and angle1 == angle0 draws nothing. Any other curve can be drawn by sampling it (curve()).
 //
 // 3D. set_camera() chooses a camera (eye, target, up; perspective with a vertical field of view,
 // or orthographic). The 3D overloads (point, segment, polyline, arrow, text taking Vec3) project
@@ -45,7 +48,7 @@
 //
 // Cost. Items are stored until emission: O(total vertices) memory and time.
 //
-// Book: the figures of chapters 3-5 (gallery/), the wireframes through section 4.7 projections.
+// Book: the figures of chapters 2-5 (gallery/); the 3D camera is the pipeline of section 4.8.
 
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>
