@@ -106,7 +106,7 @@ template <class T, int N, std::size_t K>
     if (!is_finite(v[static_cast<std::size_t>(i)])) f.finite = false;
   if (!f.finite) return f;
   for (int i = 0; i < KI; ++i) {
-    const Normalized<T, N> n = unit_and_length(v[static_cast<std::size_t>(i)]);
+    const Normalized<T, N> n = normalize_with_length(v[static_cast<std::size_t>(i)]);
     f.len[i] = n.length;
     f.q_of[i] = -1;
     Vec<T, N> w = n.dir;
@@ -234,7 +234,7 @@ template <Real T>
     r.status = Status::non_finite_input;
     return r;
   }
-  const Vec3<T> n = detail::unit_and_length(d).dir;
+  const Vec3<T> n = normalize_with_length(d).dir;
   if (n == Vec3<T>{}) {
     r.status = Status::degenerate_input;
     return r;

@@ -35,19 +35,7 @@
 
 namespace locus {
 
-namespace detail {
-// normalize_with_length with a one-square-root fast path when |v|^2 is a normal number (the
-// common case); vec.hpp's rescaling version handles tiny, huge, zero and non-finite vectors.
-template <class T, int N>
-[[nodiscard]] inline Normalized<T, N> unit_and_length(const Vec<T, N>& v) noexcept {
-  const T s = sqr_length(v);
-  if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) {
-    const T len = std::sqrt(s);
-    return {v / len, len};
-  }
-  return normalize_with_length(v);
-}
-}  // namespace detail
+
 
 /// Scalar triple product a . (b x c) = det[a b c]: the signed volume of the parallelepiped
 /// spanned by a, b, c; positive for a right-handed triple. Invariant under cyclic permutation.
@@ -69,7 +57,7 @@ template <Real T>
 template <Real T, int N>
 [[nodiscard]] inline T angle_between(const Vec<T, N>& a, const Vec<T, N>& b) noexcept {
   if (!is_finite(a) || !is_finite(b)) return std::numeric_limits<T>::quiet_NaN();
-  const Normalized<T, N> na = detail::unit_and_length(a), nb = detail::unit_and_length(b);
+  const Normalized<T, N> na = normalize_with_length(a), nb = normalize_with_length(b);
   if (na.length == T(0) || nb.length == T(0)) return T(0);
   const Vec<T, N>&ua = na.dir, &ub = nb.dir;
   if constexpr (N == 3) {
@@ -86,7 +74,7 @@ template <Real T, int N>
 template <Real T>
 [[nodiscard]] inline T signed_angle(const Vec2<T>& a, const Vec2<T>& b) noexcept {
   if (!is_finite(a) || !is_finite(b)) return std::numeric_limits<T>::quiet_NaN();
-  const Normalized<T, 2> na = detail::unit_and_length(a), nb = detail::unit_and_length(b);
+  const Normalized<T, 2> na = normalize_with_length(a), nb = normalize_with_length(b);
   if (na.length == T(0) || nb.length == T(0)) return T(0);
   return atan2_signed(perp_dot(na.dir, nb.dir), dot(na.dir, nb.dir));
 }
@@ -99,8 +87,8 @@ template <Real T>
                                     const Vec3<T>& axis) noexcept {
   const T angle = angle_between(a, b);
   // Normalise first so the sign test cannot underflow to zero for tiny inputs.
-  const T s = dot(detail::unit_and_length(axis).dir,
-                  cross(detail::unit_and_length(a).dir, detail::unit_and_length(b).dir));
+  const T s = dot(normalize_with_length(axis).dir,
+                  cross(normalize_with_length(a).dir, normalize_with_length(b).dir));
   return s < T(0) ? -angle : angle;
 }
 
@@ -127,7 +115,7 @@ template <Real T, int N>
 template <Real T, int N>
 [[nodiscard]] inline T scalar_projection(const Vec<T, N>& v, const Vec<T, N>& d) noexcept {
   if (!is_finite(d)) return std::numeric_limits<T>::quiet_NaN();
-  const Normalized<T, N> nd = detail::unit_and_length(d);
+  const Normalized<T, N> nd = normalize_with_length(d);
   if (nd.length == T(0)) return T(0);
   return dot(v, nd.dir);
 }

@@ -247,12 +247,19 @@ struct Normalized {
 /// Unit vector along a and the length of a. A zero or non-finite vector gives {0, 0}.
 template <class T, int N>
 [[nodiscard]] inline Normalized<T, N> normalize_with_length(const Vec<T, N>& a) noexcept {
+  // Fast path, one square root: the sum of squares neither overflowed nor lost precision to
+  // underflow, so sqrt(s) is the length to within an ulp or so.
+  const T s = sqr_length(a);
+  if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) {
+    const T len = std::sqrt(s);
+    return {a / len, len};
+  }
+  // Huge, tiny (subnormal), zero or non-finite: rescale by the largest component first.
   T len = length(a);
   if (!(len > T(0)) || !is_finite(len)) return {Vec<T, N>{}, T(0)};
-  // Divide by the largest component first so that tiny (subnormal) vectors normalise too.
   T m = max_abs(a);
-  Vec<T, N> s = a / m;
-  return {s / length(s), len};
+  Vec<T, N> scaled = a / m;
+  return {scaled / length(scaled), len};
 }
 
 /// Unit vector along a; the zero vector when a is zero or not finite.
