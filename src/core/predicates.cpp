@@ -108,11 +108,10 @@ Exp<4> cross(double a1, double b1, double a2, double b2) noexcept {
   return h;
 }
 
-/// e with few components (in place), to keep later products short.
+/// Rewrites e with few components, to keep later products short.
 template <int N>
-Exp<N> compressed(Exp<N> e) noexcept {
+void compress(Exp<N>& e) noexcept {
   e.len = ex::compress(e.len, e.v);
-  return e;
 }
 
 template <int N>
@@ -148,7 +147,9 @@ Exp<4> minor2(const P& p, const P& q) noexcept {
 /// det[p; q; r] of 3x3 raw coordinates, from the minors m(q,r), m(p,r), m(p,q).
 Exp<24> minor3(const Vec3<double>& p, const Vec3<double>& q, const Vec3<double>& r,
                const Exp<4>& mqr, const Exp<4>& mpr, const Exp<4>& mpq) noexcept {
-  return compressed((mqr * p.z - mpr * q.z) + mpq * r.z);
+  Exp<24> m = (mqr * p.z - mpr * q.z) + mpq * r.z;
+  compress(m);
+  return m;
 }
 
 /// det of rows (p, 1), (q, 1), (r, 1) in 2D: m(q,r) - m(p,r) + m(p,q) = orient2d(p, q, r).
@@ -156,17 +157,50 @@ Exp<12> minor3_affine(const Exp<4>& mqr, const Exp<4>& mpr, const Exp<4>& mpq) n
   return (mqr - mpr) + mpq;
 }
 
+/// e * (sum of the K coordinates of p squared), exactly. The lift is formed first as a short
+/// expansion (at most 2K components, compressed), then e is scaled by each of its components:
+/// cheaper than scaling e twice per coordinate. Capacity 2N per component, 4KN in all.
+template <int K, int N>
+LOCUS_NOINLINE void lift_times(const double (&p)[K], const Exp<N>& e,
+                               Exp<4 * K * N>& out) noexcept {
+  Exp<2 * K> lift;
+  for (int k = 0; k < K; ++k) {
+    double sq[2];
+    ex::two_product(p[k], p[k], sq[1], sq[0]);
+    Exp<2 * K> next;
+    next.len = ex::sum_zeroelim(lift.len, lift.v, 2, sq, next.v);
+    lift = next;
+  }
+  lift.len = ex::compress(lift.len, lift.v);
+  // Ping-pong between out and tmp, starting so that the last sum lands in out.
+  Exp<4 * K * N> tmp;
+  Exp<4 * K * N>* buf[2] = {&out, &tmp};
+  int dst = lift.len % 2 == 1 ? 0 : 1;
+  out.len = 0;
+  tmp.len = 0;
+  for (int k = 0; k < lift.len; ++k) {
+    const Exp<2 * N> part = e * lift.v[k];
+    const Exp<4 * K* N>& src = *buf[1 - dst];
+    buf[dst]->len = ex::sum_zeroelim(src.len, src.v, part.len, part.v, buf[dst]->v);
+    dst = 1 - dst;
+  }
+}
+
 /// (x^2 + y^2) * e, exactly.
 template <int N>
 Exp<8 * N> lift2_times(const Vec2<double>& p, const Exp<N>& e) noexcept {
-  return ((e * p.x) * p.x) + ((e * p.y) * p.y);
+  const double c[2] = {p.x, p.y};
+  Exp<8 * N> r;
+  lift_times<2>(c, e, r);
+  return r;
 }
-
-/// (x^2 + y^2 + z^2) * e, exactly. Kept out of line so its temporaries do not add to the
-/// caller's frame.
+/// (x^2 + y^2 + z^2) * e, exactly.
 template <int N>
-LOCUS_NOINLINE Exp<12 * N> lift3_times(const Vec3<double>& p, const Exp<N>& e) noexcept {
-  return (((e * p.x) * p.x) + ((e * p.y) * p.y)) + ((e * p.z) * p.z);
+Exp<12 * N> lift3_times(const Vec3<double>& p, const Exp<N>& e) noexcept {
+  const double c[3] = {p.x, p.y, p.z};
+  Exp<12 * N> r;
+  lift_times<3>(c, e, r);
+  return r;
 }
 
 // Out of line: its large buffers must not enlarge the frame of the common path.
@@ -230,8 +264,10 @@ LOCUS_NOINLINE Sign insphere_exact_shewchuk(const Vec3<double>& a, const Vec3<do
     int q[4], n = 0;
     for (int i = 0; i < 5; ++i)
       if (i != skip) q[n++] = i;
-    return compressed((D(q[0], q[1], q[2]) - D(q[0], q[1], q[3])) +
-                      (D(q[0], q[2], q[3]) - D(q[1], q[2], q[3])));
+    Exp<96> f =
+        (D(q[0], q[1], q[2]) - D(q[0], q[1], q[3])) + (D(q[0], q[2], q[3]) - D(q[1], q[2], q[3]));
+    compress(f);
+    return f;
   };
   // Two ping-pong accumulators; the sum of five terms of 1152 components needs 5760.
   static constexpr int cap = 5 * 1152;
