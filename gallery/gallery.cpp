@@ -15,9 +15,9 @@ namespace locus_gallery {
 
 std::vector<Figure> all_figures() {
   std::vector<Figure> all;
-  for (auto part :
-       {chapter2_linear_figures(), chapter3_vector_figures(), chapter3_affine_figures(),
-        chapter4_transform_figures(), chapter4_projection_figures(), chapter5_primitive_figures()})
+  for (auto part : {chapter2_linear_figures(), chapter3_vector_figures(), chapter3_affine_figures(),
+                    chapter4_transform_figures(), chapter4_projection_figures(),
+                    chapter5_primitive_figures(), chapter5_curve_figures()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }

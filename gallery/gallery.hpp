@@ -44,6 +44,7 @@ std::vector<Figure> chapter3_affine_figures();      // ch03_affine.cpp: 3.19-3.4
 std::vector<Figure> chapter4_transform_figures();   // ch04_transforms.cpp: 4.1-4.25
 std::vector<Figure> chapter4_projection_figures();  // ch04_projections.cpp: 4.26-4.34
 std::vector<Figure> chapter5_primitive_figures();   // ch05_primitives.cpp: 5.1-5.16
+std::vector<Figure> chapter5_curve_figures();       // ch05_curves.cpp: 5.17, 5.18
 /// Every figure in book order.
 std::vector<Figure> all_figures();
 
