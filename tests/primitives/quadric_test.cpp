@@ -5,11 +5,15 @@
 
 #include "support/typed.hpp"
 
+#include <gmpxx.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 using namespace locus;
@@ -349,4 +353,116 @@ TYPED_TEST(QuadricTest, QuadricSolidsConvertToTheirClass) {
             QuadricType::elliptic_cylinder);
   EXPECT_EQ(classify(to_quadric(Cylinder3<T>{{{1, 2, 3}, {0, 1, 0}}, 0, 1})).type,
             QuadricType::line);
+}
+
+namespace {
+// Inertia (positive, negative) of a symmetric rational matrix by congruence (symmetric Gaussian
+// elimination with 1x1 or 2x2 pivots; Sylvester's law of inertia): an algorithm independent of
+// the principal-minor signs that classify() uses.
+std::pair<int, int> exact_inertia(std::vector<std::vector<mpq_class>> m) {
+  int pos = 0, neg = 0;
+  while (!m.empty()) {
+    const std::size_t n = m.size();
+    std::size_t k = n;
+    for (std::size_t i = 0; i < n; ++i)
+      if (m[i][i] != 0) {
+        k = i;
+        break;
+      }
+    std::vector<std::size_t> piv;
+    if (k < n) {
+      (m[k][k] > 0 ? pos : neg) += 1;
+      piv = {k};
+    } else {
+      std::size_t pi = n, pj = n;
+      for (std::size_t i = 0; i < n && pi == n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j)
+          if (m[i][j] != 0) {
+            pi = i, pj = j;
+            break;
+          }
+      if (pi == n) break;  // the rest is zero
+      ++pos, ++neg;        // [[0, c], [c, 0]] has one positive and one negative eigenvalue
+      piv = {pi, pj};
+    }
+    std::vector<std::size_t> rest;
+    for (std::size_t i = 0; i < n; ++i)
+      if (std::find(piv.begin(), piv.end(), i) == piv.end()) rest.push_back(i);
+    std::vector<std::vector<mpq_class>> r(rest.size(), std::vector<mpq_class>(rest.size()));
+    for (std::size_t a = 0; a < rest.size(); ++a)
+      for (std::size_t b = 0; b < rest.size(); ++b) {
+        const std::size_t i = rest[a], j = rest[b];
+        if (piv.size() == 1) {
+          r[a][b] = m[i][j] - m[i][k] * m[k][j] / m[k][k];
+        } else {
+          // Schur complement of the pivot block C = [[0, c], [c, 0]], C^-1 = [[0, 1/c], [1/c, 0]].
+          const std::size_t p = piv[0], q = piv[1];
+          const mpq_class c = m[p][q];
+          r[a][b] = m[i][j] - (m[i][p] * m[q][j] + m[i][q] * m[p][j]) / c;
+        }
+      }
+    m = r;
+  }
+  return {pos, neg};
+}
+}  // namespace
+
+TYPED_TEST(QuadricTest, RandomIntegerQuadricsMatchRationalCongruenceOracle) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  int types_seen[int(QuadricType::invalid) + 1] = {};
+  for (int trial = 0; trial < 3000; ++trial) {
+    // Small coefficients with many zeros and low-rank products, so degenerate classes are common.
+    IntQuadric q{};
+    if (trial % 2) {
+      for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j)
+          q.a[i][j] = q.a[j][i] = rng.uniform_int(0, 2) ? 0 : rng.uniform_int(-3, 3);
+    } else {  // A = sum of rank-one terms s u u^T
+      const int terms = rng.uniform_int(0, 3);
+      for (int t = 0; t < terms; ++t) {
+        const I u[3] = {rng.uniform_int(-2, 2), rng.uniform_int(-2, 2), rng.uniform_int(-2, 2)};
+        const I sg = rng.uniform_int(0, 1) ? 1 : -1;
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) q.a[i][j] += sg * u[i] * u[j];
+      }
+    }
+    for (int i = 0; i < 3; ++i) q.b[i] = rng.uniform_int(0, 1) ? 0 : 2 * rng.uniform_int(-3, 3);
+    q.c = rng.uniform_int(0, 1) ? 0 : rng.uniform_int(-9, 9);
+    if (trial % 3 == 0) q = transform(q, rng);  // rotated and translated: dense coefficients
+    const Quadric3<T> qt = to_real<T>(q);
+    std::vector<std::vector<mpq_class>> a(3, std::vector<mpq_class>(3)),
+        m(4, std::vector<mpq_class>(4));
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j)
+        a[std::size_t(i)][std::size_t(j)] = m[std::size_t(i)][std::size_t(j)] =
+            mpq_class(q.a[i][j]);
+      m[std::size_t(i)][3] = m[3][std::size_t(i)] = mpq_class(mpq_class(q.b[i]) / 2);
+    }
+    m[3][3] = mpq_class(q.c);
+    const auto [pa, na] = exact_inertia(a);
+    const auto [pm, nm] = exact_inertia(m);
+    const auto r = classify(qt);
+    ASSERT_TRUE(r.exact);
+    EXPECT_EQ(r.positive_a, pa);
+    EXPECT_EQ(r.negative_a, na);
+    EXPECT_EQ(r.positive_m, pm);
+    EXPECT_EQ(r.negative_m, nm);
+    EXPECT_EQ(r.type, detail::quadric_type(pa + na, pa, na, pm + nm, pm, nm));
+    // Spot check of the set itself: a point on the surface found by the standard form is a
+    // root of q (up to rounding), for every type with real points.
+    const auto f = standard_form(qt);
+    if (r.type != QuadricType::empty && r.type != QuadricType::entire_space) {
+      const Vec3<T> x = f.center;  // the vertex / center lies on cones, points, lines, planes...
+      if (f.constant == T(0)) {
+        const T reach = length(x) + 1;
+        EXPECT_NEAR(signed_value(qt, x), T(0), tol<T>(256, coefficient_scale(qt) * reach * reach));
+      }
+    }
+    types_seen[int(r.type)] += 1;
+  }
+  // The random family reaches every type.
+  for (int t = 0; t < int(QuadricType::invalid); ++t)
+    EXPECT_GT(types_seen[t], 0) << to_string(QuadricType(t));
 }
