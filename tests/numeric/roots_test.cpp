@@ -272,6 +272,14 @@ TYPED_TEST(RootsTest, FixedCasesFromTheBookAndTextbook) {
   ASSERT_TRUE(po::exact_root_near(po::QPoly{19, -7, 6, 1}, double(f.roots[0].value), ex));
   EXPECT_NEAR(double(f.roots[0].value), ex, double(tol<T>(1, 8)));
   EXPECT_GE(f.roots[0].value, T(-8));
+  // The figure's window through the general solver: the same single root, and none in [-7, 3].
+  const Polynomial<T> fp{T(19), T(-7), T(6), T(1)};
+  const auto w = real_roots(fp, T(-8), T(3));
+  ASSERT_EQ(w.count(), 1);
+  EXPECT_EQ(w.roots[0].value, f.roots[0].value);
+  EXPECT_EQ(real_roots(fp, T(-7), T(3)).count(), 0);
+  // Closed interval: roots at both ends of [1, 2] of (x - 1)(x - 2) are included.
+  EXPECT_EQ(real_roots(Polynomial<T>{T(2), T(-3), T(1)}, T(1), T(2)).count(), 2);
   // Figure A.10: f'(x) = 3x^2 + 12x - 7: roots -2 -+ sqrt(228)/6 (both in [-8, 3]).
   const auto d = solve_quadratic(T(-7), T(12), T(3));
   ASSERT_EQ(d.count, 2);
