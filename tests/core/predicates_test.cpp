@@ -621,6 +621,55 @@ TYPED_TEST(PredicateTest, InsphereMatchesExactOracle) {
   check_oracle<InsphereP, TypeParam>(cases_for<TypeParam>(), type_label<TypeParam>());
 }
 
+// ---- 1-ulp grids around exactly degenerate configurations --------------------------------------
+
+/// Moves coordinates `ix`, `iy` of point `which` of an exactly degenerate configuration over a
+/// (2k+1)^2 grid of ulp offsets and checks every grid point against the oracle.
+template <class Pred, class T>
+void check_ulp_grid(PointsOf<Pred, T> base, int which, int ix, int iy, int k) {
+  int wrong_naive = 0, zeros = 0, cases = 0;
+  ASSERT_EQ((oracle<Pred, T>(base)), 0) << "base configuration must be degenerate";
+  for (int i = -k; i <= k; ++i)
+    for (int j = -k; j <= k; ++j) {
+      auto p = base;
+      p[std::size_t(which)][ix] = bump(base[std::size_t(which)][ix], i);
+      p[std::size_t(which)][iy] = bump(base[std::size_t(which)][iy], j);
+      const int want = oracle<Pred, T>(p);
+      ASSERT_EQ(to_int(Pred::eval(p)), want) << describe<Pred, T>(p);
+      wrong_naive += to_int(sign_of(Pred::value(p))) != want;
+      zeros += want == 0;
+      ++cases;
+    }
+  std::cout << "[ grid     ] " << Pred::name << "<"
+            << (std::is_same_v<T, double> ? "double" : "float") << ">: " << cases
+            << " grid points, " << zeros << " on the zero set, naive sign wrong " << wrong_naive
+            << "\n";
+  EXPECT_GT(zeros, 0);
+}
+
+TYPED_TEST(PredicateTest, OneUlpGridsAroundDegenerateConfigurations) {
+  using T = TypeParam;
+  // Shewchuk's classic orient2d example: a near (1/2, 1/2) on a 1-ulp grid, b = (12, 12),
+  // c = (24, 24); the naive determinant gets a large part of it wrong.
+  check_ulp_grid<Orient2dP, T>({{{T(0.5), T(0.5)}, {T(12), T(12)}, {T(24), T(24)}}}, 0, 0, 1, 64);
+  // Plane x + y + z = 3/2 through exactly representable points; d near (1/2, 1/2, 1/2).
+  check_ulp_grid<Orient3dP, T>({{{T(12), T(12), T(-22.5)},
+                                 {T(24), T(-9), T(-13.5)},
+                                 {T(-3), T(3), T(1.5)},
+                                 {T(0.5), T(0.5), T(0.5)}}},
+                               3, 0, 1, 16);
+  // Circle of radius 25 through lattice points; d near (7, 24).
+  check_ulp_grid<IncircleP, T>({{{T(25), T(0)}, {T(-15), T(20)}, {T(0), T(-25)}, {T(7), T(24)}}}, 3,
+                               0, 1, 16);
+  // Sphere of radius 9 through lattice points; e near (1, 4, 8).
+  check_ulp_grid<InsphereP, T>({{{T(9), T(0), T(0)},
+                                 {T(0), T(9), T(0)},
+                                 {T(0), T(0), T(9)},
+                                 {T(-4), T(-7), T(-4)},
+                                 {T(1), T(4), T(8)}}},
+                               4, 0, 2, 16);
+}
+
 // ---- symmetry and invariance ------------------------------------------------------------------
 
 template <int P>
