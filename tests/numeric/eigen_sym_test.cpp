@@ -154,6 +154,23 @@ TYPED_TEST(EigenSymTest, TwoByTwoClosedFormIsExactOnDiagonalAndAccurateOtherwise
   }
 }
 
+TYPED_TEST(EigenSymTest, TwoByTwoSmallEigenvalueHasRelativeAccuracyWhenWellDetermined) {
+  using T = TypeParam;
+  // [[1, b], [b, c]] with c = 1e-6, b = 1e-9: the small eigenvalue is c - b^2/(1 - c) + O(b^4),
+  // a well-conditioned function of the entries, so it must come out to a few ulps *relative*;
+  // (m - r) alone would lose ~1e-7 relative to cancellation (|A| eps / lambda_min).
+  for (int sign : {1, -1}) {
+    const double c = 1e-6, b = 1e-9 * sign;
+    const Mat2<T> a{{{T(1), T(b)}, {T(b), T(c)}}};
+    const double bb = double(a(0, 1)), cc = double(a(1, 1));
+    const double expected = cc - bb * bb / (1 - cc);
+    const auto e = eigen_symmetric(a);
+    EXPECT_NEAR(double(e.values[0]), expected, 4 * double(eps_v<T>) * expected);
+    const auto n = eigen_symmetric(Mat2<T>{{{T(-1), T(b)}, {T(b), T(-c)}}});  // negative definite
+    EXPECT_NEAR(double(n.values[1]), -expected, 4 * double(eps_v<T>) * expected);
+  }
+}
+
 TYPED_TEST(EigenSymTest, BadInputGivesStatusNotGarbage) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();

@@ -79,6 +79,14 @@ void eigen2(C a, C b, C c, C& lo, C& hi, C& cs, C& sn) noexcept {
   const C r = std::sqrt(d * d + b * b);
   lo = m - r;
   hi = m + r;
+  // When both eigenvalues have the same sign, the one nearer zero cancels in m -+ r; the product
+  // lo * hi = det(A) = a c - b^2 gives it to relative accuracy when b^2 << a c (thin ellipses).
+  const C det = a * c - b * b;
+  if (m > r && hi != C(0)) {
+    lo = det / hi;
+  } else if (-m > r && lo != C(0)) {
+    hi = det / lo;
+  }
   if (r == C(0)) {  // multiple of the identity: any basis works
     cs = C(1);
     sn = C(0);

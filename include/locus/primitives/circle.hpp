@@ -23,6 +23,7 @@
 // Cost O(1), no allocation; point_at calls cos and sin.
 
 #include <locus/core/scalar.hpp>
+#include <locus/core/basis.hpp>
 #include <locus/core/vec.hpp>
 
 #include <cmath>
@@ -67,20 +68,13 @@ struct CircleAxes {
 };
 
 namespace detail {
-/// Right-handed orthonormal completion of n: u x v = n / |n|. Zero vectors for a zero or
-/// non-finite n. Uses the branch on the sign of the z-component (Frisvad's construction with
-/// the sign fix of Duff et al., JCGT 2017), which is continuous except across the plane
-/// n.z = 0 and accurate to a few ulps for every direction.
+/// Right-handed in-plane axes of a normal: u x v = n / |n| (core/basis.hpp's completion, which
+/// is accurate to a few ulps for every direction); zero vectors for a zero or non-finite n.
 template <class T>
 [[nodiscard]] inline CircleAxes<T> circle_axes_of_normal(const Vec3<T>& n) noexcept {
-  const Vec3<T> w = normalize(n);
-  if (w == Vec3<T>{}) return {Vec3<T>{}, Vec3<T>{}};
-  const T s = std::copysign(T(1), w.z);
-  const T a = T(-1) / (s + w.z);  // |s + w.z| >= 1: no cancellation, no division by zero
-  const T b = w.x * w.y * a;
-  const Vec3<T> u{T(1) + s * w.x * w.x * a, s * b, -s * w.x};
-  const Vec3<T> v{b, s + w.y * w.y * a, -w.y};
-  return {u, v};
+  const OrthonormalBasis<T, 3> b = complete_basis(n);
+  if (b.status != Status::ok) return {Vec3<T>{}, Vec3<T>{}};
+  return {b.axis[1], b.axis[2]};
 }
 }  // namespace detail
 

@@ -10,9 +10,9 @@
 //
 // Matrix (implicit) form ImplicitEllipse2<T> {center, m}: (X - C)^T M (X - C) = 1 with M
 // symmetric positive definite, M = sum_i axis[i] axis[i]^T / extent[i]^2. to_implicit() builds
-// M; to_axes() diagonalises it with a closed-form symmetric 2x2 eigensolver (rotation angle
-// 0.5 atan2(2 m01, m00 - m11), eigenvalues mid +- hypot(...), the small one as det / large to
-// avoid cancellation) and returns extent[0] >= extent[1] (axis[0] is the major axis) with
+// M; to_axes() diagonalises it with numeric/eigen_sym.hpp's closed-form 2x2 solver (the
+// eigenvalue nearer zero taken as det / larger, so thin ellipses keep relative accuracy) and
+// returns extent[0] >= extent[1] (axis[0] is the major axis) with
 // axis[1] = perp(axis[0]). The general quadratic coefficients a x^2 + b xy + ... live in
 // quadratic_curve.hpp (to_quadratic / to_ellipse).
 //
@@ -33,6 +33,7 @@
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/numeric/eigen_sym.hpp>
 #include <locus/primitives/arc.hpp>
 
 #include <algorithm>
@@ -162,26 +163,6 @@ template <class T>
   return {e.center, m};
 }
 
-namespace detail {
-/// Eigen decomposition of the symmetric matrix [[p, q], [q, r]]: eigenvalues big >= small and the
-/// unit eigenvector (c, s) of `big`; (-s, c) belongs to `small`.
-template <class C>
-struct SymEigen2 {
-  C big, small, c, s;
-};
-
-template <class C>
-[[nodiscard]] inline SymEigen2<C> sym_eigen2(C p, C q, C r) noexcept {
-  const C mid = C(0.5) * (p + r);
-  const C half_diff = C(0.5) * (p - r);
-  const C rad = std::hypot(half_diff, q);
-  const C theta = C(0.5) * std::atan2(q, half_diff);  // eigenvector angle of the larger eigenvalue
-  const C big = mid + rad;
-  // The other eigenvalue from the determinant when that avoids cancellation in mid - rad.
-  const C small = (mid > C(0) && big != C(0)) ? (p * r - q * q) / big : mid - rad;
-  return {big, small, std::cos(theta), std::sin(theta)};
-}
-}  // namespace detail
 
 /// Axis form of a matrix-form ellipse: extent[0] >= extent[1], axis[1] = perp(axis[0]).
 /// std::nullopt when m is not symmetric positive definite (as rounded) or not finite; only the
@@ -190,16 +171,14 @@ template <class T>
 [[nodiscard]] inline std::optional<Ellipse2<T>> to_axes(const ImplicitEllipse2<T>& e) noexcept {
   using C = compute_t<T>;
   if (!is_finite(e.center) || !is_finite(e.m)) return std::nullopt;
-  const C p = e.m(0, 0), q = e.m(0, 1), r = e.m(1, 1);
-  // Rescale by the largest entry so that the products in the determinant stay in range.
-  const C scale = std::max(std::abs(p), std::max(std::abs(q), std::abs(r)));
-  if (!(scale > C(0))) return std::nullopt;
-  const detail::SymEigen2<C> eg = detail::sym_eigen2(p / scale, q / scale, r / scale);
-  if (!(eg.small > C(0))) return std::nullopt;
+  const C q = e.m(0, 1);
+  const Mat2<C> m{{{C(e.m(0, 0)), q}, {q, C(e.m(1, 1))}}};
+  const SymmetricEigen<C, 2> eg = eigen_symmetric(m);
+  if (!(eg.values[0] > C(0))) return std::nullopt;
   // The smaller eigenvalue gives the major (longer) axis: extent = 1 / sqrt(lambda).
-  const Vec2<T> major{static_cast<T>(-eg.s), static_cast<T>(eg.c)};
-  const T e0 = static_cast<T>(C(1) / std::sqrt(eg.small * scale));
-  const T e1 = static_cast<T>(C(1) / std::sqrt(eg.big * scale));
+  const Vec2<T> major = vec_cast<T>(col(eg.vectors, 0));
+  const T e0 = static_cast<T>(C(1) / std::sqrt(eg.values[0]));
+  const T e1 = static_cast<T>(C(1) / std::sqrt(eg.values[1]));
   if (!is_finite(e0) || !is_finite(e1) || !(e1 > T(0))) return std::nullopt;
   return Ellipse2<T>{e.center, {major, perp(major)}, {e0, e1}};
 }
