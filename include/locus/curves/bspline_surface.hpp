@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Tensor-product B-spline surfaces; row prim3.surfaces; book section 9.4 (B-spline surfaces),
+// figure 9.26 (a uniform bicubic B-spline surface).
+//
+// BSplineSurface<T, N> {degree_u, degree_v, rows, cols, control, knots_u, knots_v}: control net
+// P_ij, i = 0..rows-1 along u, j = 0..cols-1 along v, row-major control[i * cols + j];
+// knots_u has rows + degree_u + 1 values, knots_v cols + degree_v + 1, and
+//   S(u, v) = sum_ij N_{i,du}(u) N_{j,dv}(v) P_ij  on [u_du, u_rows] x [v_dv, v_cols]
+// with the basis, span and knot conventions of bspline.hpp (the last span closed).
+//
+// partials() returns {point, du, dv, duv} from the non-zero basis functions and their first
+// derivatives in each direction (O((du+1)(dv+1)) terms). normal_at() (N = 3) is
+// normalize(du x dv) with the collapsed-edge fallback of bezier_surface.hpp (the limit normal
+// from the interior; the zero vector when none exists).
+//
+// Bad input: validate() returns invalid_input for rows * cols != control.size() and the knot
+// codes of validate_knots() for each direction, non_finite_input for NaN/Inf control points.
+// Evaluation checks only sizes (O(1)): a structurally invalid surface evaluates to NaN; bad knot
+// values give meaningless but safe results (no crash, no division by zero). Parameters are
+// clamped to the domain; NaN parameters give NaN points (and a zero normal). bounding_box() is the
+// control-net box, which contains the surface (convex-hull property). Cost: O(du^2 + dv^2 + du dv)
+// per evaluation plus two O(log n) span searches; no allocation for degrees < 16.
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/status.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/curves/bezier_surface.hpp>
+#include <locus/curves/bspline.hpp>
+#include <locus/primitives/aligned_box.hpp>
+
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace locus {
+
+/// A tensor-product B-spline surface: control[i * cols + j], i along u, j along v.
+template <class T, int N>
+struct BSplineSurface {
+  int degree_u;
+  int degree_v;
+  int rows;
+  int cols;
+  std::vector<Vec<T, N>> control;
+  std::vector<T> knots_u;
+  std::vector<T> knots_v;
+};
+
+namespace detail {
+
+template <class S>
+[[nodiscard]] bool tensor_shape_ok(const S& s) noexcept {
+  return s.rows >= 1 && s.cols >= 1 &&
+         bspline_shape_ok(s.degree_u, static_cast<std::size_t>(s.rows), s.knots_u.size()) &&
+         bspline_shape_ok(s.degree_v, static_cast<std::size_t>(s.cols), s.knots_v.size()) &&
+         s.control.size() == static_cast<std::size_t>(s.rows) * static_cast<std::size_t>(s.cols);
+}
+
+template <class S>
+[[nodiscard]] Status validate_tensor_knots(const S& s) noexcept {
+  if (s.rows < 1 || s.cols < 1) return Status::empty_input;
+  if (s.control.size() != static_cast<std::size_t>(s.rows) * static_cast<std::size_t>(s.cols))
+    return Status::invalid_input;
+  using T = typename decltype(s.knots_u)::value_type;
+  Status st = validate_knots(std::span<const T>(s.knots_u), s.degree_u, s.rows);
+  if (st != Status::ok) return st;
+  st = validate_knots(std::span<const T>(s.knots_v), s.degree_v, s.cols);
+  if (st != Status::ok) return st;
+  for (const auto& p : s.control)
+    if (!is_finite(p)) return Status::non_finite_input;
+  return Status::ok;
+}
+
+/// The non-zero basis values and derivatives in one direction at t (clamped into the domain).
+template <class T>
+struct BasisAt {
+  int span;
+  T t;
+  CurveScratch<T> val;
+  CurveScratch<T> der;
+  BasisAt(std::span<const T> knots, int d, int n, T param)
+      : span(0),
+        t(param),
+        val(static_cast<std::size_t>(d) + 1),
+        der(static_cast<std::size_t>(d) + 1) {
+    t = clamp_param(t, knots[static_cast<std::size_t>(d)], knots[static_cast<std::size_t>(n)]);
+    if (t != t) return;
+    span = find_span(knots, d, n, t);
+    basis_and_derivative(knots, d, span, t, val.data(), der.data());
+  }
+};
+
+/// out = {sum N N P, sum N' N P, sum N N' P, sum N' N' P} over the non-zero terms; get(i, j)
+/// returns the (possibly homogeneous) control value of P_ij.
+template <class T, class V, class Get>
+void tensor_partials(std::span<const T> ku, int du, int nu, std::span<const T> kv, int dv, int nv,
+                     T u, T v, const Get& get, V out[4]) noexcept {
+  BasisAt<T> bu(ku, du, nu, u);
+  BasisAt<T> bv(kv, dv, nv, v);
+  out[0] = out[1] = out[2] = out[3] = V{};
+  for (int a = 0; a <= du; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    V row{}, drow{};
+    for (int b = 0; b <= dv; ++b) {
+      const auto ub = static_cast<std::size_t>(b);
+      const V p = get(bu.span - du + a, bv.span - dv + b);
+      row += bv.val[ub] * p;
+      drow += bv.der[ub] * p;
+    }
+    out[0] += bu.val[ua] * row;
+    out[1] += bu.der[ua] * row;
+    out[2] += bu.val[ua] * drow;
+    out[3] += bu.der[ua] * drow;
+  }
+}
+
+}  // namespace detail
+
+/// ok, or the first problem (see the header comment).
+template <class T, int N>
+[[nodiscard]] Status validate(const BSplineSurface<T, N>& s) noexcept {
+  return detail::validate_tensor_knots(s);
+}
+
+/// The domain along u, [u_du, u_rows] (NaN bounds for an inconsistent shape).
+template <class T, int N>
+[[nodiscard]] ParamDomain<T> domain_u(const BSplineSurface<T, N>& s) noexcept {
+  if (!detail::tensor_shape_ok(s))
+    return {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::quiet_NaN()};
+  return {s.knots_u[static_cast<std::size_t>(s.degree_u)],
+          s.knots_u[static_cast<std::size_t>(s.rows)]};
+}
+
+/// The domain along v, [v_dv, v_cols] (NaN bounds for an inconsistent shape).
+template <class T, int N>
+[[nodiscard]] ParamDomain<T> domain_v(const BSplineSurface<T, N>& s) noexcept {
+  if (!detail::tensor_shape_ok(s))
+    return {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::quiet_NaN()};
+  return {s.knots_v[static_cast<std::size_t>(s.degree_v)],
+          s.knots_v[static_cast<std::size_t>(s.cols)]};
+}
+
+/// S(u, v), du, dv, duv; (u, v) clamped to the domain; NaN for a bad shape or NaN parameters.
+template <class T, int N>
+[[nodiscard]] SurfaceDerivatives<T, N> partials(const BSplineSurface<T, N>& s, T u, T v) noexcept {
+  const Vec<T, N> nan = detail::nan_vec<T, N>();
+  if (!detail::tensor_shape_ok(s) || u != u || v != v) return {nan, nan, nan, nan};
+  Vec<T, N> out[4];
+  const auto cols = static_cast<std::size_t>(s.cols);
+  detail::tensor_partials<T, Vec<T, N>>(
+      std::span<const T>(s.knots_u), s.degree_u, s.rows, std::span<const T>(s.knots_v), s.degree_v,
+      s.cols, u, v,
+      [&s, cols](int i, int j) {
+        return s.control[static_cast<std::size_t>(i) * cols + static_cast<std::size_t>(j)];
+      },
+      out);
+  return {out[0], out[1], out[2], out[3]};
+}
+
+/// S(u, v); (u, v) clamped to the domain.
+template <class T, int N>
+[[nodiscard]] Vec<T, N> point_at(const BSplineSurface<T, N>& s, T u, T v) noexcept {
+  return partials(s, u, v).point;
+}
+
+/// The unit normal normalize(du x dv) with the collapsed-edge fallback (bezier_surface.hpp).
+template <class T>
+[[nodiscard]] Vec3<T> normal_at(const BSplineSurface<T, 3>& s, T u, T v) noexcept {
+  const SurfaceDerivatives<T, 3> d = partials(s, u, v);
+  if (!is_finite(d.point)) return Vec3<T>{};
+  const ParamDomain<T> a = domain_u(s), b = domain_v(s);
+  return detail::surface_normal(d, !(u > T(0.5) * (a.min + a.max)),
+                                !(v > T(0.5) * (b.min + b.max)));
+}
+
+/// The control-net box; it contains the surface.
+template <class T, int N>
+[[nodiscard]] AlignedBox<T, N> bounding_box(const BSplineSurface<T, N>& s) noexcept {
+  return bounding_box(s.control.data(), s.control.size());
+}
+
+}  // namespace locus
