@@ -119,3 +119,9 @@ TYPED_TEST(CapsuleTest, Degenerate) {
   EXPECT_TRUE(std::isnan(area(Capsule2<T>{{{0, 0}, {1, 0}}, -1})));
   EXPECT_TRUE(std::isnan(perimeter(Capsule2<T>{{{0, 0}, {1, 0}}, nan})));
 }
+
+TYPED_TEST(CapsuleTest, SymmetricSolidsHaveTheirCenterAsCentroid) {
+  using T = TypeParam;
+  const Capsule3<T> c{{{1, 2, 3}, {3, 2, -1}}, T(0.5)};
+  EXPECT_EQ(centroid(c), (Vec3<T>{2, 2, 1}));
+}

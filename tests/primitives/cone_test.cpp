@@ -217,3 +217,38 @@ TYPED_TEST(ConeTest, VolumeByDivergenceTheorem) {
     EXPECT_NEAR(double(volume(c)), v, 1e-7 * std::fabs(v) + double(tol<T>(32, 10))) << "kind " << k;
   }
 }
+
+TYPED_TEST(ConeTest, CentroidMatchesMonteCarloMean) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int k = 0; k < 4; ++k) {
+    auto c = kind<T>(rng, k);
+    if (k == 3) c.min_height = T(-0.4);  // an asymmetric double cone
+    const auto box = bounding_box(c);
+    Vec3<double> sum{}, sum2{};
+    int hits = 0;
+    for (int s = 0; s < 40000; ++s) {
+      Vec3<T> p{};
+      for (int i = 0; i < 3; ++i) p[i] = rng.uniform<T>(box.min[i], box.max[i]);
+      if (!inside(c, p)) continue;
+      ++hits;
+      sum += vec_cast<double>(p);
+      sum2 += cwise_mul(vec_cast<double>(p), vec_cast<double>(p));
+    }
+    ASSERT_GT(hits, 1000);
+    const Vec3<double> mean = sum / double(hits);
+    const Vec3<T> g = centroid(c);
+    for (int i = 0; i < 3; ++i) {
+      const double sd = std::sqrt(std::fmax(0.0, sum2[i] / hits - mean[i] * mean[i]));
+      // 5 standard errors of the sample mean.
+      EXPECT_NEAR(double(g[i]), mean[i], 5 * sd / std::sqrt(double(hits))) << "kind " << k;
+    }
+  }
+  const T inf = std::numeric_limits<T>::infinity();
+  EXPECT_TRUE(std::isnan(centroid(Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), 0, inf}).x));
+  EXPECT_EQ(centroid(Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), -2, 2}), (Vec3<T>{0, 0, 0}));
+  EXPECT_EQ(centroid(Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), 1, 1}), (Vec3<T>{0, 0, 1}));
+  // Textbook: a solid cone's centroid is 3/4 of the way from the apex to the base.
+  EXPECT_NEAR(centroid(Cone3<T>{{0, 0, 0}, {0, 0, 1}, T(0.5), 0, 4}).z, T(3), tol<T>(4, 3));
+}

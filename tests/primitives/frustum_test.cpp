@@ -146,3 +146,38 @@ TYPED_TEST(FrustumTest, InvalidAndFlat) {
   const Frustum3<T> unit{{}, d, u, r, 1, 2, 1, 1};
   EXPECT_NEAR(volume(unit), T(4) / 3 * (8 - 1), tol<T>(8, 10));
 }
+
+TYPED_TEST(FrustumTest, CentroidMatchesMonteCarloMean) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 3; ++trial) {
+    const auto f = random_frustum<T>(rng);
+    // Membership written out: depth along D and the scaled rectangle bounds.
+    const auto inside = [&](const Vec3<T>& p) {
+      const Vec3<T> d = p - f.origin;
+      const T depth = dot(d, f.direction), q = depth / f.d_min;
+      return f.d_min <= depth && depth <= f.d_max && std::fabs(dot(d, f.right)) <= q * f.r_bound &&
+             std::fabs(dot(d, f.up)) <= q * f.u_bound;
+    };
+    const auto box = bounding_box(f);
+    Vec3<double> sum{}, sum2{};
+    int hits = 0;
+    for (int s = 0; s < 40000; ++s) {
+      Vec3<T> p{};
+      for (int i = 0; i < 3; ++i) p[i] = rng.uniform<T>(box.min[i], box.max[i]);
+      if (!inside(p)) continue;
+      ++hits;
+      sum += vec_cast<double>(p);
+      sum2 += cwise_mul(vec_cast<double>(p), vec_cast<double>(p));
+    }
+    ASSERT_GT(hits, 1000);
+    const Vec3<double> mean = sum / double(hits);
+    const Vec3<T> g = centroid(f);
+    for (int i = 0; i < 3; ++i) {
+      const double sd = std::sqrt(std::fmax(0.0, sum2[i] / hits - mean[i] * mean[i]));
+      EXPECT_NEAR(double(g[i]), mean[i], 5 * sd / std::sqrt(double(hits)));  // 5 standard errors
+    }
+  }
+  EXPECT_TRUE(std::isnan(centroid(Frustum3<T>{{}, {0, 0, 1}, {0, 1, 0}, {1, 0, 0}, 0, 1, 1, 1}).x));
+}

@@ -180,4 +180,10 @@ template <class T, int N>
   return r;
 }
 
+/// Centroid of the solid box (its center).
+template <class T, int N>
+[[nodiscard]] constexpr Vec<T, N> centroid(const AlignedBox<T, N>& b) noexcept {
+  return center(b);
+}
+
 }  // namespace locus

@@ -91,4 +91,10 @@ template <class T, int N>
   return inflate(b, c.radius);
 }
 
+/// Centroid of the solid capsule (the segment midpoint, by symmetry).
+template <class T, int N>
+[[nodiscard]] constexpr Vec<T, N> centroid(const Capsule<T, N>& c) noexcept {
+  return midpoint(c.segment);
+}
+
 }  // namespace locus

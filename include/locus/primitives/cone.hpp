@@ -23,7 +23,8 @@
 //   volume       = pi tan^2(alpha) (max^3 - min^3) / 3
 //   lateral_area = pi tan(alpha) / cos(alpha) (max |max| - min |min|)
 //   surface_area = lateral_area + pi tan^2(alpha) (max^2 + min^2) (the two cap disks)
-// They are +infinity for an infinite cone. bounding_box() of a finite cone is the box of its
+// They are +infinity for an infinite cone. centroid() = V + hbar D, hbar = (3/4)(max^4 - min^4) /
+// (max^3 - min^3) (finite cones only). bounding_box() of a finite cone is the box of its
 // cap disks and, when min_height <= 0 <= max_height, the vertex.
 //
 // Degenerate input: an angle outside (0, pi/2), min_height > max_height or a NaN parameter is
@@ -138,6 +139,20 @@ template <class T>
   AlignedBox3<T> b = merge(disk_box(c.min_height), disk_box(c.max_height));
   if (c.min_height <= T(0) && T(0) <= c.max_height) b = expand(b, c.vertex);
   return b;
+}
+
+/// Centroid of the solid: V + hbar D with hbar = (3/4) (max^4 - min^4) / (max^3 - min^3) (the
+/// section area grows as h^2). NaN components if invalid, infinite or flat (min == max gives
+/// the disk center V + min D).
+template <class T>
+[[nodiscard]] inline Vec3<T> centroid(const Cone3<T>& c) noexcept {
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  if (!is_valid(c) || is_infinite(c)) return {nan, nan, nan};
+  const T a = c.min_height, b = c.max_height;
+  if (a == b) return c.vertex + a * c.axis;
+  // (b^4 - a^4) / (b^3 - a^3) = (a + b)(a^2 + b^2) / (a^2 + a b + b^2), free of cancellation.
+  const T hbar = T(0.75) * (a + b) * (a * a + b * b) / (a * a + a * b + b * b);
+  return c.vertex + hbar * c.axis;
 }
 
 }  // namespace locus

@@ -111,4 +111,10 @@ template <class T>
   return {c.axis.origin - h, c.axis.origin + h};
 }
 
+/// Centroid of the solid cylinder (its center, axis.origin).
+template <class T>
+[[nodiscard]] constexpr Vec3<T> centroid(const Cylinder3<T>& c) noexcept {
+  return c.axis.origin;
+}
+
 }  // namespace locus

@@ -211,4 +211,10 @@ template <class T>
   return e;
 }
 
+/// Centroid of the solid ellipsoid (its center).
+template <class T>
+[[nodiscard]] constexpr Vec3<T> centroid(const Ellipsoid3<T>& e) noexcept {
+  return e.center;
+}
+
 }  // namespace locus

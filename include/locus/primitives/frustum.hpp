@@ -11,7 +11,8 @@
 // point_at(fr, (s, t, w)) = E + d D + (d/n)(s r R + t u U) with d = (1 - w) n + w f,
 // s, t in [-1, 1], w in [0, 1] (w = 0 near face, w = 1 far face).
 // Corner k: bit 0 selects +R (else -R), bit 1 +U, bit 2 the far face (else near).
-// volume = 4 r u (f^3 - n^3) / (3 n^2); surface_area = near + far rectangles + four trapezoids.
+// volume = 4 r u (f^3 - n^3) / (3 n^2); surface_area = near + far rectangles + four trapezoids;
+// centroid = E + (3/4)(f^4 - n^4) / (f^3 - n^3) D.
 //
 // Frustum2<T> {origin E, direction D, left L, d_min n, d_max f, l_bound l}: the 2D orthogonal
 // frustum (a trapezoid) { E + d D + (d/n) s L : n <= d <= f, |s| <= l }; corner k: bit 0
@@ -151,6 +152,19 @@ template <class T>
   if (!is_valid(f)) return std::numeric_limits<T>::quiet_NaN();
   const T q = f.d_max / f.d_min;
   return f.l_bound * f.d_min * (q * q - T(1));
+}
+
+/// Centroid of the solid: E + dbar D with dbar = (3/4) (f^4 - n^4) / (f^3 - n^3) (the section
+/// area grows as d^2); NaN components if invalid.
+template <class T>
+[[nodiscard]] constexpr Vec3<T> centroid(const Frustum3<T>& f) noexcept {
+  if (!is_valid(f)) {
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    return {nan, nan, nan};
+  }
+  const T n = f.d_min, m = f.d_max;
+  const T dbar = T(0.75) * (n + m) * (n * n + m * m) / (n * n + n * m + m * m);
+  return f.origin + dbar * f.direction;
 }
 
 }  // namespace locus

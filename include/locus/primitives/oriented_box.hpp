@@ -136,4 +136,10 @@ template <class T, int N>
   return {b.center - h, b.center + h};
 }
 
+/// Centroid of the solid box (its center).
+template <class T, int N>
+[[nodiscard]] constexpr Vec<T, N> centroid(const OrientedBox<T, N>& b) noexcept {
+  return b.center;
+}
+
 }  // namespace locus

@@ -97,4 +97,10 @@ template <class T, int N>
   return {s.center - splat<T, N>(s.radius), s.center + splat<T, N>(s.radius)};
 }
 
+/// Centroid of the ball (its center).
+template <class T, int N>
+[[nodiscard]] constexpr Vec<T, N> centroid(const Sphere<T, N>& s) noexcept {
+  return s.center;
+}
+
 }  // namespace locus

@@ -86,4 +86,10 @@ template <class T>
   return {t.center - h, t.center + h};
 }
 
+/// Centroid of the solid torus (its center).
+template <class T>
+[[nodiscard]] constexpr Vec3<T> centroid(const Torus3<T>& t) noexcept {
+  return t.center;
+}
+
 }  // namespace locus
