@@ -24,7 +24,11 @@
 // products of consecutive vertices, computed in the edge-pair form that cancels translation
 // errors): for a planar polygon it is 2 * area * unit normal, oriented by the right-hand rule.
 // best_fit_plane_newell() is the plane with that normal through the vertex average; for
-// non-planar polygons it is the usual robust "average plane".
+// non-planar polygons it is the usual robust "average plane". A polygon in 3D is therefore
+// either a PlaneFrame3 plus prim2's 2D Polygon (to_world() maps its vertices; 2D algorithms run
+// on the plane coordinates) or a 3D vertex list whose plane is best_fit_plane_newell(); the 3D
+// circle, disk, triangle and rectangle are prim2's Circle3, Disk3, Triangle3 and Rectangle3, and
+// perpendicular_basis() gives the same in-plane axes as Circle3/Disk3.
 //
 // Degenerate input: plane_through returns std::nullopt when the three points are collinear or
 // coincident (decided EXACTLY by Triangle's is_degenerate, i.e. orient2d on three projections)
