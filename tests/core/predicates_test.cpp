@@ -39,23 +39,23 @@ namespace {
 
 template <std::size_t K>
 std::array<mpz_class, K> scaled_integers(const std::array<double, K>& v) {
-  std::array<long, K> mant{};
+  std::array<std::int64_t, K> mant{};
   std::array<int, K> expo{};
   int kmin = INT_MAX;
   for (std::size_t i = 0; i < K; ++i) {
     if (v[i] == 0.0) continue;
     int e = 0;
     const double f = std::frexp(v[i], &e);
-    long m = static_cast<long>(std::ldexp(f, 53));
-    const int tz = std::countr_zero(static_cast<unsigned long>(m < 0 ? -m : m));
-    m /= (1L << tz);
+    std::int64_t m = static_cast<std::int64_t>(std::ldexp(f, 53));
+    const int tz = std::countr_zero(static_cast<std::uint64_t>(m < 0 ? -m : m));
+    m /= (std::int64_t{1} << tz);
     mant[i] = m;
     expo[i] = e - 53 + tz;
     kmin = std::min(kmin, expo[i]);
   }
   std::array<mpz_class, K> z;
   for (std::size_t i = 0; i < K; ++i) {
-    z[i] = mant[i];
+    z[i] = mpz_class(static_cast<double>(mant[i]));  // |mant| < 2^53: exact
     if (mant[i] != 0)
       mpz_mul_2exp(z[i].get_mpz_t(), z[i].get_mpz_t(), static_cast<mp_bitcnt_t>(expo[i] - kmin));
   }
