@@ -2,6 +2,7 @@
 // Tests for numeric/decompose.hpp (row num.decomp): LU, QR, Cholesky, SVD and polar
 // decomposition against Eigen (peer oracle) on seeded random and adversarial matrices, plus the
 // defining identities of each factorisation.
+#include <locus/core/linear_system.hpp>
 #include <locus/numeric/decompose.hpp>
 
 #include "support/typed.hpp"
@@ -50,58 +51,49 @@ MatX<T> draw(Rng& rng, int m, int n, int kind) {
 
 }  // namespace
 
+// LU lives in core/linear_system.hpp (run-time sizes: lu_factor on a row-major span); it is
+// checked here against Eigen as the peer oracle, next to the other factorisations.
 TYPED_TEST(DecomposeTest, LUReconstructsAndSolvesLikeEigen) {
   using T = TypeParam;
   Rng rng;
   SCOPED_TRACE(rng.trace());
   const double eps = double(eps_v<T>);
+  int checked = 0;
   for (int i = 0; i < 4000; ++i) {
     const int n = 1 + i % 9;
     const MatX<T> a = draw<T>(rng, n, n, i % 3);
-    const LU<T> f = lu(a);
+    const LuDynamic<T> f = lu_factor(std::span<const T>(a.data), n);
     const Eigen::MatrixXd ea = to_eigen(a);
+    Eigen::FullPivLU<Eigen::MatrixXd> oracle(ea);
+    if (f.singular) {
+      // Only exact zero pivots make lu_factor singular: Eigen must agree the matrix is singular
+      // to working precision (rank-revealing full pivoting).
+      EXPECT_LT(oracle.rank(), n) << i;
+      continue;
+    }
+    ++checked;
     // P A = L U.
     Eigen::MatrixXd l = Eigen::MatrixXd::Identity(n, n), u = Eigen::MatrixXd::Zero(n, n), pa(n, n);
     for (int r = 0; r < n; ++r) {
-      for (int c = 0; c < n; ++c) (c < r ? l(r, c) : u(r, c)) = double(f.lu(r, c));
+      for (int c = 0; c < n; ++c) {
+        const double v = double(f.lu[static_cast<std::size_t>(r * n + c)]);
+        (c < r ? l(r, c) : u(r, c)) = v;
+      }
     }
     for (int r = 0; r < n; ++r) pa.row(r) = ea.row(f.perm[std::size_t(r)]);
     ASSERT_LE((l * u - pa).norm(), 4.0 * n * eps * std::max(ea.norm(), 1e-300)) << i;
-    Eigen::FullPivLU<Eigen::MatrixXd> oracle(ea);
-    if (f.status == Status::ok) {
-      const double det = oracle.determinant();
-      ASSERT_NEAR(double(determinant(f)), det, 8.0 * n * eps * std::pow(ea.norm(), n) + 1e-300) << i;
-      std::vector<T> b(static_cast<std::size_t>(n));
-      for (auto& x : b) x = rng.uniform<T>(-1, 1);
-      const std::vector<T> x = solve(f, b);
-      ASSERT_EQ(int(x.size()), n);
-      Eigen::VectorXd eb(n), ex(n);
-      for (int k = 0; k < n; ++k) eb(k) = double(b[std::size_t(k)]), ex(k) = double(x[std::size_t(k)]);
-      // Backward stable: the residual is small relative to |A||x| (partial pivoting).
-      ASSERT_LE((ea * ex - eb).norm(), 16.0 * n * eps * (ea.norm() * ex.norm() + eb.norm())) << i;
-    } else {
-      EXPECT_EQ(f.status, Status::degenerate_input);
-      EXPECT_LT(f.rank, n);
-      EXPECT_TRUE(solve(f, std::vector<T>(static_cast<std::size_t>(n), T(1))).empty());
-    }
+    ASSERT_NEAR(double(f.determinant), oracle.determinant(),
+                8.0 * n * eps * std::pow(ea.norm(), n) + 1e-300) << i;
+    std::vector<T> b(static_cast<std::size_t>(n));
+    for (auto& x : b) x = rng.uniform<T>(-1, 1);
+    const std::vector<T> x = solve(f, b);
+    ASSERT_EQ(int(x.size()), n);
+    Eigen::VectorXd eb(n), ex(n);
+    for (int k = 0; k < n; ++k) eb(k) = double(b[std::size_t(k)]), ex(k) = double(x[std::size_t(k)]);
+    // Backward stable: the residual is small relative to |A||x| (partial pivoting).
+    ASSERT_LE((ea * ex - eb).norm(), 16.0 * n * eps * (ea.norm() * ex.norm() + eb.norm())) << i;
   }
-}
-
-TYPED_TEST(DecomposeTest, LUDetectsExactRankDeficiency) {
-  using T = TypeParam;
-  MatX<T> a(3, 3);
-  const T rows[3][3] = {{1, 2, 3}, {4, 5, 6}, {1, 2, 3}};
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) a(r, c) = rows[r][c];
-  const LU<T> f = lu(a);
-  EXPECT_EQ(f.status, Status::degenerate_input);
-  EXPECT_EQ(f.rank, 2);
-  EXPECT_EQ(determinant(f), T(0));
-  EXPECT_EQ(lu(MatX<T>(4, 4)).rank, 0);
-  EXPECT_EQ(lu(MatX<T>(2, 3)).status, Status::invalid_input);
-  MatX<T> bad = MatX<T>::identity(2);
-  bad(0, 1) = std::numeric_limits<T>::infinity();
-  EXPECT_EQ(lu(bad).status, Status::non_finite_input);
+  EXPECT_GT(checked, 3000);
 }
 
 TYPED_TEST(DecomposeTest, QRIsOrthogonalTimesUpperAndMatchesEigenR) {

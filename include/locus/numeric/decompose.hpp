@@ -2,7 +2,7 @@
 #pragma once
 // Matrix decompositions on run-time sized matrices (row num.decomp; book appendix A).
 //
-//   lu(A)        P A = L U, partial pivoting (square A). L unit lower, U upper, stored together.
+//   (LU with partial pivoting for run-time sizes is core/linear_system.hpp's lu_factor.)
 //   qr(A)        A = Q R by Householder reflections (m >= n); Q is m x m orthogonal, R m x n upper.
 //   cholesky(A)  A = L L^T for symmetric positive definite A; L lower triangular.
 //   svd(A)       A = U diag(s) V^T by one-sided Jacobi (Hestenes); s descending, >= 0;
@@ -14,9 +14,7 @@
 //
 // Bad input: NaN/Inf entries give Status::non_finite_input (factors are not meaningful); a
 // non-square matrix where a square one is needed, or a non-symmetric one for Cholesky, gives
-// Status::invalid_input; an exactly singular matrix gives lu's Status::degenerate_input (the
-// factorisation is complete, with zero pivots, and `rank` counts the non-zero ones);
-// Cholesky of a matrix that is not positive definite gives Status::degenerate_input. The SVD's
+// Status::invalid_input; Cholesky of a matrix that is not positive definite gives Status::degenerate_input. The SVD's
 // Jacobi iteration has a sweep budget (Status::limit_exceeded past it).
 // Cost: O(n^3) each; the SVD costs a few sweeps of O(m n^2).
 
@@ -29,15 +27,6 @@
 #include <vector>
 
 namespace locus {
-
-template <class T>
-struct LU {
-  Status status = Status::ok;
-  MatX<T> lu;             ///< strictly lower part: L without its unit diagonal; upper part: U
-  std::vector<int> perm;  ///< row i of P A is row perm[i] of A
-  int sign = 1;           ///< determinant of P
-  int rank = 0;           ///< number of non-zero pivots
-};
 
 template <class T>
 struct QR {
@@ -82,76 +71,6 @@ MatX<T> from_compute(const MatX<C>& a) {
   return t;
 }
 }  // namespace detail
-
-/// LU factorisation with partial pivoting, P A = L U.
-template <class T>
-[[nodiscard]] LU<T> lu(const MatX<T>& a_in) {
-  using C = compute_t<T>;
-  LU<T> out;
-  if (a_in.rows != a_in.cols) {
-    out.status = Status::invalid_input;
-    return out;
-  }
-  const int n = a_in.rows;
-  out.perm.resize(static_cast<std::size_t>(n));
-  std::iota(out.perm.begin(), out.perm.end(), 0);
-  if (!is_finite(a_in)) {
-    out.status = Status::non_finite_input;
-    out.lu = a_in;
-    return out;
-  }
-  MatX<C> a = detail::to_compute<C>(a_in);
-  for (int k = 0; k < n; ++k) {
-    int piv = k;
-    for (int r = k + 1; r < n; ++r)
-      if (std::abs(a(r, k)) > std::abs(a(piv, k))) piv = r;
-    if (piv != k) {
-      for (int c = 0; c < n; ++c) std::swap(a(k, c), a(piv, c));
-      std::swap(out.perm[std::size_t(k)], out.perm[std::size_t(piv)]);
-      out.sign = -out.sign;
-    }
-    if (a(k, k) == C(0)) continue;  // the whole column below is zero: nothing to eliminate
-    ++out.rank;
-    for (int r = k + 1; r < n; ++r) {
-      const C f = a(r, k) / a(k, k);
-      a(r, k) = f;
-      for (int c = k + 1; c < n; ++c) a(r, c) -= f * a(k, c);
-    }
-  }
-  if (out.rank < n) out.status = Status::degenerate_input;
-  out.lu = detail::from_compute<T>(a);
-  return out;
-}
-
-/// Determinant from an LU factorisation.
-template <class T>
-[[nodiscard]] T determinant(const LU<T>& f) noexcept {
-  compute_t<T> d = compute_t<T>(f.sign);
-  for (int i = 0; i < f.lu.rows; ++i) d *= compute_t<T>(f.lu(i, i));
-  return T(d);
-}
-
-/// Solves A x = b with an LU factorisation; empty when A was singular or b has the wrong size.
-template <class T>
-[[nodiscard]] std::vector<T> solve(const LU<T>& f, const std::vector<T>& b) {
-  const int n = f.lu.rows;
-  if (f.status != Status::ok || int(b.size()) != n) return {};
-  using C = compute_t<T>;
-  std::vector<C> y(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    C s = C(b[std::size_t(f.perm[std::size_t(i)])]);
-    for (int k = 0; k < i; ++k) s -= C(f.lu(i, k)) * y[std::size_t(k)];
-    y[std::size_t(i)] = s;
-  }
-  std::vector<T> x(static_cast<std::size_t>(n));
-  for (int i = n - 1; i >= 0; --i) {
-    C s = y[std::size_t(i)];
-    for (int k = i + 1; k < n; ++k) s -= C(f.lu(i, k)) * C(x[std::size_t(k)]);
-    y[std::size_t(i)] = s / C(f.lu(i, i));
-    x[std::size_t(i)] = T(y[std::size_t(i)]);
-  }
-  return x;
-}
 
 /// Householder QR, A = Q R (any shape; Q is rows x rows).
 template <class T>
