@@ -62,11 +62,11 @@ QVec<N> bezier_derivative(std::vector<QVec<N>> p, int k, const Q& t) {
   for (int s = 0; s < k; ++s) {
     scale *= n - s;
     for (std::size_t i = 0; i + 1 < p.size() - static_cast<std::size_t>(s); ++i)
-      for (int c = 0; c < N; ++c) p[i][c] = p[i + 1][c] - p[i][c];
+      for (std::size_t c = 0; c < N; ++c) p[i][c] = p[i + 1][c] - p[i][c];
   }
   for (int i = 0; i <= n - k; ++i) {
     const Q b = bernstein(n - k, i, t) * scale;
-    for (int c = 0; c < N; ++c) r[c] += b * p[static_cast<std::size_t>(i)][c];
+    for (std::size_t c = 0; c < N; ++c) r[c] += b * p[static_cast<std::size_t>(i)][c];
   }
   return r;
 }

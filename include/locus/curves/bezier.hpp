@@ -68,7 +68,7 @@ class CurveScratch {
 
  private:
   std::size_t n_;
-  std::array<V, Inline> buf_{};
+  std::array<V, Inline> buf_;  // not value-initialised: every use writes before it reads
   std::vector<V> heap_;
 };
 

@@ -284,10 +284,6 @@ template <class T, int N>
 [[nodiscard]] BSplineCurve<T, N> derivative(const BSplineCurve<T, N>& c) {
   if (!detail::bspline_shape_ok(c.degree, c.control.size(), c.knots.size())) return c;
   if (c.degree == 0) return {0, std::vector<Vec<T, N>>(c.control.size()), c.knots};
-  if (c.control.size() == 1) {
-    // n = 1 requires d = 0 (handled above); unreachable for a consistent shape.
-    return c;
-  }
   const auto d = static_cast<std::size_t>(c.degree);
   BSplineCurve<T, N> r;
   r.degree = c.degree - 1;
