@@ -385,6 +385,39 @@ TYPED_TEST(BezierSurfaceTest, DegreeOneTriangleIsTheFlatTriangle) {
   }
 }
 
+TYPED_TEST(BezierSurfaceTest, TriangleSubdivisionReproducesThePatch) {
+  using T = TypeParam;
+  locus_test::Rng rng(13);
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 15; ++trial) {
+    const int n = rng.uniform_int(0, 5);
+    const BezierTriangle<T, 3> p{n,
+                                 curve_oracle::dyadic_points<T, 3>(rng, triangle_control_count(n))};
+    const T scale = curve_oracle::max_abs_points(p.control);
+    // A dyadic split point inside the triangle (on an edge for some trials).
+    const int su = rng.uniform_int(0, 8), sv = rng.uniform_int(0, 8 - su);
+    const T u = static_cast<T>(su) / T(8), v = static_cast<T>(sv) / T(8);
+    const Q uq(su, 8), vq(sv, 8);
+    const std::array<BezierTriangle<T, 3>, 3> parts = subdivide(p, u, v);
+    for (int a = 0; a <= 4; ++a)
+      for (int b = 0; a + b <= 4; ++b) {
+        const Q aq(a, 4), bq(b, 4), cq = Q(1) - aq - bq;
+        const T at = static_cast<T>(a) / T(4), bt = static_cast<T>(b) / T(4);
+        // Parent barycentrics of local (a, b, c) in each sub-patch (corners in the header).
+        const std::array<std::pair<Q, Q>, 3> parent{
+            {{aq * uq, aq * vq + bq}, {aq + bq * uq, bq * vq}, {aq + cq * uq, bq + cq * vq}}};
+        for (int k = 0; k < 3; ++k) {
+          const auto e = exact_triangle(p, parent[static_cast<std::size_t>(k)].first,
+                                        parent[static_cast<std::size_t>(k)].second);
+          // Two de Casteljau passes (the split, then the evaluation).
+          EXPECT_TRUE(curve_oracle::near_q(point_at(parts[static_cast<std::size_t>(k)], at, bt),
+                                           e[0], double(tol(T(16 * (n + 1)), scale))))
+              << "part " << k << " n " << n;
+        }
+      }
+  }
+}
+
 TYPED_TEST(BezierSurfaceTest, TriangleBadInputAndClamping) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN();

@@ -262,6 +262,59 @@ TYPED_TEST(BSplineSurfaceTest, ValidationAndBadInput) {
   EXPECT_EQ(normal_at(s, T(0.5), nan), (Vec3<T>{}));
 }
 
+TYPED_TEST(BSplineSurfaceTest, KnotInsertionAndBezierGridKeepTheSurface) {
+  using T = TypeParam;
+  locus_test::Rng rng(13);
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 12; ++trial) {
+    const BSplineSurface<T, 3> s = random_surface<T>(rng, trial % 2 == 0);
+    const T scale = curve_oracle::max_abs_points(s.control);
+    const ParamDomain<T> a = domain_u(s), b = domain_v(s);
+    const T tu = a.min + (a.max - a.min) * static_cast<T>(rng.uniform_int(0, 8)) / T(8);
+    const T tv = b.min + (b.max - b.min) * static_cast<T>(rng.uniform_int(0, 8)) / T(8);
+    const BSplineSurface<T, 3> r = insert_knot_v(insert_knot_u(s, tu, 2), tv, 1);
+    ASSERT_EQ(validate(r), Status::ok);
+    EXPECT_EQ(static_cast<std::size_t>(r.rows),
+              r.knots_u.size() - static_cast<std::size_t>(r.degree_u) - 1);
+    EXPECT_EQ(static_cast<std::size_t>(r.cols),
+              r.knots_v.size() - static_cast<std::size_t>(r.degree_v) - 1);
+    const BezierPatchGrid<T, 3> g = to_bezier(s);
+    ASSERT_EQ(g.status, Status::ok);
+    ASSERT_EQ(g.patches.size(), static_cast<std::size_t>(g.count_u * g.count_v));
+    ASSERT_EQ(g.breaks_u.size(), static_cast<std::size_t>(g.count_u) + 1);
+    ASSERT_EQ(g.breaks_v.size(), static_cast<std::size_t>(g.count_v) + 1);
+    EXPECT_EQ(g.breaks_u.front(), a.min);
+    EXPECT_EQ(g.breaks_u.back(), a.max);
+    // Insertion and conversion add rounds of convex combinations to the control points.
+    const T tl = T(4) * surf_tol(s.degree_u, s.degree_v, scale);
+    for (int k = 0; k < 12; ++k) {
+      const T u = a.min + (a.max - a.min) * static_cast<T>(rng.uniform_int(0, 16)) / T(16);
+      const T v = b.min + (b.max - b.min) * static_cast<T>(rng.uniform_int(0, 16)) / T(16);
+      const Vec3<T> want = curve_of_curves(s, u, v)[0];
+      EXPECT_TRUE(locus_test::vec_near(point_at(r, u, v), want, tl));
+      // The patch containing (u, v), evaluated at its local parameters.
+      int pa = 0, pb = 0;
+      while (pa + 1 < g.count_u && u >= g.breaks_u[static_cast<std::size_t>(pa) + 1]) ++pa;
+      while (pb + 1 < g.count_v && v >= g.breaks_v[static_cast<std::size_t>(pb) + 1]) ++pb;
+      const auto ua = static_cast<std::size_t>(pa), vb = static_cast<std::size_t>(pb);
+      const T lu = (u - g.breaks_u[ua]) / (g.breaks_u[ua + 1] - g.breaks_u[ua]);
+      const T lv = (v - g.breaks_v[vb]) / (g.breaks_v[vb + 1] - g.breaks_v[vb]);
+      const BezierPatch<T, 3>& patch = g.patches[ua * static_cast<std::size_t>(g.count_v) + vb];
+      EXPECT_TRUE(locus_test::vec_near(point_at(patch, lu, lv), want, tl));
+      // The patch's control box bounds the surface there (hierarchy refinement).
+      const AlignedBox3<T> box = inflate(bounding_box(patch), tl);
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_GE(want[c], box.min[c]);
+        EXPECT_LE(want[c], box.max[c]);
+      }
+    }
+  }
+  // Bad shapes: returned unchanged / status.
+  const BSplineSurface<T, 3> wrong{1, 1, 2, 2, {}, {0, 0, 1, 1}, {0, 0, 1, 1}};
+  EXPECT_EQ(insert_knot_u(wrong, T(0.5)).knots_u.size(), 4u);
+  EXPECT_EQ(to_bezier(wrong).status, Status::invalid_input);
+}
+
 // ---- NURBS surfaces ----
 
 TYPED_TEST(BSplineSurfaceTest, NurbsWithUnitWeightsEqualsBSpline) {

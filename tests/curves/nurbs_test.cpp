@@ -252,6 +252,30 @@ TYPED_TEST(NurbsTest, ArcsAreExactIn2DAnd3D) {
   }
 }
 
+TYPED_TEST(NurbsTest, KnotInsertionKeepsTheCurve) {
+  using T = TypeParam;
+  locus_test::Rng rng(11);
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 15; ++trial) {
+    const int d = rng.uniform_int(1, 4);
+    const NurbsCurve2<T> c = random_nurbs<T, 2>(rng, d, d + rng.uniform_int(1, 4));
+    const ParamDomain<T> dom = domain(c);
+    const T t = dom.min + (dom.max - dom.min) * static_cast<T>(rng.uniform_int(0, 16)) / T(16);
+    const NurbsCurve2<T> r = insert_knot(c, t, rng.uniform_int(1, d));
+    ASSERT_EQ(validate(r), Status::ok);  // weights stay positive
+    const T scale = curve_oracle::max_abs_points(c.control);
+    for (int j = 0; j <= 16; ++j) {
+      const T x = dom.min + (dom.max - dom.min) * static_cast<T>(j) / T(16);
+      EXPECT_TRUE(curve_oracle::near_q(point_at(r, x), exact(c, Q(static_cast<double>(x))).first,
+                                       double(T(2) * rational_tol(2 * d, scale))));
+    }
+  }
+  // The circle stays a circle after refinement.
+  const NurbsCurve2<T> circ = insert_knot(to_nurbs(Circle2<T>{{T(0), T(0)}, T(1)}), T(0.1), 2);
+  for (int j = 0; j <= 32; ++j)
+    EXPECT_NEAR(length(point_at(circ, static_cast<T>(j) / T(32))), T(1), tol(T(64)));
+}
+
 TYPED_TEST(NurbsTest, WeightsAndBadInput) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN();

@@ -32,6 +32,12 @@
 //
 // Subdivision: subdivide_u / subdivide_v split a rectangle patch at a parameter into two
 // patches, each reparametrised to [0, 1] (curve subdivision on every column / row).
+// subdivide(triangle, u, v) splits a triangle patch at the point with barycentrics
+// s = (u, v, w) into three patches whose corners are (s, e2, e3), (e1, s, e3), (e1, e2, s)
+// (e1 = (1,0,0) the corner P_n00, ...): sub-patch 0 at local (a, b) is the parent at
+// a s + b e2 + c e3, and likewise; their nets are the faces of the de Casteljau pyramid
+// (control point ijk of sub-patch 0 is level i's point (0, j, k)). A split point on an edge or
+// corner gives degenerate (zero-area) sub-patches, which is valid data. O(n^3) time and memory.
 // bounding_box() is the control-net box, which contains the patch (convex-hull property).
 // Cost: point_at O(m n (m + n)); partials the same; evaluation allocates only for degree >= 16.
 
@@ -40,6 +46,7 @@
 #include <locus/curves/bezier.hpp>
 #include <locus/primitives/aligned_box.hpp>
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -323,6 +330,51 @@ template <class T, int N>
   s.dv = static_cast<T>(n) * (b010 - b001);
   s.point = u * b100 + v * b010 + w * b001;
   return s;
+}
+
+/// Splits a triangle patch at the point (u, v) (clamped onto the triangle) into three
+/// patches; see the header comment for their corners. A bad shape returns three copies.
+template <class T, int N>
+[[nodiscard]] std::array<BezierTriangle<T, N>, 3> subdivide(const BezierTriangle<T, N>& p, T u,
+                                                            T v) {
+  if (!detail::triangle_shape_ok(p)) return {p, p, p};
+  detail::clamp_barycentric(u, v);
+  const T w = T(1) - u - v;
+  const int n = p.degree;
+  // levels[r] holds the degree n - r net of de Casteljau level r.
+  std::vector<std::vector<Vec<T, N>>> levels(static_cast<std::size_t>(n) + 1);
+  levels[0] = p.control;
+  for (int r = 1; r <= n; ++r) {
+    const int m = n - r + 1;  // degree of the previous level
+    const auto& prev = levels[static_cast<std::size_t>(r - 1)];
+    auto& cur = levels[static_cast<std::size_t>(r)];
+    cur.resize(static_cast<std::size_t>(triangle_control_count(m - 1)));
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m - j; ++i)
+        cur[static_cast<std::size_t>(triangle_index(m - 1, i, j))] =
+            u * prev[static_cast<std::size_t>(triangle_index(m, i + 1, j))] +
+            v * prev[static_cast<std::size_t>(triangle_index(m, i, j + 1))] +
+            w * prev[static_cast<std::size_t>(triangle_index(m, i, j))];
+  }
+  std::array<BezierTriangle<T, N>, 3> out;
+  for (auto& t : out) {
+    t.degree = n;
+    t.control.resize(p.control.size());
+  }
+  // Level r, index (a, b) with c = n - r - a - b: the blossom of (s^r, e1^a, e2^b, e3^c).
+  const auto at = [&](int r, int a, int b) {
+    return levels[static_cast<std::size_t>(r)]
+                 [static_cast<std::size_t>(triangle_index(n - r, a, b))];
+  };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i + j <= n; ++i) {
+      const int k = n - i - j;
+      const auto idx = static_cast<std::size_t>(triangle_index(n, i, j));
+      out[0].control[idx] = at(i, 0, j);  // corners (s, e2, e3): s^i e2^j e3^k
+      out[1].control[idx] = at(j, i, 0);  // corners (e1, s, e3): e1^i s^j e3^k
+      out[2].control[idx] = at(k, i, j);  // corners (e1, e2, s): e1^i e2^j s^k
+    }
+  return out;
 }
 
 /// normalize(du x dv): the unit normal, the zero vector where du x dv vanishes (64 eps relative).

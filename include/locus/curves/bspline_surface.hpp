@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace locus {
@@ -179,6 +180,109 @@ template <class T>
 template <class T, int N>
 [[nodiscard]] AlignedBox<T, N> bounding_box(const BSplineSurface<T, N>& s) noexcept {
   return bounding_box(s.control.data(), s.control.size());
+}
+
+/// Inserts the knot t (clamped to the u domain) `times` times along u; the surface is unchanged.
+/// An inconsistent shape is returned unchanged.
+template <class T, int N>
+[[nodiscard]] BSplineSurface<T, N> insert_knot_u(const BSplineSurface<T, N>& s, T t,
+                                                 int times = 1) {
+  if (!detail::tensor_shape_ok(s)) return s;
+  const auto rows = static_cast<std::size_t>(s.rows), cols = static_cast<std::size_t>(s.cols);
+  BSplineSurface<T, N> r = s;
+  BSplineCurve<T, N> col{s.degree_u, std::vector<Vec<T, N>>(rows), s.knots_u};
+  for (std::size_t j = 0; j < cols; ++j) {
+    for (std::size_t i = 0; i < rows; ++i) col.control[i] = s.control[i * cols + j];
+    const BSplineCurve<T, N> c = insert_knot(col, t, times);
+    if (j == 0) {
+      r.rows = static_cast<int>(c.control.size());
+      r.knots_u = c.knots;
+      r.control.assign(c.control.size() * cols, Vec<T, N>{});
+    }
+    for (std::size_t i = 0; i < c.control.size(); ++i) r.control[i * cols + j] = c.control[i];
+  }
+  return r;
+}
+
+/// Inserts the knot t (clamped to the v domain) `times` times along v; the surface is unchanged.
+template <class T, int N>
+[[nodiscard]] BSplineSurface<T, N> insert_knot_v(const BSplineSurface<T, N>& s, T t,
+                                                 int times = 1) {
+  if (!detail::tensor_shape_ok(s)) return s;
+  const auto rows = static_cast<std::size_t>(s.rows), cols = static_cast<std::size_t>(s.cols);
+  BSplineSurface<T, N> r = s;
+  BSplineCurve<T, N> row{s.degree_v, std::vector<Vec<T, N>>(cols), s.knots_v};
+  for (std::size_t i = 0; i < rows; ++i) {
+    for (std::size_t j = 0; j < cols; ++j) row.control[j] = s.control[i * cols + j];
+    const BSplineCurve<T, N> c = insert_knot(row, t, times);
+    if (i == 0) {
+      r.cols = static_cast<int>(c.control.size());
+      r.knots_v = c.knots;
+      r.control.assign(rows * c.control.size(), Vec<T, N>{});
+    }
+    for (std::size_t j = 0; j < c.control.size(); ++j)
+      r.control[i * c.control.size() + j] = c.control[j];
+  }
+  return r;
+}
+
+/// A surface as a grid of Bézier patches: patch (a, b) covers [breaks_u[a], breaks_u[a+1]] x
+/// [breaks_v[b], breaks_v[b+1]] and is stored at patches[a * count_v + b].
+template <class T, int N>
+struct BezierPatchGrid {
+  Status status;
+  int count_u;
+  int count_v;
+  std::vector<BezierPatch<T, N>> patches;
+  std::vector<T> breaks_u;
+  std::vector<T> breaks_v;
+};
+
+/// Splits the surface into Bézier patches (see the header comment); status is validate(s), the
+/// grid is empty unless ok.
+template <class T, int N>
+[[nodiscard]] BezierPatchGrid<T, N> to_bezier(const BSplineSurface<T, N>& s) {
+  BezierPatchGrid<T, N> g{validate(s), 0, 0, {}, {}, {}};
+  if (g.status != Status::ok) return g;
+  BSplineSurface<T, N> r = s;
+  const ParamDomain<T> du = domain_u(s), dv = domain_v(s);
+  std::vector<T> distinct;
+  for (T k : s.knots_u)
+    if (k >= du.min && k <= du.max && (distinct.empty() || distinct.back() != k))
+      distinct.push_back(k);
+  for (T k : distinct) r = insert_knot_u(r, k, r.degree_u);
+  distinct.clear();
+  for (T k : s.knots_v)
+    if (k >= dv.min && k <= dv.max && (distinct.empty() || distinct.back() != k))
+      distinct.push_back(k);
+  for (T k : distinct) r = insert_knot_v(r, k, r.degree_v);
+  // Non-empty spans in each direction.
+  const auto spans = [](const std::vector<T>& kn, int d, int n, std::vector<int>& out,
+                        std::vector<T>& breaks) {
+    for (int k = d; k < n; ++k) {
+      const auto uk = static_cast<std::size_t>(k);
+      if (!(kn[uk] < kn[uk + 1])) continue;
+      if (breaks.empty()) breaks.push_back(kn[uk]);
+      breaks.push_back(kn[uk + 1]);
+      out.push_back(k);
+    }
+  };
+  std::vector<int> su, sv;
+  spans(r.knots_u, r.degree_u, r.rows, su, g.breaks_u);
+  spans(r.knots_v, r.degree_v, r.cols, sv, g.breaks_v);
+  g.count_u = static_cast<int>(su.size());
+  g.count_v = static_cast<int>(sv.size());
+  const auto cols = static_cast<std::size_t>(r.cols);
+  for (int ku : su)
+    for (int kv : sv) {
+      BezierPatch<T, N> p{r.degree_u + 1, r.degree_v + 1, {}};
+      for (int i = ku - r.degree_u; i <= ku; ++i)
+        for (int j = kv - r.degree_v; j <= kv; ++j)
+          p.control.push_back(
+              r.control[static_cast<std::size_t>(i) * cols + static_cast<std::size_t>(j)]);
+      g.patches.push_back(std::move(p));
+    }
+  return g;
 }
 
 }  // namespace locus

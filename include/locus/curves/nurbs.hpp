@@ -25,6 +25,8 @@
 // and double interior knots at i/m. Every point is on the circle up to rounding; the
 // parametrisation is not by arc length. to_nurbs(Circle2) and to_nurbs(Arc2) wrap it in 2D.
 //
+// insert_knot() refines a NURBS curve without changing it (Boehm on the homogeneous curve).
+//
 // Cost: point_at O(d^2); derivatives O(k n) (derivative curves are built, allocating).
 
 #include <locus/core/scalar.hpp>
@@ -187,6 +189,25 @@ template <class T, int N>
 [[nodiscard]] Vec<T, N> derivative_at(const NurbsCurve<T, N>& c, T t, int k) {
   if (k < 0) return detail::nan_vec<T, N>();
   return derivatives(c, t, k).back();
+}
+
+/// Inserts the knot t (clamped to the domain) `times` times: Boehm's algorithm on the
+/// homogeneous B-spline, then the new points are projected (P = A / w). The curve is unchanged.
+/// New weights are convex combinations of old ones, so positive weights stay positive; with
+/// non-positive weights a new weight can be 0, and its control point is then NaN. An
+/// inconsistent shape is returned unchanged.
+template <class T, int N>
+[[nodiscard]] NurbsCurve<T, N> insert_knot(const NurbsCurve<T, N>& c, T t, int times = 1) {
+  if (!detail::nurbs_shape_ok(c)) return c;
+  const BSplineCurve<T, N + 1> h = insert_knot(to_homogeneous(c), t, times);
+  NurbsCurve<T, N> r{c.degree, {}, {}, h.knots};
+  r.control.reserve(h.control.size());
+  r.weights.reserve(h.control.size());
+  for (const auto& p : h.control) {
+    r.control.push_back(detail::project<T, N>(p));
+    r.weights.push_back(p[N]);
+  }
+  return r;
 }
 
 /// The control-polygon box; it contains the curve when every weight is positive.
