@@ -1,0 +1,506 @@
+// SPDX-License-Identifier: BSL-1.0
+// 2D convex hull (cg.hull2): the three methods of include/locus/hull/hull2.hpp, compiled once
+// for float and double.
+
+#include <locus/hull/hull2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace locus {
+
+namespace {
+
+template <class Item>
+[[nodiscard]] inline bool item_less(const Item& a, const Item& b) noexcept {
+  if (a.p.y != b.p.y) return a.p.y < b.p.y;
+  if (a.p.x != b.p.x) return a.p.x < b.p.x;
+  return a.index < b.index;
+}
+
+template <class Item>
+void insertion_sort(Item* first, Item* last) noexcept {
+  for (Item* i = first + 1; i < last; ++i) {
+    Item v = *i;
+    Item* j = i;
+    while (j > first && item_less(v, *(j - 1))) {
+      *j = *(j - 1);
+      --j;
+    }
+    *j = v;
+  }
+}
+
+// The strict hull (CCW, from the lowest-leftmost point) of at most a handful of points, by the
+// monotone chain; used for the filter polygon.
+template <class T>
+std::size_t tiny_hull(Vec2<T>* pts, std::size_t n, Vec2<T>* out) noexcept {
+  std::sort(pts, pts + n, [](const Vec2<T>& a, const Vec2<T>& b) {
+    return a.y < b.y || (a.y == b.y && a.x < b.x);
+  });
+  n = static_cast<std::size_t>(std::unique(pts, pts + n) - pts);
+  if (n < 3) return n;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    while (k >= 2 && orient2d(out[k - 2], out[k - 1], pts[i]) != Sign::positive) --k;
+    out[k++] = pts[i];
+  }
+  const std::size_t lower = k + 1;
+  for (std::size_t i = n - 1; i-- > 0;) {
+    while (k >= lower && orient2d(out[k - 2], out[k - 1], pts[i]) != Sign::positive) --k;
+    out[k++] = pts[i];
+  }
+  return k - 1;
+}
+
+template <class T>
+[[nodiscard]] bool strictly_inside(const Vec2<T>* poly, std::size_t n, const Vec2<T>& q) noexcept {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (orient2d(poly[i], poly[(i + 1) % n], q) != Sign::positive) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+template <Real T>
+Hull2Result ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options& options) {
+  Hull2Result r;
+  compute(points, options, r);
+  return r;
+}
+
+template <Real T>
+void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options& options,
+                             Hull2Result& out) {
+  out.indices.clear();
+  out.dimension = -1;
+  const std::size_t n = points.size();
+  if (n == 0) {
+    out.status = Status::empty_input;
+    return;
+  }
+  if (n > std::numeric_limits<std::uint32_t>::max()) {
+    out.status = Status::invalid_input;
+    return;
+  }
+  constexpr T big = std::numeric_limits<T>::max();
+  items_.clear();
+  const bool filter = options.method == Hull2Method::monotone_chain && n >= 256;
+  if (!filter) {
+    items_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2<T> p = points[i];
+      if (!(std::abs(p.x) <= big && std::abs(p.y) <= big)) {
+        out.status = Status::non_finite_input;
+        items_.clear();
+        return;
+      }
+      items_[i] = Item{p, static_cast<std::uint32_t>(i)};
+    }
+  } else {
+    // Akl-Toussaint: extreme points in the directions y, x, x + y, x - y (heuristic values in
+    // double; the polygon they span is inside the hull whatever the rounding).
+    double ext_min[4], ext_max[4];
+    std::size_t arg_min[4] = {0, 0, 0, 0}, arg_max[4] = {0, 0, 0, 0};
+    for (int k = 0; k < 4; ++k) {
+      ext_min[k] = std::numeric_limits<double>::infinity();
+      ext_max[k] = -std::numeric_limits<double>::infinity();
+    }
+    bool finite = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2<T> p = points[i];
+      finite &= (std::abs(p.x) <= big) & (std::abs(p.y) <= big);
+      const double x = static_cast<double>(p.x), y = static_cast<double>(p.y);
+      const double v[4] = {y, x, x + y, x - y};
+      for (int k = 0; k < 4; ++k) {
+        if (v[k] < ext_min[k]) {
+          ext_min[k] = v[k];
+          arg_min[k] = i;
+        }
+        if (v[k] > ext_max[k]) {
+          ext_max[k] = v[k];
+          arg_max[k] = i;
+        }
+      }
+    }
+    if (!finite) {
+      out.status = Status::non_finite_input;
+      return;
+    }
+    Vec2<T> cand[8], poly[9];
+    for (int k = 0; k < 4; ++k) {
+      cand[2 * k] = points[arg_min[k]];
+      cand[2 * k + 1] = points[arg_max[k]];
+    }
+    const Vec2<T> sw = points[arg_min[2]], ne = points[arg_max[2]];
+    const Vec2<T> nw = points[arg_min[3]], se = points[arg_max[3]];
+    const std::size_t pn = tiny_hull(cand, 8, poly);
+    Vec2<T> lo{std::max(sw.x, nw.x), std::max(sw.y, se.y)};
+    Vec2<T> hi{std::min(se.x, ne.x), std::min(nw.y, ne.y)};
+    bool use_box = false;
+    if (pn >= 3 && lo.x < hi.x && lo.y < hi.y) {
+      const Vec2<T> c{lo.x / T(2) + hi.x / T(2), lo.y / T(2) + hi.y / T(2)};
+      for (const T f : {T(1), T(0.95), T(0.8), T(0.5)}) {
+        const Vec2<T> l{c.x + f * (lo.x - c.x), c.y + f * (lo.y - c.y)};
+        const Vec2<T> h{c.x + f * (hi.x - c.x), c.y + f * (hi.y - c.y)};
+        if (strictly_inside(poly, pn, l) && strictly_inside(poly, pn, h) &&
+            strictly_inside(poly, pn, Vec2<T>{l.x, h.y}) &&
+            strictly_inside(poly, pn, Vec2<T>{h.x, l.y})) {
+          lo = l;
+          hi = h;
+          use_box = true;
+          break;
+        }
+      }
+    }
+    if (use_box) {
+      // The closed box lies strictly inside the hull of input points, so no point in it is on
+      // the hull boundary.
+      items_.reserve(n / 8);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec2<T> p = points[i];
+        const bool inside = (p.x >= lo.x) & (p.x <= hi.x) & (p.y >= lo.y) & (p.y <= hi.y);
+        if (!inside) items_.push_back(Item{p, static_cast<std::uint32_t>(i)});
+      }
+    } else {
+      items_.resize(n);
+      for (std::size_t i = 0; i < n; ++i)
+        items_[i] = Item{points[i], static_cast<std::uint32_t>(i)};
+    }
+  }
+  sort_items(0, items_.size());
+  // Duplicates are adjacent; the first (smallest index) represents them.
+  {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < items_.size(); ++i) {
+      if (k > 0 && items_[i].p.x == items_[k - 1].p.x && items_[i].p.y == items_[k - 1].p.y)
+        continue;
+      items_[k++] = items_[i];
+    }
+    items_.resize(k);
+  }
+  out.status = Status::ok;
+  if (items_.size() == 1) {
+    out.dimension = 0;
+    out.indices.push_back(items_[0].index);
+    return;
+  }
+  switch (options.method) {
+    case Hull2Method::monotone_chain:
+      monotone_chain(options.keep_collinear, out);
+      return;
+    case Hull2Method::incremental:
+      incremental(out);
+      emit_strict(options.keep_collinear, out);
+      return;
+    case Hull2Method::divide_and_conquer:
+      divide_and_conquer(out);
+      emit_strict(options.keep_collinear, out);
+      return;
+  }
+}
+
+// Sort by (y, x, index). A bucket pass on a monotone (non-decreasing) function of y puts every
+// item in a bucket no later than any larger item's bucket; exact ties and the order inside a
+// bucket are settled by the comparison sort, so the result is exactly sorted.
+template <Real T>
+void ConvexHull2<T>::sort_items(std::size_t first, std::size_t count) {
+  Item* a = items_.data() + first;
+  if (count < 1024) {
+    if (count <= 32)
+      insertion_sort(a, a + count);
+    else
+      std::sort(a, a + count, item_less<Item>);
+    return;
+  }
+  double ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
+  for (std::size_t i = 0; i < count; ++i) {
+    ymin = std::min(ymin, static_cast<double>(a[i].p.y));
+    ymax = std::max(ymax, static_cast<double>(a[i].p.y));
+  }
+  const double range = ymax - ymin;
+  const std::size_t nb = count;
+  const double scale = static_cast<double>(nb) / range;
+  if (!(range > 0.0) || !std::isfinite(scale) || !(scale > 0.0)) {
+    std::sort(a, a + count, item_less<Item>);
+    return;
+  }
+  const auto bucket = [&](T y) {
+    const double t = (static_cast<double>(y) - ymin) * scale;
+    const std::size_t b = t < static_cast<double>(nb) ? static_cast<std::size_t>(t) : nb - 1;
+    return b;
+  };
+  counts_.assign(nb + 1, 0);
+  for (std::size_t i = 0; i < count; ++i) ++counts_[bucket(a[i].p.y) + 1];
+  for (std::size_t b = 0; b < nb; ++b) counts_[b + 1] += counts_[b];
+  scratch_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) scratch_[counts_[bucket(a[i].p.y)]++] = a[i];
+  // counts_[b] is now the end of bucket b; bucket b starts at counts_[b - 1] (0 for b = 0).
+  std::size_t begin = 0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    const std::size_t end = counts_[b];
+    if (end - begin > 1) {
+      if (end - begin <= 32)
+        insertion_sort(scratch_.data() + begin, scratch_.data() + end);
+      else
+        std::sort(scratch_.data() + begin, scratch_.data() + end, item_less<Item>);
+    }
+    begin = end;
+  }
+  std::copy(scratch_.begin(), scratch_.end(), a);
+}
+
+// Andrew's monotone chain over the sorted, distinct items: the right chain from the lowest to
+// the highest point, then the left chain back, each keeping only left turns (or also straight
+// continuations when keeping collinear points).
+template <Real T>
+void ConvexHull2<T>::monotone_chain(bool keep_collinear, Hull2Result& out) {
+  const std::size_t m = items_.size();
+  hull_.resize(2 * m);
+  std::uint32_t* h = hull_.data();
+  const Item* it = items_.data();
+  const auto bad = [&](std::uint32_t a, std::uint32_t b, std::size_t c) {
+    const Sign s = orient2d(it[a].p, it[b].p, it[c].p);
+    return keep_collinear ? s == Sign::negative : s != Sign::positive;
+  };
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    while (k >= 2 && bad(h[k - 2], h[k - 1], i)) --k;
+    h[k++] = static_cast<std::uint32_t>(i);
+  }
+  const std::size_t lower = k + 1;
+  for (std::size_t i = m - 1; i-- > 0;) {
+    while (k >= lower && bad(h[k - 2], h[k - 1], i)) --k;
+    h[k++] = static_cast<std::uint32_t>(i);
+  }
+  const std::size_t size = k - 1;
+  const bool collinear = keep_collinear ? size == 2 * m - 2 : size == 2;
+  if (collinear) {
+    out.dimension = 1;
+    if (keep_collinear) {
+      out.indices.resize(m);
+      for (std::size_t i = 0; i < m; ++i) out.indices[i] = it[i].index;
+    } else {
+      out.indices = {it[0].index, it[m - 1].index};
+    }
+    return;
+  }
+  out.dimension = 2;
+  out.indices.resize(size);
+  for (std::size_t i = 0; i < size; ++i) out.indices[i] = it[h[i]].index;
+}
+
+// The book's incremental method on sorted input: each new point is the lexicographic maximum so
+// far, hence outside the current hull and a vertex of the new one. The hull is a circular list;
+// the two tangent points are found by walking from the previous maximum (figure 13.34). While the
+// hull is a segment, the five cases of figure 13.35 reduce (the new point is never before the
+// segment's end) to: on the line beyond the end (extend), left or right (make a triangle).
+template <Real T>
+void ConvexHull2<T>::incremental(Hull2Result& out) {
+  (void)out;
+  const std::size_t m = items_.size();
+  const Item* it = items_.data();
+  aux_.assign(m, 0);   // next (counter-clockwise)
+  aux2_.assign(m, 0);  // prev
+  std::uint32_t* next = aux_.data();
+  std::uint32_t* prev = aux2_.data();
+  std::uint32_t top = 1;
+  bool collinear = true;
+  for (std::uint32_t i = 2; i < m; ++i) {
+    const Vec2<T>& p = it[i].p;
+    if (collinear) {
+      const Sign s = orient2d(it[0].p, it[top].p, p);
+      if (s == Sign::zero) {
+        top = i;
+        continue;
+      }
+      collinear = false;
+      const std::uint32_t a = s == Sign::positive ? top : i, b = s == Sign::positive ? i : top;
+      next[0] = a, next[a] = b, next[b] = 0;
+      prev[0] = b, prev[b] = a, prev[a] = 0;
+      top = i;
+      continue;
+    }
+    std::uint32_t a = top, b = top;
+    for (std::size_t guard = 0; guard < m && orient2d(it[prev[a]].p, it[a].p, p) != Sign::positive;
+         ++guard)
+      a = prev[a];
+    for (std::size_t guard = 0; guard < m && orient2d(it[b].p, it[next[b]].p, p) != Sign::positive;
+         ++guard)
+      b = next[b];
+    next[a] = i, prev[i] = a, next[i] = b, prev[b] = i;
+    top = i;
+  }
+  hull_.clear();
+  if (collinear) {
+    hull_.push_back(0);
+    hull_.push_back(top);
+    return;
+  }
+  std::uint32_t v = 0;
+  do {
+    hull_.push_back(v);
+    v = next[v];
+  } while (v != 0 && hull_.size() <= m);
+}
+
+// The book's divide and conquer: hulls of the lower and upper halves (in (y, x) order, so they
+// are separated), merged through their two tangents (figures 13.36-13.38). Hulls are stored
+// counter-clockwise from their lexicographically smallest point in hull_[lo, lo + size).
+template <Real T>
+void ConvexHull2<T>::divide_and_conquer(Hull2Result& out) {
+  (void)out;
+  const std::size_t m = items_.size();
+  hull_.assign(m, 0);
+  aux_.resize(m);
+  const std::uint32_t h = dc_recurse(0, static_cast<std::uint32_t>(m));
+  hull_.resize(h);
+}
+
+template <Real T>
+std::uint32_t ConvexHull2<T>::dc_recurse(std::uint32_t lo, std::uint32_t hi) {
+  if (hi - lo <= 2) {
+    for (std::uint32_t i = lo; i < hi; ++i) hull_[i] = i;
+    return hi - lo;
+  }
+  const std::uint32_t mid = lo + (hi - lo) / 2;
+  const std::uint32_t hl = dc_recurse(lo, mid);
+  const std::uint32_t hr = dc_recurse(mid, hi);
+  const std::uint32_t* L = hull_.data() + lo;
+  const std::uint32_t* R = hull_.data() + mid;
+  const Item* it = items_.data();
+  const auto P = [&](std::uint32_t k) -> const Vec2<T>& { return it[k].p; };
+  // Positions in items_ are in lexicographic order, so comparing positions compares points.
+  std::uint32_t top = 0;
+  for (std::uint32_t i = 1; i < hl; ++i)
+    if (L[i] > L[top]) top = i;
+  const std::size_t guard_max = 4 * (static_cast<std::size_t>(hl) + hr) + 8;
+  // Tangent with every point on its right (ia moves counter-clockwise on L, ib clockwise on R).
+  std::uint32_t ia = top, ib = 0;
+  for (std::size_t guard = 0; guard < guard_max; ++guard) {
+    bool moved = false;
+    for (;;) {
+      const std::uint32_t an = (ia + 1) % hl;
+      if (an == ia) break;
+      const Sign s = orient2d(P(L[ia]), P(R[ib]), P(L[an]));
+      if (s == Sign::positive || (s == Sign::zero && L[an] < L[ia])) {
+        ia = an;
+        moved = true;
+      } else {
+        break;
+      }
+    }
+    for (;;) {
+      const std::uint32_t bp = (ib + hr - 1) % hr;
+      if (bp == ib) break;
+      const Sign s = orient2d(P(L[ia]), P(R[ib]), P(R[bp]));
+      if (s == Sign::positive || (s == Sign::zero && R[bp] > R[ib])) {
+        ib = bp;
+        moved = true;
+      } else {
+        break;
+      }
+    }
+    if (!moved) break;
+  }
+  // Tangent with every point on its left (ja clockwise on L, jb counter-clockwise on R).
+  std::uint32_t ja = top, jb = 0;
+  for (std::size_t guard = 0; guard < guard_max; ++guard) {
+    bool moved = false;
+    for (;;) {
+      const std::uint32_t ap = (ja + hl - 1) % hl;
+      if (ap == ja) break;
+      const Sign s = orient2d(P(L[ja]), P(R[jb]), P(L[ap]));
+      if (s == Sign::negative || (s == Sign::zero && L[ap] < L[ja])) {
+        ja = ap;
+        moved = true;
+      } else {
+        break;
+      }
+    }
+    for (;;) {
+      const std::uint32_t bn = (jb + 1) % hr;
+      if (bn == jb) break;
+      const Sign s = orient2d(P(L[ja]), P(R[jb]), P(R[bn]));
+      if (s == Sign::negative || (s == Sign::zero && R[bn] > R[jb])) {
+        jb = bn;
+        moved = true;
+      } else {
+        break;
+      }
+    }
+    if (!moved) break;
+  }
+  // Counter-clockwise from L[0]: L[0..ja], R[jb .. ib] (counter-clockwise), L[ia .. end).
+  std::uint32_t* o = aux_.data();
+  std::uint32_t k = 0;
+  for (std::uint32_t i = 0; i <= ja; ++i) o[k++] = L[i];
+  for (std::uint32_t i = jb;; i = (i + 1) % hr) {
+    o[k++] = R[i];
+    if (i == ib) break;
+  }
+  if (ia != 0)
+    for (std::uint32_t i = ia; i < hl; ++i) o[k++] = L[i];
+  std::copy(o, o + k, hull_.data() + lo);
+  return k;
+}
+
+// From a strict hull in hull_ (positions, counter-clockwise from position 0) to the result,
+// adding the boundary points when asked: a point lies on the right chain (positions increase
+// from 0 to the top) or on the left chain (they decrease back to 0); a binary search by position
+// finds the only edge that can hold it and orient2d decides.
+template <Real T>
+void ConvexHull2<T>::emit_strict(bool keep_collinear, Hull2Result& out) {
+  const std::size_t m = items_.size();
+  const Item* it = items_.data();
+  const std::size_t h = hull_.size();
+  if (h <= 2) {
+    out.dimension = static_cast<int>(h) - 1;
+    if (h == 2 && keep_collinear) {
+      out.indices.resize(m);
+      for (std::size_t i = 0; i < m; ++i) out.indices[i] = it[i].index;
+    } else {
+      for (std::size_t i = 0; i < h; ++i) out.indices.push_back(it[hull_[i]].index);
+    }
+    return;
+  }
+  out.dimension = 2;
+  if (!keep_collinear) {
+    out.indices.resize(h);
+    for (std::size_t i = 0; i < h; ++i) out.indices[i] = it[hull_[i]].index;
+    return;
+  }
+  std::size_t t = 0;
+  for (std::size_t i = 1; i < h; ++i)
+    if (hull_[i] > hull_[t]) t = i;
+  aux2_.assign(m, 0);
+  for (std::size_t i = 0; i <= t; ++i) aux2_[hull_[i]] = 1;
+  for (std::size_t i = t + 1; i < h; ++i) aux2_[hull_[i]] = 2;
+  // Left chain as an increasing sequence: hull_[0], hull_[h-1], ..., hull_[t].
+  aux_.clear();
+  aux_.push_back(hull_[0]);
+  for (std::size_t i = h; i-- > t;) aux_.push_back(hull_[i]);
+  const std::uint32_t* right_begin = hull_.data();
+  const std::uint32_t* right_end = hull_.data() + t + 1;
+  for (std::uint32_t q = 0; q < m; ++q) {
+    if (aux2_[q] != 0) continue;
+    const std::uint32_t* e = std::upper_bound(right_begin, right_end, q) - 1;
+    if (orient2d(it[e[0]].p, it[e[1]].p, it[q].p) == Sign::zero) {
+      aux2_[q] = 1;
+      continue;
+    }
+    const std::uint32_t* f = std::upper_bound(aux_.data(), aux_.data() + aux_.size(), q) - 1;
+    if (orient2d(it[f[0]].p, it[f[1]].p, it[q].p) == Sign::zero) aux2_[q] = 2;
+  }
+  for (std::uint32_t q = 0; q < m; ++q)
+    if (aux2_[q] == 1) out.indices.push_back(it[q].index);
+  for (std::uint32_t q = static_cast<std::uint32_t>(m); q-- > 0;)
+    if (aux2_[q] == 2) out.indices.push_back(it[q].index);
+}
+
+template class ConvexHull2<float>;
+template class ConvexHull2<double>;
+
+}  // namespace locus
