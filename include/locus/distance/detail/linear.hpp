@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Internal machinery shared by the point-linear and linear-linear distance headers (rows
+// dist2.pt-linear, dist3.pt-linear, dist2.linear-linear, dist3.linear-linear; book sections
+// 6.1, 6.3, 10.2, 10.8).
+//
+// A linear component is seen as LinearView {origin, end, dir, bounded_lo, bounded_hi}: the points
+// origin + t dir with t >= 0 when bounded_lo and t <= 1 when bounded_hi (a segment has both and
+// is evaluated as lerp(origin, end, t) so that its endpoints are exact; a ray has bounded_lo; a
+// line neither).
+//
+// Linear-linear method (written for this library; the approach follows the analysis in Eberly,
+// "Robust Computation of Distance Between Line Segments"): R(s, t) = |A(s) - B(t)|^2 is a convex
+// quadratic over the parameter domain I_A x I_B. Its minimum is either the unconstrained
+// minimiser (if it lies in the domain) or lies on an edge s = 0, s = 1, t = 0 or t = 1 of the
+// domain, where the problem is a point-linear query with an exact clamp. When the directions are
+// well separated (|dA x dB|^2 > 64 eps |dA|^2 |dB|^2) and the unconstrained minimiser lies in the
+// domain it is returned directly. Otherwise every candidate (in-domain interior point, each
+// finite edge, and for two lines the projection of A's origin) is evaluated and the smallest
+// squared distance wins. Every candidate is a realisable pair of points, so the answer is never
+// below the true distance by more than rounding and is a minimum of continuous functions of the
+// input, hence continuous as the input moves through (near-)parallel configurations; this is
+// what the textbook "if det < epsilon then parallel" code gets wrong. |dA x dB|^2 is evaluated
+// as a sum of squared 2x2 minors (Lagrange's identity), not as a c - b^2, so it does not cancel.
+// Error: the squared distance is within a few eps * (scale)^2 of the true one, the inherent
+// accuracy of the quadratic formulation.
+//
+// unique = false when the directions are parallel within sin^2(angle) <= (8 eps)^2 (the closest
+// pair is numerically undetermined) and the parameter ranges overlap in more than one point.
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/distance/result.hpp>
+#include <locus/primitives/line.hpp>
+#include <locus/primitives/ray.hpp>
+#include <locus/primitives/segment.hpp>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace locus::detail {
+
+template <class T, int N>
+struct LinearView {
+  Vec<T, N> origin;
+  Vec<T, N> end;  // origin + dir for a segment (exact endpoint); unused otherwise
+  Vec<T, N> dir;
+  bool bounded_lo;
+  bool bounded_hi;
+
+  [[nodiscard]] constexpr Vec<T, N> at(T t) const noexcept {
+    return bounded_hi ? lerp(origin, end, t) : origin + t * dir;
+  }
+  [[nodiscard]] constexpr T clamp_param(T t) const noexcept {
+    if (bounded_lo && t < T(0)) t = T(0);
+    if (bounded_hi && t > T(1)) t = T(1);
+    return t;
+  }
+};
+
+template <class T, int N>
+[[nodiscard]] constexpr LinearView<T, N> view(const Line<T, N>& l) noexcept {
+  return {l.origin, l.origin, l.direction, false, false};
+}
+template <class T, int N>
+[[nodiscard]] constexpr LinearView<T, N> view(const Ray<T, N>& r) noexcept {
+  return {r.origin, r.origin, r.direction, true, false};
+}
+template <class T, int N>
+[[nodiscard]] constexpr LinearView<T, N> view(const Segment<T, N>& s) noexcept {
+  return {s.p0, s.p1, s.p1 - s.p0, true, true};
+}
+
+template <class T, int N>
+[[nodiscard]] constexpr bool finite_input(const Line<T, N>& l) noexcept {
+  return is_finite(l.origin) && is_finite(l.direction);
+}
+template <class T, int N>
+[[nodiscard]] constexpr bool finite_input(const Ray<T, N>& r) noexcept {
+  return is_finite(r.origin) && is_finite(r.direction);
+}
+template <class T, int N>
+[[nodiscard]] constexpr bool finite_input(const Segment<T, N>& s) noexcept {
+  return is_finite(s.p0) && is_finite(s.p1);
+}
+
+/// Parameter of the point of `l` closest to p (exact clamp to the domain). A zero direction
+/// (or one whose square underflows to zero after scaling) gives 0: the component acts as its
+/// origin.
+template <class T, int N>
+[[nodiscard]] inline T closest_param(const LinearView<T, N>& l, const Vec<T, N>& p) noexcept {
+  // Scale by the largest component so that |dir|^2 neither underflows nor overflows.
+  const T m = max_abs(l.dir);
+  if (!(m > T(0))) return T(0);
+  const Vec<T, N> u = l.dir / m;
+  const T t = dot(p - l.origin, u) / (sqr_length(u) * m);
+  if (!is_finite(t)) return T(0);
+  return l.clamp_param(t);
+}
+
+/// |a x b|^2 in any dimension: the sum over coordinate planes of the squared 2x2 minors.
+template <class T, int N>
+[[nodiscard]] constexpr T sqr_cross_norm(const Vec<T, N>& a, const Vec<T, N>& b) noexcept {
+  T s = T(0);
+  for (int i = 0; i < N; ++i)
+    for (int j = i + 1; j < N; ++j) s += sqr(a[i] * b[j] - a[j] * b[i]);
+  return s;
+}
+
+template <class T>
+struct LinLinParams {
+  T s;
+  T t;
+  bool unique;
+};
+
+/// Length of the intersection of [lo0, hi0] and [lo1, hi1] is positive.
+template <class T>
+[[nodiscard]] constexpr bool overlaps(T lo0, T hi0, T lo1, T hi1) noexcept {
+  const T lo = lo0 < lo1 ? lo1 : lo0;
+  const T hi = hi0 < hi1 ? hi0 : hi1;
+  return lo < hi;
+}
+
+/// Parameters (s on A, t on B) of a closest pair of two linear components; see the header.
+template <class T, int N>
+[[nodiscard]] inline LinLinParams<T> linear_linear(const LinearView<T, N>& A,
+                                                   const LinearView<T, N>& B) noexcept {
+  const T a = sqr_length(A.dir), c = sqr_length(B.dir);
+  const bool a_point = !(max_abs(A.dir) > T(0)), b_point = !(max_abs(B.dir) > T(0));
+  if (a_point && b_point) return {T(0), T(0), true};
+  if (a_point) return {T(0), closest_param(B, A.origin), true};
+  if (b_point) return {closest_param(A, B.origin), T(0), true};
+
+  const Vec<T, N> r = A.origin - B.origin;
+  const T b = dot(A.dir, B.dir), d = dot(A.dir, r), e = dot(B.dir, r);
+  const T D = sqr_cross_norm(A.dir, B.dir);  // = a c - b^2 without cancellation
+  const T ac = a * c;
+
+  bool have_interior = false;
+  T si = T(0), ti = T(0);
+  if (D > T(0)) {
+    // Cramer's rule is accurate ALONG the valley of R but not across it (s - t cancels for
+    // nearly parallel directions): re-derive t by projecting A(s) onto B, then s by projecting
+    // B(t) onto A. Each projection is an exact 1D minimiser, so the pair is the minimiser to
+    // rounding whenever s was close to it along the valley.
+    const T s0 = (b * e - c * d) / D, t0 = (a * e - b * d) / D;
+    if (is_finite(s0) && is_finite(t0)) {
+      const bool inside = A.clamp_param(s0) == s0 && B.clamp_param(t0) == t0;
+      ti = closest_param(B, A.at(A.clamp_param(s0)));
+      si = closest_param(A, B.at(ti));
+      have_interior = true;
+      if (inside && D > T(64) * eps_v<T> * ac) return {si, ti, true};
+    }
+  }
+
+  T best = std::numeric_limits<T>::infinity();
+  T bs = T(0), bt = T(0);
+  bool found = false;
+  const auto consider = [&](T s, T t) {
+    const T q = sqr_length(A.at(s) - B.at(t));
+    if (!found || q < best) {
+      best = q;
+      bs = s;
+      bt = t;
+      found = true;
+    }
+  };
+  if (have_interior) consider(si, ti);
+  if (A.bounded_lo) consider(T(0), closest_param(B, A.origin));
+  if (A.bounded_hi) consider(T(1), closest_param(B, A.end));
+  if (B.bounded_lo) consider(closest_param(A, B.origin), T(0));
+  if (B.bounded_hi) consider(closest_param(A, B.end), T(1));
+  if (!A.bounded_lo && !B.bounded_lo) consider(T(0), closest_param(B, A.origin));
+
+  bool unique = true;
+  if (D <= T(64) * sqr(eps_v<T>) * ac) {
+    // Parallel: project B's parameter range onto A's line, s(t) = (t b - d) / a, and see
+    // whether it overlaps A's range in an interval.
+    constexpr T inf = std::numeric_limits<T>::infinity();
+    const T s0 = -d / a;
+    T lo1, hi1;
+    if (B.bounded_hi) {
+      const T s1 = (b - d) / a;
+      lo1 = s0 < s1 ? s0 : s1;
+      hi1 = s0 < s1 ? s1 : s0;
+    } else if (B.bounded_lo) {
+      lo1 = b > T(0) ? s0 : -inf;
+      hi1 = b > T(0) ? inf : s0;
+    } else {
+      lo1 = -inf;
+      hi1 = inf;
+    }
+    unique = !overlaps(A.bounded_lo ? T(0) : -inf, A.bounded_hi ? T(1) : inf, lo1, hi1);
+  }
+  return {bs, bt, unique};
+}
+
+/// distance(p, l) for a point and a line, ray or segment.
+template <class T, int N, class L>
+[[nodiscard]] inline Distance<T, N, NoParam, T> point_linear(const Vec<T, N>& p,
+                                                             const L& l) noexcept {
+  if (!is_finite(p) || !finite_input(l)) return non_finite_distance<T, N, NoParam, T>();
+  const T t = closest_param(view(l), p);
+  return make_distance(p, point_at(l, t), NoParam{}, t, true);
+}
+
+/// Lexicographic order of the views' defining points (origin, then end or direction).
+template <class T, int N>
+[[nodiscard]] constexpr bool lex_less(const Vec<T, N>& a, const Vec<T, N>& b) noexcept {
+  for (int i = 0; i < N; ++i)
+    if (a[i] != b[i]) return a[i] < b[i];
+  return false;
+}
+template <class L>
+[[nodiscard]] constexpr bool lex_less(const L& a, const L& b) noexcept {
+  const auto va = view(a), vb = view(b);
+  if (!(va.origin == vb.origin)) return lex_less(va.origin, vb.origin);
+  return lex_less(va.bounded_hi ? va.end : va.dir, vb.bounded_hi ? vb.end : vb.dir);
+}
+
+/// distance(a, b) for two linear components.
+template <class T, int N, class LA, class LB>
+[[nodiscard]] inline Distance<T, N, T, T> linear_linear_distance(const LA& a,
+                                                                 const LB& b) noexcept {
+  if (!finite_input(a) || !finite_input(b)) return non_finite_distance<T, N, T, T>();
+  if constexpr (std::is_same_v<LA, LB>) {
+    // Same types: solve in a canonical order so that distance(b, a) is bit for bit the swap of
+    // distance(a, b) (the candidates' rounding would otherwise depend on the order).
+    if (lex_less(b, a)) return swapped(linear_linear_distance<T, N>(b, a));
+  }
+  const LinLinParams<T> st = linear_linear(view(a), view(b));
+  return make_distance(point_at(a, st.s), point_at(b, st.t), st.s, st.t, st.unique);
+}
+
+}  // namespace locus::detail

@@ -1,0 +1,415 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The generic distance-query harness used by every tests/distance/*_test.cpp.
+//
+// check_pairs<T, N, A, B>(gen, opt) draws opt.cases pairs (a, b) from gen(rng) and checks, for
+// r = distance(a, b):
+//   1. r.distance >= 0 and finite, r.sqr_distance == r.distance^2 up to rounding;
+//   2. both parameters lie in their domain and point_at(a, r.param_a) ~ r.closest[0] (same for b);
+//   3. |r.closest[0] - r.closest[1]| ~ r.distance;
+//   4. distance(b, a) swaps the closest points and parameters (when unique) and has the same
+//      distance;
+//   5. an INDEPENDENT oracle (best of opt.samples random parameter pairs, then a compass search in
+//      the joint parameter space, using nothing but the primitives' parametrisations): the
+//      returned squared distance is never more than the oracle's + k eps scale^2, and (when
+//      opt.check_agreement) agrees with it to opt.agree (relative to scale) unless the minimiser
+//      lies outside the oracle's window on an unbounded object;
+//   6. a random rigid motion (rotation + translation; translation only for axis-aligned boxes)
+//      applied to both objects leaves the squared distance unchanged to k eps scale^2.
+// Side<P> describes how the harness sees a primitive: its parameter map from [0, 1]^k (the
+// oracle's search space), point_at, the parameter-domain test, and the rigid motion.
+
+#include <locus/core/mat.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/distance/result.hpp>
+#include <locus/primitives/aligned_box.hpp>
+#include <locus/primitives/line.hpp>
+#include <locus/primitives/oriented_box.hpp>
+#include <locus/primitives/polyline.hpp>
+#include <locus/primitives/ray.hpp>
+#include <locus/primitives/rectangle.hpp>
+#include <locus/primitives/segment.hpp>
+#include <locus/primitives/triangle.hpp>
+
+#include "support/typed.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace locus_test::dist {
+
+using locus::Vec;
+
+template <class P>
+struct Side;
+
+// ---- points --------------------------------------------------------------------------------
+template <class T, int N>
+struct Side<Vec<T, N>> {
+  using Param = locus::NoParam;
+  static constexpr int k = 0;
+  static constexpr bool rotatable = true;
+  static Vec<T, N> map(const Vec<T, N>& p, const T*, T) { return p; }
+  static Vec<T, N> at(const Vec<T, N>& p, Param) { return p; }
+  static bool param_ok(const Vec<T, N>&, Param, T) { return true; }
+  static bool in_window(const Vec<T, N>&, Param, T) { return true; }
+  static Vec<T, N> moved(const Vec<T, N>& p, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    return r * p + t;
+  }
+};
+
+// ---- linear components --------------------------------------------------------------------
+template <class T, int N>
+struct Side<locus::Line<T, N>> {
+  using P = locus::Line<T, N>;
+  using Param = T;
+  static constexpr int k = 1;
+  static constexpr bool rotatable = true;
+  static Vec<T, N> map(const P& l, const T* u, T w) { return point_at(l, -w + T(2) * w * u[0]); }
+  static Vec<T, N> at(const P& l, T t) { return point_at(l, t); }
+  static bool param_ok(const P&, T t, T) { return locus::is_finite(t); }
+  static bool in_window(const P&, T t, T w) { return std::abs(t) <= T(0.9) * w; }
+  static P moved(const P& l, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    return {r * l.origin + t, r * l.direction};
+  }
+};
+
+template <class T, int N>
+struct Side<locus::Ray<T, N>> {
+  using P = locus::Ray<T, N>;
+  using Param = T;
+  static constexpr int k = 1;
+  static constexpr bool rotatable = true;
+  static Vec<T, N> map(const P& l, const T* u, T w) { return point_at(l, w * u[0]); }
+  static Vec<T, N> at(const P& l, T t) { return point_at(l, t); }
+  static bool param_ok(const P&, T t, T) { return t >= T(0) && locus::is_finite(t); }
+  static bool in_window(const P&, T t, T w) { return t <= T(0.9) * w; }
+  static P moved(const P& l, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    return {r * l.origin + t, r * l.direction};
+  }
+};
+
+template <class T, int N>
+struct Side<locus::Segment<T, N>> {
+  using P = locus::Segment<T, N>;
+  using Param = T;
+  static constexpr int k = 1;
+  static constexpr bool rotatable = true;
+  static Vec<T, N> map(const P& s, const T* u, T) { return point_at(s, u[0]); }
+  static Vec<T, N> at(const P& s, T t) { return point_at(s, t); }
+  static bool param_ok(const P&, T t, T) { return t >= T(0) && t <= T(1); }
+  static bool in_window(const P&, T, T) { return true; }
+  static P moved(const P& s, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    return {r * s.p0 + t, r * s.p1 + t};
+  }
+};
+
+template <class T, int N>
+struct Side<locus::Polyline<T, N>> {
+  using P = locus::Polyline<T, N>;
+  using Param = T;
+  static constexpr int k = 1;
+  static constexpr bool rotatable = true;
+  static Vec<T, N> map(const P& p, const T* u, T) {
+    return point_at(p, u[0] * static_cast<T>(segment_count(p)));
+  }
+  static Vec<T, N> at(const P& p, T t) { return point_at(p, t); }
+  static bool param_ok(const P& p, T t, T) {
+    return t >= T(0) && t <= static_cast<T>(segment_count(p));
+  }
+  static bool in_window(const P&, T, T) { return true; }
+  static P moved(const P& p, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    P q = p;
+    for (auto& v : q.vertices) v = r * v + t;
+    return q;
+  }
+};
+
+// ---- areas and solids ---------------------------------------------------------------------
+template <class T, int N>
+struct Side<locus::Triangle<T, N>> {
+  using P = locus::Triangle<T, N>;
+  using Param = locus::Vec3<T>;  // barycentric (u, v, w)
+  static constexpr int k = 2;
+  static constexpr bool rotatable = true;
+  static Vec<T, N> map(const P& tri, const T* u, T) {
+    T s = u[0], t = u[1];
+    if (s + t > T(1)) s = T(1) - s, t = T(1) - t;  // fold the unit square onto the triangle
+    return point_at(tri, locus::Vec2<T>{s, t});
+  }
+  static Vec<T, N> at(const P& tri, const Param& b) { return point_at_barycentric(tri, b); }
+  static bool param_ok(const P&, const Param& b, T tol) {
+    return b.x >= -tol && b.y >= -tol && b.z >= -tol && std::abs(b.x + b.y + b.z - T(1)) <= tol;
+  }
+  static bool in_window(const P&, const Param&, T) { return true; }
+  static P moved(const P& tri, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    return {r * tri.v0 + t, r * tri.v1 + t, r * tri.v2 + t};
+  }
+};
+
+template <class T, int N>
+struct Side<locus::Rectangle<T, N>> {
+  using P = locus::Rectangle<T, N>;
+  using Param = locus::Vec2<T>;
+  static constexpr int k = 2;
+  static constexpr bool rotatable = true;
+  static Vec<T, N> map(const P& r, const T* u, T) {
+    return point_at(
+        r, locus::Vec2<T>{(T(2) * u[0] - T(1)) * r.extent[0], (T(2) * u[1] - T(1)) * r.extent[1]});
+  }
+  static Vec<T, N> at(const P& r, const Param& st) { return point_at(r, st); }
+  static bool param_ok(const P& r, const Param& st, T tol) {
+    return std::abs(st.x) <= r.extent[0] + tol && std::abs(st.y) <= r.extent[1] + tol;
+  }
+  static bool in_window(const P&, const Param&, T) { return true; }
+  static P moved(const P& x, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    return {r * x.center + t, {r * x.axis[0], r * x.axis[1]}, {x.extent[0], x.extent[1]}};
+  }
+};
+
+template <class T, int N>
+struct Side<locus::AlignedBox<T, N>> {
+  using P = locus::AlignedBox<T, N>;
+  using Param = Vec<T, N>;  // in [0, 1]^N
+  static constexpr int k = N;
+  static constexpr bool rotatable = false;
+  static Vec<T, N> map(const P& b, const T* u, T) {
+    Vec<T, N> p{};
+    for (int i = 0; i < N; ++i) p[i] = u[i];
+    return point_at(b, p);
+  }
+  static Vec<T, N> at(const P& b, const Param& p) { return point_at(b, p); }
+  static bool param_ok(const P&, const Param& p, T) {
+    for (int i = 0; i < N; ++i)
+      if (!(p[i] >= T(0) && p[i] <= T(1))) return false;
+    return true;
+  }
+  static bool in_window(const P&, const Param&, T) { return true; }
+  static P moved(const P& b, const locus::Mat<T, N, N>&, const Vec<T, N>& t) {
+    return {b.min + t, b.max + t};
+  }
+};
+
+template <class T, int N>
+struct Side<locus::OrientedBox<T, N>> {
+  using P = locus::OrientedBox<T, N>;
+  using Param = Vec<T, N>;  // in [-1, 1]^N
+  static constexpr int k = N;
+  static constexpr bool rotatable = true;
+  static Vec<T, N> map(const P& b, const T* u, T) {
+    Vec<T, N> s{};
+    for (int i = 0; i < N; ++i) s[i] = T(2) * u[i] - T(1);
+    return point_at(b, s);
+  }
+  static Vec<T, N> at(const P& b, const Param& s) { return point_at(b, s); }
+  static bool param_ok(const P&, const Param& s, T) {
+    for (int i = 0; i < N; ++i)
+      if (!(s[i] >= T(-1) && s[i] <= T(1))) return false;
+    return true;
+  }
+  static bool in_window(const P&, const Param&, T) { return true; }
+  static P moved(const P& b, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    P o = b;
+    o.center = r * b.center + t;
+    for (int i = 0; i < N; ++i) o.axis[i] = r * b.axis[i];
+    return o;
+  }
+};
+
+// ---- helpers ------------------------------------------------------------------------------
+
+/// A random rotation: Gram-Schmidt on random vectors (det +1).
+template <class T, int N>
+locus::Mat<T, N, N> random_rotation(Rng& rng) {
+  locus::Mat<T, N, N> m{};
+  if constexpr (N == 2) {
+    const T a = rng.uniform<T>(T(0), T(6.283185307179586));
+    m = locus::Mat<T, 2, 2>::from_cols(Vec<T, 2>{std::cos(a), std::sin(a)},
+                                       Vec<T, 2>{-std::sin(a), std::cos(a)});
+  } else {
+    static_assert(N == 3, "random_rotation: 2D or 3D");
+    const auto x = rng.unit<T, 3>();
+    auto y = rng.unit<T, 3>();
+    y = locus::normalize(y - locus::dot(x, y) * x);
+    if (y == Vec<T, 3>{}) y = locus::normalize(locus::cross(x, Vec<T, 3>{T(0), T(0), T(1)}));
+    const auto z = locus::cross(x, y);
+    m = locus::Mat<T, 3, 3>::from_cols(x, y, z);
+  }
+  return m;
+}
+
+template <class T>
+struct Options {
+  int cases = 200;    ///< random pairs per call
+  int samples = 256;  ///< oracle: random starting samples
+  T scale = T(10);    ///< coordinate scale of the generated input (tolerances scale with it)
+  T window = T(200);  ///< oracle: parameter window on unbounded objects
+  T k_eps = T(64);    ///< tolerance k * eps * scale^2 on squared distances
+  T agree = T(-1);    ///< oracle agreement on distances, relative to scale (<0: default)
+  /// false: skip the oracle-agreement check: for non-convex objects, and where a tighter exact
+  /// oracle replaces it (the linear pairs, whose narrow valleys defeat the compass search).
+  bool check_agreement = true;
+  bool check_swap = true;  ///< distance(b, a) exists and is checked
+};
+
+namespace detail {
+
+/// The scalars of a trivially copyable primitive, for failure messages.
+template <class T, class P>
+std::string dump(const P& p) {
+  std::string out;
+  if constexpr (std::is_trivially_copyable_v<P> && sizeof(P) % sizeof(T) == 0) {
+    T v[sizeof(P) / sizeof(T)];
+    std::memcpy(v, &p, sizeof(P));
+    char buf[40];
+    for (const T x : v) {
+      std::snprintf(buf, sizeof buf, "%.17g ", static_cast<double>(x));
+      out += buf;
+    }
+  }
+  return out;
+}
+
+template <class A, class B, class T, int N>
+T joint_sqr(const A& a, const B& b, const T* u, T w) {
+  return locus::sqr_length(Side<A>::map(a, u, w) - Side<B>::map(b, u + Side<A>::k, w));
+}
+
+/// The oracle: best of `samples` random joint parameters, then a compass search along the
+/// coordinate axes and all pairwise diagonals with halving steps.
+template <class A, class B, class T, int N>
+T oracle_sqr(const A& a, const B& b, Rng& rng, int samples, T w) {
+  constexpr int K = Side<A>::k + Side<B>::k;
+  if constexpr (K == 0) {
+    return joint_sqr<A, B, T, N>(a, b, nullptr, w);
+  } else {
+    std::array<T, K> best{}, cur{};
+    T fbest = std::numeric_limits<T>::infinity();
+    for (int i = 0; i < samples; ++i) {
+      for (auto& x : cur) x = rng.uniform<T>(T(0), T(1));
+      const T f = joint_sqr<A, B, T, N>(a, b, cur.data(), w);
+      if (f < fbest) fbest = f, best = cur;
+    }
+    // Directions: +-e_i and +-e_i +- e_j.
+    std::vector<std::array<T, K>> dirs;
+    for (int i = 0; i < K; ++i) {
+      std::array<T, K> d{};
+      d[static_cast<std::size_t>(i)] = T(1);
+      dirs.push_back(d);
+      for (int j = i + 1; j < K; ++j) {
+        for (T sj : {T(1), T(-1)}) {
+          std::array<T, K> e{};
+          e[static_cast<std::size_t>(i)] = T(1);
+          e[static_cast<std::size_t>(j)] = sj;
+          dirs.push_back(e);
+        }
+      }
+    }
+    const T hmin = std::is_same_v<T, float> ? T(1e-7) : T(1e-13);
+    int moves_at_h = 0, budget = 3000;
+    for (T h = T(0.25); h > hmin && budget > 0; --budget) {
+      bool moved = false;
+      for (const auto& d : dirs) {
+        for (T sg : {T(1), T(-1)}) {
+          std::array<T, K> c = best;
+          for (int i = 0; i < K; ++i) {
+            const auto ii = static_cast<std::size_t>(i);
+            c[ii] = std::clamp(c[ii] + sg * h * d[ii], T(0), T(1));
+          }
+          const T f = joint_sqr<A, B, T, N>(a, b, c.data(), w);
+          if (f < fbest) fbest = f, best = c, moved = true;
+        }
+      }
+      // Long flat valleys (nearly parallel lines) would take ~1/h moves: expand the step while
+      // it keeps improving, halve it otherwise.
+      if (!moved) {
+        h *= T(0.5);
+        moves_at_h = 0;
+      } else if (++moves_at_h >= 4 && h < T(0.25)) {
+        h *= T(2);
+        moves_at_h = 0;
+      }
+    }
+    return fbest;
+  }
+}
+
+}  // namespace detail
+
+/// The generic checks 1-6 of the header comment on opt.cases pairs from gen(rng).
+template <class T, int N, class A, class B, class Gen>
+void check_pairs(Gen&& gen, const Options<T>& opt = {}) {
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  SCOPED_TRACE(__PRETTY_FUNCTION__);
+  using SA = Side<A>;
+  using SB = Side<B>;
+  const T eps = locus::eps_v<T>;
+  for (int n = 0; n < opt.cases; ++n) {
+    SCOPED_TRACE("case " + std::to_string(n));
+    const std::pair<A, B> ab = gen(rng);
+    const A& a = ab.first;
+    const B& b = ab.second;
+    SCOPED_TRACE("a = " + detail::dump<T>(a) + "\nb = " + detail::dump<T>(b));
+    const auto r = distance(a, b);
+    // The scale of the coordinates involved (tolerances are relative to it).
+    const T s = std::max({opt.scale, locus::max_abs(r.closest[0]), locus::max_abs(r.closest[1])});
+    const T sq_tol = opt.k_eps * eps * s * s;
+    const T lin_tol = opt.k_eps * eps * s;
+
+    // 1. sane distance
+    ASSERT_TRUE(locus::is_finite(r.distance) && r.distance >= T(0)) << r.distance;
+    EXPECT_NEAR(r.sqr_distance, r.distance * r.distance, T(8) * eps * r.sqr_distance);
+    // 2. closest points lie on their objects
+    EXPECT_TRUE(SA::param_ok(a, r.param_a, T(16) * eps * s));
+    EXPECT_TRUE(SB::param_ok(b, r.param_b, T(16) * eps * s));
+    EXPECT_TRUE(vec_near(SA::at(a, r.param_a), r.closest[0], lin_tol));
+    EXPECT_TRUE(vec_near(SB::at(b, r.param_b), r.closest[1], lin_tol));
+    // 3. the distance is the distance between the closest points
+    EXPECT_NEAR(locus::length(r.closest[0] - r.closest[1]), r.distance, T(4) * eps * s);
+    // 4. swapping the arguments swaps the results
+    if (opt.check_swap) {
+      const auto q = distance(b, a);
+      EXPECT_NEAR(q.sqr_distance, r.sqr_distance, sq_tol);
+      EXPECT_EQ(q.unique, r.unique);
+      if (r.unique) {
+        EXPECT_TRUE(vec_near(q.closest[0], r.closest[1], std::sqrt(sq_tol)));
+        EXPECT_TRUE(vec_near(q.closest[1], r.closest[0], std::sqrt(sq_tol)));
+      }
+    }
+    // 5. the oracle
+    const T o = detail::oracle_sqr<A, B, T, N>(a, b, rng, opt.samples, opt.window);
+    EXPECT_LE(r.sqr_distance, o + sq_tol) << "oracle found a closer pair";
+    if (opt.check_agreement && SA::in_window(a, r.param_a, opt.window) &&
+        SB::in_window(b, r.param_b, opt.window)) {
+      const T agree = opt.agree > T(0) ? opt.agree : (std::is_same_v<T, float> ? T(2e-3) : T(1e-5));
+      EXPECT_NEAR(std::sqrt(o), r.distance, agree * s) << "oracle did not converge to the answer";
+    }
+    // 6. rigid motions leave the distance unchanged
+    {
+      const auto rot = (SA::rotatable && SB::rotatable) ? random_rotation<T, N>(rng)
+                                                        : locus::Mat<T, N, N>::identity();
+      const auto t = rng.vec<T, N>(-opt.scale, opt.scale);
+      const auto m = distance(SA::moved(a, rot, t), SB::moved(b, rot, t));
+      EXPECT_NEAR(m.sqr_distance, r.sqr_distance, T(4) * sq_tol);
+    }
+  }
+}
+
+/// Non-finite input: every pair gives the documented NaN result (distance NaN, unique false).
+template <class R>
+::testing::AssertionResult is_nan_result(const R& r) {
+  if (!std::isnan(r.distance) || !std::isnan(r.sqr_distance) || r.unique)
+    return ::testing::AssertionFailure() << "expected the non-finite result, got distance "
+                                         << r.distance << " unique " << r.unique;
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace locus_test::dist
