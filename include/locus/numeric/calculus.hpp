@@ -1,0 +1,790 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Level sets and critical points (row num.calculus; book appendix A.7-A.8, figures A.2-A.17).
+//
+// Sampled functions: ScalarGrid<T> holds f on a regular grid, values[j * nx + i] = f at
+// origin + (i * spacing.x, j * spacing.y); sample_grid(f, lo, hi, nx, ny) builds one from a
+// callable T f(Vec2<T>).
+//
+// level_set(grid, level)  marching squares. A sample is ABOVE when f >= level, below when
+//   f < level (the level is perturbed symbolically to level - 0: a sample exactly at the level
+//   counts as above, so a contour through a grid vertex passes exactly through it and the
+//   output stays a set of simple polylines). Each grid edge whose ends differ holds one contour
+//   vertex, at the zero of the linear interpolant along the edge, computed once per edge so
+//   neighbouring cells agree. Ambiguous (saddle) cells, whose diagonal corners agree, are
+//   resolved by the asymptotic decider (Nielson-Hamann): the bilinear interpolant's saddle
+//   value (g00 g11 - g10 g01) / (g00 + g11 - g10 - g01), g = f - level, decides whether the
+//   centre is above (>= 0: the above corners are joined) -- this is the topology of the
+//   bilinear interpolant; SaddleRule::center_average uses the mean of the four corners instead.
+//   Output: polylines. Orientation: the above region (f >= level) is on the LEFT of the
+//   direction of travel, so with x right and y up a loop around a maximum is counter-clockwise
+//   and one around a minimum clockwise. A closed loop does not repeat its first point; an open
+//   polyline starts and ends on the grid boundary (or at a skipped cell, see below). Repeated
+//   consecutive points (two crossings on the same grid vertex, when samples equal the level)
+//   are removed; a loop that shrinks to one point (an extremum exactly at the level on a grid
+//   vertex, the limit of a tiny loop) is kept as a closed contour of one point.
+//   Accuracy: each vertex is the root of the linear interpolant along its edge; for f with
+//   |d^2 f / ds^2| <= M along edges of length h, |f(vertex) - level| <= M h^2 / 8.
+//
+// Critical points (grad f = 0), classified by the Hessian's eigenvalues (eigen_symmetric,
+// numeric/eigen_sym.hpp): both > tau: minimum; both < -tau: maximum; opposite signs beyond tau:
+// saddle; otherwise degenerate (the second-derivative test is inconclusive). tau =
+// degenerate_tolerance * (a Hessian scale: the largest |entry| over the seeds or the grid).
+//   critical_points_2d(f, grad, hess, lo, hi)   Newton's method on grad f = 0 from a seeds_x x
+//       seeds_y grid of seeds over the box [lo, hi] (cell centres). The step solves H d = -g
+//       through the eigendecomposition (eigenvalues below 1e-12 max|lambda| are dropped: a
+//       pseudo-inverse step), is capped at the box diagonal, and is halved (at most 30 times)
+//       while it increases |g| far from convergence. A seed converges when the step no longer
+//       changes the point in T or is below 4 eps_T (|x| + |box|); it is accepted when its last
+//       step was below sqrt(eps_T) |box| and the point lies in the box. Points closer than
+//       merge_tolerance * |box| are merged (the one with smaller |g| kept), so each critical
+//       point is listed once; they are sorted by x then y.
+//   critical_points_2d(grid)   sampled f: at each interior vertex the quadratic model from
+//       central differences (exact for cubic f) is solved for its stationary point; it is
+//       reported when it lies in the vertex's own cell (half a spacing around it, half-open),
+//       so an isolated critical point is found once, to O(h^2).
+//   critical_points(Polynomial p, a, b)   1D: the roots of p' in [a, b] (real_roots of
+//       numeric/roots.hpp, with multiplicities); a root of odd multiplicity m is a minimum or a
+//       maximum by the sign of p^(m+1) there, of even multiplicity a (stationary) inflection.
+//   critical_points_1d(f, df, a, b)   1D smooth f: f' sampled at `samples` + 1 points; every
+//       sign change is refined by bisection-safeguarded regula falsi (Illinois) and classified
+//       by the direction of the change (so cusps where f' changes sign through infinity, as in
+//       figure A.12, are found too: an infinite f' has a sign, and the safeguard bisects); a
+//       sample where f' is exactly 0 without a sign change is an inflection. Zeros of f' without
+//       a sign change between samples are not seen. A NaN f' met while refining is reported
+//       as the critical point with status non_finite_input.
+//   The 1D results also give the absolute extrema on [a, b] (book figure A.8): the least and
+//   greatest of f over the endpoints and the critical points.
+//
+// Bad input (documented results, every loop budgeted):
+//  * level_set: nx < 2 or ny < 2: empty_input; values.size() != nx ny or spacing <= 0:
+//    invalid_input; non-finite level, origin or spacing: non_finite_input, no contours. NaN or
+//    infinite samples: the cells touching them are skipped (holes: contours end at their
+//    edges) and the status is non_finite_input with the contours of the finite part.
+//  * critical_points_2d: a non-finite or empty box, seeds < 1: non_finite_input /
+//    invalid_input. Seeds whose evaluations become non-finite are abandoned; if no evaluation
+//    was finite the status is non_finite_input. More than max_points distinct points (e.g. a
+//    curve of degenerate critical points): limit_exceeded with the first max_points.
+//    Grid version: nx or ny < 3: empty_input; vertices whose 3x3 neighbourhood has a
+//    non-finite sample are skipped, status non_finite_input.
+//  * 1D: a > b: invalid_input; non-finite a, b or coefficients: non_finite_input; a constant
+//    polynomial (p' = 0 everywhere): degenerate_input with only the endpoints' extrema;
+//    non-finite f' samples: those intervals skipped, status non_finite_input.
+//
+// Precision: interpolation, deciders and Newton iterations run in compute_t<T> (double for
+// float input); callables are evaluated at points of type T.
+// Cost: level_set O(nx ny) time and memory; critical_points_2d O(seeds * max_iterations)
+// evaluations plus O(k^2) merging of k points; grid version O(nx ny).
+
+#include <locus/core/mat.hpp>
+#include <locus/core/scalar.hpp>
+#include <locus/core/status.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/numeric/eigen_sym.hpp>
+#include <locus/numeric/polynomial.hpp>
+#include <locus/numeric/roots.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace locus {
+
+// ---------------------------------------------------------------------------------------------
+// Sampled functions and level sets
+// ---------------------------------------------------------------------------------------------
+
+/// f sampled on a regular grid: values[j * nx + i] = f(origin + (i spacing.x, j spacing.y)).
+template <class T>
+struct ScalarGrid {
+  std::vector<T> values;
+  int nx = 0;  ///< samples along x
+  int ny = 0;  ///< samples along y
+  Vec2<T> origin{};
+  Vec2<T> spacing{T(1), T(1)};
+
+  [[nodiscard]] T at(int i, int j) const {
+    LOCUS_ASSERT(i >= 0 && i < nx && j >= 0 && j < ny, "ScalarGrid index out of range");
+    return values[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) +
+                  static_cast<std::size_t>(i)];
+  }
+  [[nodiscard]] Vec2<T> position(int i, int j) const noexcept {
+    return {origin.x + static_cast<T>(i) * spacing.x, origin.y + static_cast<T>(j) * spacing.y};
+  }
+};
+
+/// Samples f at nx x ny points spanning [lo, hi] (spacing (hi - lo) / (n - 1)). nx or ny < 2,
+/// or a box that is not finite with lo < hi, gives an empty grid (nx = ny = 0).
+template <Real T, class F>
+requires std::is_invocable_r_v<T, F&, Vec2<T>>
+[[nodiscard]] ScalarGrid<T> sample_grid(F&& f, const Vec2<T>& lo, const Vec2<T>& hi, int nx,
+                                        int ny) {
+  ScalarGrid<T> g;
+  if (nx < 2 || ny < 2 || !is_finite(lo) || !is_finite(hi) || !(lo.x < hi.x) || !(lo.y < hi.y))
+    return g;
+  g.nx = nx;
+  g.ny = ny;
+  g.origin = lo;
+  g.spacing = {(hi.x - lo.x) / static_cast<T>(nx - 1), (hi.y - lo.y) / static_cast<T>(ny - 1)};
+  g.values.resize(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      g.values[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) +
+               static_cast<std::size_t>(i)] = f(g.position(i, j));
+  return g;
+}
+
+/// How marching squares resolves a cell whose diagonal corners agree.
+enum class SaddleRule : std::uint8_t {
+  asymptotic_decider,  ///< the bilinear interpolant's saddle value (topologically faithful)
+  center_average,      ///< the mean of the four corner samples
+};
+
+struct LevelSetOptions {
+  SaddleRule saddle = SaddleRule::asymptotic_decider;
+};
+
+/// One connected piece of a level set.
+template <class T>
+struct Contour {
+  std::vector<Vec2<T>> points;  ///< f >= level on the left; a loop does not repeat points[0]
+  bool closed = false;
+};
+
+template <class T>
+struct LevelSet {
+  Status status = Status::ok;
+  std::vector<Contour<T>> contours;
+
+  [[nodiscard]] int closed_count() const noexcept {
+    int n = 0;
+    for (const auto& c : contours) n += c.closed ? 1 : 0;
+    return n;
+  }
+};
+
+namespace detail::calculus {
+
+template <class T>
+struct GridIndex {
+  int nx, ny;
+  std::size_t horizontal_count() const noexcept {
+    return static_cast<std::size_t>(nx - 1) * static_cast<std::size_t>(ny);
+  }
+  // Edge (i, j)-(i+1, j).
+  std::size_t h(int i, int j) const noexcept {
+    return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx - 1) +
+           static_cast<std::size_t>(i);
+  }
+  // Edge (i, j)-(i, j+1).
+  std::size_t v(int i, int j) const noexcept {
+    return horizontal_count() + static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) +
+           static_cast<std::size_t>(i);
+  }
+  std::size_t edge_count() const noexcept {
+    return horizontal_count() + static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny - 1);
+  }
+};
+
+}  // namespace detail::calculus
+
+/// The level set f = level of a sampled function by marching squares (see the header comment).
+template <Real T>
+[[nodiscard]] LevelSet<T> level_set(const ScalarGrid<T>& grid, std::type_identity_t<T> level,
+                                    const LevelSetOptions& opt = {}) {
+  using C = compute_t<T>;
+  LevelSet<T> out;
+  const int nx = grid.nx, ny = grid.ny;
+  if (nx < 2 || ny < 2) {
+    out.status = Status::empty_input;
+    return out;
+  }
+  if (grid.values.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny)) {
+    out.status = Status::invalid_input;
+    return out;
+  }
+  if (!locus::is_finite(level) || !is_finite(grid.origin) || !is_finite(grid.spacing)) {
+    out.status = Status::non_finite_input;
+    return out;
+  }
+  if (!(grid.spacing.x > T(0)) || !(grid.spacing.y > T(0))) {
+    out.status = Status::invalid_input;
+    return out;
+  }
+  const detail::calculus::GridIndex<T> idx{nx, ny};
+  const std::size_t edges = idx.edge_count();
+  std::vector<std::int64_t> next(edges, -1);
+  std::vector<unsigned char> has_in(edges, 0);
+  bool any_nonfinite = false;
+  for (const T& v : grid.values) any_nonfinite = any_nonfinite || !locus::is_finite(v);
+  const auto above = [&](T f) { return f >= level; };
+  // Halves keep differences of huge samples finite; halving is exact above the subnormals.
+  const C half_level = C(level) / C(2);
+
+  for (int j = 0; j + 1 < ny; ++j) {
+    for (int i = 0; i + 1 < nx; ++i) {
+      const T f[4] = {grid.at(i, j), grid.at(i + 1, j), grid.at(i + 1, j + 1), grid.at(i, j + 1)};
+      if (!locus::is_finite(f[0]) || !locus::is_finite(f[1]) || !locus::is_finite(f[2]) ||
+          !locus::is_finite(f[3]))
+        continue;  // a hole: no segments
+      const bool b[4] = {above(f[0]), above(f[1]), above(f[2]), above(f[3])};
+      const std::size_t e[4] = {idx.h(i, j), idx.v(i + 1, j), idx.h(i, j + 1), idx.v(i, j)};
+      // Edge k runs from corner k to corner k+1 (counter-clockwise around the cell). A "down"
+      // edge goes from above to below, an "up" edge from below to above; with the above
+      // region on the left, every segment runs from a down edge to an up edge.
+      int down[2], nd = 0;
+      for (int k = 0; k < 4; ++k)
+        if (b[k] && !b[(k + 1) & 3]) down[nd++] = k;
+      const auto link = [&](int from, int to) {
+        next[e[from]] = static_cast<std::int64_t>(e[to]);
+        has_in[e[to]] = 1;
+      };
+      if (nd == 1) {
+        for (int k = 0; k < 4; ++k)
+          if (!b[k] && b[(k + 1) & 3]) link(down[0], k);
+      } else if (nd == 2) {
+        C g[4];
+        C m = C(0);
+        for (int k = 0; k < 4; ++k) {
+          g[k] = C(f[k]) / C(2) - half_level;
+          m = std::max(m, std::abs(g[k]));
+        }
+        bool centre_above;
+        if (opt.saddle == SaddleRule::center_average) {
+          centre_above = (g[0] + g[1] + g[2] + g[3]) >= C(0);
+        } else {
+          for (C& x : g) x /= m;  // m > 0: the corners differ in class
+          // The saddle value's denominator g0 + g2 - g1 - g3 has the sign of "corner 0 above".
+          const C num = g[0] * g[2] - g[1] * g[3];
+          centre_above = (b[0] ? num : -num) >= C(0);
+        }
+        for (int q = 0; q < 2; ++q)
+          link(down[q], centre_above ? (down[q] + 1) & 3 : (down[q] + 3) & 3);
+      }
+    }
+  }
+
+  // The contour vertex on edge id (one computation per edge, from its lower-index end).
+  const auto vertex = [&](std::size_t id) -> Vec2<T> {
+    int i0, j0, i1, j1;
+    if (id < idx.horizontal_count()) {
+      j0 = j1 = static_cast<int>(id / static_cast<std::size_t>(nx - 1));
+      i0 = static_cast<int>(id % static_cast<std::size_t>(nx - 1));
+      i1 = i0 + 1;
+    } else {
+      const std::size_t r = id - idx.horizontal_count();
+      j0 = static_cast<int>(r / static_cast<std::size_t>(nx));
+      i0 = i1 = static_cast<int>(r % static_cast<std::size_t>(nx));
+      j1 = j0 + 1;
+    }
+    const C fa = C(grid.at(i0, j0)) / C(2), fb = C(grid.at(i1, j1)) / C(2);
+    C t = (half_level - fa) / (fb - fa);
+    if (!(t >= C(0))) t = C(0);
+    if (t > C(1)) t = C(1);
+    const Vec2<T> pa = grid.position(i0, j0), pb = grid.position(i1, j1);
+    if (t == C(0)) return pa;
+    if (t == C(1)) return pb;
+    return {static_cast<T>(C(pa.x) + t * (C(pb.x) - C(pa.x))),
+            static_cast<T>(C(pa.y) + t * (C(pb.y) - C(pa.y)))};
+  };
+  std::vector<unsigned char> used(edges, 0);
+  const auto push = [](std::vector<Vec2<T>>& pts, const Vec2<T>& p) {
+    if (pts.empty() || !(pts.back() == p)) pts.push_back(p);
+  };
+  // Open polylines first (they start at an edge with no incoming segment), then loops. Each
+  // edge is visited once, so the walks together take at most `edges` steps.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t s = 0; s < edges; ++s) {
+      if (used[s] || next[s] < 0 || (pass == 0 && has_in[s])) continue;
+      Contour<T> c;
+      c.closed = pass == 1;
+      std::int64_t cur = static_cast<std::int64_t>(s);
+      while (cur >= 0 && !used[static_cast<std::size_t>(cur)]) {
+        used[static_cast<std::size_t>(cur)] = 1;
+        push(c.points, vertex(static_cast<std::size_t>(cur)));
+        cur = next[static_cast<std::size_t>(cur)];
+      }
+      if (c.closed)
+        while (c.points.size() > 1 && c.points.back() == c.points.front()) c.points.pop_back();
+      out.contours.push_back(std::move(c));
+    }
+  }
+  if (any_nonfinite) out.status = Status::non_finite_input;
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Critical points
+// ---------------------------------------------------------------------------------------------
+
+enum class CriticalKind : std::uint8_t {
+  minimum,     ///< relative minimum
+  maximum,     ///< relative maximum
+  saddle,      ///< 2D: Hessian eigenvalues of opposite signs
+  inflection,  ///< 1D: f' = 0 without a sign change (stationary inflection point)
+  degenerate,  ///< 2D: a Hessian eigenvalue within the tolerance of zero (test inconclusive)
+};
+
+/// Classification of a critical point by its Hessian: the eigenvalues (ascending) and the kind,
+/// degenerate when an eigenvalue has magnitude <= tau (and when the matrix is not finite).
+template <class T>
+struct HessianClass {
+  CriticalKind kind = CriticalKind::degenerate;
+  Vec2<T> eigenvalues{};
+};
+
+template <Real T>
+[[nodiscard]] HessianClass<T> classify_critical_point(const Mat2<T>& hessian,
+                                                      std::type_identity_t<T> tau) noexcept {
+  HessianClass<T> r;
+  // Symmetrise first: a user Hessian with rounded, slightly different mixed partials is fine.
+  const T off = (hessian(0, 1) + hessian(1, 0)) / T(2);
+  const Mat2<T> h = Mat2<T>::from_rows(Vec2<T>{hessian(0, 0), off}, Vec2<T>{off, hessian(1, 1)});
+  const auto eig = eigen_symmetric(h);
+  r.eigenvalues = eig.values;
+  if (eig.status == Status::non_finite_input) return r;
+  const T l0 = eig.values[0], l1 = eig.values[1];
+  if (std::abs(l0) <= tau || std::abs(l1) <= tau)
+    r.kind = CriticalKind::degenerate;
+  else if (l0 > T(0))
+    r.kind = CriticalKind::minimum;
+  else if (l1 < T(0))
+    r.kind = CriticalKind::maximum;
+  else
+    r.kind = CriticalKind::saddle;
+  return r;
+}
+
+template <class T>
+struct CriticalPoint2 {
+  Vec2<T> point{};
+  T value = T(0);  ///< f at the point
+  CriticalKind kind = CriticalKind::degenerate;
+  Vec2<T> eigenvalues{};  ///< of the Hessian, ascending
+};
+
+template <class T>
+struct CriticalPoints2 {
+  Status status = Status::ok;
+  std::vector<CriticalPoint2<T>> points;  ///< sorted by x, then y
+};
+
+template <class T>
+struct CriticalPointOptions {
+  int seeds_x = 12;  ///< Newton seeds along x (cell centres of a seeds_x x seeds_y grid)
+  int seeds_y = 12;
+  int max_iterations = 60;  ///< Newton steps per seed
+  /// Eigenvalues with magnitude <= this times the Hessian scale make a point degenerate.
+  T degenerate_tolerance = std::sqrt(eps_v<T>);
+  /// Points closer than this times the box diagonal are one critical point.
+  T merge_tolerance = std::sqrt(eps_v<T>);
+  int max_points = 1024;
+};
+
+/// Critical points of a smooth f in the box [lo, hi] by Newton's method on grad f = 0 from a
+/// grid of seeds; grad(p) returns Vec2<T>, hess(p) a symmetric Mat2<T>.
+template <Real T, class F, class G, class H>
+requires std::is_invocable_r_v<T, F&, Vec2<T>> && std::is_invocable_r_v<Vec2<T>, G&, Vec2<T>>&&
+    std::is_invocable_r_v<Mat2<T>, H&, Vec2<T>> [[nodiscard]] CriticalPoints2<T>
+    critical_points_2d(F&& f, G&& grad, H&& hess, const Vec2<T>& lo, const Vec2<T>& hi,
+                       const CriticalPointOptions<T>& opt = {}) {
+  using C = compute_t<T>;
+  CriticalPoints2<T> out;
+  if (!is_finite(lo) || !is_finite(hi)) {
+    out.status = Status::non_finite_input;
+    return out;
+  }
+  if (!(lo.x < hi.x) || !(lo.y < hi.y) || opt.seeds_x < 1 || opt.seeds_y < 1 ||
+      opt.max_iterations < 1 || opt.max_points < 1) {
+    out.status = Status::invalid_input;
+    return out;
+  }
+  const C dx = C(hi.x) - C(lo.x), dy = C(hi.y) - C(lo.y);
+  const C diag = std::sqrt(dx * dx + dy * dy);
+  const C accept_step = std::sqrt(C(eps_v<T>)) * diag;
+  const C merge = C(opt.merge_tolerance) * diag;
+  struct Found {
+    Vec2<T> x;
+    C gnorm;
+  };
+  std::vector<Found> found;
+  C hscale = C(0);
+  bool any_finite = false, limit = false;
+  const auto gnorm_at = [&](const Vec2<T>& x, Vec2<C>& g) -> bool {
+    const Vec2<T> gt = grad(x);
+    g = {C(gt.x), C(gt.y)};
+    return is_finite(g);
+  };
+  for (int sj = 0; sj < opt.seeds_y; ++sj) {
+    for (int si = 0; si < opt.seeds_x; ++si) {
+      Vec2<T> x{static_cast<T>(C(lo.x) + dx * (C(si) + C(0.5)) / C(opt.seeds_x)),
+                static_cast<T>(C(lo.y) + dy * (C(sj) + C(0.5)) / C(opt.seeds_y))};
+      Vec2<C> g;
+      if (!gnorm_at(x, g)) continue;
+      C last_step = std::numeric_limits<C>::infinity();
+      bool ok = true;
+      for (int it = 0; it < opt.max_iterations; ++it) {
+        const Mat2<T> ht = hess(x);
+        if (!is_finite(ht)) {
+          ok = false;
+          break;
+        }
+        any_finite = true;
+        for (int r = 0; r < 2; ++r)
+          for (int c = 0; c < 2; ++c) hscale = std::max(hscale, C(std::abs(ht(r, c))));
+        const C off = (C(ht(0, 1)) + C(ht(1, 0))) / C(2);
+        const Mat2<C> hc = Mat2<C>::from_rows(Vec2<C>{C(ht(0, 0)), off}, Vec2<C>{off, C(ht(1, 1))});
+        const auto eig = eigen_symmetric(hc);
+        const C lmax = std::max(std::abs(eig.values[0]), std::abs(eig.values[1]));
+        Vec2<C> d{};
+        for (int k = 0; k < 2; ++k) {
+          const C lk = eig.values[k];
+          if (!(std::abs(lk) > C(1e-12) * lmax)) continue;
+          const Vec2<C> vk{eig.vectors(0, k), eig.vectors(1, k)};
+          d -= (dot(vk, g) / lk) * vk;
+        }
+        C len = length(d);
+        if (!(len > C(0))) {
+          last_step = C(0);
+          break;
+        }
+        if (len > diag) {
+          d *= diag / len;
+          len = diag;
+        }
+        const C g0 = length(g);
+        C alpha = C(1);
+        Vec2<T> xn{};
+        Vec2<C> gn{};
+        bool moved = false;
+        for (int bt = 0; bt < 30; ++bt) {
+          xn = {static_cast<T>(C(x.x) + alpha * d.x), static_cast<T>(C(x.y) + alpha * d.y)};
+          if (!gnorm_at(xn, gn)) {
+            alpha /= C(2);
+            continue;
+          }
+          // Close to convergence |g| is rounding noise: take the full Newton step.
+          if (length(gn) <= g0 || alpha * len <= accept_step) {
+            moved = true;
+            break;
+          }
+          alpha /= C(2);
+        }
+        if (!moved) break;
+        last_step = alpha * len;
+        const bool same = xn == x;
+        x = xn;
+        g = gn;
+        if (same ||
+            last_step <= C(4) * C(eps_v<T>) * (std::max(std::abs(C(x.x)), std::abs(C(x.y))) + diag))
+          break;
+      }
+      if (!ok || !(last_step <= accept_step)) continue;
+      if (C(x.x) < C(lo.x) - merge || C(x.x) > C(hi.x) + merge || C(x.y) < C(lo.y) - merge ||
+          C(x.y) > C(hi.y) + merge)
+        continue;
+      const C gl = length(g);
+      bool merged = false;
+      for (Found& fd : found) {
+        if (std::hypot(C(fd.x.x) - C(x.x), C(fd.x.y) - C(x.y)) <= merge) {
+          if (gl < fd.gnorm) fd = {x, gl};
+          merged = true;
+          break;
+        }
+      }
+      if (!merged) {
+        if (static_cast<int>(found.size()) >= opt.max_points)
+          limit = true;
+        else
+          found.push_back({x, gl});
+      }
+    }
+  }
+  if (!any_finite) {
+    out.status = Status::non_finite_input;
+    return out;
+  }
+  const T tau = static_cast<T>(C(opt.degenerate_tolerance) * hscale);
+  for (const Found& fd : found) {
+    const auto cls = classify_critical_point(hess(fd.x), tau);
+    out.points.push_back({fd.x, f(fd.x), cls.kind, cls.eigenvalues});
+  }
+  std::sort(out.points.begin(), out.points.end(), [](const auto& a, const auto& b) {
+    return a.point.x < b.point.x || (a.point.x == b.point.x && a.point.y < b.point.y);
+  });
+  if (limit) out.status = Status::limit_exceeded;
+  return out;
+}
+
+/// Critical points of a sampled f: stationary points of the central-difference quadratic model
+/// at each interior vertex that fall in the vertex's own cell (see the header comment).
+template <Real T>
+[[nodiscard]] CriticalPoints2<T> critical_points_2d(const ScalarGrid<T>& grid,
+                                                    const CriticalPointOptions<T>& opt = {}) {
+  using C = compute_t<T>;
+  CriticalPoints2<T> out;
+  const int nx = grid.nx, ny = grid.ny;
+  if (nx < 3 || ny < 3) {
+    out.status = Status::empty_input;
+    return out;
+  }
+  if (grid.values.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny)) {
+    out.status = Status::invalid_input;
+    return out;
+  }
+  if (!is_finite(grid.origin) || !is_finite(grid.spacing)) {
+    out.status = Status::non_finite_input;
+    return out;
+  }
+  if (!(grid.spacing.x > T(0)) || !(grid.spacing.y > T(0))) {
+    out.status = Status::invalid_input;
+    return out;
+  }
+  const C hx = C(grid.spacing.x), hy = C(grid.spacing.y);
+  struct Model {
+    int i, j;
+    Vec2<C> g, d;
+    C fxx, fxy, fyy, f0;
+  };
+  std::vector<Model> cand;
+  C hscale = C(0);
+  bool nonfinite = false;
+  for (int j = 1; j + 1 < ny; ++j) {
+    for (int i = 1; i + 1 < nx; ++i) {
+      C s[3][3];
+      bool fin = true;
+      for (int b = -1; b <= 1; ++b)
+        for (int a = -1; a <= 1; ++a) {
+          s[b + 1][a + 1] = C(grid.at(i + a, j + b));
+          fin = fin && locus::is_finite(s[b + 1][a + 1]);
+        }
+      if (!fin) {
+        nonfinite = true;
+        continue;
+      }
+      Model m{i, j, {}, {}, C(0), C(0), C(0), s[1][1]};
+      m.g = {(s[1][2] - s[1][0]) / (C(2) * hx), (s[2][1] - s[0][1]) / (C(2) * hy)};
+      m.fxx = (s[1][2] - C(2) * s[1][1] + s[1][0]) / (hx * hx);
+      m.fyy = (s[2][1] - C(2) * s[1][1] + s[0][1]) / (hy * hy);
+      m.fxy = (s[2][2] - s[0][2] - s[2][0] + s[0][0]) / (C(4) * hx * hy);
+      hscale = std::max({hscale, std::abs(m.fxx), std::abs(m.fyy), std::abs(m.fxy)});
+      const C det = m.fxx * m.fyy - m.fxy * m.fxy;
+      const C mag = std::max({std::abs(m.fxx * m.fyy), m.fxy * m.fxy});
+      if (!(std::abs(det) > C(64) * std::numeric_limits<C>::epsilon() * mag)) continue;
+      m.d = {-(m.fyy * m.g.x - m.fxy * m.g.y) / det, -(-m.fxy * m.g.x + m.fxx * m.g.y) / det};
+      if (!(m.d.x > -hx / C(2) && m.d.x <= hx / C(2) && m.d.y > -hy / C(2) && m.d.y <= hy / C(2)))
+        continue;
+      cand.push_back(m);
+      if (static_cast<int>(cand.size()) > opt.max_points) break;
+    }
+  }
+  if (static_cast<int>(cand.size()) > opt.max_points) {
+    cand.resize(static_cast<std::size_t>(opt.max_points));
+    out.status = Status::limit_exceeded;
+  }
+  const T tau = static_cast<T>(C(opt.degenerate_tolerance) * hscale);
+  for (const Model& m : cand) {
+    const Vec2<T> p = grid.position(m.i, m.j);
+    const Vec2<T> x{static_cast<T>(C(p.x) + m.d.x), static_cast<T>(C(p.y) + m.d.y)};
+    const C value = m.f0 + dot(m.g, m.d) / C(2);  // f0 + g.d + d^T H d / 2 with H d = -g
+    const auto cls = classify_critical_point(
+        Mat2<T>::from_rows(Vec2<T>{static_cast<T>(m.fxx), static_cast<T>(m.fxy)},
+                           Vec2<T>{static_cast<T>(m.fxy), static_cast<T>(m.fyy)}),
+        tau);
+    out.points.push_back({x, static_cast<T>(value), cls.kind, cls.eigenvalues});
+  }
+  std::sort(out.points.begin(), out.points.end(), [](const auto& a, const auto& b) {
+    return a.point.x < b.point.x || (a.point.x == b.point.x && a.point.y < b.point.y);
+  });
+  if (nonfinite && out.status == Status::ok) out.status = Status::non_finite_input;
+  return out;
+}
+
+/// A critical point of a function of one variable.
+template <class T>
+struct CriticalPoint1 {
+  T x = T(0);
+  T value = T(0);
+  CriticalKind kind = CriticalKind::inflection;
+  int multiplicity = 1;  ///< as a root of f' (polynomial version; 1 otherwise)
+};
+
+template <class T>
+struct CriticalPoints1 {
+  Status status = Status::ok;
+  std::vector<CriticalPoint1<T>> points;  ///< increasing x, interior and endpoints alike
+  T min_x = T(0), min_value = T(0);       ///< absolute minimum on [a, b] (endpoints included)
+  T max_x = T(0), max_value = T(0);       ///< absolute maximum on [a, b]
+};
+
+namespace detail::calculus {
+
+template <class T, class F>
+void absolute_extrema(CriticalPoints1<T>& r, F&& f, T a, T b) {
+  const auto consider = [&](T x, T v) {
+    if (!locus::is_finite(v)) return;
+    if (!locus::is_finite(r.min_value) || v < r.min_value) {
+      r.min_x = x;
+      r.min_value = v;
+    }
+    if (!locus::is_finite(r.max_value) || v > r.max_value) {
+      r.max_x = x;
+      r.max_value = v;
+    }
+  };
+  r.min_value = r.max_value = std::numeric_limits<T>::quiet_NaN();
+  r.min_x = r.max_x = a;
+  consider(a, f(a));
+  for (const auto& p : r.points) consider(p.x, p.value);
+  consider(b, f(b));
+}
+
+}  // namespace detail::calculus
+
+/// Critical points of the polynomial p on [a, b] (roots of p') and its absolute extrema there.
+template <Real T>
+[[nodiscard]] CriticalPoints1<T> critical_points(const Polynomial<T>& p, T a,
+                                                 std::type_identity_t<T> b) {
+  CriticalPoints1<T> r;
+  if (!locus::is_finite(a) || !locus::is_finite(b) || !is_finite(p)) {
+    r.status = Status::non_finite_input;
+    r.min_value = r.max_value = std::numeric_limits<T>::quiet_NaN();
+    return r;
+  }
+  if (a > b) {
+    r.status = Status::invalid_input;
+    r.min_value = r.max_value = std::numeric_limits<T>::quiet_NaN();
+    return r;
+  }
+  const Polynomial<T> dp = derivative(p);
+  if (dp.degree() < 0) {
+    r.status = Status::degenerate_input;
+  } else {
+    const auto roots = real_roots(dp, a, b);
+    if (roots.status == Status::limit_exceeded) r.status = Status::limit_exceeded;
+    for (const auto& rt : roots.roots) {
+      CriticalPoint1<T> c{rt.value, p(rt.value), CriticalKind::inflection, rt.multiplicity};
+      if (rt.multiplicity % 2 == 1) {
+        Polynomial<T> q = dp;
+        for (int k = 0; k < rt.multiplicity; ++k) q = derivative(q);
+        // The first non-vanishing derivative of p' decides the direction of its sign change.
+        c.kind = q(rt.value) > T(0) ? CriticalKind::minimum : CriticalKind::maximum;
+      }
+      r.points.push_back(c);
+    }
+  }
+  detail::calculus::absolute_extrema(
+      r, [&](T x) { return p(x); }, a, b);
+  return r;
+}
+
+struct CriticalPoints1Options {
+  int samples = 256;         ///< sub-intervals on which f' is sampled for sign changes
+  int max_iterations = 200;  ///< refinement steps per bracketed root of f'
+};
+
+/// Critical points of a function f on [a, b] given its derivative df: sign changes of f' on a
+/// sampling, refined and classified by the direction of the change (see the header comment).
+template <Real T, class F, class DF>
+requires std::is_invocable_r_v<T, F&, T> && std::is_invocable_r_v<T, DF&, T>
+[[nodiscard]] CriticalPoints1<T> critical_points_1d(F&& f, DF&& df, T a, std::type_identity_t<T> b,
+                                                    const CriticalPoints1Options& opt = {}) {
+  using C = compute_t<T>;
+  CriticalPoints1<T> r;
+  r.min_value = r.max_value = std::numeric_limits<T>::quiet_NaN();
+  if (!locus::is_finite(a) || !locus::is_finite(b)) {
+    r.status = Status::non_finite_input;
+    return r;
+  }
+  if (a > b || opt.samples < 1 || opt.max_iterations < 1) {
+    r.status = Status::invalid_input;
+    return r;
+  }
+  const int n = opt.samples;
+  std::vector<T> xs(static_cast<std::size_t>(n) + 1);
+  std::vector<C> ds(static_cast<std::size_t>(n) + 1);
+  bool nonfinite = false, limit = false;
+  for (int i = 0; i <= n; ++i) {
+    const T x = i == n ? b : static_cast<T>(C(a) + (C(b) - C(a)) * C(i) / C(n));
+    xs[static_cast<std::size_t>(i)] = x;
+    ds[static_cast<std::size_t>(i)] = C(df(x));
+    nonfinite = nonfinite || !locus::is_finite(ds[static_cast<std::size_t>(i)]);
+  }
+  const auto sgn = [](C v) { return v > C(0) ? 1 : (v < C(0) ? -1 : 0); };
+  for (int i = 0; i <= n; ++i) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    const C d = ds[k];
+    if (!locus::is_finite(d)) continue;
+    if (d == C(0)) {
+      if (i == 0 || i == n) continue;  // an endpoint is an extremum candidate anyway
+      const C dl = ds[k - 1], dr = ds[k + 1];
+      if (!locus::is_finite(dl) || !locus::is_finite(dr)) continue;
+      CriticalKind kind = CriticalKind::inflection;
+      if (sgn(dl) < 0 && sgn(dr) > 0)
+        kind = CriticalKind::minimum;
+      else if (sgn(dl) > 0 && sgn(dr) < 0)
+        kind = CriticalKind::maximum;
+      r.points.push_back({xs[k], f(xs[k]), kind, 1});
+      continue;
+    }
+    if (i == n) continue;
+    const C dn = ds[k + 1];
+    if (!locus::is_finite(dn) || dn == C(0) || sgn(d) == sgn(dn)) continue;
+    // Illinois regula falsi with bisection whenever the secant point is not well inside.
+    C lo = C(xs[k]), hi = C(xs[k + 1]), flo = d, fhi = dn;
+    int side = 0;
+    T x = xs[k];
+    bool done = false;
+    for (int it = 0; it < opt.max_iterations; ++it) {
+      C m = (lo * fhi - hi * flo) / (fhi - flo);
+      if (!(m > lo && m < hi) || !locus::is_finite(m) || it % 4 == 3) m = (lo + hi) / C(2);
+      const T xm = static_cast<T>(m);
+      if (C(xm) <= lo || C(xm) >= hi) {
+        x = std::abs(flo) <= std::abs(fhi) ? static_cast<T>(lo) : static_cast<T>(hi);
+        done = true;
+        break;
+      }
+      const C fm = C(df(xm));
+      if (fm != fm) {
+        // f' undefined inside the bracket: report the point met, flag the status.
+        nonfinite = true;
+        x = xm;
+        done = true;
+        break;
+      }
+      if (fm == C(0)) {
+        x = xm;
+        done = true;
+        break;
+      }
+      if (sgn(fm) == sgn(flo)) {
+        lo = C(xm);
+        flo = fm;
+        if (side == -1) fhi /= C(2);
+        side = -1;
+      } else {
+        hi = C(xm);
+        fhi = fm;
+        if (side == 1) flo /= C(2);
+        side = 1;
+      }
+      x = static_cast<T>((lo + hi) / C(2));
+    }
+    if (!done) limit = true;
+    r.points.push_back({x, f(x), sgn(d) < 0 ? CriticalKind::minimum : CriticalKind::maximum, 1});
+  }
+  std::sort(r.points.begin(), r.points.end(),
+            [](const auto& p, const auto& q) { return p.x < q.x; });
+  detail::calculus::absolute_extrema(r, f, a, b);
+  if (nonfinite)
+    r.status = Status::non_finite_input;
+  else if (limit)
+    r.status = Status::limit_exceeded;
+  return r;
+}
+
+}  // namespace locus
