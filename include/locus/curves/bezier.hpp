@@ -74,7 +74,7 @@ class CurveScratch {
 
 /// A vector whose components are all quiet NaN: the result of evaluating an invalid object.
 template <class T, int N>
-[[nodiscard]] constexpr Vec<T, N> nan_vec() noexcept {
+[[nodiscard]] constexpr Vec<T, N> curve_nan() noexcept {
   return splat<T, N>(std::numeric_limits<T>::quiet_NaN());
 }
 
@@ -89,7 +89,7 @@ template <class T, class V>
 
 /// The parameter clamped to [lo, hi]; NaN stays NaN.
 template <class T>
-[[nodiscard]] constexpr T clamp_param(T t, T lo, T hi) noexcept {
+[[nodiscard]] constexpr T curve_clamp(T t, T lo, T hi) noexcept {
   return t < lo ? lo : (hi < t ? hi : t);
 }
 
@@ -114,8 +114,8 @@ template <class T, int N>
 template <class T, int N>
 [[nodiscard]] Vec<T, N> point_at(const BezierCurve<T, N>& c, T t) noexcept {
   const int n = degree(c);
-  if (n < 0) return detail::nan_vec<T, N>();
-  t = detail::clamp_param(t, T(0), T(1));
+  if (n < 0) return detail::curve_nan<T, N>();
+  t = detail::curve_clamp(t, T(0), T(1));
   detail::CurveScratch<Vec<T, N>> b(c.control.size());
   for (std::size_t i = 0; i < c.control.size(); ++i) b[i] = c.control[i];
   return detail::de_casteljau_inplace(b.data(), n, t);
@@ -139,9 +139,9 @@ template <class T, int N>
 template <class T, int N>
 [[nodiscard]] Vec<T, N> derivative_at(const BezierCurve<T, N>& c, T t, int k) noexcept {
   const int n = degree(c);
-  if (n < 0 || k < 0) return detail::nan_vec<T, N>();
+  if (n < 0 || k < 0) return detail::curve_nan<T, N>();
   if (k > n) return Vec<T, N>{};
-  t = detail::clamp_param(t, T(0), T(1));
+  t = detail::curve_clamp(t, T(0), T(1));
   detail::CurveScratch<Vec<T, N>> b(c.control.size());
   for (std::size_t i = 0; i < c.control.size(); ++i) b[i] = c.control[i];
   // k-th forward differences, scaled by n (n-1) ... (n-k+1) one factor per difference.
@@ -165,7 +165,7 @@ template <class T, int N>
 [[nodiscard]] BezierSplit<T, N> subdivide(const BezierCurve<T, N>& c, T t) {
   const int n = degree(c);
   if (n < 0) return {};
-  t = detail::clamp_param(t, T(0), T(1));
+  t = detail::curve_clamp(t, T(0), T(1));
   const auto sz = c.control.size();
   BezierSplit<T, N> s;
   s.first.control.resize(sz);
@@ -256,8 +256,8 @@ template <class T, int N>
   if (c.control.empty()) return {Status::empty_input, T(0)};
   if (!is_finite(c) || !is_finite(t0) || !is_finite(t1) || !(rel_tol >= T(0)))
     return {Status::non_finite_input, std::numeric_limits<T>::quiet_NaN()};
-  C a = static_cast<C>(detail::clamp_param(t0, T(0), T(1)));
-  C b = static_cast<C>(detail::clamp_param(t1, T(0), T(1)));
+  C a = static_cast<C>(detail::curve_clamp(t0, T(0), T(1)));
+  C b = static_cast<C>(detail::curve_clamp(t1, T(0), T(1)));
   if (b < a) std::swap(a, b);
   if (c.control.size() == 1 || a == b) return {Status::ok, T(0)};
   BezierCurve<C, N> cc;

@@ -39,7 +39,8 @@
 // (control point ijk of sub-patch 0 is level i's point (0, j, k)). A split point on an edge or
 // corner gives degenerate (zero-area) sub-patches, which is valid data. O(n^3) time and memory.
 // bounding_box() is the control-net box, which contains the patch (convex-hull property).
-// Cost: point_at O(m n (m + n)); partials the same; evaluation allocates only for degree >= 16.
+// Cost: point_at O(m n (m + n)); partials the same; triangle evaluation O(n^3). Evaluation
+// allocates only for rectangle degrees >= 16 and triangle degrees >= 7 (fixed scratch buffers).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -162,10 +163,10 @@ template <class T, int N>
 /// S(u, v), its partials du, dv and the mixed partial duv; (u, v) clamped to [0, 1]^2.
 template <class T, int N>
 [[nodiscard]] SurfaceDerivatives<T, N> partials(const BezierPatch<T, N>& p, T u, T v) noexcept {
-  const Vec<T, N> nan = detail::nan_vec<T, N>();
+  const Vec<T, N> nan = detail::curve_nan<T, N>();
   if (!detail::patch_shape_ok(p)) return {nan, nan, nan, nan};
-  u = detail::clamp_param(u, T(0), T(1));
-  v = detail::clamp_param(v, T(0), T(1));
+  u = detail::curve_clamp(u, T(0), T(1));
+  v = detail::curve_clamp(v, T(0), T(1));
   const auto rows = static_cast<std::size_t>(p.rows), cols = static_cast<std::size_t>(p.cols);
   detail::CurveScratch<Vec<T, N>> work(cols), r(rows), d(rows);
   for (std::size_t i = 0; i < rows; ++i) {
@@ -181,9 +182,9 @@ template <class T, int N>
 /// S(u, v); (u, v) clamped to [0, 1]^2; NaN for a bad shape.
 template <class T, int N>
 [[nodiscard]] Vec<T, N> point_at(const BezierPatch<T, N>& p, T u, T v) noexcept {
-  if (!detail::patch_shape_ok(p)) return detail::nan_vec<T, N>();
-  u = detail::clamp_param(u, T(0), T(1));
-  v = detail::clamp_param(v, T(0), T(1));
+  if (!detail::patch_shape_ok(p)) return detail::curve_nan<T, N>();
+  u = detail::curve_clamp(u, T(0), T(1));
+  v = detail::curve_clamp(v, T(0), T(1));
   const auto rows = static_cast<std::size_t>(p.rows), cols = static_cast<std::size_t>(p.cols);
   detail::CurveScratch<Vec<T, N>> work(cols), r(rows);
   for (std::size_t i = 0; i < rows; ++i) {
@@ -291,7 +292,7 @@ void clamp_barycentric(T& u, T& v) noexcept {
 /// onto the triangle; NaN for a bad shape.
 template <class T, int N>
 [[nodiscard]] Vec<T, N> point_at(const BezierTriangle<T, N>& p, T u, T v) noexcept {
-  if (!detail::triangle_shape_ok(p)) return detail::nan_vec<T, N>();
+  if (!detail::triangle_shape_ok(p)) return detail::curve_nan<T, N>();
   detail::clamp_barycentric(u, v);
   const T w = T(1) - u - v;
   detail::CurveScratch<Vec<T, N>, 28> b(p.control.size());
@@ -303,7 +304,7 @@ template <class T, int N>
 /// S(u, v), dS/du, dS/dv (w = 1 - u - v eliminated) and the mixed partial d2S/dudv.
 template <class T, int N>
 [[nodiscard]] SurfaceDerivatives<T, N> partials(const BezierTriangle<T, N>& p, T u, T v) noexcept {
-  const Vec<T, N> nan = detail::nan_vec<T, N>();
+  const Vec<T, N> nan = detail::curve_nan<T, N>();
   if (!detail::triangle_shape_ok(p)) return {nan, nan, nan, nan};
   detail::clamp_barycentric(u, v);
   const T w = T(1) - u - v;

@@ -136,7 +136,7 @@ namespace detail {
 
 /// a / b with 0 for a zero denominator (the Cox-de Boor 0/0 = 0 convention).
 template <class T>
-[[nodiscard]] constexpr T safe_ratio(T a, T b) noexcept {
+[[nodiscard]] constexpr T knot_ratio(T a, T b) noexcept {
   return b == T(0) ? T(0) : a / b;
 }
 
@@ -185,7 +185,7 @@ template <class T, class V, class Get>
       const auto i = static_cast<std::size_t>(j + k - d);
       const T lo = knots[i];
       const T hi = knots[static_cast<std::size_t>(j + 1 + k - r)];
-      const T a = safe_ratio(t - lo, hi - lo);
+      const T a = knot_ratio(t - lo, hi - lo);
       const auto uj = static_cast<std::size_t>(j);
       p[uj] = (T(1) - a) * p[uj - 1] + a * p[uj];
     }
@@ -201,8 +201,8 @@ void raise_basis(std::span<const T> knots, int k, int p, T t, T* vals) noexcept 
     const auto up = static_cast<std::size_t>(p);
     const T a = j >= 1 ? vals[j - 1] : T(0);  // N_{i, p}
     const T b = j <= p ? vals[j] : T(0);      // N_{i+1, p}
-    vals[j] = safe_ratio(t - knots[i], knots[i + up + 1] - knots[i]) * a +
-              safe_ratio(knots[i + up + 2] - t, knots[i + up + 2] - knots[i + 1]) * b;
+    vals[j] = knot_ratio(t - knots[i], knots[i + up + 1] - knots[i]) * a +
+              knot_ratio(knots[i + up + 2] - t, knots[i + up + 2] - knots[i + 1]) * b;
   }
 }
 
@@ -224,8 +224,8 @@ void basis_and_derivative(std::span<const T> knots, int d, int k, T t, T* vals, 
       const auto ud = static_cast<std::size_t>(d);
       const T a = j >= 1 ? vals[j - 1] : T(0);
       const T b = j <= d - 1 ? vals[j] : T(0);
-      ders[j] = fd * (safe_ratio(a, knots[i + ud] - knots[i]) -
-                      safe_ratio(b, knots[i + ud + 1] - knots[i + 1]));
+      ders[j] = fd * (knot_ratio(a, knots[i + ud] - knots[i]) -
+                      knot_ratio(b, knots[i + ud + 1] - knots[i + 1]));
     }
   }
   raise_basis(knots, k, d - 1, t, vals);
@@ -242,7 +242,7 @@ template <Real T>
                                 knots.size()))
     return std::numeric_limits<T>::quiet_NaN();
   if (i < 0 || i >= n_control) return T(0);
-  t = detail::clamp_param(t, knots[static_cast<std::size_t>(degree)],
+  t = detail::curve_clamp(t, knots[static_cast<std::size_t>(degree)],
                           knots[static_cast<std::size_t>(n_control)]);
   if (t != t) return t;
   const int k = find_span(knots, degree, n_control, t);
@@ -255,8 +255,8 @@ template <Real T>
       const auto up = static_cast<std::size_t>(p);
       const auto uj = static_cast<std::size_t>(j);
       v[uj] =
-          detail::safe_ratio(t - knots[a], knots[a + up] - knots[a]) * v[uj] +
-          detail::safe_ratio(knots[a + up + 1] - t, knots[a + up + 1] - knots[a + 1]) * v[uj + 1];
+          detail::knot_ratio(t - knots[a], knots[a + up] - knots[a]) * v[uj] +
+          detail::knot_ratio(knots[a + up + 1] - t, knots[a + up + 1] - knots[a + 1]) * v[uj + 1];
     }
   }
   return v[0];
@@ -266,11 +266,11 @@ template <Real T>
 template <class T, int N>
 [[nodiscard]] Vec<T, N> point_at(const BSplineCurve<T, N>& c, T t) noexcept {
   if (!detail::bspline_shape_ok(c.degree, c.control.size(), c.knots.size()))
-    return detail::nan_vec<T, N>();
+    return detail::curve_nan<T, N>();
   const int n = static_cast<int>(c.control.size());
   const std::span<const T> kn(c.knots);
-  t = detail::clamp_param(t, kn[static_cast<std::size_t>(c.degree)], kn[c.control.size()]);
-  if (t != t) return detail::nan_vec<T, N>();
+  t = detail::curve_clamp(t, kn[static_cast<std::size_t>(c.degree)], kn[c.control.size()]);
+  if (t != t) return detail::curve_nan<T, N>();
   const int k = find_span(kn, c.degree, n, t);
   return detail::de_boor<T, Vec<T, N>>(
       kn, c.degree, k, t, [&c](int i) { return c.control[static_cast<std::size_t>(i)]; });
@@ -290,7 +290,7 @@ template <class T, int N>
   r.control.resize(c.control.size() - 1);
   for (std::size_t i = 0; i + 1 < c.control.size(); ++i)
     r.control[i] =
-        detail::safe_ratio(static_cast<T>(c.degree), c.knots[i + d + 1] - c.knots[i + 1]) *
+        detail::knot_ratio(static_cast<T>(c.degree), c.knots[i + d + 1] - c.knots[i + 1]) *
         (c.control[i + 1] - c.control[i]);
   r.knots.assign(c.knots.begin() + 1, c.knots.end() - 1);
   return r;
@@ -301,12 +301,12 @@ template <class T, int N>
 template <class T, int N>
 [[nodiscard]] Vec<T, N> derivative_at(const BSplineCurve<T, N>& c, T t, int k) {
   if (!detail::bspline_shape_ok(c.degree, c.control.size(), c.knots.size()) || k < 0)
-    return detail::nan_vec<T, N>();
+    return detail::curve_nan<T, N>();
   if (k == 0) return point_at(c, t);
-  if (k > c.degree) return t == t ? Vec<T, N>{} : detail::nan_vec<T, N>();
+  if (k > c.degree) return t == t ? Vec<T, N>{} : detail::curve_nan<T, N>();
   // Clamp to the original domain first: the derivative curves have the same domain.
   const ParamDomain<T> dom = domain(c);
-  t = detail::clamp_param(t, dom.min, dom.max);
+  t = detail::curve_clamp(t, dom.min, dom.max);
   BSplineCurve<T, N> r = derivative(c);
   for (int i = 1; i < k; ++i) r = derivative(r);
   return point_at(r, t);
@@ -326,7 +326,7 @@ template <class T, int N>
 [[nodiscard]] BSplineCurve<T, N> insert_knot(const BSplineCurve<T, N>& c, T t, int times = 1) {
   if (!detail::bspline_shape_ok(c.degree, c.control.size(), c.knots.size())) return c;
   const ParamDomain<T> dom = domain(c);
-  t = detail::clamp_param(t, dom.min, dom.max);
+  t = detail::curve_clamp(t, dom.min, dom.max);
   if (t != t) return c;
   BSplineCurve<T, N> r = c;
   const int d = c.degree;
@@ -345,7 +345,7 @@ template <class T, int N>
         q[ui] = r.control[ui - 1];
       } else {
         const T lo = r.knots[ui];
-        const T a = detail::safe_ratio(t - lo, r.knots[ui + static_cast<std::size_t>(d)] - lo);
+        const T a = detail::knot_ratio(t - lo, r.knots[ui + static_cast<std::size_t>(d)] - lo);
         q[ui] = (T(1) - a) * r.control[ui - 1] + a * r.control[ui];
       }
     }

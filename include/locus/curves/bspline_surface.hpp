@@ -86,7 +86,7 @@ struct BasisAt {
         t(param),
         val(static_cast<std::size_t>(d) + 1),
         der(static_cast<std::size_t>(d) + 1) {
-    t = clamp_param(t, knots[static_cast<std::size_t>(d)], knots[static_cast<std::size_t>(n)]);
+    t = curve_clamp(t, knots[static_cast<std::size_t>(d)], knots[static_cast<std::size_t>(n)]);
     if (t != t) return;
     span = find_span(knots, d, n, t);
     basis_and_derivative(knots, d, span, t, val.data(), der.data());
@@ -146,7 +146,7 @@ template <class T, int N>
 /// S(u, v), du, dv, duv; (u, v) clamped to the domain; NaN for a bad shape or NaN parameters.
 template <class T, int N>
 [[nodiscard]] SurfaceDerivatives<T, N> partials(const BSplineSurface<T, N>& s, T u, T v) noexcept {
-  const Vec<T, N> nan = detail::nan_vec<T, N>();
+  const Vec<T, N> nan = detail::curve_nan<T, N>();
   if (!detail::tensor_shape_ok(s) || u != u || v != v) return {nan, nan, nan, nan};
   Vec<T, N> out[4];
   const auto cols = static_cast<std::size_t>(s.cols);

@@ -63,7 +63,7 @@ using NurbsCurve3 = NurbsCurve<T, 3>;
 namespace detail {
 
 template <class T, int N>
-[[nodiscard]] constexpr Vec<T, N + 1> homogeneous(const Vec<T, N>& p, T w) noexcept {
+[[nodiscard]] constexpr Vec<T, N + 1> nurbs_homogeneous_point(const Vec<T, N>& p, T w) noexcept {
   Vec<T, N + 1> h{};
   for (int i = 0; i < N; ++i) h[i] = w * p[i];
   h[N] = w;
@@ -99,7 +99,7 @@ template <class T, int N>
   const std::size_t n = std::min(c.control.size(), c.weights.size());
   h.control.reserve(n);
   for (std::size_t i = 0; i < n; ++i)
-    h.control.push_back(detail::homogeneous(c.control[i], c.weights[i]));
+    h.control.push_back(detail::nurbs_homogeneous_point(c.control[i], c.weights[i]));
   return h;
 }
 
@@ -116,25 +116,25 @@ namespace detail {
 /// The homogeneous point (A(t), W(t)) at t clamped to the domain (NaN for a bad shape).
 template <class T, int N>
 [[nodiscard]] Vec<T, N + 1> nurbs_homogeneous_at(const NurbsCurve<T, N>& c, T t) noexcept {
-  if (!nurbs_shape_ok(c)) return nan_vec<T, N + 1>();
+  if (!nurbs_shape_ok(c)) return curve_nan<T, N + 1>();
   const std::span<const T> kn(c.knots);
-  t = clamp_param(t, kn[static_cast<std::size_t>(c.degree)], kn[c.control.size()]);
-  if (t != t) return nan_vec<T, N + 1>();
+  t = curve_clamp(t, kn[static_cast<std::size_t>(c.degree)], kn[c.control.size()]);
+  if (t != t) return curve_nan<T, N + 1>();
   const int k = find_span(kn, c.degree, static_cast<int>(c.control.size()), t);
   return de_boor<T, Vec<T, N + 1>>(kn, c.degree, k, t, [&c](int i) {
     const auto ui = static_cast<std::size_t>(i);
-    return homogeneous(c.control[ui], c.weights[ui]);
+    return nurbs_homogeneous_point(c.control[ui], c.weights[ui]);
   });
 }
 
 /// A / W, NaN when W is zero or the quotient is not finite.
 template <class T, int N>
-[[nodiscard]] Vec<T, N> project(const Vec<T, N + 1>& h) noexcept {
+[[nodiscard]] Vec<T, N> nurbs_project(const Vec<T, N + 1>& h) noexcept {
   const T w = h[N];
-  if (!(w != T(0))) return nan_vec<T, N>();
+  if (!(w != T(0))) return curve_nan<T, N>();
   Vec<T, N> p{};
   for (int i = 0; i < N; ++i) p[i] = h[i] / w;
-  return is_finite(p) ? p : nan_vec<T, N>();
+  return is_finite(p) ? p : curve_nan<T, N>();
 }
 
 }  // namespace detail
@@ -148,7 +148,7 @@ template <class T, int N>
 /// C(t) (t clamped to the domain); a NaN point where W(t) == 0, for a bad shape or a NaN t.
 template <class T, int N>
 [[nodiscard]] Vec<T, N> point_at(const NurbsCurve<T, N>& c, T t) noexcept {
-  return detail::project<T, N>(detail::nurbs_homogeneous_at(c, t));
+  return detail::nurbs_project<T, N>(detail::nurbs_homogeneous_at(c, t));
 }
 
 /// C(t), C'(t), ..., C^(order)(t) (order + 1 vectors; t clamped). All NaN where W(t) == 0 or
@@ -156,10 +156,10 @@ template <class T, int N>
 template <class T, int N>
 [[nodiscard]] std::vector<Vec<T, N>> derivatives(const NurbsCurve<T, N>& c, T t, int order) {
   if (order < 0) return {};
-  std::vector<Vec<T, N>> out(static_cast<std::size_t>(order) + 1, detail::nan_vec<T, N>());
+  std::vector<Vec<T, N>> out(static_cast<std::size_t>(order) + 1, detail::curve_nan<T, N>());
   if (!detail::nurbs_shape_ok(c)) return out;
   const ParamDomain<T> dom = domain(c);
-  t = detail::clamp_param(t, dom.min, dom.max);
+  t = detail::curve_clamp(t, dom.min, dom.max);
   if (t != t) return out;
   std::vector<Vec<T, N + 1>> h(out.size());
   BSplineCurve<T, N + 1> hc = to_homogeneous(c);
@@ -180,14 +180,14 @@ template <class T, int N>
     out[k] = a / w;
   }
   for (auto& v : out)
-    if (!is_finite(v)) v = detail::nan_vec<T, N>();
+    if (!is_finite(v)) v = detail::curve_nan<T, N>();
   return out;
 }
 
 /// The k-th derivative at t (k = 0 is the point); see derivatives().
 template <class T, int N>
 [[nodiscard]] Vec<T, N> derivative_at(const NurbsCurve<T, N>& c, T t, int k) {
-  if (k < 0) return detail::nan_vec<T, N>();
+  if (k < 0) return detail::curve_nan<T, N>();
   return derivatives(c, t, k).back();
 }
 
@@ -204,7 +204,7 @@ template <class T, int N>
   r.control.reserve(h.control.size());
   r.weights.reserve(h.control.size());
   for (const auto& p : h.control) {
-    r.control.push_back(detail::project<T, N>(p));
+    r.control.push_back(detail::nurbs_project<T, N>(p));
     r.weights.push_back(p[N]);
   }
   return r;

@@ -96,7 +96,7 @@ template <class T, int N>
 /// S(u, v), du, dv, duv; all NaN where W == 0, for a bad shape or NaN parameters.
 template <class T, int N>
 [[nodiscard]] SurfaceDerivatives<T, N> partials(const NurbsSurface<T, N>& s, T u, T v) noexcept {
-  const Vec<T, N> nan = detail::nan_vec<T, N>();
+  const Vec<T, N> nan = detail::curve_nan<T, N>();
   const SurfaceDerivatives<T, N> bad{nan, nan, nan, nan};
   if (!detail::nurbs_surface_shape_ok(s) || u != u || v != v) return bad;
   Vec<T, N + 1> h[4];
