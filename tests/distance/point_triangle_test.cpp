@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: BSL-1.0
+// Tests for distance/point_triangle.hpp (rows dist2.pt-triangle, dist3.pt-triangle; book figures
+// 6.5-6.9 and 10.8-10.10).
+#include <locus/distance/point_triangle.hpp>
+
+#include "distance/exact.hpp"
+#include "distance/harness.hpp"
+#include "support/typed.hpp"
+
+#include <limits>
+#include <utility>
+
+using namespace locus;
+using locus_test::Rng;
+using locus_test::tol;
+namespace dist = locus_test::dist;
+namespace ex = locus_test::exact;
+
+template <class T>
+class PointTriangleTest : public ::testing::Test {};
+TYPED_TEST_SUITE(PointTriangleTest, locus_test::RealTypes);
+
+namespace {
+
+// Random triangles: generic (80%), collinear vertices (10%), a repeated vertex (5%), a needle
+// (5%).
+template <class T, int N>
+Triangle<T, N> random_triangle(Rng& rng, T S) {
+  Triangle<T, N> t{rng.vec<T, N>(-S, S), rng.vec<T, N>(-S, S), rng.vec<T, N>(-S, S)};
+  const int kind = rng.uniform_int(0, 19);
+  if (kind < 2)
+    t.v2 = lerp(t.v0, t.v1, rng.uniform<T>(T(-0.5), T(1.5)));
+  else if (kind < 3)
+    t.v2 = t.v1;
+  else if (kind < 4)
+    t.v2 = lerp(t.v0, t.v1, T(0.5)) + rng.unit<T, N>() * (S * T(1e-4));
+  return t;
+}
+
+template <class T, int N>
+void harness() {
+  const T S = 10;
+  dist::check_pairs<T, N, Vec<T, N>, Triangle<T, N>>([&](Rng& rng) {
+    return std::pair{rng.vec<T, N>(-T(1.5) * S, T(1.5) * S), random_triangle<T, N>(rng, S)};
+  });
+}
+
+// Exact oracle: the squared distance to a triangle is the minimum of (a) the squared distance
+// to its plane when the projection is inside and (b) the three exact point-segment distances.
+// Here (a) is checked in 2D (distance 0 inside, decided by exact orient2d) and the boundary part
+// exactly in both dimensions: for a point outside, the distance equals the nearest edge's.
+template <class T, int N>
+void exact_boundary() {
+  Rng rng(locus_test::test_seed() + 7);
+  SCOPED_TRACE(rng.trace());
+  const T S = 10;
+  for (int n = 0; n < 400; ++n) {
+    const auto tri = random_triangle<T, N>(rng, S);
+    const auto p = rng.vec<T, N>(-T(1.5) * S, T(1.5) * S);
+    const auto r = distance(p, tri);
+    const auto qp = ex::to_q(p);
+    mpq_class e = ex::sqr_point_linear(qp, ex::segment(tri.v0, tri.v1));
+    for (const auto& q : {ex::sqr_point_linear(qp, ex::segment(tri.v0, tri.v2)),
+                          ex::sqr_point_linear(qp, ex::segment(tri.v1, tri.v2))})
+      if (q < e) e = q;
+    if constexpr (N == 2) {
+      const Sign s0 = orient2d(tri.v0, tri.v1, p), s1 = orient2d(tri.v1, tri.v2, p),
+                 s2 = orient2d(tri.v2, tri.v0, p);
+      const bool nonneg = s0 != Sign::negative && s1 != Sign::negative && s2 != Sign::negative;
+      const bool nonpos = s0 != Sign::positive && s1 != Sign::positive && s2 != Sign::positive;
+      if ((nonneg || nonpos) && !is_degenerate(tri)) e = 0;
+    } else {
+      if (r.param_b.x > T(0) && r.param_b.y > T(0) && r.param_b.z > T(0)) continue;  // interior
+    }
+    EXPECT_NEAR(double(r.sqr_distance), e.get_d(), double(tol<T>(64, S * S * T(4))))
+        << "case " << n;
+  }
+}
+
+}  // namespace
+
+TYPED_TEST(PointTriangleTest, Harness2D) { harness<TypeParam, 2>(); }
+TYPED_TEST(PointTriangleTest, Harness3D) { harness<TypeParam, 3>(); }
+TYPED_TEST(PointTriangleTest, ExactOracle2D) { exact_boundary<TypeParam, 2>(); }
+TYPED_TEST(PointTriangleTest, ExactBoundaryOracle3D) { exact_boundary<TypeParam, 3>(); }
+
+// Figure 6.6: the seven regions of the (s, t) plane around the triangle (0,0), (1,0), (0,1):
+// region 0 inside; 1 beyond edge v1 v2; 3 left of v0 v2; 5 below v0 v1; 2, 4, 6 the vertex
+// regions of v2, v0, v1.
+TYPED_TEST(PointTriangleTest, Figure6_6SevenRegions) {
+  using T = TypeParam;
+  const Triangle2<T> tri{{T(0), T(0)}, {T(4), T(0)}, {T(0), T(4)}};
+  struct Case {
+    Vec2<T> p, closest;
+    Vec3<T> bary;
+  };
+  const Case cases[] = {
+      {{T(1), T(1)}, {T(1), T(1)}, {T(0.5), T(0.25), T(0.25)}},  // region 0
+      {{T(3), T(3)}, {T(2), T(2)}, {T(0), T(0.5), T(0.5)}},      // region 1
+      {{T(-1), T(6)}, {T(0), T(4)}, {T(0), T(0), T(1)}},         // region 2
+      {{T(-2), T(1)}, {T(0), T(1)}, {T(0.75), T(0), T(0.25)}},   // region 3
+      {{T(-1), T(-2)}, {T(0), T(0)}, {T(1), T(0), T(0)}},        // region 4
+      {{T(3), T(-5)}, {T(3), T(0)}, {T(0.25), T(0.75), T(0)}},   // region 5
+      {{T(6), T(-1)}, {T(4), T(0)}, {T(0), T(1), T(0)}},         // region 6
+  };
+  int region = 0;
+  for (const Case& c : cases) {
+    SCOPED_TRACE("region " + std::to_string(region++));
+    const auto r = distance(c.p, tri);
+    EXPECT_TRUE(locus_test::vec_near(r.closest[1], c.closest, tol<T>(8, T(4))));
+    EXPECT_TRUE(locus_test::vec_near(r.param_b, c.bary, tol<T>(8)));
+    EXPECT_NEAR(r.distance, length(c.p - c.closest), tol<T>(8, T(8)));
+  }
+  // Vertex regions reproduce the vertex exactly.
+  EXPECT_EQ(distance(Vec2<T>{T(-1), T(7)}, tri).closest[1], tri.v2);
+  EXPECT_EQ(distance(Vec2<T>{T(-3), T(-3)}, tri).closest[1], tri.v0);
+  EXPECT_EQ(distance(Vec2<T>{T(9), T(-0.5)}, tri).closest[1], tri.v1);
+}
+
+// Figures 10.8-10.10: a 3D triangle; points above each region project to the same closest
+// points as in the plane, at the height added in quadrature.
+TYPED_TEST(PointTriangleTest, Figure10_8RegionsIn3D) {
+  using T = TypeParam;
+  const Triangle3<T> tri{{T(0), T(0), T(2)}, {T(4), T(0), T(2)}, {T(0), T(4), T(2)}};
+  const auto above = distance(Vec3<T>{T(1), T(1), T(5)}, tri);
+  EXPECT_EQ(above.distance, T(3));
+  EXPECT_TRUE(locus_test::vec_near(above.closest[1], Vec3<T>{T(1), T(1), T(2)}, tol<T>(8, T(4))));
+  const auto edge = distance(Vec3<T>{T(3), T(3), T(6)}, tri);  // region 1, 4 above
+  EXPECT_NEAR(edge.sqr_distance, T(2) + T(16), tol<T>(32, T(20)));
+  const auto vertex = distance(Vec3<T>{T(-3), T(-4), T(-10)}, tri);  // region 4, 12 below
+  EXPECT_EQ(vertex.closest[1], tri.v0);
+  EXPECT_EQ(vertex.distance, T(13));
+  // Swapped overload.
+  const auto sw = distance(tri, Vec3<T>{T(-3), T(-4), T(-10)});
+  EXPECT_EQ(sw.closest[0], tri.v0);
+  EXPECT_EQ(sw.param_a, vertex.param_b);
+  EXPECT_EQ(closest_point(Vec3<T>{T(1), T(1), T(5)}, tri), above.closest[1]);
+}
+
+// Degenerate triangles act as the segment or point their vertices span.
+TYPED_TEST(PointTriangleTest, DegenerateTriangles) {
+  using T = TypeParam;
+  const Triangle3<T> collinear{{T(0), T(0), T(0)}, {T(2), T(2), T(2)}, {T(1), T(1), T(1)}};
+  const auto r = distance(Vec3<T>{T(4), T(4), T(4)}, collinear);
+  EXPECT_EQ(r.closest[1], collinear.v1);
+  const auto m = distance(Vec3<T>{T(1), T(1), T(-2)}, collinear);
+  EXPECT_NEAR(m.sqr_distance, T(6), tol<T>(16, T(6)));
+  const Triangle2<T> point{{T(1), T(1)}, {T(1), T(1)}, {T(1), T(1)}};
+  const auto q = distance(Vec2<T>{T(4), T(5)}, point);
+  EXPECT_EQ(q.distance, T(5));
+  EXPECT_EQ(q.closest[1], point.v0);
+  // A very thin (but not flat) 2D triangle still contains its interior points.
+  const Triangle2<T> thin{{T(0), T(0)}, {T(1), T(0)}, {T(0.5), T(1e-6)}};
+  EXPECT_LE(distance(Vec2<T>{T(0.5), T(1e-7)}, thin).distance, tol<T>(16));
+}
+
+TYPED_TEST(PointTriangleTest, NonFiniteInputGivesNaNResult) {
+  using T = TypeParam;
+  const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+  const Triangle3<T> tri{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}, {T(0), T(1), T(0)}};
+  EXPECT_TRUE(dist::is_nan_result(distance(Vec3<T>{nan, T(0), T(0)}, tri)));
+  EXPECT_TRUE(dist::is_nan_result(distance(Vec3<T>{T(0), inf, T(0)}, tri)));
+  auto bad = tri;
+  bad.v2.z = nan;
+  const auto r = distance(Vec3<T>{}, bad);
+  EXPECT_TRUE(dist::is_nan_result(r));
+  EXPECT_TRUE(std::isnan(r.param_b.x) && std::isnan(r.closest[1].y));
+  EXPECT_TRUE(dist::is_nan_result(distance(bad, Vec3<T>{})));
+}
