@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// 2D Delaunay triangulation: incremental insertion with Lawson edge flips, every decision by an
+// exact predicate (orient2d, incircle of core/predicates.hpp). CAPABILITIES row cg.delaunay2;
+// book section 13.8, figures 13.42-13.51.
+//
+// Algorithm. The points are visited along a Hilbert curve over their bounding box (16 bits per
+// axis, stable radix sort, ties kept in input order), so consecutive points are close. Each point
+// is located by a visibility walk from the triangle of the previously inserted point, the
+// containing triangle is split in three (a point on an edge gives a degenerate triangle that the
+// first flip removes) and the link edges are flipped while the opposite vertex lies strictly
+// inside a circumcircle (Lawson). The outside of the hull is closed by "ghost" triangles that
+// share a vertex at infinity, so points outside the hull are inserted by the same code: a ghost
+// triangle on hull edge uv is "in conflict" with p when orient2d(v, u, p) < 0 (p strictly beyond
+// the edge) or p lies on the open segment uv. Flips happen only on a strict incircle > 0, so the
+// result has no input point strictly inside any triangle's circumcircle.
+//
+// Output (Delaunay2Result), delaunator-style index buffers:
+//   triangles[3t + i]  vertex i of triangle t (input point indices), counter-clockwise.
+//   halfedges[3t + i]  the half-edge opposite to half-edge 3t + i (which runs from vertex i to
+//                      vertex (i + 1) % 3 of t), or -1 on the hull.
+//   hull               the hull vertices counter-clockwise, starting at the smallest index; every
+//                      input point on the hull boundary is listed (collinear ones included).
+//   duplicate_of[i]    i for a point that is a vertex, else the index of the vertex with exactly
+//                      the same coordinates (the first one met in insertion order).
+//   dimension          2 for a real triangulation; 1 when all points are collinear (no triangles;
+//                      hull = the distinct points sorted along the line, lexicographically by
+//                      (x, y)); 0 when all points are equal (hull = the one kept point); -1 when
+//                      there is nothing (empty input or bad input).
+// Lower-dimensional output is data: status stays ok.
+//
+// Cocircular input (grids, points on a circle): the Delaunay triangulation is not unique; the
+// result is one valid choice, deterministic for a given input order (it depends on the order
+// only through the Hilbert sort, whose ties keep input order).
+//
+// Bad input: any NaN or infinite coordinate gives Status::non_finite_input and an empty result;
+// no points gives Status::empty_input. Every walk has a step budget; a walk that exceeds it falls
+// back to an exact linear scan, so location never fails. The flip loop has a budget (never hit on
+// a correct triangulation); if it ran out the status would be limit_exceeded.
+//
+// Exactness: decisions are exact in the ranges stated in core/predicates.hpp (incircle: nonzero
+// |coordinates| within about 6e-64 .. 6e73 for double; every float). Outside them the result is
+// still a triangulation without crash or hang, but possibly not Delaunay.
+//
+// Cost: O(n log n) expected for spatially sorted input (n Hilbert keys, a radix sort, O(1)
+// expected walk steps and flips per point); memory about 40 bytes per point (triangle and
+// half-edge arrays plus the order), plus the copy of the points that Delaunay2 keeps.
+
+#include <locus/core/predicates.hpp>
+#include <locus/core/scalar.hpp>
+#include <locus/core/status.hpp>
+#include <locus/core/vec.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace locus {
+
+/// The result of a 2D Delaunay triangulation (see the top of delaunay2.hpp for the layout).
+struct Delaunay2Result {
+  Status status = Status::empty_input;
+  int dimension = -1;                       ///< 2, 1 (collinear), 0 (one point), -1 (nothing)
+  std::vector<std::uint32_t> triangles;     ///< 3 vertex indices per triangle, CCW
+  std::vector<std::int32_t> halfedges;      ///< opposite half-edge, -1 on the hull
+  std::vector<std::uint32_t> hull;          ///< CCW hull vertices (dimension 1: sorted on line)
+  std::vector<std::uint32_t> duplicate_of;  ///< per input point: itself, or the kept equal point
+  std::size_t duplicate_count = 0;          ///< number of i with duplicate_of[i] != i
+
+  [[nodiscard]] std::size_t triangle_count() const noexcept { return triangles.size() / 3; }
+};
+
+/// Where a point lies relative to a triangulation.
+enum class Location : std::uint8_t {
+  outside,    ///< strictly outside the hull; `triangle`, `corner`: a hull half-edge it lies beyond
+  inside,     ///< strictly inside `triangle`
+  on_edge,    ///< on the half-edge 3 * triangle + corner (interior of the edge)
+  on_vertex,  ///< equal to vertex `corner` of `triangle`
+};
+
+/// The result of locate().
+struct LocateResult {
+  Status status = Status::ok;  ///< ok; empty_input (no triangles); non_finite_input;
+                               ///< limit_exceeded (the walk ran out of steps; fields unset)
+  Location location = Location::outside;
+  std::int32_t triangle = -1;  ///< a triangle of the result, -1 when not found
+  int corner = -1;             ///< edge or vertex index within the triangle (0..2)
+  std::size_t steps = 0;       ///< triangles visited
+};
+
+/// Half-edge helpers for the delaunator-style layout.
+[[nodiscard]] constexpr std::uint32_t next_halfedge(std::uint32_t e) noexcept {
+  return e % 3 == 2 ? e - 2 : e + 1;
+}
+[[nodiscard]] constexpr std::uint32_t prev_halfedge(std::uint32_t e) noexcept {
+  return e % 3 == 0 ? e + 2 : e - 1;
+}
+
+/// Walks from triangle `start` toward p (visibility walk; exact orient2d decides every step) and
+/// reports where p lies. max_steps = 0 means 4 * triangle_count + 16, which a walk in a Delaunay
+/// triangulation never exceeds (it never visits a triangle twice).
+template <Real T>
+[[nodiscard]] LocateResult locate(const Delaunay2Result& dt, std::span<const Vec2<T>> points,
+                                  const Vec2<T>& p, std::int32_t start = 0,
+                                  std::size_t max_steps = 0) noexcept;
+
+/// Reusable 2D Delaunay triangulator: keeps its buffers between calls, accepts further points
+/// after a triangulation, and locates points by walking.
+template <Real T>
+class Delaunay2 {
+ public:
+  /// Triangulates `points` (copied), replacing any previous state.
+  const Delaunay2Result& triangulate(std::span<const Vec2<T>> points);
+  /// The same for a flat array x0, y0, x1, y1, ... of n points.
+  const Delaunay2Result& triangulate(const T* xy, std::size_t n);
+
+  /// Adds one point (index = points().size() before the call) and restores the Delaunay
+  /// property. O(1) expected near the previous point in 2D; when the current triangulation has
+  /// dimension < 2 it is rebuilt from all points. A non-finite point is refused
+  /// (non_finite_input, nothing added).
+  Status insert(const Vec2<T>& p);
+
+  /// The triangulation of every point so far (compacted lazily after insert()).
+  const Delaunay2Result& result();
+
+  /// Moves the result out and resets the object to an empty triangulation.
+  Delaunay2Result take_result();
+
+  /// locate() on result(), starting from the triangle of the last inserted point.
+  [[nodiscard]] LocateResult locate(const Vec2<T>& p, std::size_t max_steps = 0);
+
+  [[nodiscard]] std::span<const Vec2<T>> points() const noexcept { return points_; }
+
+ private:
+  void reset();
+  void run();
+  std::uint32_t walk(const Vec2<T>& p, std::uint32_t start, std::uint32_t* duplicate) noexcept;
+  std::uint32_t scan(const Vec2<T>& p, std::uint32_t* duplicate) const noexcept;
+  bool insert_vertex(std::uint32_t v);
+  void set_triangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                    std::uint32_t opp_ab, std::uint32_t opp_bc, std::uint32_t opp_ca,
+                    std::uint32_t* out_edges) noexcept;
+  bool in_conflict(std::uint32_t p, std::uint32_t e) const noexcept;
+  void compact();
+  void lower_dimensional();
+
+  std::vector<Vec2<T>> points_;  // as given
+  std::vector<Vec2<T>> sorted_;  // internal vertex k = points_[orig_[k]], Hilbert order
+  std::vector<std::uint32_t> orig_;
+  std::vector<std::uint32_t> tri_;  // with ghost triangles (vertex kGhost at corner 2)
+  std::vector<std::uint32_t> adj_;  // opposite half-edge (the surface is closed)
+  std::vector<std::uint32_t> order_;
+  std::vector<std::uint32_t> stack_;
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::uint64_t> keys_tmp_;
+  std::uint32_t last_ = 0;      // a triangle incident to the last inserted vertex
+  std::uint32_t last_out_ = 0;  // the same triangle in result() numbering
+  int dimension_ = -1;
+  bool dirty_ = false;
+  Status status_ = Status::empty_input;
+  Delaunay2Result result_;
+};
+
+/// Delaunay triangulation of `points` (one call over Delaunay2).
+template <Real T>
+[[nodiscard]] Delaunay2Result delaunay(std::span<const Vec2<T>> points);
+
+/// Delaunay triangulation of n points given as x0, y0, x1, y1, ...
+template <Real T>
+[[nodiscard]] Delaunay2Result delaunay(const T* xy, std::size_t n);
+
+extern template class Delaunay2<float>;
+extern template class Delaunay2<double>;
+extern template Delaunay2Result delaunay<float>(std::span<const Vec2<float>>);
+extern template Delaunay2Result delaunay<double>(std::span<const Vec2<double>>);
+extern template Delaunay2Result delaunay<float>(const float*, std::size_t);
+extern template Delaunay2Result delaunay<double>(const double*, std::size_t);
+extern template LocateResult locate<float>(const Delaunay2Result&, std::span<const Vec2<float>>,
+                                           const Vec2<float>&, std::int32_t, std::size_t) noexcept;
+extern template LocateResult locate<double>(const Delaunay2Result&, std::span<const Vec2<double>>,
+                                            const Vec2<double>&, std::int32_t,
+                                            std::size_t) noexcept;
+
+}  // namespace locus

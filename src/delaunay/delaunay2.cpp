@@ -1,0 +1,712 @@
+// SPDX-License-Identifier: BSL-1.0
+// 2D Delaunay triangulation (see include/locus/delaunay/delaunay2.hpp for the contract).
+//
+// Internal representation: a closed triangulated sphere. Real triangles are counter-clockwise;
+// every hull edge u -> v (interior on its left) is matched by a ghost triangle (v, u, kGhost)
+// whose "interior" is the open half-plane beyond the edge. Ghost triangles always keep the ghost
+// vertex at corner 2 so "is ghost" is one load. adj_[e] is the opposite half-edge of e and is
+// always defined (the surface has no boundary), which removes every hull special case from the
+// split and flip code.
+
+#include <locus/delaunay/delaunay2.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <utility>
+
+namespace locus {
+
+namespace {
+
+constexpr std::uint32_t kGhost = 0xFFFFFFFFu;
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+[[nodiscard]] inline std::uint32_t nxt(std::uint32_t e) noexcept {
+  return e % 3 == 2 ? e - 2 : e + 1;
+}
+[[nodiscard]] inline std::uint32_t prv(std::uint32_t e) noexcept {
+  return e % 3 == 0 ? e + 2 : e - 1;
+}
+
+template <class T>
+[[nodiscard]] bool same_point(const Vec2<T>& a, const Vec2<T>& b) noexcept {
+  return a.x == b.x && a.y == b.y;
+}
+
+// p strictly inside the segment ab, given that a, b, p are collinear and a != b.
+template <class T>
+[[nodiscard]] bool strictly_between(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) noexcept {
+  return to_int(lexicographic_compare(a, p)) * to_int(lexicographic_compare(p, b)) > 0;
+}
+
+// Position along the Hilbert curve of the given order of the cell (x, y), 0 <= x, y < 2^levels.
+// The frame of each sub-square is the parent's composed with "flip both axes if rx" and "swap",
+// and flips commute with the swap, so the accumulated frame is two xor bits: branch-free.
+[[nodiscard]] std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int levels) noexcept {
+  std::uint32_t d = 0, flip = 0, swap = 0;
+  for (int l = levels - 1; l >= 0; --l) {
+    std::uint32_t rx = ((x >> l) & 1u) ^ flip;
+    std::uint32_t ry = ((y >> l) & 1u) ^ flip;
+    const std::uint32_t t = (rx ^ ry) & swap;
+    rx ^= t;
+    ry ^= t;
+    d = (d << 2) | ((3u * rx) ^ ry);
+    const std::uint32_t turn = ry ^ 1u;
+    flip ^= rx & turn;
+    swap ^= turn;
+  }
+  return d;
+}
+
+// Maps v in [lo, hi] to 0 .. 65535 without overflow for any finite lo <= v <= hi.
+template <class T>
+[[nodiscard]] std::uint32_t quantize(T v, T lo, T hi) noexcept {
+  const double half_span = 0.5 * double(hi) - 0.5 * double(lo);
+  if (!(half_span > 0.0)) return 0;
+  const double u = (0.5 * double(v) - 0.5 * double(lo)) / half_span;  // in [0, 1]
+  const double q = u * 65535.0;
+  if (!(q > 0.0)) return 0;
+  if (q >= 65535.0) return 65535;
+  return static_cast<std::uint32_t>(q);
+}
+
+// Sorts (key << 32 | index) values by key, stable in index: two 16-bit LSD radix passes.
+void radix_sort_keys(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& tmp) {
+  const std::size_t n = keys.size();
+  if (n < (1u << 14)) {
+    std::sort(keys.begin(), keys.end());
+    return;
+  }
+  tmp.resize(n);
+  std::vector<std::uint32_t> count(1u << 16);
+  for (int pass = 0; pass < 2; ++pass) {
+    const int shift = 32 + 16 * pass;
+    std::fill(count.begin(), count.end(), 0u);
+    for (const std::uint64_t k : keys) ++count[(k >> shift) & 0xFFFFu];
+    std::uint32_t sum = 0;
+    for (auto& c : count) {
+      const std::uint32_t c0 = c;
+      c = sum;
+      sum += c0;
+    }
+    for (const std::uint64_t k : keys) tmp[count[(k >> shift) & 0xFFFFu]++] = k;
+    keys.swap(tmp);
+  }
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCUS_D2_INLINE [[gnu::always_inline]] inline
+#else
+#define LOCUS_D2_INLINE inline
+#endif
+
+// True when x - y is computed exactly (Knuth's two-difference has a zero tail).
+[[nodiscard]] inline bool exact_difference(double x, double y, double diff) noexcept {
+  const double bvirt = x - diff;
+  const double avirt = diff + bvirt;
+  return (x - avirt) + (bvirt - y) == 0.0;
+}
+
+// The incircle filter fails on every exactly cocircular quadruple (grids!), and the adaptive
+// fallback costs ~0.5 us. When the six differences are exact and are all integer multiples of a
+// power of two q with |difference| < 2^12 q, every product and sum of the double evaluation is
+// an integer multiple of q^4 below 2^53 q^4, so the double determinant is exact and so is its
+// sign. Otherwise defer to the exact predicate.
+[[gnu::noinline]] Sign incircle_slow(const Vec2<double>& a, const Vec2<double>& b,
+                                     const Vec2<double>& c, const Vec2<double>& d) noexcept {
+  const double dx[3] = {a.x - d.x, b.x - d.x, c.x - d.x};
+  const double dy[3] = {a.y - d.y, b.y - d.y, c.y - d.y};
+  const double xs[3] = {a.x, b.x, c.x};
+  const double ys[3] = {a.y, b.y, c.y};
+  double m = 0.0;
+  bool exact = true;
+  for (int i = 0; i < 3; ++i) {
+    exact = exact && exact_difference(xs[i], d.x, dx[i]) && exact_difference(ys[i], d.y, dy[i]);
+    m = std::max(m, std::max(std::abs(dx[i]), std::abs(dy[i])));
+  }
+  if (exact && m > 0.0 && std::isfinite(m)) {
+    int e = 0;
+    std::frexp(m, &e);                             // m < 2^e
+    const double inv_q = std::ldexp(1.0, 12 - e);  // 1 / q with q = 2^(e - 12)
+    // q^4 must not underflow (4 (e - 12) >= -1074) nor 2^52 q^4 overflow.
+    bool on_lattice = e > -250 && e < 250;
+    for (int i = 0; i < 3 && on_lattice; ++i) {
+      const double u = dx[i] * inv_q, w = dy[i] * inv_q;
+      on_lattice = u == std::nearbyint(u) && w == std::nearbyint(w);
+    }
+    if (on_lattice) {
+      const double alift = dx[0] * dx[0] + dy[0] * dy[0];
+      const double blift = dx[1] * dx[1] + dy[1] * dy[1];
+      const double clift = dx[2] * dx[2] + dy[2] * dy[2];
+      const double det = alift * (dx[1] * dy[2] - dx[2] * dy[1]) +
+                         blift * (dx[2] * dy[0] - dx[0] * dy[2]) +
+                         clift * (dx[0] * dy[1] - dx[1] * dy[0]);
+      return sign_of(det);
+    }
+  }
+  return incircle(a, b, c, d);
+}
+
+template <class T>
+LOCUS_D2_INLINE Sign incircle_fast(const Vec2<T>& pa, const Vec2<T>& pb, const Vec2<T>& pc,
+                                   const Vec2<T>& pd) noexcept {
+  const Vec2<double> a = detail::to_double(pa), b = detail::to_double(pb),
+                     c = detail::to_double(pc), d = detail::to_double(pd);
+  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det =
+      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
+                           (std::abs(cdxady) + std::abs(adxcdy)) * blift +
+                           (std::abs(adxbdy) + std::abs(bdxady)) * clift;
+  // The same stage-A bound as core/predicates.hpp.
+  if (std::abs(det) > detail::incircle_bound_a * permanent) [[likely]]
+    return detail::nonzero_sign(det);
+  return incircle_slow(a, b, c, d);
+}
+
+// The general case of Delaunay2::set_triangle: a ghost vertex at corner 0 or 1 is rotated to
+// corner 2.
+[[gnu::noinline]] void set_triangle_rotated(std::uint32_t* tri, std::uint32_t* adj, std::uint32_t t,
+                                            const std::uint32_t* v, const std::uint32_t* o,
+                                            std::uint32_t* out) noexcept {
+  const int shift = v[0] == kGhost ? 1 : 2;  // original corner src lands at (src - shift) mod 3
+  const std::uint32_t base = 3 * t;
+  for (int i = 0; i < 3; ++i) {
+    const int src = (i + shift) % 3;
+    const std::uint32_t e = base + static_cast<std::uint32_t>(i);
+    tri[e] = v[src];
+    out[src] = e;
+    adj[e] = o[src];
+    if (o[src] != kNone) adj[o[src]] = e;
+  }
+}
+
+}  // namespace
+
+// ---- locate on a result -----------------------------------------------------------------
+
+template <Real T>
+LocateResult locate(const Delaunay2Result& dt, std::span<const Vec2<T>> points, const Vec2<T>& p,
+                    std::int32_t start, std::size_t max_steps) noexcept {
+  LocateResult r;
+  const std::size_t nt = dt.triangles.size() / 3;
+  if (nt == 0 || dt.halfedges.size() != dt.triangles.size()) {
+    r.status = Status::empty_input;
+    return r;
+  }
+  if (!is_finite(p.x) || !is_finite(p.y)) {
+    r.status = Status::non_finite_input;
+    return r;
+  }
+  if (max_steps == 0) max_steps = 4 * nt + 16;
+  std::uint32_t t =
+      (start >= 0 && static_cast<std::size_t>(start) < nt) ? static_cast<std::uint32_t>(start) : 0u;
+  std::uint32_t came = kNone;
+  for (std::size_t step = 0; step < max_steps; ++step) {
+    r.steps = step + 1;
+    const std::uint32_t base = 3 * t;
+    unsigned zero_mask = 0;
+    bool moved = false;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t e = base + i;
+      if (e == came) continue;
+      const std::uint32_t a = dt.triangles[e], b = dt.triangles[nxt(e)];
+      if (a >= points.size() || b >= points.size()) {
+        r.status = Status::invalid_input;
+        return r;
+      }
+      const Sign s = orient2d(points[a], points[b], p);
+      if (s == Sign::negative) {
+        const std::int32_t o = dt.halfedges[e];
+        if (o < 0) {
+          r.location = Location::outside;
+          r.triangle = static_cast<std::int32_t>(t);
+          r.corner = static_cast<int>(i);
+          return r;
+        }
+        came = static_cast<std::uint32_t>(o);
+        t = came / 3;
+        moved = true;
+        break;
+      }
+      if (s == Sign::zero) zero_mask |= 1u << i;
+    }
+    if (moved) continue;
+    r.triangle = static_cast<std::int32_t>(t);
+    const int zeros = std::popcount(zero_mask);
+    if (zeros == 0) {
+      r.location = Location::inside;
+    } else if (zeros == 1) {
+      r.location = Location::on_edge;
+      r.corner = std::countr_zero(zero_mask);
+    } else {
+      // Two edges through p: p is their shared vertex (edges i and i + 1 share vertex i + 1).
+      r.location = Location::on_vertex;
+      r.corner = zero_mask == 3u ? 1 : (zero_mask == 6u ? 2 : 0);
+    }
+    return r;
+  }
+  r.status = Status::limit_exceeded;
+  r.triangle = -1;
+  return r;
+}
+
+// ---- Delaunay2 ---------------------------------------------------------------------------
+
+template <Real T>
+void Delaunay2<T>::reset() {
+  tri_.clear();
+  adj_.clear();
+  order_.clear();
+  stack_.clear();
+  last_ = 0;
+  dimension_ = -1;
+  dirty_ = true;
+  status_ = Status::ok;
+  result_.duplicate_of.clear();
+  sorted_.clear();
+  orig_.clear();
+}
+
+template <Real T>
+const Delaunay2Result& Delaunay2<T>::triangulate(std::span<const Vec2<T>> points) {
+  points_.assign(points.begin(), points.end());
+  run();
+  return result();
+}
+
+template <Real T>
+const Delaunay2Result& Delaunay2<T>::triangulate(const T* xy, std::size_t n) {
+  points_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) points_[i] = Vec2<T>{xy[2 * i], xy[2 * i + 1]};
+  run();
+  return result();
+}
+
+template <Real T>
+LOCUS_D2_INLINE void Delaunay2<T>::set_triangle(std::uint32_t t, std::uint32_t a, std::uint32_t b,
+                                                std::uint32_t c, std::uint32_t opp_ab,
+                                                std::uint32_t opp_bc, std::uint32_t opp_ca,
+                                                std::uint32_t* out) noexcept {
+  const std::uint32_t base = 3 * t;
+  if (a != kGhost && b != kGhost) [[likely]] {
+    tri_[base] = a;
+    tri_[base + 1] = b;
+    tri_[base + 2] = c;
+    out[0] = base;
+    out[1] = base + 1;
+    out[2] = base + 2;
+    adj_[base] = opp_ab;
+    adj_[base + 1] = opp_bc;
+    adj_[base + 2] = opp_ca;
+    if (opp_ab != kNone) adj_[opp_ab] = base;
+    if (opp_bc != kNone) adj_[opp_bc] = base + 1;
+    if (opp_ca != kNone) adj_[opp_ca] = base + 2;
+    return;
+  }
+  const std::uint32_t v[3] = {a, b, c};
+  const std::uint32_t o[3] = {opp_ab, opp_bc, opp_ca};
+  set_triangle_rotated(tri_.data(), adj_.data(), t, v, o, out);
+}
+
+template <Real T>
+LOCUS_D2_INLINE bool Delaunay2<T>::in_conflict(std::uint32_t v, std::uint32_t e) const noexcept {
+  const std::uint32_t o = adj_[e];
+  const std::uint32_t base = o - o % 3;
+  const Vec2<T>* pts = sorted_.data();
+  const Vec2<T>& p = pts[v];
+  if (tri_[base + 2] == kGhost) {
+    const Vec2<T>& u = pts[tri_[base]];
+    const Vec2<T>& w = pts[tri_[base + 1]];
+    const Sign s = orient2d(u, w, p);
+    return s == Sign::positive || (s == Sign::zero && strictly_between(u, w, p));
+  }
+  return incircle_fast(pts[tri_[o]], pts[tri_[nxt(o)]], pts[tri_[prv(o)]], p) == Sign::positive;
+}
+
+template <Real T>
+std::uint32_t Delaunay2<T>::scan(const Vec2<T>& p, std::uint32_t* duplicate) const noexcept {
+  const Vec2<T>* pts = sorted_.data();
+  const std::uint32_t nt = static_cast<std::uint32_t>(tri_.size() / 3);
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    const std::uint32_t base = 3 * t;
+    if (tri_[base + 2] == kGhost) continue;
+    unsigned zero_mask = 0;
+    bool inside = true;
+    for (std::uint32_t i = 0; i < 3 && inside; ++i) {
+      const Sign s = orient2d(pts[tri_[base + i]], pts[tri_[nxt(base + i)]], p);
+      if (s == Sign::negative) inside = false;
+      if (s == Sign::zero) zero_mask |= 1u << i;
+    }
+    if (!inside) continue;
+    if (std::popcount(zero_mask) >= 2) {
+      const std::uint32_t corner = zero_mask == 3u ? 1u : (zero_mask == 6u ? 2u : 0u);
+      *duplicate = tri_[base + corner];
+    }
+    return t;
+  }
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    const std::uint32_t base = 3 * t;
+    if (tri_[base + 2] != kGhost) continue;
+    if (orient2d(pts[tri_[base]], pts[tri_[base + 1]], p) == Sign::positive) return t;
+  }
+  return 0;  // unreachable for a valid triangulation
+}
+
+template <Real T>
+std::uint32_t Delaunay2<T>::walk(const Vec2<T>& p, std::uint32_t t,
+                                 std::uint32_t* duplicate) noexcept {
+  // A visibility walk in a Delaunay triangulation never revisits a triangle (Edelsbrunner), so
+  // it ends within the triangle count; the budget is a guard against a corrupted structure.
+  const std::size_t budget = tri_.size() / 3 + 64;
+  const Vec2<T>* pts = sorted_.data();
+  std::uint32_t came = kNone;
+  for (std::size_t step = 0; step < budget; ++step) {
+    const std::uint32_t base = 3 * t;
+    if (tri_[base + 2] == kGhost) {
+      if (orient2d(pts[tri_[base]], pts[tri_[base + 1]], p) == Sign::positive) return t;
+      t = adj_[base] / 3;
+      came = kNone;  // p may lie on that hull edge: test it again from inside
+      continue;
+    }
+    unsigned zero_mask = 0;
+    bool moved = false;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t e = base + i;
+      if (e == came) continue;
+      const Sign s = orient2d(pts[tri_[e]], pts[tri_[nxt(e)]], p);
+      if (s == Sign::negative) {
+        came = adj_[e];
+        t = came / 3;
+        moved = true;
+        break;
+      }
+      if (s == Sign::zero) zero_mask |= 1u << i;
+    }
+    if (moved) continue;
+    if (std::popcount(zero_mask) >= 2) {
+      const std::uint32_t corner = zero_mask == 3u ? 1u : (zero_mask == 6u ? 2u : 0u);
+      *duplicate = tri_[base + corner];
+    }
+    return t;
+  }
+  return scan(p, duplicate);
+}
+
+template <Real T>
+bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
+  std::uint32_t dup = kNone;
+  const std::uint32_t t = walk(sorted_[v], last_, &dup);
+  if (dup != kNone) {
+    result_.duplicate_of[orig_[v]] = orig_[dup];
+    last_ = t;
+    return true;
+  }
+  const std::uint32_t base = 3 * t;
+  const std::uint32_t a = tri_[base], b = tri_[base + 1], c = tri_[base + 2];
+  const std::uint32_t oab = adj_[base], obc = adj_[base + 1], oca = adj_[base + 2];
+  const std::uint32_t t1 = static_cast<std::uint32_t>(tri_.size() / 3);
+  const std::uint32_t t2 = t1 + 1;
+  tri_.resize(tri_.size() + 6);
+  adj_.resize(adj_.size() + 6);
+  std::uint32_t e0[3], e1[3], e2[3];
+  set_triangle(t, a, b, v, oab, kNone, kNone, e0);
+  set_triangle(t1, b, c, v, obc, kNone, kNone, e1);
+  set_triangle(t2, c, a, v, oca, kNone, kNone, e2);
+  adj_[e0[1]] = e1[2];
+  adj_[e1[2]] = e0[1];
+  adj_[e1[1]] = e2[2];
+  adj_[e2[2]] = e1[1];
+  adj_[e2[1]] = e0[2];
+  adj_[e0[2]] = e2[1];
+  stack_.clear();
+  stack_.push_back(e0[0]);
+  stack_.push_back(e1[0]);
+  stack_.push_back(e2[0]);
+  last_ = t;
+
+  // Lawson: flip link edges while v is strictly inside the circle across them. Each flip adds
+  // an edge at v, so the number of flips is below the vertex count; the budget only guards.
+  std::size_t budget = 3 * (tri_.size() / 3) + 64;
+  while (!stack_.empty()) {
+    if (budget-- == 0) return false;
+    const std::uint32_t e = stack_.back();
+    stack_.pop_back();
+    if (!in_conflict(v, e)) continue;
+    const std::uint32_t o = adj_[e];
+    const std::uint32_t x = tri_[e], y = tri_[nxt(e)];
+    const std::uint32_t z = tri_[prv(o)];
+    const std::uint32_t a1 = adj_[nxt(e)], a2 = adj_[prv(e)];
+    const std::uint32_t b1 = adj_[nxt(o)], b2 = adj_[prv(o)];
+    const std::uint32_t ta = e / 3, tb = o / 3;
+    std::uint32_t f[3], g[3];
+    set_triangle(ta, v, x, z, a2, b1, kNone, f);
+    set_triangle(tb, v, z, y, kNone, b2, a1, g);
+    adj_[f[2]] = g[0];
+    adj_[g[0]] = f[2];
+    stack_.push_back(f[1]);
+    stack_.push_back(g[1]);
+    last_ = ta;
+  }
+  return true;
+}
+
+template <Real T>
+void Delaunay2<T>::lower_dimensional() {
+  // All distinct points collinear (or a single one): sort lexicographically; equal neighbours
+  // are duplicates of the first of their run (smallest index, as the sort is stable on ties).
+  const std::size_t n = points_.size();
+  std::vector<std::uint32_t> idx(n);
+  std::iota(idx.begin(), idx.end(), 0u);
+  std::stable_sort(idx.begin(), idx.end(), [&](std::uint32_t i, std::uint32_t j) {
+    return lexicographic_compare(points_[i], points_[j]) == Sign::negative;
+  });
+  result_.hull.clear();
+  std::uint32_t kept = idx[0];
+  result_.hull.push_back(kept);
+  result_.duplicate_of[kept] = kept;
+  for (std::size_t k = 1; k < n; ++k) {
+    const std::uint32_t i = idx[k];
+    if (same_point(points_[i], points_[kept])) {
+      result_.duplicate_of[i] = kept;
+    } else {
+      kept = i;
+      result_.duplicate_of[i] = i;
+      result_.hull.push_back(i);
+    }
+  }
+  dimension_ = result_.hull.size() == 1 ? 0 : 1;
+}
+
+template <Real T>
+void Delaunay2<T>::run() {
+  reset();
+  const std::size_t n = points_.size();
+  result_.duplicate_of.resize(n);
+  std::iota(result_.duplicate_of.begin(), result_.duplicate_of.end(), 0u);
+  if (n == 0) {
+    status_ = Status::empty_input;
+    return;
+  }
+  if (n >= std::size_t(0x7FFFFFFF) / 3) {  // half-edge indices must fit in int32
+    status_ = Status::invalid_input;
+    return;
+  }
+  T lo_x = points_[0].x, hi_x = lo_x, lo_y = points_[0].y, hi_y = lo_y;
+  bool finite = true;
+  for (const auto& q : points_) {
+    finite = finite && is_finite(q.x) && is_finite(q.y);
+    lo_x = std::min(lo_x, q.x);
+    hi_x = std::max(hi_x, q.x);
+    lo_y = std::min(lo_y, q.y);
+    hi_y = std::max(hi_y, q.y);
+  }
+  if (!finite) {
+    status_ = Status::non_finite_input;
+    return;
+  }
+
+  // Hilbert order (ties in input order), on a grid of about 16 cells per point: finer levels
+  // cost time without improving locality.
+  int levels = 4;
+  while (levels < 16 && (std::size_t(1) << (2 * levels)) < 16 * n) ++levels;
+  keys_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t h =
+        hilbert_index(quantize(points_[i].x, lo_x, hi_x) >> (16 - levels),
+                      quantize(points_[i].y, lo_y, hi_y) >> (16 - levels), levels);
+    keys_[i] = (std::uint64_t(h) << 32) | std::uint64_t(i);
+  }
+  radix_sort_keys(keys_, keys_tmp_);
+  // The triangulation works on a copy of the points in Hilbert order (vertex k is input point
+  // orig_[k]), so the coordinates a walk or an incircle test reads are close in memory.
+  orig_.resize(n);
+  sorted_.resize(n);
+  order_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    orig_[k] = static_cast<std::uint32_t>(keys_[k]);
+    sorted_[k] = points_[orig_[k]];
+    order_[k] = static_cast<std::uint32_t>(k);
+  }
+
+  // A first non-degenerate triangle: the first point, the first different one, the first one
+  // off their line.
+  const Vec2<T>* pts = sorted_.data();
+  const std::uint32_t p0 = order_[0];
+  std::size_t k1 = 1;
+  while (k1 < n && same_point(pts[order_[k1]], pts[p0])) ++k1;
+  if (k1 == n) {
+    lower_dimensional();
+    return;
+  }
+  const std::uint32_t p1 = order_[k1];
+  std::size_t k2 = k1 + 1;
+  while (k2 < n && orient2d(pts[p0], pts[p1], pts[order_[k2]]) == Sign::zero) ++k2;
+  if (k2 == n) {
+    lower_dimensional();
+    return;
+  }
+  dimension_ = 2;
+  const std::uint32_t p2 = order_[k2];
+  std::uint32_t a = p0, b = p1, c = p2;
+  if (orient2d(pts[a], pts[b], pts[c]) == Sign::negative) std::swap(b, c);
+
+  tri_.reserve(6 * (n + 1));
+  adj_.reserve(6 * (n + 1));
+  tri_.resize(12);
+  adj_.resize(12);
+  // t0 = (a, b, c); ghosts t1 = (b, a, G), t2 = (c, b, G), t3 = (a, c, G).
+  const std::uint32_t init_tri[12] = {a, b, c, b, a, kGhost, c, b, kGhost, a, c, kGhost};
+  // Opposite half-edges: a->b (0) / b->a (3); b->c (1) / c->b (6); c->a (2) / a->c (9);
+  // a->G (4) / G->a (11); b->G (7) / G->b (5); c->G (10) / G->c (8).
+  const std::uint32_t init_adj[12] = {3, 6, 9, 0, 11, 7, 1, 5, 10, 2, 8, 4};
+  std::copy(init_tri, init_tri + 12, tri_.begin());
+  std::copy(init_adj, init_adj + 12, adj_.begin());
+  last_ = 0;
+
+  for (std::size_t k = 1; k < k1; ++k) result_.duplicate_of[orig_[k]] = orig_[p0];
+  bool ok = true;
+  for (std::size_t k = k1 + 1; k < n && ok; ++k) {
+    if (k == k2) continue;
+    ok = insert_vertex(order_[k]);
+  }
+  if (!ok) status_ = Status::limit_exceeded;
+}
+
+template <Real T>
+void Delaunay2<T>::compact() {
+  Delaunay2Result& r = result_;
+  r.status = status_;
+  r.dimension = dimension_;
+  r.triangles.clear();
+  r.halfedges.clear();
+  r.duplicate_count = 0;
+  for (std::size_t i = 0; i < r.duplicate_of.size(); ++i)
+    r.duplicate_count += r.duplicate_of[i] != i ? 1u : 0u;
+  if (dimension_ < 2) {
+    if (dimension_ < 0) r.hull.clear();
+    return;
+  }
+  r.hull.clear();
+  const std::uint32_t nt = static_cast<std::uint32_t>(tri_.size() / 3);
+  // New index of each real triangle; ghosts map to kNone.
+  order_.resize(nt);
+  std::uint32_t count = 0;
+  std::uint32_t some_ghost = kNone;
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (tri_[3 * t + 2] == kGhost) {
+      order_[t] = kNone;
+      some_ghost = t;
+    } else {
+      order_[t] = count++;
+    }
+  }
+  r.triangles.resize(3 * std::size_t(count));
+  r.halfedges.resize(3 * std::size_t(count));
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    const std::uint32_t nt_new = order_[t];
+    if (nt_new == kNone) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t e = 3 * t + i;
+      r.triangles[3 * nt_new + i] = orig_[tri_[e]];
+      const std::uint32_t o = adj_[e];
+      const std::uint32_t to = order_[o / 3];
+      r.halfedges[3 * nt_new + i] = to == kNone ? -1 : static_cast<std::int32_t>(3 * to + o % 3);
+    }
+  }
+  // Hull: ghost (u, v, G) lies beyond hull edge v -> u; the ghost across its half-edge G -> u
+  // is (w, u, G), so visiting u, w, ... follows the hull counter-clockwise.
+  if (some_ghost != kNone) {
+    std::uint32_t g = some_ghost;
+    for (std::uint32_t guard = 0; guard < nt; ++guard) {
+      r.hull.push_back(orig_[tri_[3 * g]]);
+      g = adj_[3 * g + 2] / 3;
+      if (g == some_ghost) break;
+    }
+    const auto smallest = std::min_element(r.hull.begin(), r.hull.end());
+    std::rotate(r.hull.begin(), smallest, r.hull.end());
+  }
+  // Triangle of the last point, renumbered, as the walk start of locate().
+  last_out_ = order_[last_] == kNone ? order_[adj_[3 * last_] / 3] : order_[last_];
+  order_.clear();
+}
+
+template <Real T>
+const Delaunay2Result& Delaunay2<T>::result() {
+  if (dirty_) {
+    compact();
+    dirty_ = false;
+  }
+  return result_;
+}
+
+template <Real T>
+Delaunay2Result Delaunay2<T>::take_result() {
+  result();
+  Delaunay2Result r = std::move(result_);
+  points_.clear();
+  run();
+  return r;
+}
+
+template <Real T>
+Status Delaunay2<T>::insert(const Vec2<T>& p) {
+  if (!is_finite(p.x) || !is_finite(p.y)) return Status::non_finite_input;
+  if (status_ == Status::non_finite_input) return status_;
+  points_.push_back(p);
+  dirty_ = true;
+  if (dimension_ < 2) {
+    run();
+    return status_;
+  }
+  const std::uint32_t v = static_cast<std::uint32_t>(sorted_.size());
+  result_.duplicate_of.push_back(static_cast<std::uint32_t>(points_.size() - 1));
+  sorted_.push_back(p);
+  orig_.push_back(static_cast<std::uint32_t>(points_.size() - 1));
+  if (!insert_vertex(v)) status_ = Status::limit_exceeded;
+  return status_;
+}
+
+template <Real T>
+LocateResult Delaunay2<T>::locate(const Vec2<T>& p, std::size_t max_steps) {
+  const Delaunay2Result& r = result();
+  return ::locus::locate<T>(r, std::span<const Vec2<T>>(points_), p,
+                            static_cast<std::int32_t>(last_out_), max_steps);
+}
+
+template <Real T>
+Delaunay2Result delaunay(std::span<const Vec2<T>> points) {
+  Delaunay2<T> d;
+  d.triangulate(points);
+  return d.take_result();
+}
+
+template <Real T>
+Delaunay2Result delaunay(const T* xy, std::size_t n) {
+  Delaunay2<T> d;
+  d.triangulate(xy, n);
+  return d.take_result();
+}
+
+template class Delaunay2<float>;
+template class Delaunay2<double>;
+template Delaunay2Result delaunay<float>(std::span<const Vec2<float>>);
+template Delaunay2Result delaunay<double>(std::span<const Vec2<double>>);
+template Delaunay2Result delaunay<float>(const float*, std::size_t);
+template Delaunay2Result delaunay<double>(const double*, std::size_t);
+template LocateResult locate<float>(const Delaunay2Result&, std::span<const Vec2<float>>,
+                                    const Vec2<float>&, std::int32_t, std::size_t) noexcept;
+template LocateResult locate<double>(const Delaunay2Result&, std::span<const Vec2<double>>,
+                                     const Vec2<double>&, std::int32_t, std::size_t) noexcept;
+
+}  // namespace locus
