@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: BSL-1.0
+// Tests for distance/point_rectangle.hpp, point_aligned_box.hpp, point_oriented_box.hpp (rows
+// dist2.pt-rectangle, dist3.pt-rectangle, dist3.pt-obb; book figures 6.10, 10.11-10.13, 10.21,
+// 10.22).
+#include <locus/distance/point_aligned_box.hpp>
+#include <locus/distance/point_oriented_box.hpp>
+#include <locus/distance/point_rectangle.hpp>
+
+#include "distance/exact.hpp"
+#include "distance/harness.hpp"
+#include "support/typed.hpp"
+
+#include <limits>
+#include <utility>
+
+using namespace locus;
+using locus_test::Rng;
+using locus_test::tol;
+namespace dist = locus_test::dist;
+namespace ex = locus_test::exact;
+
+template <class T>
+class PointBoxTest : public ::testing::Test {};
+TYPED_TEST_SUITE(PointBoxTest, locus_test::RealTypes);
+
+namespace {
+
+// Extents in [0, 5], one in 8 exactly zero (flat boxes and rectangles).
+template <class T>
+T random_extent(Rng& rng) {
+  return rng.uniform_int(0, 7) == 0 ? T(0) : rng.uniform<T>(T(0.01), T(5));
+}
+
+template <class T, int N>
+OrientedBox<T, N> random_obb(Rng& rng, T S) {
+  const auto r = dist::random_rotation<T, N>(rng);
+  OrientedBox<T, N> b{};
+  b.center = rng.vec<T, N>(-S, S);
+  for (int i = 0; i < N; ++i) {
+    b.axis[i] = col(r, i);
+    b.extent[i] = random_extent<T>(rng);
+  }
+  return b;
+}
+
+template <class T, int N>
+Rectangle<T, N> random_rectangle(Rng& rng, T S) {
+  const auto r = dist::random_rotation<T, N>(rng);
+  return {
+      rng.vec<T, N>(-S, S), {col(r, 0), col(r, 1)}, {random_extent<T>(rng), random_extent<T>(rng)}};
+}
+
+template <class T, int N>
+AlignedBox<T, N> random_aabb(Rng& rng, T S) {
+  const auto c = rng.vec<T, N>(-S, S);
+  Vec<T, N> e{};
+  for (int i = 0; i < N; ++i) e[i] = random_extent<T>(rng);
+  return {c - e, c + e};
+}
+
+template <class T, int N>
+void harness() {
+  const T S = 10;
+  dist::check_pairs<T, N, Vec<T, N>, AlignedBox<T, N>>([&](Rng& rng) {
+    return std::pair{rng.vec<T, N>(-S, S), random_aabb<T, N>(rng, S)};
+  });
+  dist::check_pairs<T, N, Vec<T, N>, OrientedBox<T, N>>([&](Rng& rng) {
+    return std::pair{rng.vec<T, N>(-S, S), random_obb<T, N>(rng, S)};
+  });
+  dist::check_pairs<T, N, Vec<T, N>, Rectangle<T, N>>([&](Rng& rng) {
+    return std::pair{rng.vec<T, N>(-S, S), random_rectangle<T, N>(rng, S)};
+  });
+}
+
+// Exact oracle for the aligned box (sum of squared excesses in rationals), and a second
+// algorithm for the oriented box: the aligned query in the box's frame.
+template <class T, int N>
+void oracles() {
+  Rng rng(locus_test::test_seed() + 11);
+  SCOPED_TRACE(rng.trace());
+  const T S = 10;
+  for (int n = 0; n < 400; ++n) {
+    const auto p = rng.vec<T, N>(-S, S);
+    const auto box = random_aabb<T, N>(rng, S);
+    mpq_class e = 0;
+    for (int i = 0; i < N; ++i) {
+      const mpq_class x(double(p[i])), lo(double(box.min[i])), hi(double(box.max[i]));
+      if (x < lo) e += (lo - x) * (lo - x);
+      if (x > hi) e += (x - hi) * (x - hi);
+    }
+    const auto r = distance(p, box);
+    EXPECT_NEAR(double(r.sqr_distance), e.get_d(), double(tol<T>(8, S * S))) << "case " << n;
+    const auto obb = random_obb<T, N>(rng, S);
+    Vec<T, N> local{};
+    for (int i = 0; i < N; ++i) local[i] = dot(p - obb.center, obb.axis[i]);
+    const auto o = distance(p, obb);
+    const auto a = distance(local, AlignedBox<T, N>{-obb.extent, obb.extent});
+    EXPECT_NEAR(o.sqr_distance, a.sqr_distance, tol<T>(64, S * S)) << "case " << n;
+  }
+}
+
+}  // namespace
+
+TYPED_TEST(PointBoxTest, Harness2D) { harness<TypeParam, 2>(); }
+TYPED_TEST(PointBoxTest, Harness3D) { harness<TypeParam, 3>(); }
+TYPED_TEST(PointBoxTest, ExactAndFrameOracles2D) { oracles<TypeParam, 2>(); }
+TYPED_TEST(PointBoxTest, ExactAndFrameOracles3D) { oracles<TypeParam, 3>(); }
+
+// Figure 6.10: the nine regions around a rectangle: inside, four edge strips, four corners.
+TYPED_TEST(PointBoxTest, Figure6_10NineRegions) {
+  using T = TypeParam;
+  const Rectangle2<T> r{{T(1), T(1)}, {{T(0.6), T(0.8)}, {T(-0.8), T(0.6)}}, {T(5), T(2.5)}};
+  for (int i = -1; i <= 1; ++i) {
+    for (int j = -1; j <= 1; ++j) {
+      SCOPED_TRACE("region " + std::to_string(i) + "," + std::to_string(j));
+      // Local coordinates: inside the strip (|s| < 5) or 3 beyond it; same for t with 2.
+      const T s = i == 0 ? T(2) : T(i) * T(8), t = j == 0 ? T(-1) : T(j) * T(6.5);
+      const auto p = point_at(r, Vec2<T>{s, t});
+      const auto d = distance(p, r);
+      const T es = i == 0 ? T(0) : T(3), et = j == 0 ? T(0) : T(4);
+      EXPECT_NEAR(d.distance, std::sqrt(es * es + et * et), tol<T>(32, T(10)));
+      EXPECT_NEAR(d.param_b.x, i == 0 ? s : T(i) * T(5), tol<T>(16, T(10)));
+      EXPECT_NEAR(d.param_b.y, j == 0 ? t : T(j) * T(2.5), tol<T>(16, T(10)));
+    }
+  }
+}
+
+// Figures 10.11-10.13: a rectangle in 3D; the height above the plane adds in quadrature.
+TYPED_TEST(PointBoxTest, Figure10_11RectangleIn3D) {
+  using T = TypeParam;
+  const Rectangle3<T> r{{T(0), T(0), T(0)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}}, {T(2), T(1)}};
+  const auto above = distance(Vec3<T>{T(1), T(0.5), T(4)}, r);
+  EXPECT_EQ(above.distance, T(4));
+  EXPECT_EQ(above.param_b, (Vec2<T>{T(1), T(0.5)}));
+  const auto corner = distance(Vec3<T>{T(5), T(5), T(12)}, r);
+  EXPECT_EQ(corner.closest[1], (Vec3<T>{T(2), T(1), T(0)}));
+  EXPECT_EQ(corner.distance, T(13));
+}
+
+// Figures 10.21 / 10.22: point to AABB and OBB, inside, face, edge and corner regions.
+TYPED_TEST(PointBoxTest, Figure10_21BoxRegions) {
+  using T = TypeParam;
+  const AlignedBox3<T> box{{T(0), T(0), T(0)}, {T(2), T(4), T(6)}};
+  EXPECT_EQ(distance(Vec3<T>{T(1), T(1), T(1)}, box).distance, T(0));
+  EXPECT_EQ(distance(Vec3<T>{T(1), T(1), T(9)}, box).distance, T(3));  // face
+  EXPECT_EQ(distance(Vec3<T>{T(5), T(8), T(3)}, box).distance, T(5));  // edge
+  const auto c = distance(Vec3<T>{T(-2), T(-4), T(10)}, box);          // corner
+  EXPECT_EQ(c.closest[1], (Vec3<T>{T(0), T(0), T(6)}));
+  EXPECT_EQ(c.distance, T(6));
+  EXPECT_EQ(c.param_b, (Vec3<T>{T(0), T(0), T(1)}));
+  // The same box as an OBB rotated by 90 degrees about z: (x, y) -> (-y, x).
+  OrientedBox3<T> obb{{T(-2), T(1), T(3)},
+                      {{T(0), T(1), T(0)}, {T(-1), T(0), T(0)}, {T(0), T(0), T(1)}},
+                      {T(1), T(2), T(3)}};
+  const auto o = distance(Vec3<T>{T(4), T(-2), T(10)}, obb);  // the corner case, rotated
+  EXPECT_EQ(o.closest[1], (Vec3<T>{T(0), T(0), T(6)}));
+  EXPECT_EQ(o.distance, T(6));
+  EXPECT_EQ(o.param_b, (Vec3<T>{T(-1), T(-1), T(1)}));
+  EXPECT_EQ(closest_point(Vec3<T>{T(4), T(-2), T(10)}, obb), o.closest[1]);
+  EXPECT_EQ(distance(obb, Vec3<T>{T(4), T(-2), T(10)}).closest[0], o.closest[1]);
+}
+
+// Flat boxes (zero extents) and negative extents.
+TYPED_TEST(PointBoxTest, FlatBoxes) {
+  using T = TypeParam;
+  const AlignedBox2<T> seg{{T(0), T(1)}, {T(4), T(1)}};
+  const auto r = distance(Vec2<T>{T(2), T(4)}, seg);
+  EXPECT_EQ(r.distance, T(3));
+  EXPECT_EQ(r.param_b, (Vec2<T>{T(0.5), T(0)}));
+  const OrientedBox2<T> point{{T(1), T(1)}, {{T(1), T(0)}, {T(0), T(1)}}, {T(0), T(0)}};
+  EXPECT_EQ(distance(Vec2<T>{T(4), T(5)}, point).distance, T(5));
+  const OrientedBox2<T> neg{{T(1), T(1)}, {{T(1), T(0)}, {T(0), T(1)}}, {T(-2), T(0)}};
+  EXPECT_EQ(distance(Vec2<T>{T(4), T(5)}, neg).distance, T(5));
+  const Rectangle3<T> line{
+      {T(0), T(0), T(0)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}}, {T(3), T(-1)}};
+  EXPECT_EQ(distance(Vec3<T>{T(0), T(3), T(4)}, line).distance, T(5));
+}
+
+TYPED_TEST(PointBoxTest, NonFiniteAndEmptyInputGiveNaNResult) {
+  using T = TypeParam;
+  const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+  const AlignedBox3<T> box{{T(0), T(0), T(0)}, {T(1), T(1), T(1)}};
+  EXPECT_TRUE(dist::is_nan_result(distance(Vec3<T>{nan, T(0), T(0)}, box)));
+  EXPECT_TRUE(dist::is_nan_result(distance(Vec3<T>{}, empty_box<T, 3>())));
+  EXPECT_TRUE(dist::is_nan_result(
+      distance(Vec3<T>{}, AlignedBox3<T>{{T(2), T(0), T(0)}, {T(1), T(1), T(1)}})));
+  EXPECT_TRUE(dist::is_nan_result(distance(box, Vec3<T>{T(0), inf, T(0)})));
+  OrientedBox3<T> obb = oriented_box(box);
+  obb.axis[1].y = nan;
+  EXPECT_TRUE(dist::is_nan_result(distance(Vec3<T>{}, obb)));
+  const Rectangle2<T> r{{T(0), T(0)}, {{T(1), T(0)}, {T(0), T(1)}}, {inf, T(1)}};
+  const auto q = distance(Vec2<T>{}, r);
+  EXPECT_TRUE(dist::is_nan_result(q));
+  EXPECT_TRUE(std::isnan(q.param_b.x));
+}
