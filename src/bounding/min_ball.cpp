@@ -1,0 +1,284 @@
+// SPDX-License-Identifier: BSL-1.0
+// Welzl's move-to-front smallest enclosing ball in 2D and 3D (bounding/min_circle.hpp,
+// bounding/min_sphere.hpp; row cg.minball).
+
+#include <locus/bounding/detail/ball_predicates.hpp>
+#include <locus/bounding/min_circle.hpp>
+#include <locus/bounding/min_sphere.hpp>
+#include <locus/bounding/simplex_balls.hpp>
+#include <locus/core/predicates.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace locus {
+namespace {
+
+// splitmix64: a tiny, portable generator so a seed gives the same permutation everywhere.
+struct SplitMix {
+  std::uint64_t state;
+  std::uint64_t next() noexcept {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  // Uniform in [0, bound) by rejection (no modulo bias).
+  std::uint64_t below(std::uint64_t bound) noexcept {
+    const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() -
+                                std::numeric_limits<std::uint64_t>::max() % bound;
+    for (;;) {
+      const std::uint64_t x = next();
+      if (x < limit) return x % bound;
+    }
+  }
+};
+
+// The move-to-front engine over points of type Vec<T, D>. Support sets of size k define the
+// smallest ball with those k points on its boundary; `outside` is an exact decision against
+// them, the centre/radius are only for the output.
+template <class T, int D>
+class Engine {
+ public:
+  using P = Vec<double, D>;
+
+  Engine(std::span<const Vec<T, D>> pts, std::vector<std::uint32_t>& next,
+         std::vector<std::uint32_t>& prev, std::uint64_t budget) noexcept
+      : pts_(pts), next_(next), prev_(prev), budget_(budget) {}
+
+  // Returns false when the budget ran out or an impossible degeneracy showed up.
+  bool run(std::uint32_t head, std::uint32_t tail) {
+    head_ = head;
+    mtf(tail, 0);
+    return !failed_;
+  }
+
+  int support_count() const noexcept { return cur_k_; }
+  std::uint32_t support(int i) const noexcept { return cur_[i]; }
+  std::uint64_t tests() const noexcept { return tests_; }
+  bool exhausted() const noexcept { return exhausted_; }
+
+  // The rounded centre and radius of the current ball.
+  void ball(P& center, double& radius) const noexcept {
+    P s[D + 1];
+    for (int i = 0; i < cur_k_; ++i) s[i] = point(cur_[i]);
+    if (cur_k_ == 1) {
+      center = s[0];
+    } else if (cur_k_ == 2) {
+      center = 0.5 * s[0] + 0.5 * s[1];  // no overflow for huge coordinates
+    } else if (cur_k_ == 3) {
+      center = detail::circumcenter(s[0], s[1], s[2]);
+    } else {
+      if constexpr (D == 3) center = detail::circumcenter(s[0], s[1], s[2], s[3]);
+    }
+    radius = 0.0;
+    for (int i = 0; i < cur_k_; ++i) radius = std::max(radius, length(s[i] - center));
+  }
+
+ private:
+  P point(std::uint32_t i) const noexcept { return vec_cast<double>(pts_[i]); }
+
+  // Exact: is point i strictly outside the current ball?
+  bool outside(std::uint32_t i) const noexcept {
+    const P p = point(i);
+    switch (cur_k_) {
+      case 0:
+        return true;
+      case 1:
+        return !(p == s_[0]);
+      case 2:
+        return detail::diametral_side<D>(p, s_[0], s_[1]) == Sign::positive;
+      case 3:
+        if constexpr (D == 2) {
+          return incircle(s_[0], s_[1], s_[2], p) * orientation_ == Sign::negative;
+        } else {
+          return detail::circumcircle_sphere_side(s_[0], s_[1], s_[2], p) == Sign::positive;
+        }
+      default:
+        if constexpr (D == 3) {
+          return insphere(s_[0], s_[1], s_[2], s_[3], p) * orientation_ == Sign::negative;
+        } else {
+          return false;
+        }
+    }
+  }
+
+  // Make stack_[0..k) the current support set. Returns false for an affinely dependent set,
+  // which exact decisions never produce (kept as a guard, reported as a failure).
+  bool set_support(int k) noexcept {
+    cur_k_ = k;
+    for (int i = 0; i < k; ++i) {
+      cur_[i] = stack_[i];
+      s_[i] = point(stack_[i]);
+    }
+    if constexpr (D == 2) {
+      if (k == 3) {
+        orientation_ = orient2d(s_[0], s_[1], s_[2]);
+        return orientation_ != Sign::zero;
+      }
+    } else {
+      if (k == 3) return !is_degenerate(Triangle<double, 3>{s_[0], s_[1], s_[2]});
+      if (k == 4) {
+        orientation_ = orient3d(s_[0], s_[1], s_[2], s_[3]);
+        return orientation_ != Sign::zero;
+      }
+    }
+    return true;
+  }
+
+  void move_to_front(std::uint32_t it) noexcept {
+    const std::uint32_t p = prev_[it], n = next_[it];
+    if (p == head_) return;
+    next_[p] = n;
+    prev_[n] = p;
+    const std::uint32_t first = next_[head_];
+    next_[it] = first;
+    prev_[first] = it;
+    next_[head_] = it;
+    prev_[it] = head_;
+  }
+
+  // The smallest ball of the list's points before `end` with stack_[0..k) on its boundary,
+  // assuming the current ball already has them on its boundary.
+  void mtf(std::uint32_t end, int k) {
+    if (k == D + 1) return;
+    std::uint32_t it = next_[head_];
+    while (it != end) {
+      if (++tests_ > budget_) {
+        exhausted_ = failed_ = true;
+        return;
+      }
+      if (outside(it)) {
+        stack_[k] = it;
+        if (!set_support(k + 1)) {
+          failed_ = true;
+          return;
+        }
+        mtf(it, k + 1);
+        if (failed_) return;
+        const std::uint32_t n = next_[it];
+        move_to_front(it);
+        it = n;
+      } else {
+        it = next_[it];
+      }
+    }
+  }
+
+  std::span<const Vec<T, D>> pts_;
+  std::vector<std::uint32_t>& next_;
+  std::vector<std::uint32_t>& prev_;
+  std::uint64_t budget_;
+  std::uint64_t tests_ = 0;
+  std::uint32_t head_ = 0;
+  std::uint32_t stack_[D + 1] = {};
+  std::uint32_t cur_[D + 1] = {};
+  P s_[D + 1] = {};
+  int cur_k_ = 0;
+  Sign orientation_ = Sign::zero;
+  bool failed_ = false;
+  bool exhausted_ = false;
+};
+
+struct Solved {
+  Status status;
+  int support_count;
+  std::uint32_t support[4];
+  std::uint64_t tests;
+};
+
+template <class T, int D>
+Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
+             std::vector<std::uint32_t>& next, std::vector<std::uint32_t>& prev,
+             Vec<double, D>& center, double& radius) {
+  Solved out{Status::empty_input, 0, {}, 0};
+  if (pts.empty()) return out;
+  if (pts.size() > std::numeric_limits<std::uint32_t>::max() - 2u) {
+    out.status = Status::invalid_input;
+    return out;
+  }
+  for (const Vec<T, D>& p : pts)
+    if (!is_finite(p)) {
+      out.status = Status::non_finite_input;
+      return out;
+    }
+  const auto n = static_cast<std::uint32_t>(pts.size());
+  // Nodes 0..n-1 are the points, n the head sentinel, n + 1 the tail sentinel.
+  const std::uint32_t head = n, tail = n + 1;
+  next.resize(n + 2u);
+  prev.resize(n + 2u);
+  // The visiting order: identity or a seeded Fisher-Yates permutation, stored in prev as scratch.
+  for (std::uint32_t i = 0; i < n; ++i) prev[i] = i;
+  if (options.shuffle) {
+    SplitMix rng{options.seed};
+    for (std::uint32_t i = n - 1; i > 0; --i) {
+      const auto j = static_cast<std::uint32_t>(rng.below(std::uint64_t{i} + 1));
+      std::swap(prev[i], prev[j]);
+    }
+  }
+  std::uint32_t last = head;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    next[last] = prev[i];
+    last = prev[i];
+  }
+  next[last] = tail;
+  // Now fill prev from next.
+  for (std::uint32_t it = head; it != tail; it = next[it]) prev[next[it]] = it;
+  prev[head] = head;
+  next[tail] = tail;
+
+  const std::uint64_t budget =
+      options.max_tests != 0 ? options.max_tests : 1000u * std::uint64_t{n} + 1000000u;
+  Engine<T, D> engine(pts, next, prev, budget);
+  const bool ok = engine.run(head, tail);
+  out.tests = engine.tests();
+  out.support_count = engine.support_count();
+  for (int i = 0; i < out.support_count; ++i) out.support[i] = engine.support(i);
+  engine.ball(center, radius);
+  out.status =
+      ok ? Status::ok : (engine.exhausted() ? Status::limit_exceeded : Status::degenerate_input);
+  return out;
+}
+
+}  // namespace
+
+template <Real T>
+MinCircleResult<T> MinCircle2<T>::compute(std::span<const Vec2<T>> points,
+                                          const MinBallOptions& options) {
+  MinCircleResult<T> r;
+  Vec2<double> center{};
+  double radius = 0.0;
+  const Solved s = solve<T, 2>(points, options, next_, prev_, center, radius);
+  r.status = s.status;
+  r.tests = s.tests;
+  if (s.status != Status::ok && s.status != Status::limit_exceeded) return r;
+  r.support_count = s.support_count;
+  for (int i = 0; i < s.support_count; ++i) r.support[static_cast<std::size_t>(i)] = s.support[i];
+  r.circle = {vec_cast<T>(center), static_cast<T>(radius)};
+  return r;
+}
+
+template <Real T>
+MinSphereResult<T> MinSphere3<T>::compute(std::span<const Vec3<T>> points,
+                                          const MinBallOptions& options) {
+  MinSphereResult<T> r;
+  Vec3<double> center{};
+  double radius = 0.0;
+  const Solved s = solve<T, 3>(points, options, next_, prev_, center, radius);
+  r.status = s.status;
+  r.tests = s.tests;
+  if (s.status != Status::ok && s.status != Status::limit_exceeded) return r;
+  r.support_count = s.support_count;
+  for (int i = 0; i < s.support_count; ++i) r.support[static_cast<std::size_t>(i)] = s.support[i];
+  r.sphere = {vec_cast<T>(center), static_cast<T>(radius)};
+  return r;
+}
+
+template class MinCircle2<float>;
+template class MinCircle2<double>;
+template class MinSphere3<float>;
+template class MinSphere3<double>;
+
+}  // namespace locus
