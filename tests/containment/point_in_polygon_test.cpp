@@ -223,7 +223,7 @@ TYPED_TEST(PointInPolygon, ConvexLogNMatchesGeneralAndOracle) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int boundary = 0;
-  for (int it = 0; it < 150; ++it) {
+  for (int it = 0; it < 80; ++it) {
     std::vector<Vec2<T>> pts;
     const int m = rng.uniform_int(3, 30);
     for (int i = 0; i < m; ++i) pts.push_back(grid_point<T>(rng, -10, 10, T(2)));
@@ -349,7 +349,7 @@ TYPED_TEST(PointInPolygon, GeneralPolygonVsExactOracle) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int counts[3] = {0, 0, 0};
-  for (int it = 0; it < 200; ++it) {
+  for (int it = 0; it < 120; ++it) {
     const bool star = it % 2 == 0;
     const T scale = it % 4 < 2 ? T(1) : T(0.1);  // 0.1 is inexact: general floating input
     const auto v = random_polygon<T>(rng, rng.uniform_int(3, 25), 8, scale, star);
