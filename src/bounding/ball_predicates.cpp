@@ -194,6 +194,36 @@ Sign diametral_side_exact(const double* p, const double* a, const double* b, int
   return sign_of_big(sum);
 }
 
+Sign dot_differences_exact(const double* a, const double* b, const double* c, const double* d,
+                           int n) noexcept {
+  double all[12];
+  for (int i = 0; i < n; ++i) {
+    all[i] = a[i];
+    all[n + i] = b[i];
+    all[2 * n + i] = c[i];
+    all[3 * n + i] = d[i];
+  }
+  if (!all_finite(all, 4 * n)) return Sign::zero;
+  const int emin = common_exponent(all, 4 * n);
+  Big* v = scratch().v;
+  Big& sum = v[0];
+  Big& tmp = v[1];
+  sum.size = 0;
+  sum.negative = false;
+  for (int i = 0; i < n; ++i) {
+    from_double(a[i], emin, v[2]);
+    from_double(b[i], emin, v[3]);
+    from_double(c[i], emin, v[4]);
+    from_double(d[i], emin, v[8]);
+    add(v[3], v[2], true, v[5]);  // b - a
+    add(v[8], v[4], true, v[6]);  // d - c
+    mul(v[5], v[6], v[7]);
+    add(sum, v[7], false, tmp);
+    std::swap(sum, tmp);
+  }
+  return sign_of_big(sum);
+}
+
 Sign circumcircle_sphere_side_exact(const double* a, const double* b, const double* c,
                                     const double* p) noexcept {
   double all[12];

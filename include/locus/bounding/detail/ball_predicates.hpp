@@ -29,6 +29,9 @@ namespace locus::detail {
 /// Exact sign of (p - a) . (p - b) for n = 2 or 3 coordinates (big-integer arithmetic).
 [[nodiscard]] Sign diametral_side_exact(const double* p, const double* a, const double* b,
                                         int n) noexcept;
+/// Exact sign of (b - a) . (d - c) for n = 2 or 3 coordinates (big-integer arithmetic).
+[[nodiscard]] Sign dot_differences_exact(const double* a, const double* b, const double* c,
+                                         const double* d, int n) noexcept;
 /// Exact sign of |w|^2 |q|^2 - q . X (see the header comment), 3D.
 [[nodiscard]] Sign circumcircle_sphere_side_exact(const double* a, const double* b, const double* c,
                                                   const double* p) noexcept;
@@ -50,6 +53,23 @@ template <int N>
   if (std::abs(value) > bound && permanent > ball_filter_min_permanent && bound < 1e300) [[likely]]
     return value > 0.0 ? Sign::positive : Sign::negative;
   return diametral_side_exact(&p[0], &a[0], &b[0], N);
+}
+
+/// Exact sign of (b - a) . (d - c) (the calipers of bounding/min_rect2.hpp).
+template <int N>
+[[nodiscard]] inline Sign dot_differences(const Vec<double, N>& a, const Vec<double, N>& b,
+                                          const Vec<double, N>& c,
+                                          const Vec<double, N>& d) noexcept {
+  double value = 0.0, permanent = 0.0;
+  for (int i = 0; i < N; ++i) {
+    const double u = b[i] - a[i], v = d[i] - c[i];
+    value += u * v;
+    permanent += std::abs(u * v);
+  }
+  const double bound = 8.0 * predicate_eps * permanent;
+  if (std::abs(value) > bound && permanent > ball_filter_min_permanent && bound < 1e300) [[likely]]
+    return value > 0.0 ? Sign::positive : Sign::negative;
+  return dot_differences_exact(&a[0], &b[0], &c[0], &d[0], N);
 }
 
 /// Positive iff p is strictly outside the smallest sphere through a, b, c (3D, abc not
