@@ -58,7 +58,8 @@ inline EdgeSet edge_set(const locus::Delaunay2Result& r) {
 /// With `brute` also the global empty-circle property against every point (O(n T)).
 template <class T>
 ::testing::AssertionResult check_delaunay(const std::vector<locus::Vec2<T>>& pts,
-                                          const locus::Delaunay2Result& r, bool brute = false) {
+                                          const locus::Delaunay2Result& r, bool brute = false,
+                                          const std::vector<std::uint8_t>* constrained = nullptr) {
   using locus::Sign;
   const std::size_t n = pts.size();
   if (r.status != locus::Status::ok) return ::testing::AssertionFailure() << "status not ok";
@@ -144,13 +145,18 @@ template <class T>
   for (std::size_t e = 0; e < ne; ++e) {
     const std::int32_t o = r.halfedges[e];
     if (o < 0) continue;
+    if (constrained && (*constrained)[e]) {
+      if (!(*constrained)[std::size_t(o)])
+        return ::testing::AssertionFailure() << "constrained flag on one side only at " << e;
+      continue;
+    }
     const std::uint32_t t = std::uint32_t(e) / 3;
     const auto z = r.triangles[locus::prev_halfedge(std::uint32_t(o))];
     if (locus::incircle(pts[r.triangles[3 * t]], pts[r.triangles[3 * t + 1]],
                         pts[r.triangles[3 * t + 2]], pts[z]) == Sign::positive)
       return ::testing::AssertionFailure() << "edge " << e << " not locally Delaunay";
   }
-  if (brute) {
+  if (brute && !constrained) {
     for (std::size_t t = 0; t < nt; ++t)
       for (std::size_t i = 0; i < n; ++i)
         if (locus::incircle(pts[r.triangles[3 * t]], pts[r.triangles[3 * t + 1]],

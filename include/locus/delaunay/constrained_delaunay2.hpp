@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// 2D constrained Delaunay triangulation (CDT) and triangulation of polygons with holes.
+// CAPABILITIES row cg.delaunay2 ("constrained Delaunay, beyond the book"); book section 13.8.
+//
+// Algorithm. The Delaunay triangulation of the points (delaunay2.hpp) is built first. Each
+// constraint segment ab is then inserted: a walk from a along ab (exact orient2d) collects the
+// triangles whose edges ab crosses; they are removed, and the two pseudo-polygons on either side
+// of ab are re-triangulated by the recursive empty-circle rule (pick the vertex c whose circle
+// through a, b, c holds no other vertex of the pseudo-polygon, exact incircle; Anglada 1997).
+// The result is the constrained Delaunay triangulation: no point visible from the interior of a
+// triangle lies strictly inside its circumcircle, where segments block visibility.
+//
+// Constraints:
+//  - a constraint through existing vertices is split there: ab with a vertex v on its open
+//    segment becomes av and vb (both marked constrained);
+//  - a constraint that properly crosses an already inserted constraint is NOT inserted (no
+//    Steiner points are created): its index is listed in `rejected` and the status is
+//    invalid_input, while the triangulation is still the CDT of the accepted constraints; the
+//    same for constraints with an endpoint index out of range; a zero-length constraint (equal
+//    endpoints, also after duplicate merging) is ignored silently;
+//  - constraint endpoints are point indices; duplicate points are merged as in delaunay2.hpp
+//    (duplicate_of) and constraints are mapped to the kept point.
+//
+// Output: the layout of Delaunay2Result (triangles CCW, halfedges -1 on the hull, hull CCW,
+// duplicate_of) plus constrained[e] = 1 for every half-edge on a constraint (both sides), and,
+// for triangulate_polygon(), inside[t] = 1 for triangles inside the polygon (even-odd rule:
+// crossing a constrained edge toggles the side, found by a breadth-first fill from the hull).
+//
+// Polygons with holes: triangulate_polygon(points, ring_ends) takes rings stored one after the
+// other in `points` (ring k is points[ring_ends[k-1] .. ring_ends[k]), ring_ends[-1] = 0), each
+// closed implicitly; the first ring is usually the outer boundary and the others holes, but the
+// even-odd rule accepts any orientation and nesting. Self-intersecting rings give rejected
+// edges and invalid_input.
+//
+// Bad input: NaN/Inf -> non_finite_input; no points -> empty_input; all points collinear ->
+// dimension 1, no triangles, status ok. Every walk has a step budget (the triangle count).
+//
+// Cost: the Delaunay triangulation, plus for each constraint O(k^2) in the number k of edges it
+// crosses (the re-triangulation and the re-linking of the cavity).
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/status.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/delaunay/delaunay2.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace locus {
+
+/// The result of a constrained Delaunay triangulation (see the top of the header).
+struct ConstrainedDelaunay2Result {
+  Status status = Status::empty_input;
+  int dimension = -1;
+  std::vector<std::uint32_t> triangles;     ///< 3 vertex indices per triangle, CCW
+  std::vector<std::int32_t> halfedges;      ///< opposite half-edge, -1 on the hull
+  std::vector<std::uint32_t> hull;          ///< CCW hull vertices
+  std::vector<std::uint32_t> duplicate_of;  ///< per input point: itself or the kept equal point
+  std::vector<std::uint8_t> constrained;    ///< per half-edge: 1 on a constraint
+  std::vector<std::uint8_t> inside;         ///< per triangle (triangulate_polygon only)
+  std::vector<std::uint32_t> rejected;      ///< indices of constraints not inserted
+
+  [[nodiscard]] std::size_t triangle_count() const noexcept { return triangles.size() / 3; }
+};
+
+/// Reusable constrained Delaunay triangulator (keeps its buffers between calls).
+template <Real T>
+class ConstrainedDelaunay2 {
+ public:
+  /// The CDT of `points` with the segments `constraints` (pairs of point indices).
+  const ConstrainedDelaunay2Result& triangulate(
+      std::span<const Vec2<T>> points, std::span<const std::array<std::uint32_t, 2>> constraints);
+
+  /// The CDT of the rings of a polygon with holes, with inside[] marked by the even-odd rule.
+  const ConstrainedDelaunay2Result& triangulate_polygon(std::span<const Vec2<T>> points,
+                                                        std::span<const std::uint32_t> ring_ends);
+
+  [[nodiscard]] const ConstrainedDelaunay2Result& result() const noexcept { return result_; }
+
+ private:
+  // 0: inserted (or zero length); 1: crosses a constraint; 2: aborted (budget).
+  int insert_segment(std::uint32_t a, std::uint32_t b);
+  void mark_inside();
+
+  Delaunay2<T> delaunay_;
+  std::span<const Vec2<T>> points_;
+  ConstrainedDelaunay2Result result_;
+  std::vector<std::uint32_t> vertex_edge_;  // an outgoing half-edge per vertex
+  std::vector<std::uint8_t> in_cavity_;
+  std::vector<std::uint32_t> cavity_, left_, right_, new_tris_;
+};
+
+/// Constrained Delaunay triangulation (one call over ConstrainedDelaunay2).
+template <Real T>
+[[nodiscard]] ConstrainedDelaunay2Result constrained_delaunay(
+    std::span<const Vec2<T>> points, std::span<const std::array<std::uint32_t, 2>> constraints);
+
+/// Triangulation of a polygon with holes given as consecutive rings (see the top of the header).
+template <Real T>
+[[nodiscard]] ConstrainedDelaunay2Result triangulate_polygon(
+    std::span<const Vec2<T>> points, std::span<const std::uint32_t> ring_ends);
+
+extern template class ConstrainedDelaunay2<float>;
+extern template class ConstrainedDelaunay2<double>;
+extern template ConstrainedDelaunay2Result constrained_delaunay<float>(
+    std::span<const Vec2<float>>, std::span<const std::array<std::uint32_t, 2>>);
+extern template ConstrainedDelaunay2Result constrained_delaunay<double>(
+    std::span<const Vec2<double>>, std::span<const std::array<std::uint32_t, 2>>);
+extern template ConstrainedDelaunay2Result triangulate_polygon<float>(
+    std::span<const Vec2<float>>, std::span<const std::uint32_t>);
+extern template ConstrainedDelaunay2Result triangulate_polygon<double>(
+    std::span<const Vec2<double>>, std::span<const std::uint32_t>);
+
+}  // namespace locus
