@@ -174,7 +174,8 @@ TYPED_TEST(LineFitTest, VerticalFitAgainstEigen) {
   using T = TypeParam;
   Rng rng;
   SCOPED_TRACE(rng.trace());
-  {  // exact: y = 2 x + 1 at integer x
+  {  // figure 2.9 (the line closest to the points in vertical squared distance), exact data:
+     // y = 2 x + 1 at integer x
     std::vector<Vec2<T>> pts;
     for (int i = -3; i <= 5; ++i) pts.push_back({T(i), T(2 * i + 1)});
     const VerticalLineFit<T> f = fit_line_vertical(pts);

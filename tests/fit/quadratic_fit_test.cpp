@@ -187,15 +187,26 @@ TYPED_TEST(QuadraticFitTest, ConicAgainstEigenSvd) {
     auto vnorm = [](const Vec2d& p) {
       return std::sqrt(sqr(p.x * p.x) + sqr(p.x * p.y) + sqr(p.y * p.y) + sqr_length(p) + 1);
     };
-    double ratio = 0;
+    // The ratio comes from the probe with the largest |q_u| (a probe near the curve would give
+    // an inaccurate ratio); its own error propagates to the other probes.
+    std::vector<Vec2d> probes;
+    int best = 0;
     for (int k = 0; k < 8; ++k) {
-      const Vec2d p = rng.vec<double, 2>(-3, 3), u = (p - mean) / s;
+      probes.push_back(rng.vec<double, 2>(-3, 3));
+      if (std::abs(eval_conic(wu, (probes[std::size_t(k)] - mean) / s)) >
+          std::abs(eval_conic(wu, (probes[std::size_t(best)] - mean) / s)))
+        best = k;
+    }
+    const Vec2d pb = probes[std::size_t(best)], ub = (pb - mean) / s;
+    const double ratio = eval_conic(q, pb) / eval_conic(wu, ub);
+    const double dratio =
+        2 * e * (vnorm(pb) + std::abs(ratio) * vnorm(ub)) / std::abs(eval_conic(wu, ub));
+    for (const Vec2d& p : probes) {
+      const Vec2d u = (p - mean) / s;
       const double qu = eval_conic(wu, u), qp = eval_conic(q, p);
-      if (k == 0) {
-        ratio = qp / qu;
-        continue;
-      }
-      EXPECT_NEAR(qp, ratio * qu, 2 * e * (vnorm(p) + std::abs(ratio) * vnorm(u))) << trial;
+      EXPECT_NEAR(qp, ratio * qu,
+                  2 * e * (vnorm(p) + std::abs(ratio) * vnorm(u)) + dratio * std::abs(qu))
+          << trial;
     }
   }
 }
@@ -265,15 +276,25 @@ TYPED_TEST(QuadraticFitTest, TranslationScaleInvariance) {
     auto vnorm = [](const Vec2d& p) {
       return std::sqrt(sqr(p.x * p.x) + sqr(p.x * p.y) + sqr(p.y * p.y) + sqr_length(p) + 1);
     };
-    double ratio = 0;
+    // The ratio from the probe with the largest |q_f| (see ConicAgainstEigenSvd).
+    std::vector<Vec2d> probes;
+    int best = 0;
     for (int j = 0; j < 8; ++j) {
-      const Vec2d p = rng.vec<double, 2>(-2, 2), pm = k * p + t;
+      probes.push_back(rng.vec<double, 2>(-2, 2));
+      if (std::abs(eval_conic(qf, probes[std::size_t(j)])) >
+          std::abs(eval_conic(qf, probes[std::size_t(best)])))
+        best = j;
+    }
+    const Vec2d pb = probes[std::size_t(best)];
+    const double ratio = eval_conic(qg, k * pb + t) / eval_conic(qf, pb);
+    const double dratio = 2 * (eg * vnorm(k * pb + t) + std::abs(ratio) * ef * vnorm(pb)) /
+                          std::abs(eval_conic(qf, pb));
+    for (const Vec2d& p : probes) {
+      const Vec2d pm = k * p + t;
       const double a = eval_conic(qf, p), b = eval_conic(qg, pm);
-      if (j == 0) {
-        ratio = b / a;
-        continue;
-      }
-      EXPECT_NEAR(b, ratio * a, 2 * (eg * vnorm(pm) + std::abs(ratio) * ef * vnorm(p))) << trial;
+      EXPECT_NEAR(b, ratio * a,
+                  2 * (eg * vnorm(pm) + std::abs(ratio) * ef * vnorm(p)) + dratio * std::abs(a))
+          << trial;
     }
   }
 }

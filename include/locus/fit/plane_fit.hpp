@@ -21,8 +21,8 @@
 // N - 1 dimensions (coincident, or collinear for a plane) -> degenerate_input; for the vertical
 // fit, independent coordinates that span fewer than N - 1 dimensions (a vertical hyperplane) ->
 // degenerate_input. Then the result is zero-initialised and rms is NaN. A normal that is not
-// unique (the two smallest eigenvalues equal, e.g. points on a line segment are excluded above,
-// but an isotropic 3D cloud is not) is not detected. Computed in compute_t<T>, rounded to T.
+// unique because the two smallest spreads are equal (e.g. an isotropic 3D cloud) is not
+// detected: one of the minimisers is returned. Computed in compute_t<T>, rounded to T.
 // Cost: O(n N^2) plus an N x N eigensolve (closed form for N = 2, 3; Jacobi otherwise).
 
 #include <locus/fit/fit_common.hpp>

@@ -418,7 +418,8 @@ struct QuadraticMinimum {
   Status status = Status::ok;  ///< ok, degenerate_input, invalid_input, non_finite_input
   Vec<T, N> x{};
   T value{};                ///< f(x)
-  Vec<T, M> multipliers{};  ///< constrained form: grad f(x) + C^T multipliers = 0
+  Vec<T, M> multipliers{};  ///< constrained form: grad f(x) + C^T multipliers = 0 (zero for
+                            ///< the unconstrained form)
 };
 
 /// Minimiser of a quadratic form on a sphere.
@@ -428,7 +429,7 @@ struct SphereQuadraticExtremum {
   Vec<T, N> x{};
   T value{};           ///< f(x)
   T multiplier{};      ///< mu with grad f(x) = 2 mu (x - center)
-  bool unique = true;  ///< false in the hard case (and for radius 0 never)
+  bool unique = true;  ///< false in the hard case with more than one minimiser
   int iterations = 0;
 };
 
@@ -647,6 +648,7 @@ template <class T, int N>
   C mu = C(0);
   // radius 0: the sphere is the point center (y = 0); the multiplier is undetermined, 0.
   const SymmetricEigenX<C> e = eigen_symmetric(h);
+  if (e.status == Status::limit_exceeded) out.status = Status::limit_exceeded;
   std::vector<C> gamma(static_cast<std::size_t>(N), C(0));  // half the gradient in the eigenbasis
   for (int i = 0; i < N; ++i) {
     C s = C(0);
