@@ -23,12 +23,15 @@
 #include <locus/core/vec.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/primitives/aligned_box.hpp>
+#include <locus/primitives/circle.hpp>
 #include <locus/primitives/line.hpp>
 #include <locus/primitives/oriented_box.hpp>
+#include <locus/primitives/plane.hpp>
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/ray.hpp>
 #include <locus/primitives/rectangle.hpp>
 #include <locus/primitives/segment.hpp>
+#include <locus/primitives/sphere.hpp>
 #include <locus/primitives/triangle.hpp>
 
 #include "support/typed.hpp"
@@ -223,6 +226,104 @@ struct Side<locus::OrientedBox<T, N>> {
   }
 };
 
+// ---- planes, circles, disks, spheres ------------------------------------------------------
+template <class T>
+struct Side<locus::Plane3<T>> {
+  using P = locus::Plane3<T>;
+  using Param = locus::Vec2<T>;  // coordinates in plane_frame(plane)
+  static constexpr int k = 2;
+  static constexpr bool rotatable = true;
+  static Vec<T, 3> map(const P& pl, const T* u, T w) {
+    return point_at(*plane_frame(pl), Param{-w + T(2) * w * u[0], -w + T(2) * w * u[1]});
+  }
+  static Vec<T, 3> at(const P& pl, const Param& st) { return point_at(*plane_frame(pl), st); }
+  static bool param_ok(const P&, const Param& st, T) { return locus::is_finite(st); }
+  static bool in_window(const P&, const Param& st, T w) {
+    return std::abs(st.x) <= T(0.9) * w && std::abs(st.y) <= T(0.9) * w;
+  }
+  static P moved(const P& pl, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
+    const Vec<T, 3> n = r * pl.normal;
+    return {n, pl.constant + locus::dot(n, t)};
+  }
+};
+
+template <class T>
+struct Side<locus::Circle2<T>> {
+  using P = locus::Circle2<T>;
+  using Param = T;  // angle
+  static constexpr int k = 1;
+  static constexpr unsigned periodic = 1u;  // u[0] wraps around
+  static constexpr bool rotatable = true;
+  static Vec<T, 2> map(const P& c, const T* u, T) {
+    return point_at(c, T(6.283185307179586) * u[0]);
+  }
+  static Vec<T, 2> at(const P& c, T a) { return point_at(c, a); }
+  static bool param_ok(const P&, T a, T) { return locus::is_finite(a); }
+  static bool in_window(const P&, T, T) { return true; }
+  static P moved(const P& c, const locus::Mat<T, 2, 2>& r, const Vec<T, 2>& t) {
+    return {r * c.center + t, c.radius};
+  }
+};
+
+template <class T>
+struct Side<locus::Circle3<T>> {
+  using P = locus::Circle3<T>;
+  using Param = T;  // angle
+  static constexpr int k = 1;
+  static constexpr unsigned periodic = 1u;
+  static constexpr bool rotatable = true;
+  static Vec<T, 3> map(const P& c, const T* u, T) {
+    return point_at(c, T(6.283185307179586) * u[0]);
+  }
+  static Vec<T, 3> at(const P& c, T a) { return point_at(c, a); }
+  static bool param_ok(const P&, T a, T) { return locus::is_finite(a); }
+  static bool in_window(const P&, T, T) { return true; }
+  static P moved(const P& c, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
+    return {r * c.center + t, r * c.normal, c.radius};
+  }
+};
+
+template <class T>
+struct Side<locus::Disk3<T>> {
+  using P = locus::Disk3<T>;
+  using Param = locus::Vec2<T>;  // (s, t) in the disk's plane axes
+  static constexpr int k = 2;
+  static constexpr unsigned periodic = 2u;  // the angle u[1]
+  static constexpr bool rotatable = true;
+  static Vec<T, 3> map(const P& d, const T* u, T) {
+    const T rho = d.radius * u[0], a = T(6.283185307179586) * u[1];
+    return point_at(d, Param{rho * std::cos(a), rho * std::sin(a)});
+  }
+  static Vec<T, 3> at(const P& d, const Param& st) { return point_at(d, st); }
+  static bool param_ok(const P& d, const Param& st, T tol) {
+    return locus::length(st) <= d.radius + tol;
+  }
+  static bool in_window(const P&, const Param&, T) { return true; }
+  static P moved(const P& d, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
+    return {r * d.center + t, r * d.normal, d.radius};
+  }
+};
+
+template <class T>
+struct Side<locus::Sphere<T, 3>> {
+  using P = locus::Sphere<T, 3>;
+  using Param = locus::Vec2<T>;  // (theta, phi)
+  static constexpr int k = 2;
+  static constexpr unsigned periodic = 3u;  // theta wraps; phi beyond [0, pi] reflects
+  static constexpr bool rotatable = true;
+  static Vec<T, 3> map(const P& s, const T* u, T) {
+    return point_at(s, Param{T(6.283185307179586) * u[0], T(3.141592653589793) * u[1]});
+  }
+  static Vec<T, 3> at(const P& s, const Param& tp) { return point_at(s, tp); }
+  static bool param_ok(const P&, const Param& tp, T tol) {
+    return locus::is_finite(tp) && tp.y >= -tol && tp.y <= T(3.141592653589793) + tol;
+  }
+  static bool in_window(const P&, const Param&, T) { return true; }
+  static P moved(const P& s, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
+    return {r * s.center + t, s.radius};
+  }
+};
+
 // ---- helpers ------------------------------------------------------------------------------
 
 /// A random rotation: Gram-Schmidt on random vectors (det +1).
@@ -277,6 +378,15 @@ std::string dump(const P& p) {
   return out;
 }
 
+/// Bit i set: coordinate i of the side's parameter box is periodic (not clamped).
+template <class S>
+constexpr unsigned periodic_mask() {
+  if constexpr (requires { S::periodic; })
+    return S::periodic;
+  else
+    return 0u;
+}
+
 template <class A, class B, class T, int N>
 T joint_sqr(const A& a, const B& b, const T* u, T w) {
   return locus::sqr_length(Side<A>::map(a, u, w) - Side<B>::map(b, u + Side<A>::k, w));
@@ -297,6 +407,8 @@ T oracle_sqr(const A& a, const B& b, Rng& rng, int samples, T w) {
       const T f = joint_sqr<A, B, T, N>(a, b, cur.data(), w);
       if (f < fbest) fbest = f, best = cur;
     }
+    constexpr unsigned periodic =
+        periodic_mask<Side<A>>() | (periodic_mask<Side<B>>() << Side<A>::k);
     // Directions: +-e_i and +-e_i +- e_j.
     std::vector<std::array<T, K>> dirs;
     for (int i = 0; i < K; ++i) {
@@ -321,7 +433,8 @@ T oracle_sqr(const A& a, const B& b, Rng& rng, int samples, T w) {
           std::array<T, K> c = best;
           for (int i = 0; i < K; ++i) {
             const auto ii = static_cast<std::size_t>(i);
-            c[ii] = std::clamp(c[ii] + sg * h * d[ii], T(0), T(1));
+            c[ii] += sg * h * d[ii];
+            if (!((periodic >> i) & 1u)) c[ii] = std::clamp(c[ii], T(0), T(1));
           }
           const T f = joint_sqr<A, B, T, N>(a, b, c.data(), w);
           if (f < fbest) fbest = f, best = c, moved = true;
