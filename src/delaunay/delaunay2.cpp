@@ -73,28 +73,57 @@ template <class T>
   return static_cast<std::uint32_t>(q);
 }
 
-// Sorts (key << 32 | index) values by key, stable in index: two 16-bit LSD radix passes.
-void radix_sort_keys(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& tmp) {
-  const std::size_t n = keys.size();
+// Sorts keys[0, n) ((key << 32 | index) values) ascending: two 16-bit LSD radix passes on the
+// key (stable, so ties stay in index order), or std::sort for short ranges.
+void radix_sort_keys(std::uint64_t* keys, std::size_t n, std::vector<std::uint64_t>& tmp_buf) {
   if (n < (1u << 14)) {
-    std::sort(keys.begin(), keys.end());
+    std::sort(keys, keys + n);
     return;
   }
-  tmp.resize(n);
+  tmp_buf.resize(n);
+  std::uint64_t* src = keys;
+  std::uint64_t* dst = tmp_buf.data();
   std::vector<std::uint32_t> count(1u << 16);
   for (int pass = 0; pass < 2; ++pass) {
     const int shift = 32 + 16 * pass;
     std::fill(count.begin(), count.end(), 0u);
-    for (const std::uint64_t k : keys) ++count[(k >> shift) & 0xFFFFu];
+    for (std::size_t i = 0; i < n; ++i) ++count[(src[i] >> shift) & 0xFFFFu];
     std::uint32_t sum = 0;
     for (auto& c : count) {
       const std::uint32_t c0 = c;
       c = sum;
       sum += c0;
     }
-    for (const std::uint64_t k : keys) tmp[count[(k >> shift) & 0xFFFFu]++] = k;
-    keys.swap(tmp);
+    for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & 0xFFFFu]++] = src[i];
+    std::swap(src, dst);
   }
+  // Two passes: the result is back in keys.
+}
+
+// Biased randomized insertion order (Amenta, Choi, Rote 2003) with Hilbert-sorted rounds: a
+// fixed-seed shuffle, then the last 7/8 of every prefix is sorted along the curve and the first
+// 1/8 recursively. Early rounds spread over the whole domain, so later points mostly fall
+// inside the current hull (few flips, no long hull fans) and each round is walked in curve
+// order (short walks). Deterministic: the seed is fixed.
+void brio_order(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& tmp) {
+  const std::size_t n = keys.size();
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (std::size_t i = n; i > 1; --i) {
+    state += 0x9E3779B97F4A7C15ull;  // splitmix64
+    std::uint64_t z = state;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    const std::size_t j = static_cast<std::size_t>(z % i);
+    std::swap(keys[i - 1], keys[j]);
+  }
+  std::size_t end = n;
+  while (end > 256) {
+    const std::size_t mid = end / 8;
+    radix_sort_keys(keys.data() + mid, end - mid, tmp);
+    end = mid;
+  }
+  radix_sort_keys(keys.data(), end, tmp);
 }
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -527,7 +556,7 @@ void Delaunay2<T>::run() {
                       quantize(points_[i].y, lo_y, hi_y) >> (16 - levels), levels);
     keys_[i] = (std::uint64_t(h) << 32) | std::uint64_t(i);
   }
-  radix_sort_keys(keys_, keys_tmp_);
+  brio_order(keys_, keys_tmp_);
   // The triangulation works on a copy of the points in Hilbert order (vertex k is input point
   // orig_[k]), so the coordinates a walk or an incircle test reads are close in memory.
   orig_.resize(n);

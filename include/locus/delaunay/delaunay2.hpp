@@ -4,8 +4,10 @@
 // exact predicate (orient2d, incircle of core/predicates.hpp). CAPABILITIES row cg.delaunay2;
 // book section 13.8, figures 13.42-13.51.
 //
-// Algorithm. The points are visited along a Hilbert curve over their bounding box (16 bits per
-// axis, stable radix sort, ties kept in input order), so consecutive points are close. Each point
+// Algorithm. The points are inserted in a biased randomized order (BRIO: a fixed-seed shuffle,
+// then rounds of geometrically growing size, each sorted along a Hilbert curve over the bounding
+// box, about 16 curve cells per point, stable radix sort), so consecutive points are close and
+// most points fall inside the hull of the earlier rounds. Each point
 // is located by a visibility walk from the triangle of the previously inserted point, the
 // containing triangle is split in three (a point on an edge gives a degenerate triangle that the
 // first flip removes) and the link edges are flipped while the opposite vertex lies strictly
@@ -30,8 +32,8 @@
 // Lower-dimensional output is data: status stays ok.
 //
 // Cocircular input (grids, points on a circle): the Delaunay triangulation is not unique; the
-// result is one valid choice, deterministic for a given input order (it depends on the order
-// only through the Hilbert sort, whose ties keep input order).
+// result is one valid choice, deterministic: the same input (values and order) gives the same
+// output (the shuffle has a fixed seed); a permuted input may give another valid choice.
 //
 // Bad input: any NaN or infinite coordinate gives Status::non_finite_input and an empty result;
 // no points gives Status::empty_input. Every walk has a step budget; a walk that exceeds it falls
