@@ -87,18 +87,23 @@ void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options
   }
   constexpr T big = std::numeric_limits<T>::max();
   items_.clear();
+  double ymin = std::numeric_limits<double>::quiet_NaN(), ymax = ymin;
   const bool filter = options.method == Hull2Method::monotone_chain && n >= 256;
+  const std::uint32_t* selected = nullptr;  // the points to sort (nullptr: all)
+  std::size_t m = n;
   if (!filter) {
-    items_.resize(n);
+    double lo_y = std::numeric_limits<double>::infinity(), hi_y = -lo_y;
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2<T> p = points[i];
       if (!(std::abs(p.x) <= big && std::abs(p.y) <= big)) {
         out.status = Status::non_finite_input;
-        items_.clear();
         return;
       }
-      items_[i] = Item{p, static_cast<std::uint32_t>(i)};
+      lo_y = std::min(lo_y, static_cast<double>(p.y));
+      hi_y = std::max(hi_y, static_cast<double>(p.y));
     }
+    ymin = lo_y;
+    ymax = hi_y;
   } else {
     // Akl-Toussaint: extreme points in the directions y, x, x + y, x - y (heuristic values in
     // double; the polygon they span is inside the hull whatever the rounding).
@@ -129,6 +134,8 @@ void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options
       out.status = Status::non_finite_input;
       return;
     }
+    ymin = ext_min[0];
+    ymax = ext_max[0];
     Vec2<T> cand[8], poly[9];
     for (int k = 0; k < 4; ++k) {
       cand[2 * k] = points[arg_min[k]];
@@ -142,7 +149,8 @@ void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options
     bool use_box = false;
     if (pn >= 3 && lo.x < hi.x && lo.y < hi.y) {
       const Vec2<T> c{lo.x / T(2) + hi.x / T(2), lo.y / T(2) + hi.y / T(2)};
-      for (const T f : {T(1), T(0.95), T(0.8), T(0.5)}) {
+      for (const T f :
+           {T(1), T(1) - T(0x1p-20), T(1) - T(0x1p-12), T(1) - T(0x1p-6), T(0.9), T(0.5)}) {
         const Vec2<T> l{c.x + f * (lo.x - c.x), c.y + f * (lo.y - c.y)};
         const Vec2<T> h{c.x + f * (hi.x - c.x), c.y + f * (hi.y - c.y)};
         if (strictly_inside(poly, pn, l) && strictly_inside(poly, pn, h) &&
@@ -158,19 +166,22 @@ void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options
     if (use_box) {
       // The closed box lies strictly inside the hull of input points, so no point in it is on
       // the hull boundary.
-      items_.reserve(n / 8);
+      aux_.clear();
       for (std::size_t i = 0; i < n; ++i) {
         const Vec2<T> p = points[i];
         const bool inside = (p.x >= lo.x) & (p.x <= hi.x) & (p.y >= lo.y) & (p.y <= hi.y);
-        if (!inside) items_.push_back(Item{p, static_cast<std::uint32_t>(i)});
+        if (!inside) aux_.push_back(static_cast<std::uint32_t>(i));
       }
-    } else {
-      items_.resize(n);
-      for (std::size_t i = 0; i < n; ++i)
-        items_[i] = Item{points[i], static_cast<std::uint32_t>(i)};
+      selected = aux_.data();
+      m = aux_.size();
     }
   }
-  sort_items(0, items_.size());
+  gather_sorted(points, selected, m, ymin, ymax);
+  if (options.method == Hull2Method::monotone_chain) {
+    out.status = Status::ok;
+    monotone_chain(options.keep_collinear, out);
+    return;
+  }
   // Duplicates are adjacent; the first (smallest index) represents them.
   {
     std::size_t k = 0;
@@ -202,91 +213,117 @@ void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options
   }
 }
 
-// Sort by (y, x, index). A bucket pass on a monotone (non-decreasing) function of y puts every
-// item in a bucket no later than any larger item's bucket; exact ties and the order inside a
-// bucket are settled by the comparison sort, so the result is exactly sorted.
+// items_ = the selected points sorted by (y, x, index). A counting pass on a monotone
+// (non-decreasing) function of y puts every point in a bucket no later than any larger point's
+// bucket; exact ties and the order inside a bucket are settled by a comparison sort, so the
+// result is exactly sorted. The points are scattered straight from the input (no copy first).
 template <Real T>
-void ConvexHull2<T>::sort_items(std::size_t first, std::size_t count) {
-  Item* a = items_.data() + first;
-  if (count < 1024) {
-    if (count <= 32)
-      insertion_sort(a, a + count);
-    else
-      std::sort(a, a + count, item_less<Item>);
-    return;
-  }
-  double ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
-  for (std::size_t i = 0; i < count; ++i) {
-    ymin = std::min(ymin, static_cast<double>(a[i].p.y));
-    ymax = std::max(ymax, static_cast<double>(a[i].p.y));
-  }
+void ConvexHull2<T>::gather_sorted(std::span<const Vec2<T>> points, const std::uint32_t* selected,
+                                   std::size_t m, double ymin, double ymax) {
+  const auto id = [&](std::size_t k) -> std::uint32_t {
+    return selected ? selected[k] : static_cast<std::uint32_t>(k);
+  };
+  items_.resize(m);
+  Item* a = items_.data();
   const double range = ymax - ymin;
-  const std::size_t nb = count;
+  const std::size_t nb = m / 2;
   const double scale = static_cast<double>(nb) / range;
-  if (!(range > 0.0) || !std::isfinite(scale) || !(scale > 0.0)) {
-    std::sort(a, a + count, item_less<Item>);
+  if (m < 1024 || !(range > 0.0) || !std::isfinite(scale) || !(scale > 0.0)) {
+    for (std::size_t k = 0; k < m; ++k) a[k] = Item{points[id(k)], id(k)};
+    if (m <= 32)
+      insertion_sort(a, a + m);
+    else
+      std::sort(a, a + m, item_less<Item>);
     return;
   }
+  // Clamped both ways: ymin/ymax may come from a superset of the selected points.
+  const double top = static_cast<double>(nb - 1);
   const auto bucket = [&](T y) {
-    const double t = (static_cast<double>(y) - ymin) * scale;
-    const std::size_t b = t < static_cast<double>(nb) ? static_cast<std::size_t>(t) : nb - 1;
-    return b;
+    const double t = std::max(0.0, (static_cast<double>(y) - ymin) * scale);
+    return static_cast<std::size_t>(std::min(t, top));
   };
   counts_.assign(nb + 1, 0);
-  for (std::size_t i = 0; i < count; ++i) ++counts_[bucket(a[i].p.y) + 1];
+  for (std::size_t k = 0; k < m; ++k) ++counts_[bucket(points[id(k)].y) + 1];
   for (std::size_t b = 0; b < nb; ++b) counts_[b + 1] += counts_[b];
-  scratch_.resize(count);
-  for (std::size_t i = 0; i < count; ++i) scratch_[counts_[bucket(a[i].p.y)]++] = a[i];
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::uint32_t i = id(k);
+    a[counts_[bucket(points[i].y)]++] = Item{points[i], i};
+  }
   // counts_[b] is now the end of bucket b; bucket b starts at counts_[b - 1] (0 for b = 0).
   std::size_t begin = 0;
   for (std::size_t b = 0; b < nb; ++b) {
     const std::size_t end = counts_[b];
     if (end - begin > 1) {
       if (end - begin <= 32)
-        insertion_sort(scratch_.data() + begin, scratch_.data() + end);
+        insertion_sort(a + begin, a + end);
       else
-        std::sort(scratch_.data() + begin, scratch_.data() + end, item_less<Item>);
+        std::sort(a + begin, a + end, item_less<Item>);
     }
     begin = end;
   }
-  std::copy(scratch_.begin(), scratch_.end(), a);
 }
 
-// Andrew's monotone chain over the sorted, distinct items: the right chain from the lowest to
-// the highest point, then the left chain back, each keeping only left turns (or also straight
-// continuations when keeping collinear points).
+// Andrew's monotone chain over the sorted items, split first by the line from the lowest point F
+// to the highest point L: the right chain (from F up to L) is the chain of the points on or right
+// of FL, the left chain (from L down to F) that of the points on or left of it; each pass keeps
+// only left turns (or also straight continuations when keeping collinear points). Duplicates
+// are skipped in place (the first of equal items has the smallest index).
 template <Real T>
 void ConvexHull2<T>::monotone_chain(bool keep_collinear, Hull2Result& out) {
   const std::size_t m = items_.size();
-  hull_.resize(2 * m);
-  std::uint32_t* h = hull_.data();
   const Item* it = items_.data();
+  std::size_t last = m - 1;
+  while (last > 0 && it[last - 1].p == it[m - 1].p) --last;
+  if (last == 0) {
+    out.dimension = 0;
+    out.indices.push_back(it[0].index);
+    return;
+  }
+  enum : std::uint8_t { right = 1, left = 2, on = 3, skip = 0 };
+  side_.resize(m);
+  std::uint8_t* side = side_.data();
+  const Vec2<T> f = it[0].p, l = it[last].p;
+  std::size_t n_on = 0, n_off = 0;
+  side[0] = on;
+  for (std::size_t i = 1; i < m; ++i) {
+    if (it[i].p == it[i - 1].p) {
+      side[i] = skip;
+      continue;
+    }
+    const Sign s = orient2d(f, l, it[i].p);
+    side[i] = s == Sign::negative ? right : (s == Sign::positive ? left : on);
+    n_on += s == Sign::zero;
+    n_off += s != Sign::zero;
+  }
+  if (n_off == 0) {
+    out.dimension = 1;
+    if (keep_collinear) {
+      for (std::size_t i = 0; i < m; ++i)
+        if (side[i] != skip) out.indices.push_back(it[i].index);
+    } else {
+      out.indices = {it[0].index, it[last].index};
+    }
+    return;
+  }
+  hull_.resize(m + n_on + 4);
+  std::uint32_t* h = hull_.data();
   const auto bad = [&](std::uint32_t a, std::uint32_t b, std::size_t c) {
     const Sign s = orient2d(it[a].p, it[b].p, it[c].p);
     return keep_collinear ? s == Sign::negative : s != Sign::positive;
   };
   std::size_t k = 0;
-  for (std::size_t i = 0; i < m; ++i) {
+  for (std::size_t i = 0; i <= last; ++i) {
+    if ((side[i] & right) == 0) continue;
     while (k >= 2 && bad(h[k - 2], h[k - 1], i)) --k;
     h[k++] = static_cast<std::uint32_t>(i);
   }
   const std::size_t lower = k + 1;
-  for (std::size_t i = m - 1; i-- > 0;) {
+  for (std::size_t i = last; i-- > 0;) {
+    if ((side[i] & left) == 0) continue;
     while (k >= lower && bad(h[k - 2], h[k - 1], i)) --k;
     h[k++] = static_cast<std::uint32_t>(i);
   }
   const std::size_t size = k - 1;
-  const bool collinear = keep_collinear ? size == 2 * m - 2 : size == 2;
-  if (collinear) {
-    out.dimension = 1;
-    if (keep_collinear) {
-      out.indices.resize(m);
-      for (std::size_t i = 0; i < m; ++i) out.indices[i] = it[i].index;
-    } else {
-      out.indices = {it[0].index, it[m - 1].index};
-    }
-    return;
-  }
   out.dimension = 2;
   out.indices.resize(size);
   for (std::size_t i = 0; i < size; ++i) out.indices[i] = it[h[i]].index;

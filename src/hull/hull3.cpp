@@ -158,7 +158,8 @@ void ConvexHull3<T>::compute(std::span<const Vec3<T>> points, const Hull3Options
         ok = false;
         T c[3];
         for (int a = 0; a < 3; ++a) c[a] = lo[a] / T(2) + hi[a] / T(2);
-        for (const T f : {T(1), T(0.95), T(0.8), T(0.5)}) {
+        for (const T f :
+             {T(1), T(1) - T(0x1p-20), T(1) - T(0x1p-12), T(1) - T(0x1p-6), T(0.9), T(0.5)}) {
           T l[3], h[3];
           for (int a = 0; a < 3; ++a) {
             l[a] = c[a] + f * (lo[a] - c[a]);

@@ -87,10 +87,14 @@ class ConvexHull2 {
   struct Item {
     Vec2<T> p;
     std::uint32_t index;
+    // Left uninitialised on purpose: resizing the large sort buffer must not zero-fill it.
+    Item() noexcept {}  // NOLINT
+    Item(const Vec2<T>& q, std::uint32_t i) noexcept : p(q), index(i) {}
   };
 
  private:
-  void sort_items(std::size_t first, std::size_t count);
+  void gather_sorted(std::span<const Vec2<T>> points, const std::uint32_t* selected, std::size_t m,
+                     double ymin, double ymax);
   void monotone_chain(bool keep_collinear, Hull2Result& out);
   void incremental(Hull2Result& out);
   void divide_and_conquer(Hull2Result& out);
@@ -99,12 +103,11 @@ class ConvexHull2 {
   void emit_strict(bool keep_collinear, Hull2Result& out);
 
   std::vector<Item> items_;  // filtered, sorted, deduplicated points
-  std::vector<Item> scratch_;
   std::vector<std::uint32_t> counts_;
   std::vector<std::uint32_t> hull_;  // positions in items_
   std::vector<std::uint32_t> aux_;   // method-specific
   std::vector<std::uint32_t> aux2_;
-  std::vector<std::uint32_t> hsize_;  // divide and conquer: hull size of each range
+  std::vector<std::uint8_t> side_;  // monotone chain: side of the bottom-top line
 };
 
 /// The convex hull of a 2D point set (one call over ConvexHull2).
