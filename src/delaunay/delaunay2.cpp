@@ -349,7 +349,7 @@ LOCUS_D2_INLINE void Delaunay2<T>::set_triangle(std::uint32_t t, std::uint32_t a
 }
 
 template <Real T>
-LOCUS_D2_INLINE bool Delaunay2<T>::in_conflict(std::uint32_t v, std::uint32_t e) const noexcept {
+bool Delaunay2<T>::in_conflict(std::uint32_t v, std::uint32_t e) const noexcept {
   const std::uint32_t o = adj_[e];
   const std::uint32_t base = o - o % 3;
   const Vec2<T>* pts = sorted_.data();
@@ -467,14 +467,22 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
   // Lawson: flip link edges while v is strictly inside the circle across them. Each flip adds
   // an edge at v, so the number of flips is below the vertex count; the budget only guards.
   std::size_t budget = 3 * (tri_.size() / 3) + 64;
+  const Vec2<T>* pts = sorted_.data();
+  const Vec2<T> pv = pts[v];
   while (!stack_.empty()) {
     if (budget-- == 0) return false;
     const std::uint32_t e = stack_.back();
     stack_.pop_back();
-    if (!in_conflict(v, e)) continue;
     const std::uint32_t o = adj_[e];
+    const std::uint32_t ob = o - o % 3;
     const std::uint32_t x = tri_[e], y = tri_[nxt(e)];
     const std::uint32_t z = tri_[prv(o)];
+    // The opposite triangle is (y, x, z); a ghost one (z or x or y at infinity) is rare.
+    if (tri_[ob + 2] == kGhost) [[unlikely]] {
+      if (!in_conflict(v, e)) continue;
+    } else if (incircle_fast(pts[y], pts[x], pts[z], pv) != Sign::positive) {
+      continue;
+    }
     const std::uint32_t a1 = adj_[nxt(e)], a2 = adj_[prv(e)];
     const std::uint32_t b1 = adj_[nxt(o)], b2 = adj_[prv(o)];
     const std::uint32_t ta = e / 3, tb = o / 3;
