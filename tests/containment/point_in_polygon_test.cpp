@@ -41,9 +41,11 @@ int orient(const Q2& a, const Q2& b, const Q2& c) {
   return sgn(mpq_class((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)));
 }
 bool on_segment(const Q2& a, const Q2& b, const Q2& p) {
-  if (orient(a, b, p) != 0) return false;
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-         p.y <= std::max(a.y, b.y);
+  // The box test first: it is cheap and rejects almost every edge.
+  if (!(std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+        p.y <= std::max(a.y, b.y)))
+    return false;
+  return orient(a, b, p) == 0;
 }
 // Winding number by quadrant counting: the quadrant of v - p (0..3 counter-clockwise) changes by
 // +-1 along an edge, or by 2 when the edge jumps across p's diagonal, decided by orient.
@@ -73,30 +75,30 @@ int winding_oracle(const std::vector<Q2>& ring, const Q2& p) {
 int parity_oracle(const std::vector<std::vector<Q2>>& rings, const Q2& p) {
   for (int k = 1;; ++k) {
     const mpq_class slope(k, 7919);
+    const Q2 far{p.x + 1, p.y + slope};
     bool degenerate = false;
     int count = 0;
     for (const auto& ring : rings) {
       const std::size_t n = ring.size();
+      // Side of every vertex relative to the line through p with direction (1, slope).
+      std::vector<int> side(n);
       for (std::size_t i = 0; i < n && !degenerate; ++i) {
+        side[i] = orient(p, far, ring[i]);
+        degenerate = side[i] == 0;
+      }
+      if (degenerate) break;
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = (i + 1) % n;
+        if (side[i] == side[j]) continue;
         const Q2& a = ring[i];
-        const Q2& b = ring[(i + 1) % n];
-        // Side of a and b relative to the line through p with direction (1, slope).
-        const Q2 far{p.x + 1, p.y + slope};
-        const int sa = orient(p, far, a), sb = orient(p, far, b);
-        if (sa == 0 || sb == 0) {
-          degenerate = true;
-          break;
-        }
-        if (sa == sb) continue;
+        const Q2& b = ring[j];
         // f(X) = orient(a, b, X) is affine: the crossing is at t = -f(p) / (f(far) - f(p)),
         // on the ray iff f(p) and f(far) - f(p) have opposite signs (f(p) != 0 unless p is on
         // the edge, which the caller excludes).
-        const int s = orient(a, b, p);
-        const mpq_class dp = mpq_class((b.x - a.x) * (far.y - a.y) - (b.y - a.y) * (far.x - a.x)) -
-                             mpq_class((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x));
-        if (s != 0 && s * sgn(dp) < 0) ++count;
+        const mpq_class fp = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+        const mpq_class ff = (b.x - a.x) * (far.y - a.y) - (b.y - a.y) * (far.x - a.x);
+        if (sgn(fp) != 0 && sgn(fp) * sgn(mpq_class(ff - fp)) < 0) ++count;
       }
-      if (degenerate) break;
     }
     if (!degenerate) return count & 1;
   }
