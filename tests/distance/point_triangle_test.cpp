@@ -8,6 +8,7 @@
 #include "support/typed.hpp"
 
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 using namespace locus;
@@ -166,4 +167,36 @@ TYPED_TEST(PointTriangleTest, NonFiniteInputGivesNaNResult) {
   EXPECT_TRUE(dist::is_nan_result(r));
   EXPECT_TRUE(std::isnan(r.param_b.x) && std::isnan(r.closest[1].y));
   EXPECT_TRUE(dist::is_nan_result(distance(bad, Vec3<T>{})));
+}
+
+// A needle triangle in 3D (angle ~2e-6 at v0 in double, 6e-3 in float): the plane solve is
+// ill-conditioned (Cramer's rule alone is off by ~eps / angle^2 relative) and the refined answer
+// must still be the projection, to the accuracy the rounded input allows.
+TYPED_TEST(PointTriangleTest, NeedleTriangleIn3DProjectsAccurately) {
+  using T = TypeParam;
+  const T thin = std::is_same_v<T, float> ? T(3e-3) : T(1e-6);
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int n = 0; n < 50; ++n) {
+    const auto r = dist::random_rotation<T, 3>(rng);
+    const Vec3<T> o = rng.vec<T, 3>(-1, 1);
+    const Triangle3<T> tri{o, o + r * Vec3<T>{T(1), T(0), T(0)},
+                           o + r * Vec3<T>{T(0.5), thin, T(0)}};
+    const Vec3<T> p = o + r * Vec3<T>{T(0.5), T(0.5) * thin, T(0.3)};
+    const auto d = distance(p, tri);
+    // Exact projection onto the plane of the (rounded) input triangle, in rationals: the tilt of
+    // the rounded needle's plane is ~eps / thin, so a float "foot" would not be the reference.
+    const auto q0 = ex::to_q(tri.v0), e0 = ex::sub(ex::to_q(tri.v1), q0),
+               e1 = ex::sub(ex::to_q(tri.v2), q0), w = ex::sub(q0, ex::to_q(p));
+    const mpq_class a = ex::dot(e0, e0), b = ex::dot(e0, e1), c = ex::dot(e1, e1),
+                    dd = ex::dot(e0, w), ee = ex::dot(e1, w), det = a * c - b * b;
+    const mpq_class s = (b * ee - c * dd) / det, t = (b * dd - a * ee) / det;
+    ASSERT_TRUE(s > 0 && t > 0 && s + t < 1);
+    const auto foot = ex::axpy(ex::axpy(q0, s, e0), t, e1);
+    const Vec3<T> exact_foot{T(foot[0].get_d()), T(foot[1].get_d()), T(foot[2].get_d())};
+    // The rounded edge vectors tilt the plane by ~eps / thin: that is the attainable accuracy
+    // (Cramer's rule alone is off by ~eps / thin^2).
+    EXPECT_TRUE(locus_test::vec_near(d.closest[1], exact_foot, tol<T>(8) / thin)) << "case " << n;
+    EXPECT_NEAR(d.distance, T(0.3), tol<T>(8) / thin);
+  }
 }

@@ -11,15 +11,16 @@
 //
 // Method: minimise |v0 + s (v1 - v0) + t (v2 - v0) - p|^2 over s, t >= 0, s + t <= 1 (the
 // parametric form of figure 5.4, (u, v, w) = (1 - s - t, s, t)). The unconstrained minimiser
-// (the projection onto the triangle's plane, solved by Cramer's rule plus two steps of iterative
-// refinement) is the answer when it is inside (region 0 of figure 6.6); in 2D "inside" is decided
-// first from the sub-areas relative to p, and then the answer is p itself (distance exactly 0).
-// Otherwise the answer lies on an edge whose constraint the minimiser violates (KKT: moving towards
-// the minimiser along a feasible direction would decrease the distance): s < 0 gives the edge v0 v2
-// (regions 2, 3, 4), t < 0 the edge v0 v1 (regions 4, 5, 6), s + t > 1 the edge v1 v2 (regions 1,
-// 2, 6); each is an exact clamped point-segment projection, and the nearest of those edges wins.
-// This covers the seven regions of figure 6.6 without region-specific code, and the vertex regions
-// come out of the clamps exactly.
+// (the projection onto the triangle's plane, solved by Cramer's rule, plus two steps of iterative
+// refinement when the angle at v0 is within ~14 degrees of 0 or 180) is the answer when it is
+// inside (region 0 of figure 6.6); in 2D "inside" is decided first from the sub-areas relative to
+// p, and then the answer is p itself (distance exactly 0). Otherwise the answer lies on an edge
+// whose constraint the minimiser violates (KKT: moving towards the minimiser along a feasible
+// direction would decrease the distance): s < 0 gives the edge v0 v2 (regions 2, 3, 4), t < 0 the
+// edge v0 v1 (regions 4, 5, 6), s + t > 1 the edge v1 v2 (regions 1, 2, 6); each is an exact
+// clamped point-segment projection, and the nearest of those edges wins. This covers the seven
+// regions of figure 6.6 without region-specific code, and the vertex regions come out of the clamps
+// exactly.
 //
 // Degenerate input: when the triangle is (nearly) flat, |e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2 (the
 // plane solve is ill-conditioned), the answer is the nearest of the three edges, each handled as a
@@ -75,9 +76,10 @@ template <Real T, int N>
   }
   if (det > T(0)) {
     T s = (b * e - c * d) / det, t = (b * d - a * e) / det;
-    // Two steps of iterative refinement: Cramer's rule loses accuracy as the triangle thins
-    // (relative error ~ eps a c / det), the residual p - X(s, t) is computed directly.
-    for (int k = 0; k < 2; ++k) {
+    // Two steps of iterative refinement when the triangle is thin: Cramer's rule loses accuracy
+    // (relative error ~ eps a c / det); the residual p - X(s, t) is computed directly.
+    const int steps = T(16) * det >= a * c ? 0 : 2;  // well-shaped: already a few ulps
+    for (int k = 0; k < steps; ++k) {
       const Vec<T, N> res = p - (tri.v0 + s * e0 + t * e1);
       const T g0 = dot(e0, res), g1 = dot(e1, res);
       s += (c * g0 - b * g1) / det;
