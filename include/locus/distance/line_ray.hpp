@@ -19,8 +19,8 @@
 // infinitely many is returned.
 // distance(y, x) is the swapped result.
 //
-// Degenerate input: a zero direction acts as the point origin (t = 0); for the ray, a zero
-// direction acts as the point origin (t = 0); the query then reduces to a point-linear distance.
+// Degenerate input: a zero direction (of the line or the ray) acts as the point origin (t = 0);
+// the query then reduces to a point-linear distance.
 // NaN or infinite coordinates give non_finite_distance() (result.hpp). Cost: O(N), at most six
 // point-linear projections in the nearly parallel case.
 
