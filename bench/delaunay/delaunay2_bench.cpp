@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #if defined(LOCUS_HAVE_CGAL)
@@ -52,10 +53,17 @@ std::vector<locus::Vec2d> grid_points(int side) {
 }
 
 const std::vector<locus::Vec2d>& input(int which) {
-  static const std::vector<locus::Vec2d> u5 = uniform_points(100000);
-  static const std::vector<locus::Vec2d> u6 = uniform_points(1000000);
+  // Separate statics: a process running one case holds only that input (for maxrss).
+  if (which == 0) {
+    static const std::vector<locus::Vec2d> u5 = uniform_points(100000);
+    return u5;
+  }
+  if (which == 1) {
+    static const std::vector<locus::Vec2d> u6 = uniform_points(1000000);
+    return u6;
+  }
   static const std::vector<locus::Vec2d> g = grid_points(1000);
-  return which == 0 ? u5 : (which == 1 ? u6 : g);
+  return g;
 }
 
 void set_counters(benchmark::State& state, std::size_t n) {
@@ -64,6 +72,13 @@ void set_counters(benchmark::State& state, std::size_t n) {
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
   state.counters["rss_MB"] = double(ru.ru_maxrss) / 1024.0;
+}
+
+// The input alone: its maxrss is the baseline to subtract from the other cases' rss_MB.
+void input_case(benchmark::State& state, int which) {
+  const auto& p = input(which);
+  for (auto _ : state) benchmark::DoNotOptimize(p.data());
+  set_counters(state, p.size());
 }
 
 void locus_case(benchmark::State& state, int which) {
@@ -94,10 +109,14 @@ void cgal_case(benchmark::State& state, int which) {
   std::vector<K::Point_2> pts;
   pts.reserve(p.size());
   for (const auto& q : p) pts.emplace_back(q.x, q.y);
+  // Sanity: CGAL and locus agree on the number of triangles (unique for uniform input; equal
+  // for the grid by Euler's formula).
+  const std::size_t ours = locus::delaunay(std::span<const locus::Vec2d>(p)).triangle_count();
   for (auto _ : state) {
     DT dt;
     dt.insert(pts.begin(), pts.end());  // spatially sorted range insertion
     benchmark::DoNotOptimize(dt.number_of_faces());
+    if (dt.number_of_faces() != ours) state.SkipWithError("CGAL and locus triangle counts differ");
   }
   set_counters(state, p.size());
 }
@@ -132,6 +151,9 @@ void qhull_case(benchmark::State& state, int which) {
 void register_all() {
   const char* names[] = {"Uniform/100000", "Uniform/1000000", "Grid/1000x1000"};
   for (int w = 0; w < 3; ++w) {
+    benchmark::RegisterBenchmark((std::string("Delaunay2/Input/") + names[w]).c_str(), input_case,
+                                 w)
+        ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("Delaunay2/Locus/") + names[w]).c_str(), locus_case,
                                  w)
         ->Unit(benchmark::kMillisecond);

@@ -569,32 +569,30 @@ void Delaunay2<T>::run() {
   // orig_[k]), so the coordinates a walk or an incircle test reads are close in memory.
   orig_.resize(n);
   sorted_.resize(n);
-  order_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     orig_[k] = static_cast<std::uint32_t>(keys_[k]);
     sorted_[k] = points_[orig_[k]];
-    order_[k] = static_cast<std::uint32_t>(k);
   }
 
   // A first non-degenerate triangle: the first point, the first different one, the first one
   // off their line.
   const Vec2<T>* pts = sorted_.data();
-  const std::uint32_t p0 = order_[0];
+  const std::uint32_t p0 = 0;
   std::size_t k1 = 1;
-  while (k1 < n && same_point(pts[order_[k1]], pts[p0])) ++k1;
+  while (k1 < n && same_point(pts[k1], pts[p0])) ++k1;
   if (k1 == n) {
     lower_dimensional();
     return;
   }
-  const std::uint32_t p1 = order_[k1];
+  const std::uint32_t p1 = static_cast<std::uint32_t>(k1);
   std::size_t k2 = k1 + 1;
-  while (k2 < n && orient2d(pts[p0], pts[p1], pts[order_[k2]]) == Sign::zero) ++k2;
+  while (k2 < n && orient2d(pts[p0], pts[p1], pts[k2]) == Sign::zero) ++k2;
   if (k2 == n) {
     lower_dimensional();
     return;
   }
   dimension_ = 2;
-  const std::uint32_t p2 = order_[k2];
+  const std::uint32_t p2 = static_cast<std::uint32_t>(k2);
   std::uint32_t a = p0, b = p1, c = p2;
   if (orient2d(pts[a], pts[b], pts[c]) == Sign::negative) std::swap(b, c);
 
@@ -615,13 +613,13 @@ void Delaunay2<T>::run() {
   bool ok = true;
   for (std::size_t k = k1 + 1; k < n && ok; ++k) {
     if (k == k2) continue;
-    ok = insert_vertex(order_[k]);
+    ok = insert_vertex(static_cast<std::uint32_t>(k));
   }
   if (!ok) status_ = Status::limit_exceeded;
 }
 
 template <Real T>
-void Delaunay2<T>::compact() {
+void Delaunay2<T>::compact(bool in_place) {
   Delaunay2Result& r = result_;
   r.status = status_;
   r.dimension = dimension_;
@@ -648,15 +646,12 @@ void Delaunay2<T>::compact() {
       order_[t] = count++;
     }
   }
-  r.triangles.resize(3 * std::size_t(count));
   r.halfedges.resize(3 * std::size_t(count));
   for (std::uint32_t t = 0; t < nt; ++t) {
     const std::uint32_t nt_new = order_[t];
     if (nt_new == kNone) continue;
     for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t e = 3 * t + i;
-      r.triangles[3 * nt_new + i] = orig_[tri_[e]];
-      const std::uint32_t o = adj_[e];
+      const std::uint32_t o = adj_[3 * t + i];
       const std::uint32_t to = order_[o / 3];
       r.halfedges[3 * nt_new + i] = to == kNone ? -1 : static_cast<std::int32_t>(3 * to + o % 3);
     }
@@ -675,13 +670,35 @@ void Delaunay2<T>::compact() {
   }
   // Triangle of the last point, renumbered, as the walk start of locate().
   last_out_ = order_[last_] == kNone ? order_[adj_[3 * last_] / 3] : order_[last_];
+  if (in_place) {
+    // take_result(): the internal arrays are not needed any more, so the triangles are packed
+    // into tri_ itself (slot order_[t] <= t) and handed over: no second 12-byte-per-triangle
+    // array is allocated and touched.
+    for (std::uint32_t t = 0; t < nt; ++t) {
+      const std::uint32_t nt_new = order_[t];
+      if (nt_new == kNone) continue;
+      for (std::uint32_t i = 0; i < 3; ++i) tri_[3 * nt_new + i] = orig_[tri_[3 * t + i]];
+    }
+    tri_.resize(3 * std::size_t(count));
+    r.triangles.swap(tri_);
+    tri_.clear();
+    adj_.clear();
+    dimension_ = -1;
+  } else {
+    r.triangles.resize(3 * std::size_t(count));
+    for (std::uint32_t t = 0; t < nt; ++t) {
+      const std::uint32_t nt_new = order_[t];
+      if (nt_new == kNone) continue;
+      for (std::uint32_t i = 0; i < 3; ++i) r.triangles[3 * nt_new + i] = orig_[tri_[3 * t + i]];
+    }
+  }
   order_.clear();
 }
 
 template <Real T>
 const Delaunay2Result& Delaunay2<T>::result() {
   if (dirty_) {
-    compact();
+    compact(false);
     dirty_ = false;
   }
   return result_;
@@ -689,10 +706,12 @@ const Delaunay2Result& Delaunay2<T>::result() {
 
 template <Real T>
 Delaunay2Result Delaunay2<T>::take_result() {
-  result();
+  if (dirty_) compact(true);
   Delaunay2Result r = std::move(result_);
+  result_ = Delaunay2Result{};
   points_.clear();
   run();
+  dirty_ = true;
   return r;
 }
 

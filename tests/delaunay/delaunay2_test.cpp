@@ -312,6 +312,22 @@ TYPED_TEST(Delaunay2Test, HugeAndTinyCoordinates) {
   EXPECT_TRUE(check_delaunay(p, run(p)));
 }
 
+TEST(Delaunay2, OutsideExactRangeNoCrashOrHang) {
+  // Beyond the predicates' exact range (predicates.hpp) the result may not be Delaunay, but the
+  // call must return (budgets) with a structurally sane result.
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (double s : {1e300, 1e-300, 1e-320}) {
+    auto p = random_points<double>(rng, 300);
+    for (auto& q : p) q = {q.x * s, q.y * s};
+    p.push_back({std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()});
+    const auto r = run(p);
+    EXPECT_TRUE(r.status == Status::ok || r.status == Status::limit_exceeded);
+    EXPECT_LE(r.triangle_count(), 2 * p.size());
+    EXPECT_EQ(r.halfedges.size(), r.triangles.size());
+  }
+}
+
 // ---- point location and incremental insertion ------------------------------------------
 
 TYPED_TEST(Delaunay2Test, LocateMatchesBruteForce) {

@@ -144,7 +144,7 @@ class Delaunay2 {
                     std::uint32_t opp_ab, std::uint32_t opp_bc, std::uint32_t opp_ca,
                     std::uint32_t* out_edges) noexcept;
   bool in_conflict(std::uint32_t p, std::uint32_t e) const noexcept;
-  void compact();
+  void compact(bool in_place);
   void lower_dimensional();
 
   std::vector<Vec2<T>> points_;  // as given
