@@ -166,14 +166,22 @@ void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options
     if (use_box) {
       // The closed box lies strictly inside the hull of input points, so no point in it is on
       // the hull boundary.
-      aux_.clear();
-      for (std::size_t i = 0; i < n; ++i) {
-        const Vec2<T> p = points[i];
-        const bool inside = (p.x >= lo.x) & (p.x <= hi.x) & (p.y >= lo.y) & (p.y <= hi.y);
-        if (!inside) aux_.push_back(static_cast<std::uint32_t>(i));
+      const auto outside = [&](const Vec2<T>& p) {
+        return !((p.x >= lo.x) & (p.x <= hi.x) & (p.y >= lo.y) & (p.y <= hi.y));
+      };
+      // When most points survive (all on the hull, say), selecting them only adds a pass and an
+      // indirection: a strided sample decides.
+      const std::size_t samples = std::min<std::size_t>(n, 1024), stride = n / samples;
+      std::size_t sampled_out = 0;
+      for (std::size_t i = 0; i < samples; ++i) sampled_out += outside(points[i * stride]);
+      if (2 * sampled_out < samples) {
+        aux_.clear();
+        aux_.reserve(std::min<std::size_t>(n, 1u << 16));
+        for (std::size_t i = 0; i < n; ++i)
+          if (outside(points[i])) aux_.push_back(static_cast<std::uint32_t>(i));
+        selected = aux_.data();
+        m = aux_.size();
       }
-      selected = aux_.data();
-      m = aux_.size();
     }
   }
   gather_sorted(points, selected, m, ymin, ymax);
