@@ -39,12 +39,12 @@ struct SplitMix {
 // The move-to-front engine over points of type Vec<T, D>. Support sets of size k define the
 // smallest ball with those k points on its boundary; `outside` is an exact decision against
 // them, the centre/radius are only for the output.
-template <class T, int D>
+template <int D>
 class Engine {
  public:
   using P = Vec<double, D>;
 
-  Engine(std::span<const Vec<T, D>> pts, std::vector<std::uint32_t>& next,
+  Engine(const std::vector<P>& pts, std::vector<std::uint32_t>& next,
          std::vector<std::uint32_t>& prev, std::uint64_t budget) noexcept
       : pts_(pts), next_(next), prev_(prev), budget_(budget) {}
 
@@ -62,7 +62,7 @@ class Engine {
 
   // The rounded centre and radius of the current ball.
   void ball(P& center, double& radius) const noexcept {
-    P s[D + 1];
+    P s[D + 1] = {};
     for (int i = 0; i < cur_k_; ++i) s[i] = point(cur_[i]);
     if (cur_k_ == 1) {
       center = s[0];
@@ -78,11 +78,13 @@ class Engine {
   }
 
  private:
-  P point(std::uint32_t i) const noexcept { return vec_cast<double>(pts_[i]); }
+  const P& point(std::uint32_t i) const noexcept { return pts_[i]; }
 
-  // Exact: is point i strictly outside the current ball?
+  // Exact: is point i strictly outside the current ball? (The deep-inside shortcut is
+  // explained in min_circle.hpp.)
   bool outside(std::uint32_t i) const noexcept {
-    const P p = point(i);
+    const P& p = point(i);
+    if (use_shortcut_ && sqr_length(p - center_) <= inner_r2_) return false;
     switch (cur_k_) {
       case 0:
         return true;
@@ -113,19 +115,56 @@ class Engine {
       cur_[i] = stack_[i];
       s_[i] = point(stack_[i]);
     }
+    bool ok = true;
     if constexpr (D == 2) {
       if (k == 3) {
         orientation_ = orient2d(s_[0], s_[1], s_[2]);
-        return orientation_ != Sign::zero;
+        ok = orientation_ != Sign::zero;
       }
     } else {
-      if (k == 3) return !is_degenerate(Triangle<double, 3>{s_[0], s_[1], s_[2]});
+      if (k == 3) ok = !is_degenerate(Triangle<double, 3>{s_[0], s_[1], s_[2]});
       if (k == 4) {
         orientation_ = orient3d(s_[0], s_[1], s_[2], s_[3]);
-        return orientation_ != Sign::zero;
+        ok = orientation_ != Sign::zero;
       }
     }
-    return true;
+    update_shortcut();
+    return ok;
+  }
+
+  // The rounded ball and whether its deep interior may skip the exact test: only when the
+  // support set's condition estimate kappa bounds the centre's error far below the margin.
+  void update_shortcut() noexcept {
+    use_shortcut_ = false;
+    if (cur_k_ < 2) return;
+    double kappa = 1.0;
+    const P u = s_[1] - s_[0];
+    if (cur_k_ == 3) {
+      const P v = s_[2] - s_[0];
+      double area2 = 0.0;
+      if constexpr (D == 2) {
+        area2 = std::abs(perp_dot(u, v));
+      } else {
+        area2 = length(cross(u, v));
+      }
+      kappa = (sqr_length(u) + sqr_length(v)) / area2;
+    } else if (cur_k_ == 4) {
+      if constexpr (D == 3) {
+        const P v = s_[2] - s_[0], w = s_[3] - s_[0];
+        const double det = std::abs(dot(u, cross(v, w)));
+        const double adj =
+            std::sqrt(sqr_length(cross(v, w)) + sqr_length(cross(w, u)) + sqr_length(cross(u, v)));
+        kappa = std::sqrt(sqr_length(u) + sqr_length(v) + sqr_length(w)) * adj / det;
+      }
+    }
+    if (!(kappa <= 0x1p20)) return;
+    double radius = 0.0;
+    ball(center_, radius);
+    // Absolute roundings (the centre = s0 + offset, the differences p - c) are eps |s0|: keep
+    // them below 2^-33 r as well.
+    if (!(max_abs(s_[0]) <= 0x1p20 * radius)) return;
+    inner_r2_ = radius * radius * (1.0 - 0x1p-20);
+    use_shortcut_ = std::isfinite(inner_r2_) && inner_r2_ > 0x1p-900 && is_finite(center_);
   }
 
   void move_to_front(std::uint32_t it) noexcept {
@@ -167,7 +206,7 @@ class Engine {
     }
   }
 
-  std::span<const Vec<T, D>> pts_;
+  const std::vector<P>& pts_;
   std::vector<std::uint32_t>& next_;
   std::vector<std::uint32_t>& prev_;
   std::uint64_t budget_;
@@ -178,6 +217,9 @@ class Engine {
   P s_[D + 1] = {};
   int cur_k_ = 0;
   Sign orientation_ = Sign::zero;
+  P center_{};
+  double inner_r2_ = 0.0;
+  bool use_shortcut_ = false;
   bool failed_ = false;
   bool exhausted_ = false;
 };
@@ -192,6 +234,7 @@ struct Solved {
 template <class T, int D>
 Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
              std::vector<std::uint32_t>& next, std::vector<std::uint32_t>& prev,
+             std::vector<std::uint32_t>& order, std::vector<Vec<double, D>>& copy,
              Vec<double, D>& center, double& radius) {
   Solved out{Status::empty_input, 0, {}, 0};
   if (pts.empty()) return out;
@@ -209,33 +252,35 @@ Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
   const std::uint32_t head = n, tail = n + 1;
   next.resize(n + 2u);
   prev.resize(n + 2u);
-  // The visiting order: identity or a seeded Fisher-Yates permutation, stored in prev as scratch.
-  for (std::uint32_t i = 0; i < n; ++i) prev[i] = i;
+  // The visiting order: identity or a seeded Fisher-Yates permutation; the points are copied
+  // in that order so the scans read memory sequentially.
+  order.resize(n);
+  copy.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
   if (options.shuffle) {
     SplitMix rng{options.seed};
     for (std::uint32_t i = n - 1; i > 0; --i) {
       const auto j = static_cast<std::uint32_t>(rng.below(std::uint64_t{i} + 1));
-      std::swap(prev[i], prev[j]);
+      std::swap(order[i], order[j]);
     }
   }
-  std::uint32_t last = head;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    next[last] = prev[i];
-    last = prev[i];
-  }
-  next[last] = tail;
-  // Now fill prev from next.
-  for (std::uint32_t it = head; it != tail; it = next[it]) prev[next[it]] = it;
+  for (std::uint32_t i = 0; i < n; ++i) copy[i] = vec_cast<double>(pts[order[i]]);
+  next[head] = n == 0 ? tail : 0;
   prev[head] = head;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    next[i] = i + 1 < n ? i + 1 : tail;
+    prev[i] = i == 0 ? head : i - 1;
+  }
+  prev[tail] = n - 1;
   next[tail] = tail;
 
   const std::uint64_t budget =
       options.max_tests != 0 ? options.max_tests : 1000u * std::uint64_t{n} + 1000000u;
-  Engine<T, D> engine(pts, next, prev, budget);
+  Engine<D> engine(copy, next, prev, budget);
   const bool ok = engine.run(head, tail);
   out.tests = engine.tests();
   out.support_count = engine.support_count();
-  for (int i = 0; i < out.support_count; ++i) out.support[i] = engine.support(i);
+  for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
   engine.ball(center, radius);
   out.status =
       ok ? Status::ok : (engine.exhausted() ? Status::limit_exceeded : Status::degenerate_input);
@@ -250,7 +295,7 @@ MinCircleResult<T> MinCircle2<T>::compute(std::span<const Vec2<T>> points,
   MinCircleResult<T> r;
   Vec2<double> center{};
   double radius = 0.0;
-  const Solved s = solve<T, 2>(points, options, next_, prev_, center, radius);
+  const Solved s = solve<T, 2>(points, options, next_, prev_, order_, points_, center, radius);
   r.status = s.status;
   r.tests = s.tests;
   if (s.status != Status::ok && s.status != Status::limit_exceeded) return r;
@@ -266,7 +311,7 @@ MinSphereResult<T> MinSphere3<T>::compute(std::span<const Vec3<T>> points,
   MinSphereResult<T> r;
   Vec3<double> center{};
   double radius = 0.0;
-  const Solved s = solve<T, 3>(points, options, next_, prev_, center, radius);
+  const Solved s = solve<T, 3>(points, options, next_, prev_, order_, points_, center, radius);
   r.status = s.status;
   r.tests = s.tests;
   if (s.status != Status::ok && s.status != Status::limit_exceeded) return r;
