@@ -7,11 +7,14 @@
 //   locus_bench_delaunay --benchmark_filter='Locus/Uniform/1000000$' and /usr/bin/time -v
 // (the counter "rss_MB" below is the process maxrss after the case, exact when run alone).
 //
-// Before bench/CMakeLists.txt links the peers, build by hand (from /work/main, after building
-// liblocus.a with -O2 in build-bench-rel):
+// Before bench/CMakeLists.txt links the peers, build by hand (from /work/main):
+//   cmake -S . -B build-delaunay-rel -G Ninja -DCMAKE_BUILD_TYPE=Release
+//         -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DLOCUS_BUILD_TESTS=OFF -DLOCUS_BUILD_BENCH=OFF
+//   ninja -C build-delaunay-rel locus
 //   g++ -O2 -std=c++20 -DNDEBUG -DLOCUS_HAVE_CGAL=1 -DLOCUS_HAVE_QHULL=1 -Iinclude
-//       bench/delaunay/delaunay2_bench.cpp build-bench-rel/liblocus.a -lbenchmark
+//       bench/delaunay/delaunay2_bench.cpp build-delaunay-rel/liblocus.a -lbenchmark
 //       -lbenchmark_main -lqhull_r -lgmp -lmpfr -lpthread -o /tmp/delaunay2_bench
+// CGAL needs gmp and mpfr at link time; Qhull is libqhull_r (reentrant), options "d Qt Qbb Qz".
 
 #include <benchmark/benchmark.h>
 

@@ -44,9 +44,12 @@
 // |coordinates| within about 6e-64 .. 6e73 for double; every float). Outside them the result is
 // still a triangulation without crash or hang, but possibly not Delaunay.
 //
-// Cost: O(n log n) expected for spatially sorted input (n Hilbert keys, a radix sort, O(1)
-// expected walk steps and flips per point); memory about 40 bytes per point (triangle and
-// half-edge arrays plus the order), plus the copy of the points that Delaunay2 keeps.
+// Cost: O(n log n) expected (n Hilbert keys, radix-sorted BRIO rounds, O(1) expected walk
+// steps and about 3 flips per point). Measured (bench/delaunay/delaunay2_bench.cpp, -O2, CPU
+// time): 10^6 uniform points 0.36 s one call / 0.29 s reusing a Delaunay2, vs CGAL
+// Delaunay_triangulation_2<Epick> 0.64 s; 1000 x 1000 grid 0.37 s vs 0.73 s. Peak memory about
+// 155 bytes per point above the input (index arrays with ghosts, the Hilbert-ordered copy of
+// the points, the result); 10^6 points: 175 MB max RSS vs CGAL's 192 MB.
 
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
