@@ -97,7 +97,12 @@ template <class T, int N>
 /// origin.
 template <class T, int N>
 [[nodiscard]] inline T closest_param(const LinearView<T, N>& l, const Vec<T, N>& p) noexcept {
-  // Scale by the largest component so that |dir|^2 neither underflows nor overflows.
+  const T a = sqr_length(l.dir);
+  if (a >= std::numeric_limits<T>::min() && a <= std::numeric_limits<T>::max()) {
+    const T t = dot(p - l.origin, l.dir) / a;
+    if (is_finite(t)) return l.clamp_param(t);
+  }
+  // |dir|^2 underflowed or overflowed: scale by the largest component first.
   const T m = max_abs(l.dir);
   if (!(m > T(0))) return T(0);
   const Vec<T, N> u = l.dir / m;
@@ -158,6 +163,22 @@ template <class T, int N>
       // Well separated directions (angle above ~14 degrees): Cramer's rule is accurate to a few
       // ulps and needs no refinement.
       if (inside && T(16) * D >= ac) return {s0, t0, true};
+      if (!inside && D > T(64) * eps_v<T> * ac) {
+        // Strictly convex and well conditioned: the constrained minimum lies on an edge whose
+        // constraint the unconstrained minimiser violates (otherwise moving towards it would
+        // be feasible and decrease R), so only those (at most two) edges are candidates.
+        T best = std::numeric_limits<T>::infinity();
+        T bs = T(0), bt = T(0);
+        const auto edge = [&](T s, T t) {
+          const T q = sqr_length(A.at(s) - B.at(t));
+          if (q < best) best = q, bs = s, bt = t;
+        };
+        if (A.bounded_lo && s0 < T(0)) edge(T(0), closest_param(B, A.origin));
+        if (A.bounded_hi && s0 > T(1)) edge(T(1), closest_param(B, A.end));
+        if (B.bounded_lo && t0 < T(0)) edge(closest_param(A, B.origin), T(0));
+        if (B.bounded_hi && t0 > T(1)) edge(closest_param(A, B.end), T(1));
+        return {bs, bt, true};
+      }
       ti = closest_param(B, A.at(A.clamp_param(s0)));
       si = closest_param(A, B.at(ti));
       have_interior = true;
