@@ -418,12 +418,12 @@ TYPED_TEST(Hull3, SphereAndCube) {
   SCOPED_TRACE(rng.trace());
   std::vector<Vec3<T>> sphere, cube;
   for (int i = 0; i < 500; ++i) sphere.push_back(rng.unit<T, 3>());
-  for (int i = 0; i < 3000; ++i) cube.push_back(rng.vec<T, 3>(T(-1), T(1)));
+  for (int i = 0; i < 2000; ++i) cube.push_back(rng.vec<T, 3>(T(-1), T(1)));
   check_all(sphere);
   check_all(cube);
   // Large: only QuickHull, invariants without the O(nF) sweep, plus a sampled sweep.
   std::vector<Vec3<T>> big;
-  for (int i = 0; i < 8000; ++i) big.push_back(rng.unit<T, 3>());
+  for (int i = 0; i < 5000; ++i) big.push_back(rng.unit<T, 3>());
   const Hull3Result r = hull(big, Hull3Method::quickhull);
   EXPECT_TRUE(check_hull(big, r, false));
   std::vector<Vec3<T>> sample(big.begin(), big.begin() + 200);
