@@ -17,18 +17,20 @@
 // minimiser comes from Cramer's rule; below an angle of ~14 degrees its s - t is inaccurate
 // (cancellation), so t is re-derived by projecting A(s) onto B and then s by projecting B(t)
 // onto A. When the directions are well separated (|dA x dB|^2 > 64 eps |dA|^2 |dB|^2) and the
-// minimiser lies in the domain it is returned. Otherwise every candidate (the refined interior
-// point, each finite edge, and for two lines the projection of A's origin) is evaluated and the
-// smallest squared distance wins. Every candidate is a realisable pair of points, so the answer is
-// never below the true distance by more than rounding and is a minimum of continuous functions of
-// the input, hence continuous as the input moves through (near-)parallel configurations; this is
-// what the textbook "if det < epsilon then parallel" code gets wrong. |dA x dB|^2 is evaluated
-// as a sum of squared 2x2 minors (Lagrange's identity), not as a c - b^2, so it does not cancel.
-// Error: the squared distance is within a few eps * (scale)^2 of the true one, scale being the
-// magnitude of the closest points (tested against exact rationals). When two unbounded
-// components are parallel to within ~eps the problem itself is ill-posed (the closest points
-// may be arbitrarily far away, and every answer between the parallel distance and the exact one
-// is exact for input perturbed by an ulp); the answer is then one of those.
+// minimiser lies in the domain it is returned; when it lies outside, only the (one or two) edges
+// whose constraints it violates can hold the minimum (KKT), and the nearer of those wins. In the
+// nearly parallel regime every candidate (the refined interior point, each finite edge, and for
+// two lines the projection of A's origin) is evaluated and the smallest squared distance wins.
+// Every candidate is a realisable pair of points, so the answer is never below the true distance by
+// more than rounding and is a minimum of continuous functions of the input, hence continuous as the
+// input moves through (near-)parallel configurations; this is what the textbook "if det < epsilon
+// then parallel" code gets wrong. |dA x dB|^2 is evaluated as a sum of squared 2x2 minors
+// (Lagrange's identity), not as a c - b^2, so it does not cancel. Error: the squared distance is
+// within a few eps * (scale)^2 of the true one, scale being the magnitude of the closest points
+// (tested against exact rationals). When two unbounded components are parallel to within ~eps the
+// problem itself is ill-posed (the closest points may be arbitrarily far away, and every answer
+// between the parallel distance and the exact one is exact for input perturbed by an ulp); the
+// answer is then one of those.
 //
 // Same-type pairs are solved in a canonical (lexicographic) argument order, so distance(b, a) is
 // bit for bit the swap of distance(a, b).
