@@ -323,3 +323,42 @@ TYPED_TEST(LinearLinearTest, SwappedOverloadsAreExactSwaps) {
     EXPECT_EQ(f.closest[1], g.closest[0]);
   }
 }
+
+// The same sweep through the parallel position for a ray and a line against the moving segment
+// (b's second endpoint moves; the distance is 1-Lipschitz in it), checked exactly in double.
+TYPED_TEST(LinearLinearTest, NearParallelRayAndLineAreContinuous) {
+  using T = TypeParam;
+  const T step = std::is_same_v<T, float> ? T(1e-3) : T(1e-6);
+  const int steps = 1000;
+  const Ray3<T> ray{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}};
+  const Line3<T> line{{T(0), T(0), T(0)}, {T(2), T(0), T(0)}};
+  for (int config = 0; config < 2; ++config) {
+    SCOPED_TRACE("config " + std::to_string(config));
+    const T h = config == 0 ? T(0) : T(0.25);
+    T prev_r = T(-1), prev_l = T(-1);
+    for (int k = -steps / 2; k <= steps / 2; ++k) {
+      const T off = static_cast<T>(k) * step;
+      const Segment3<T> b{{T(-0.5), h, T(0)}, {T(1.5), h + off, off}};
+      const auto r = distance(ray, b);
+      const auto l = distance(b, line);
+      ASSERT_TRUE(std::isfinite(r.distance) && std::isfinite(l.distance));
+      if (prev_r >= T(0)) {
+        EXPECT_LE(std::abs(r.distance - prev_r), step * T(1.5) + tol<T>(64)) << "k = " << k;
+        EXPECT_LE(std::abs(l.distance - prev_l), step * T(1.5) + tol<T>(64)) << "k = " << k;
+      }
+      prev_r = r.distance;
+      prev_l = l.distance;
+      if constexpr (std::is_same_v<T, double>) {
+        const auto qb = ex::segment(b.p0, b.p1);
+        EXPECT_NEAR(r.sqr_distance,
+                    ex::sqr_linear_linear(ex::ray(ray.origin, ray.direction), qb).get_d(),
+                    tol<T>(16))
+            << "k = " << k;
+        EXPECT_NEAR(l.sqr_distance,
+                    ex::sqr_linear_linear(qb, ex::line(line.origin, line.direction)).get_d(),
+                    tol<T>(16))
+            << "k = " << k;
+      }
+    }
+  }
+}
