@@ -36,6 +36,43 @@ struct SplitMix {
   }
 };
 
+// The directions whose extreme points seed the search (both ends of each).
+template <int D>
+inline constexpr int kDirs = D == 2 ? 4 : 7;
+
+template <int D>
+void keys_of(const Vec<double, D>& p, double* key) noexcept {
+  if constexpr (D == 2) {
+    key[0] = p.x, key[1] = p.y, key[2] = p.x + p.y, key[3] = p.x - p.y;
+  } else {
+    key[0] = p.x, key[1] = p.y, key[2] = p.z, key[3] = p.x + p.y + p.z;
+    key[4] = p.x + p.y - p.z, key[5] = p.x - p.y + p.z, key[6] = -p.x + p.y + p.z;
+  }
+}
+
+template <class T, int D>
+void extremes_of(std::span<const Vec<T, D>> pts, std::uint32_t* lo, std::uint32_t* hi) noexcept {
+  double lov[kDirs<D>], hiv[kDirs<D>];
+  for (int k = 0; k < kDirs<D>; ++k) {
+    lov[k] = std::numeric_limits<double>::infinity();
+    hiv[k] = -lov[k];
+  }
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    double key[kDirs<D>];
+    keys_of<D>(vec_cast<double>(pts[i]), key);
+    for (int k = 0; k < kDirs<D>; ++k) {
+      if (key[k] < lov[k]) lov[k] = key[k], lo[k] = static_cast<std::uint32_t>(i);
+      if (key[k] > hiv[k]) hiv[k] = key[k], hi[k] = static_cast<std::uint32_t>(i);
+    }
+  }
+}
+
+template <int D>
+void extremes(const std::vector<Vec<double, D>>& pts, std::uint32_t* lo,
+              std::uint32_t* hi) noexcept {
+  extremes_of<double, D>(std::span<const Vec<double, D>>(pts), lo, hi);
+}
+
 // The move-to-front engine over points of type Vec<T, D>. Support sets of size k define the
 // smallest ball with those k points on its boundary; `outside` is an exact decision against
 // them, the centre/radius are only for the output.
@@ -58,6 +95,8 @@ class Engine {
   int support_count() const noexcept { return cur_k_; }
   std::uint32_t support(int i) const noexcept { return cur_[i]; }
   std::uint64_t tests() const noexcept { return tests_; }
+  /// Exact: is p strictly outside the current ball?
+  bool outside_point(const P& p) const noexcept { return outside_p(p); }
   bool exhausted() const noexcept { return exhausted_; }
 
   // The rounded centre and radius of the current ball.
@@ -82,8 +121,8 @@ class Engine {
 
   // Exact: is point i strictly outside the current ball? (The deep-inside shortcut is
   // explained in min_circle.hpp.)
-  bool outside(std::uint32_t i) const noexcept {
-    const P& p = point(i);
+  bool outside(std::uint32_t i) const noexcept { return outside_p(point(i)); }
+  bool outside_p(const P& p) const noexcept {
     if (use_shortcut_ && sqr_length(p - center_) <= inner_r2_) return false;
     switch (cur_k_) {
       case 0:
@@ -231,6 +270,52 @@ struct Solved {
   std::uint64_t tests;
 };
 
+// Fills copy/order with the points `ids` (original indices) in a seeded random order, the
+// extreme points along a few fixed directions first (a heuristic: the first ball is then nearly
+// final; the result does not depend on it), and links them into the list head -> ... -> tail.
+template <class T, int D>
+void prepare(std::span<const Vec<T, D>> pts, std::span<const std::uint32_t> ids,
+             const MinBallOptions& options, std::vector<std::uint32_t>& next,
+             std::vector<std::uint32_t>& prev, std::vector<std::uint32_t>& order,
+             std::vector<Vec<double, D>>& copy) {
+  const auto m = static_cast<std::uint32_t>(ids.size());
+  const std::uint32_t head = m, tail = m + 1;
+  next.resize(m + 2u);
+  prev.resize(m + 2u);
+  order.assign(ids.begin(), ids.end());
+  copy.resize(m);
+  if (options.shuffle) {
+    SplitMix rng{options.seed};
+    for (std::uint32_t i = m - 1; i > 0; --i) {
+      const auto j = static_cast<std::uint32_t>(rng.below(std::uint64_t{i} + 1));
+      std::swap(order[i], order[j]);
+    }
+  }
+  for (std::uint32_t i = 0; i < m; ++i) copy[i] = vec_cast<double>(pts[order[i]]);
+  std::uint32_t lo[kDirs<D>] = {}, hi[kDirs<D>] = {};
+  extremes<D>(copy, lo, hi);
+  std::uint32_t front = 0;
+  for (int k = 0; k < 2 * kDirs<D>; ++k) {
+    const std::uint32_t pos = k % 2 == 0 ? lo[k / 2] : hi[k / 2];
+    if (pos < front) continue;  // already moved (a repeated extreme)
+    std::swap(copy[pos], copy[front]);
+    std::swap(order[pos], order[front]);
+    for (int q = k + 1; q < 2 * kDirs<D>; ++q) {  // extremes that were at `front` are now at pos
+      std::uint32_t& r = q % 2 == 0 ? lo[q / 2] : hi[q / 2];
+      if (r == front) r = pos;
+    }
+    ++front;
+  }
+  next[head] = m == 0 ? tail : 0;
+  prev[head] = head;
+  for (std::uint32_t i = 0; i < m; ++i) {
+    next[i] = i + 1 < m ? i + 1 : tail;
+    prev[i] = i == 0 ? head : i - 1;
+  }
+  prev[tail] = m == 0 ? head : m - 1;
+  next[tail] = tail;
+}
+
 template <class T, int D>
 Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
              std::vector<std::uint32_t>& next, std::vector<std::uint32_t>& prev,
@@ -248,37 +333,77 @@ Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
       return out;
     }
   const auto n = static_cast<std::uint32_t>(pts.size());
-  // Nodes 0..n-1 are the points, n the head sentinel, n + 1 the tail sentinel.
-  const std::uint32_t head = n, tail = n + 1;
-  next.resize(n + 2u);
-  prev.resize(n + 2u);
-  // The visiting order: identity or a seeded Fisher-Yates permutation; the points are copied
-  // in that order so the scans read memory sequentially.
-  order.resize(n);
-  copy.resize(n);
-  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
-  if (options.shuffle) {
-    SplitMix rng{options.seed};
-    for (std::uint32_t i = n - 1; i > 0; --i) {
-      const auto j = static_cast<std::uint32_t>(rng.below(std::uint64_t{i} + 1));
-      std::swap(order[i], order[j]);
-    }
-  }
-  for (std::uint32_t i = 0; i < n; ++i) copy[i] = vec_cast<double>(pts[order[i]]);
-  next[head] = n == 0 ? tail : 0;
-  prev[head] = head;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    next[i] = i + 1 < n ? i + 1 : tail;
-    prev[i] = i == 0 ? head : i - 1;
-  }
-  prev[tail] = n - 1;
-  next[tail] = tail;
-
   const std::uint64_t budget =
       options.max_tests != 0 ? options.max_tests : 1000u * std::uint64_t{n} + 1000000u;
-  Engine<D> engine(copy, next, prev, budget);
-  const bool ok = engine.run(head, tail);
-  out.tests = engine.tests();
+  std::uint64_t tests = 0;
+
+  // Rounds on a growing subset S (a core set): S starts as the extreme points; the smallest
+  // ball of S is computed by move-to-front; one sequential scan of all points adds those outside
+  // it. When none is outside, the ball of S is the ball of all points (it contains them and no
+  // smaller ball contains S). After a few rounds, or when S would grow large, the plain
+  // algorithm runs on all points (so the expected O(n) bound holds whatever the input).
+  std::vector<std::uint32_t> subset;
+  {
+    std::uint32_t lo[kDirs<D>] = {}, hi[kDirs<D>] = {};
+    extremes_of<T, D>(pts, lo, hi);
+    for (int k = 0; k < kDirs<D>; ++k) {
+      subset.push_back(lo[k]);
+      subset.push_back(hi[k]);
+    }
+    std::sort(subset.begin(), subset.end());
+    subset.erase(std::unique(subset.begin(), subset.end()), subset.end());
+  }
+  const std::size_t subset_limit = std::max<std::size_t>(256, n / 16);
+  std::vector<std::uint32_t> extra;
+  bool use_all = subset.size() >= n;
+  for (int round = 0; !use_all; ++round) {
+    if (round == 8 || subset.size() > subset_limit) {
+      use_all = true;
+      break;
+    }
+    prepare<T, D>(pts, subset, options, next, prev, order, copy);
+    const auto m = static_cast<std::uint32_t>(subset.size());
+    Engine<D> engine(copy, next, prev, budget - std::min(budget, tests));
+    const bool ok = engine.run(m, m + 1);
+    tests += engine.tests();
+    if (!ok) {
+      out.status = engine.exhausted() ? Status::limit_exceeded : Status::degenerate_input;
+      out.tests = tests;
+      out.support_count = engine.support_count();
+      for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
+      engine.ball(center, radius);
+      return out;
+    }
+    extra.clear();
+    for (std::uint32_t i = 0; i < n && extra.size() <= subset_limit; ++i) {
+      if (++tests > budget) break;
+      if (engine.outside_point(vec_cast<double>(pts[i]))) extra.push_back(i);
+    }
+    if (extra.empty() && tests <= budget) {
+      out.status = Status::ok;
+      out.tests = tests;
+      out.support_count = engine.support_count();
+      for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
+      engine.ball(center, radius);
+      return out;
+    }
+    if (tests > budget) {
+      out.status = Status::limit_exceeded;
+      out.tests = tests;
+      out.support_count = engine.support_count();
+      for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
+      engine.ball(center, radius);
+      return out;
+    }
+    subset.insert(subset.end(), extra.begin(), extra.end());
+  }
+
+  subset.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) subset[i] = i;
+  prepare<T, D>(pts, subset, options, next, prev, order, copy);
+  Engine<D> engine(copy, next, prev, budget - std::min(budget, tests));
+  const bool ok = engine.run(n, n + 1);
+  out.tests = tests + engine.tests();
   out.support_count = engine.support_count();
   for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
   engine.ball(center, radius);

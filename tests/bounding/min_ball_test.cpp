@@ -150,7 +150,29 @@ mpq_class check_result(const std::vector<Vec<T, D>>& pts, const Solved<T, D>& r)
   // double result is rounded once to float (1/2 ulp of the scale each).
   const double r_exact = std::sqrt(ball->r2.get_d());
   scale = std::max(scale, r_exact);
-  const double t = 64.0 * static_cast<double>(locus::eps_v<T>) * scale;
+  // The circumcentre of nearly degenerate supports is ill-conditioned: its error grows with
+  // kappa = (sum of squared edge lengths from s0) / (simplex measure) (the header's L / h).
+  double kappa = 1.0;
+  if (r.k >= 3) {
+    std::vector<Vec<double, D>> e;
+    for (int i = 1; i < r.k; ++i)
+      e.push_back(vec_cast<double>(pts[r.support[static_cast<std::size_t>(i)]]) -
+                  vec_cast<double>(pts[r.support[0]]));
+    double num = 0.0, den = 0.0;
+    for (const auto& x : e) num += locus::sqr_length(x);
+    if constexpr (D == 2) {
+      den = std::abs(locus::perp_dot(e[0], e[1]));
+    } else {
+      if (r.k == 3) den = locus::length(locus::cross(e[0], e[1]));
+      if (r.k == 4) {
+        den = std::abs(locus::dot(e[0], locus::cross(e[1], e[2])));
+        num = std::pow(num, 1.5);
+      }
+    }
+    kappa = std::max(1.0, num / den);
+  }
+  const double t =
+      64.0 * static_cast<double>(locus::eps_v<T>) * scale + 64.0 * 2.3e-16 * scale * kappa;
   for (int i = 0; i < D; ++i) EXPECT_NEAR(static_cast<double>(r.center[i]), ball->c[i].get_d(), t);
   EXPECT_NEAR(static_cast<double>(r.radius), r_exact, t);
   for (const auto& p : pts) {
@@ -409,6 +431,31 @@ TYPED_TEST(MinBall, LargeRandomAndInvariance) {
   auto sim3 = p3;
   for (auto& p : sim3) p = {-T(2) * p.z + T(8), T(2) * p.x, T(2) * p.y - T(1024)};
   EXPECT_EQ(check_result(sim3, run<T>(sim3)), 4 * s2);
+}
+
+// Inputs that defeat the extreme-point seed: a slowly growing spiral (every round of the
+// core-set search finds new outside points until the plain algorithm takes over) and points on
+// a sphere-like shell, in input order and shuffled. The exact checks cover both paths.
+TYPED_TEST(MinBall, SpiralsForceEveryPath) {
+  using T = TypeParam;
+  for (int n : {300, 5000}) {
+    std::vector<Vec2<T>> p2;
+    std::vector<Vec3<T>> p3;
+    for (int i = 0; i < n; ++i) {
+      const double a = 0.618033988749895 * 6.283185307179586 * i;
+      const double r = 10.0 * (1.0 + 1e-3 * i / n);
+      p2.push_back({static_cast<T>(r * std::cos(a)), static_cast<T>(r * std::sin(a))});
+      const double z = -1.0 + 2.0 * (i + 0.5) / n, s = std::sqrt(1.0 - z * z);
+      p3.push_back({static_cast<T>(r * s * std::cos(a)), static_cast<T>(r * s * std::sin(a)),
+                    static_cast<T>(r * z)});
+    }
+    EXPECT_GT(check_result(p2, run<T>(p2)), 0);
+    EXPECT_GT(check_result(p3, run<T>(p3)), 0);
+    locus::MinBallOptions o;
+    o.shuffle = false;
+    EXPECT_GT(check_result(p2, run<T>(p2, o)), 0);
+    EXPECT_GT(check_result(p3, run<T>(p3, o)), 0);
+  }
 }
 
 TYPED_TEST(MinBall, BudgetAndReuse) {

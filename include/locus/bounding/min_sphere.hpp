@@ -20,10 +20,11 @@
 // Result: status, sphere, support_count (1..4), support (input indices), tests.
 // Bad input: empty -> empty_input; NaN/Inf -> non_finite_input; more than 2^32 - 2 points ->
 // invalid_input; all points equal -> ok, radius 0; spent budget -> limit_exceeded.
-// Speed: as min_circle, the points are scanned in a shuffled contiguous copy, and a point deep
+// Speed: as min_circle (core-set rounds seeded by the extreme points along 7 directions, then
+// the plain algorithm if they do not settle; shuffled contiguous copies), and a point deep
 // inside a well-conditioned rounded sphere (|p - c|^2 <= r^2 (1 - 2^-20), condition estimate
 // <= 2^20) skips the exact test.
-// Cost: expected O(n); 36 bytes of scratch per point (reused by MinSphere3).
+// Cost: expected O(n); up to 36 bytes of scratch per point (reused by MinSphere3).
 
 #include <locus/bounding/detail/min_ball_common.hpp>
 #include <locus/core/scalar.hpp>
