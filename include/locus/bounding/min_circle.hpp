@@ -30,18 +30,19 @@
 // equal -> ok, one support, radius 0. A spent test budget -> Status::limit_exceeded.
 // Speed (none of it changes the result): a core-set search runs first. S = the extreme points
 // along 4 fixed directions (7 in 3D), both ends; the smallest circle of S is computed by the
-// algorithm above and one sequential scan of all points adds those outside it to S; when none is
-// outside, the circle of S is the circle of all points (it contains them all, and no smaller
+// algorithm above and one sequential scan of all points adds those outside it to S; when none
+// is outside, the circle of S is the circle of all points (it contains them all, and no smaller
 // circle contains S). After 8 rounds, or when S exceeds max(256, n / 16) points, the algorithm
-// runs on all points, so the expected O(n) bound holds on every input. The points being scanned
-// by the algorithm are copied (as double) in the seeded random order, extremes first, so the
-// scans read memory sequentially. On uniform random input this takes about 1.0 n tests. A point is
-// accepted as inside without an exact test only when it is deep inside the rounded circle, |p -
-// c|^2 <= r^2 (1 - 2^-20), and the support set is well conditioned (condition estimate kappa <=
-// 2^20, so the rounded centre is within about kappa 8 eps r of the exact one, far below the 2^-21 r
-// margin); every other point gets the exact test. Cost: expected O(n) time for every input (the
-// expectation is over the seeded permutation), 28 bytes of scratch per point (reused by MinCircle2
-// across calls).
+// runs on all points, so the expected O(n) bound holds on every input. The points the algorithm
+// scans are copied (as double) in the seeded random order, extremes first, so the scans read
+// memory sequentially. On uniform random input this takes about 1.0 n tests.
+// A point is accepted as inside without an exact test only when it is deep inside the rounded
+// circle, |p - c|^2 <= r^2 (1 - 2^-20), and the support set is well conditioned (condition
+// estimate kappa <= 2^20 and |s0| <= 2^20 r, so the rounded centre is within about
+// kappa 8 eps r of the exact one, far below the 2^-21 r margin); every other point gets the
+// exact test.
+// Cost: expected O(n) time for every input (the expectation is over the seeded permutation),
+// up to 28 bytes of scratch per point (reused by MinCircle2 across calls).
 
 #include <locus/bounding/detail/min_ball_common.hpp>
 #include <locus/core/scalar.hpp>
