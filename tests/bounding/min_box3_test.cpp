@@ -220,3 +220,35 @@ TYPED_TEST(MinBox, TransformInvariance) {
 }
 
 }  // namespace
+
+namespace {
+
+// A hull with every point a vertex (points on a sphere): the facet loop is budgeted; a tiny
+// budget gives Status::limit_exceeded with a box that still encloses every point.
+TYPED_TEST(MinBox, BudgetOnLargeHull) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  std::vector<Vec3<T>> pts;
+  for (int i = 0; i < 400; ++i) pts.push_back(locus::vec_cast<T>(5.0 * rng.unit<double, 3>()));
+  locus::MinBoxOptions o;
+  o.max_work = 4000;  // 10 candidates of 400 vertices
+  const auto r = locus::min_box<T>(pts, o);
+  EXPECT_EQ(r.status, Status::limit_exceeded);
+  EXPECT_LE(r.candidates, 10u);
+  const double t = 64.0 * static_cast<double>(locus::eps_v<T>) * 10.0;
+  for (const auto& p : pts) {
+    const V3 d = vec_cast<double>(p) - vec_cast<double>(r.box.center);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_LE(std::abs(locus::dot(d, vec_cast<double>(r.box.axis[k]))),
+                static_cast<double>(r.box.extent[k]) + t);
+  }
+  // The full search on the same input: ok, and a sphere's box is close to the cube 1000 (a
+  // sampled sphere's minimum box is a bit smaller than the circumscribed cube).
+  const auto full = locus::min_box<T>(pts);
+  check_box(pts, full, 10.0);
+  EXPECT_LE(full.volume, T(1000) * T(1.0001));
+  EXPECT_GT(full.volume, T(800));
+}
+
+}  // namespace
