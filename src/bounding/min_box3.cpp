@@ -197,7 +197,7 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
   }
   std::vector<std::array<std::uint32_t, 2>> edges;
   for (const auto& t : hull.triangles)
-    for (int e = 0; e < 3; ++e)
+    for (std::size_t e = 0; e < 3; ++e)
       if (t[e] < t[(e + 1) % 3]) edges.push_back({t[e], t[(e + 1) % 3]});
   if (edges.size() <= options.max_pair_edges)
     for (std::size_t i = 0; i < edges.size(); ++i)

@@ -25,6 +25,14 @@ using locus::Vec2;
 using locus::Vec3;
 using locus_test::Rng;
 
+// An exact point (a C array: indexed by int without sign conversions).
+template <int D>
+struct QP {
+  mpq_class v[D];
+  mpq_class& operator[](int i) { return v[i]; }
+  const mpq_class& operator[](int i) const { return v[i]; }
+};
+
 // An exact ball: centre and squared radius as rationals.
 template <int D>
 struct ExactBall {
@@ -58,12 +66,12 @@ std::optional<std::vector<mpq_class>> solve_exact(std::vector<std::vector<mpq_cl
 // The smallest ball with the given points on its boundary: centre = p0 + sum_j l_j (pj - p0)
 // in their affine hull with |c - pj|^2 = |c - p0|^2; nullopt if affinely dependent.
 template <int D>
-std::optional<ExactBall<D>> exact_ball(const std::vector<std::array<mpq_class, D>>& s) {
+std::optional<ExactBall<D>> exact_ball(const std::vector<QP<D>>& s) {
   ExactBall<D> out;
   const std::size_t m = s.size() - 1;
-  std::vector<std::array<mpq_class, D>> e(m);
+  std::vector<QP<D>> e(m);
   for (std::size_t j = 0; j < m; ++j)
-    for (int i = 0; i < D; ++i) e[j][static_cast<std::size_t>(i)] = s[j + 1][i] - s[0][i];
+    for (int i = 0; i < D; ++i) e[j][i] = s[j + 1][i] - s[0][i];
   std::vector<std::vector<mpq_class>> a(m, std::vector<mpq_class>(m));
   std::vector<mpq_class> b(m);
   for (std::size_t r = 0; r < m; ++r) {
@@ -87,16 +95,16 @@ std::optional<ExactBall<D>> exact_ball(const std::vector<std::array<mpq_class, D
 }
 
 template <int D>
-mpq_class sqr_dist(const ExactBall<D>& b, const std::array<mpq_class, D>& p) {
+mpq_class sqr_dist(const ExactBall<D>& b, const QP<D>& p) {
   mpq_class d = 0;
   for (int i = 0; i < D; ++i) d += (p[i] - b.c[i]) * (p[i] - b.c[i]);
   return d;
 }
 
 template <class T, int D>
-std::array<mpq_class, D> to_q(const Vec<T, D>& p) {
-  std::array<mpq_class, D> q;
-  for (int i = 0; i < D; ++i) q[static_cast<std::size_t>(i)] = mpq_class(static_cast<double>(p[i]));
+QP<D> to_q(const Vec<T, D>& p) {
+  QP<D> q;
+  for (int i = 0; i < D; ++i) q[i] = mpq_class(static_cast<double>(p[i]));
   return q;
 }
 
@@ -132,7 +140,7 @@ mpq_class check_result(const std::vector<Vec<T, D>>& pts, const Solved<T, D>& r)
   EXPECT_GE(r.k, 1);
   EXPECT_LE(r.k, D + 1);
   if (r.status != Status::ok || r.k < 1) return mpq_class(-1);
-  std::vector<std::array<mpq_class, D>> s;
+  std::vector<QP<D>> s;
   for (int i = 0; i < r.k; ++i)
     s.push_back(to_q<T, D>(pts[r.support[static_cast<std::size_t>(i)]]));
   const auto ball = exact_ball<D>(s);
@@ -188,12 +196,12 @@ mpq_class check_result(const std::vector<Vec<T, D>>& pts, const Solved<T, D>& r)
 template <class T, int D>
 mpq_class brute_force_r2(const std::vector<Vec<T, D>>& pts) {
   const std::size_t n = pts.size();
-  std::vector<std::array<mpq_class, D>> q;
+  std::vector<QP<D>> q;
   for (const auto& p : pts) q.push_back(to_q<T, D>(p));
   std::optional<mpq_class> best;
   std::vector<std::size_t> idx;
   auto consider = [&]() {
-    std::vector<std::array<mpq_class, D>> s;
+    std::vector<QP<D>> s;
     for (std::size_t i : idx) s.push_back(q[i]);
     const auto b = exact_ball<D>(s);
     if (!b) return;
