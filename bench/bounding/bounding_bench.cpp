@@ -99,7 +99,7 @@ void BM_min_circle_locus(benchmark::State& state) {
     sink = r;
   }
   state.SetLabel("radius=" + std::to_string(r));
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * pts.size()));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
 }
 BENCHMARK(BM_min_circle_locus)->Unit(benchmark::kMillisecond);
 
@@ -113,7 +113,7 @@ void BM_min_sphere_locus(benchmark::State& state) {
     sink = r;
   }
   state.SetLabel("radius=" + std::to_string(r));
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * pts.size()));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
 }
 BENCHMARK(BM_min_sphere_locus)->Unit(benchmark::kMillisecond);
 
@@ -126,7 +126,7 @@ void BM_min_box_locus(benchmark::State& state) {
     sink = v;
   }
   state.SetLabel("volume=" + std::to_string(v));
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * pts.size()));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
 }
 BENCHMARK(BM_min_box_locus)->Unit(benchmark::kMillisecond);
 
@@ -146,7 +146,7 @@ void min_circle_cgal(benchmark::State& state) {
     sink = r;
   }
   state.SetLabel("radius=" + std::to_string(r));
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * pts.size()));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
 }
 void BM_min_circle_cgal_double(benchmark::State& state) {
   min_circle_cgal<CGAL::Simple_cartesian<double>>(state);
@@ -171,7 +171,7 @@ void BM_min_sphere_cgal(benchmark::State& state) {
     sink = r;
   }
   state.SetLabel("radius=" + std::to_string(r));
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * pts.size()));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
 }
 BENCHMARK(BM_min_sphere_cgal)->Unit(benchmark::kMillisecond);
 
@@ -194,7 +194,7 @@ void BM_min_box_cgal(benchmark::State& state) {
     sink = v;
   }
   state.SetLabel("volume=" + std::to_string(v));
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * pts.size()));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
 }
 BENCHMARK(BM_min_box_cgal)->Unit(benchmark::kMillisecond);
 #endif
