@@ -43,7 +43,7 @@ Ellipsoid3<T> random_ellipsoid(Rng& rng) {
 }
 
 // Max-norm of V diag(l) V^T - M and of V^T V - I.
-double eig_residual(const detail::SymmetricEigen3<double>& e, const Mat3<double>& m) {
+double eig_residual(const SymmetricEigen<double, 3>& e, const Mat3<double>& m) {
   const Mat3<double> rec = e.vectors * Mat3<double>::diagonal(e.values) * transpose(e.vectors);
   const Mat3<double> orth = transpose(e.vectors) * e.vectors - Mat3<double>::identity();
   double r = 0;
@@ -82,15 +82,15 @@ double flux_volume(F&& pt, G&& outward_ref, double u0, double u1, double v0, dou
 }
 }  // namespace
 
-TEST(SymmetricEigen3, RandomMatricesDecomposeWithSmallResidual) {
+TEST(EllipsoidEigenSymmetric, RandomMatricesDecomposeWithSmallResidual) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int trial = 0; trial < 2000; ++trial) {
     Mat3<double> m{};
     for (int i = 0; i < 3; ++i)
       for (int j = i; j < 3; ++j) m.a[i][j] = m.a[j][i] = rng.uniform<double>(-10, 10);
-    const auto e = detail::symmetric_eigen3(m);
-    ASSERT_TRUE(e.converged);
+    const auto e = eigen_symmetric(m);
+    ASSERT_EQ(e.status, Status::ok);
     EXPECT_LE(eig_residual(e, m), 64 * eps_v<double> * 30);
     EXPECT_LE(e.values[0], e.values[1]);
     EXPECT_LE(e.values[1], e.values[2]);
@@ -101,7 +101,7 @@ TEST(SymmetricEigen3, RandomMatricesDecomposeWithSmallResidual) {
   }
 }
 
-TEST(SymmetricEigen3, RepeatedZeroExtremeAndNonFinite) {
+TEST(EllipsoidEigenSymmetric, RepeatedZeroExtremeAndNonFinite) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int trial = 0; trial < 200; ++trial) {
@@ -110,8 +110,8 @@ TEST(SymmetricEigen3, RepeatedZeroExtremeAndNonFinite) {
     for (const Vec3<double> d :
          {Vec3<double>{1, 1, 2}, Vec3<double>{0, 0, 3}, Vec3<double>{-2, 5, 5}}) {
       const Mat3<double> m = r * Mat3<double>::diagonal(d) * transpose(r);
-      const auto e = detail::symmetric_eigen3(m);
-      ASSERT_TRUE(e.converged);
+      const auto e = eigen_symmetric(m);
+      ASSERT_EQ(e.status, Status::ok);
       EXPECT_LE(eig_residual(e, m), 1e-13);
       Vec3<double> s = d;
       std::sort(&s.x, &s.x + 3);
@@ -121,19 +121,19 @@ TEST(SymmetricEigen3, RepeatedZeroExtremeAndNonFinite) {
   // Scaling by huge and tiny powers leaves the decomposition intact (no overflow / underflow).
   const Mat3<double> base{{{2, 1, 0}, {1, 2, 1}, {0, 1, 2}}};
   for (const double s : {1e300, 1e-300, 1e-310}) {
-    const auto e = detail::symmetric_eigen3(base * s);
-    ASSERT_TRUE(e.converged);
+    const auto e = eigen_symmetric(base * s);
+    ASSERT_EQ(e.status, Status::ok);
     EXPECT_NEAR(e.values[0] / s, 2 - std::sqrt(2.0), 1e-12);
     EXPECT_NEAR(e.values[2] / s, 2 + std::sqrt(2.0), 1e-12);
   }
-  const auto z = detail::symmetric_eigen3(Mat3<double>{});
-  EXPECT_TRUE(z.converged);
+  const auto z = eigen_symmetric(Mat3<double>{});
+  EXPECT_EQ(z.status, Status::ok);
   EXPECT_EQ(z.values, (Vec3<double>{}));
   EXPECT_EQ(z.vectors, Mat3<double>::identity());
   Mat3<double> bad = base;
   bad.a[0][1] = std::numeric_limits<double>::quiet_NaN();
-  const auto b = detail::symmetric_eigen3(bad);
-  EXPECT_FALSE(b.converged);
+  const auto b = eigen_symmetric(bad);
+  EXPECT_EQ(b.status, Status::non_finite_input);
   EXPECT_TRUE(std::isnan(b.values[0]));
 }
 

@@ -68,7 +68,8 @@ class CurveScratch {
 
  private:
   std::size_t n_;
-  std::array<V, Inline> buf_;  // not value-initialised: every use writes before it reads
+  // Value-initialised: cheap next to the evaluation, and GCC cannot prove the writes-before-reads.
+  std::array<V, Inline> buf_{};
   std::vector<V> heap_;
 };
 

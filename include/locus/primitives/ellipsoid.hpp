@@ -13,13 +13,9 @@
 //
 // ellipsoid_from_implicit(C, M) converts back by the eigen-decomposition of M (extent_i =
 // 1/sqrt(lambda_i), axis_i the eigenvectors, sorted by increasing eigenvalue, i.e. decreasing
-// extent, forming a right-handed frame). It uses detail::symmetric_eigen3, a cyclic Jacobi
-// solver: the matrix is scaled by its largest entry (exact power of two, so no overflow), each
-// sweep annihilates the three off-diagonal entries in turn with the stable small-angle rotation
-// formula, an entry negligible against both diagonal entries is set to zero, and the budget is
-// 64 sweeps (quadratic convergence needs about 5-8 for 3x3 matrices; converged = false reports
-// an exhausted budget). Eigenvectors are orthonormal to rounding, eigenvalues are accurate to
-// O(eps * max|lambda|). Float input is promoted to double inside the solver.
+// extent, forming a right-handed frame) with numeric/eigen_sym.hpp's eigen_symmetric (closed
+// form, robust for repeated eigenvalues; eigenvalues accurate to O(eps * max|lambda|); float
+// input is computed in double).
 //
 // Degenerate input: a zero extent makes M infinite, so implicit_matrix() is only meaningful for
 // positive extents; ellipsoid_from_implicit() returns std::nullopt unless M is finite and all
@@ -31,6 +27,7 @@
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/numeric/eigen_sym.hpp>
 #include <locus/primitives/aligned_box.hpp>
 
 #include <cmath>
@@ -39,99 +36,6 @@
 
 namespace locus {
 
-namespace detail {
-
-/// Eigen-decomposition m = V diag(values) V^T of a symmetric 3x3 matrix.
-template <class C>
-struct SymmetricEigen3 {
-  Vec3<C> values;   ///< ascending
-  Mat3<C> vectors;  ///< column i is the unit eigenvector of values[i]; det = +1
-  bool converged;   ///< false when the input is not finite or the sweep budget ran out
-};
-
-/// Cyclic Jacobi eigen-solver for a symmetric 3x3 matrix (upper triangle read).
-template <class C>
-[[nodiscard]] inline SymmetricEigen3<C> symmetric_eigen3(const Mat3<C>& m) noexcept {
-  SymmetricEigen3<C> r{Vec3<C>{}, Mat3<C>::identity(), true};
-  C a[3][3];
-  C scale = C(0);
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) {
-      a[i][j] = a[j][i] = m.a[i][j];
-      if (!is_finite(m.a[i][j])) {
-        const C nan = std::numeric_limits<C>::quiet_NaN();
-        r.values = {nan, nan, nan};
-        r.converged = false;
-        return r;
-      }
-      scale = std::fmax(scale, std::fabs(m.a[i][j]));
-    }
-  if (scale == C(0)) return r;
-  // A power-of-two scale is exact: eigenvectors are untouched and eigenvalues scale back exactly.
-  int e = 0;
-  (void)std::frexp(scale, &e);
-  for (auto& rw : a)
-    for (auto& x : rw) x = std::ldexp(x, -e);
-  C v[3][3] = {{C(1), C(0), C(0)}, {C(0), C(1), C(0)}, {C(0), C(0), C(1)}};
-  constexpr int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-  bool done = false;
-  for (int sweep = 0; sweep < 64 && !done; ++sweep) {
-    done = true;
-    for (const auto& pq : pairs) {
-      const int p = pq[0], q = pq[1];
-      const C apq = a[p][q];
-      if (apq == C(0)) continue;
-      const C app = a[p][p], aqq = a[q][q];
-      // Negligible against both diagonal entries: rotating would not change them any more.
-      const C small = C(128) * std::fabs(apq);
-      if (std::fabs(app) + small == std::fabs(app) && std::fabs(aqq) + small == std::fabs(aqq)) {
-        a[p][q] = a[q][p] = C(0);
-        continue;
-      }
-      done = false;
-      const C theta = (aqq - app) / (C(2) * apq);
-      // t = tan of the rotation angle, the smaller root of t^2 + 2 theta t - 1 = 0.
-      C t;
-      if (std::fabs(theta) > C(1e150)) {
-        t = C(0.5) / theta;
-      } else {
-        t = C(1) / (std::fabs(theta) + std::sqrt(theta * theta + C(1)));
-        if (theta < C(0)) t = -t;
-      }
-      const C c = C(1) / std::sqrt(t * t + C(1)), s = t * c;
-      a[p][p] = app - t * apq;
-      a[q][q] = aqq + t * apq;
-      a[p][q] = a[q][p] = C(0);
-      const int k = 3 - p - q;
-      const C akp = a[k][p], akq = a[k][q];
-      a[k][p] = a[p][k] = c * akp - s * akq;
-      a[k][q] = a[q][k] = s * akp + c * akq;
-      for (auto& vr : v) {
-        const C vp = vr[p], vq = vr[q];
-        vr[p] = c * vp - s * vq;
-        vr[q] = s * vp + c * vq;
-      }
-    }
-  }
-  r.converged = done;
-  int idx[3] = {0, 1, 2};
-  // Sort ascending (three elements: a tiny insertion sort).
-  for (int i = 1; i < 3; ++i)
-    for (int j = i; j > 0 && a[idx[j]][idx[j]] < a[idx[j - 1]][idx[j - 1]]; --j) {
-      const int tmp = idx[j];
-      idx[j] = idx[j - 1];
-      idx[j - 1] = tmp;
-    }
-  for (int i = 0; i < 3; ++i) {
-    r.values[i] = std::ldexp(a[idx[i]][idx[i]], e);
-    for (int k = 0; k < 3; ++k) r.vectors.a[k][i] = v[k][idx[i]];
-  }
-  if (determinant(r.vectors) < C(0))
-    for (int k = 0; k < 3; ++k) r.vectors.a[k][2] = -r.vectors.a[k][2];
-  return r;
-}
-
-}  // namespace detail
 
 /// The ellipsoid { C + sum_i u_i extent[i] axis[i] : |u| = 1 } with orthonormal axes.
 template <class T>
@@ -199,8 +103,8 @@ template <class T>
   Mat3<C> mc{};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) mc.a[i][j] = static_cast<C>(m.a[i][j]);
-  const auto eig = detail::symmetric_eigen3(mc);
-  if (!is_finite(center) || !eig.converged) return std::nullopt;
+  const auto eig = eigen_symmetric(mc);  // reads the upper triangle
+  if (!is_finite(center) || eig.status == Status::non_finite_input) return std::nullopt;
   Ellipsoid3<T> e{center, {}, {}};
   for (int i = 0; i < 3; ++i) {
     if (!(eig.values[i] > C(0))) return std::nullopt;

@@ -40,6 +40,7 @@
 
 #include <locus/config.hpp>
 #include <locus/core/scalar.hpp>
+#include <locus/core/basis.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/primitives/triangle.hpp>
 
@@ -131,19 +132,15 @@ struct PerpendicularBasis {
   Vec3<T> v;
 };
 
-/// Completes a direction to a right-handed orthonormal basis: u, v with u x v = n / |n|. Uses
-/// the branch on the sign of n.z (Frisvad's closed form with the revision of Duff et al., JCGT
-/// 2017), the same axes as circle.hpp's Circle3/Disk3 and core/basis.hpp's complete_basis, so a
-/// cylinder's cross-section and a Circle3 with the same normal are parametrised alike.
+/// Completes a direction to a right-handed orthonormal basis: u, v with u x v = n / |n|: the
+/// in-plane axes of core/basis.hpp's complete_basis (also used by Circle3/Disk3, so a
+/// cylinder's cross-section and a Circle3 with the same normal are parametrised alike).
 /// A zero or non-finite n gives u = v = 0.
 template <class T>
 [[nodiscard]] inline PerpendicularBasis<T> perpendicular_basis(const Vec3<T>& n) noexcept {
-  const Vec3<T> w = normalize(n);
-  if (w == Vec3<T>{}) return {Vec3<T>{}, Vec3<T>{}};
-  const T s = std::copysign(T(1), w.z);
-  const T a = T(-1) / (s + w.z);  // |s + w.z| >= 1: no cancellation
-  const T b = w.x * w.y * a;
-  return {Vec3<T>{T(1) + s * w.x * w.x * a, s * b, -s * w.x}, Vec3<T>{b, s + w.y * w.y * a, -w.y}};
+  const OrthonormalBasis<T, 3> b = complete_basis(n);
+  if (b.status != Status::ok) return {Vec3<T>{}, Vec3<T>{}};
+  return {b.axis[1], b.axis[2]};
 }
 
 /// A right-handed orthonormal frame in a plane: origin on the plane, u x v = normal.

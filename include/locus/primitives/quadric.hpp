@@ -46,7 +46,7 @@
 // for cones, points, lines and intersecting/double planes. standard_form(q) takes the ranks
 // from the exact classification, so the form always agrees with classify(q); its numbers (R, P,
 // d, k) are rounded and computed in compute_t<T> (double for float). The eigenvectors come from
-// ellipsoid.hpp's detail::symmetric_eigen3 (cyclic Jacobi). to_quadric(form) converts back.
+// numeric/eigen_sym.hpp's eigen_symmetric. to_quadric(form) converts back.
 //
 // The quadric solids convert to general form with to_quadric(): sphere |X - C|^2 - r^2,
 // ellipsoid (X - C)^T M (X - C) - 1, infinite cylinder |X - C|^2 - dot(D, X - C)^2 - r^2 and
@@ -394,7 +394,7 @@ template <class T, class C>
                                                                   const Vec3<C>& b, C c, int rank,
                                                                   bool has_linear,
                                                                   bool zero_constant) noexcept {
-  const auto eig = symmetric_eigen3(a);
+  const auto eig = eigen_symmetric(a);
   // Order: the `rank` largest |lambda| are the nonzero ones; positives first, then |d| descending.
   int idx[3] = {0, 1, 2};
   for (int i = 1; i < 3; ++i)
@@ -505,7 +505,7 @@ template <class T>
   const Mat3<C> as = a * s;
   const Vec3<C> bs = b * s;
   const C cs = c * s;
-  const auto eig = detail::symmetric_eigen3(as);
+  const auto eig = eigen_symmetric(as);
   int rank = 0, pos = 0, neg = 0;
   for (int i = 0; i < 3; ++i)
     if (std::fabs(eig.values[i]) > tol) {
