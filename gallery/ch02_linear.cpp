@@ -39,7 +39,7 @@ bool fig_2_2(SvgWriter& w) {
   draw(w, *line, pen(c::blue, 2));
   for (double t : {-0.3, 0.0, 0.3}) {
     const Vec2d p = point_at(*line, t);
-    point(w, p, "(" + fmt(p.x) + ", " + fmt(p.y) + ")", c::red);
+    point(w, p, coordinates(p.x, p.y), c::red);
   }
   label(w, Vec2d{3.8, 0}, "x\u2081", c::gray);
   label(w, Vec2d{0, 4.3}, "x\u2082", c::gray);
@@ -79,7 +79,7 @@ bool fig_2_3(SvgWriter& w) {
     const auto sol = solve(Mat2d::from_rows(s.n0, s.n1), Vec2d{s.c0, s.c1});
     std::string verdict;
     if (!sol.singular) {
-      point(w, off + sol.x, "(" + fmt(sol.x.x) + ", " + fmt(sol.x.y) + ")", c::black);
+      point(w, off + sol.x, coordinates(sol.x.x, sol.x.y), c::black);
       verdict = "(a) one solution";
     } else {
       // Singular: the lines are parallel; they coincide when a point of the first satisfies the

@@ -27,7 +27,7 @@ std::string fmt(double x, int prec = 2) {
   std::snprintf(buf, sizeof(buf), "%.*f", prec, x);
   return buf;
 }
-std::string fmt(const Vec2d& v) { return "(" + fmt(v.x) + ", " + fmt(v.y) + ")"; }
+std::string fmt(const Vec2d& v) { return coordinates(v.x, v.y); }
 
 const Frame3d world3 = Frame3d::identity();
 

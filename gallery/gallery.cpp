@@ -5,6 +5,7 @@
 #include <locus/core/angle.hpp>
 #include <locus/core/products.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,7 +18,9 @@ std::vector<Figure> all_figures() {
   std::vector<Figure> all;
   for (auto part : {chapter2_linear_figures(), chapter3_vector_figures(), chapter3_affine_figures(),
                     chapter4_transform_figures(), chapter4_projection_figures(),
-                    chapter5_primitive_figures(), chapter5_curve_figures()})
+                    chapter5_primitive_figures(), chapter5_curve_figures(),
+                    chapter6_distance_figures(), chapter9_surface_figures(),
+                    chapter10_distance_figures(), chapter13_figures(), appendix_a_figures()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }
@@ -36,6 +39,31 @@ std::optional<std::string> caption(std::string_view id) {
     return std::string(rest.substr(0, t2));
   }
   return std::nullopt;
+}
+
+std::string coordinates(double x, double y, int prec) {
+  char buf[96];
+  std::snprintf(buf, sizeof(buf), "(%.*f, %.*f)", prec, x, prec, y);
+  return buf;
+}
+
+std::pair<int, int> figure_order(std::string_view id) {
+  const std::size_t dot = id.find('.');
+  if (dot == 0 || dot == std::string_view::npos || dot + 1 == id.size()) return {-1, -1};
+  auto number = [](std::string_view digits) {
+    int v = 0;
+    for (char c : digits) {
+      if (c < '0' || c > '9' || v > 100000) return -1;
+      v = v * 10 + (c - '0');
+    }
+    return v;
+  };
+  const std::string_view head = id.substr(0, dot);
+  const int chapter = head.size() == 1 && head[0] >= 'A' && head[0] <= 'Z' ? 100 + (head[0] - 'A')
+                                                                           : number(head);
+  const int figure = number(id.substr(dot + 1));
+  if (chapter < 0 || figure < 0) return {-1, -1};
+  return {chapter, figure};
 }
 
 std::string file_name(std::string_view id) {

@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace locus_gallery {
@@ -45,6 +46,11 @@ std::vector<Figure> chapter4_transform_figures();   // ch04_transforms.cpp: 4.1-
 std::vector<Figure> chapter4_projection_figures();  // ch04_projections.cpp: 4.26-4.34
 std::vector<Figure> chapter5_primitive_figures();   // ch05_primitives.cpp: 5.1-5.16
 std::vector<Figure> chapter5_curve_figures();       // ch05_curves.cpp: 5.17, 5.18
+std::vector<Figure> chapter6_distance_figures();    // ch06_distance.cpp: distance in 2D
+std::vector<Figure> chapter9_surface_figures();     // ch09_surfaces.cpp: 9.22-9.26
+std::vector<Figure> chapter10_distance_figures();   // ch10_distance.cpp: distance in 3D
+std::vector<Figure> chapter13_figures();            // ch13_hull_delaunay.cpp: 13.2-13.11
+std::vector<Figure> appendix_a_figures();           // chA_numerics.cpp: A.2-A.24
 /// Every figure in book order.
 std::vector<Figure> all_figures();
 
@@ -52,7 +58,14 @@ std::vector<Figure> all_figures();
 std::string_view figures_txt() noexcept;
 /// The book's caption of figure `id` ("3.15"), from the embedded figures.txt.
 std::optional<std::string> caption(std::string_view id);
-/// "fig_3_15.svg" for id "3.15".
+/// Book order of figure ids: chapters by number, then appendices by letter ("A.2" after "15.1");
+/// returns {chapter, figure} with appendix A as chapter 100, B as 101, ...; {-1, -1} if malformed.
+std::pair<int, int> figure_order(std::string_view id);
+/// "(x, y)" with `prec` decimals: a point label. (One snprintf: GCC 12 -O3 misreports
+/// -Wrestrict on chains of std::string operator+ that start from a literal.)
+std::string coordinates(double x, double y, int prec = 2);
+
+/// "fig_3_15.svg" for id "3.15", "fig_A_2.svg" for "A.2".
 std::string file_name(std::string_view id);
 
 /// Draws one figure; `ok` is the figure's own success flag.

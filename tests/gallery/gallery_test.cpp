@@ -40,15 +40,21 @@ TEST(Gallery, FiguresAreUniqueCaptionedAndInBookOrder) {
     EXPECT_TRUE(ids.insert(f.id).second) << "duplicate figure";
     EXPECT_TRUE(locus_gallery::caption(f.id).has_value()) << "no caption in figures.txt";
     EXPECT_NE(std::string(f.computed_with), "");
-    int ch = 0, num = 0;
-    ASSERT_EQ(std::sscanf(f.id, "%d.%d", &ch, &num), 2);
-    EXPECT_LT(prev, std::make_pair(ch, num));
-    prev = {ch, num};
-    EXPECT_EQ(locus_gallery::file_name(f.id),
-              "fig_" + std::to_string(ch) + "_" + std::to_string(num) + ".svg");
+    const auto order = locus_gallery::figure_order(f.id);
+    ASSERT_GE(order.first, 0) << "malformed figure id";
+    EXPECT_LT(prev, order);
+    prev = order;
+    std::string expected_name = std::string("fig_") + f.id + ".svg";
+    std::replace(expected_name.begin(), expected_name.end(), '.', '_');
+    expected_name.replace(expected_name.size() - 4, 1, ".");
+    EXPECT_EQ(locus_gallery::file_name(f.id), expected_name);
   }
   EXPECT_EQ(locus_gallery::caption("3.15").value_or(""), "Angle between vectors.");
   EXPECT_FALSE(locus_gallery::caption("99.1").has_value());
+  EXPECT_LT(locus_gallery::figure_order("15.9"), locus_gallery::figure_order("A.2"));
+  EXPECT_LT(locus_gallery::figure_order("3.9"), locus_gallery::figure_order("3.10"));
+  EXPECT_EQ(locus_gallery::figure_order("x"), std::make_pair(-1, -1));
+  EXPECT_EQ(locus_gallery::figure_order("3."), std::make_pair(-1, -1));
 }
 
 TEST(Gallery, EveryFigureRendersAWellFormedSvg) {
