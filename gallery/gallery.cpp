@@ -19,7 +19,7 @@ std::vector<Figure> all_figures() {
   for (auto part : {chapter2_linear_figures(), chapter3_vector_figures(), chapter3_affine_figures(),
                     chapter4_transform_figures(), chapter4_projection_figures(),
                     chapter5_primitive_figures(), chapter5_curve_figures(),
-                    chapter6_distance_figures(), chapter9_surface_figures(),
+                    chapter6_distance_figures(), chapter6_gjk_figures(), chapter9_surface_figures(),
                     chapter10_distance_figures(), chapter13_figures(), appendix_a_figures()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
