@@ -1,0 +1,798 @@
+// SPDX-License-Identifier: BSL-1.0
+// 3D Delaunay tetrahedralization (see include/locus/delaunay/delaunay3.hpp for the contract).
+//
+// Internal representation: a closed triangulated 3-sphere. Real cells are positively oriented;
+// every hull face is matched by a ghost cell (a, b, c, kGhost) with the ghost vertex always at
+// corner 3 and face 3 = (a, b, c) oriented with the outside on its positive side, so "is ghost"
+// is one load and the adjacency has no boundary: the cavity code has no hull special case.
+// neighbors[i] holds 4 * cell + face (the face index of this face in the neighbouring cell).
+
+#include <locus/delaunay/delaunay3.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <utility>
+
+namespace locus {
+
+namespace {
+
+constexpr std::uint32_t kGhost = 0xFFFFFFFFu;
+constexpr std::uint32_t kDead = 0xFFFFFFFEu;  // vertices[3] of a free slot
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+constexpr std::size_t kMaxPoints = std::size_t(1) << 26;  // 4 * cells + 3 fits in int32
+
+constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCUS_D3_INLINE [[gnu::always_inline]] inline
+#define LOCUS_D3_NOINLINE [[gnu::noinline]]
+#else
+#define LOCUS_D3_INLINE inline
+#define LOCUS_D3_NOINLINE
+#endif
+
+template <class T>
+[[nodiscard]] bool same_point(const Vec3<T>& a, const Vec3<T>& b) noexcept {
+  return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+// a, b, c on one line (exactly): every coordinate projection is degenerate.
+template <class T>
+[[nodiscard]] bool collinear(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) noexcept {
+  return orient2d(Vec2<T>{a.x, a.y}, Vec2<T>{b.x, b.y}, Vec2<T>{c.x, c.y}) == Sign::zero &&
+         orient2d(Vec2<T>{a.y, a.z}, Vec2<T>{b.y, b.z}, Vec2<T>{c.y, c.z}) == Sign::zero &&
+         orient2d(Vec2<T>{a.x, a.z}, Vec2<T>{b.x, b.z}, Vec2<T>{c.x, c.z}) == Sign::zero;
+}
+
+// Position along the 3D Hilbert curve of the cell x[0..2] < 2^bits (Skilling, "Programming the
+// Hilbert curve", 2004: the coordinates are transformed in place into the "transposed" index,
+// whose bits interleaved most significant first are the curve position).
+[[nodiscard]] std::uint32_t hilbert_index3(std::uint32_t x0, std::uint32_t x1, std::uint32_t x2,
+                                           int bits) noexcept {
+  std::uint32_t x[3] = {x0, x1, x2};
+  const std::uint32_t top = 1u << (bits - 1);
+  for (std::uint32_t q = top; q > 1; q >>= 1) {
+    const std::uint32_t p = q - 1;
+    for (int i = 0; i < 3; ++i) {
+      if (x[i] & q) {
+        x[0] ^= p;
+      } else {
+        const std::uint32_t t = (x[0] ^ x[i]) & p;
+        x[0] ^= t;
+        x[i] ^= t;
+      }
+    }
+  }
+  x[1] ^= x[0];
+  x[2] ^= x[1];
+  std::uint32_t t = 0;
+  for (std::uint32_t q = top; q > 1; q >>= 1)
+    if (x[2] & q) t ^= q - 1;
+  for (auto& xi : x) xi ^= t;
+  std::uint32_t d = 0;
+  for (int b = bits - 1; b >= 0; --b)
+    for (int i = 0; i < 3; ++i) d = (d << 1) | ((x[i] >> b) & 1u);
+  return d;
+}
+
+// Maps v in [lo, hi] to 0 .. 1023 without overflow for any finite lo <= v <= hi.
+template <class T>
+[[nodiscard]] std::uint32_t quantize10(T v, T lo, T hi) noexcept {
+  const double half_span = 0.5 * double(hi) - 0.5 * double(lo);
+  if (!(half_span > 0.0)) return 0;
+  const double q = (0.5 * double(v) - 0.5 * double(lo)) / half_span * 1023.0;
+  if (!(q > 0.0)) return 0;
+  if (q >= 1023.0) return 1023;
+  return static_cast<std::uint32_t>(q);
+}
+
+// Sorts (key << 32 | index) values ascending: two 16-bit LSD radix passes on the key (stable),
+// or std::sort for short ranges.
+void radix_sort_keys(std::uint64_t* keys, std::size_t n, std::vector<std::uint64_t>& tmp_buf) {
+  if (n < (1u << 14)) {
+    std::sort(keys, keys + n);
+    return;
+  }
+  tmp_buf.resize(n);
+  std::uint64_t* src = keys;
+  std::uint64_t* dst = tmp_buf.data();
+  std::vector<std::uint32_t> count(1u << 16);
+  for (int pass = 0; pass < 2; ++pass) {
+    const int shift = 32 + 16 * pass;
+    std::fill(count.begin(), count.end(), 0u);
+    for (std::size_t i = 0; i < n; ++i) ++count[(src[i] >> shift) & 0xFFFFu];
+    std::uint32_t sum = 0;
+    for (auto& c : count) {
+      const std::uint32_t c0 = c;
+      c = sum;
+      sum += c0;
+    }
+    for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & 0xFFFFu]++] = src[i];
+    std::swap(src, dst);
+  }
+}
+
+// Biased randomized insertion order (Amenta, Choi, Rote 2003): a fixed-seed shuffle, then the
+// last 7/8 of every prefix sorted along the curve and the first 1/8 recursively.
+void brio_order(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& tmp) {
+  const std::size_t n = keys.size();
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (std::size_t i = n; i > 1; --i) {
+    state += 0x9E3779B97F4A7C15ull;  // splitmix64
+    std::uint64_t z = state;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    std::swap(keys[i - 1], keys[static_cast<std::size_t>(z % i)]);
+  }
+  std::size_t end = n;
+  while (end > 256) {
+    const std::size_t mid = end / 8;
+    radix_sort_keys(keys.data() + mid, end - mid, tmp);
+    end = mid;
+  }
+  radix_sort_keys(keys.data(), end, tmp);
+}
+
+// The zero case of insphere_perturbed: point q's lift |q|^2 is raised by eps_q, larger for
+// lexicographically larger q. The perturbed determinant is insphere + sum eps_q * C_q with
+// C_e = -orient3d(a, b, c, d) (raising e moves it outside) and, by antisymmetry, C_q for a
+// vertex q = orient3d of (a, b, c, d) with q replaced by e. The largest eps with a nonzero
+// cofactor decides.
+template <class T>
+LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
+                                           const Vec3<T>& d, const Vec3<T>& e) noexcept {
+  const Vec3<T>* p[5] = {&a, &b, &c, &d, &e};
+  int order[5] = {0, 1, 2, 3, 4};
+  // Insertion sort, lexicographically largest first.
+  for (int i = 1; i < 5; ++i) {
+    const int k = order[i];
+    int j = i;
+    while (j > 0 && lexicographic_compare(*p[order[j - 1]], *p[k]) == Sign::negative) {
+      order[j] = order[j - 1];
+      --j;
+    }
+    order[j] = k;
+  }
+  for (const int k : order) {
+    Sign s;
+    if (k == 4) {
+      s = -orient3d(a, b, c, d);
+    } else {
+      const Vec3<T>* q[4] = {&a, &b, &c, &d};
+      q[k] = &e;
+      s = orient3d(*q[0], *q[1], *q[2], *q[3]);
+    }
+    if (s != Sign::zero) return s;
+  }
+  return Sign::zero;  // only when a, b, c, d are coplanar and e lies on their plane
+}
+
+template <class T>
+LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& a, const Vec3<T>& b,
+                                               const Vec3<T>& c, const Vec3<T>& d,
+                                               const Vec3<T>& e) noexcept {
+  const Sign s = insphere(a, b, c, d, e);
+  if (s != Sign::zero) [[likely]]
+    return s;
+  return perturbed_zero_case(a, b, c, d, e);
+}
+
+// Open-addressing map from a directed edge (x, y) to 4 * cell + face, cleared after each use.
+struct EdgeMap {
+  std::vector<std::uint64_t>& keys;
+  std::vector<std::uint32_t>& vals;
+  std::uint32_t mask = 0;
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
+
+  void prepare(std::size_t entries) {
+    std::size_t cap = 64;
+    while (cap < 2 * entries) cap *= 2;
+    if (keys.size() < cap) {
+      keys.assign(cap, kEmpty);
+      vals.resize(cap);
+    }
+    mask = static_cast<std::uint32_t>(cap - 1);  // use only the first cap slots
+  }
+  [[nodiscard]] static std::uint32_t hash(std::uint64_t k) noexcept {
+    return static_cast<std::uint32_t>((k * 0x9E3779B97F4A7C15ull) >> 40);
+  }
+  // Returns the value stored under `find` (erasing it) or stores `val` under `key`.
+  std::uint32_t match_or_insert(std::uint64_t key, std::uint64_t find, std::uint32_t val) {
+    std::uint32_t h = hash(find) & mask;
+    while (keys[h] != kEmpty) {
+      if (keys[h] == find) {
+        // Leave a tombstone-free table: every key is matched exactly once per use, and the
+        // table is wiped after use, so the slot is simply marked as consumed.
+        keys[h] = kEmpty - 1;
+        return vals[h];
+      }
+      h = (h + 1) & mask;
+    }
+    h = hash(key) & mask;
+    while (keys[h] != kEmpty && keys[h] != kEmpty - 1) h = (h + 1) & mask;
+    keys[h] = key;
+    vals[h] = val;
+    return kNone;
+  }
+  void clear() noexcept { std::fill(keys.begin(), keys.begin() + mask + 1, kEmpty); }
+};
+
+}  // namespace
+
+template <Real T>
+Sign insphere_perturbed(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& d,
+                        const Vec3<T>& e) noexcept {
+  return insphere_perturbed_inline(a, b, c, d, e);
+}
+
+// ---- Delaunay3 ----------------------------------------------------------------------------
+
+template <Real T>
+const Delaunay3Result& Delaunay3<T>::triangulate(std::span<const Vec3<T>> points) {
+  points_.assign(points.begin(), points.end());
+  run();
+  compact(false);
+  return result_;
+}
+
+template <Real T>
+const Delaunay3Result& Delaunay3<T>::triangulate(const T* xyz, std::size_t n) {
+  points_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) points_[i] = Vec3<T>{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  run();
+  compact(false);
+  return result_;
+}
+
+template <Real T>
+Delaunay3Result Delaunay3<T>::take_result() {
+  Delaunay3Result r = std::move(result_);
+  result_ = Delaunay3Result{};
+  points_.clear();
+  return r;
+}
+
+// Links the faces through `apex` of the given cells: the face through apex and edge x -> y
+// (in the face's orientation) meets the face of another cell with the edge y -> x.
+template <Real T>
+void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32_t apex) {
+  EdgeMap map{hash_keys_, hash_vals_};
+  map.prepare(3 * cells.size());
+  for (const std::uint32_t t : cells) {
+    Delaunay3Cell& cell = cells_[t];
+    for (int i = 0; i < 4; ++i) {
+      if (cell.vertices[std::size_t(i)] == apex) continue;
+      std::uint32_t f[3] = {cell.vertices[std::size_t(kFace[i][0])],
+                            cell.vertices[std::size_t(kFace[i][1])],
+                            cell.vertices[std::size_t(kFace[i][2])]};
+      const int at = f[0] == apex ? 0 : (f[1] == apex ? 1 : 2);
+      const std::uint32_t x = f[(at + 1) % 3], y = f[(at + 2) % 3];
+      const std::uint32_t code = 4 * t + std::uint32_t(i);
+      const std::uint32_t other = map.match_or_insert((std::uint64_t(x) << 32) | y,
+                                                      (std::uint64_t(y) << 32) | x, code);
+      if (other != kNone) {
+        cell.neighbors[std::size_t(i)] = static_cast<std::int32_t>(other);
+        cells_[other >> 2].neighbors[other & 3u] = static_cast<std::int32_t>(code);
+      }
+    }
+  }
+  map.clear();
+}
+
+template <Real T>
+bool Delaunay3<T>::in_conflict(std::uint32_t t, std::uint32_t v) const noexcept {
+  const Delaunay3Cell& c = cells_[t];
+  const Vec3<T>* pts = sorted_.data();
+  const Vec3<T>& p = pts[v];
+  if (c.vertices[3] == kGhost) [[unlikely]] {
+    const Sign s = orient3d(pts[c.vertices[0]], pts[c.vertices[1]], pts[c.vertices[2]], p);
+    if (s != Sign::zero) return s == Sign::positive;
+    // On the hull plane: the ghost goes with the real cell under the face, so the face is
+    // either inside the cavity or not on its boundary (never a flat new cell).
+    const Delaunay3Cell& r = cells_[std::uint32_t(c.neighbors[3]) >> 2];
+    return insphere_perturbed_inline(pts[r.vertices[0]], pts[r.vertices[1]], pts[r.vertices[2]],
+                                     pts[r.vertices[3]], p) == Sign::positive;
+  }
+  return insphere_perturbed_inline(pts[c.vertices[0]], pts[c.vertices[1]], pts[c.vertices[2]],
+                                   pts[c.vertices[3]], p) == Sign::positive;
+}
+
+template <Real T>
+std::uint32_t Delaunay3<T>::scan(std::uint32_t v, std::uint32_t* duplicate) noexcept {
+  const Vec3<T>* pts = sorted_.data();
+  const Vec3<T>& p = pts[v];
+  const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
+  for (std::uint32_t t = 0; t < nc; ++t) {
+    const Delaunay3Cell& c = cells_[t];
+    if (c.vertices[3] >= kDead) continue;
+    bool inside = true;
+    for (int i = 0; i < 4 && inside; ++i)
+      inside = orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],
+                        pts[c.vertices[std::size_t(kFace[i][1])]],
+                        pts[c.vertices[std::size_t(kFace[i][2])]], p) != Sign::negative;
+    if (!inside) continue;
+    for (int i = 0; i < 4; ++i)
+      if (same_point(pts[c.vertices[std::size_t(i)]], p)) *duplicate = c.vertices[std::size_t(i)];
+    return t;
+  }
+  for (std::uint32_t t = 0; t < nc; ++t)
+    if (cells_[t].vertices[3] == kGhost && in_conflict(t, v)) return t;
+  return kNone;
+}
+
+template <Real T>
+std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
+                                 std::uint32_t* duplicate) noexcept {
+  // A visibility walk in a Delaunay tetrahedralization visits no cell twice (Edelsbrunner's
+  // acyclicity of the in-front relation), so it ends within the cell count; the budget guards
+  // a corrupted structure. The face order is varied per step (a remembering stochastic walk).
+  const std::size_t budget = cells_.size() + 64;
+  const Vec3<T>* pts = sorted_.data();
+  const Vec3<T> p = pts[v];
+  std::uint32_t came = kNone;
+  std::uint32_t rng = walk_rng_;
+  for (std::size_t step = 0; step < budget; ++step) {
+    const Delaunay3Cell& c = cells_[t];
+    if (c.vertices[3] == kGhost) {
+      if (orient3d(pts[c.vertices[0]], pts[c.vertices[1]], pts[c.vertices[2]], p) ==
+          Sign::positive) {
+        walk_rng_ = rng;
+        return t;
+      }
+      // p is on the real side of the hull face or on its plane: test every face from inside.
+      came = kNone;
+      t = std::uint32_t(c.neighbors[3]) >> 2;
+      continue;
+    }
+    rng = rng * 1664525u + 1013904223u;
+    const int start = static_cast<int>(rng >> 30);
+    int zeros = 0;
+    bool moved = false;
+    for (int j = 0; j < 4; ++j) {
+      const int i = (start + j) & 3;
+      const std::uint32_t nb = std::uint32_t(c.neighbors[std::size_t(i)]) >> 2;
+      if (nb == came) continue;
+      const Sign s = orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],
+                              pts[c.vertices[std::size_t(kFace[i][1])]],
+                              pts[c.vertices[std::size_t(kFace[i][2])]], p);
+      if (s == Sign::negative) {
+        came = t;
+        t = nb;
+        moved = true;
+        break;
+      }
+      if (s == Sign::zero) ++zeros;
+    }
+    if (moved) continue;
+    if (zeros >= 3) {
+      for (int i = 0; i < 4; ++i)
+        if (same_point(pts[c.vertices[std::size_t(i)]], p)) *duplicate = c.vertices[std::size_t(i)];
+    }
+    walk_rng_ = rng;
+    return t;
+  }
+  walk_rng_ = rng;
+  return scan(v, duplicate);
+}
+
+template <Real T>
+bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
+  std::uint32_t dup = kNone;
+  const std::uint32_t t0 = walk(v, last_, &dup);
+  if (dup != kNone) {
+    result_.duplicate_of[orig_[v]] = orig_[dup];
+    return true;
+  }
+  if (t0 == kNone) return false;
+  ++epoch_;
+  const std::uint32_t in = 2 * epoch_, out = in + 1;
+  std::uint32_t* mark = mark_.data();
+  cavity_.clear();
+  boundary_.clear();
+  stack_.clear();
+  stack_.push_back(t0);
+  cavity_.push_back(t0);
+  mark[t0] = in;
+  // Every cell is marked at most once, so the search ends within the cell count.
+  std::size_t budget = cells_.size() + 16;
+  while (!stack_.empty()) {
+    if (budget-- == 0) return false;
+    const std::uint32_t c = stack_.back();
+    stack_.pop_back();
+    for (int i = 0; i < 4; ++i) {
+      const std::int32_t code = cells_[c].neighbors[std::size_t(i)];
+      const std::uint32_t nb = std::uint32_t(code) >> 2;
+      const std::uint32_t m = mark[nb];
+      if (m == in) continue;
+      if (m != out) {
+        if (in_conflict(nb, v)) {
+          mark[nb] = in;
+          stack_.push_back(nb);
+          cavity_.push_back(nb);
+          continue;
+        }
+        mark[nb] = out;
+      }
+      const Delaunay3Cell& cc = cells_[c];
+      boundary_.push_back({cc.vertices[std::size_t(kFace[i][0])],
+                           cc.vertices[std::size_t(kFace[i][1])],
+                           cc.vertices[std::size_t(kFace[i][2])], code});
+    }
+  }
+  // New cells: the cavity's slots first (a cavity with all its vertices on its boundary has
+  // two cells fewer than faces), then free slots, then new ones.
+  const std::size_t nb_faces = boundary_.size();
+  fresh_.clear();
+  for (std::size_t k = 0; k < nb_faces; ++k) {
+    std::uint32_t s;
+    if (k < cavity_.size()) {
+      s = cavity_[k];
+    } else if (!free_.empty()) {
+      s = free_.back();
+      free_.pop_back();
+    } else {
+      s = static_cast<std::uint32_t>(cells_.size());
+      cells_.push_back({});
+      mark_.push_back(0);
+      mark = mark_.data();
+    }
+    fresh_.push_back(s);
+  }
+  for (std::size_t k = nb_faces; k < cavity_.size(); ++k) {
+    cells_[cavity_[k]].vertices = {kNone, kNone, kNone, kDead};
+    free_.push_back(cavity_[k]);
+  }
+  for (std::size_t k = 0; k < nb_faces; ++k) {
+    const Boundary& f = boundary_[k];
+    const std::uint32_t s = fresh_[k];
+    Delaunay3Cell& cell = cells_[s];
+    // (a, b, c, v) is positive: v sees the face from the cavity side. A ghost vertex is moved
+    // to corner 3 by an even permutation.
+    int apex_corner = 3;
+    if (f.a == kGhost) {
+      cell.vertices = {v, f.c, f.b, kGhost};
+      apex_corner = 0;
+    } else if (f.b == kGhost) {
+      cell.vertices = {f.c, v, f.a, kGhost};
+      apex_corner = 1;
+    } else if (f.c == kGhost) {
+      cell.vertices = {f.b, f.a, v, kGhost};
+      apex_corner = 2;
+    } else {
+      cell.vertices = {f.a, f.b, f.c, v};
+    }
+    cell.neighbors[std::size_t(apex_corner)] = f.outside;
+    cells_[std::uint32_t(f.outside) >> 2].neighbors[std::uint32_t(f.outside) & 3u] =
+        static_cast<std::int32_t>(4 * s + std::uint32_t(apex_corner));
+  }
+  link_around(fresh_, v);
+  last_ = fresh_[0];
+  return true;
+}
+
+template <Real T>
+void Delaunay3<T>::lower_dimensional(int dimension) {
+  const std::size_t n = points_.size();
+  std::vector<std::uint32_t> idx(n);
+  std::iota(idx.begin(), idx.end(), 0u);
+  std::stable_sort(idx.begin(), idx.end(), [&](std::uint32_t i, std::uint32_t j) {
+    return lexicographic_compare(points_[i], points_[j]) == Sign::negative;
+  });
+  std::uint32_t kept = idx[0];
+  for (std::size_t k = 1; k < n; ++k) {
+    const std::uint32_t i = idx[k];
+    if (same_point(points_[i], points_[kept]))
+      result_.duplicate_of[i] = kept;
+    else
+      kept = i;
+  }
+  dimension_ = dimension;
+}
+
+template <Real T>
+void Delaunay3<T>::run() {
+  cells_.clear();
+  mark_.clear();
+  free_.clear();
+  epoch_ = 0;
+  last_ = 0;
+  walk_rng_ = 0x2545F491u;
+  dimension_ = -1;
+  status_ = Status::ok;
+  result_ = Delaunay3Result{};
+  const std::size_t n = points_.size();
+  result_.duplicate_of.resize(n);
+  std::iota(result_.duplicate_of.begin(), result_.duplicate_of.end(), 0u);
+  if (n == 0) {
+    status_ = Status::empty_input;
+    return;
+  }
+  if (n > kMaxPoints) {
+    status_ = Status::invalid_input;
+    return;
+  }
+  Vec3<T> lo = points_[0], hi = lo;
+  bool finite = true;
+  for (const auto& q : points_) {
+    finite = finite && is_finite(q.x) && is_finite(q.y) && is_finite(q.z);
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], q[i]);
+      hi[i] = std::max(hi[i], q[i]);
+    }
+  }
+  if (!finite) {
+    status_ = Status::non_finite_input;
+    return;
+  }
+
+  // Hilbert order on a grid of about 8 cells per point.
+  int bits = 2;
+  while (bits < 10 && (std::size_t(1) << (3 * bits)) < 8 * n) ++bits;
+  keys_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3<T>& q = points_[i];
+    const std::uint32_t h = hilbert_index3(quantize10(q.x, lo.x, hi.x) >> (10 - bits),
+                                           quantize10(q.y, lo.y, hi.y) >> (10 - bits),
+                                           quantize10(q.z, lo.z, hi.z) >> (10 - bits), bits);
+    keys_[i] = (std::uint64_t(h) << 32) | std::uint64_t(i);
+  }
+  brio_order(keys_, keys_tmp_);
+  orig_.resize(n);
+  sorted_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    orig_[k] = static_cast<std::uint32_t>(keys_[k]);
+    sorted_[k] = points_[orig_[k]];
+  }
+  keys_.clear();
+  keys_.shrink_to_fit();
+  keys_tmp_.clear();
+  keys_tmp_.shrink_to_fit();
+
+  // A first non-degenerate tetrahedron: the first point, the first different one, the first
+  // one off their line, the first one off their plane.
+  const Vec3<T>* pts = sorted_.data();
+  std::size_t k1 = 1;
+  while (k1 < n && same_point(pts[k1], pts[0])) ++k1;
+  if (k1 == n) {
+    lower_dimensional(0);
+    return;
+  }
+  std::size_t k2 = k1 + 1;
+  while (k2 < n && collinear(pts[0], pts[k1], pts[k2])) ++k2;
+  if (k2 == n) {
+    lower_dimensional(1);
+    return;
+  }
+  std::size_t k3 = k2 + 1;
+  while (k3 < n && orient3d(pts[0], pts[k1], pts[k2], pts[k3]) == Sign::zero) ++k3;
+  if (k3 == n) {
+    lower_dimensional(2);
+    return;
+  }
+  dimension_ = 3;
+  std::uint32_t a = 0, b = static_cast<std::uint32_t>(k1), c = static_cast<std::uint32_t>(k2),
+                d = static_cast<std::uint32_t>(k3);
+  if (orient3d(pts[a], pts[b], pts[c], pts[d]) == Sign::negative) std::swap(c, d);
+
+  cells_.reserve(7 * n + 64);
+  mark_.reserve(7 * n + 64);
+  cells_.resize(5);
+  mark_.assign(5, 0);
+  cells_[0].vertices = {a, b, c, d};
+  for (int i = 0; i < 4; ++i) {
+    const std::uint32_t f0 = cells_[0].vertices[std::size_t(kFace[i][0])];
+    const std::uint32_t f1 = cells_[0].vertices[std::size_t(kFace[i][1])];
+    const std::uint32_t f2 = cells_[0].vertices[std::size_t(kFace[i][2])];
+    const std::uint32_t g = 1 + std::uint32_t(i);
+    cells_[g].vertices = {f0, f2, f1, kGhost};  // the outside on the positive side
+    cells_[g].neighbors[3] = static_cast<std::int32_t>(4 * 0 + std::uint32_t(i));
+    cells_[0].neighbors[std::size_t(i)] = static_cast<std::int32_t>(4 * g + 3);
+  }
+  const std::uint32_t ghosts[4] = {1, 2, 3, 4};
+  link_around(ghosts, kGhost);
+  last_ = 0;
+
+  for (std::size_t k = 1; k < n; ++k) {
+    if (k == k1 || k == k2 || k == k3) continue;
+    if (!insert_vertex(static_cast<std::uint32_t>(k))) {
+      status_ = Status::limit_exceeded;
+      break;
+    }
+  }
+}
+
+template <Real T>
+void Delaunay3<T>::compact(bool in_place) {
+  Delaunay3Result& r = result_;
+  r.status = status_;
+  r.dimension = status_ == Status::ok || status_ == Status::limit_exceeded ? dimension_ : -1;
+  r.tetrahedra.clear();
+  r.hull.clear();
+  r.duplicate_count = 0;
+  for (std::size_t i = 0; i < r.duplicate_of.size(); ++i)
+    r.duplicate_count += r.duplicate_of[i] != i ? 1u : 0u;
+  if (dimension_ < 3) return;
+  // New index of each real cell (mark_ is reused as the map); ghosts and free slots map to -1.
+  const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
+  std::uint32_t count = 0;
+  for (std::uint32_t t = 0; t < nc; ++t)
+    mark_[t] = cells_[t].vertices[3] >= kDead ? kNone : count++;
+  auto map_neighbor = [&](std::int32_t code) {
+    const std::uint32_t m = mark_[std::uint32_t(code) >> 2];
+    return m == kNone ? std::int32_t(-1) : static_cast<std::int32_t>(m);
+  };
+  if (in_place) {
+    // Slot mark_[t] <= t, so a forward pass packs the array without overwriting unread cells.
+    for (std::uint32_t t = 0; t < nc; ++t) {
+      const Delaunay3Cell c = cells_[t];
+      if (c.vertices[3] == kGhost) {
+        r.hull.push_back({orig_[c.vertices[0]], orig_[c.vertices[1]], orig_[c.vertices[2]]});
+        continue;
+      }
+      if (c.vertices[3] == kDead) continue;
+      Delaunay3Cell& o = cells_[mark_[t]];
+      for (std::size_t i = 0; i < 4; ++i) {
+        o.vertices[i] = orig_[c.vertices[i]];
+        o.neighbors[i] = map_neighbor(c.neighbors[i]);
+      }
+    }
+    cells_.resize(count);
+    r.tetrahedra.swap(cells_);
+    cells_.clear();
+    mark_.clear();
+    mark_.shrink_to_fit();
+    sorted_.clear();
+    sorted_.shrink_to_fit();
+    orig_.clear();
+    orig_.shrink_to_fit();
+    dimension_ = -1;
+    return;
+  }
+  r.tetrahedra.resize(count);
+  for (std::uint32_t t = 0; t < nc; ++t) {
+    const Delaunay3Cell& c = cells_[t];
+    if (c.vertices[3] == kGhost) {
+      r.hull.push_back({orig_[c.vertices[0]], orig_[c.vertices[1]], orig_[c.vertices[2]]});
+      continue;
+    }
+    if (c.vertices[3] == kDead) continue;
+    Delaunay3Cell& o = r.tetrahedra[mark_[t]];
+    for (std::size_t i = 0; i < 4; ++i) {
+      o.vertices[i] = orig_[c.vertices[i]];
+      o.neighbors[i] = map_neighbor(c.neighbors[i]);
+    }
+  }
+  // The marks were overwritten: restart the epochs.
+  std::fill(mark_.begin(), mark_.end(), 0u);
+  epoch_ = 0;
+}
+
+// ---- the lifted-hull method (brute force) ------------------------------------------------
+
+namespace {
+
+template <class T>
+Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
+  Delaunay3Result r;
+  const std::size_t n = pts.size();
+  r.duplicate_of.resize(n);
+  std::iota(r.duplicate_of.begin(), r.duplicate_of.end(), 0u);
+  if (n == 0) return r;
+  for (const auto& q : pts) {
+    if (!is_finite(q.x) || !is_finite(q.y) || !is_finite(q.z)) {
+      r.status = Status::non_finite_input;
+      return r;
+    }
+  }
+  if (n > 64) {
+    r.status = Status::invalid_input;
+    return r;
+  }
+  r.status = Status::ok;
+  std::vector<std::uint32_t> kept;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (const std::uint32_t k : kept) {
+      if (same_point(pts[i], pts[k])) {
+        r.duplicate_of[i] = k;
+        break;
+      }
+    }
+    if (r.duplicate_of[i] == i) kept.push_back(i);
+    else ++r.duplicate_count;
+  }
+  const std::size_t m = kept.size();
+  // Affine dimension of the kept points.
+  int dim = m > 1 ? 1 : 0;
+  std::size_t i2 = 2;
+  while (i2 < m && collinear(pts[kept[0]], pts[kept[1]], pts[kept[i2]])) ++i2;
+  if (i2 < m) {
+    dim = 2;
+    for (std::size_t i3 = i2 + 1; i3 < m && dim < 3; ++i3)
+      if (orient3d(pts[kept[0]], pts[kept[1]], pts[kept[i2]], pts[kept[i3]]) != Sign::zero)
+        dim = 3;
+  }
+  r.dimension = dim;
+  if (dim < 3) return r;
+
+  // Every quadruple whose lifted hyperplane has all other lifted points above it (perturbed
+  // insphere negative) is a lower facet of the lifted hull: a Delaunay tetrahedron.
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t b = a + 1; b < m; ++b)
+      for (std::size_t c = b + 1; c < m; ++c)
+        for (std::size_t d = c + 1; d < m; ++d) {
+          std::uint32_t q[4] = {kept[a], kept[b], kept[c], kept[d]};
+          const Sign o = orient3d(pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]]);
+          if (o == Sign::zero) continue;
+          if (o == Sign::negative) std::swap(q[2], q[3]);
+          bool empty = true;
+          for (std::size_t e = 0; e < m && empty; ++e) {
+            if (e == a || e == b || e == c || e == d) continue;
+            empty = insphere_perturbed_inline(pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]],
+                                              pts[kept[e]]) == Sign::negative;
+          }
+          if (empty) r.tetrahedra.push_back({{q[0], q[1], q[2], q[3]}, {-1, -1, -1, -1}});
+        }
+  // Adjacency by matching faces (sorted vertex triples); unmatched faces are the hull.
+  struct FaceKey {
+    std::array<std::uint32_t, 3> key;
+    std::uint32_t cell, face;
+  };
+  std::vector<FaceKey> faces;
+  for (std::uint32_t t = 0; t < r.tetrahedra.size(); ++t)
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const auto& v = r.tetrahedra[t].vertices;
+      std::array<std::uint32_t, 3> k = {v[std::size_t(kFace[i][0])], v[std::size_t(kFace[i][1])],
+                                        v[std::size_t(kFace[i][2])]};
+      std::sort(k.begin(), k.end());
+      faces.push_back({k, t, i});
+    }
+  std::sort(faces.begin(), faces.end(),
+            [](const FaceKey& x, const FaceKey& y) { return x.key < y.key; });
+  for (std::size_t k = 0; k < faces.size();) {
+    std::size_t e = k + 1;
+    while (e < faces.size() && faces[e].key == faces[k].key) ++e;
+    if (e - k == 2) {
+      r.tetrahedra[faces[k].cell].neighbors[faces[k].face] = std::int32_t(faces[k + 1].cell);
+      r.tetrahedra[faces[k + 1].cell].neighbors[faces[k + 1].face] = std::int32_t(faces[k].cell);
+    } else if (e - k == 1) {
+      const auto& v = r.tetrahedra[faces[k].cell].vertices;
+      const int i = int(faces[k].face);
+      // Face i has the cell on its positive side; the outward orientation is the reverse.
+      r.hull.push_back({v[std::size_t(kFace[i][0])], v[std::size_t(kFace[i][2])],
+                        v[std::size_t(kFace[i][1])]});
+    } else {
+      r.status = Status::invalid_topology;  // impossible with a consistent perturbation
+    }
+    k = e;
+  }
+  return r;
+}
+
+}  // namespace
+
+template <Real T>
+Delaunay3Result delaunay(std::span<const Vec3<T>> points, const Delaunay3Options& options) {
+  if (options.method == Delaunay3Method::lifted_hull) return delaunay_lifted(points);
+  Delaunay3<T> d;
+  d.points_.assign(points.begin(), points.end());
+  d.run();
+  d.compact(true);
+  return d.take_result();
+}
+
+template class Delaunay3<float>;
+template class Delaunay3<double>;
+template Delaunay3Result delaunay<float>(std::span<const Vec3<float>>, const Delaunay3Options&);
+template Delaunay3Result delaunay<double>(std::span<const Vec3<double>>, const Delaunay3Options&);
+template Sign insphere_perturbed<float>(const Vec3<float>&, const Vec3<float>&,
+                                        const Vec3<float>&, const Vec3<float>&,
+                                        const Vec3<float>&) noexcept;
+template Sign insphere_perturbed<double>(const Vec3<double>&, const Vec3<double>&,
+                                         const Vec3<double>&, const Vec3<double>&,
+                                         const Vec3<double>&) noexcept;
+
+}  // namespace locus
