@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Distance between a ray and a (solid) rectangle in 3D; row dist3.linear-rectangle; book section
+// 10.5.2 (figures 10.42, 10.43).
+//
+// distance(ray, rect) returns Distance<T, 3, T, Vec2<T>>: closest[0] = point_at(ray, param_a) with
+//   t >= 0, point_at(ray, t) = origin + t direction (direction need not be unit),
+// and closest[1] = point_at(rect, param_b) with param_b = (s, t) the rectangle's symmetric
+//   coordinates (|s| <= extent[0], |t| <= extent[1]; primitives/rectangle.hpp).
+// distance(rect, ray) is the swapped result. The rectangle is filled: a ray passing through it
+// has distance 0.
+//
+// Method (detail/linear_planar.hpp): in the rectangle's frame the rectangle is the box
+// [-e0, e0] x [-e1, e1] x {0}. When the direction is not nearly parallel to the plane, the
+// crossing of the ray's line with the plane is the answer if it lies in the prism
+// "parameter interval x rectangle"; otherwise only the facets of the prism it violates are tried
+// (KKT): the ray's origin (a clamp in the frame) and the sides of the rectangle (exact
+// linear-segment queries). These are the regions of figure 10.43 (the nine regions of the
+// rectangle's (s, t) plane, for t < 0 and t >= 0) without region-specific code. Nearly parallel
+// directions and rounding-sensitive crossings evaluate every candidate (the projected crossing, the
+// origin, the four sides): each is a realisable pair, so the answer is continuous through parallel
+// configurations and never divides by a vanishing determinant.
+//
+// unique = false when the ray is parallel to the rectangle's plane (sin^2 angle <= 64 eps^2) and
+// the closest pair can slide along it (above the interior, or along the nearest side).
+// Preconditions and degenerate input: the axes are unit and orthogonal (the rectangle's contract,
+// not checked). A zero extent gives a segment or a point (continuously; a negative extent is
+// treated as 0); a zero direction acts as the point origin (t = 0). NaN or infinite values give
+// non_finite_distance() (result.hpp). Decisions are rounded (the rectangle's corners are not
+// input points, so no exact predicate applies); the squared distance is within a few
+// eps * scale^2 of the exact one. Cost: O(1): a change of frame, one division and one to three
+// point-rectangle / linear-segment queries in the generic case, at most 7 in the nearly
+// parallel case.
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/distance/detail/linear_planar.hpp>
+#include <locus/distance/result.hpp>
+#include <locus/primitives/ray.hpp>
+#include <locus/primitives/rectangle.hpp>
+
+namespace locus {
+
+/// Distance between a ray and a solid rectangle; param_a = t >= 0, param_b = (s, t).
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, T, Vec2<T>> distance(const Ray3<T>& ray,
+                                                         const Rectangle3<T>& rect) noexcept {
+  return detail::linear_rectangle_distance<T>(ray, rect);
+}
+
+/// The swapped query: closest[0] and param_a belong to the rectangle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, Vec2<T>, T> distance(const Rectangle3<T>& rect,
+                                                         const Ray3<T>& ray) noexcept {
+  return swapped(distance(ray, rect));
+}
+
+}  // namespace locus
