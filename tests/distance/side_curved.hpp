@@ -15,6 +15,8 @@
 #include "distance/harness.hpp"
 
 #include <cmath>
+#include <type_traits>
+#include <utility>
 
 namespace locus_test::dist {
 
@@ -55,5 +57,40 @@ struct Side<locus::Ellipsoid3<T>> {
     return {r * e.center + t, {r * e.axis[0], r * e.axis[1], r * e.axis[2]}, e.extent};
   }
 };
+
+// ---- curves: the parameter is the curve's own t ---------------------------------------------
+template <class Curve, class T, int N>
+struct CurveSide {
+  using Param = T;
+  static constexpr int k = 1;
+  static constexpr bool rotatable = true;
+  static locus::ParamDomain<T> dom(const Curve& c) {
+    if constexpr (requires { domain(c); })
+      return domain(c);
+    else
+      return {T(0), T(1)};
+  }
+  static Vec<T, N> map(const Curve& c, const T* u, T) {
+    const auto d = dom(c);
+    return point_at(c, d.min + u[0] * (d.max - d.min));
+  }
+  static Vec<T, N> at(const Curve& c, T t) { return point_at(c, t); }
+  static bool param_ok(const Curve& c, T t, T tol) {
+    const auto d = dom(c);
+    return t >= d.min - tol && t <= d.max + tol;
+  }
+  static bool in_window(const Curve&, T, T) { return true; }
+  static Curve moved(const Curve& c, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
+    Curve m = c;
+    for (auto& q : m.control) q = r * q + t;
+    return m;
+  }
+};
+template <class T, int N>
+struct Side<locus::BezierCurve<T, N>> : CurveSide<locus::BezierCurve<T, N>, T, N> {};
+template <class T, int N>
+struct Side<locus::BSplineCurve<T, N>> : CurveSide<locus::BSplineCurve<T, N>, T, N> {};
+template <class T, int N>
+struct Side<locus::NurbsCurve<T, N>> : CurveSide<locus::NurbsCurve<T, N>, T, N> {};
 
 }  // namespace locus_test::dist
