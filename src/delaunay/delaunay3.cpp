@@ -171,11 +171,86 @@ LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, c
   return Sign::zero;  // only when a, b, c, d are coplanar and e lies on their plane
 }
 
+// True when x - y is computed exactly (Knuth's two-difference has a zero tail).
+[[nodiscard]] inline bool exact_difference(double x, double y, double diff) noexcept {
+  const double bvirt = x - diff;
+  const double avirt = diff + bvirt;
+  return (x - avirt) + (bvirt - y) == 0.0;
+}
+
+// The insphere filter fails on every exactly cospherical quintuple (grids!) and the adaptive
+// predicate costs 1.5-3 us there. When the twelve differences p - e are exact and are integer
+// multiples of a power of two q with |difference| < 2^9 q, every product and sum of the double
+// evaluation below is an integer multiple of q^k (k its degree) below 2^53 q^k (the largest,
+// the final sum, is below 4 * 3 * 2^18 * 3 * 2^28 < 2^52), so the double determinant is exact
+// and so is its sign. Otherwise defer to the exact predicate.
+LOCUS_D3_NOINLINE Sign insphere_slow(const Vec3<double>& a, const Vec3<double>& b,
+                                     const Vec3<double>& c, const Vec3<double>& d,
+                                     const Vec3<double>& e) noexcept {
+  const Vec3<double>* p[4] = {&a, &b, &c, &d};
+  double dv[4][3];
+  double m = 0.0;
+  bool exact = true;
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) {
+      dv[i][k] = (*p[i])[k] - e[k];
+      exact = exact && exact_difference((*p[i])[k], e[k], dv[i][k]);
+      m = std::max(m, std::abs(dv[i][k]));
+    }
+  if (exact && m > 0.0 && std::isfinite(m)) {
+    int ex = 0;
+    std::frexp(m, &ex);                          // m < 2^ex
+    const double inv_q = std::ldexp(1.0, 9 - ex);  // 1 / q with q = 2^(ex - 9)
+    // q^5 must not underflow (5 (ex - 9) >= -1074) nor 2^53 q^5 overflow.
+    bool on_lattice = ex > -200 && ex < 190;
+    for (int i = 0; i < 4 && on_lattice; ++i)
+      for (int k = 0; k < 3 && on_lattice; ++k) {
+        const double u = dv[i][k] * inv_q;
+        on_lattice = u == std::nearbyint(u);
+      }
+    if (on_lattice) {
+      double lift[4], minor[4];
+      for (int i = 0; i < 4; ++i)
+        lift[i] = dv[i][0] * dv[i][0] + dv[i][1] * dv[i][1] + dv[i][2] * dv[i][2];
+      // minor[i] = det of the 3x3 (x, y, z) rows other than i, in increasing row order.
+      for (int i = 0; i < 4; ++i) {
+        int r[3], k = 0;
+        for (int j = 0; j < 4; ++j)
+          if (j != i) r[k++] = j;
+        const double* u = dv[r[0]];
+        const double* v = dv[r[1]];
+        const double* w = dv[r[2]];
+        minor[i] = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                   u[2] * (v[0] * w[1] - v[1] * w[0]);
+      }
+      // det[p - e, lift] expanded along the lift column: sum (-1)^(i+3) lift_i minor_i; our
+      // insphere is its negation.
+      const double det = (lift[1] * minor[1] + lift[3] * minor[3]) -
+                         (lift[0] * minor[0] + lift[2] * minor[2]);
+      return -sign_of(det);
+    }
+  }
+  return insphere(a, b, c, d, e);
+}
+
+template <class T>
+LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
+                                   const Vec3<T>& pd, const Vec3<T>& pe) noexcept {
+  const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
+                     c = detail::to_double(pc), d = detail::to_double(pd),
+                     e = detail::to_double(pe);
+  const detail::InsphereTerms t = detail::insphere_terms(a, b, c, d, e);
+  // The same stage-A bound as core/predicates.hpp (its sign convention: ours is the negation).
+  if (std::abs(t.det) > detail::insphere_bound_a * t.permanent) [[likely]]
+    return -detail::nonzero_sign(t.det);
+  return insphere_slow(a, b, c, d, e);
+}
+
 template <class T>
 LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& a, const Vec3<T>& b,
                                                const Vec3<T>& c, const Vec3<T>& d,
                                                const Vec3<T>& e) noexcept {
-  const Sign s = insphere(a, b, c, d, e);
+  const Sign s = insphere_fast(a, b, c, d, e);
   if (s != Sign::zero) [[likely]]
     return s;
   return perturbed_zero_case(a, b, c, d, e);
