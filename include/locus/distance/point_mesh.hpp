@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Distance between a point and a triangle mesh (the surface), with a bounding-volume hierarchy
+// for many queries on one mesh, and the exact inside/outside classification of a closed mesh for
+// a signed distance; row dist3.pt-polyhedron (general polyhedron); book section 10.3.4 (figure
+// 10.20). Convex polyhedra and tetrahedra (solids, O(F)) are in point_polyhedron.hpp.
+//
+// Input: vertices (Vec3) and triangles (std::array<std::uint32_t, 3> of vertex indices), the
+// layout of containment/point_in_polyhedron.hpp; triangle {i, j, k} has normal
+// (vj - vi) x (vk - vi).
+//
+// MeshDistanceTree<T> (the reusable class; T = float or double, compiled once in
+// src/distance/point_mesh.cpp) copies the triangles into an axis-aligned bounding-box tree built
+// by median splits of the triangle centroids along the longest axis (leaves of at most 4
+// triangles, depth <= log2(F) + 1). Build: O(F log F) time, O(F) memory (about 100 bytes per
+// triangle in double). Queries never allocate and are reentrant (the tree is immutable).
+//
+//  * distance(p, tree) returns Distance<T, 3, NoParam, MeshPoint<T>>: closest[1] = the nearest
+//    point of the surface (the union of the triangles; the mesh need not be closed or
+//    manifold), param_b = {triangle index into the input, barycentric (u, v, w) in it}, so
+//    closest[1] = point_at(tree, param_b). The search is best-first branch and bound: a node is
+//    opened only when its box is nearer than the best triangle so far, nearer child first; each
+//    triangle is the exact clamped query of point_triangle.hpp, so the answer is the brute-force
+//    minimum over the triangles (exact ties prefer the lower input index among the triangles visited). Cost: O(log F) nodes for a point
+//    near a well-shaped mesh, O(F) in the worst case (a point at the centre of a sphere mesh is
+//    equidistant from everything). distance(tree, p) is the swapped result.
+//    distance_to_mesh(p, vertices, triangles) is the one-call brute-force form (O(F), no tree).
+//  * classify(p, tree) is EXACT for finite input (orient2d/orient3d of core/predicates.hpp):
+//    Side::boundary on the surface, otherwise the parity of the crossings of the ray from p along
+//    +x, made generic by Simulation of Simplicity (the ray starts at p + (0, e, e^2), e -> 0+:
+//    it never meets an edge or vertex, triangles parallel to x are never crossed), the rule of
+//    containment/point_in_polyhedron.hpp, visiting only the tree nodes whose box meets the ray.
+//    Meaningful for closed meshes (every edge used an even number of times: tree.closed());
+//    orientation, convexity and manifoldness are not needed (self-intersections are read by the
+//    even-odd rule). signed_distance(p, tree) = -distance inside, 0 on the boundary, +distance
+//    outside.
+//
+// Bad input (tree.status()): no triangles -> Status::empty_input; a triangle index out of range
+// -> Status::invalid_input; a non-finite coordinate in a used vertex -> Status::non_finite_input.
+// A tree whose status is not ok answers every query with the NaN result of result.hpp
+// (distance NaN, triangle index MeshPoint::none, unique false), classify() with
+// Side::outside and signed_distance() with NaN; so does a non-finite query point. Degenerate
+// triangles (collinear or coincident vertices) are segments or points for the distance and are
+// never crossed by the perturbed ray. unique is true unless two triangles not sharing the chosen
+// point tie exactly (not detected; one is returned).
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/status.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/distance/point_triangle.hpp>
+#include <locus/distance/result.hpp>
+#include <locus/primitives/triangle.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace locus {
+
+/// A point of a triangle mesh: the input triangle's index and barycentric coordinates in it.
+template <class T>
+struct MeshPoint {
+  static constexpr std::uint32_t none = 0xffffffffu;  ///< no triangle (the NaN result)
+  std::uint32_t triangle = none;
+  Vec3<T> barycentric{};
+  friend constexpr bool operator==(const MeshPoint&, const MeshPoint&) noexcept = default;
+};
+
+/// Bounding-box tree over the triangles of a mesh, for nearest-point and inside queries.
+template <Real T>
+class MeshDistanceTree {
+ public:
+  struct Node {
+    Vec3<T> lo, hi;       ///< bounds of the node's triangles
+    std::uint32_t first;  ///< leaf: first triangle slot; internal: index of the left child
+    std::uint32_t count;  ///< leaf: number of triangles (> 0); internal: 0 (right = first + 1)
+  };
+
+  MeshDistanceTree() = default;
+  /// Builds the tree (see the header comment for the status values).
+  MeshDistanceTree(std::span<const Vec3<T>> vertices,
+                   std::span<const std::array<std::uint32_t, 3>> triangles);
+
+  [[nodiscard]] Status status() const noexcept { return status_; }
+  /// Every undirected edge is used by an even number of triangles (classify() is meaningful).
+  [[nodiscard]] bool closed() const noexcept { return closed_; }
+  [[nodiscard]] std::size_t triangle_count() const noexcept { return tris_.size(); }
+  [[nodiscard]] std::span<const Node> nodes() const noexcept { return nodes_; }
+  /// The input triangle `id` (as stored; id < triangle_count()).
+  [[nodiscard]] Triangle3<T> triangle(std::uint32_t id) const noexcept { return tris_[slot_[id]]; }
+
+  /// Nearest surface point; see distance(p, tree).
+  [[nodiscard]] Distance<T, 3, NoParam, MeshPoint<T>> nearest(const Vec3<T>& p) const noexcept;
+  /// Exact inside/boundary/outside for a closed mesh; see classify(p, tree).
+  [[nodiscard]] Side classify(const Vec3<T>& p) const noexcept;
+
+ private:
+  std::vector<Node> nodes_;
+  std::vector<Triangle3<T>> tris_;   // in leaf order
+  std::vector<std::uint32_t> ids_;   // input index of each slot
+  std::vector<std::uint32_t> slot_;  // slot of each input index
+  Status status_ = Status::empty_input;
+  bool closed_ = false;
+};
+
+extern template class MeshDistanceTree<float>;
+extern template class MeshDistanceTree<double>;
+
+/// The point of the mesh with parameter mp: point_at_barycentric of the input triangle.
+template <Real T>
+[[nodiscard]] inline Vec3<T> point_at(const MeshDistanceTree<T>& tree,
+                                      const MeshPoint<T>& mp) noexcept {
+  return point_at_barycentric(tree.triangle(mp.triangle), mp.barycentric);
+}
+
+/// Distance from p to the mesh surface; param_b = {input triangle index, barycentric}.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, NoParam, MeshPoint<T>> distance(
+    const Vec3<T>& p, const MeshDistanceTree<T>& tree) noexcept {
+  return tree.nearest(p);
+}
+
+/// The swapped query: closest[0] and param_a belong to the mesh.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, MeshPoint<T>, NoParam> distance(
+    const MeshDistanceTree<T>& tree, const Vec3<T>& p) noexcept {
+  return swapped(tree.nearest(p));
+}
+
+/// Exact classification of p against the closed mesh (Side::outside for a bad tree or p).
+template <Real T>
+[[nodiscard]] inline Side classify(const Vec3<T>& p, const MeshDistanceTree<T>& tree) noexcept {
+  return tree.classify(p);
+}
+
+/// -distance inside, 0 on the surface, +distance outside (NaN for a bad tree or p).
+template <Real T>
+[[nodiscard]] inline T signed_distance(const Vec3<T>& p, const MeshDistanceTree<T>& tree) noexcept {
+  const auto d = tree.nearest(p);
+  if (!(d.distance == d.distance)) return d.distance;
+  const Side s = tree.classify(p);
+  if (s == Side::boundary) return T(0);
+  return s == Side::inside ? -d.distance : d.distance;
+}
+
+namespace detail {
+
+template <class T>
+[[nodiscard]] constexpr Distance<T, 3, NoParam, MeshPoint<T>> mesh_nan_distance() noexcept {
+  constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+  return {nan, nan, {splat<T, 3>(nan), splat<T, 3>(nan)}, NoParam{},
+          MeshPoint<T>{MeshPoint<T>::none, splat<T, 3>(nan)}, false};
+}
+
+}  // namespace detail
+
+/// One-call brute-force distance from p to the mesh surface (O(F), no tree, no allocation);
+/// the same answer and bad-input rules as the tree (see the header comment).
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, NoParam, MeshPoint<T>> distance_to_mesh(
+    const Vec3<T>& p, std::span<const Vec3<T>> vertices,
+    std::span<const std::array<std::uint32_t, 3>> triangles) noexcept {
+  if (triangles.empty() || !is_finite(p)) return detail::mesh_nan_distance<T>();
+  T best = std::numeric_limits<T>::infinity();
+  MeshPoint<T> mp{};
+  Vec3<T> q{};
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const auto& t = triangles[i];
+    if (t[0] >= vertices.size() || t[1] >= vertices.size() || t[2] >= vertices.size())
+      return detail::mesh_nan_distance<T>();
+    const auto r = distance(p, Triangle3<T>{vertices[t[0]], vertices[t[1]], vertices[t[2]]});
+    if (!(r.sqr_distance == r.sqr_distance)) return detail::mesh_nan_distance<T>();
+    if (r.sqr_distance < best) {
+      best = r.sqr_distance;
+      mp = {static_cast<std::uint32_t>(i), r.param_b};
+      q = r.closest[1];
+    }
+  }
+  return detail::make_distance(p, q, NoParam{}, mp, true);
+}
+
+}  // namespace locus
