@@ -10,6 +10,7 @@
 #include <locus/delaunay/delaunay3.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -256,46 +257,6 @@ LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& a, const Vec3<T>& 
   return perturbed_zero_case(a, b, c, d, e);
 }
 
-// Open-addressing map from a directed edge (x, y) to 4 * cell + face, cleared after each use.
-struct EdgeMap {
-  std::vector<std::uint64_t>& keys;
-  std::vector<std::uint32_t>& vals;
-  std::uint32_t mask = 0;
-  static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
-
-  void prepare(std::size_t entries) {
-    std::size_t cap = 64;
-    while (cap < 2 * entries) cap *= 2;
-    if (keys.size() < cap) {
-      keys.assign(cap, kEmpty);
-      vals.resize(cap);
-    }
-    mask = static_cast<std::uint32_t>(cap - 1);  // use only the first cap slots
-  }
-  [[nodiscard]] static std::uint32_t hash(std::uint64_t k) noexcept {
-    return static_cast<std::uint32_t>((k * 0x9E3779B97F4A7C15ull) >> 40);
-  }
-  // Returns the value stored under `find` (erasing it) or stores `val` under `key`.
-  std::uint32_t match_or_insert(std::uint64_t key, std::uint64_t find, std::uint32_t val) {
-    std::uint32_t h = hash(find) & mask;
-    while (keys[h] != kEmpty) {
-      if (keys[h] == find) {
-        // Leave a tombstone-free table: every key is matched exactly once per use, and the
-        // table is wiped after use, so the slot is simply marked as consumed.
-        keys[h] = kEmpty - 1;
-        return vals[h];
-      }
-      h = (h + 1) & mask;
-    }
-    h = hash(key) & mask;
-    while (keys[h] != kEmpty && keys[h] != kEmpty - 1) h = (h + 1) & mask;
-    keys[h] = key;
-    vals[h] = val;
-    return kNone;
-  }
-  void clear() noexcept { std::fill(keys.begin(), keys.begin() + mask + 1, kEmpty); }
-};
-
 }  // namespace
 
 template <Real T>
@@ -331,31 +292,73 @@ Delaunay3Result Delaunay3<T>::take_result() {
   return r;
 }
 
+// Open addressing over (u, v, value, generation) slots; a slot is live only in the current
+// generation, so starting a new use is one increment (no clearing). The hash of u + v is
+// symmetric: an edge and its reverse share one probe sequence, so "find the reverse, else
+// insert" is a single scan. Every key is matched at most once, and a matched slot is left in
+// place (marked consumed) so the chains through it stay intact.
+template <Real T>
+void Delaunay3<T>::edges_begin(std::size_t entries) {
+  std::size_t cap = 256;
+  while (cap < 4 * entries) cap *= 2;
+  if (edge_table_.size() < cap || ++edge_gen_ == 0) {
+    edge_table_.assign(std::max(cap, edge_table_.size()), EdgeSlot{0, 0, 0, 0});
+    edge_gen_ = 1;
+  }
+  edge_bits_ = std::countr_zero(cap);
+}
+
+template <Real T>
+LOCUS_D3_INLINE std::uint32_t Delaunay3<T>::edge_match(std::uint32_t u, std::uint32_t v,
+                                                       std::uint32_t code) noexcept {
+  const std::uint32_t mask = (1u << edge_bits_) - 1u;
+  std::uint32_t h = ((u + v) * 0x9E3779B1u) >> (32 - edge_bits_);
+  EdgeSlot* table = edge_table_.data();
+  for (;;) {
+    EdgeSlot& e = table[h];
+    if (e.gen != edge_gen_) {
+      e = EdgeSlot{u, v, code, edge_gen_};
+      return kNone;
+    }
+    if (e.u == v && e.v == u) {
+      e.u = kDead;  // consumed
+      return e.code;
+    }
+    h = (h + 1) & mask;
+  }
+}
+
+template <Real T>
+LOCUS_D3_INLINE void Delaunay3<T>::glue(std::uint32_t code, std::uint32_t other) noexcept {
+  if (other == kNone) return;
+  cells_[code >> 2].neighbors[code & 3u] = static_cast<std::int32_t>(other);
+  cells_[other >> 2].neighbors[other & 3u] = static_cast<std::int32_t>(code);
+}
+
 // Links the faces through `apex` of the given cells: the face through apex and edge x -> y
 // (in the face's orientation) meets the face of another cell with the edge y -> x.
 template <Real T>
 void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32_t apex) {
-  EdgeMap map{hash_keys_, hash_vals_};
-  map.prepare(3 * cells.size());
+  edges_begin(3 * cells.size());
   for (const std::uint32_t t : cells) {
-    Delaunay3Cell& cell = cells_[t];
+    const auto& v = cells_[t].vertices;
+    if (v[3] == apex) {
+      // The common case (a, b, c, apex): faces 0, 1, 2 are (apex, c, b), (apex, a, c) and
+      // (apex, b, a) once rotated to start at the apex (kFace).
+      glue(4 * t + 0, edge_match(v[2], v[1], 4 * t + 0));
+      glue(4 * t + 1, edge_match(v[0], v[2], 4 * t + 1));
+      glue(4 * t + 2, edge_match(v[1], v[0], 4 * t + 2));
+      continue;
+    }
     for (int i = 0; i < 4; ++i) {
-      if (cell.vertices[std::size_t(i)] == apex) continue;
-      std::uint32_t f[3] = {cell.vertices[std::size_t(kFace[i][0])],
-                            cell.vertices[std::size_t(kFace[i][1])],
-                            cell.vertices[std::size_t(kFace[i][2])]};
+      if (v[std::size_t(i)] == apex) continue;
+      const std::uint32_t f[3] = {v[std::size_t(kFace[i][0])], v[std::size_t(kFace[i][1])],
+                                  v[std::size_t(kFace[i][2])]};
       const int at = f[0] == apex ? 0 : (f[1] == apex ? 1 : 2);
-      const std::uint32_t x = f[(at + 1) % 3], y = f[(at + 2) % 3];
       const std::uint32_t code = 4 * t + std::uint32_t(i);
-      const std::uint32_t other = map.match_or_insert((std::uint64_t(x) << 32) | y,
-                                                      (std::uint64_t(y) << 32) | x, code);
-      if (other != kNone) {
-        cell.neighbors[std::size_t(i)] = static_cast<std::int32_t>(other);
-        cells_[other >> 2].neighbors[other & 3u] = static_cast<std::int32_t>(code);
-      }
+      glue(code, edge_match(f[(at + 1) % 3], f[(at + 2) % 3], code));
     }
   }
-  map.clear();
 }
 
 template <Real T>

@@ -155,6 +155,9 @@ class Delaunay3 {
   bool in_conflict(std::uint32_t t, std::uint32_t v) const noexcept;
   bool insert_vertex(std::uint32_t v);
   void link_around(std::span<const std::uint32_t> cells, std::uint32_t apex);
+  void edges_begin(std::size_t entries);
+  std::uint32_t edge_match(std::uint32_t u, std::uint32_t v, std::uint32_t code) noexcept;
+  void glue(std::uint32_t code, std::uint32_t other) noexcept;
 
   // The one-call function converts the internal arrays into the result in place.
   template <Real U>
@@ -168,8 +171,12 @@ class Delaunay3 {
   std::uint32_t epoch_ = 0;
   std::vector<std::uint32_t> stack_, cavity_, fresh_, free_;
   std::vector<Boundary> boundary_;
-  std::vector<std::uint64_t> hash_keys_;
-  std::vector<std::uint32_t> hash_vals_;
+  struct EdgeSlot {  // directed edge u -> v of the face `code` (4 * cell + face)
+    std::uint32_t u, v, code, gen;
+  };
+  std::vector<EdgeSlot> edge_table_;
+  std::uint32_t edge_gen_ = 0;
+  int edge_bits_ = 8;
   std::vector<std::uint64_t> keys_, keys_tmp_;
   std::uint32_t last_ = 0;
   std::uint32_t walk_rng_ = 0x2545F491u;
