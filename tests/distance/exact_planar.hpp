@@ -128,7 +128,8 @@ inline mpq_class sqr_point_tetrahedron(const Q3& p, const std::array<Q3, 4>& v) 
   if (inside_tetrahedron(p, v)) return 0;
   const auto f = tet_faces(v);
   mpq_class best = sqr_point_triangle(p, f[0]);
-  for (int i = 1; i < 4; ++i) best = min_q(best, sqr_point_triangle(p, f[static_cast<std::size_t>(i)]));
+  for (int i = 1; i < 4; ++i)
+    best = min_q(best, sqr_point_triangle(p, f[static_cast<std::size_t>(i)]));
   return best;
 }
 
@@ -139,7 +140,8 @@ inline mpq_class sqr_linear_tetrahedron(const QLinear<3>& A, const std::array<Q3
   if (A.hi && inside_tetrahedron(axpy(A.origin, mpq_class(1), A.dir), v)) return 0;
   const auto f = tet_faces(v);
   mpq_class best = sqr_linear_triangle(A, f[0]);
-  for (int i = 1; i < 4; ++i) best = min_q(best, sqr_linear_triangle(A, f[static_cast<std::size_t>(i)]));
+  for (int i = 1; i < 4; ++i)
+    best = min_q(best, sqr_linear_triangle(A, f[static_cast<std::size_t>(i)]));
   return best;
 }
 

@@ -31,7 +31,7 @@ namespace {
 #if defined(__SANITIZE_ADDRESS__)
 constexpr int kCases = 60;
 #else
-constexpr int kCases = 200;
+constexpr int kCases = 100;
 #endif
 
 // Random rectangles: random rotation, extents in (0, S] (a zero extent 10% of the time, both

@@ -32,7 +32,7 @@ namespace {
 #if defined(__SANITIZE_ADDRESS__)
 constexpr int kCases = 60;
 #else
-constexpr int kCases = 200;
+constexpr int kCases = 100;
 #endif
 
 // Random triangles: generic (80%), collinear vertices (5%), a repeated vertex (5%), a needle

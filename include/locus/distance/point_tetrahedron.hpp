@@ -36,8 +36,8 @@ namespace locus {
 
 /// Distance from p to the solid tetrahedron; param_b is barycentric (4 coordinates).
 template <Real T>
-[[nodiscard]] inline Distance<T, 3, NoParam, Vec4<T>> distance(const Vec3<T>& p,
-                                                               const Tetrahedron3<T>& tet) noexcept {
+[[nodiscard]] inline Distance<T, 3, NoParam, Vec4<T>> distance(
+    const Vec3<T>& p, const Tetrahedron3<T>& tet) noexcept {
   if (!is_finite(p) || !is_finite(tet.v[0]) || !is_finite(tet.v[1]) || !is_finite(tet.v[2]) ||
       !is_finite(tet.v[3]))
     return non_finite_distance<T, 3, NoParam, Vec4<T>>();

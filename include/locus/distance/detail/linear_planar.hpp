@@ -17,7 +17,10 @@
 // segment towards the minimiser would be a feasible descent direction), so in well-conditioned
 // cases only those one to three facets are evaluated: this is the book's partition of the
 // solution space into the 3 x 7 regions of figure 10.40 (3 x 9 for the rectangle, figure 10.43)
-// without region-specific code. When the direction is nearly parallel to the plane (sin^2 of
+// without region-specific code. The end facet is tried first, and its pair returned at once when
+// it satisfies the optimality condition (the end's nearest point of P, and the derivative along
+// the component pointing outward): the domain is a product of convex sets, so blockwise
+// optimality is global optimality. When the direction is nearly parallel to the plane (sin^2 of
 // the angle <= 64 eps), the triangle is nearly flat, or the crossing sits on a boundary that
 // rounding could move, every candidate is evaluated: the crossing (projected onto P, then one
 // alternating projection back onto A), both finite ends and every edge; each candidate is a
@@ -180,9 +183,19 @@ template <class T>
       if (in_t && in_tri) {
         if (meets != 0 && sharp) return {ts, P{T(1) - (ss + us), ss, us}, true};
       } else if (meets != 1 && T(64) * eps * nn * dd < dn * dn) {
-        // Only the facets whose constraints the crossing violates (KKT, see the header).
-        if (A.bounded_lo && ts < T(0)) point_candidate(T(0), A.origin);
-        if (A.bounded_hi && ts > T(1)) point_candidate(T(1), A.end);
+        // Only the facets whose constraints the crossing violates (KKT, see the header). An
+        // end's pair is optimal outright when moving into the component does not approach the
+        // triangle: the domain is a product, so blockwise optimality is optimality.
+        if (A.bounded_lo && ts < T(0)) {
+          const auto r = locus::distance(A.origin, tri);
+          best.offer(r.sqr_distance, T(0), r.param_b, true);
+          if (dot(A.dir, A.origin - r.closest[1]) >= T(0)) return {T(0), r.param_b, true};
+        }
+        if (A.bounded_hi && ts > T(1)) {
+          const auto r = locus::distance(A.end, tri);
+          best.offer(r.sqr_distance, T(1), r.param_b, true);
+          if (dot(A.dir, A.end - r.closest[1]) <= T(0)) return {T(1), r.param_b, true};
+        }
         if (ss < T(0)) edge_candidate(0, 2);
         if (us < T(0)) edge_candidate(0, 1);
         if (ss + us > T(1)) edge_candidate(1, 2);
@@ -302,8 +315,15 @@ template <class T>
     if (in_t && in_rect) {
       if (T(16) * dz * dz >= dd) return {ts, P{x.x, x.y}, true};
     } else if (T(64) * eps * dd < dz * dz) {
-      if (A.bounded_lo && ts < T(0)) point_candidate(T(0), A.origin);
-      if (A.bounded_hi && ts > T(1)) point_candidate(T(1), A.end);
+      // An end's pair is optimal outright when moving into the component does not approach the
+      // rectangle (blockwise optimality on the product domain).
+      const auto end_optimal = [&](T t, const Vec3<T>& p) {
+        point_candidate(t, p);
+        const T g = A.dir.x * (p.x - best.param.x) + A.dir.y * (p.y - best.param.y) + A.dir.z * p.z;
+        return t == T(0) ? g >= T(0) : g <= T(0);
+      };
+      if (A.bounded_lo && ts < T(0) && end_optimal(T(0), A.origin)) return {T(0), best.param, true};
+      if (A.bounded_hi && ts > T(1) && end_optimal(T(1), A.end)) return {T(1), best.param, true};
       if (x.x < -ex) edge_candidate(0);
       if (x.x > ex) edge_candidate(1);
       if (x.y < -ey) edge_candidate(2);
