@@ -248,6 +248,53 @@ bool fig_13_17(SvgWriter& w) {
   return true;
 }
 
+// ---- 3D helpers ------------------------------------------------------------------------------
+
+std::vector<Vec3d> pick3(const std::vector<Vec3d>& pts, std::span<const Idx> idx) {
+  std::vector<Vec3d> out;
+  for (Idx i : idx) out.push_back(pts[i]);
+  return out;
+}
+
+Vec3d face_normal(const std::vector<Vec3d>& v, const Tri& t) {
+  return cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]);
+}
+
+// Whether triangle t faces the (orthographic) camera of w.
+bool front_facing(const SvgWriter& w, const std::vector<Vec3d>& v, const Tri& t) {
+  return dot(face_normal(v, t), w.camera().eye - w.camera().target) > 0;
+}
+
+// Triangle indices sorted far to near along the camera's view direction (painter's order).
+std::vector<std::size_t> back_to_front(const SvgWriter& w, const std::vector<Vec3d>& v,
+                                       const std::vector<Tri>& tris) {
+  const Vec3d view = w.camera().target - w.camera().eye;
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t i = 0; i < tris.size(); ++i)
+    order.emplace_back(-dot((v[tris[i][0]] + v[tris[i][1]] + v[tris[i][2]]) / 3.0, view), i);
+  std::sort(order.begin(), order.end());
+  std::vector<std::size_t> out;
+  for (const auto& o : order) out.push_back(o.second);
+  return out;
+}
+
+using EdgeKey = std::pair<Idx, Idx>;
+EdgeKey edge_key(Idx a, Idx b) { return a < b ? EdgeKey{a, b} : EdgeKey{b, a}; }
+
+// The undirected edges of a triangle mesh with the triangles using each.
+std::map<EdgeKey, std::vector<std::size_t>> edge_faces(const std::vector<Tri>& tris) {
+  std::map<EdgeKey, std::vector<std::size_t>> m;
+  for (std::size_t i = 0; i < tris.size(); ++i)
+    for (std::size_t e = 0; e < 3; ++e) m[edge_key(tris[i][e], tris[i][(e + 1) % 3])].push_back(i);
+  return m;
+}
+
+SvgStyle dotted_pen(const char* col, double width = 1.4) {
+  SvgStyle s = pen(col, width);
+  s.dash = {1.5, 3.5};
+  return s;
+}
+
 // ---- 13.3 point in polyhedron ------------------------------------------------------------------
 
 struct Mesh3 {
@@ -315,6 +362,78 @@ bool fig_13_18(SvgWriter& w) {
     w.text(k.at + Vec3d{0, 0, -1.3}, std::string("classify(p) = ") + side_name(s),
            text_style(c::black, 0, -16, SvgAnchor::middle, 12));
   }
+  return true;
+}
+
+// 13.19: the spherical polygon cut from a small sphere about the vertex V by the cone of the
+// edges at V (a pyramid, locus::convex_hull). A ray through V whose direction points into the
+// cone (A) interpenetrates the polyhedron; one pointing outside it (B) only touches V. Which
+// case holds is decided by locus::classify_convex of a point just past V along the ray.
+bool fig_13_19(SvgWriter& w) {
+  std::vector<Vec3d> v{{0, 0, 2}};
+  for (int i = 0; i < 5; ++i) {
+    const double a = 2 * 3.14159265358979 * i / 5 + 0.3;
+    v.push_back({1.7 * std::cos(a), 1.7 * std::sin(a), 0});
+  }
+  const Hull3Result h = convex_hull(v);
+  if (h.status != Status::ok || h.dimension != 3) return false;
+  const Vec3d apex = v[0];
+  const double r = 0.75;
+  w.set_camera(camera({6, -7, 4.0}, {0, 0, 1.2}));
+  for (std::size_t i : back_to_front(w, v, h.triangles)) {
+    const Tri& t = h.triangles[i];
+    if (!front_facing(w, v, t)) continue;
+    SvgStyle st = filled(c::gray, 0.12, 0.6);
+    st.stroke = "none";
+    closed(w, pick3(v, t), st);
+  }
+  for (const auto& [e, faces] : edge_faces(h.triangles)) {
+    bool front = false;
+    for (std::size_t f : faces) front = front || front_facing(w, v, h.triangles[f]);
+    SvgStyle st = pen(c::black, 1.2);
+    if (!front) {
+      st.dash = {4, 3};
+      st.opacity = 0.4;
+    }
+    w.segment(v[e.first], v[e.second], st);
+  }
+  // The sphere about V (three great circles) and the spherical polygon: arcs between the unit
+  // directions of consecutive edges at V (the base ring order).
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<Vec3d> ring;
+    for (int k = 0; k <= 96; ++k) {
+      const double t = 2 * 3.14159265358979 * k / 96;
+      Vec3d d{};
+      d[axis] = std::cos(t);
+      d[(axis + 1) % 3] = std::sin(t);
+      ring.push_back(apex + r * d);
+    }
+    SvgStyle st = pen(c::light, 0.8);
+    w.polyline(ring, st);
+  }
+  std::vector<Vec3d> poly;
+  for (std::size_t i = 1; i <= 5; ++i) {
+    const Vec3d u0 = normalize(v[i] - apex), u1 = normalize(v[i % 5 + 1] - apex);
+    for (int k = 0; k < 16; ++k) poly.push_back(apex + r * normalize(lerp(u0, u1, k / 16.0)));
+  }
+  closed(w, poly, filled(c::blue, 0.25, 1.8));
+  const std::pair<Vec3d, const char*> rays[] = {{normalize(Vec3d{0.25, 0.1, -1}), "A"},
+                                                {normalize(Vec3d{-1, -0.3, -0.12}), "B"}};
+  std::string verdict;
+  for (const auto& [d, name] : rays) {
+    const bool enters = classify_convex(apex + 0.05 * d, std::span<const Vec3d>(v),
+                                        std::span<const Tri>(h.triangles)) == Side::inside;
+    const char* col = enters ? c::green : c::red;
+    w.segment(apex - 2.2 * d, apex, pen(col, 1.4));
+    SvgStyle after = pen(col, 1.4);
+    if (enters) after.dash = {4, 3};
+    w.arrow(apex, apex + (enters ? 1.2 : 2.0) * d, after);
+    point(w, apex + r * d, name, col);
+    verdict += std::string(verdict.empty() ? "" : "; ") + name +
+               (enters ? ": ray enters (parity toggles)" : ": ray touches V only");
+  }
+  point(w, apex, "V", c::black);
+  w.text(Vec3d{0, 0, -0.6}, verdict, text_style(c::black, 0, -10, SvgAnchor::middle, 12));
   return true;
 }
 
@@ -594,51 +713,6 @@ bool fig_13_38(SvgWriter& w) {
 
 // ---- 3D hulls ----------------------------------------------------------------------------------
 
-std::vector<Vec3d> pick3(const std::vector<Vec3d>& pts, std::span<const Idx> idx) {
-  std::vector<Vec3d> out;
-  for (Idx i : idx) out.push_back(pts[i]);
-  return out;
-}
-
-Vec3d face_normal(const std::vector<Vec3d>& v, const Tri& t) {
-  return cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]);
-}
-
-// Whether triangle t faces the (orthographic) camera of w.
-bool front_facing(const SvgWriter& w, const std::vector<Vec3d>& v, const Tri& t) {
-  return dot(face_normal(v, t), w.camera().eye - w.camera().target) > 0;
-}
-
-// Triangle indices sorted far to near along the camera's view direction (painter's order).
-std::vector<std::size_t> back_to_front(const SvgWriter& w, const std::vector<Vec3d>& v,
-                                       const std::vector<Tri>& tris) {
-  const Vec3d view = w.camera().target - w.camera().eye;
-  std::vector<std::pair<double, std::size_t>> order;
-  for (std::size_t i = 0; i < tris.size(); ++i)
-    order.emplace_back(-dot((v[tris[i][0]] + v[tris[i][1]] + v[tris[i][2]]) / 3.0, view), i);
-  std::sort(order.begin(), order.end());
-  std::vector<std::size_t> out;
-  for (const auto& o : order) out.push_back(o.second);
-  return out;
-}
-
-using EdgeKey = std::pair<Idx, Idx>;
-EdgeKey edge_key(Idx a, Idx b) { return a < b ? EdgeKey{a, b} : EdgeKey{b, a}; }
-
-// The undirected edges of a triangle mesh with the triangles using each.
-std::map<EdgeKey, std::vector<std::size_t>> edge_faces(const std::vector<Tri>& tris) {
-  std::map<EdgeKey, std::vector<std::size_t>> m;
-  for (std::size_t i = 0; i < tris.size(); ++i)
-    for (std::size_t e = 0; e < 3; ++e) m[edge_key(tris[i][e], tris[i][(e + 1) % 3])].push_back(i);
-  return m;
-}
-
-SvgStyle dotted_pen(const char* col, double width = 1.4) {
-  SvgStyle s = pen(col, width);
-  s.dash = {1.5, 3.5};
-  return s;
-}
-
 // 13.39: the current hull (locus::convex_hull, 3D) and a point P to merge. A face is visible
 // when P is strictly above its plane (exact orient3d > 0); the terminator is the set of edges
 // between visible and hidden faces (dashed); the cone from P to it is dotted. Checked: the hull
@@ -866,6 +940,30 @@ void draw_edges(SvgWriter& w, const std::vector<Vec2d>& pts, const Delaunay2Resu
     w.segment(off + pts[dt.triangles[e]], off + pts[dt.triangles[next_halfedge(static_cast<Idx>(e))]],
               s);
   }
+}
+
+// 13.42: two triangulations of one point set, both covering its convex hull: (a) every point is
+// a vertex (locus::delaunay of all points); (b) only the hull vertices are used
+// (locus::convex_hull, then locus::delaunay of its vertices), the other points lie inside
+// triangles.
+bool fig_13_42(SvgWriter& w) {
+  const std::vector<Vec2d> pts(scatter.begin(), scatter.begin() + 16);
+  const std::vector<Idx> h = hull_indices(pts);
+  if (h.empty()) return false;
+  const std::vector<Vec2d> corners = pick(pts, h);
+  const Delaunay2Result all = delaunay(std::span<const Vec2d>(pts));
+  const Delaunay2Result outer = delaunay(std::span<const Vec2d>(corners));
+  if (all.status != Status::ok || outer.status != Status::ok) return false;
+  const Vec2d off{6.2, 0};
+  draw_edges(w, pts, all, {0, 0}, pen(c::blue, 1.2));
+  draw_edges(w, corners, outer, off, pen(c::blue, 1.2));
+  for (const Vec2d& p : pts) {
+    w.point(p, dot(c::black, 3));
+    w.point(p + off, dot(c::black, 3));
+  }
+  caption_at(w, Vec2d{0, -0.9}, "(a) every point is a vertex", c::black, 13);
+  caption_at(w, off + Vec2d{0, -0.9}, "(b) only the hull vertices are used", c::black, 13);
+  return true;
 }
 
 double min_angle(const std::vector<Vec2d>& p, const Tri& t, std::size_t& at) {
@@ -1389,6 +1487,7 @@ std::vector<Figure> chapter13_figures() {
       {"13.18", "classify(p, vertices, triangles) (simulation of simplicity); orient3d for the "
                 "face sides; distance(Ray3, Segment3)",
        fig_13_18},
+      {"13.19", "convex_hull (3D); classify_convex just past V along each ray", fig_13_19},
       {"13.32", "polygon_is_convex, classify_polygon, distance(Segment2, Segment2)", fig_13_32},
       {"13.33", "convex_hull (2D)", fig_13_33},
       {"13.34", "convex_hull of H and of H + V (V's hull neighbours are the tangent points)",
@@ -1406,6 +1505,7 @@ std::vector<Figure> chapter13_figures() {
       {"13.40", "convex_hull (3D) of each icosahedron and of their union", fig_13_40},
       {"13.41", "convex_hull (3D); orient3d / orient3d_value along the segment; rotation_about_x",
        fig_13_41},
+      {"13.42", "delaunay of all points; convex_hull, delaunay of the hull vertices", fig_13_42},
       {"13.43", "delaunay, angle_between", fig_13_43},
       {"13.44", "delaunay, circumscribed_circle, incircle (exact)", fig_13_44},
       {"13.45", "delaunay, locate (inside / on_edge)", fig_13_45},
