@@ -104,7 +104,8 @@ MeshDistanceTree<T>::MeshDistanceTree(std::span<const Vec3<T>> vertices,
     edges.reserve(3 * nt);
     for (const auto& t : triangles)
       for (int e = 0; e < 3; ++e) {
-        const std::uint32_t a = t[static_cast<std::size_t>(e)], b = t[static_cast<std::size_t>((e + 1) % 3)];
+        const std::uint32_t a = t[static_cast<std::size_t>(e)],
+                            b = t[static_cast<std::size_t>((e + 1) % 3)];
         edges.emplace_back(std::min(a, b), std::max(a, b));
       }
     std::sort(edges.begin(), edges.end());
@@ -178,7 +179,8 @@ MeshDistanceTree<T>::MeshDistanceTree(std::span<const Vec3<T>> vertices,
 }
 
 template <Real T>
-Distance<T, 3, NoParam, MeshPoint<T>> MeshDistanceTree<T>::nearest(const Vec3<T>& p) const noexcept {
+Distance<T, 3, NoParam, MeshPoint<T>> MeshDistanceTree<T>::nearest(
+    const Vec3<T>& p) const noexcept {
   if (status_ != Status::ok || !is_finite(p)) return detail::mesh_nan_distance<T>();
   struct Entry {
     std::uint32_t node;

@@ -118,7 +118,8 @@ void harness_and_oracle() {
   dist::check_pairs<T, N, L, OrientedBox<T, N>>(
       [&](Rng& rng) {
         const auto b = random_obb<T, N>(rng, S);
-        return std::pair{make_linear<L, T, N>(rng.vec<T, N>(-S, S), frame_dir(b, random_coeffs<T, N>(rng))), b};
+        return std::pair{
+            make_linear<L, T, N>(rng.vec<T, N>(-S, S), frame_dir(b, random_coeffs<T, N>(rng))), b};
       },
       opt);
   dist::check_pairs<T, N, L, AlignedBox<T, N>>(
@@ -240,8 +241,8 @@ TYPED_TEST(LinearBoxTest, ContinuityThroughZeroComponent) {
   using V = Vec3<T>;
   Rng rng(locus_test::test_seed() + 43);
   SCOPED_TRACE(rng.trace());
-  const T eps_list[] = {T(1e-2), T(1e-4), T(1e-7), T(1e-12), T(1e-30),
-                        std::numeric_limits<T>::denorm_min(), T(0)};
+  const T eps_list[] = {
+      T(1e-2), T(1e-4), T(1e-7), T(1e-12), T(1e-30), std::numeric_limits<T>::denorm_min(), T(0)};
   const T tl = std::is_same_v<T, float> ? T(2e-5) : T(1e-12);
   for (int n = 0; n < 200; ++n) {
     const auto b = random_obb<T, 3>(rng, T(4));
@@ -300,10 +301,12 @@ TYPED_TEST(LinearBoxTest, DegenerateAndNonFinite) {
   stick.extent = V{2, 0, -1};  // negative extent counts as 0
   EXPECT_NEAR(distance(Line3<T>{{0, 3, 4}, {0, 0, 1}}, stick).distance, T(3), tl);
   // Tiny and huge directions stay finite and correct.
-  EXPECT_NEAR(distance(Line3<T>{{0, 0, 3}, {std::numeric_limits<T>::min(), T(0), T(0)}}, box).distance,
-              T(2), tl);
-  EXPECT_NEAR(distance(Ray3<T>{{0, 0, 3}, {std::numeric_limits<T>::max(), T(1), T(0)}}, box).distance,
-              T(2), tl);
+  EXPECT_NEAR(
+      distance(Line3<T>{{0, 0, 3}, {std::numeric_limits<T>::min(), T(0), T(0)}}, box).distance,
+      T(2), tl);
+  EXPECT_NEAR(
+      distance(Ray3<T>{{0, 0, 3}, {std::numeric_limits<T>::max(), T(1), T(0)}}, box).distance, T(2),
+      tl);
   // Non-finite input and the empty box give the NaN result.
   EXPECT_TRUE(dist::is_nan_result(distance(Line3<T>{{nan, 0, 0}, {1, 0, 0}}, box)));
   EXPECT_TRUE(dist::is_nan_result(distance(Ray3<T>{{0, 0, 0}, {inf, 0, 0}}, box)));

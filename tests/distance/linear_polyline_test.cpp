@@ -2,14 +2,14 @@
 // Tests for distance/{line,ray,segment}_polyline.hpp (row dist2.linear-polyline; book figure
 // 6.22).
 #include <locus/distance/line_polyline.hpp>
+#include <locus/distance/line_segment.hpp>
 #include <locus/distance/point_line.hpp>
 #include <locus/distance/point_ray.hpp>
 #include <locus/distance/point_segment.hpp>
 #include <locus/distance/ray_polyline.hpp>
+#include <locus/distance/ray_segment.hpp>
 #include <locus/distance/segment_polyline.hpp>
 #include <locus/distance/segment_segment.hpp>
-#include <locus/distance/line_segment.hpp>
-#include <locus/distance/ray_segment.hpp>
 
 #include "distance/harness.hpp"
 #include "support/typed.hpp"
@@ -86,7 +86,8 @@ void check_kind() {
   opt.check_agreement = false;  // non-convex: the per-edge oracle below replaces it
   dist::check_pairs<T, N, L, Polyline<T, N>>(
       [&](Rng& rng) {
-        return std::pair{random_linear<L, T, N>(rng, S), random_polyline<T, N>(rng, rng.uniform_int(1, 12), S)};
+        return std::pair{random_linear<L, T, N>(rng, S),
+                         random_polyline<T, N>(rng, rng.uniform_int(1, 12), S)};
       },
       opt);
   Rng rng(locus_test::test_seed() + 91);
@@ -103,7 +104,8 @@ void check_kind() {
     if (m > 0) {
       T best = std::numeric_limits<T>::infinity();
       for (std::size_t i = 0; i < m; ++i)
-        best = std::min(best, distance(l, edge(std::span<const Vec<T, N>>(p.vertices), i)).sqr_distance);
+        best = std::min(best,
+                        distance(l, edge(std::span<const Vec<T, N>>(p.vertices), i)).sqr_distance);
       EXPECT_EQ(r.sqr_distance, best);
     }
     EXPECT_TRUE(locus_test::vec_near(point_at(p, r.param_b), r.closest[1], T(tl) * S));

@@ -45,7 +45,8 @@ struct Side<ConvexPoly<T>> {
     Vec2<T> centre{};
     for (const auto& x : c.v) centre += x / static_cast<T>(c.v.size());
     const T t = u[0] * static_cast<T>(c.v.size());
-    const Vec2<T> b = point_at(locus::Polyline2<T>{c.v, true}, std::min(t, static_cast<T>(c.v.size())));
+    const Vec2<T> b =
+        point_at(locus::Polyline2<T>{c.v, true}, std::min(t, static_cast<T>(c.v.size())));
     return centre + u[1] * (b - centre);
   }
   static Vec2<T> at(const P&, const Param& x) { return x; }
@@ -80,15 +81,20 @@ std::vector<Vec2<T>> random_convex(Rng& rng, int n, T S) {
   for (auto& a : ang) a = rng.uniform<double>(0, 6.283185307179586);
   std::sort(ang.begin(), ang.end());
   ang.erase(std::unique(ang.begin(), ang.end()), ang.end());
-  const double rx = rng.uniform<double>(0.5, double(S) / 2), ry = rng.uniform<double>(0.2, double(S) / 2);
-  const double rot = rng.uniform<double>(0, 6.3), cx = rng.uniform<double>(-2, 2), cy = rng.uniform<double>(-2, 2);
+  const double rx = rng.uniform<double>(0.5, double(S) / 2),
+               ry = rng.uniform<double>(0.2, double(S) / 2);
+  const double rot = rng.uniform<double>(0, 6.3), cx = rng.uniform<double>(-2, 2),
+               cy = rng.uniform<double>(-2, 2);
   std::vector<Vec2<T>> v;
   for (const double a : ang) {
     const double x = rx * std::cos(a), y = ry * std::sin(a);
-    v.push_back({T(cx + x * std::cos(rot) - y * std::sin(rot)), T(cy + x * std::sin(rot) + y * std::cos(rot))});
+    v.push_back({T(cx + x * std::cos(rot) - y * std::sin(rot)),
+                 T(cy + x * std::sin(rot) + y * std::cos(rot))});
   }
-  if (v.size() >= 3 && rng.uniform_int(0, 3) == 0) {  // collinear vertex on an edge (exact midpoint of
-    const std::size_t i = static_cast<std::size_t>(rng.uniform_int(0, int(v.size()) - 1));  // a dyadic pair)
+  if (v.size() >= 3 &&
+      rng.uniform_int(0, 3) == 0) {  // collinear vertex on an edge (exact midpoint of
+    const std::size_t i =
+        static_cast<std::size_t>(rng.uniform_int(0, int(v.size()) - 1));  // a dyadic pair)
     const Vec2<T> a = v[i], b = v[(i + 1) % v.size()];
     const Vec2<T> mid = (a + b) * T(0.5);
     if (orient2d(a, mid, b) == Sign::zero && !(mid == a) && !(mid == b))
@@ -109,9 +115,10 @@ double brute(const Vec2<T>& p, const std::vector<Vec2<T>>& v) {
   for (std::size_t i = 0; i < v.size(); ++i) {
     const Vec2<T> a = v[i], b = v[(i + 1) % v.size()];
     if (orient2d(a, b, p) == Sign::negative) inside = false;
-    best = std::min(best, double(distance(vec_cast<double>(p),
-                                          Segment2<double>{vec_cast<double>(a), vec_cast<double>(b)})
-                                     .distance));
+    best =
+        std::min(best, double(distance(vec_cast<double>(p),
+                                       Segment2<double>{vec_cast<double>(a), vec_cast<double>(b)})
+                                  .distance));
   }
   return inside ? 0.0 : best;
 }
@@ -189,7 +196,8 @@ TYPED_TEST(PointConvexPolygonTest, IntegerGridExactCases) {
         for (std::size_t s = 1; s < v.size(); s += 2) {
           std::vector<V> w(v.begin() + static_cast<std::ptrdiff_t>(s), v.end());
           w.insert(w.end(), v.begin(), v.begin() + static_cast<std::ptrdiff_t>(s));
-          EXPECT_NEAR(double(distance_to_convex_polygon(p, std::span<const V>(w)).distance), b, 1e-6);
+          EXPECT_NEAR(double(distance_to_convex_polygon(p, std::span<const V>(w)).distance), b,
+                      1e-6);
         }
       }
   }

@@ -104,10 +104,12 @@ double oracle2(const Vec2<T>& p, const Frustum2<T>& f) {
 TYPED_TEST(PointFrustumTest, HarnessAndBruteForce) {
   using T = TypeParam;
   const T S = 10;
-  dist::check_pairs<T, 3, Vec3<T>, Frustum3<T>>(
-      [&](Rng& rng) { return std::pair{rng.vec<T, 3>(-S, S), random_frustum3<T>(rng, S)}; });
-  dist::check_pairs<T, 2, Vec2<T>, Frustum2<T>>(
-      [&](Rng& rng) { return std::pair{rng.vec<T, 2>(-S, S), random_frustum2<T>(rng, S)}; });
+  dist::check_pairs<T, 3, Vec3<T>, Frustum3<T>>([&](Rng& rng) {
+    return std::pair{rng.vec<T, 3>(-S, S), random_frustum3<T>(rng, S)};
+  });
+  dist::check_pairs<T, 2, Vec2<T>, Frustum2<T>>([&](Rng& rng) {
+    return std::pair{rng.vec<T, 2>(-S, S), random_frustum2<T>(rng, S)};
+  });
 
   Rng rng(locus_test::test_seed() + 61);
   SCOPED_TRACE(rng.trace());
@@ -207,12 +209,12 @@ TYPED_TEST(PointFrustumTest, VoronoiRegions2D) {
     V closest;
   };
   const Case cases[] = {
-      {{-1, 2}, T(1), {-1, 3}},            // below the near edge
-      {{-1, 7}, T(1), {-1, 6}},            // above the far edge
+      {{-1, 2}, T(1), {-1, 3}},                 // below the near edge
+      {{-1, 7}, T(1), {-1, 6}},                 // above the far edge
       {{0, 2}, std::sqrt(T(1.25)), {-0.5, 3}},  // near-right vertex region
-      {{2, 7}, std::sqrt(T(2)), {1, 6}},   // far-right vertex region
-      {{-4, 7}, std::sqrt(T(2)), {-3, 6}}, // far-left vertex region
-      {{-1, 4}, T(0), {-1, 4}},            // inside
+      {{2, 7}, std::sqrt(T(2)), {1, 6}},        // far-right vertex region
+      {{-4, 7}, std::sqrt(T(2)), {-3, 6}},      // far-left vertex region
+      {{-1, 4}, T(0), {-1, 4}},                 // inside
   };
   for (const Case& k : cases) {
     const auto r = distance(k.p, f);

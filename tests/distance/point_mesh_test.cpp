@@ -65,7 +65,8 @@ Mesh<T> icosphere(int levels, T radius, Vec3<T> centre) {
     };
     std::vector<Tri> next;
     for (const Tri& f : t) {
-      const std::uint32_t a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
+      const std::uint32_t a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]),
+                          c = midpoint(f[2], f[0]);
       next.push_back({f[0], a, c});
       next.push_back({f[1], b, a});
       next.push_back({f[2], c, b});
@@ -87,9 +88,12 @@ Mesh<T> torus(int nu, int nv, T big, T small) {
     for (int j = 0; j < nv; ++j) {
       const double a = 6.283185307179586 * i / nu, b = 6.283185307179586 * j / nv;
       const double r = double(big) + double(small) * std::cos(b);
-      m.v.push_back(Vec3<T>{T(r * std::cos(a)), T(r * std::sin(a)), T(double(small) * std::sin(b))});
+      m.v.push_back(
+          Vec3<T>{T(r * std::cos(a)), T(r * std::sin(a)), T(double(small) * std::sin(b))});
     }
-  auto id = [&](int i, int j) { return static_cast<std::uint32_t>(((i + nu) % nu) * nv + (j + nv) % nv); };
+  auto id = [&](int i, int j) {
+    return static_cast<std::uint32_t>(((i + nu) % nu) * nv + (j + nv) % nv);
+  };
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
       m.t.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
@@ -126,7 +130,13 @@ Mesh<T> notched_block() {
             n[axis] += s;
             if (solid(n[0], n[1], n[2])) continue;
             // The face at coordinate c along `axis`, outward normal s e_axis.
-            const int c = s > 0 ? (axis == 0 ? x : axis == 1 ? y : z) + 1 : (axis == 0 ? x : axis == 1 ? y : z);
+            const int c = s > 0 ? (axis == 0   ? x
+                                   : axis == 1 ? y
+                                               : z) +
+                                      1
+                                : (axis == 0   ? x
+                                   : axis == 1 ? y
+                                               : z);
             const int u = (axis + 1) % 3, w = (axis + 2) % 3;
             int base[3] = {x, y, z};
             base[axis] = c;
@@ -136,7 +146,8 @@ Mesh<T> notched_block() {
               q[w] += dw;
               return vid(q[0], q[1], q[2]);
             };
-            const std::uint32_t a = corner(0, 0), b = corner(1, 0), cc = corner(1, 1), d = corner(0, 1);
+            const std::uint32_t a = corner(0, 0), b = corner(1, 0), cc = corner(1, 1),
+                                d = corner(0, 1);
             if (s > 0) {  // (e_u x e_w) = e_axis: counter-clockwise in (u, w) is outward
               m.t.push_back({a, b, cc});
               m.t.push_back({a, cc, d});
@@ -166,9 +177,10 @@ void check_tree_against_brute(const Mesh<T>& m, Rng& rng, int queries, T spread)
   ASSERT_EQ(tree.status(), Status::ok);
   const double tl = std::is_same_v<T, float> ? 2e-5 : 1e-12;
   for (int n = 0; n < queries; ++n) {
-    const Vec3<T> p = n % 3 == 0 ? m.v[static_cast<std::size_t>(rng.uniform_int(0, int(m.v.size()) - 1))] +
-                                       rng.vec<T, 3>(-spread / 20, spread / 20)
-                                 : rng.vec<T, 3>(-spread, spread);
+    const Vec3<T> p = n % 3 == 0
+                          ? m.v[static_cast<std::size_t>(rng.uniform_int(0, int(m.v.size()) - 1))] +
+                                rng.vec<T, 3>(-spread / 20, spread / 20)
+                          : rng.vec<T, 3>(-spread, spread);
     const auto r = distance(p, tree);
     const double b = brute_mesh(p, m);
     ASSERT_LT(r.param_b.triangle, m.t.size());
@@ -189,7 +201,8 @@ TYPED_TEST(PointMeshTest, TreeMatchesBruteForce) {
   using T = TypeParam;
   Rng rng(locus_test::test_seed() + 81);
   SCOPED_TRACE(rng.trace());
-  check_tree_against_brute(icosphere<T>(3, T(4), Vec3<T>{T(1), T(-2), T(0.5)}), rng, 600 / kScale, T(8));
+  check_tree_against_brute(icosphere<T>(3, T(4), Vec3<T>{T(1), T(-2), T(0.5)}), rng, 600 / kScale,
+                           T(8));
   check_tree_against_brute(torus<T>(48, 24, T(5), T(1.5)), rng, 600 / kScale, T(9));
   check_tree_against_brute(notched_block<T>(), rng, 300 / kScale, T(4));
   // Triangle soup (open, intersecting, some degenerate triangles).
@@ -240,7 +253,8 @@ TYPED_TEST(PointMeshTest, ClassifyMatchesContainment) {
     for (int y = -1; y <= 7; ++y)
       for (int z = -1; z <= 7; ++z) {
         const Vec3<T> p{T(x) / 2, T(y) / 2, T(z) / 2};
-        const Side want = classify(p, std::span<const Vec3<T>>(block.v), std::span<const Tri>(block.t));
+        const Side want =
+            classify(p, std::span<const Vec3<T>>(block.v), std::span<const Tri>(block.t));
         EXPECT_EQ(classify(p, tree), want) << x << " " << y << " " << z;
         inside += want == Side::inside;
         boundary += want == Side::boundary;
@@ -284,13 +298,15 @@ TYPED_TEST(PointMeshTest, ConvexPolyhedronAndTetrahedron) {
   opt.check_agreement = false;
   dist::check_pairs<T, 3, Vec3<T>, Tetrahedron3<T>>(
       [&](Rng& g) {
-        Tetrahedron3<T> tet{{g.vec<T, 3>(-5, 5), g.vec<T, 3>(-5, 5), g.vec<T, 3>(-5, 5), g.vec<T, 3>(-5, 5)}};
+        Tetrahedron3<T> tet{
+            {g.vec<T, 3>(-5, 5), g.vec<T, 3>(-5, 5), g.vec<T, 3>(-5, 5), g.vec<T, 3>(-5, 5)}};
         if (g.uniform_int(0, 9) == 0) tet.v[3] = (tet.v[0] + tet.v[1]) * T(0.5);  // flat (nearly)
         return std::pair{g.vec<T, 3>(-8, 8), tet};
       },
       opt);
   for (int n = 0; n < 2000 / kScale; ++n) {
-    Tetrahedron3<T> tet{{rng.vec<T, 3>(-5, 5), rng.vec<T, 3>(-5, 5), rng.vec<T, 3>(-5, 5), rng.vec<T, 3>(-5, 5)}};
+    Tetrahedron3<T> tet{
+        {rng.vec<T, 3>(-5, 5), rng.vec<T, 3>(-5, 5), rng.vec<T, 3>(-5, 5), rng.vec<T, 3>(-5, 5)}};
     const Vec3<T> p = rng.vec<T, 3>(-6, 6);
     const auto r = distance(p, tet);
     double want = 0;
@@ -298,10 +314,11 @@ TYPED_TEST(PointMeshTest, ConvexPolyhedronAndTetrahedron) {
       want = std::numeric_limits<double>::infinity();
       for (int i = 0; i < 4; ++i) {
         const auto f = face(tet, i);
-        want = std::min(want, double(distance(vec_cast<double>(p),
-                                              Triangle3<double>{vec_cast<double>(f.v0), vec_cast<double>(f.v1),
-                                                                vec_cast<double>(f.v2)})
-                                         .distance));
+        want = std::min(
+            want, double(distance(vec_cast<double>(p),
+                                  Triangle3<double>{vec_cast<double>(f.v0), vec_cast<double>(f.v1),
+                                                    vec_cast<double>(f.v2)})
+                             .distance));
       }
     }
     EXPECT_NEAR(double(r.distance), want, tl * 8);
@@ -310,10 +327,10 @@ TYPED_TEST(PointMeshTest, ConvexPolyhedronAndTetrahedron) {
   // Figure 10.20 regions of the unit corner tetrahedron: vertex, edge, face, inside.
   const Tetrahedron3<T> unit{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
   const T tt = std::is_same_v<T, float> ? T(1e-6) : T(1e-14);
-  EXPECT_NEAR(distance(Vec3<T>{-1, -1, -1}, unit).distance, std::sqrt(T(3)), tt);          // vertex 0
-  EXPECT_NEAR(distance(Vec3<T>{0.5, -1, -1}, unit).distance, std::sqrt(T(2)), tt);         // edge 01
-  EXPECT_NEAR(distance(Vec3<T>{0.25, 0.25, -2}, unit).distance, T(2), tt);                 // face z = 0
-  EXPECT_NEAR(distance(Vec3<T>{1, 1, 1}, unit).distance, T(2) / std::sqrt(T(3)), tt);      // face 123
+  EXPECT_NEAR(distance(Vec3<T>{-1, -1, -1}, unit).distance, std::sqrt(T(3)), tt);      // vertex 0
+  EXPECT_NEAR(distance(Vec3<T>{0.5, -1, -1}, unit).distance, std::sqrt(T(2)), tt);     // edge 01
+  EXPECT_NEAR(distance(Vec3<T>{0.25, 0.25, -2}, unit).distance, T(2), tt);             // face z = 0
+  EXPECT_NEAR(distance(Vec3<T>{1, 1, 1}, unit).distance, T(2) / std::sqrt(T(3)), tt);  // face 123
   const auto in = distance(Vec3<T>{T(0.1), T(0.2), T(0.3)}, unit);
   EXPECT_EQ(in.distance, T(0));
   EXPECT_NEAR(in.param_b.x, T(0.4), tt);
@@ -335,27 +352,31 @@ TYPED_TEST(PointMeshTest, BadInput) {
   EXPECT_EQ(classify(V{0, 0, 0}, empty), Side::outside);
   EXPECT_TRUE(std::isnan(signed_distance(V{0, 0, 0}, empty)));
   EXPECT_TRUE(dist::is_nan_result(distance_to_mesh(V{0, 0, 0}, sv, std::span<const Tri>())));
-  EXPECT_TRUE(dist::is_nan_result(distance_to_convex_polyhedron(V{0, 0, 0}, sv, std::span<const Tri>())));
+  EXPECT_TRUE(
+      dist::is_nan_result(distance_to_convex_polyhedron(V{0, 0, 0}, sv, std::span<const Tri>())));
   const MeshDistanceTree<T> def;
   EXPECT_TRUE(dist::is_nan_result(distance(V{0, 0, 0}, def)));
   // Index out of range and non-finite vertices.
   const std::vector<Tri> bad_t = {{0, 2, 7}};
   EXPECT_EQ(MeshDistanceTree<T>(sv, std::span<const Tri>(bad_t)).status(), Status::invalid_input);
   EXPECT_TRUE(dist::is_nan_result(distance_to_mesh(V{0, 0, 0}, sv, std::span<const Tri>(bad_t))));
-  EXPECT_TRUE(dist::is_nan_result(distance_to_convex_polyhedron(V{0, 0, 0}, sv, std::span<const Tri>(bad_t))));
+  EXPECT_TRUE(dist::is_nan_result(
+      distance_to_convex_polyhedron(V{0, 0, 0}, sv, std::span<const Tri>(bad_t))));
   std::vector<V> nv = v;
   nv[3].z = nan;
   const MeshDistanceTree<T> nt{std::span<const V>(nv), std::span<const Tri>(t)};
   EXPECT_EQ(nt.status(), Status::non_finite_input);
   EXPECT_TRUE(dist::is_nan_result(distance(V{0, 0, 0}, nt)));
-  EXPECT_TRUE(dist::is_nan_result(distance_to_mesh(V{0, 0, 0}, std::span<const V>(nv), std::span<const Tri>(t))));
+  EXPECT_TRUE(dist::is_nan_result(
+      distance_to_mesh(V{0, 0, 0}, std::span<const V>(nv), std::span<const Tri>(t))));
   // Non-finite query point on a good tree.
   const MeshDistanceTree<T> good(sv, std::span<const Tri>(t));
   EXPECT_EQ(good.status(), Status::ok);
   EXPECT_TRUE(good.closed());
   EXPECT_TRUE(dist::is_nan_result(distance(V{nan, 0, 0}, good)));
   EXPECT_EQ(classify(V{nan, 0, 0}, good), Side::outside);
-  EXPECT_TRUE(dist::is_nan_result(distance(V{nan, 0, 0}, Tetrahedron3<T>{{v[0], v[1], v[2], v[3]}})));
+  EXPECT_TRUE(
+      dist::is_nan_result(distance(V{nan, 0, 0}, Tetrahedron3<T>{{v[0], v[1], v[2], v[3]}})));
   // An open mesh is reported as not closed; the distance still works.
   const std::vector<Tri> open = {{0, 1, 2}};
   const MeshDistanceTree<T> ot(sv, std::span<const Tri>(open));

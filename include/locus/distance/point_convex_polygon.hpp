@@ -77,10 +77,10 @@ template <class T>
   const double mag = std::abs(t0) + std::abs(t1);
   if (mag > 1e-290 && std::abs(v) > bound * mag) return v > 0.0 ? 1 : -1;
   // p.b - p.a - b.b + b.a, expanded into products of input coordinates.
-  const ExactMonomial m[8] = {
-      {1, 0, 2, {px, bx, 0.0}},  {1, 0, 2, {py, by, 0.0}},  {-1, 0, 2, {px, ax, 0.0}},
-      {-1, 0, 2, {py, ay, 0.0}}, {-1, 0, 2, {bx, bx, 0.0}}, {-1, 0, 2, {by, by, 0.0}},
-      {1, 0, 2, {bx, ax, 0.0}},  {1, 0, 2, {by, ay, 0.0}}};
+  const ExactMonomial m[8] = {{1, 0, 2, {px, bx, 0.0}},  {1, 0, 2, {py, by, 0.0}},
+                              {-1, 0, 2, {px, ax, 0.0}}, {-1, 0, 2, {py, ay, 0.0}},
+                              {-1, 0, 2, {bx, bx, 0.0}}, {-1, 0, 2, {by, by, 0.0}},
+                              {1, 0, 2, {bx, ax, 0.0}},  {1, 0, 2, {by, ay, 0.0}}};
   return exact_sign_of_sum(m, 8);
 }
 

@@ -55,7 +55,7 @@ template <Real T>
   const T sx = x0 < T(0) ? T(-1) : T(1), sy = y0 < T(0) ? T(-1) : T(1);
   const T x = sx * x0, y = sy * y0;
 
-  const bool out_near = z < n, out_far = z > f;
+  const bool out_near = z<n, out_far = z> f;
   const bool out_right = x * n > r * z, out_top = y * n > u * z;
   Vec3<T> q{x, y, z};  // nearest point, reflected frame coordinates
   if (out_near || out_far || out_right || out_top) {
@@ -113,7 +113,7 @@ template <Real T>
   const T sx = x0 < T(0) ? T(-1) : T(1);
   const T x = sx * x0;
 
-  const bool out_near = z < n, out_far = z > f, out_side = x * n > l * z;
+  const bool out_near = z<n, out_far = z> f, out_side = x * n > l * z;
   Vec2<T> q{x, z};
   if (out_near || out_far || out_side) {
     const T lf = l * (f / n);

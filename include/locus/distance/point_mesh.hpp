@@ -21,10 +21,11 @@
 //    closest[1] = point_at(tree, param_b). The search is best-first branch and bound: a node is
 //    opened only when its box is nearer than the best triangle so far, nearer child first; each
 //    triangle is the exact clamped query of point_triangle.hpp, so the answer is the brute-force
-//    minimum over the triangles (exact ties prefer the lower input index among the triangles visited). Cost: O(log F) nodes for a point
-//    near a well-shaped mesh, O(F) in the worst case (a point at the centre of a sphere mesh is
-//    equidistant from everything). distance(tree, p) is the swapped result.
-//    distance_to_mesh(p, vertices, triangles) is the one-call brute-force form (O(F), no tree).
+//    minimum over the triangles (exact ties prefer the lower input index among the triangles
+//    visited). Cost: O(log F) nodes for a point near a well-shaped mesh, O(F) in the worst case (a
+//    point at the centre of a sphere mesh is equidistant from everything). distance(tree, p) is the
+//    swapped result. distance_to_mesh(p, vertices, triangles) is the one-call brute-force form
+//    (O(F), no tree).
 //  * classify(p, tree) is EXACT for finite input (orient2d/orient3d of core/predicates.hpp):
 //    Side::boundary on the surface, otherwise the parity of the crossings of the ray from p along
 //    +x, made generic by Simulation of Simplicity (the ray starts at p + (0, e, e^2), e -> 0+:
@@ -125,8 +126,8 @@ template <Real T>
 
 /// The swapped query: closest[0] and param_a belong to the mesh.
 template <Real T>
-[[nodiscard]] inline Distance<T, 3, MeshPoint<T>, NoParam> distance(
-    const MeshDistanceTree<T>& tree, const Vec3<T>& p) noexcept {
+[[nodiscard]] inline Distance<T, 3, MeshPoint<T>, NoParam> distance(const MeshDistanceTree<T>& tree,
+                                                                    const Vec3<T>& p) noexcept {
   return swapped(tree.nearest(p));
 }
 
@@ -151,8 +152,12 @@ namespace detail {
 template <class T>
 [[nodiscard]] constexpr Distance<T, 3, NoParam, MeshPoint<T>> mesh_nan_distance() noexcept {
   constexpr T nan = std::numeric_limits<T>::quiet_NaN();
-  return {nan, nan, {splat<T, 3>(nan), splat<T, 3>(nan)}, NoParam{},
-          MeshPoint<T>{MeshPoint<T>::none, splat<T, 3>(nan)}, false};
+  return {nan,
+          nan,
+          {splat<T, 3>(nan), splat<T, 3>(nan)},
+          NoParam{},
+          MeshPoint<T>{MeshPoint<T>::none, splat<T, 3>(nan)},
+          false};
 }
 
 }  // namespace detail

@@ -19,17 +19,17 @@
 // when the chosen edge is parallel to the ray with an overlapping range (linear_linear's rule);
 // two distinct edges at exactly the same distance are not detected (one is returned).
 //
-// Degenerate input: A zero direction acts as the point origin (t = 0); zero-length edges act as points; a single vertex is a point
-// (param_b = 0). An empty polyline has no points and NaN or infinite coordinates have no
-// meaning: both give non_finite_distance() (result.hpp).
-// Cost: O(n) with a few comparisons per rejected edge; no allocation.
+// Degenerate input: A zero direction acts as the point origin (t = 0); zero-length edges act as
+// points; a single vertex is a point (param_b = 0). An empty polyline has no points and NaN or
+// infinite coordinates have no meaning: both give non_finite_distance() (result.hpp). Cost: O(n)
+// with a few comparisons per rejected edge; no allocation.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear_polyline.hpp>
 #include <locus/distance/result.hpp>
-#include <locus/primitives/ray.hpp>
 #include <locus/primitives/polyline.hpp>
+#include <locus/primitives/ray.hpp>
 
 #include <span>
 

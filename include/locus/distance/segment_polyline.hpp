@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Distance between a segment and a polyline or polygon boundary (a closed polyline) in N dimensions;
-// row dist2.linear-polyline (3D works too, with less rejection); book section 6.3.3 (figure
-// 6.22).
+// Distance between a segment and a polyline or polygon boundary (a closed polyline) in N
+// dimensions; row dist2.linear-polyline (3D works too, with less rejection); book section 6.3.3
+// (figure 6.22).
 //
-// distance(segment, poly) returns Distance<T, N, T, T>: closest[0] = point_at(segment, param_a) with
+// distance(segment, poly) returns Distance<T, N, T, T>: closest[0] = point_at(segment, param_a)
+// with
 //   t in [0, 1], point_at(seg, t) = (1 - t) p0 + t p1;
 // closest[1] = point_at(poly, param_b), param_b the vertex parameter in [0, segment_count]
 // (primitives/polyline.hpp). distance_to_polyline(segment, vertices, closed) takes any contiguous
@@ -19,17 +20,17 @@
 // when the chosen edge is parallel to the segment with an overlapping range (linear_linear's rule);
 // two distinct edges at exactly the same distance are not detected (one is returned).
 //
-// Degenerate input: A zero-length segment acts as the point p0 (t = 0); zero-length edges act as points; a single vertex is a point
-// (param_b = 0). An empty polyline has no points and NaN or infinite coordinates have no
-// meaning: both give non_finite_distance() (result.hpp).
-// Cost: O(n) with a few comparisons per rejected edge; no allocation.
+// Degenerate input: A zero-length segment acts as the point p0 (t = 0); zero-length edges act as
+// points; a single vertex is a point (param_b = 0). An empty polyline has no points and NaN or
+// infinite coordinates have no meaning: both give non_finite_distance() (result.hpp). Cost: O(n)
+// with a few comparisons per rejected edge; no allocation.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear_polyline.hpp>
 #include <locus/distance/result.hpp>
-#include <locus/primitives/segment.hpp>
 #include <locus/primitives/polyline.hpp>
+#include <locus/primitives/segment.hpp>
 
 #include <span>
 

@@ -32,9 +32,10 @@
 // slab (A = 0); since f is convex and g = 0 there, such a piece of positive length is the set of
 // minimisers (the line passes through the box, or runs parallel to a face or edge while its
 // projection meets it); components below 8 eps |d| count as zero for this test (a direction
-// parallel to a face up to the rounding of the frame change). Then unique = false and the midpoint of that piece (clipped to the
-// domain) is returned. A zero direction (or a zero-length segment) is the point p at t = 0.
-// Cost: at most 2 N + 2 breakpoints, an insertion sort, O(N) per breakpoint; no allocation.
+// parallel to a face up to the rounding of the frame change). Then unique = false and the midpoint
+// of that piece (clipped to the domain) is returned. A zero direction (or a zero-length segment) is
+// the point p at t = 0. Cost: at most 2 N + 2 breakpoints, an insertion sort, O(N) per breakpoint;
+// no allocation.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
