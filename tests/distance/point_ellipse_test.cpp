@@ -291,6 +291,19 @@ TYPED_TEST(PointEllipseTest, Figure6_14AndAxes) {
   const auto on = distance(e.center + Vec2<T>{T(1.5), T(0)}, e);
   EXPECT_NEAR(above.distance, on.distance, T(1e-5));
   EXPECT_TRUE(above.unique);
+  // A hair off the major axis (the classic failure: x1 = y1 / (s + 1) with s + 1 rounded): the
+  // same distance as on the axis, for offsets down to the smallest normal numbers.
+  for (const T off : {T(1e-3) * eps_v<T>, eps_v<T>, std::numeric_limits<T>::min() * T(16), T(1e-30)}) {
+    const auto hair = distance(e.center + Vec2<T>{T(1.5), off}, e);
+    EXPECT_NEAR(hair.distance, on.distance, tol<T>(16, T(8))) << off;
+    const auto hair3 = distance(Vec3<T>{T(1), off, off},
+                                Ellipsoid3<T>{{}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}},
+                                              {T(4), T(3), T(2)}});
+    const T x0 = T(16) / T(12);  // a^2 y0 / (a^2 - c^2), y0 = 1
+    EXPECT_NEAR(hair3.distance, std::sqrt(sqr(x0 - T(1)) + T(4) * (T(1) - sqr(x0 / T(4)))),
+                tol<T>(16, T(8)))
+        << off;
+  }
   // On the curve: distance 0 (to rounding) and the same point.
   const Vec2<T> onc = point_at(e, T(0.7));
   EXPECT_NEAR(distance(onc, e).distance, T(0), tol<T>(16, T(8)));

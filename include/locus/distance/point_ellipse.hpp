@@ -13,11 +13,12 @@
 // in the ellipse's frame, sorted so that e0 >= e1, p is reflected into the first quadrant
 // (y0, y1 >= 0; the answer is reflected back). The closest point is x_i = e_i^2 y_i / (t + e_i^2)
 // where t is the unique root of F(t) = sum_i (e_i y_i / (t + e_i^2))^2 - 1 on t > -e1^2, where F
-// is strictly decreasing. In the scaled variable s = t / e1^2 the root is bracketed by
-// [z1 - 1, |(r0 z0, z1)| - 1] (z_i = y_i / e_i, r0 = (e0 / e1)^2; the upper end 0 when p is inside)
-// and found by bisection until the midpoint equals an end (at most ~1100 halvings for double,
-// budget 2200), so the computed root is the correctly bracketed double: no Newton divergence, no
-// quartic, no cancellation. Points on the axes are handled EXACTLY as the limit cases, which is
+// is strictly decreasing. In the scaled, shifted variable sigma = t / e1^2 + 1 the root is
+// bracketed by [z1, |(r0 z0, z1)|] (z_i = y_i / e_i, r0 = (e0 / e1)^2; the upper end 1 when p is
+// inside) and found by bisection (geometric while the bracket spans more than a factor 4) until
+// the midpoint equals an end (budget 2200 steps), so the computed root is the correctly
+// bracketed double: no Newton divergence, no quartic, no cancellation, and a point a hair off
+// an axis (sigma tiny) keeps full relative precision in x1 = y1 / sigma. Points on the axes are handled EXACTLY as the limit cases, which is
 // where the textbook quartic fails: y1 = 0 with e0 y0 < e0^2 - e1^2 (inside, on the major axis,
 // near the centre: two symmetric closest points, x0 = e0^2 y0 / (e0^2 - e1^2)); y0 = 0 (the
 // point (0, e1)); otherwise the vertex (e0, 0). Computed in compute_t<T> (double for float).
@@ -32,7 +33,7 @@
 // in [0, pi]); both extents zero give the point center (angle 0). A negative extent and NaN or
 // infinite values give non_finite_distance() (result.hpp). Near-degenerate ellipses (ratio 1e-6
 // and beyond) keep full accuracy: nothing divides by the small extent except in F, where the
-// bracket is exact. Cost: O(1): typically 60-100 bisection steps of a few flops, one atan2.
+// bracket is exact. Cost: O(1): typically 55-70 bisection steps of a few flops, one atan2.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -49,27 +50,32 @@ namespace detail {
 /// Bisection budget of the ellipse/ellipsoid root: more than the number of doubles' exponents.
 inline constexpr int ellipse_bisection_budget = 2200;
 
-/// The root s of sum_i (n_i / (s + r_i))^2 - 1 = 0 with r_{k-1} = 1 (Eberly's GetRoot): n_i = r_i
-/// z_i, g = sum z_i^2 - 1 != 0 (the sign says outside / inside), bisection in [z_last - 1, hi].
+/// The root of sum_i (n_i / (sigma + r_i - 1))^2 - 1 = 0, n_i = r_i z_i, r_{K-1} = 1, i.e. Eberly's
+/// GetRoot in the shifted variable sigma = s + 1, so that a root close to s = -1 (a point near a
+/// symmetry plane: sigma ~ z_{K-1} tiny) keeps full relative precision. g = sum z_i^2 - 1 != 0
+/// (outside / inside). sigma is bracketed by [z_{K-1}, max(1, |n|)] and bisected until the
+/// midpoint equals an end; while the bracket spans more than a factor 4 the midpoint is the
+/// geometric mean, so tiny roots cost a few dozen steps, not a thousand.
 template <class C, int K>
 [[nodiscard]] inline C ellipse_secular_root(const C (&r)[K], const C (&z)[K], C g) noexcept {
-  C n[K];
+  C n[K], rm1[K];
   C len2 = C(0), big = C(0);
   for (int i = 0; i < K; ++i) {
     n[i] = r[i] * z[i];
+    rm1[i] = r[i] - C(1);
     big = std::fmax(big, std::fabs(n[i]));
   }
   // |n| by scaling (robust length): no overflow for huge points.
   if (big > C(0))
     for (int i = 0; i < K; ++i) len2 += sqr(n[i] / big);
-  C s0 = z[K - 1] - C(1);
-  C s1 = g < C(0) ? C(0) : big * std::sqrt(len2) - C(1);
-  C s = C(0);
+  C s0 = z[K - 1];
+  C s1 = g < C(0) ? C(1) : big * std::sqrt(len2);
+  C s = s0;
   for (int it = 0; it < ellipse_bisection_budget; ++it) {
-    s = C(0.5) * (s0 + s1);
+    s = (s0 > C(0) && s1 > C(4) * s0) ? std::sqrt(s0) * std::sqrt(s1) : C(0.5) * (s0 + s1);
     if (s == s0 || s == s1) break;
     C f = C(-1);
-    for (int i = 0; i < K; ++i) f += sqr(n[i] / (s + r[i]));
+    for (int i = 0; i < K; ++i) f += sqr(n[i] / (s + rm1[i]));
     if (f > C(0))
       s0 = s;
     else if (f < C(0))
@@ -97,8 +103,8 @@ template <class C>
       if (g == C(0)) return {y0, y1, true};
       const C r0 = sqr(e0 / e1);
       const C rr[2] = {r0, C(1)}, zz[2] = {z0, z1};
-      const C s = ellipse_secular_root<C, 2>(rr, zz, g);
-      return {r0 * y0 / (s + r0), y1 / (s + C(1)), true};
+      const C sigma = ellipse_secular_root<C, 2>(rr, zz, g);
+      return {r0 * y0 / (sigma + (r0 - C(1))), y1 / sigma, true};
     }
     return {C(0), e1, true};
   }

@@ -14,7 +14,8 @@
 // 2D routine of point_ellipse.hpp): in the frame sorted so that e0 >= e1 >= e2 and p reflected
 // into the first octant, the closest point is x_i = e_i^2 y_i / (t + e_i^2) with t the unique root
 // of the strictly decreasing F(t) = sum_i (e_i y_i / (t + e_i^2))^2 - 1 on t > -e2^2, bracketed
-// and bisected to the last bit (budget 2200 halvings). A zero coordinate y_i sends the query to
+// and bisected to the last bit in the shifted variable of point_ellipse.hpp (budget 2200 steps).
+// A zero coordinate y_i sends the query to
 // the exact limit case: y2 = 0 with (e0 y0 / (e0^2 - e2^2))^2 + (e1 y1 / (e1^2 - e2^2))^2 < 1
 // (inside, near the plane of the two longer axes: two symmetric closest points off that plane);
 // otherwise the 2D problem in the plane of the remaining axes (point_ellipse.hpp), including its
@@ -61,8 +62,10 @@ template <class C>
         const C g = z[0] * z[0] + z[1] * z[1] + z[2] * z[2] - C(1);
         if (g == C(0)) return {{y[0], y[1], y[2]}, true};
         const C r[3] = {sqr(e[0] / e[2]), sqr(e[1] / e[2]), C(1)};
-        const C s = ellipse_secular_root<C, 3>(r, z, g);
-        return {{r[0] * y[0] / (s + r[0]), r[1] * y[1] / (s + r[1]), y[2] / (s + C(1))}, true};
+        const C sigma = ellipse_secular_root<C, 3>(r, z, g);
+        return {{r[0] * y[0] / (sigma + (r[0] - C(1))), r[1] * y[1] / (sigma + (r[1] - C(1))),
+                 y[2] / sigma},
+                true};
       }
       const QuadrantPoint2<C> q = ellipse_quadrant_closest(e[1], e[2], y[1], y[2]);
       return {{C(0), q.x0, q.x1}, q.unique};

@@ -96,10 +96,11 @@ struct BoundedPoly {
   }
 };
 
-/// Roots u in the open interval (-1, 1) of a bounded polynomial, written to out (capacity deg);
-/// returns the count, or -1 when the polynomial vanishes identically within its error bound.
+/// Roots u in the open interval (-1, 1) (every real root when whole_line) of a bounded
+/// polynomial, written to out (capacity deg); returns the count, or -1 when the polynomial
+/// vanishes identically within its error bound.
 template <class C>
-[[nodiscard]] inline int span_roots(BoundedPoly<C>& g, C* out) noexcept {
+[[nodiscard]] inline int span_roots(BoundedPoly<C>& g, C* out, bool whole_line = false) noexcept {
   int n = g.deg;
   bool all_noise = true;
   for (int i = 0; i <= n; ++i) {
@@ -107,7 +108,10 @@ template <class C>
     if (!(std::fabs(g.c[ui]) <= g.err[ui])) all_noise = false;
   }
   if (all_noise) return -1;
-  while (n > 0 && g.c[static_cast<std::size_t>(n)] == C(0)) --n;
+  // Leading coefficients within their error bound are noise: they only add spurious huge roots
+  // (and their error would swamp the tolerance the engine grants the genuine ones).
+  while (n > 0 && std::fabs(g.c[static_cast<std::size_t>(n)]) <= g.err[static_cast<std::size_t>(n)])
+    --n;
   if (n <= 0) return 0;
   SpanScratch<double, 64> a(static_cast<std::size_t>(n) + 1), e(static_cast<std::size_t>(n) + 1);
   for (int i = 0; i <= n; ++i) {
@@ -123,7 +127,7 @@ template <class C>
   int k = 0;
   for (int i = 0; i < cnt; ++i) {
     const double x = r1[static_cast<std::size_t>(i)].x;
-    if (x > -1.0 && x < 1.0) out[k++] = static_cast<C>(x);
+    if (whole_line || (x > -1.0 && x < 1.0)) out[k++] = static_cast<C>(x);
   }
   return k;
 }
