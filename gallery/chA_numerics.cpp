@@ -499,10 +499,9 @@ bool fig_A_10(SvgWriter& w) {
   plot_axes(w, p, 2, 20);
   plot_curve(w, p, [&](double x) { return df(x); }, a, b, pen(c::green, 2.2));
   for (const auto& rt : r.roots) point(w, p.at(rt.value, 0), "", c::red);
-  label(w, p.at(-4.2, 70), "f'(x) = 3x\u00b2 + 12x - 7", c::green, 0, 0);
-  label(w, p.at(-4.2, 60),
-        "f'(x) = 0 at x = " + fmt(r.roots[0].value, 3) + " and x = " + fmt(r.roots[1].value, 3),
-        c::red, 0, 0);
+  label(w, p.at(-6.2, 80), "f'(x) = 3x\u00b2 + 12x - 7", c::green, 0, 0);
+  label(w, p.at(-6.2, 68),
+        "zeros x = " + fmt(r.roots[0].value, 3) + ", " + fmt(r.roots[1].value, 3), c::red, 0, 0);
   return true;
 }
 
@@ -576,14 +575,10 @@ bool fig_A_13(SvgWriter& w) {
   const auto cp = bumps_critical(hills_a13(), Vec2d{-2, -2}, Vec2d{2, 2});
   if (cp.status != Status::ok) return false;
   int extrema = 0;
-  CriticalPoints2<double> shown;
   for (const auto& q : cp.points)
-    if (q.kind == CriticalKind::minimum || q.kind == CriticalKind::maximum) {
-      shown.points.push_back(q);
-      ++extrema;
-    }
+    extrema += q.kind == CriticalKind::minimum || q.kind == CriticalKind::maximum ? 1 : 0;
   if (extrema != 4) return false;
-  mark_critical_3d(w, shown, zs);
+  mark_critical_3d(w, cp, zs);
   return true;
 }
 
@@ -626,14 +621,14 @@ bool fig_A_15(SvgWriter& w) {
   const double zs = 0.5;
   w.set_camera(camera({8, -6, 6}, {0, 0, 0}));
   graph_wireframe(w, f, lo, hi, 16, zs, pen(c::gray, 0.6));
-  const auto cp = critical_points_2d(
-      f, [](Vec2d x) { return Vec2d{2 * x.x, -2 * x.y}; },
-      [](Vec2d) { return Mat2d::from_rows(Vec2d{2, 0}, Vec2d{0, -2}); }, lo, hi);
+  const auto grad = [](Vec2d x) { return Vec2d{2 * x.x, -2 * x.y}; };
+  const auto hess = [](Vec2d) { return Mat2d::from_rows(Vec2d{2, 0}, Vec2d{0, -2}); };
+  const auto cp = critical_points_2d(f, grad, hess, lo, hi);
   if (cp.status != Status::ok || cp.points.size() != 1) return false;
   const auto& s = cp.points[0];
-  // The sections along the Hessian's eigenvectors: the minimum direction curves up, the maximum
-  // direction down.
-  const auto eig = eigen_symmetric(Mat2d::from_rows(Vec2d{2, 0}, Vec2d{0, -2}));
+  // The sections along the Hessian's eigenvectors: the positive-eigenvalue direction curves up,
+  // the negative one down.
+  const auto eig = eigen_symmetric(hess(s.point));
   for (int k = 0; k < 2; ++k) {
     const Vec2d e{eig.vectors(0, k), eig.vectors(1, k)};
     std::vector<Vec3d> sec;
@@ -701,7 +696,7 @@ bool fig_A_17(SvgWriter& w) {
 // ---- A.18-A.24: Lagrange multipliers ----------------------------------------------------------
 
 // The constraint 17x^2 + 8y^2 + 12xy = 100 of figures A.18 and A.21: g(x) = x^T A x.
-const Mat2d a18_matrix = Mat2d::from_rows(Vec2d{17, 6}, Vec2d{6, 8});
+const Mat2d a18_matrix = Mat2d::from_rows(Vec2d{17, 12.0 / 2}, Vec2d{12.0 / 2, 8});
 double a18_g(Vec2d p) { return 17 * p.x * p.x + 8 * p.y * p.y + 12 * p.x * p.y; }
 
 // A.18: the ellipse as the level set g = 100, its axes from eigen_symmetric(A): semi-axis
@@ -758,7 +753,8 @@ bool fig_A_20(SvgWriter& w) {
   return true;
 }
 
-// A.21: the extrema of x^2 + y^2 on the constraint ellipse: Lagrange's condition
+// A.21 (our reading of A.18-A.21 as one example: the extrema of x^2 + y^2, figures A.19 and A.20,
+// subject to the ellipse of A.18): Lagrange's condition
 // grad(x^2 + y^2) = mu grad g means A x = (1/mu) x, so the extrema lie along the eigenvectors of
 // A (eigen_symmetric): x^2 + y^2 = 100 / lambda, minimal for the largest lambda, where the level
 // circle touches the ellipse.
@@ -888,25 +884,36 @@ bool fig_A_23(SvgWriter& w) {
   return true;
 }
 
-// A.24: the extrema of f = x^2 + y^2 + z^2 on that curve. Eliminating z = 1 - x + y (the linear
-// constraint) leaves q(x, y) = 2x^2 - 2xy + 2y^2 - 2x + 2y + 1 on the unit circle, whose extrema
+// A.24: the extrema of f on that curve. The caption does not state f; as in
+// tests/numeric/minimize_test.cpp we take f = x^2 + y^2 + z^2. The linear constraint eliminates z:
+// the plane over (x, y) is the affine map u -> M u + t read off the projection along the axis
+// (images of the origin and the unit vectors), so f = |M u + t|^2 = u^T (M^T M) u + 2 t^T M u +
+// |t|^2 on the unit circle g2 = 0 (here 2x^2 - 2xy + 2y^2 - 2x + 2y + 1), whose extrema
 // minimize_quadratic_on_sphere / maximize_quadratic_on_sphere find. The minimum is attained twice
-// (the solver's "hard case", unique = false): the second minimiser is the mirror image of the
-// first across the line orthogonal to A's lowest eigenvector (eigen_symmetric). The level sets of
+// (the solver's "hard case", unique = false, which reports one of them): the second minimiser is
+// the mirror image of the first across the line orthogonal to A's lowest eigenvector
+// (eigen_symmetric). The level sets of
 // f there are spheres about the origin, drawn through the extrema.
 bool fig_A_24(SvgWriter& w) {
   const TwoConstraints k;
-  const Mat2d a = Mat2d::from_rows(Vec2d{2, -1}, Vec2d{-1, 2});
-  const Vec2d b{-2, 2};
-  const auto lo = minimize_quadratic_on_sphere(a, b, 1.0, Vec2d{0, 0}, k.cyl.radius);
-  const auto hi = maximize_quadratic_on_sphere(a, b, 1.0, Vec2d{0, 0}, k.cyl.radius);
+  const auto t = k.on_plane(Vec2d{0, 0}), ex = k.on_plane(Vec2d{1, 0}), ey = k.on_plane(Vec2d{0, 1});
+  if (!t || !ex || !ey) return false;
+  const Vec3d m0 = *ex - *t, m1 = *ey - *t;  // the columns of M
+  const Mat2d a = Mat2d::from_rows(Vec2d{dot(m0, m0), dot(m0, m1)}, Vec2d{dot(m1, m0), dot(m1, m1)});
+  const Vec2d b{2 * dot(*t, m0), 2 * dot(*t, m1)};
+  const double c0 = sqr_length(*t);
+  const auto lo = minimize_quadratic_on_sphere(a, b, c0, Vec2d{0, 0}, k.cyl.radius);
+  const auto hi = maximize_quadratic_on_sphere(a, b, c0, Vec2d{0, 0}, k.cyl.radius);
   const auto eig = eigen_symmetric(a);
   if (lo.status != Status::ok || hi.status != Status::ok || eig.status != Status::ok) return false;
+  // The mirror image across the line orthogonal to the lowest eigenvector is another point of
+  // the circle; it is listed when q is as low there (the hard case's second minimiser).
   std::vector<Vec2d> minima{lo.x};
-  if (!lo.unique) {
-    const Vec2d v{eig.vectors(0, 0), eig.vectors(1, 0)};
-    minima.push_back(lo.x - 2 * dot(lo.x, v) * v);
-  }
+  const Vec2d v{eig.vectors(0, 0), eig.vectors(1, 0)};
+  const Vec2d mirror = lo.x - 2 * dot(lo.x, v) * v;
+  const double q_mirror = dot(mirror, a * mirror) + dot(b, mirror) + c0;
+  if (length(mirror - lo.x) > 1e-6 && std::abs(q_mirror - lo.value) <= 1e-9 * (1 + lo.value))
+    minima.push_back(mirror);
   w.set_camera(camera(a23_eye, {0, 0, 1}));
   std::vector<Vec3d> curve;
   if (!draw_constraints(w, k, curve)) return false;
