@@ -1,32 +1,36 @@
 // SPDX-License-Identifier: BSL-1.0
-// Distance queries per second (rows dist3.pt-triangle, dist3.linear-linear, dist3.pt-obb):
-// point-triangle, segment-segment (generic and nearly parallel), point-OBB and point-AABB in 3D,
-// float and double, over 4096 random inputs cycled so that the data stays in cache. Items per
-// second = queries per second.
+// Distance queries per second (rows dist3.pt-triangle, dist3.linear-linear, dist3.pt-obb,
+// dist3.linear-triangle): point-triangle, segment-segment (generic and nearly parallel),
+// segment-triangle, point-OBB and point-AABB in 3D, float and double, over 4096 random inputs
+// cycled so that the data stays in cache. Items per second = queries per second.
 //
 // Peers (when CGAL is found, LOCUS_HAVE_CGAL): CGAL::squared_distance on the SAME inputs (the
-// double inputs converted to CGAL points once, outside the timed loop), with two kernels:
+// double inputs converted to CGAL objects once, outside the timed loop), with two kernels:
 // Simple_cartesian<double> (plain floating point, the fair peer) and
 // Exact_predicates_inexact_constructions_kernel (what CGAL users usually take). CGAL returns
 // only the squared distance while locus also returns both closest points and their parameters.
 // CGAL (5.5) has no point-box distance at all: neither an oriented box nor Iso_cuboid_3 /
-// Bbox_3 has a squared_distance overload, so the box queries run for locus alone. CGAL's CMake
-// target adds -frounding-math to this translation unit, locus code included.
+// Bbox_3 has a squared_distance overload, so the box queries run for locus alone; and no
+// segment-triangle distance: that peer is composed from CGAL's own queries (see below). CGAL's
+// CMake target adds -frounding-math to this translation unit, locus code included.
 //
 // Run: locus_bench_distance --benchmark_min_time=0.2
 #include <locus/distance/point_aligned_box.hpp>
 #include <locus/distance/point_oriented_box.hpp>
 #include <locus/distance/point_triangle.hpp>
 #include <locus/distance/segment_segment.hpp>
+#include <locus/distance/segment_triangle.hpp>
 
 #include <benchmark/benchmark.h>
 
 #if defined(LOCUS_HAVE_CGAL)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/intersections.h>
 #include <CGAL/squared_distance_3.h>
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -129,6 +133,25 @@ const PointAabbInput& point_aabb_input() {
   return in;
 }
 
+struct SegmentTriangleInput {
+  std::vector<locus::Segment3<double>> s;
+  std::vector<locus::Triangle3<double>> t;
+};
+const SegmentTriangleInput& segment_triangle_input() {
+  static const SegmentTriangleInput in = [] {
+    SegmentTriangleInput r;
+    std::mt19937_64 rng(5);
+    for (std::size_t i = 0; i < kCount; ++i) {
+      const auto p0 = rvec(rng, -1.5, 1.5), p1 = rvec(rng, -1.5, 1.5);
+      r.s.push_back({p0, p1});
+      const auto a = rvec(rng, -1, 1), b = rvec(rng, -1, 1), c = rvec(rng, -1, 1);
+      r.t.push_back({a, b, c});
+    }
+    return r;
+  }();
+  return in;
+}
+
 // ---- locus ------------------------------------------------------------------------------------
 
 template <class T>
@@ -206,6 +229,23 @@ void point_aabb(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 
+template <class T>
+void seg_triangle(benchmark::State& state) {
+  const auto& in = segment_triangle_input();
+  std::vector<locus::Segment3<T>> s;
+  std::vector<locus::Triangle3<T>> t;
+  for (std::size_t i = 0; i < kCount; ++i) {
+    s.push_back({cast<T>(in.s[i].p0), cast<T>(in.s[i].p1)});
+    t.push_back({cast<T>(in.t[i].v0), cast<T>(in.t[i].v1), cast<T>(in.t[i].v2)});
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(locus::distance(s[i], t[i]));
+    i = (i + 1) & (kCount - 1);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+
 // ---- CGAL -------------------------------------------------------------------------------------
 
 #if defined(LOCUS_HAVE_CGAL)
@@ -251,6 +291,37 @@ void cgal_segment_segment(benchmark::State& state) {
   }
   cgal_loop(state, a, b);
 }
+
+// CGAL 5.5 has no Segment_3 / Triangle_3 squared_distance (it arrived in CGAL 6): the peer is
+// the usual composition from CGAL's own queries: 0 when do_intersect(segment, triangle),
+// otherwise the minimum over the two end points to the triangle and the segment to the three
+// edges (the closest pair of disjoint convex sets has a point on a boundary feature).
+template <class K>
+void cgal_seg_triangle(benchmark::State& state) {
+  const auto& in = segment_triangle_input();
+  std::vector<typename K::Segment_3> s;
+  std::vector<typename K::Triangle_3> t;
+  for (std::size_t i = 0; i < kCount; ++i) {
+    s.emplace_back(cgal_point<K>(in.s[i].p0), cgal_point<K>(in.s[i].p1));
+    t.emplace_back(cgal_point<K>(in.t[i].v0), cgal_point<K>(in.t[i].v1), cgal_point<K>(in.t[i].v2));
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& seg = s[i];
+    const auto& tri = t[i];
+    double d = 0;
+    if (!CGAL::do_intersect(seg, tri)) {
+      d = CGAL::squared_distance(seg.source(), tri);
+      d = std::min(d, CGAL::squared_distance(seg.target(), tri));
+      for (int e = 0; e < 3; ++e)
+        d = std::min(d, CGAL::squared_distance(
+                            seg, typename K::Segment_3(tri.vertex(e), tri.vertex((e + 1) % 3))));
+    }
+    benchmark::DoNotOptimize(d);
+    i = (i + 1) & (kCount - 1);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
 #endif
 
 }  // namespace
@@ -269,5 +340,11 @@ BENCHMARK(cgal_segment_segment<Epick>)->Name("cgal_segment_segment<Epick>")->Arg
 #endif
 BENCHMARK(point_obb<float>);
 BENCHMARK(point_obb<double>);
+BENCHMARK(seg_triangle<float>);
+BENCHMARK(seg_triangle<double>);
+#if defined(LOCUS_HAVE_CGAL)
+BENCHMARK(cgal_seg_triangle<Simple>)->Name("cgal_seg_triangle<Simple_cartesian> (composed)");
+BENCHMARK(cgal_seg_triangle<Epick>)->Name("cgal_seg_triangle<Epick> (composed)");
+#endif
 BENCHMARK(point_aabb<float>);
 BENCHMARK(point_aabb<double>);

@@ -20,7 +20,9 @@
 // edge v0 v1 (regions 4, 5, 6), s + t > 1 the edge v1 v2 (regions 1, 2, 6); each is an exact
 // clamped point-segment projection, and the nearest of those edges wins. This covers the seven
 // regions of figure 6.6 without region-specific code, and the vertex regions come out of the clamps
-// exactly.
+// exactly. In 3D the common case (finite input, well-shaped triangle) runs as a compact fast path
+// that performs the same operations in the same order (same results), testing the finiteness
+// of all the input with one branch; everything else goes through the general code.
 //
 // Degenerate input: when the triangle is (nearly) flat, |e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2 (the
 // plane solve is ill-conditioned), the answer is the nearest of the three edges, each handled as a
@@ -36,12 +38,25 @@
 #include <locus/primitives/segment.hpp>
 #include <locus/primitives/triangle.hpp>
 
+#include <limits>
+
 namespace locus {
 
-/// Distance from p to the filled triangle; param_b is barycentric (u, v, w).
-template <Real T, int N>
-[[nodiscard]] inline Distance<T, N, NoParam, Vec3<T>> distance(const Vec<T, N>& p,
-                                                               const Triangle<T, N>& tri) noexcept {
+namespace detail {
+
+/// The sum of x - x over the coordinates: exactly 0 when every coordinate is finite, NaN
+/// otherwise; lets a fast path test all its input with one branch.
+template <class T, int N>
+[[nodiscard]] constexpr T finite_probe(const Vec<T, N>& v) noexcept {
+  T z = T(0);
+  for (int i = 0; i < N; ++i) z += v[i] - v[i];
+  return z;
+}
+
+/// The general point-triangle query (every case; see the header comment).
+template <class T, int N>
+[[nodiscard]] inline Distance<T, N, NoParam, Vec3<T>> point_triangle_general(
+    const Vec<T, N>& p, const Triangle<T, N>& tri) noexcept {
   if (!is_finite(p) || !is_finite(tri.v0) || !is_finite(tri.v1) || !is_finite(tri.v2))
     return non_finite_distance<T, N, NoParam, Vec3<T>>();
   const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v0, w = tri.v0 - p;
@@ -111,6 +126,57 @@ template <Real T, int N>
   if (edge02) edge(tri.v0, tri.v2, 0, 2);
   if (edge12) edge(tri.v1, tri.v2, 1, 2);
   return detail::make_distance(p, point_at_barycentric(tri, best_bary), NoParam{}, best_bary, true);
+}
+
+}  // namespace detail
+
+/// Distance from p to the filled triangle; param_b is barycentric (u, v, w).
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, NoParam, Vec3<T>> distance(const Vec<T, N>& p,
+                                                               const Triangle<T, N>& tri) noexcept {
+  if constexpr (N != 2) {
+    // Fast path for finite input and a well-shaped triangle (16 |e0 x e1|^2 >= |e0|^2 |e1|^2,
+    // no refinement, well conditioned), the common case: the same operations, in the same
+    // order, as the general code takes for it (so the same bits), with one branch for the
+    // finiteness of the input and no bookkeeping. Edges v0 v1 and v0 v2 reuse the dot products:
+    // dot(p - v0, e) = -dot(e, v0 - p) exactly.
+    const T probe = detail::finite_probe(p) + detail::finite_probe(tri.v0) +
+                    detail::finite_probe(tri.v1) + detail::finite_probe(tri.v2);
+    if (probe == T(0)) {
+      const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v0, w = tri.v0 - p;
+      const T a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), d = dot(e0, w), e = dot(e1, w);
+      const T det = detail::sqr_cross_norm(e0, e1);
+      const T ac = a * c;
+      constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
+      if (T(16) * det >= ac && a >= lo && c >= lo && ac <= hi) {
+        const T s = (b * e - c * d) / det, t = (b * d - a * e) / det;
+        Vec3<T> bary{T(1) - s - t, s, t};
+        if (!(s >= T(0) && t >= T(0) && s + t <= T(1))) {
+          // KKT: only the edges whose constraints the plane solution violates; ties keep the
+          // first in the order v0 v1, v0 v2, v1 v2.
+          T best = T(-1);  // none yet (q may overflow to inf: the first edge is still taken)
+          const auto edge = [&](const Vec3<T>& cand) {
+            const T q = sqr_length(point_at_barycentric(tri, cand) - p);
+            if (best < T(0) || q < best) best = q, bary = cand;
+          };
+          if (t < T(0)) {
+            const T l = clamp(-d / a, T(0), T(1));
+            edge(Vec3<T>{T(1) - l, l, T(0)});
+          }
+          if (s < T(0)) {
+            const T l = clamp(-e / c, T(0), T(1));
+            edge(Vec3<T>{T(1) - l, T(0), l});
+          }
+          if (s + t > T(1)) {
+            const T l = detail::closest_param(detail::view(Segment<T, N>{tri.v1, tri.v2}), p);
+            edge(Vec3<T>{T(0), T(1) - l, l});
+          }
+        }
+        return detail::make_distance(p, point_at_barycentric(tri, bary), NoParam{}, bary, true);
+      }
+    }
+  }
+  return detail::point_triangle_general(p, tri);
 }
 
 /// The swapped query: closest[0] and param_a (barycentric) belong to the triangle.
