@@ -234,16 +234,46 @@ LOCUS_D3_NOINLINE Sign insphere_slow(const Vec3<double>& a, const Vec3<double>& 
   return insphere(a, b, c, d, e);
 }
 
+// Stage-A bound of core/predicates.hpp with a cheaper permanent. That bound is
+// insphere_bound_a * P, P the permanent evaluated in floating point. With mx, my, mz the
+// largest |differences| per axis, every 2x2 permanent term is at most 2 mx my, every 3x3 one at
+// most 6 mx my mz, so P <= 6 mx my mz (alift + blift + clift + dlift) up to the few roundings
+// of the two evaluation orders (under 16 units of 2^-53 relative), which the factor
+// 1 + 2^-40 covers. The determinant is evaluated exactly as in core/predicates.hpp.
+constexpr double kInsphereSemiStatic = detail::insphere_bound_a * (1.0 + 0x1p-40);
+
 template <class T>
 LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
                                    const Vec3<T>& pd, const Vec3<T>& pe) noexcept {
   const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
                      c = detail::to_double(pc), d = detail::to_double(pd),
                      e = detail::to_double(pe);
-  const detail::InsphereTerms t = detail::insphere_terms(a, b, c, d, e);
-  // The same stage-A bound as core/predicates.hpp (its sign convention: ours is the negation).
-  if (std::abs(t.det) > detail::insphere_bound_a * t.permanent) [[likely]]
-    return -detail::nonzero_sign(t.det);
+  const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
+  const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;
+  const double aez = a.z - e.z, bez = b.z - e.z, cez = c.z - e.z, dez = d.z - e.z;
+  const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
+  const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
+  const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+  const double abc = aez * bc - bez * ac + cez * ab;
+  const double bcd = bez * cd - cez * bd + dez * bc;
+  const double cda = cez * da + dez * ac + aez * cd;
+  const double dab = dez * ab + aez * bd + bez * da;
+  const double alift = aex * aex + aey * aey + aez * aez;
+  const double blift = bex * bex + bey * bey + bez * bez;
+  const double clift = cex * cex + cey * cey + cez * cez;
+  const double dlift = dex * dex + dey * dey + dez * dez;
+  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  const double mx = std::max(std::max(std::abs(aex), std::abs(bex)),
+                             std::max(std::abs(cex), std::abs(dex)));
+  const double my = std::max(std::max(std::abs(aey), std::abs(bey)),
+                             std::max(std::abs(cey), std::abs(dey)));
+  const double mz = std::max(std::max(std::abs(aez), std::abs(bez)),
+                             std::max(std::abs(cez), std::abs(dez)));
+  const double k = 6.0 * ((mx * my) * mz);
+  const double bound = kInsphereSemiStatic * (k * ((alift + blift) + (clift + dlift)));
+  // Shewchuk's sign convention: ours is the negation.
+  if (std::abs(det) > bound) [[likely]]
+    return -detail::nonzero_sign(det);
   return insphere_slow(a, b, c, d, e);
 }
 
@@ -362,7 +392,7 @@ void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32
 }
 
 template <Real T>
-bool Delaunay3<T>::in_conflict(std::uint32_t t, std::uint32_t v) const noexcept {
+LOCUS_D3_INLINE bool Delaunay3<T>::in_conflict(std::uint32_t t, std::uint32_t v) const noexcept {
   const Delaunay3Cell& c = cells_[t];
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T>& p = pts[v];

@@ -588,6 +588,7 @@ TYPED_TEST(Delaunay3Test, CosphericalAgainstOracles) {
   cases.push_back(sphere_center);
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const auto& p = cases[k];
+    if (kScale > 1 && p.size() > 25) continue;  // (sanitizer run time)
     const auto r = run(p);
     ASSERT_TRUE(check_delaunay3(p, r, true)) << "case " << k;
     const auto lifted = run(p, Delaunay3Method::lifted_hull);
