@@ -121,18 +121,17 @@ void cgal_case3(benchmark::State& state, int which) {
 void register_all3() {
   const char* names[] = {"Uniform/100000", "Uniform/1000000", "Grid/50x50x50"};
   for (int w = 0; w < 3; ++w) {
-    benchmark::RegisterBenchmark((std::string("Delaunay3/Input/") + names[w]).c_str(),
-                                 input_case3, w)
+    benchmark::RegisterBenchmark((std::string("Delaunay3/Input/") + names[w]).c_str(), input_case3,
+                                 w)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark((std::string("Delaunay3/Locus/") + names[w]).c_str(),
-                                 locus_case3, w)
+    benchmark::RegisterBenchmark((std::string("Delaunay3/Locus/") + names[w]).c_str(), locus_case3,
+                                 w)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("Delaunay3/LocusReuse/") + names[w]).c_str(),
                                  locus_reuse_case3, w)
         ->Unit(benchmark::kMillisecond);
 #if defined(LOCUS_HAVE_CGAL)
-    benchmark::RegisterBenchmark((std::string("Delaunay3/CGAL/") + names[w]).c_str(),
-                                 cgal_case3, w)
+    benchmark::RegisterBenchmark((std::string("Delaunay3/CGAL/") + names[w]).c_str(), cgal_case3, w)
         ->Unit(benchmark::kMillisecond);
 #endif
   }

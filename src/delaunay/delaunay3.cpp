@@ -138,6 +138,57 @@ void brio_order(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& tm
   radix_sort_keys(keys.data(), end, tmp);
 }
 
+// True when x - y is computed exactly (Knuth's two-difference has a zero tail).
+[[nodiscard]] inline bool exact_difference(double x, double y, double diff) noexcept {
+  const double bvirt = x - diff;
+  const double avirt = diff + bvirt;
+  return (x - avirt) + (bvirt - y) == 0.0;
+}
+
+// u is an integer, for |u| < 2^52 (adding 2^52 rounds to an integer; no libm call).
+[[nodiscard]] inline bool is_small_integer(double u) noexcept {
+  const double a = std::abs(u);
+  return (a + 0x1p52) - 0x1p52 == a;
+}
+
+// orient3d for the zero-heavy perturbation: when the nine differences to d are exact integer
+// multiples of a power of two q with |difference| < 2^16 q, the double determinant (products
+// below 2^32 q^2, the sum below 2^51 q^3) is exact; otherwise the exact predicate decides.
+template <class T>
+[[nodiscard]] Sign orient3d_lattice(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
+                                    const Vec3<T>& pd) noexcept {
+  const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
+                     c = detail::to_double(pc), d = detail::to_double(pd);
+  const Vec3<double>* p[3] = {&a, &b, &c};
+  double dv[3][3];
+  double m = 0.0;
+  bool exact = true;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      dv[i][k] = (*p[i])[k] - d[k];
+      exact = exact && exact_difference((*p[i])[k], d[k], dv[i][k]);
+      m = std::max(m, std::abs(dv[i][k]));
+    }
+  if (exact && m > 0.0 && std::isfinite(m)) {
+    int ex = 0;
+    std::frexp(m, &ex);
+    const double inv_q = std::ldexp(1.0, 16 - ex);
+    bool on_lattice = ex > -300 && ex < 300;
+    for (int i = 0; i < 3 && on_lattice; ++i)
+      for (int k = 0; k < 3 && on_lattice; ++k) on_lattice = is_small_integer(dv[i][k] * inv_q);
+    if (on_lattice) {
+      const double* u = dv[0];
+      const double* v = dv[1];
+      const double* w = dv[2];
+      // det[a - d; b - d; c - d] is Shewchuk's orient3d, the negation of ours.
+      const double det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                         u[2] * (v[0] * w[1] - v[1] * w[0]);
+      return -sign_of(det);
+    }
+  }
+  return orient3d(pa, pb, pc, pd);
+}
+
 // The zero case of insphere_perturbed: point q's lift |q|^2 is raised by eps_q, larger for
 // lexicographically larger q. The perturbed determinant is insphere + sum eps_q * C_q with
 // C_e = -orient3d(a, b, c, d) (raising e moves it outside) and, by antisymmetry, C_q for a
@@ -161,22 +212,15 @@ LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, c
   for (const int k : order) {
     Sign s;
     if (k == 4) {
-      s = -orient3d(a, b, c, d);
+      s = -orient3d_lattice(a, b, c, d);
     } else {
       const Vec3<T>* q[4] = {&a, &b, &c, &d};
       q[k] = &e;
-      s = orient3d(*q[0], *q[1], *q[2], *q[3]);
+      s = orient3d_lattice(*q[0], *q[1], *q[2], *q[3]);
     }
     if (s != Sign::zero) return s;
   }
   return Sign::zero;  // only when a, b, c, d are coplanar and e lies on their plane
-}
-
-// True when x - y is computed exactly (Knuth's two-difference has a zero tail).
-[[nodiscard]] inline bool exact_difference(double x, double y, double diff) noexcept {
-  const double bvirt = x - diff;
-  const double avirt = diff + bvirt;
-  return (x - avirt) + (bvirt - y) == 0.0;
 }
 
 // The insphere filter fails on every exactly cospherical quintuple (grids!) and the adaptive
@@ -200,15 +244,12 @@ LOCUS_D3_NOINLINE Sign insphere_slow(const Vec3<double>& a, const Vec3<double>& 
     }
   if (exact && m > 0.0 && std::isfinite(m)) {
     int ex = 0;
-    std::frexp(m, &ex);                          // m < 2^ex
+    std::frexp(m, &ex);                            // m < 2^ex
     const double inv_q = std::ldexp(1.0, 9 - ex);  // 1 / q with q = 2^(ex - 9)
     // q^5 must not underflow (5 (ex - 9) >= -1074) nor 2^53 q^5 overflow.
     bool on_lattice = ex > -200 && ex < 190;
     for (int i = 0; i < 4 && on_lattice; ++i)
-      for (int k = 0; k < 3 && on_lattice; ++k) {
-        const double u = dv[i][k] * inv_q;
-        on_lattice = u == std::nearbyint(u);
-      }
+      for (int k = 0; k < 3 && on_lattice; ++k) on_lattice = is_small_integer(dv[i][k] * inv_q);
     if (on_lattice) {
       double lift[4], minor[4];
       for (int i = 0; i < 4; ++i)
@@ -226,8 +267,8 @@ LOCUS_D3_NOINLINE Sign insphere_slow(const Vec3<double>& a, const Vec3<double>& 
       }
       // det[p - e, lift] expanded along the lift column: sum (-1)^(i+3) lift_i minor_i; our
       // insphere is its negation.
-      const double det = (lift[1] * minor[1] + lift[3] * minor[3]) -
-                         (lift[0] * minor[0] + lift[2] * minor[2]);
+      const double det =
+          (lift[1] * minor[1] + lift[3] * minor[3]) - (lift[0] * minor[0] + lift[2] * minor[2]);
       return -sign_of(det);
     }
   }
@@ -263,12 +304,12 @@ LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const V
   const double clift = cex * cex + cey * cey + cez * cez;
   const double dlift = dex * dex + dey * dey + dez * dez;
   const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-  const double mx = std::max(std::max(std::abs(aex), std::abs(bex)),
-                             std::max(std::abs(cex), std::abs(dex)));
-  const double my = std::max(std::max(std::abs(aey), std::abs(bey)),
-                             std::max(std::abs(cey), std::abs(dey)));
-  const double mz = std::max(std::max(std::abs(aez), std::abs(bez)),
-                             std::max(std::abs(cez), std::abs(dez)));
+  const double mx =
+      std::max(std::max(std::abs(aex), std::abs(bex)), std::max(std::abs(cex), std::abs(dex)));
+  const double my =
+      std::max(std::max(std::abs(aey), std::abs(bey)), std::max(std::abs(cey), std::abs(dey)));
+  const double mz =
+      std::max(std::max(std::abs(aez), std::abs(bez)), std::max(std::abs(cez), std::abs(dez)));
   const double k = 6.0 * ((mx * my) * mz);
   const double bound = kInsphereSemiStatic * (k * ((alift + blift) + (clift + dlift)));
   // Shewchuk's sign convention: ours is the negation.
@@ -278,9 +319,8 @@ LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const V
 }
 
 template <class T>
-LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& a, const Vec3<T>& b,
-                                               const Vec3<T>& c, const Vec3<T>& d,
-                                               const Vec3<T>& e) noexcept {
+LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
+                                               const Vec3<T>& d, const Vec3<T>& e) noexcept {
   const Sign s = insphere_fast(a, b, c, d, e);
   if (s != Sign::zero) [[likely]]
     return s;
@@ -308,7 +348,8 @@ const Delaunay3Result& Delaunay3<T>::triangulate(std::span<const Vec3<T>> points
 template <Real T>
 const Delaunay3Result& Delaunay3<T>::triangulate(const T* xyz, std::size_t n) {
   points_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) points_[i] = Vec3<T>{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  for (std::size_t i = 0; i < n; ++i)
+    points_[i] = Vec3<T>{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
   run();
   compact(false);
   return result_;
@@ -809,8 +850,10 @@ Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
         break;
       }
     }
-    if (r.duplicate_of[i] == i) kept.push_back(i);
-    else ++r.duplicate_count;
+    if (r.duplicate_of[i] == i)
+      kept.push_back(i);
+    else
+      ++r.duplicate_count;
   }
   const std::size_t m = kept.size();
   // Affine dimension of the kept points.
@@ -820,8 +863,7 @@ Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
   if (i2 < m) {
     dim = 2;
     for (std::size_t i3 = i2 + 1; i3 < m && dim < 3; ++i3)
-      if (orient3d(pts[kept[0]], pts[kept[1]], pts[kept[i2]], pts[kept[i3]]) != Sign::zero)
-        dim = 3;
+      if (orient3d(pts[kept[0]], pts[kept[1]], pts[kept[i2]], pts[kept[i3]]) != Sign::zero) dim = 3;
   }
   r.dimension = dim;
   if (dim < 3) return r;
@@ -870,8 +912,8 @@ Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
       const auto& v = r.tetrahedra[faces[k].cell].vertices;
       const int i = int(faces[k].face);
       // Face i has the cell on its positive side; the outward orientation is the reverse.
-      r.hull.push_back({v[std::size_t(kFace[i][0])], v[std::size_t(kFace[i][2])],
-                        v[std::size_t(kFace[i][1])]});
+      r.hull.push_back(
+          {v[std::size_t(kFace[i][0])], v[std::size_t(kFace[i][2])], v[std::size_t(kFace[i][1])]});
     } else {
       r.status = Status::invalid_topology;  // impossible with a consistent perturbation
     }
@@ -896,9 +938,8 @@ template class Delaunay3<float>;
 template class Delaunay3<double>;
 template Delaunay3Result delaunay<float>(std::span<const Vec3<float>>, const Delaunay3Options&);
 template Delaunay3Result delaunay<double>(std::span<const Vec3<double>>, const Delaunay3Options&);
-template Sign insphere_perturbed<float>(const Vec3<float>&, const Vec3<float>&,
-                                        const Vec3<float>&, const Vec3<float>&,
-                                        const Vec3<float>&) noexcept;
+template Sign insphere_perturbed<float>(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&,
+                                        const Vec3<float>&, const Vec3<float>&) noexcept;
 template Sign insphere_perturbed<double>(const Vec3<double>&, const Vec3<double>&,
                                          const Vec3<double>&, const Vec3<double>&,
                                          const Vec3<double>&) noexcept;

@@ -52,8 +52,7 @@ std::array<mpq_class, 3> exact(const Vec3<T>& p) {
 
 // det[b - a; c - a; d - a] (six times the signed volume), exactly.
 template <class T>
-mpq_class exact_orient(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
-                       const Vec3<T>& pd) {
+mpq_class exact_orient(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc, const Vec3<T>& pd) {
   const auto a = exact(pa), b = exact(pb), c = exact(pc), d = exact(pd);
   mpq_class m[3][3];
   for (int i = 0; i < 3; ++i) {
@@ -87,8 +86,8 @@ Num det4(const Num m[4][4]) {
 // orient(a, b, c, d) > 0: the lifted determinant det[p - e, w_p - w_e] (p = a, b, c, d) with the
 // sign fixed by its value on a known configuration (see the SignConvention test).
 template <class T>
-mpq_class exact_insphere(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
-                         const Vec3<T>& pd, const Vec3<T>& pe) {
+mpq_class exact_insphere(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc, const Vec3<T>& pd,
+                         const Vec3<T>& pe) {
   const Vec3<T>* p[5] = {&pa, &pb, &pc, &pd, &pe};
   mpq_class lift[5];
   for (int i = 0; i < 5; ++i) {
@@ -156,8 +155,8 @@ TetSet brute_force(const Points<T>& pts, bool perturb) {
   std::vector<std::uint32_t> kept;
   for (std::uint32_t i = 0; i < pts.size(); ++i) {
     bool dup = false;
-    for (auto k : kept) dup = dup || (pts[k].x == pts[i].x && pts[k].y == pts[i].y &&
-                                      pts[k].z == pts[i].z);
+    for (auto k : kept)
+      dup = dup || (pts[k].x == pts[i].x && pts[k].y == pts[i].y && pts[k].z == pts[i].z);
     if (!dup) kept.push_back(i);
   }
   TetSet s;
@@ -293,7 +292,8 @@ template <class T>
           brute ? exact_insphere(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]], pts[opposite]) > 0
                 : locus::insphere(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]], pts[opposite]) ==
                       Sign::positive;
-      if (inside) return ::testing::AssertionFailure() << "face of cell " << t << " not locally Delaunay";
+      if (inside)
+        return ::testing::AssertionFailure() << "face of cell " << t << " not locally Delaunay";
     }
   }
   for (const auto& [key, count] : face_count)
@@ -577,9 +577,9 @@ TYPED_TEST(Delaunay3Test, RandomSmallAgainstOracles) {
 // the same one for both methods and for the rational perturbation of the oracle.
 TYPED_TEST(Delaunay3Test, CosphericalAgainstOracles) {
   using T = TypeParam;
-  std::vector<Points<T>> cases = {grid<T>(2, 2, 2),       grid<T>(3, 3, 3),
-                                  grid<T>(2, 3, 4),       integer_sphere<T>(25),
-                                  integer_sphere<T>(5),   integer_sphere<T>(2)};
+  std::vector<Points<T>> cases = {grid<T>(2, 2, 2),     grid<T>(3, 3, 3),
+                                  grid<T>(2, 3, 4),     integer_sphere<T>(25),
+                                  integer_sphere<T>(5), integer_sphere<T>(2)};
   Points<T> cube_center = grid<T>(2, 2, 2, T(2));
   cube_center.push_back({T(1), T(1), T(1)});
   cases.push_back(cube_center);
@@ -678,8 +678,8 @@ TYPED_TEST(Delaunay3Test, ClusteredAndThin) {
   SCOPED_TRACE(rng.trace());
   Points<T> slab;
   for (int i = 0; i < 1000 / kScale; ++i)
-    slab.push_back({rng.uniform(T(-1), T(1)), rng.uniform(T(-1), T(1)),
-                    rng.uniform(T(-1e-3), T(1e-3))});
+    slab.push_back(
+        {rng.uniform(T(-1), T(1)), rng.uniform(T(-1), T(1)), rng.uniform(T(-1e-3), T(1e-3))});
   EXPECT_TRUE(check_delaunay3(slab, run(slab), false));
   Points<T> clusters;
   for (int c = 0; c < 5; ++c) {
