@@ -8,7 +8,9 @@
 // loops. Accuracy (counter max_err, and printed once to stderr): the largest absolute error over
 // the pairs against the exact answer: for distances the minimum over all vertex-triangle and
 // edge-edge pairs (locus point_triangle / segment_segment), for depths the smallest face-plane
-// distance of the hull of the 32 x 32 vertex differences (the Minkowski difference).
+// distance of the hull of the 32 x 32 vertex differences (the Minkowski difference). Counter
+// near_contact_err: the same for distance queries on the separated pairs moved together along
+// their separating direction to distances 1e-8 .. 1e-3 (where termination tolerances show).
 //
 // Peers (LOCUS_HAVE_CCD, LOCUS_HAVE_FCL): libccd 2.1 has no distance query (ccdGJKDist exists
 // only in FCL's fork of it), so its GJK distance is measured through FCL's GJKSolver_libccd;
@@ -136,6 +138,40 @@ const PairSet& pairs(bool separated) {
   return separated ? sep : inter;
 }
 
+/// The separated pairs moved together along their separating direction so that the distance
+/// is 1e-8 .. 1e-3 (near contact, where termination tolerances show); exact by brute force.
+const PairSet& close_pairs() {
+  static const PairSet close = [] {
+    const PairSet& s = pairs(true);
+    PairSet c;
+    std::mt19937_64 rng(303);
+    std::uniform_real_distribution<double> u(3, 8);
+    for (std::size_t i = 0; i < kPairs; ++i) {
+      const auto r = locus::gjk_distance(locus::ConvexPoints<double, 3>{s.a[i].v},
+                                         locus::ConvexPoints<double, 3>{s.b[i].v});
+      const double target = std::pow(10.0, -u(rng));
+      Poly b = s.b[i];
+      for (auto& q : b.v) q -= (s.exact[i] - target) * r.normal;
+      const double e = brute_distance(s.a[i], b);
+      if (!(e > 0)) continue;
+      c.a.push_back(s.a[i]);
+      c.b.push_back(std::move(b));
+      c.exact.push_back(e);
+    }
+    return c;
+  }();
+  return close;
+}
+
+/// Largest error over the near-contact pairs of a distance function (accuracy only).
+template <class F>
+double close_error(F&& distance_of) {
+  const PairSet& c = close_pairs();
+  double max_err = 0;
+  for (std::size_t i = 0; i < c.a.size(); ++i) max_err = std::max(max_err, std::fabs(distance_of(c, i) - c.exact[i]));
+  return max_err;
+}
+
 void report(benchmark::State& state, const char* name, double max_err) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
   state.counters["max_err"] = max_err;
@@ -153,6 +189,9 @@ void BM_Gjk_Distance_locus(benchmark::State& state) {
     const auto r = locus::gjk_distance(locus::ConvexPoints<double, 3>{s.a[i].v}, locus::ConvexPoints<double, 3>{s.b[i].v});
     max_err = std::max(max_err, std::fabs(r.distance - s.exact[i]));
   }
+  state.counters["near_contact_err"] = close_error([](const PairSet& c, std::size_t k) {
+    return locus::gjk_distance(locus::ConvexPoints<double, 3>{c.a[k].v}, locus::ConvexPoints<double, 3>{c.b[k].v}).distance;
+  });
   std::size_t i = 0;
   for (auto _ : state) {
     const auto r = locus::gjk_distance(locus::ConvexPoints<double, 3>{s.a[i].v}, locus::ConvexPoints<double, 3>{s.b[i].v});
@@ -277,6 +316,16 @@ void BM_Gjk_Distance_fcl(benchmark::State& state, const char* name) {
   };
   double max_err = 0;
   for (std::size_t i = 0; i < kPairs; ++i) max_err = std::max(max_err, std::fabs(run(i) - s.exact[i]));
+  {
+    const PairSet& c = close_pairs();
+    const auto ca = fcl_shapes(c.a), cb = fcl_shapes(c.b);
+    state.counters["near_contact_err"] = close_error([&](const PairSet&, std::size_t k) {
+      double d = 0;
+      fcl::Vector3d p1, p2;
+      solver.shapeDistance(ca[k], id, cb[k], id, &d, &p1, &p2);
+      return d;
+    });
+  }
   std::size_t i = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(run(i));

@@ -580,6 +580,8 @@ class Epa3 {
       f.n = V<3>{};
       f.dist = kInf;  // a zero-area face never bounds the depth
     }
+    ++gen_[id];
+    if (f.dist < kInf) heap_push(f.dist, id);
     return id;
   }
 
@@ -591,7 +593,8 @@ class Epa3 {
   }
 
   bool init(const Pt<3>* pts, int npts) {
-    nv_ = nf_ = nfree_ = 0;
+    nv_ = nf_ = nfree_ = nheap_ = 0;
+    heap_overflow_ = false;
     // Initial tetrahedron: far point, far from the line, far from the plane.
     int i0 = 0, i1 = -1, i2 = -1, i3 = -1;
     double best = -1.0;
@@ -650,7 +653,15 @@ class Epa3 {
     return true;
   }
 
-  [[nodiscard]] int closest_face() const noexcept {
+  [[nodiscard]] int closest_face() noexcept {
+    if (!heap_overflow_) {
+      while (nheap_ > 0) {
+        const HeapEntry& top = heap_[0];
+        if (face_[top.face].alive && gen_[top.face] == top.gen) return top.face;
+        heap_pop();
+      }
+      return -1;
+    }
     int best = -1;
     double d = kInf;
     for (int f = 0; f < nf_; ++f)
@@ -713,6 +724,44 @@ class Epa3 {
     }
     return true;
   }
+
+  // Min-heap of (distance, face, generation) with lazy deletion: entries of removed or
+  // recycled faces are skipped when they reach the top.
+  static constexpr int max_heap = 8 * epa_max_vertices;
+  struct HeapEntry {
+    double dist;
+    int face;
+    unsigned gen;
+  };
+  void heap_push(double dist, int f) noexcept {
+    if (nheap_ >= max_heap) {
+      heap_overflow_ = true;  // closest_face() falls back to a scan
+      return;
+    }
+    int i = nheap_++;
+    heap_[i] = {dist, f, gen_[f]};
+    while (i > 0 && heap_[(i - 1) / 2].dist > heap_[i].dist) {
+      std::swap(heap_[(i - 1) / 2], heap_[i]);
+      i = (i - 1) / 2;
+    }
+  }
+  void heap_pop() noexcept {
+    heap_[0] = heap_[--nheap_];
+    int i = 0;
+    for (;;) {
+      const int l = 2 * i + 1, r = l + 1;
+      int m = i;
+      if (l < nheap_ && heap_[l].dist < heap_[m].dist) m = l;
+      if (r < nheap_ && heap_[r].dist < heap_[m].dist) m = r;
+      if (m == i) break;
+      std::swap(heap_[i], heap_[m]);
+      i = m;
+    }
+  }
+  HeapEntry heap_[max_heap];
+  int nheap_ = 0;
+  bool heap_overflow_ = false;
+  unsigned gen_[max_f] = {};
 
   Pt<3> vert_[max_v];
   int nv_ = 0;

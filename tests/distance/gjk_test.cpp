@@ -192,8 +192,8 @@ TEST(Gjk3, RandomPolytopesMatchFeaturePairMinimum) {
       EXPECT_GE(minkowski_signed3(a.pts, moved), -1e-12);
     }
   }
-  EXPECT_GT(separated, 20);
-  EXPECT_GT(intersecting, 20);
+  EXPECT_GT(separated, 20 / kScale);
+  EXPECT_GT(intersecting, 20 / kScale);
   RecordProperty("worst_abs_error", std::to_string(worst));
 }
 
@@ -238,8 +238,8 @@ TEST(Gjk2, RandomPolygonsMatchBruteForce) {
       EXPECT_NEAR(dot(p.normal, p.closest[0] - p.closest[1]), p.depth, 1e-12);
     }
   }
-  EXPECT_GT(separated, 50);
-  EXPECT_GT(intersecting, 50);
+  EXPECT_GT(separated, 50 / kScale);
+  EXPECT_GT(intersecting, 50 / kScale);
 }
 
 // ---- analytic shapes ----------------------------------------------------------------------
