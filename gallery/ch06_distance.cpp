@@ -7,9 +7,15 @@
 // parametrisation, mapped back with locus::barycentric.
 #include "gallery.hpp"
 
+#include <locus/curves/bezier.hpp>
+
 #include <locus/distance/line_line.hpp>
 #include <locus/distance/line_ray.hpp>
 #include <locus/distance/line_segment.hpp>
+#include <locus/distance/point_convex_polygon.hpp>
+#include <locus/distance/point_curve.hpp>
+#include <locus/distance/point_ellipse.hpp>
+#include <locus/distance/point_frustum.hpp>
 #include <locus/distance/point_line.hpp>
 #include <locus/distance/point_polyline.hpp>
 #include <locus/distance/point_ray.hpp>
@@ -20,6 +26,9 @@
 #include <locus/distance/segment_segment.hpp>
 #include <locus/io/svg_primitives.hpp>
 #include <locus/primitives/aligned_box.hpp>
+#include <locus/primitives/ellipse.hpp>
+#include <locus/primitives/frustum.hpp>
+#include <locus/primitives/polygon.hpp>
 #include <locus/primitives/line.hpp>
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/ray.hpp>
@@ -443,6 +452,120 @@ bool fig_6_10(SvgWriter& w) {
   return true;
 }
 
+// ---- frustum, convex polygon, curves ------------------------------------------------------
+
+const Frustum2<double> frustum6{{0, 0}, {0, 1}, {-1, 0}, 1.0, 3.0, 0.6};
+
+// The frustum's trapezoid from locus::point_at(Frustum2, (s, w)).
+std::vector<Vec2d> frustum_outline(const Frustum2<double>& f) {
+  return {point_at(f, Vec2d{-1, 0}), point_at(f, Vec2d{1, 0}), point_at(f, Vec2d{1, 1}),
+          point_at(f, Vec2d{-1, 1})};
+}
+
+// 6.11 (c): the orthogonal frustum (a trapezoid in 2D) cut from the cone with apex E, and
+// closest points of a few query points (locus::distance(Vec2, Frustum2)).
+bool fig_6_11(SvgWriter& w) {
+  const Frustum2<double>& f = frustum6;
+  const double q = f.d_max / f.d_min;
+  w.segment(f.origin, f.origin + f.d_max * f.direction + q * f.l_bound * f.left, dashed(c::gray, 1));
+  w.segment(f.origin, f.origin + f.d_max * f.direction - q * f.l_bound * f.left, dashed(c::gray, 1));
+  closed(w, frustum_outline(f), filled(c::blue, 0.15));
+  point(w, f.origin, "E", c::gray);
+  w.arrow(f.origin, f.origin + 0.7 * f.direction, pen(c::gray, 1.2));
+  label(w, f.origin + 0.7 * f.direction, "D", c::gray);
+  for (const Vec2d& p : {Vec2d{1.6, 1.2}, Vec2d{-0.3, 3.6}, Vec2d{-2.4, 3.4}, Vec2d{0.3, 0.4}}) {
+    const auto d = distance(p, f);
+    if (!std::isfinite(d.distance)) return false;
+    closest_link(w, d, "", "");
+  }
+  label(w, Vec2d{-2.2, -0.4}, "(c) orthogonal frustum: near d = " + fmt(f.d_min) +
+                                  ", far d = " + fmt(f.d_max));
+  return true;
+}
+
+// 6.12: the portion of the frustum in the first quadrant of its frame (x along L, y along D,
+// |x| reflected as the query does); query points in each Voronoi region and their closest
+// points.
+bool fig_6_12(SvgWriter& w) {
+  const Frustum2<double> f{{0, 0}, {0, 1}, {1, 0}, 1.0, 3.0, 0.6};
+  const std::vector<Vec2d> half{point_at(f, Vec2d{0, 0}), point_at(f, Vec2d{1, 0}),
+                                point_at(f, Vec2d{1, 1}), point_at(f, Vec2d{0, 1})};
+  w.arrow(Vec2d{0, 0}, Vec2d{2.8, 0}, pen(c::gray, 1));
+  w.arrow(Vec2d{0, 0}, Vec2d{0, 4.0}, pen(c::gray, 1));
+  label(w, Vec2d{2.8, 0}, "x (L)", c::gray);
+  label(w, Vec2d{0, 4.0}, "y (D)", c::gray);
+  closed(w, half, filled(c::blue, 0.15));
+  label(w, half[1], "(l, n)", c::blue, 6, -14);
+  label(w, half[2], "(fl/n, f)", c::blue, 6, 0);
+  for (const Vec2d& p : {Vec2d{0.3, 0.4}, Vec2d{1.1, 0.3}, Vec2d{1.9, 1.6}, Vec2d{2.4, 3.6},
+                         Vec2d{0.8, 3.7}, Vec2d{0.5, 2.0}}) {
+    const auto d = distance(p, f);
+    if (!std::isfinite(d.distance)) return false;
+    if (d.distance > 0) closest_link(w, d, "", "");
+    else point(w, p, "inside", c::red);
+  }
+  return true;
+}
+
+// 6.13: point to a convex polygon (locus::distance_to_convex_polygon, O(log n)): only the edges
+// visible from the query point (the point is strictly outside their lines, exact
+// locus::orientation) can hold the closest point; they are dotted.
+bool fig_6_13(SvgWriter& w) {
+  std::vector<Vec2d> v;
+  for (int k = 0; k < 9; ++k) {
+    const double a = 2 * std::numbers::pi * k / 9 + 0.2;
+    v.push_back(Vec2d{1.6 * std::cos(a), 1.1 * std::sin(a)});
+  }
+  const Vec2d p{2.9, 1.6};
+  const auto d = distance_to_convex_polygon(p, std::span<const Vec2d>(v));
+  if (!std::isfinite(d.distance)) return false;
+  closed(w, v, filled(c::blue, 0.1));
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec2d a = v[i], b = v[(i + 1) % v.size()];
+    if (orientation(Triangle2<double>{a, b, p}) == Sign::negative) {
+      SvgStyle st = pen(c::orange, 3.0);
+      st.dash = {2, 4};
+      w.segment(a, b, st);
+      w.segment(p, a, dashed(c::light, 1));
+      w.segment(p, b, dashed(c::light, 1));
+    }
+  }
+  closest_link(w, d, "Y", "");
+  return true;
+}
+
+// 6.14: the closest point on a quadratic curve (an ellipse, locus::distance(Vec2, Ellipse2)):
+// the connecting segment is normal to the curve there.
+bool fig_6_14(SvgWriter& w) {
+  const Vec2d u = normalize(Vec2d{1, 0.3});
+  const Ellipse2<double> e{{0, 0}, {u, perp(u)}, {2.0, 1.0}};
+  draw(w, e, pen(c::blue, 2));
+  for (const Vec2d& p : {Vec2d{2.2, 1.6}, Vec2d{-0.6, 0.2}, Vec2d{-1.0, -1.9}}) {
+    const auto d = distance(p, e);
+    if (!std::isfinite(d.distance)) return false;
+    closest_link(w, d, "Y", "");
+  }
+  return true;
+}
+
+// 6.15: the closest point on a polynomial curve (a cubic Bezier curve, locus::distance(Vec2,
+// BezierCurve2): every root of the derivative of the squared distance).
+bool fig_6_15(SvgWriter& w) {
+  const BezierCurve2<double> curve{{{0, 0}, {1.0, 2.2}, {2.4, -1.2}, {3.4, 1.0}}};
+  w.curve(
+      [&](double t) {
+        return point_at(curve, t);
+      },
+      0, 1, 120, pen(c::blue, 2));
+  w.polyline(curve.control, dashed(c::light, 1));
+  for (const Vec2d& p : {Vec2d{1.6, 1.6}, Vec2d{2.0, -0.9}, Vec2d{3.9, 0.2}}) {
+    const auto d = distance(p, curve);
+    if (!std::isfinite(d.distance)) return false;
+    closest_link(w, d, "Y", "t = " + fmt(d.param_b));
+  }
+  return true;
+}
+
 // ---- linear components ----------------------------------------------------------------------
 
 template <class A, class B>
@@ -658,6 +781,11 @@ std::vector<Figure> chapter6_distance_figures() {
       {"6.9", "distance(Vec2, Triangle2) on a grid (which barycentric coordinates vanish)",
        fig_6_9},
       {"6.10", "distance(Vec2, Rectangle2) on a grid (which coordinates are clamped)", fig_6_10},
+      {"6.11", "distance(Vec2, Frustum2), point_at(Frustum2)", fig_6_11},
+      {"6.12", "distance(Vec2, Frustum2)", fig_6_12},
+      {"6.13", "distance_to_convex_polygon, orientation (visible edges)", fig_6_13},
+      {"6.14", "distance(Vec2, Ellipse2)", fig_6_14},
+      {"6.15", "distance(Vec2, BezierCurve2), point_at(BezierCurve2)", fig_6_15},
       {"6.16", "distance(Line2, Line2)", fig_6_16},
       {"6.17", "distance(Line2, Ray2)", fig_6_17},
       {"6.18", "distance(Line2, Segment2)", fig_6_18},
