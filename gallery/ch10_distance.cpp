@@ -8,6 +8,7 @@
 // two carrier lines (locus::distance(Line3, Line3); 10.36).
 #include "gallery.hpp"
 
+#include <locus/curves/bezier.hpp>
 #include <locus/distance/line_line.hpp>
 #include <locus/distance/line_oriented_box.hpp>
 #include <locus/distance/line_ray.hpp>
@@ -15,6 +16,7 @@
 #include <locus/distance/line_segment.hpp>
 #include <locus/distance/line_triangle.hpp>
 #include <locus/distance/point_circle.hpp>
+#include <locus/distance/point_curve.hpp>
 #include <locus/distance/point_ellipsoid.hpp>
 #include <locus/distance/point_frustum.hpp>
 #include <locus/distance/point_line.hpp>
@@ -466,6 +468,23 @@ bool fig_10_24(SvgWriter& w) {
   return true;
 }
 
+// 10.25: distance from points to a parametric curve (a cubic Bezier curve in 3D,
+// locus::distance(Vec3, BezierCurve3): every critical point of the squared distance).
+bool fig_10_25(SvgWriter& w) {
+  w.set_camera(camera({5, -6, 3}, {1.2, 0.5, 0.5}));
+  const BezierCurve<double, 3> curve{{{0, 0, 0}, {0.8, 1.8, 0.6}, {2.0, -0.8, 1.4}, {2.8, 1.2, 0.4}}};
+  std::vector<Vec3d> pts;
+  for (int k = 0; k <= 120; ++k) pts.push_back(point_at(curve, k / 120.0));
+  w.polyline(pts, pen(c::blue, 2));
+  w.polyline(curve.control, dashed(c::light, 1));
+  for (const Vec3d& p : {Vec3d{1.0, 1.4, 1.6}, Vec3d{2.2, -0.6, 0.2}, Vec3d{3.3, 1.6, 1.2}}) {
+    const auto d = distance(p, curve);
+    if (!std::isfinite(d.distance)) return false;
+    link(w, d, "P", "t = " + fmt(d.param_b));
+  }
+  return true;
+}
+
 // ---- linear-linear ----------------------------------------------------------------------------
 
 // 10.27: distance between two lines in 3D; the connecting segment is perpendicular to both.
@@ -773,6 +792,7 @@ std::vector<Figure> chapter10_distance_figures() {
       {"10.22", "distance(Vec3, OrientedBox3) (param_b: clamped box coordinates)", fig_10_22},
       {"10.23", "distance(Vec3, Frustum3), corners", fig_10_23},
       {"10.24", "distance(Vec3, Ellipsoid3), point_at(Ellipsoid3)", fig_10_24},
+      {"10.25", "distance(Vec3, BezierCurve3), point_at(BezierCurve3)", fig_10_25},
       {"10.27", "distance(Line3, Line3)", fig_10_27},
       {"10.28", "distance for the six linear-linear pairs (param_a, param_b)", fig_10_28},
       {"10.29", "distance(Line3, Line3), distance(Segment3, Segment3)", fig_10_29},
