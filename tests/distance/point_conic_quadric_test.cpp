@@ -30,6 +30,13 @@ TYPED_TEST_SUITE(PointConicTest, locus_test::RealTypes);
 
 namespace {
 
+// Fewer cases under the sanitizers (the CI runs every test binary there at -O1 too).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kCaseScale = 3;
+#else
+constexpr int kCaseScale = 1;
+#endif
+
 using LD = long double;
 constexpr LD kInf = std::numeric_limits<LD>::infinity();
 
@@ -221,7 +228,7 @@ TYPED_TEST(PointConicTest, ConicOracle) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   LD worst = 0;
-  for (int n = 0; n < 150; ++n) {
+  for (int n = 0; n < 100 / kCaseScale; ++n) {
     SCOPED_TRACE("case " + std::to_string(n));
     const T d0 = rng.uniform<T>(T(0.2), T(3));
     T d1 = rng.uniform<T>(T(0.2), T(3)), e = T(0), k = -rng.uniform<T>(T(0.5), T(9));
@@ -342,7 +349,7 @@ TYPED_TEST(PointConicTest, QuadricOracle) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   LD worst = 0;
-  for (int n = 0; n < 42; ++n) {
+  for (int n = 0; n < 35 / kCaseScale; ++n) {
     SCOPED_TRACE("case " + std::to_string(n));
     Vec3<T> d{rng.uniform<T>(T(0.2), T(3)), rng.uniform<T>(T(0.2), T(3)), rng.uniform<T>(T(0.2), T(3))};
     T e = T(0), k = -rng.uniform<T>(T(0.5), T(9));

@@ -28,6 +28,13 @@ TYPED_TEST_SUITE(PointCurveTest, locus_test::RealTypes);
 
 namespace {
 
+// Fewer cases under the sanitizers (the CI runs every test binary there at -O1 too).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kCaseScale = 3;
+#else
+constexpr int kCaseScale = 1;
+#endif
+
 using LD = long double;
 
 ::testing::AssertionResult near_ld(LD got, LD want, LD abs_tol) {
@@ -202,7 +209,7 @@ void compare_with_oracle(Gen gen, int cases, const char* what) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   LD worst = 0;
-  for (int n = 0; n < cases; ++n) {
+  for (int n = 0; n < cases / kCaseScale; ++n) {
     SCOPED_TRACE("case " + std::to_string(n));
     const Curve c = gen(rng);
     const Vec<T, N> p = rng.vec<T, N>(T(-12), T(12));
@@ -222,7 +229,7 @@ TYPED_TEST(PointCurveTest, Harness) {
   using T = TypeParam;
   const T S = 10;
   dist::Options<T> opt;
-  opt.cases = 60;
+  opt.cases = 60 / kCaseScale;
   // The compass-search oracle can stall in a local minimum of a wiggly curve: its agreement is
   // not required (the harness still checks it never beats the answer); the long double oracle
   // below checks agreement.
@@ -245,16 +252,16 @@ TYPED_TEST(PointCurveTest, LongDoubleOracle) {
   using T = TypeParam;
   const T S = 10;
   compare_with_oracle<T, 2, BezierCurve<T, 2>>([&](Rng& r) { return random_bezier<T, 2>(r, S, 9); },
-                                               60, "point-bezier2");
+                                               40, "point-bezier2");
   compare_with_oracle<T, 3, BezierCurve<T, 3>>([&](Rng& r) { return random_bezier<T, 3>(r, S, 9); },
-                                               60, "point-bezier3");
+                                               40, "point-bezier3");
   compare_with_oracle<T, 2, BSplineCurve<T, 2>>([&](Rng& r) { return random_bspline<T, 2>(r, S); },
-                                                60, "point-bspline2");
+                                                40, "point-bspline2");
   compare_with_oracle<T, 3, BSplineCurve<T, 3>>([&](Rng& r) { return random_bspline<T, 3>(r, S); },
-                                                60, "point-bspline3");
-  compare_with_oracle<T, 2, NurbsCurve<T, 2>>([&](Rng& r) { return random_nurbs<T, 2>(r, S); }, 60,
+                                                40, "point-bspline3");
+  compare_with_oracle<T, 2, NurbsCurve<T, 2>>([&](Rng& r) { return random_nurbs<T, 2>(r, S); }, 40,
                                               "point-nurbs2");
-  compare_with_oracle<T, 3, NurbsCurve<T, 3>>([&](Rng& r) { return random_nurbs<T, 3>(r, S); }, 60,
+  compare_with_oracle<T, 3, NurbsCurve<T, 3>>([&](Rng& r) { return random_nurbs<T, 3>(r, S); }, 40,
                                               "point-nurbs3");
   // High degrees (beyond the inline buffers) and wiggly curves with many local minima.
   compare_with_oracle<T, 2, BezierCurve<T, 2>>(

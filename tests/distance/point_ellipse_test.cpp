@@ -28,6 +28,13 @@ TYPED_TEST_SUITE(PointEllipseTest, locus_test::RealTypes);
 
 namespace {
 
+// Fewer cases under the sanitizers (the CI runs every test binary there at -O1 too).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kCaseScale = 3;
+#else
+constexpr int kCaseScale = 1;
+#endif
+
 using LD = long double;
 
 template <class T>
@@ -194,11 +201,11 @@ TYPED_TEST(PointEllipseTest, Harness) {
   using T = TypeParam;
   const T S = 10;
   dist::Options<T> opt;
-  opt.cases = 150;
+  opt.cases = 150 / kCaseScale;
   dist::check_pairs<T, 2, Vec2<T>, Ellipse2<T>>(
       [&](Rng& rng) { return std::pair{rng.vec<T, 2>(-S, S), random_ellipse<T>(rng, S, true)}; },
       opt);
-  opt.cases = 60;
+  opt.cases = 60 / kCaseScale;
   dist::check_pairs<T, 3, Vec3<T>, Ellipsoid3<T>>(
       [&](Rng& rng) {
         return std::pair{rng.vec<T, 3>(-S, S), random_ellipsoid<T>(rng, S, true)};
@@ -213,7 +220,7 @@ TYPED_TEST(PointEllipseTest, LongDoubleOracle2D) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   LD worst = 0;
-  for (int n = 0; n < 200; ++n) {
+  for (int n = 0; n < 200 / kCaseScale; ++n) {
     Ellipse2<T> e = random_ellipse<T>(rng, T(4), false);
     if (n % 4 == 1) e.extent[1] = e.extent[0] * T(1e-3);
     if (n % 4 == 2) e.extent[0] = e.extent[1] * T(1e-6);
@@ -236,7 +243,7 @@ TYPED_TEST(PointEllipseTest, LongDoubleOracle3D) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   LD worst = 0;
-  for (int n = 0; n < 60; ++n) {
+  for (int n = 0; n < 60 / kCaseScale; ++n) {
     Ellipsoid3<T> e = random_ellipsoid<T>(rng, T(4), false);
     if (n % 3 == 1) e.extent.z = e.extent.x * T(1e-3);
     const T s = std::max({e.extent.x, e.extent.y, e.extent.z});
