@@ -181,8 +181,9 @@ TYPED_TEST(LinearTriangleTest, SegmentMeetsTriangleExactly) {
       return Vec3<T>{T(rng.uniform_int(-3, 3)), T(rng.uniform_int(-3, 3)),
                      T(rng.uniform_int(-1, 1))};
     };
-    const Triangle3<T> tri{iv(), iv(), iv()};
-    const Segment3<T> seg{iv(), iv()};
+    Triangle3<T> tri{iv(), iv(), iv()};
+    Segment3<T> seg{iv(), iv()};
+    if (n % 4 == 0) tri.v0.z = tri.v1.z = tri.v2.z = seg.p0.z = seg.p1.z = T(0);  // coplanar
     const auto r = distance(seg, tri);
     const mpq_class e = ex::sqr_linear_triangle(q_of(seg), ex::tri_of(tri));
     const bool degenerate = is_degenerate(tri);
@@ -201,7 +202,7 @@ TYPED_TEST(LinearTriangleTest, SegmentMeetsTriangleExactly) {
       ++coplanar;
   }
   EXPECT_GT(zero, kCases / 4);  // the touching cases are actually exercised
-  EXPECT_GT(coplanar, kCases / 20);
+  EXPECT_GT(coplanar, kCases / 2);
 }
 
 // Figure 10.40: the unconstrained minimiser (t, s, u) of a segment-triangle pair falls in one of

@@ -27,9 +27,9 @@ TYPED_TEST_SUITE(PlanarPairsTest, locus_test::RealTypes);
 namespace {
 
 #if defined(__SANITIZE_ADDRESS__)
-constexpr int kCases = 40;
+constexpr int kCases = 24;
 #else
-constexpr int kCases = 80;
+constexpr int kCases = 50;
 #endif
 
 template <class T>

@@ -28,9 +28,10 @@
 // Exact zero: whether the segment meets a non-degenerate triangle is decided EXACTLY (orient3d,
 // plus orient2d when coplanar; core/predicates.hpp). The distance is exactly 0 only when they
 // meet, and is exactly 0 whenever they meet except for ill-conditioned contacts (a needle
-// triangle, a grazing angle) whose rounded closest points differ by more than 32 ulps: those
-// report the rounded pair (~eps / angle apart). When 0, both closest points are the contact
-// point on the triangle. For a degenerate triangle the answer is the rounded edge distance.
+// triangle, a grazing angle) whose rounded closest points differ by more than 32 ulps of the
+// largest input coordinate: those report the rounded pair (~eps / angle apart). When 0, both
+// closest points are the contact point on the triangle. For a degenerate triangle the answer is
+// the rounded edge distance.
 // Degenerate input: a zero-length segment acts as the point p0 (t = 0; the point-triangle query); a
 // (nearly) flat triangle (|e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2: collinear or coincident vertices)
 // acts as the union of its three edges, so the answer is the distance to the segment or point

@@ -36,9 +36,9 @@
 // Exact zero for segment-triangle: segment_meets_triangle() decides with the exact orient3d and
 // orient2d predicates whether a closed segment meets a closed non-degenerate triangle. The
 // segment query reports distance exactly 0 only when they meet, and whenever they meet and the
-// rounded contact pair agrees to 32 ulps (both closest points are then the contact point on the
-// triangle); a contact on a needle triangle or at a grazing angle, whose rounded pair can be
-// ~eps / angle apart, is reported as that pair.
+// rounded contact pair agrees to 32 ulps of the largest coordinate (both closest points are then
+// the contact point on the triangle); a contact on a needle triangle or at a grazing angle, whose
+// rounded pair can be ~eps / angle apart, is reported as that pair.
 
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
@@ -250,9 +250,15 @@ template <class T, class L>
   const LinearPlanarParams<T, Vec3<T>> r = linear_triangle(view(l), tri, meets);
   const Vec3<T> on_line = point_at(l, r.t), on_tri = point_at_barycentric(tri, r.param);
   // They meet exactly: report the contact as one point when the rounded pair agrees to a few
-  // ulps of its magnitude (every well-conditioned contact). A needle triangle or a grazing
-  // segment can leave the rounded pair ~eps / angle apart; the pair is then reported as it is.
-  if (meets == 1 && max_abs(on_line - on_tri) <= T(32) * eps_v<T> * max_abs(on_tri))
+  // ulps of the coordinates' magnitude (every well-conditioned contact). A needle triangle or a
+  // grazing segment can leave the rounded pair ~eps / angle apart; the pair is then reported as it
+  // is.
+  const auto scale = [&] {
+    const T a = max_abs(tri.v0), b = max_abs(tri.v1), c = max_abs(tri.v2), d = max_abs(on_line);
+    const T ab = a > b ? a : b, cd = c > d ? c : d;
+    return ab > cd ? ab : cd;
+  };
+  if (meets == 1 && max_abs(on_line - on_tri) <= T(32) * eps_v<T> * scale())
     return {T(0), T(0), {on_tri, on_tri}, r.t, r.param, r.unique};
   return make_distance(on_line, on_tri, r.t, r.param, r.unique);
 }
