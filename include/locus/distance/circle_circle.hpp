@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Distance between two circles in 3D; row dist3.misc (circle-circle part); book section 10.3.4
+// (the point-circle building block), method of Eberly, "Distance to Circles in 3D".
+//
+// distance(Circle3, Circle3) returns Distance<T, 3, T, T>: param_a / param_b are the angles of
+// closest[0] / closest[1] on the first / second circle (point_at(circle, angle),
+// primitives/circle.hpp), in (-pi, pi]. Both circles are CURVES.
+//
+// Method: circle 0 is P(a) = C0 + r0 (cos a U0 + sin a V0). With D = C0 - C1 and n1 the unit
+// normal of circle 1, the squared distance from P(a) to circle 1 is F(a) = h(a) + r1^2 -
+// 2 r1 sqrt(g(a)), h = |P - C1|^2 and g = |P - C1|^2 - (n1.(P - C1))^2, trigonometric
+// polynomials of degree 1 and 2. F' = 0 reads h' sqrt(g) = r1 g'; squaring and substituting
+// x = tan(a / 2) (cos a = (1 - x^2) / (1 + x^2), sin a = 2x / (1 + x^2)) and clearing (1 + x^2)^4
+// gives a polynomial of degree 8 whose real roots, with a = pi (x = infinity), include every
+// minimiser of F. Each candidate is evaluated in the cancellation-free form
+// (n1.(P - C1))^2 + (rho - r1)^2 and the smallest wins (the global minimum; never below the true
+// distance by more than rounding); its closest point on circle 1 is the point-circle answer
+// (point_circle.hpp). Set-up and roots run in compute_t<T> (double for float). The pair is
+// solved in a canonical argument order, so distance(b, a) is bit for bit the swap of
+// distance(a, b).
+//
+// unique = false for coaxial circles (parallel normals, centers on a common axis, including
+// concentric coplanar circles): F is then constant, detected as the degree-8 polynomial
+// cancelling to rounding level (h'^2 g and r1^2 g'^2 agree coefficient-wise within 1024 eps of
+// their size); angle 0 of the first circle is returned. unique = false also when the chosen
+// point lies on the other circle's axis (the other circle is then equidistant). Other finite
+// ties (symmetric configurations, two intersection points) return one pair with unique = true.
+// Coplanar, touching and intersecting circles need no special case (intersecting: distance 0
+// up to rounding of the root).
+//
+// Degenerate input: a zero radius makes that circle the point center (point_circle.hpp; its
+// angle is 0); two zero radii give the two centers. A negative radius, a zero normal, and NaN
+// or infinite values give non_finite_distance() (result.hpp). Cost: O(1) but heavier than most
+// pairs: building the degree-8 polynomial and real_roots() (which allocates its O(n^2)
+// workspace, a few hundred bytes), at most 9 candidate evaluations, one atan2.
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/distance/line_circle.hpp>  // detail::sqr_distance_to_circle
+#include <locus/distance/point_circle.hpp>
+#include <locus/distance/result.hpp>
+#include <locus/numeric/polynomial.hpp>
+#include <locus/numeric/roots.hpp>
+#include <locus/primitives/circle.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace locus {
+
+namespace detail {
+
+/// Lexicographic order on the raw scalars of a circle, for the canonical argument order.
+template <class T>
+[[nodiscard]] inline bool circle3_less(const Circle3<T>& a, const Circle3<T>& b) noexcept {
+  const T va[7] = {a.center.x, a.center.y, a.center.z, a.normal.x,
+                   a.normal.y, a.normal.z, a.radius};
+  const T vb[7] = {b.center.x, b.center.y, b.center.z, b.normal.x,
+                   b.normal.y, b.normal.z, b.radius};
+  return std::lexicographical_compare(va, va + 7, vb, vb + 7);
+}
+
+template <class T>
+[[nodiscard]] inline Distance<T, 3, T, T> circle_circle3(const Circle3<T>& c0,
+                                                         const Circle3<T>& c1) noexcept {
+  using C = compute_t<T>;
+  // A zero radius: that circle is its center.
+  if (!(c1.radius > T(0))) {
+    const Distance<T, 3, T, NoParam> pc = distance(c0, c1.center);
+    return {pc.distance, pc.sqr_distance, pc.closest, pc.param_a, T(0), pc.unique};
+  }
+  if (!(c0.radius > T(0))) {
+    const Distance<T, 3, NoParam, T> pc = distance(c0.center, c1);
+    return {pc.distance, pc.sqr_distance, pc.closest, T(0), pc.param_b, pc.unique};
+  }
+  const CircleAxes<C> ax = circle_axes_of_normal(vec_cast<C>(c0.normal));
+  const Vec3<C> n1 = normalize(vec_cast<C>(c1.normal));
+  if (ax.u == Vec3<C>{} || n1 == Vec3<C>{}) return non_finite_distance<T, 3, T, T>();
+  const C r0 = static_cast<C>(c0.radius), r1 = static_cast<C>(c1.radius);
+  const Vec3<C> d = vec_cast<C>(c0.center) - vec_cast<C>(c1.center);
+  const auto perp = [&](const Vec3<C>& w) { return w - dot(w, n1) * n1; };
+  const Vec3<C> dp = perp(d), up = perp(ax.u), vp = perp(ax.v);
+  const C a = dot(d, ax.u), b = dot(d, ax.v);
+  const C dd = dot(dp, dp), du = dot(dp, up), dv = dot(dp, vp);
+  const C uu = dot(up, up), vv = dot(vp, vp), uv = dot(up, vp);
+
+  using Poly = Polynomial<C>;
+  const Poly one_p{C(1), C(0), C(1)};   // 1 + x^2
+  const Poly one_m{C(1), C(0), C(-1)};  // 1 - x^2
+  const Poly x{C(0), C(1)};
+  // (1 + x^2) h'(a), (1 + x^2)^2 g(a) and (1 + x^2)^2 g'(a) as polynomials in x = tan(a / 2).
+  const Poly hp = C(2) * r0 * (b * one_m - C(2) * a * x);
+  const Poly g = dd * (one_p * one_p) +
+                 r0 * r0 * (uu * (one_m * one_m) + C(4) * uv * (x * one_m) + C(4) * vv * (x * x)) +
+                 C(2) * r0 * (one_p * (du * one_m + C(2) * dv * x));
+  const Poly gp =
+      r0 * r0 * (C(4) * (vv - uu) * (x * one_m) + C(2) * uv * (one_m * one_m - C(4) * (x * x))) +
+      C(2) * r0 * (one_p * (dv * one_m - C(2) * du * x));
+  const Poly lhs = hp * hp * g;
+  const Poly rhs = r1 * r1 * (gp * gp);
+
+  // Coaxial circles: F is constant and the two sides agree to rounding.
+  C size = C(0), diff = C(0);
+  for (int i = 0; i <= 8; ++i) {
+    size = std::max(size, std::abs(lhs[i]) + std::abs(rhs[i]));
+    diff = std::max(diff, std::abs(lhs[i] - rhs[i]));
+  }
+  const bool coaxial = diff <= C(1024) * eps_v<C> * size;
+
+  C best_a = C(0);
+  if (!coaxial) {
+    std::vector<C> coeff(9);
+    for (int i = 0; i <= 8; ++i) coeff[static_cast<std::size_t>(i)] = lhs[i] - rhs[i];
+    const RealRootsResult<C> roots = real_roots(Poly(std::move(coeff)));
+    const auto f_at = [&](C angle) {
+      const Vec3<C> w = d + (r0 * std::cos(angle)) * ax.u + (r0 * std::sin(angle)) * ax.v;
+      return sqr_distance_to_circle(w, n1, r1);
+    };
+    best_a = pi_v<C>;
+    C best_f = f_at(best_a);
+    for (const Root<C>& root : roots.roots) {
+      const C angle = C(2) * std::atan(root.value);
+      const C f = f_at(angle);
+      if (f < best_f) best_f = f, best_a = angle;
+    }
+  }
+  const T angle0 = static_cast<T>(best_a);
+  const Vec3<T> p = point_at(c0, angle0);
+  const Distance<T, 3, NoParam, T> pc = distance(p, c1);
+  if (std::isnan(pc.distance)) return non_finite_distance<T, 3, T, T>();
+  return make_distance(p, pc.closest[1], angle0, pc.param_b, pc.unique && !coaxial);
+}
+
+}  // namespace detail
+
+/// Distance between two circles (curves) in 3D; param_a, param_b are the angles.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, T, T> distance(const Circle3<T>& a,
+                                                   const Circle3<T>& b) noexcept {
+  if (!detail::circle3_ok(a.center, a.center, a.normal, a.radius) ||
+      !detail::circle3_ok(b.center, b.center, b.normal, b.radius))
+    return non_finite_distance<T, 3, T, T>();
+  if (detail::circle3_less(b, a)) return swapped(detail::circle_circle3(b, a));
+  return detail::circle_circle3(a, b);
+}
+
+}  // namespace locus

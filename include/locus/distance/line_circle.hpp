@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Distance between a line, ray or segment and a circle in 3D; row dist3.misc (linear-circle
+// part); book section 10.3.4 (the point-circle building block, figures 10.16-10.19), method of
+// Eberly, "Distance between a line and a circle in 3D".
+//
+// distance(linear, Circle3) returns Distance<T, 3, T, T>: param_a is the linear parameter of
+// closest[0] (Line: t in R, Ray: t >= 0, Segment: t in [0, 1], as point_at), param_b the circle's
+// angle of closest[1] (point_at(circle, angle), primitives/circle.hpp), in (-pi, pi]. The circle
+// is the CURVE. distance(Circle3, linear) is the swapped result.
+//
+// Method: with the line P(t) = B + t M, D = B - C and the unit normal n, the squared distance
+// from P(t) to the circle is F(t) = (n.(D + tM))^2 + (|Q(t)| - r)^2 = h(t) + r^2 - 2 r sqrt(g(t)),
+// Q the part of D + tM perpendicular to n, h = |D + tM|^2 and g = |Q|^2 both quadratics in t.
+// F'(t) = 0 reads h' sqrt(g) = r g'; squaring gives the quartic h'^2 g - r^2 g'^2 = 0, whose
+// real roots include every interior minimiser (also the non-smooth points g = 0, where g' = 0).
+// The candidates are those roots, the minimisers of h and of g, and the domain's endpoints,
+// each clamped to the domain; F is evaluated cancellation-free in the form above and the
+// smallest wins, so the minimum is global (every candidate is a realisable pair of points, so
+// the answer is never below the true distance by more than rounding). The closest circle point
+// of the winner is then the point-circle answer (point_circle.hpp). Polynomial set-up, roots
+// and candidate evaluation run in compute_t<T> (double for float).
+//
+// unique = false when the closest point of the linear component lies on the circle's axis with
+// a positive radius (every circle point is then equidistant): the line IS the axis, or a ray /
+// segment ends on the axis nearer than any other point. An interior crossing of the axis by a
+// line that is not the axis is never a minimum. Finitely many tied pairs (a line in the circle's
+// plane crossing it twice, symmetric configurations) return one of them with unique = true.
+//
+// Degenerate input: a zero direction (zero-length segment) acts as its point (t = 0); a zero
+// radius is the point center; a line in the circle's plane is handled by the same quartic (an
+// intersection gives distance 0). A negative radius, a zero normal, and NaN or infinite values
+// give non_finite_distance() (result.hpp). Cost: O(1): one quartic (solve_quartic, no
+// allocation), at most 8 candidate evaluations, one atan2.
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/distance/detail/linear.hpp>
+#include <locus/distance/point_circle.hpp>
+#include <locus/distance/result.hpp>
+#include <locus/numeric/roots.hpp>
+#include <locus/primitives/circle.hpp>
+#include <locus/primitives/line.hpp>
+#include <locus/primitives/ray.hpp>
+#include <locus/primitives/segment.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace locus {
+
+namespace detail {
+
+/// The squared distance from the point D (relative to the circle's center) to the circle with
+/// unit normal n and radius r, in the cancellation-free form z^2 + (rho - r)^2.
+template <class C>
+[[nodiscard]] inline C sqr_distance_to_circle(const Vec3<C>& d, const Vec3<C>& n, C r) noexcept {
+  const C z = dot(d, n);
+  const C rho = length(d - z * n);
+  return z * z + sqr(rho - r);
+}
+
+template <class T, class Lin>
+[[nodiscard]] inline Distance<T, 3, T, T> linear_circle3(const Lin& lin,
+                                                         const Circle3<T>& c) noexcept {
+  if (!finite_input(lin) || !circle3_ok(c.center, c.center, c.normal, c.radius))
+    return non_finite_distance<T, 3, T, T>();
+  using C = compute_t<T>;
+  const LinearView<T, 3> v = view(lin);
+  const Vec3<C> n = normalize(vec_cast<C>(c.normal));
+  if (n == Vec3<C>{}) return non_finite_distance<T, 3, T, T>();
+  const Vec3<C> d = vec_cast<C>(v.origin) - vec_cast<C>(c.center);
+  const Vec3<C> m = vec_cast<C>(v.dir);
+  const C r = static_cast<C>(c.radius);
+
+  // Candidate parameters (clamped to the domain below).
+  std::array<C, 9> cand{};
+  int nc = 0;
+  cand[nc++] = C(0);
+  if (v.bounded_hi) cand[nc++] = C(1);
+  const C mm = dot(m, m);
+  if (mm > C(0) && is_finite(mm)) {
+    const Vec3<C> dp = d - dot(d, n) * n;  // parts perpendicular to the axis
+    const Vec3<C> mp = m - dot(m, n) * n;
+    const C md = dot(m, d), pp = dot(mp, mp), pd = dot(mp, dp), dd = dot(dp, dp);
+    cand[nc++] = -md / mm;                 // minimiser of h: the point nearest the center
+    if (pp > C(0)) cand[nc++] = -pd / pp;  // minimiser of g: nearest the axis
+    // (h'/2)^2 g - r^2 (g'/2)^2 with h'/2 = mm t + md, g = pp t^2 + 2 pd t + dd, g'/2 = pp t + pd.
+    const C r2 = r * r;
+    const C q0 = md * md, q1 = C(2) * mm * md, q2 = mm * mm;
+    const C g0 = dd, g1 = C(2) * pd, g2 = pp;
+    const RootsResult<C> roots =
+        solve_quartic<C>(q0 * g0 - r2 * pd * pd, q0 * g1 + q1 * g0 - r2 * C(2) * pp * pd,
+                         q0 * g2 + q1 * g1 + q2 * g0 - r2 * pp * pp, q1 * g2 + q2 * g1, q2 * g2);
+    for (const Root<C>& root : roots) cand[nc++] = root.value;
+  }
+
+  C best_t = C(0);
+  C best_f = std::numeric_limits<C>::infinity();
+  for (int i = 0; i < nc; ++i) {
+    C t = cand[static_cast<std::size_t>(i)];
+    if (!is_finite(t)) continue;
+    if (v.bounded_lo && t < C(0)) t = C(0);
+    if (v.bounded_hi && t > C(1)) t = C(1);
+    const C f = sqr_distance_to_circle(d + t * m, n, r);
+    if (f < best_f) best_f = f, best_t = t;
+  }
+
+  T t = static_cast<T>(best_t);
+  if (v.bounded_hi && t > T(1)) t = T(1);
+  const Vec3<T> p = v.at(t);
+  const Distance<T, 3, NoParam, T> pc = distance(p, c);
+  if (std::isnan(pc.distance)) return non_finite_distance<T, 3, T, T>();
+  return make_distance(p, pc.closest[1], t, pc.param_b, pc.unique);
+}
+
+}  // namespace detail
+
+/// Distance between a line and a circle (the curve) in 3D; param_a = t, param_b = the angle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, T, T> distance(const Line<T, 3>& l,
+                                                   const Circle3<T>& c) noexcept {
+  return detail::linear_circle3(l, c);
+}
+/// Distance between a ray and a circle (the curve) in 3D; param_a = t >= 0, param_b = the angle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, T, T> distance(const Ray<T, 3>& r,
+                                                   const Circle3<T>& c) noexcept {
+  return detail::linear_circle3(r, c);
+}
+/// Distance between a segment and a circle (the curve) in 3D; param_a = t in [0, 1], param_b =
+/// the angle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, T, T> distance(const Segment<T, 3>& s,
+                                                   const Circle3<T>& c) noexcept {
+  return detail::linear_circle3(s, c);
+}
+
+/// The swapped query: closest[0] and param_a belong to the circle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, T, T> distance(const Circle3<T>& c,
+                                                   const Line<T, 3>& l) noexcept {
+  return swapped(distance(l, c));
+}
+/// The swapped query: closest[0] and param_a belong to the circle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, T, T> distance(const Circle3<T>& c,
+                                                   const Ray<T, 3>& r) noexcept {
+  return swapped(distance(r, c));
+}
+/// The swapped query: closest[0] and param_a belong to the circle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 3, T, T> distance(const Circle3<T>& c,
+                                                   const Segment<T, 3>& s) noexcept {
+  return swapped(distance(s, c));
+}
+
+}  // namespace locus

@@ -1,0 +1,371 @@
+// SPDX-License-Identifier: BSL-1.0
+// Tests for distance/line_circle.hpp and circle_circle.hpp (row dist3.misc: line / ray / segment
+// to circle and circle to circle in 3D).
+//
+// Oracles: the generic harness (random parameter search), and an independent long-double brute
+// force: dense sampling of the (first) circle's angle with the exact closed-form distance from
+// each sample to the other object (point-linear clamp or point-circle), then golden-section
+// refinement of every discrete local minimum.
+#include <locus/distance/circle_circle.hpp>
+#include <locus/distance/line_circle.hpp>
+
+#include "distance/harness.hpp"
+#include "support/typed.hpp"
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+using namespace locus;
+using locus_test::Rng;
+namespace dist = locus_test::dist;
+
+template <class T>
+class Circle3PairsTest : public ::testing::Test {};
+TYPED_TEST_SUITE(Circle3PairsTest, locus_test::RealTypes);
+
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kCaseScale = 4;
+#else
+constexpr int kCaseScale = 1;
+#endif
+
+using LD = long double;
+using V = Vec3<LD>;
+
+::testing::AssertionResult near_ld(LD got, LD want, LD abs_tol) {
+  if (std::abs(got - want) <= abs_tol) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << "got " << static_cast<double>(got) << ", brute force " << static_cast<double>(want)
+         << ", tol " << static_cast<double>(abs_tol);
+}
+
+struct CircleLD {
+  V c, u, v, n;
+  LD r;
+};
+
+template <class T>
+CircleLD to_ld(const Circle3<T>& c) {
+  const V n = vec_cast<LD>(c.normal) / std::sqrt(sqr_length(vec_cast<LD>(c.normal)));
+  // An independent basis of the plane (any will do: the oracle only needs the point set).
+  const V h = std::abs(n.x) < LD(0.6) ? V{1, 0, 0} : V{0, 1, 0};
+  V u = cross(n, h);
+  u = u / std::sqrt(sqr_length(u));
+  return {vec_cast<LD>(c.center), u, cross(n, u), n, LD(c.radius)};
+}
+
+LD sqr_to_circle(const V& p, const CircleLD& c) {
+  const V d = p - c.c;
+  const LD z = dot(d, c.n);
+  const LD rho = std::sqrt(sqr_length(d - z * c.n));
+  return z * z + (rho - c.r) * (rho - c.r);
+}
+
+struct LinLD {
+  V o, d;
+  bool lo, hi;
+};
+template <class T>
+LinLD to_ld(const Line<T, 3>& l) {
+  return {vec_cast<LD>(l.origin), vec_cast<LD>(l.direction), false, false};
+}
+template <class T>
+LinLD to_ld(const Ray<T, 3>& l) {
+  return {vec_cast<LD>(l.origin), vec_cast<LD>(l.direction), true, false};
+}
+template <class T>
+LinLD to_ld(const Segment<T, 3>& s) {
+  return {vec_cast<LD>(s.p0), vec_cast<LD>(s.p1) - vec_cast<LD>(s.p0), true, true};
+}
+
+LD sqr_to_linear(const V& p, const LinLD& l) {
+  const LD dd = sqr_length(l.d);
+  LD t = dd > 0 ? dot(p - l.o, l.d) / dd : LD(0);
+  if (l.lo && t < 0) t = 0;
+  if (l.hi && t > 1) t = 1;
+  return sqr_length(l.o + t * l.d - p);
+}
+
+/// min over the angle a of f(a): 1024 samples, each discrete local minimum refined by golden
+/// section on its neighbouring interval.
+template <class F>
+LD min_over_angle(F&& f) {
+  constexpr int n = 1024;
+  const LD two_pi = LD(2) * std::acos(LD(-1));
+  const LD h = two_pi / n;
+  static LD val[n];
+  for (int i = 0; i < n; ++i) val[i] = f(h * LD(i));
+  LD best = std::numeric_limits<LD>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const LD prev = val[(i + n - 1) % n], next = val[(i + 1) % n];
+    if (!(val[i] <= prev && val[i] <= next)) continue;
+    LD a = h * LD(i - 1), b = h * LD(i + 1);
+    const LD g = (std::sqrt(LD(5)) - 1) / 2;
+    LD x1 = b - g * (b - a), x2 = a + g * (b - a);
+    LD f1 = f(x1), f2 = f(x2);
+    for (int k = 0; k < 80; ++k) {
+      if (f1 < f2) {
+        b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = f(x1);
+      } else {
+        a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = f(x2);
+      }
+    }
+    best = std::min({best, val[i], f1, f2});
+  }
+  return best;
+}
+
+template <class Lin, class T>
+LD brute_linear_circle(const Lin& lin, const Circle3<T>& c) {
+  const CircleLD cl = to_ld(c);
+  const LinLD ll = to_ld(lin);
+  return std::sqrt(min_over_angle([&](LD a) {
+    return sqr_to_linear(cl.c + cl.r * (std::cos(a) * cl.u + std::sin(a) * cl.v), ll);
+  }));
+}
+
+template <class T>
+LD brute_circle_circle(const Circle3<T>& c0, const Circle3<T>& c1) {
+  const CircleLD a = to_ld(c0), b = to_ld(c1);
+  return std::sqrt(min_over_angle(
+      [&](LD t) { return sqr_to_circle(a.c + a.r * (std::cos(t) * a.u + std::sin(t) * a.v), b); }));
+}
+
+template <class T>
+Circle3<T> random_circle(Rng& rng, T s) {
+  const T r = rng.uniform_int(0, 15) == 0 ? T(0) : rng.uniform<T>(T(0.2), T(6));
+  return {rng.vec<T, 3>(-s, s), rng.unit<T, 3>() * rng.uniform<T>(T(0.5), T(3)), r};
+}
+
+/// A circle in a special position relative to `base`: coplanar, coaxial, or through its axis.
+template <class T>
+Circle3<T> related_circle(Rng& rng, const Circle3<T>& base, T s) {
+  Circle3<T> c = random_circle(rng, s);
+  const Vec3<T> n = normalize(base.normal);
+  switch (rng.uniform_int(0, 3)) {
+    case 0:  // coplanar
+      c.normal = base.normal;
+      c.center = c.center - dot(c.center - base.center, n) * n;
+      break;
+    case 1:  // coaxial
+      c.normal = -T(2) * base.normal;
+      c.center = base.center + rng.uniform<T>(-s, s) * n;
+      break;
+    case 2:  // center on base's axis, tilted
+      c.center = base.center + rng.uniform<T>(-s, s) * n;
+      break;
+    default:
+      break;
+  }
+  return c;
+}
+
+template <class T>
+T dist_tol(T s) {
+  // Roots are computed in double; the final points are rounded to T.
+  return (std::is_same_v<T, float> ? T(4e-6) : T(1e-12)) * s;
+}
+
+}  // namespace
+
+TYPED_TEST(Circle3PairsTest, Harness) {
+  using T = TypeParam;
+  const T S = 10;
+  dist::Options<T> opt;
+  opt.cases = 100 / kCaseScale;
+  // Circles are not convex: the harness's local search stalls in local minima (always above
+  // the answer; check 5's one-sided bound still applies). Agreement is checked against the
+  // brute force below instead.
+  opt.check_agreement = false;
+  dist::check_pairs<T, 3, Line<T, 3>, Circle3<T>>(
+      [&](Rng& rng) {
+        return std::pair{Line<T, 3>{rng.vec<T, 3>(-S, S), rng.unit<T, 3>() * T(2)},
+                         random_circle(rng, S)};
+      },
+      opt);
+  dist::check_pairs<T, 3, Ray<T, 3>, Circle3<T>>(
+      [&](Rng& rng) {
+        return std::pair{Ray<T, 3>{rng.vec<T, 3>(-S, S), rng.unit<T, 3>() * T(0.7)},
+                         random_circle(rng, S)};
+      },
+      opt);
+  dist::check_pairs<T, 3, Segment<T, 3>, Circle3<T>>(
+      [&](Rng& rng) {
+        return std::pair{Segment<T, 3>{rng.vec<T, 3>(-S, S), rng.vec<T, 3>(-S, S)},
+                         random_circle(rng, S)};
+      },
+      opt);
+  dist::check_pairs<T, 3, Circle3<T>, Circle3<T>>(
+      [&](Rng& rng) {
+        const Circle3<T> a = random_circle(rng, S);
+        return std::pair{
+            a, rng.uniform_int(0, 2) == 0 ? related_circle(rng, a, S) : random_circle(rng, S / 2)};
+      },
+      opt);
+}
+
+TYPED_TEST(Circle3PairsTest, LinearAgainstBruteForce) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const T S = 8;
+  for (int i = 0; i < 60 / kCaseScale; ++i) {
+    const Circle3<T> c = random_circle(rng, S);
+    Vec3<T> o = rng.vec<T, 3>(-S, S), d = rng.unit<T, 3>() * rng.uniform<T>(T(0.5), T(4));
+    const Vec3<T> n = normalize(c.normal);
+    switch (i % 4) {
+      case 0:  // in the circle's plane
+        o = o - dot(o - c.center, n) * n;
+        d = d - dot(d, n) * n;
+        break;
+      case 1:  // through the axis
+        o = c.center + rng.uniform<T>(-S, S) * n;
+        break;
+      case 2:  // parallel to the axis
+        d = n * T(3);
+        break;
+      default:
+        break;
+    }
+    SCOPED_TRACE("case " + std::to_string(i));
+    const Line<T, 3> line{o, d};
+    const Ray<T, 3> ray{o, d};
+    const Segment<T, 3> seg{o, o + d};
+    const auto rl = distance(line, c), rr = distance(ray, c), rs = distance(seg, c);
+    EXPECT_TRUE(near_ld(LD(rl.distance), brute_linear_circle(line, c), LD(dist_tol<T>(S))));
+    EXPECT_TRUE(near_ld(LD(rr.distance), brute_linear_circle(ray, c), LD(dist_tol<T>(S))));
+    EXPECT_TRUE(near_ld(LD(rs.distance), brute_linear_circle(seg, c), LD(dist_tol<T>(S))));
+    EXPECT_LE(rl.distance, rr.distance + dist_tol<T>(S));
+    EXPECT_LE(rr.distance, rs.distance + dist_tol<T>(S));
+    const auto sw = distance(c, seg);
+    EXPECT_EQ(sw.distance, rs.distance);
+    EXPECT_EQ(sw.closest[0], rs.closest[1]);
+    EXPECT_EQ(sw.param_b, rs.param_a);
+  }
+}
+
+TYPED_TEST(Circle3PairsTest, CircleCircleAgainstBruteForce) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const T S = 6;
+  for (int i = 0; i < 80 / kCaseScale; ++i) {
+    const Circle3<T> a = random_circle(rng, S);
+    const Circle3<T> b = i % 2 ? related_circle(rng, a, S) : random_circle(rng, S);
+    SCOPED_TRACE("case " + std::to_string(i));
+    const auto r = distance(a, b);
+    EXPECT_TRUE(near_ld(LD(r.distance), brute_circle_circle(a, b), LD(dist_tol<T>(S))));
+    const auto q = distance(b, a);
+    EXPECT_EQ(q.distance, r.distance);
+    EXPECT_EQ(q.closest[0], r.closest[1]);
+    EXPECT_EQ(q.param_a, r.param_b);
+    EXPECT_EQ(q.unique, r.unique);
+  }
+}
+
+TYPED_TEST(Circle3PairsTest, LinearSpecialConfigurations) {
+  using T = TypeParam;
+  const Vec3<T> z{0, 0, 1};
+  const Circle3<T> c{{T(1), T(2), T(3)}, z * T(4), T(2)};
+  const Vec3<T> o = c.center;
+  const T e = T(64) * eps_v<T> * T(10);
+  // The line is the axis: every circle point is closest to the center.
+  const auto axis = distance(Line<T, 3>{o + T(5) * z, -z}, c);
+  EXPECT_NEAR(axis.distance, T(2), e);
+  EXPECT_FALSE(axis.unique);
+  EXPECT_TRUE(locus_test::vec_near(axis.closest[0], o, e));
+  // A segment along the axis ending above the center: its end is closest, non-unique.
+  const auto up = distance(Segment<T, 3>{o + z, o + T(5) * z}, c);
+  EXPECT_NEAR(up.distance, std::sqrt(T(5)), e);
+  EXPECT_FALSE(up.unique);
+  EXPECT_EQ(up.param_a, T(0));
+  // In the plane, crossing the circle: distance 0.
+  const auto cross_in = distance(Line<T, 3>{o + Vec3<T>{-5, T(0.5), 0}, {1, 0, 0}}, c);
+  EXPECT_NEAR(cross_in.distance, T(0), e);
+  EXPECT_NEAR(cross_in.closest[0].y, o.y + T(0.5), e);
+  // In the plane, outside: the point of the circle nearest the line.
+  const auto out = distance(Line<T, 3>{o + Vec3<T>{-5, 3, 0}, {2, 0, 0}}, c);
+  EXPECT_NEAR(out.distance, T(1), e);
+  EXPECT_TRUE(locus_test::vec_near(out.closest[0], o + Vec3<T>{0, 3, 0}, e));
+  EXPECT_TRUE(locus_test::vec_near(out.closest[1], o + Vec3<T>{0, 2, 0}, e));
+  EXPECT_TRUE(out.unique);
+  // Parallel to the axis outside the circle.
+  const auto par = distance(Ray<T, 3>{o + Vec3<T>{5, 0, -3}, z}, c);
+  EXPECT_NEAR(par.distance, T(3), e);
+  EXPECT_NEAR(par.param_a, T(3), e);
+  EXPECT_TRUE(locus_test::vec_near(par.closest[1], o + Vec3<T>{2, 0, 0}, e));
+  // Parallel to the axis inside the circle, ray starting above the plane pointing away.
+  const auto par_in = distance(Ray<T, 3>{o + Vec3<T>{T(0.5), 0, 1}, z}, c);
+  EXPECT_NEAR(par_in.distance, std::sqrt(T(1) + T(1.5) * T(1.5)), e);
+  // Zero radius: point-line distance; zero-length segment: point-circle distance.
+  const auto pt = distance(Line<T, 3>{o + Vec3<T>{0, 3, 7}, {1, 0, 0}}, Circle3<T>{o, z, T(0)});
+  EXPECT_NEAR(pt.distance, std::sqrt(T(58)), e);
+  const auto zs = distance(Segment<T, 3>{o + Vec3<T>{0, 5, 0}, o + Vec3<T>{0, 5, 0}}, c);
+  EXPECT_NEAR(zs.distance, T(3), e);
+  EXPECT_EQ(zs.param_a, T(0));
+  // Swapped overloads.
+  const auto sw = distance(c, Ray<T, 3>{o + Vec3<T>{5, 0, -3}, z});
+  EXPECT_EQ(sw.closest[0], par.closest[1]);
+  EXPECT_EQ(sw.param_a, par.param_b);
+}
+
+TYPED_TEST(Circle3PairsTest, CircleSpecialConfigurations) {
+  using T = TypeParam;
+  const Vec3<T> z{0, 0, 1}, o{T(1), T(-2), T(0.5)};
+  const T e = T(256) * eps_v<T> * T(10);
+  // Coaxial: every pair at the same angle is closest.
+  const auto coax = distance(Circle3<T>{o, z, T(1)}, Circle3<T>{o + T(3) * z, T(-2) * z, T(2)});
+  EXPECT_NEAR(coax.distance, std::sqrt(T(10)), e);
+  EXPECT_FALSE(coax.unique);
+  // Concentric coplanar.
+  const auto conc = distance(Circle3<T>{o, z, T(1)}, Circle3<T>{o, z, T(2.5)});
+  EXPECT_NEAR(conc.distance, T(1.5), e);
+  EXPECT_FALSE(conc.unique);
+  // Coplanar, apart and touching.
+  const auto apart = distance(Circle3<T>{o, z, T(1)}, Circle3<T>{o + Vec3<T>{5, 0, 0}, z, T(2)});
+  EXPECT_NEAR(apart.distance, T(2), e);
+  EXPECT_TRUE(apart.unique);
+  EXPECT_TRUE(locus_test::vec_near(apart.closest[0], o + Vec3<T>{1, 0, 0}, e));
+  EXPECT_TRUE(locus_test::vec_near(apart.closest[1], o + Vec3<T>{3, 0, 0}, e));
+  const auto touch = distance(Circle3<T>{o, z, T(1)}, Circle3<T>{o + Vec3<T>{3, 0, 0}, z, T(2)});
+  EXPECT_NEAR(touch.distance, T(0), std::sqrt(e));
+  // Coplanar, one inside the other (internally nested, not concentric).
+  const auto nest = distance(Circle3<T>{o, z, T(4)}, Circle3<T>{o + Vec3<T>{1, 0, 0}, z, T(1)});
+  EXPECT_NEAR(nest.distance, T(2), e);
+  // Crossing transversally at o + (1, 0, 0).
+  const auto cr =
+      distance(Circle3<T>{o, z, T(1)}, Circle3<T>{o + Vec3<T>{T(0.5), 0, 0}, {0, 1, 0}, T(0.5)});
+  EXPECT_NEAR(cr.distance, T(0), e);
+  EXPECT_TRUE(locus_test::vec_near(cr.closest[0], o + Vec3<T>{1, 0, 0}, std::sqrt(e)));
+  // Linked rings (Hopf link): positive distance, compared with the brute force.
+  const Circle3<T> ring0{o, z, T(1)}, ring1{o + Vec3<T>{1, 0, 0}, {0, 1, 0}, T(1)};
+  EXPECT_TRUE(near_ld(LD(distance(ring0, ring1).distance), brute_circle_circle(ring0, ring1),
+                      LD(dist_tol<T>(T(10)))));
+  // Zero radii.
+  const auto p1 = distance(Circle3<T>{o, z, T(1)}, Circle3<T>{o + T(2) * z, z, T(0)});
+  EXPECT_NEAR(p1.distance, std::sqrt(T(5)), e);
+  EXPECT_FALSE(p1.unique);  // on the first circle's axis
+  const auto p2 = distance(Circle3<T>{o, z, T(0)}, Circle3<T>{o + Vec3<T>{4, 0, 0}, z, T(1)});
+  EXPECT_NEAR(p2.distance, T(3), e);
+  const auto p3 = distance(Circle3<T>{o, z, T(0)}, Circle3<T>{o + Vec3<T>{0, 4, 0}, z, T(0)});
+  EXPECT_NEAR(p3.distance, T(4), e);
+}
+
+TYPED_TEST(Circle3PairsTest, NonFinite) {
+  using T = TypeParam;
+  const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+  const Circle3<T> good{{0, 0, 0}, {0, 0, 1}, T(1)};
+  const Line<T, 3> line{{0, 0, 2}, {1, 0, 0}};
+  EXPECT_TRUE(dist::is_nan_result(distance(Line<T, 3>{{nan, 0, 0}, {1, 0, 0}}, good)));
+  EXPECT_TRUE(dist::is_nan_result(distance(Ray<T, 3>{{0, 0, 0}, {inf, 0, 0}}, good)));
+  EXPECT_TRUE(dist::is_nan_result(distance(Segment<T, 3>{{0, 0, 0}, {0, nan, 0}}, good)));
+  EXPECT_TRUE(dist::is_nan_result(distance(line, Circle3<T>{{0, 0, 0}, {0, 0, 1}, nan})));
+  EXPECT_TRUE(dist::is_nan_result(distance(line, Circle3<T>{{0, 0, 0}, {0, 0, 0}, T(1)})));
+  EXPECT_TRUE(dist::is_nan_result(distance(line, Circle3<T>{{0, 0, 0}, {0, 0, 1}, T(-1)})));
+  EXPECT_TRUE(dist::is_nan_result(distance(good, Circle3<T>{{inf, 0, 0}, {0, 0, 1}, T(1)})));
+  EXPECT_TRUE(dist::is_nan_result(distance(Circle3<T>{{0, 0, 0}, {nan, 0, 1}, T(1)}, good)));
+  EXPECT_TRUE(dist::is_nan_result(distance(good, Circle3<T>{{0, 0, 0}, {0, 0, 0}, T(0)})));
+}
