@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Distance between a line, ray or segment and an ellipse in the plane; row dist2.linear-curve
+// (ellipse part); book section 6.4 (linear component to quadratic curve, figure 6.23).
+//
+// distance(linear, Ellipse2) returns Distance<T, 2, T, T>: param_a is the linear parameter of
+// closest[0] (Line: t in R, Ray: t >= 0, Segment: t in [0, 1], as point_at), param_b the
+// ellipse's angle parameter of closest[1] (point_at(ellipse, a) = center + extent[0] cos(a)
+// axis[0] + extent[1] sin(a) axis[1], primitives/ellipse.hpp), in (-pi, pi]. The ellipse is the
+// CURVE (a segment inside it is at a positive distance). distance(Ellipse2, linear) is the
+// swapped result. The axes must be orthonormal (the primitive's precondition).
+//
+// Method (figure 6.23): if the linear component meets the curve, the distance is 0 at an
+// intersection point: in the ellipse's frame, with local origin x and direction u,
+// e1^2 (x0 + t u0)^2 + e0^2 (x1 + t u1)^2 = e0^2 e1^2 is a quadratic in t whose roots in the
+// parameter domain are candidates. Otherwise an interior minimum pairs a point of the line with
+// a point of the ellipse whose tangent is parallel to the line (the normal there is the
+// connecting direction): the two such points are center +- (e0^2 u1 axis[0] - e1^2 u0 axis[1]) /
+// |(e0 u1, e1 u0)|, and their projections onto the line (clamped to the domain) are
+// candidates; so are the domain's endpoints (a point-ellipse query) and the projection of the
+// center (which covers a collapsed ellipse). Every candidate t is scored by the exact
+// point-ellipse distance of its point (point_ellipse.hpp) and the smallest wins: every candidate
+// is a realisable pair of points, so the result is never below the true distance by more than
+// rounding, and the candidate set contains the global minimiser. An intersection gives distance
+// 0 up to the rounding of the root. The quadratic and the tangent points are computed in
+// compute_t<T> (double for float).
+//
+// unique = false only when the point-ellipse answer at the winning point is not unique (the
+// winner is the centre of a circle, or an inside point of the major axis equidistant from two
+// points, which happens when a ray or segment ends there); other finite ties (a line crossing
+// the ellipse twice) return one pair with unique = true.
+//
+// Degenerate input: a zero direction (zero-length segment) acts as its point (t = 0); a zero
+// extent collapses the ellipse to a segment traversed twice, both zero to its center (as in
+// point_ellipse.hpp). A negative extent and NaN or infinite values give non_finite_distance()
+// (result.hpp). Cost: O(1): one quadratic and at most 7 point-ellipse evaluations (each about
+// 60 bisection steps and an atan2).
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/distance/detail/linear.hpp>
+#include <locus/distance/point_ellipse.hpp>
+#include <locus/distance/result.hpp>
+#include <locus/numeric/roots.hpp>
+#include <locus/primitives/ellipse.hpp>
+#include <locus/primitives/line.hpp>
+#include <locus/primitives/ray.hpp>
+#include <locus/primitives/segment.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace locus {
+
+namespace detail {
+
+template <class T, class Lin>
+[[nodiscard]] inline Distance<T, 2, T, T> linear_ellipse2(const Lin& lin,
+                                                          const Ellipse2<T>& e) noexcept {
+  if (!finite_input(lin) || !ellipse_ok(e)) return non_finite_distance<T, 2, T, T>();
+  using C = compute_t<T>;
+  const LinearView<T, 2> v = view(lin);
+  const Vec2<C> a0 = vec_cast<C>(e.axis[0]), a1 = vec_cast<C>(e.axis[1]);
+  const Vec2<C> d = vec_cast<C>(v.origin) - vec_cast<C>(e.center);
+  const Vec2<C> m = vec_cast<C>(v.dir);
+  const C e0 = static_cast<C>(e.extent[0]), e1 = static_cast<C>(e.extent[1]);
+  const C x0 = dot(d, a0), x1 = dot(d, a1), u0 = dot(m, a0), u1 = dot(m, a1);
+
+  std::array<C, 8> cand{};
+  int nc = 0;
+  cand[nc++] = C(0);
+  if (v.bounded_hi) cand[nc++] = C(1);
+  const C mm = dot(m, m);
+  if (mm > C(0) && is_finite(mm)) {
+    cand[nc++] = -dot(d, m) / mm;  // projection of the center
+    // Intersections with the curve.
+    const C p0 = e0 * e0, p1 = e1 * e1;
+    const RootsResult<C> roots =
+        solve_quadratic<C>(p1 * x0 * x0 + p0 * x1 * x1 - p0 * p1,
+                           C(2) * (p1 * x0 * u0 + p0 * x1 * u1), p1 * u0 * u0 + p0 * u1 * u1);
+    for (const Root<C>& root : roots) cand[nc++] = root.value;
+    // The two points whose tangent is parallel to the direction, projected onto the line.
+    const C w0 = e0 * u1, w1 = e1 * u0;
+    const C wl = std::hypot(w0, w1);
+    if (wl > C(0)) {
+      // Offset of the tangent point from the center, in the ellipse frame: (e0 w0, -e1 w1) / wl.
+      const Vec2<C> off = (e0 * w0 / wl) * a0 - (e1 * w1 / wl) * a1;
+      cand[nc++] = dot(off - d, m) / mm;
+      cand[nc++] = dot(-off - d, m) / mm;
+    }
+  }
+
+  Distance<T, 2, T, T> best = non_finite_distance<T, 2, T, T>();
+  for (int i = 0; i < nc; ++i) {
+    const C tc = cand[static_cast<std::size_t>(i)];
+    if (!is_finite(tc)) continue;
+    T t = static_cast<T>(tc);
+    if (v.bounded_lo && t < T(0)) t = T(0);
+    if (v.bounded_hi && t > T(1)) t = T(1);
+    if (!is_finite(t)) continue;
+    const Vec2<T> p = v.at(t);
+    const Distance<T, 2, NoParam, T> pe = distance(p, e);
+    if (!(pe.sqr_distance >= best.sqr_distance))  // also replaces the initial NaN
+      best = {pe.distance, pe.sqr_distance, pe.closest, t, pe.param_b, pe.unique};
+  }
+  return best;
+}
+
+}  // namespace detail
+
+/// Distance between a line and an ellipse (the curve); param_a = t, param_b = the angle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 2, T, T> distance(const Line<T, 2>& l,
+                                                   const Ellipse2<T>& e) noexcept {
+  return detail::linear_ellipse2(l, e);
+}
+/// Distance between a ray and an ellipse (the curve); param_a = t >= 0, param_b = the angle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 2, T, T> distance(const Ray<T, 2>& r,
+                                                   const Ellipse2<T>& e) noexcept {
+  return detail::linear_ellipse2(r, e);
+}
+/// Distance between a segment and an ellipse (the curve); param_a = t in [0, 1], param_b = the
+/// angle.
+template <Real T>
+[[nodiscard]] inline Distance<T, 2, T, T> distance(const Segment<T, 2>& s,
+                                                   const Ellipse2<T>& e) noexcept {
+  return detail::linear_ellipse2(s, e);
+}
+
+/// The swapped query: closest[0] and param_a belong to the ellipse.
+template <Real T>
+[[nodiscard]] inline Distance<T, 2, T, T> distance(const Ellipse2<T>& e,
+                                                   const Line<T, 2>& l) noexcept {
+  return swapped(distance(l, e));
+}
+/// The swapped query: closest[0] and param_a belong to the ellipse.
+template <Real T>
+[[nodiscard]] inline Distance<T, 2, T, T> distance(const Ellipse2<T>& e,
+                                                   const Ray<T, 2>& r) noexcept {
+  return swapped(distance(r, e));
+}
+/// The swapped query: closest[0] and param_a belong to the ellipse.
+template <Real T>
+[[nodiscard]] inline Distance<T, 2, T, T> distance(const Ellipse2<T>& e,
+                                                   const Segment<T, 2>& s) noexcept {
+  return swapped(distance(s, e));
+}
+
+}  // namespace locus
