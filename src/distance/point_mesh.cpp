@@ -131,11 +131,11 @@ MeshDistanceTree<T>::MeshDistanceTree(std::span<const Vec3<T>> vertices,
   struct Task {
     std::uint32_t node, first, count;
   };
-  std::vector<Task> todo{{0, 0, static_cast<std::uint32_t>(nt)}};
+  std::vector<Task> pending{{0, 0, static_cast<std::uint32_t>(nt)}};
   constexpr std::uint32_t leaf_size = 4;
-  while (!todo.empty()) {
-    const Task task = todo.back();
-    todo.pop_back();
+  while (!pending.empty()) {
+    const Task task = pending.back();
+    pending.pop_back();
     Vec3<T> lo = splat<T, 3>(std::numeric_limits<T>::infinity()), hi = -lo;
     Vec3<T> clo = lo, chi = hi;
     for (std::uint32_t s = task.first; s < task.first + task.count; ++s) {
@@ -166,8 +166,8 @@ MeshDistanceTree<T>::MeshDistanceTree(std::span<const Vec3<T>> vertices,
     node.count = 0;
     nodes_.push_back({});
     nodes_.push_back({});
-    todo.push_back({left + 1, task.first + half, task.count - half});
-    todo.push_back({left, task.first, half});
+    pending.push_back({left + 1, task.first + half, task.count - half});
+    pending.push_back({left, task.first, half});
   }
   tris_.resize(nt);
   slot_.resize(nt);
