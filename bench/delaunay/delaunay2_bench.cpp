@@ -3,24 +3,21 @@
 // (row cg.delaunay2). Inputs: n uniform points in the unit square (seeded), and the 1000 x 1000
 // integer grid (every cell cocircular: the hard case for exact predicates).
 //
-// Peak memory: maxrss is process-wide and only grows, so measure it with one case per process:
-//   locus_bench_delaunay --benchmark_filter='Locus/Uniform/1000000$' and /usr/bin/time -v
-// (the counter "rss_MB" below is the process maxrss after the case, exact when run alone).
+// Peak memory: the counter peak_MB is the largest heap growth during one call (every malloc of
+// the process, peers included, is counted by bench/support/heap_peak; the input and CGAL's
+// converted copy of it are allocated before).
 //
-// Before bench/CMakeLists.txt links the peers, build by hand (from /work/main):
-//   cmake -S . -B build-delaunay-rel -G Ninja -DCMAKE_BUILD_TYPE=Release
-//         -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DLOCUS_BUILD_TESTS=OFF -DLOCUS_BUILD_BENCH=OFF
-//   ninja -C build-delaunay-rel locus
-//   g++ -O2 -std=c++20 -DNDEBUG -DLOCUS_HAVE_CGAL=1 -DLOCUS_HAVE_QHULL=1 -Iinclude
-//       bench/delaunay/delaunay2_bench.cpp build-delaunay-rel/liblocus.a -lbenchmark
-//       -lbenchmark_main -lqhull_r -lgmp -lmpfr -lpthread -o /tmp/delaunay2_bench
-// CGAL needs gmp and mpfr at link time; Qhull is libqhull_r (reentrant), options "d Qt Qbb Qz".
-
-#include <benchmark/benchmark.h>
+// Build (from /work/main; CGAL and Qhull are linked when found):
+//   cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DLOCUS_BENCH_PEERS=ON
+//   ninja -C build/bench locus_bench_delaunay
+//   build/bench/bench/locus_bench_delaunay --benchmark_filter=Delaunay2
+// Qhull is libqhull_r (reentrant), options "d Qt Qbb Qz".
 
 #include <locus/delaunay/delaunay2.hpp>
 
-#include <sys/resource.h>
+#include <benchmark/benchmark.h>
+
+#include "support/heap_peak.hpp"
 
 #include <cstdint>
 #include <random>
@@ -69,39 +66,32 @@ const std::vector<locus::Vec2d>& input(int which) {
   return g;
 }
 
-void set_counters(benchmark::State& state, std::size_t n) {
+void set_counters(benchmark::State& state, std::size_t n, const locus::bench::HeapPeak& peak) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
                           static_cast<std::int64_t>(n));
-  rusage ru{};
-  getrusage(RUSAGE_SELF, &ru);
-  state.counters["rss_MB"] = double(ru.ru_maxrss) / 1024.0;
-}
-
-// The input alone: its maxrss is the baseline to subtract from the other cases' rss_MB.
-void input_case(benchmark::State& state, int which) {
-  const auto& p = input(which);
-  for (auto _ : state) benchmark::DoNotOptimize(p.data());
-  set_counters(state, p.size());
+  locus::bench::report_heap_peak(state, peak);
 }
 
 void locus_case(benchmark::State& state, int which) {
   const auto& p = input(which);
+  locus::bench::HeapPeak peak;
   for (auto _ : state) {
     auto r = locus::delaunay(std::span<const locus::Vec2d>(p));
     benchmark::DoNotOptimize(r.triangles.data());
     if (r.status != locus::Status::ok) state.SkipWithError("status not ok");
   }
-  set_counters(state, p.size());
+  set_counters(state, p.size(), peak);
 }
 
 void locus_reuse_case(benchmark::State& state, int which) {
   const auto& p = input(which);
   locus::Delaunay2<double> d;
+  locus::bench::HeapPeak peak;  // the first call allocates; later calls reuse the buffers
   for (auto _ : state) {
     const auto& r = d.triangulate(std::span<const locus::Vec2d>(p));
     benchmark::DoNotOptimize(r.triangles.data());
   }
-  set_counters(state, p.size());
+  set_counters(state, p.size(), peak);
 }
 
 #if defined(LOCUS_HAVE_CGAL)
@@ -115,13 +105,14 @@ void cgal_case(benchmark::State& state, int which) {
   // Sanity: CGAL and locus agree on the number of triangles (unique for uniform input; equal
   // for the grid by Euler's formula).
   const std::size_t ours = locus::delaunay(std::span<const locus::Vec2d>(p)).triangle_count();
+  locus::bench::HeapPeak peak;
   for (auto _ : state) {
     DT dt;
     dt.insert(pts.begin(), pts.end());  // spatially sorted range insertion
     benchmark::DoNotOptimize(dt.number_of_faces());
     if (dt.number_of_faces() != ours) state.SkipWithError("CGAL and locus triangle counts differ");
   }
-  set_counters(state, p.size());
+  set_counters(state, p.size(), peak);
 }
 #endif
 
@@ -133,6 +124,7 @@ void qhull_case(benchmark::State& state, int which) {
     xy[2 * i] = p[i].x;
     xy[2 * i + 1] = p[i].y;
   }
+  locus::bench::HeapPeak peak;
   for (auto _ : state) {
     qhT qh_qh;
     qhT* qh = &qh_qh;
@@ -147,16 +139,13 @@ void qhull_case(benchmark::State& state, int which) {
     int curlong, totlong;
     qh_memfreeshort(qh, &curlong, &totlong);
   }
-  set_counters(state, p.size());
+  set_counters(state, p.size(), peak);
 }
 #endif
 
 void register_all() {
   const char* names[] = {"Uniform/100000", "Uniform/1000000", "Grid/1000x1000"};
   for (int w = 0; w < 3; ++w) {
-    benchmark::RegisterBenchmark((std::string("Delaunay2/Input/") + names[w]).c_str(), input_case,
-                                 w)
-        ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("Delaunay2/Locus/") + names[w]).c_str(), locus_case,
                                  w)
         ->Unit(benchmark::kMillisecond);

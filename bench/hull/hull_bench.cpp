@@ -6,27 +6,23 @@
 //   3D: 10^6 uniform points in a cube, 10^5 points on a sphere; locus QuickHull vs Qhull and
 //       CGAL convex_hull_3 (into a Surface_mesh).
 // Targets (issue): locus <= 0.5x the fastest peer's time.
-// Peak memory: the counter peak_MB is the largest heap growth during one call (every malloc,
-// hence operator new, is counted through glibc's __libc_* entry points; the input is allocated
+// Peak memory: the counter peak_MB is the largest heap growth during one call (every malloc of
+// the process, peers included, is counted by bench/support/heap_peak; the input is allocated
 // before). Peers compile only when LOCUS_HAVE_CGAL / LOCUS_HAVE_BOOST / LOCUS_HAVE_QHULL are set.
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
 
 #include <benchmark/benchmark.h>
 
+#include "support/heap_peak.hpp"
+
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
-
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
-#include <malloc.h>
-#define LOCUS_BENCH_COUNT_HEAP 1
-#endif
 
 #if defined(LOCUS_HAVE_CGAL)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -46,74 +42,12 @@ extern "C" {
 }
 #endif
 
-// ---- heap accounting ----------------------------------------------------------------------
-namespace {
-std::atomic<std::size_t> g_heap_now{0}, g_heap_peak{0};
-}  // namespace
-
-#if defined(LOCUS_BENCH_COUNT_HEAP)
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-void __libc_free(void*);
-void* __libc_memalign(std::size_t, std::size_t);
-
-static void heap_add(void* p) {
-  if (!p) return;
-  const std::size_t now = g_heap_now.fetch_add(malloc_usable_size(p)) + malloc_usable_size(p);
-  std::size_t peak = g_heap_peak.load(std::memory_order_relaxed);
-  while (now > peak && !g_heap_peak.compare_exchange_weak(peak, now)) {
-  }
-}
-static void heap_sub(void* p) {
-  if (p) g_heap_now.fetch_sub(malloc_usable_size(p));
-}
-void* malloc(std::size_t n) {
-  void* p = __libc_malloc(n);
-  heap_add(p);
-  return p;
-}
-void* calloc(std::size_t a, std::size_t b) {
-  void* p = __libc_calloc(a, b);
-  heap_add(p);
-  return p;
-}
-void* realloc(void* q, std::size_t n) {
-  heap_sub(q);
-  void* p = __libc_realloc(q, n);
-  heap_add(p ? p : (n ? q : nullptr));
-  return p;
-}
-void free(void* p) {
-  heap_sub(p);
-  __libc_free(p);
-}
-void* memalign(std::size_t a, std::size_t n) {
-  void* p = __libc_memalign(a, n);
-  heap_add(p);
-  return p;
-}
-void* aligned_alloc(std::size_t a, std::size_t n) { return memalign(a, n); }
-int posix_memalign(void** out, std::size_t a, std::size_t n) {
-  void* p = memalign(a, n);
-  if (!p) return 12;
-  *out = p;
-  return 0;
-}
-}
-#endif
-
 namespace {
 
 using locus::Vec2;
 using locus::Vec3;
 
-struct PeakScope {
-  std::size_t base = g_heap_now.load();
-  PeakScope() { g_heap_peak.store(base); }
-  double mb() const { return static_cast<double>(g_heap_peak.load() - base) / (1024.0 * 1024.0); }
-};
+using locus::bench::HeapPeak;
 
 enum class Set2 { square, circle, grid };
 enum class Set3 { cube, sphere };
@@ -173,8 +107,8 @@ const std::vector<Vec3<double>>& points3(Set3 s, std::size_t n) {
   return cache;
 }
 
-void report(benchmark::State& state, const PeakScope& peak, std::size_t hull_size, std::size_t n) {
-  state.counters["peak_MB"] = peak.mb();
+void report(benchmark::State& state, const HeapPeak& peak, std::size_t hull_size, std::size_t n) {
+  locus::bench::report_heap_peak(state, peak);
   state.counters["hull"] = static_cast<double>(hull_size);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
                           static_cast<std::int64_t>(n));
@@ -186,7 +120,7 @@ void BM_hull2_locus(benchmark::State& state, Set2 s, std::size_t n, locus::Hull2
   locus::Hull2Options o;
   o.method = m;
   std::size_t h = 0;
-  PeakScope peak;
+  HeapPeak peak;
   for (auto _ : state) {
     // One call, cold (no reuse of a builder), like the peers.
     const locus::Hull2Result r = locus::convex_hull(pts, o);
@@ -204,7 +138,7 @@ void BM_hull2_cgal(benchmark::State& state, Set2 s, std::size_t n) {
   for (const auto& p : src) pts.emplace_back(p.x, p.y);
   std::vector<K::Point_2> out;
   std::size_t h = 0;
-  PeakScope peak;
+  HeapPeak peak;
   for (auto _ : state) {
     out.clear();
     out.shrink_to_fit();
@@ -224,7 +158,7 @@ void BM_hull2_boost(benchmark::State& state, Set2 s, std::size_t n) {
   bg::model::multi_point<BPoint> mp;
   for (const auto& p : src) mp.emplace_back(p.x, p.y);
   std::size_t h = 0;
-  PeakScope peak;
+  HeapPeak peak;
   for (auto _ : state) {
     bg::model::polygon<BPoint> hull;
     bg::convex_hull(mp, hull);
@@ -254,14 +188,14 @@ std::size_t qhull_run(int dim, const double* coords, std::size_t n) {
 void BM_hull2_qhull(benchmark::State& state, Set2 s, std::size_t n) {
   const auto& src = points2(s, n);
   std::size_t h = 0;
-  PeakScope peak;
+  HeapPeak peak;
   for (auto _ : state) h = qhull_run(2, &src[0].x, src.size());
   report(state, peak, h, src.size());
 }
 void BM_hull3_qhull(benchmark::State& state, Set3 s, std::size_t n) {
   const auto& src = points3(s, n);
   std::size_t h = 0;
-  PeakScope peak;
+  HeapPeak peak;
   for (auto _ : state) h = qhull_run(3, &src[0].x, src.size());
   report(state, peak, h, src.size());
 }
@@ -273,7 +207,7 @@ void BM_hull3_locus(benchmark::State& state, Set3 s, std::size_t n, locus::Hull3
   locus::Hull3Options o;
   o.method = m;
   std::size_t h = 0;
-  PeakScope peak;
+  HeapPeak peak;
   for (auto _ : state) {
     const locus::Hull3Result r = locus::convex_hull(pts, o);
     h = r.vertices.size();
@@ -288,7 +222,7 @@ void BM_hull3_cgal(benchmark::State& state, Set3 s, std::size_t n) {
   std::vector<K::Point_3> pts;
   for (const auto& p : src) pts.emplace_back(p.x, p.y, p.z);
   std::size_t h = 0;
-  PeakScope peak;
+  HeapPeak peak;
   for (auto _ : state) {
     CGAL::Surface_mesh<K::Point_3> sm;
     CGAL::convex_hull_3(pts.begin(), pts.end(), sm);
