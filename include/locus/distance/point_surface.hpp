@@ -1,0 +1,788 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Distance between a point and a Bézier (rectangle or triangle), B-spline or NURBS surface, in
+// any dimension N (3D is the book's case); row dist3.pt-paramsurface; book section 10.5 (point
+// to parametric surface), figure 10.26.
+//
+// distance(p, surface) returns Distance<T, N, NoParam, Vec2<T>>: closest[1] =
+// point_at(surface, u, v) with param_b = (u, v) in the surface's own parametrisation
+// (BezierPatch: [0, 1]^2; BezierTriangle: barycentric (u, v, w = 1 - u - v), u, v >= 0,
+// u + v <= 1; BSplineSurface / NurbsSurface: domain_u x domain_v). distance(surface, p) is the
+// swapped result.
+//
+// Method: the book minimises Q(u, v) = |S(u, v) - P|^2 by Newton's method on its gradient from a
+// starting guess and treats the domain boundary with point-curve distances. locus makes that
+// GLOBAL by branch and bound. Every surface is seen as rational Bézier pieces (homogeneous
+// control points (w P, w), w = 1 for polynomial surfaces; B-spline / NURBS knot-span patches are
+// extracted by blossoming in compute_t<T>).
+//   1. Boundary: the edges of every piece are rational Bézier curves; their exact global minima
+//      come from point_curve.hpp's all-roots span machinery (distance/detail/rational_span.hpp).
+//   2. Interior: a best-first work heap of sub-pieces (parameter boxes, or sub-triangles of a
+//      4-way midpoint split), each re-extracted from its piece by blossoming (no accumulated
+//      subdivision error). A sub-piece's lower bound is the larger of the distance from P to the
+//      box of its (projected) control points and min_k (X_k - P) . e over the directions e toward
+//      its control centroid and toward the best point so far (convex-hull property; it holds
+//      for NURBS because validate() requires positive weights). A sub-piece whose bound is not
+//      below best - tau is discarded; as the heap is ordered by bound, the search ends when the
+//      smallest bound reaches best - tau. Otherwise its corners are offered, and a bounded
+//      Newton descent (true Hessian when positive definite, else Gauss-Newton with Levenberg
+//      damping; projected onto the piece's rectangle / triangle, one-dimensional Newton along an
+//      edge whose constraint blocks descent; backtracking, every step decreases Q or the
+//      gradient) starts at its centre unless the best point already lies in it; then it is
+//      split (boxes along the physically longer direction).
+//   tau = 2^-26 size + 64 eps size', size the control-net diagonal, size' = size + |P - net
+//   box| (the bound's own rounding).
+// Accuracy: the result is a point of the surface whose distance is an upper bound of the true
+// one; it is a Newton-converged local minimum (or an exact edge minimum), so its distance is
+// accurate to a few ulps of the scale, and the branch and bound certifies (up to rounding) that
+// no point of the surface is closer than distance - tau. Only near-ties within tau between
+// distinct minima that Newton did not reach could be resolved to the wrong one; the work budget
+// (below) ends the search early only for pathological input, still returning a surface point.
+// Computations run in compute_t<T> (double for float input).
+//
+// unique = false when two points of the surface separated by more than 16 sqrt(eps) size are
+// (to 64 eps relative in the squared distance) equally close: a point on a symmetry plane of the
+// patch, the centre of a spherical NURBS patch (every point is closest).
+//
+// Degenerate input: a degree 0 direction (a 1 x n net), a constant patch, collapsed edges
+// (a corner or edge where S_u or S_v vanishes), repeated knots and C0 knot lines are fine (the
+// Newton step falls back to damped Gauss-Newton and the boundary curves carry the edges).
+// Invalid surfaces (bad shape, NaN/Inf control points, validate() != ok for B-spline / NURBS
+// surfaces: bad knots, zero or negative weights, NaN/Inf weights) and a NaN/Inf point give
+// non_finite_distance().
+// Cost: per query O(pieces) setup (B-spline / NURBS extraction O(rows cols (du^3 + dv^3)))
+// plus O(d^4) per processed sub-piece; typically a few hundred sub-pieces for a bicubic patch.
+// Work budget: 4096 + 16 pieces sub-pieces, 48 Newton iterations of at most 40 backtracking
+// halvings each. Allocates (the piece nets and the work heap).
+
+#include <locus/core/scalar.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/curves/bezier_surface.hpp>
+#include <locus/curves/bspline_surface.hpp>
+#include <locus/curves/nurbs_surface.hpp>
+#include <locus/distance/detail/rational_span.hpp>
+#include <locus/distance/point_curve.hpp>
+#include <locus/distance/result.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace locus {
+
+namespace detail {
+
+/// A surface point with its first and second partials in the piece's local parameters.
+template <class C, int N>
+struct SurfaceJet {
+  Vec<C, N> s, su, sv, suu, suv, svv;
+};
+
+/// Value, first and second derivative of the Bézier curve b[0..n] at t (b is overwritten).
+template <class C, class V>
+inline void bezier_jet(V* b, int n, C t, V& f, V& f1, V& f2) noexcept {
+  f1 = V{};
+  f2 = V{};
+  if (n == 0) {
+    f = b[0];
+    return;
+  }
+  const C s = C(1) - t;
+  for (int r = 1; r <= n - 2; ++r)
+    for (int i = 0; i <= n - r; ++i) b[i] = s * b[i] + t * b[i + 1];
+  if (n >= 2) {
+    f2 = static_cast<C>(n * (n - 1)) * ((b[2] - b[1]) - (b[1] - b[0]));
+    b[0] = s * b[0] + t * b[1];
+    b[1] = s * b[1] + t * b[2];
+  }
+  f1 = static_cast<C>(n) * (b[1] - b[0]);
+  f = s * b[0] + t * b[1];
+}
+
+/// The jet of S = A / W from the homogeneous A, A_u, A_v, A_uu, A_uv, A_vv (W the last
+/// coordinate) by the quotient rule; false where W is not positive or a value is not finite.
+template <class C, int N>
+[[nodiscard]] inline bool rational_jet(const Vec<C, N + 1>* a, SurfaceJet<C, N>& j) noexcept {
+  const C w = a[0][N];
+  if (!(w > C(0))) return false;
+  Vec<C, N> x[6];
+  for (int k = 0; k < 6; ++k)
+    for (int c = 0; c < N; ++c) x[k][c] = a[k][c];
+  const C wu = a[1][N], wv = a[2][N], wuu = a[3][N], wuv = a[4][N], wvv = a[5][N];
+  j.s = x[0] / w;
+  j.su = (x[1] - wu * j.s) / w;
+  j.sv = (x[2] - wv * j.s) / w;
+  j.suu = (x[3] - C(2) * wu * j.su - wuu * j.s) / w;
+  j.suv = (x[4] - wuv * j.s - wu * j.sv - wv * j.su) / w;
+  j.svv = (x[5] - C(2) * wv * j.sv - wvv * j.s) / w;
+  return is_finite(j.s) && is_finite(j.su) && is_finite(j.sv) && is_finite(j.suu) &&
+         is_finite(j.suv) && is_finite(j.svv);
+}
+
+/// The jet of a rational tensor Bézier net (du + 1 rows along s, dv + 1 columns along t).
+template <class C, int N>
+[[nodiscard]] inline bool rect_jet(const Vec<C, N + 1>* net, int du, int dv, C s, C t,
+                                   SurfaceJet<C, N>& j) noexcept {
+  using V = Vec<C, N + 1>;
+  const auto rows = static_cast<std::size_t>(du) + 1, cols = static_cast<std::size_t>(dv) + 1;
+  SpanScratch<V, 16> work(cols), r0(rows), r1(rows), r2(rows);
+  for (std::size_t i = 0; i < rows; ++i) {
+    for (std::size_t k = 0; k < cols; ++k) work[k] = net[i * cols + k];
+    bezier_jet(work.data(), dv, t, r0[i], r1[i], r2[i]);
+  }
+  V a[6], unused0, unused1;
+  bezier_jet(r0.data(), du, s, a[0], a[1], a[3]);
+  bezier_jet(r1.data(), du, s, a[2], a[4], unused0);
+  bezier_jet(r2.data(), du, s, a[5], unused0, unused1);
+  return rational_jet<C, N>(a, j);
+}
+
+/// The jet of a rational triangular Bézier net of degree n at barycentric (u, v, 1 - u - v),
+/// partials with respect to u and v.
+template <class C, int N>
+[[nodiscard]] inline bool triangle_jet(const Vec<C, N + 1>* net, int n, C u, C v,
+                                       SurfaceJet<C, N>& j) noexcept {
+  using V = Vec<C, N + 1>;
+  const C w = C(1) - u - v;
+  const auto count = static_cast<std::size_t>(triangle_control_count(n));
+  SpanScratch<V, 28> b(count);
+  for (std::size_t i = 0; i < count; ++i) b[i] = net[i];
+  V a[6] = {};
+  if (n == 0) {
+    a[0] = b[0];
+  } else {
+    for (int m = n; m >= 3; --m) triangle_level(b.data(), m, u, v, w);
+    if (n >= 2) {
+      // Level n - 2, a quadratic net: b002 b101 b200 b011 b110 b020 (triangle_index order).
+      const C k = static_cast<C>(n * (n - 1));
+      a[3] = k * ((b[2] - b[1]) - (b[1] - b[0]));
+      a[5] = k * ((b[5] - b[3]) - (b[3] - b[0]));
+      a[4] = k * ((b[4] - b[1]) - (b[3] - b[0]));
+      triangle_level(b.data(), 2, u, v, w);
+    }
+    // Level n - 1: b001 = b[0], b100 = b[1], b010 = b[2].
+    a[1] = static_cast<C>(n) * (b[1] - b[0]);
+    a[2] = static_cast<C>(n) * (b[2] - b[0]);
+    a[0] = u * b[1] + v * b[2] + w * b[0];
+  }
+  return rational_jet<C, N>(a, j);
+}
+
+/// out[j * ostride], j = 0..n: the Bézier points of the piece [a, b] of the curve
+/// in[k * istride], k = 0..n, by blossoming (point j is the blossom b(a^(n-j), b^j)).
+template <class C, class V>
+inline void bezier_piece(const V* in, std::size_t istride, int n, C a, C b, V* out,
+                         std::size_t ostride, V* scratch) noexcept {
+  const auto un = static_cast<std::size_t>(n);
+  for (std::size_t j = 0; j <= un; ++j) {
+    for (std::size_t k = 0; k <= un; ++k) scratch[k] = in[k * istride];
+    for (std::size_t r = 1; r <= un; ++r) {
+      const C t = r <= un - j ? a : b;
+      const C s = C(1) - t;
+      for (std::size_t i = 0; i + r <= un; ++i) scratch[i] = s * scratch[i] + t * scratch[i + 1];
+    }
+    out[j * ostride] = scratch[0];
+  }
+}
+
+/// The net of the sub-box [s0, s1] x [t0, t1] of a rational tensor net.
+template <class C, class V>
+inline void rect_subnet(const V* net, int du, int dv, C s0, C s1, C t0, C t1, V* out) {
+  const auto rows = static_cast<std::size_t>(du) + 1, cols = static_cast<std::size_t>(dv) + 1;
+  SpanScratch<V, 64> tmp(rows * cols);
+  SpanScratch<V, 16> scratch(std::max(rows, cols));
+  for (std::size_t i = 0; i < rows; ++i)
+    bezier_piece(net + i * cols, 1, dv, t0, t1, tmp.data() + i * cols, 1, scratch.data());
+  for (std::size_t k = 0; k < cols; ++k)
+    bezier_piece(tmp.data() + k, cols, du, s0, s1, out + k, cols, scratch.data());
+}
+
+/// The net of the sub-triangle with parent parameters (corners a, b, c) of a triangular net:
+/// control point ijk is the blossom b(a^i, b^j, c^k).
+template <class C, class V>
+inline void triangle_subnet(const V* net, int n, const Vec<C, 2>* corner, V* out) {
+  const auto count = static_cast<std::size_t>(triangle_control_count(n));
+  SpanScratch<V, 28> b(count);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i + j <= n; ++i) {
+      for (std::size_t q = 0; q < count; ++q) b[q] = net[q];
+      for (int m = n; m >= 1; --m) {
+        const int level = n - m;
+        const Vec<C, 2>& x = corner[level < i ? 0 : (level < i + j ? 1 : 2)];
+        triangle_level(b.data(), m, x.x, x.y, C(1) - x.x - x.y);
+      }
+      out[static_cast<std::size_t>(triangle_index(n, i, j))] = b[0];
+    }
+}
+
+/// The nearest candidate so far (global parameters), and the two nearest distinct CRITICAL
+/// candidates (Newton-converged points, edge-curve critical points and ends) for the tie test:
+/// sub-piece corners sharpen the bound but, being arbitrary points near a minimum, are never
+/// evidence of a second minimum.
+template <class C, int N>
+struct SurfaceNearest {
+  bool found = false;
+  C best_d2 = std::numeric_limits<C>::infinity();
+  Vec<C, 2> best_param{};
+  Vec<C, N> best_point{};
+  NearestTracker<C, N> critical;  // its best_t is unused
+  C sep2 = C(0);                  // squared separation below which two points are "the same"
+
+  void offer(C d2, const Vec<C, 2>& prm, const Vec<C, N>& x, bool is_critical = true) noexcept {
+    if (!(d2 == d2)) return;
+    if (is_critical) critical.offer(d2, C(0), x);
+    if (!found || d2 < best_d2) {
+      found = true;
+      best_d2 = d2;
+      best_param = prm;
+      best_point = x;
+    }
+  }
+  /// True when a critical candidate distinct from the best point is within tol (relative, on
+  /// squared distances) of it.
+  [[nodiscard]] bool tied(C rel_tol) const noexcept {
+    const C lim = best_d2 + rel_tol * best_d2 + std::numeric_limits<C>::min();
+    const auto rival = [&](C d2, const Vec<C, N>& x) {
+      return d2 <= lim && sqr_length(x - best_point) > sep2;
+    };
+    return (critical.found && rival(critical.best_d2, critical.best_point)) ||
+           (critical.has_alt && rival(critical.alt_d2, critical.alt_point));
+  }
+};
+
+/// Offers the global minimum of a rational Bézier edge curve h[0..d] (global parameter t0..t1)
+/// to `tr`; at(t) maps the curve parameter to the surface's (u, v).
+template <class C, int N, class At>
+inline void offer_edge(const Vec<C, N + 1>* h, int d, const Vec<C, N>& p, C t0, C t1, const At& at,
+                       SurfaceNearest<C, N>& tr) noexcept {
+  NearestTracker<C, N> e;
+  e.sep2 = tr.sep2;
+  point_span_candidates<C, N>(h, d, p, t0, t1, e);
+  if (!e.found) return;
+  tr.offer(e.best_d2, at(e.best_t), e.best_point);
+  if (e.has_alt) tr.offer(e.alt_d2, at(e.best_t), e.alt_point);
+}
+
+/// The lower bound of the distance from p to the convex hull of the projected net x[0..count)
+/// described in the header comment; `toward` is a second direction point (the best point).
+template <class C, int N>
+[[nodiscard]] inline C hull_lower_bound(const Vec<C, N>* x, std::size_t count, const Vec<C, N>& p,
+                                        const Vec<C, N>* toward) noexcept {
+  Vec<C, N> lo = x[0], hi = x[0], mean{};
+  C mag = max_abs(p);
+  for (std::size_t k = 0; k < count; ++k) {
+    lo = cwise_min(lo, x[k]);
+    hi = cwise_max(hi, x[k]);
+    mean += x[k];
+    mag = std::max(mag, max_abs(x[k]));
+  }
+  mean = mean / static_cast<C>(count);
+  C box2 = C(0);
+  for (int i = 0; i < N; ++i) {
+    const C g = std::max({lo[i] - p[i], p[i] - hi[i], C(0)});
+    box2 += g * g;
+  }
+  C lb = std::sqrt(box2);
+  const auto directional = [&](Vec<C, N> e) {
+    const C len = length(e);
+    if (!(len > C(0))) return;
+    e = e / len;
+    C m = std::numeric_limits<C>::infinity();
+    for (std::size_t k = 0; k < count; ++k) m = std::min(m, dot(x[k] - p, e));
+    lb = std::max(lb, m);
+  };
+  directional(mean - p);
+  if (toward != nullptr) directional(*toward - p);
+  // The bound's own rounding (a few operations on coordinates of magnitude mag).
+  return std::max(C(0), lb - C(16) * std::numeric_limits<C>::epsilon() * mag);
+}
+
+/// The parameter domain of a piece in local coordinates: the unit square or the unit triangle.
+struct SquareDomain {
+  template <class C>
+  [[nodiscard]] static Vec<C, 2> project(const Vec<C, 2>& x) noexcept {
+    return {std::clamp(x.x, C(0), C(1)), std::clamp(x.y, C(0), C(1))};
+  }
+  /// The number of constraints that block descent along -g at x (0, 1, 2) and, for one, the
+  /// direction along it.
+  template <class C>
+  [[nodiscard]] static int blocking(const Vec<C, 2>& x, const Vec<C, 2>& g,
+                                    Vec<C, 2>& along) noexcept {
+    const bool bu = (x.x <= C(0) && g.x > C(0)) || (x.x >= C(1) && g.x < C(0));
+    const bool bv = (x.y <= C(0) && g.y > C(0)) || (x.y >= C(1) && g.y < C(0));
+    along = bu ? Vec<C, 2>{C(0), C(1)} : Vec<C, 2>{C(1), C(0)};
+    return int(bu) + int(bv);
+  }
+};
+
+struct TriangleDomain {
+  template <class C>
+  [[nodiscard]] static Vec<C, 2> project(const Vec<C, 2>& x) noexcept {
+    if (x.x >= C(0) && x.y >= C(0) && x.x + x.y <= C(1)) return x;
+    // The nearest of the three edges' nearest points.
+    const C a = std::clamp(C(0.5) * (x.x - x.y + C(1)), C(0), C(1));
+    const Vec<C, 2> cand[3] = {
+        {C(0), std::clamp(x.y, C(0), C(1))}, {std::clamp(x.x, C(0), C(1)), C(0)}, {a, C(1) - a}};
+    Vec<C, 2> best = cand[0];
+    for (const auto& c : cand)
+      if (sqr_length(c - x) < sqr_length(best - x)) best = c;
+    return best;
+  }
+  template <class C>
+  [[nodiscard]] static int blocking(const Vec<C, 2>& x, const Vec<C, 2>& g,
+                                    Vec<C, 2>& along) noexcept {
+    const C tol = C(4) * std::numeric_limits<C>::epsilon();
+    const bool b0 = x.x <= C(0) && g.x > C(0);
+    const bool b1 = x.y <= C(0) && g.y > C(0);
+    const bool b2 = x.x + x.y >= C(1) - tol && g.x + g.y < C(0);
+    along = b0 ? Vec<C, 2>{C(0), C(1)} : (b1 ? Vec<C, 2>{C(1), C(0)} : Vec<C, 2>{C(1), C(-1)});
+    return int(b0) + int(b1) + int(b2);
+  }
+};
+
+/// Bounded, projected, damped Newton descent of Q = |S - p|^2 from x on the domain `Dom`;
+/// jet(x, j) evaluates the piece. Returns the last iterate's squared distance, point and x.
+template <class C, int N, class Dom, class Jet>
+inline bool surface_newton(const Jet& jet, const Vec<C, N>& p, Vec<C, 2>& x, C& f,
+                           Vec<C, N>& point) noexcept {
+  constexpr C eps = std::numeric_limits<C>::epsilon();
+  SurfaceJet<C, N> j;
+  if (!jet(x, j)) return false;
+  Vec<C, N> r = j.s - p;
+  f = sqr_length(r);
+  const auto grad = [&p](const SurfaceJet<C, N>& q) {
+    const Vec<C, N> rr = q.s - p;
+    return Vec<C, 2>{dot(rr, q.su), dot(rr, q.sv)};
+  };
+  Vec<C, 2> g = grad(j);
+  for (int it = 0; it < 48; ++it) {
+    const C h00 = dot(j.su, j.su) + dot(r, j.suu), h01 = dot(j.su, j.sv) + dot(r, j.suv),
+            h11 = dot(j.sv, j.sv) + dot(r, j.svv);
+    Vec<C, 2> along{};
+    const int nb = Dom::blocking(x, g, along);
+    Vec<C, 2> d{};
+    if (nb >= 2) break;
+    if (nb == 1) {
+      const C gt = dot(g, along);
+      const C ht = along.x * along.x * h00 + C(2) * along.x * along.y * h01 + along.y * along.y * h11;
+      if (ht > C(0))
+        d = (-gt / ht) * along;
+      else if (gt != C(0))
+        d = (gt > C(0) ? C(-0.5) : C(0.5)) * along;
+    } else {
+      const C det = h00 * h11 - h01 * h01;
+      if (h00 > C(0) && det > C(64) * eps * (h00 * h11 + h01 * h01)) {
+        d = Vec<C, 2>{-(h11 * g.x - h01 * g.y) / det, -(h00 * g.y - h01 * g.x) / det};
+      } else {
+        // Gauss-Newton with Levenberg damping: positive definite unless S_u = S_v = 0.
+        const C g00 = dot(j.su, j.su), g01 = dot(j.su, j.sv), g11 = dot(j.sv, j.sv);
+        const C mu = C(1e-3) * (g00 + g11) + std::numeric_limits<C>::min();
+        const C a = g00 + mu, b = g11 + mu, dd = a * b - g01 * g01;
+        if (dd > C(0)) d = Vec<C, 2>{-(b * g.x - g01 * g.y) / dd, -(a * g.y - g01 * g.x) / dd};
+      }
+    }
+    if (!is_finite(d) || (d.x == C(0) && d.y == C(0))) break;
+    bool accepted = false;
+    SurfaceJet<C, N> jn;
+    Vec<C, 2> xn{};
+    C fn = C(0);
+    for (int bt = 0; bt < 40; ++bt, d = C(0.5) * d) {
+      xn = Dom::project(x + d);
+      if (xn.x == x.x && xn.y == x.y) break;
+      if (!jet(xn, jn)) continue;
+      fn = sqr_length(jn.s - p);
+      // Near the minimiser Q is flat to rounding: a step that does not increase Q beyond its
+      // rounding and halves the gradient is progress too.
+      const Vec<C, 2> gn = grad(jn);
+      if (fn < f || (fn <= f + C(16) * eps * (f + sqr_length(p) + sqr_length(jn.s)) &&
+                     sqr_length(gn) < C(0.25) * sqr_length(g))) {
+        accepted = true;
+        g = gn;
+        break;
+      }
+    }
+    if (!accepted) break;
+    const C step = std::max(std::fabs(xn.x - x.x), std::fabs(xn.y - x.y));
+    x = xn;
+    j = jn;
+    f = fn;
+    r = j.s - p;
+    if (step <= C(4) * eps) break;
+  }
+  point = j.s;
+  return true;
+}
+
+/// One rational Bézier piece of a surface: its net (in the shared pool) and the global
+/// parameters of its local (0, 0) corner and extents (rectangles: u = u0 + s du, v = v0 + t dv).
+template <class C>
+struct SurfacePiece {
+  std::size_t offset;
+  C u0, u1, v0, v1;
+};
+
+template <class C>
+struct SurfaceWork {
+  C lb;
+  int piece;
+  int depth;
+  Vec<C, 2> a, b, c;  // rectangles: a = (s0, t0), b = (s1, t1); triangles: the three corners
+};
+
+template <class C>
+[[nodiscard]] inline bool work_after(const SurfaceWork<C>& x, const SurfaceWork<C>& y) noexcept {
+  return x.lb > y.lb;
+}
+
+/// Squared diagonal of the box of the projected points of a homogeneous pool.
+template <class C, int N>
+[[nodiscard]] inline C pool_sqr_size(const std::vector<Vec<C, N + 1>>& pool) noexcept {
+  Vec<C, N> lo = span_project<C, N>(pool[0]), hi = lo;
+  for (const auto& h : pool) {
+    const Vec<C, N> x = span_project<C, N>(h);
+    lo = cwise_min(lo, x);
+    hi = cwise_max(hi, x);
+  }
+  return sqr_length(hi - lo);
+}
+
+/// The branch and bound over tensor pieces of degrees (du, dv) (header comment).
+template <class C, int N>
+inline void rect_search(const std::vector<Vec<C, N + 1>>& pool,
+                        const std::vector<SurfacePiece<C>>& pieces, int du, int dv,
+                        const Vec<C, N>& p, SurfaceNearest<C, N>& tr) {
+  using V = Vec<C, N + 1>;
+  const auto rows = static_cast<std::size_t>(du) + 1, cols = static_cast<std::size_t>(dv) + 1;
+  const std::size_t cnt = rows * cols;
+  const C size2 = pool_sqr_size<C, N>(pool);
+  tr.sep2 = tr.critical.sep2 = C(256) * std::numeric_limits<C>::epsilon() * size2;
+  // Edges as curves: v = v0, v1 (rows of the net's first / last column) and u = u0, u1.
+  SpanScratch<V, 16> edge(std::max(rows, cols));
+  for (const SurfacePiece<C>& pc : pieces) {
+    const V* net = pool.data() + pc.offset;
+    for (int side = 0; side < 2; ++side) {
+      const C v = side == 0 ? pc.v0 : pc.v1;
+      for (std::size_t i = 0; i < rows; ++i) edge[i] = net[i * cols + (side == 0 ? 0 : cols - 1)];
+      offer_edge<C, N>(edge.data(), du, p, pc.u0, pc.u1, [v](C t) { return Vec<C, 2>{t, v}; }, tr);
+      const C u = side == 0 ? pc.u0 : pc.u1;
+      for (std::size_t k = 0; k < cols; ++k) edge[k] = net[(side == 0 ? 0 : rows - 1) * cols + k];
+      offer_edge<C, N>(edge.data(), dv, p, pc.v0, pc.v1, [u](C t) { return Vec<C, 2>{u, t}; }, tr);
+    }
+  }
+  std::vector<Vec<C, N>> pts(cnt);
+  std::vector<V> sub(cnt);
+  const auto project_net = [&](const V* net) {
+    for (std::size_t k = 0; k < cnt; ++k) pts[k] = span_project<C, N>(net[k]);
+  };
+  std::vector<SurfaceWork<C>> heap;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    project_net(pool.data() + pieces[i].offset);
+    heap.push_back({hull_lower_bound<C, N>(pts.data(), cnt, p, nullptr), static_cast<int>(i), 0,
+                    {C(0), C(0)}, {C(1), C(1)}, {}});
+  }
+  std::make_heap(heap.begin(), heap.end(), work_after<C>);
+  const C tau_scale = std::sqrt(size2) + max_abs(p);
+  const std::size_t budget = 4096 + 16 * pieces.size();
+  for (std::size_t done = 0; !heap.empty() && done < budget; ++done) {
+    std::pop_heap(heap.begin(), heap.end(), work_after<C>);
+    const SurfaceWork<C> w = heap.back();
+    heap.pop_back();
+    const C tau = std::ldexp(std::sqrt(size2), -26) +
+                  C(64) * std::numeric_limits<C>::epsilon() * tau_scale;
+    const auto settled = [&](C lb) { return tr.found && lb >= std::sqrt(tr.best_d2) - tau; };
+    if (settled(w.lb)) break;  // every remaining bound is at least as large
+    const SurfacePiece<C>& pc = pieces[static_cast<std::size_t>(w.piece)];
+    const V* top = pool.data() + pc.offset;
+    rect_subnet<C, V>(top, du, dv, w.a.x, w.b.x, w.a.y, w.b.y, sub.data());
+    project_net(sub.data());
+    const Vec<C, N> best = tr.best_point;
+    const C lb = std::max(w.lb, hull_lower_bound<C, N>(pts.data(), cnt, p, tr.found ? &best : nullptr));
+    if (settled(lb)) continue;
+    const auto global = [&pc](const Vec<C, 2>& st) {
+      return Vec<C, 2>{pc.u0 + st.x * (pc.u1 - pc.u0), pc.v0 + st.y * (pc.v1 - pc.v0)};
+    };
+    // Corners of the sub-piece are points of the surface.
+    const std::size_t corner[4] = {0, cols - 1, (rows - 1) * cols, cnt - 1};
+    const Vec<C, 2> cpar[4] = {w.a, {w.a.x, w.b.y}, {w.b.x, w.a.y}, w.b};
+    for (int k = 0; k < 4; ++k)
+      tr.offer(sqr_length(pts[corner[k]] - p), global(cpar[k]), pts[corner[k]], false);
+    const Vec<C, 2> g0 = global(w.a), g1 = global(w.b);
+    const bool holds_best = tr.found && tr.best_param.x >= g0.x && tr.best_param.x <= g1.x &&
+                            tr.best_param.y >= g0.y && tr.best_param.y <= g1.y;
+    if (!holds_best) {
+      Vec<C, 2> x = C(0.5) * (w.a + w.b);
+      C f = C(0);
+      Vec<C, N> at{};
+      const auto jet = [top, du, dv](const Vec<C, 2>& st, SurfaceJet<C, N>& j) {
+        return rect_jet<C, N>(top, du, dv, st.x, st.y, j);
+      };
+      if (surface_newton<C, N, SquareDomain>(jet, p, x, f, at)) tr.offer(f, global(x), at);
+      if (settled(lb)) continue;
+    }
+    // Split along the physically longer direction (never along a degree-0 one).
+    C ext_u = C(0), ext_v = C(0);
+    for (std::size_t k = 0; k < cols; ++k)
+      ext_u = std::max(ext_u, sqr_length(pts[(rows - 1) * cols + k] - pts[k]));
+    for (std::size_t i = 0; i < rows; ++i)
+      ext_v = std::max(ext_v, sqr_length(pts[i * cols + cols - 1] - pts[i * cols]));
+    if (du == 0) ext_u = C(0);
+    if (dv == 0) ext_v = C(0);
+    if (!(ext_u > C(0) || ext_v > C(0)) || w.depth >= 96) continue;
+    const bool along_u = ext_u >= ext_v;
+    const C lo = along_u ? w.a.x : w.a.y, hi = along_u ? w.b.x : w.b.y;
+    const C mid = C(0.5) * (lo + hi);
+    if (!(mid > lo && mid < hi)) continue;
+    SurfaceWork<C> c0 = w, c1 = w;
+    c0.lb = c1.lb = lb;
+    c0.depth = c1.depth = w.depth + 1;
+    if (along_u) {
+      c0.b.x = mid;
+      c1.a.x = mid;
+    } else {
+      c0.b.y = mid;
+      c1.a.y = mid;
+    }
+    heap.push_back(c0);
+    std::push_heap(heap.begin(), heap.end(), work_after<C>);
+    heap.push_back(c1);
+    std::push_heap(heap.begin(), heap.end(), work_after<C>);
+  }
+}
+
+/// The branch and bound over one triangular piece of degree n (header comment).
+template <class C, int N>
+inline void triangle_search(const std::vector<Vec<C, N + 1>>& net, int n, const Vec<C, N>& p,
+                            SurfaceNearest<C, N>& tr) {
+  using V = Vec<C, N + 1>;
+  const auto cnt = static_cast<std::size_t>(triangle_control_count(n));
+  const C size2 = pool_sqr_size<C, N>(net);
+  tr.sep2 = tr.critical.sep2 = C(256) * std::numeric_limits<C>::epsilon() * size2;
+  {
+    // Edges: v = 0 (P_i0k, u from 0 to 1), u = 0 (P_0jk, v from 0 to 1), w = 0 (P_ij0, u from
+    // 0 to 1 with v = 1 - u).
+    SpanScratch<V, 16> edge(static_cast<std::size_t>(n) + 1);
+    for (int i = 0; i <= n; ++i) edge[static_cast<std::size_t>(i)] = net[static_cast<std::size_t>(triangle_index(n, i, 0))];
+    offer_edge<C, N>(edge.data(), n, p, C(0), C(1), [](C t) { return Vec<C, 2>{t, C(0)}; }, tr);
+    for (int j = 0; j <= n; ++j) edge[static_cast<std::size_t>(j)] = net[static_cast<std::size_t>(triangle_index(n, 0, j))];
+    offer_edge<C, N>(edge.data(), n, p, C(0), C(1), [](C t) { return Vec<C, 2>{C(0), t}; }, tr);
+    for (int i = 0; i <= n; ++i)
+      edge[static_cast<std::size_t>(i)] = net[static_cast<std::size_t>(triangle_index(n, i, n - i))];
+    offer_edge<C, N>(edge.data(), n, p, C(0), C(1), [](C t) { return Vec<C, 2>{t, C(1) - t}; },
+                     tr);
+  }
+  std::vector<Vec<C, N>> pts(cnt);
+  std::vector<V> sub(cnt);
+  const auto project_net = [&](const V* x) {
+    for (std::size_t k = 0; k < cnt; ++k) pts[k] = span_project<C, N>(x[k]);
+  };
+  project_net(net.data());
+  std::vector<SurfaceWork<C>> heap;
+  // Corners: (1, 0) = e1 (P_n00), (0, 1) = e2 (P_0n0), (0, 0) = e3 (P_00n).
+  heap.push_back({hull_lower_bound<C, N>(pts.data(), cnt, p, nullptr), 0, 0, {C(1), C(0)},
+                  {C(0), C(1)}, {C(0), C(0)}});
+  const C tau_scale = std::sqrt(size2) + max_abs(p);
+  const std::size_t budget = 4096;
+  const std::size_t corner_index[3] = {static_cast<std::size_t>(triangle_index(n, n, 0)),
+                                       static_cast<std::size_t>(triangle_index(n, 0, n)),
+                                       static_cast<std::size_t>(triangle_index(n, 0, 0))};
+  for (std::size_t done = 0; !heap.empty() && done < budget; ++done) {
+    std::pop_heap(heap.begin(), heap.end(), work_after<C>);
+    const SurfaceWork<C> w = heap.back();
+    heap.pop_back();
+    const C tau = std::ldexp(std::sqrt(size2), -26) +
+                  C(64) * std::numeric_limits<C>::epsilon() * tau_scale;
+    const auto settled = [&](C lb) { return tr.found && lb >= std::sqrt(tr.best_d2) - tau; };
+    if (settled(w.lb)) break;
+    const Vec<C, 2> corner[3] = {w.a, w.b, w.c};
+    triangle_subnet<C, V>(net.data(), n, corner, sub.data());
+    project_net(sub.data());
+    const Vec<C, N> best = tr.best_point;
+    const C lb = std::max(w.lb, hull_lower_bound<C, N>(pts.data(), cnt, p, tr.found ? &best : nullptr));
+    if (settled(lb)) continue;
+    for (int k = 0; k < 3; ++k)
+      tr.offer(sqr_length(pts[corner_index[k]] - p), corner[k], pts[corner_index[k]], false);
+    // Does the sub-triangle hold the best parameter (barycentric coordinates >= 0)?
+    bool holds_best = false;
+    if (tr.found) {
+      const Vec<C, 2> e1 = w.b - w.a, e2 = w.c - w.a, q = tr.best_param - w.a;
+      const C den = e1.x * e2.y - e1.y * e2.x;
+      if (den != C(0)) {
+        const C l1 = (q.x * e2.y - q.y * e2.x) / den, l2 = (e1.x * q.y - e1.y * q.x) / den;
+        const C slack = C(16) * std::numeric_limits<C>::epsilon();
+        holds_best = l1 >= -slack && l2 >= -slack && l1 + l2 <= C(1) + slack;
+      }
+    }
+    if (!holds_best) {
+      Vec<C, 2> x = (w.a + w.b + w.c) / C(3);
+      C f = C(0);
+      Vec<C, N> at{};
+      const V* top = net.data();
+      const auto jet = [top, n](const Vec<C, 2>& uv, SurfaceJet<C, N>& j) {
+        return triangle_jet<C, N>(top, n, uv.x, uv.y, j);
+      };
+      if (surface_newton<C, N, TriangleDomain>(jet, p, x, f, at)) tr.offer(f, x, at);
+      if (settled(lb)) continue;
+    }
+    C ext = C(0);
+    for (int k = 0; k < 3; ++k)
+      ext = std::max(ext, sqr_length(pts[corner_index[k]] - pts[corner_index[(k + 1) % 3]]));
+    if (n == 0 || !(ext > C(0)) || w.depth >= 48) continue;
+    const Vec<C, 2> mab = C(0.5) * (w.a + w.b), mbc = C(0.5) * (w.b + w.c),
+                    mca = C(0.5) * (w.c + w.a);
+    const SurfaceWork<C> kids[4] = {{lb, 0, w.depth + 1, w.a, mab, mca},
+                                    {lb, 0, w.depth + 1, mab, w.b, mbc},
+                                    {lb, 0, w.depth + 1, mca, mbc, w.c},
+                                    {lb, 0, w.depth + 1, mbc, mca, mab}};
+    for (const auto& k : kids) {
+      heap.push_back(k);
+      std::push_heap(heap.begin(), heap.end(), work_after<C>);
+    }
+  }
+}
+
+/// The Bézier patches of the knot spans of a (homogeneous) tensor B-spline: get(i, j) returns
+/// the homogeneous control point P_ij.
+template <class C, int N, class T, class Get>
+inline void tensor_pieces(std::span<const T> ku, int du, int rows, std::span<const T> kv, int dv,
+                          int cols, const Get& get, std::vector<Vec<C, N + 1>>& pool,
+                          std::vector<SurfacePiece<C>>& pieces) {
+  using V = Vec<C, N + 1>;
+  const auto nr = static_cast<std::size_t>(du) + 1, nc = static_cast<std::size_t>(dv) + 1;
+  SpanScratch<V, 64> rowpts(nr * nc);
+  SpanScratch<V, 16> col(nr);
+  for (int a = du; a < rows; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    if (!(ku[ua] < ku[ua + 1])) continue;
+    for (int b = dv; b < cols; ++b) {
+      const auto ub = static_cast<std::size_t>(b);
+      if (!(kv[ub] < kv[ub + 1])) continue;
+      // Along v for the du + 1 rows of the span, then along u for each of the dv + 1 columns.
+      for (int i = 0; i <= du; ++i)
+        span_bezier<C, V, T>(kv, dv, b, [&](int j) { return get(a - du + i, j); },
+                             rowpts.data() + static_cast<std::size_t>(i) * nc);
+      const std::size_t off = pool.size();
+      pool.resize(off + nr * nc);
+      for (std::size_t k = 0; k < nc; ++k) {
+        span_bezier<C, V, T>(ku, du, a,
+                             [&](int i) { return rowpts[static_cast<std::size_t>(i - (a - du)) * nc + k]; },
+                             col.data());
+        for (std::size_t i = 0; i < nr; ++i) pool[off + i * nc + k] = col[i];
+      }
+      pieces.push_back({off, static_cast<C>(ku[ua]), static_cast<C>(ku[ua + 1]),
+                        static_cast<C>(kv[ub]), static_cast<C>(kv[ub + 1])});
+    }
+  }
+}
+
+template <class T, int N, class Surface>
+[[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> point_surface_result(
+    const Vec<T, N>& p, const Surface& s, const SurfaceNearest<compute_t<T>, N>& tr) noexcept {
+  if (!tr.found) return non_finite_distance<T, N, NoParam, Vec2<T>>();
+  const Vec2<T> prm{static_cast<T>(tr.best_param.x), static_cast<T>(tr.best_param.y)};
+  const Vec<T, N> q = point_at(s, prm.x, prm.y);
+  if (!is_finite(q)) return non_finite_distance<T, N, NoParam, Vec2<T>>();
+  return make_distance(p, q, NoParam{}, prm,
+                       !tr.tied(compute_t<T>(64) * static_cast<compute_t<T>>(eps_v<T>)));
+}
+
+template <class T, int N, class Surface, class Get>
+[[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> point_tensor_distance(const Vec<T, N>& p,
+                                                                            const Surface& s,
+                                                                            const Get& get) {
+  using C = compute_t<T>;
+  std::vector<Vec<C, N + 1>> pool;
+  std::vector<SurfacePiece<C>> pieces;
+  tensor_pieces<C, N, T>(std::span<const T>(s.knots_u), s.degree_u, s.rows,
+                         std::span<const T>(s.knots_v), s.degree_v, s.cols, get, pool, pieces);
+  SurfaceNearest<C, N> tr;
+  if (!pieces.empty()) rect_search<C, N>(pool, pieces, s.degree_u, s.degree_v, vec_cast<C>(p), tr);
+  return point_surface_result<T, N>(p, s, tr);
+}
+
+}  // namespace detail
+
+/// Distance from p to the rectangular Bézier patch; param_b is (u, v) in [0, 1]^2.
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> distance(const Vec<T, N>& p,
+                                                               const BezierPatch<T, N>& s) noexcept {
+  if (!is_finite(p) || !is_finite(s)) return non_finite_distance<T, N, NoParam, Vec2<T>>();
+  using C = compute_t<T>;
+  std::vector<Vec<C, N + 1>> pool;
+  pool.reserve(s.control.size());
+  for (const auto& q : s.control) pool.push_back(detail::homogeneous<C, N>(vec_cast<C>(q), C(1)));
+  const std::vector<detail::SurfacePiece<C>> pieces{{0, C(0), C(1), C(0), C(1)}};
+  detail::SurfaceNearest<C, N> tr;
+  detail::rect_search<C, N>(pool, pieces, s.rows - 1, s.cols - 1, vec_cast<C>(p), tr);
+  return detail::point_surface_result<T, N>(p, s, tr);
+}
+
+/// Distance from p to the triangular Bézier patch; param_b is barycentric (u, v), w = 1 - u - v.
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> distance(
+    const Vec<T, N>& p, const BezierTriangle<T, N>& s) noexcept {
+  if (!is_finite(p) || !is_finite(s)) return non_finite_distance<T, N, NoParam, Vec2<T>>();
+  using C = compute_t<T>;
+  std::vector<Vec<C, N + 1>> net;
+  net.reserve(s.control.size());
+  for (const auto& q : s.control) net.push_back(detail::homogeneous<C, N>(vec_cast<C>(q), C(1)));
+  detail::SurfaceNearest<C, N> tr;
+  detail::triangle_search<C, N>(net, s.degree, vec_cast<C>(p), tr);
+  return detail::point_surface_result<T, N>(p, s, tr);
+}
+
+/// Distance from p to the B-spline surface; param_b is (u, v) in its domain.
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> distance(
+    const Vec<T, N>& p, const BSplineSurface<T, N>& s) noexcept {
+  if (!is_finite(p) || validate(s) != Status::ok) return non_finite_distance<T, N, NoParam, Vec2<T>>();
+  using C = compute_t<T>;
+  const auto cols = static_cast<std::size_t>(s.cols);
+  return detail::point_tensor_distance<T, N>(p, s, [&s, cols](int i, int j) {
+    return detail::homogeneous<C, N>(
+        vec_cast<C>(s.control[static_cast<std::size_t>(i) * cols + static_cast<std::size_t>(j)]),
+        C(1));
+  });
+}
+
+/// Distance from p to the NURBS surface; param_b is (u, v) in its domain.
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> distance(
+    const Vec<T, N>& p, const NurbsSurface<T, N>& s) noexcept {
+  if (!is_finite(p) || validate(s) != Status::ok) return non_finite_distance<T, N, NoParam, Vec2<T>>();
+  using C = compute_t<T>;
+  const auto cols = static_cast<std::size_t>(s.cols);
+  return detail::point_tensor_distance<T, N>(p, s, [&s, cols](int i, int j) {
+    const std::size_t k = static_cast<std::size_t>(i) * cols + static_cast<std::size_t>(j);
+    return detail::homogeneous<C, N>(vec_cast<C>(s.control[k]), static_cast<C>(s.weights[k]));
+  });
+}
+
+/// The swapped query: closest[0] and param_a belong to the surface.
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, Vec2<T>, NoParam> distance(const BezierPatch<T, N>& s,
+                                                               const Vec<T, N>& p) noexcept {
+  return swapped(distance(p, s));
+}
+/// The swapped query: closest[0] and param_a belong to the surface.
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, Vec2<T>, NoParam> distance(const BezierTriangle<T, N>& s,
+                                                               const Vec<T, N>& p) noexcept {
+  return swapped(distance(p, s));
+}
+/// The swapped query: closest[0] and param_a belong to the surface.
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, Vec2<T>, NoParam> distance(const BSplineSurface<T, N>& s,
+                                                               const Vec<T, N>& p) noexcept {
+  return swapped(distance(p, s));
+}
+/// The swapped query: closest[0] and param_a belong to the surface.
+template <Real T, int N>
+[[nodiscard]] inline Distance<T, N, Vec2<T>, NoParam> distance(const NurbsSurface<T, N>& s,
+                                                               const Vec<T, N>& p) noexcept {
+  return swapped(distance(p, s));
+}
+
+}  // namespace locus
