@@ -13,6 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <utility>
 
@@ -46,6 +47,30 @@ template <class T>
   return orient2d(Vec2<T>{a.x, a.y}, Vec2<T>{b.x, b.y}, Vec2<T>{c.x, c.y}) == Sign::zero &&
          orient2d(Vec2<T>{a.y, a.z}, Vec2<T>{b.y, b.z}, Vec2<T>{c.y, c.z}) == Sign::zero &&
          orient2d(Vec2<T>{a.x, a.z}, Vec2<T>{b.x, b.z}, Vec2<T>{c.x, c.z}) == Sign::zero;
+}
+
+// The synthetic apex of a coplanar input (see the header): `a` with its coordinate along the
+// first axis not parallel to the plane of a, b, c (non-collinear) changed, so it is off the
+// plane exactly. The faces opposite the apex are oriented toward it; `flip` says to reverse
+// them so that their normals have a positive component along that axis.
+template <class T>
+struct PlanarApex {
+  Vec3<T> point;
+  bool flip;
+};
+
+template <class T>
+[[nodiscard]] PlanarApex<T> planar_apex(const Vec3<T>& a, const Vec3<T>& b,
+                                        const Vec3<T>& c) noexcept {
+  int axis = 2;  // the normal's x component is the orientation of the (y, z) projection, ...
+  if (orient2d(Vec2<T>{a.y, a.z}, Vec2<T>{b.y, b.z}, Vec2<T>{c.y, c.z}) != Sign::zero)
+    axis = 0;
+  else if (orient2d(Vec2<T>{a.z, a.x}, Vec2<T>{b.z, b.x}, Vec2<T>{c.z, c.x}) != Sign::zero)
+    axis = 1;
+  PlanarApex<T> r{a, false};
+  r.point[axis] = a[axis] != T(0) ? a[axis] / T(2) : T(1);
+  r.flip = r.point[axis] < a[axis];
+  return r;
 }
 
 // Position along the 3D Hilbert curve of the cell x[0..2] < 2^bits (Skilling, "Programming the
@@ -113,6 +138,31 @@ void radix_sort_keys(std::uint64_t* keys, std::size_t n, std::vector<std::uint64
     }
     for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & 0xFFFFu]++] = src[i];
     std::swap(src, dst);
+  }
+}
+
+// Keys (Hilbert position << 32 | base + i) of points[i] on a grid over their bounding box with
+// about 8 cells per point.
+template <class T>
+void hilbert_keys(std::span<const Vec3<T>> points, std::uint32_t base,
+                  std::vector<std::uint64_t>& keys) {
+  const std::size_t n = points.size();
+  keys.resize(n);
+  if (n == 0) return;
+  Vec3<T> lo = points[0], hi = lo;
+  for (const auto& q : points)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], q[i]);
+      hi[i] = std::max(hi[i], q[i]);
+    }
+  int bits = 2;
+  while (bits < 10 && (std::size_t(1) << (3 * bits)) < 8 * n) ++bits;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3<T>& q = points[i];
+    const std::uint32_t h = hilbert_index3(quantize10(q.x, lo.x, hi.x) >> (10 - bits),
+                                           quantize10(q.y, lo.y, hi.y) >> (10 - bits),
+                                           quantize10(q.z, lo.z, hi.z) >> (10 - bits), bits);
+    keys[i] = (std::uint64_t(h) << 32) | std::uint64_t(base + i);
   }
 }
 
@@ -357,10 +407,77 @@ const Delaunay3Result& Delaunay3<T>::triangulate(const T* xyz, std::size_t n) {
 
 template <Real T>
 Delaunay3Result Delaunay3<T>::take_result() {
+  if (dirty_) compact(false);
   Delaunay3Result r = std::move(result_);
   result_ = Delaunay3Result{};
   points_.clear();
+  sorted_.clear();
+  orig_.clear();
+  cells_.clear();
+  mark_.clear();
+  free_.clear();
+  dimension_ = -1;
+  status_ = Status::empty_input;
+  dirty_ = false;
+  last_out_ = 0;
   return r;
+}
+
+template <Real T>
+const Delaunay3Result& Delaunay3<T>::result() {
+  if (dirty_) compact(false);
+  return result_;
+}
+
+template <Real T>
+Status Delaunay3<T>::insert(const Vec3<T>& p) {
+  return insert(std::span<const Vec3<T>>(&p, 1));
+}
+
+template <Real T>
+Status Delaunay3<T>::insert(std::span<const Vec3<T>> points) {
+  for (const auto& q : points)
+    if (!is_finite(q.x) || !is_finite(q.y) || !is_finite(q.z)) return Status::non_finite_input;
+  const std::size_t n0 = points_.size();
+  if (n0 + points.size() > kMaxPoints) return Status::invalid_input;
+  if (points.empty()) return status_;
+  points_.insert(points_.end(), points.begin(), points.end());
+  if (dimension_ != 3 || status_ != Status::ok) {
+    // Lower-dimensional (or empty, or failed) so far: the new points may raise the dimension.
+    run();
+    compact(false);
+    return status_;
+  }
+  result_.duplicate_of.resize(points_.size());
+  std::iota(result_.duplicate_of.begin() + std::ptrdiff_t(n0), result_.duplicate_of.end(),
+            static_cast<std::uint32_t>(n0));
+  hilbert_keys(points, static_cast<std::uint32_t>(n0), keys_);
+  brio_order(keys_, keys_tmp_);
+  for (const std::uint64_t key : keys_) {
+    const std::uint32_t i = static_cast<std::uint32_t>(key);
+    const std::uint32_t v = static_cast<std::uint32_t>(sorted_.size());
+    sorted_.push_back(points_[i]);
+    orig_.push_back(i);
+    if (!insert_vertex(v)) {
+      status_ = Status::limit_exceeded;
+      break;
+    }
+  }
+  keys_.clear();
+  dirty_ = true;
+  return status_;
+}
+
+template <Real T>
+Locate3Result Delaunay3<T>::locate(const Vec3<T>& p, std::size_t max_steps) {
+  const Delaunay3Result& r = result();
+  return ::locus::locate<T>(r, std::span<const Vec3<T>>(points_), p, last_out_, max_steps);
+}
+
+template <Real T>
+NearestVertex3Result Delaunay3<T>::nearest_vertex(const Vec3<T>& p) {
+  const Delaunay3Result& r = result();
+  return ::locus::nearest_vertex<T>(r, std::span<const Vec3<T>>(points_), p, last_out_);
 }
 
 // Open addressing over (u, v, value, generation) slots; a slot is live only in the current
@@ -632,12 +749,15 @@ void Delaunay3<T>::lower_dimensional(int dimension) {
     return lexicographic_compare(points_[i], points_[j]) == Sign::negative;
   });
   std::uint32_t kept = idx[0];
+  result_.chain.assign(1, kept);
   for (std::size_t k = 1; k < n; ++k) {
     const std::uint32_t i = idx[k];
-    if (same_point(points_[i], points_[kept]))
+    if (same_point(points_[i], points_[kept])) {
       result_.duplicate_of[i] = kept;
-    else
+    } else {
       kept = i;
+      result_.chain.push_back(kept);  // lexicographic order is the order along the line
+    }
   }
   dimension_ = dimension;
 }
@@ -651,6 +771,8 @@ void Delaunay3<T>::run() {
   last_ = 0;
   walk_rng_ = 0x2545F491u;
   dimension_ = -1;
+  dirty_ = false;
+  last_out_ = 0;
   status_ = Status::ok;
   result_ = Delaunay3Result{};
   const std::size_t n = points_.size();
@@ -664,31 +786,16 @@ void Delaunay3<T>::run() {
     status_ = Status::invalid_input;
     return;
   }
-  Vec3<T> lo = points_[0], hi = lo;
   bool finite = true;
-  for (const auto& q : points_) {
+  for (const auto& q : points_)
     finite = finite && is_finite(q.x) && is_finite(q.y) && is_finite(q.z);
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], q[i]);
-      hi[i] = std::max(hi[i], q[i]);
-    }
-  }
   if (!finite) {
     status_ = Status::non_finite_input;
     return;
   }
 
   // Hilbert order on a grid of about 8 cells per point.
-  int bits = 2;
-  while (bits < 10 && (std::size_t(1) << (3 * bits)) < 8 * n) ++bits;
-  keys_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3<T>& q = points_[i];
-    const std::uint32_t h = hilbert_index3(quantize10(q.x, lo.x, hi.x) >> (10 - bits),
-                                           quantize10(q.y, lo.y, hi.y) >> (10 - bits),
-                                           quantize10(q.z, lo.z, hi.z) >> (10 - bits), bits);
-    keys_[i] = (std::uint64_t(h) << 32) | std::uint64_t(i);
-  }
+  hilbert_keys(std::span<const Vec3<T>>(points_), 0, keys_);
   brio_order(keys_, keys_tmp_);
   orig_.resize(n);
   sorted_.resize(n);
@@ -718,11 +825,18 @@ void Delaunay3<T>::run() {
   }
   std::size_t k3 = k2 + 1;
   while (k3 < n && orient3d(pts[0], pts[k1], pts[k2], pts[k3]) == Sign::zero) ++k3;
-  if (k3 == n) {
-    lower_dimensional(2);
-    return;
-  }
   dimension_ = 3;
+  if (k3 == n) {
+    // Coplanar: tetrahedralize with a synthetic apex off the plane (internal index n, never
+    // mapped to the output); the faces opposite it are the planar Delaunay triangles.
+    const PlanarApex<T> apex = planar_apex(pts[0], pts[k1], pts[k2]);
+    sorted_.push_back(apex.point);
+    orig_.push_back(kNone);
+    pts = sorted_.data();
+    apex_ = static_cast<std::uint32_t>(n);
+    apex_flip_ = apex.flip;
+    dimension_ = 2;
+  }
   std::uint32_t a = 0, b = static_cast<std::uint32_t>(k1), c = static_cast<std::uint32_t>(k2),
                 d = static_cast<std::uint32_t>(k3);
   if (orient3d(pts[a], pts[b], pts[c], pts[d]) == Sign::negative) std::swap(c, d);
@@ -764,6 +878,12 @@ void Delaunay3<T>::compact(bool in_place) {
   r.duplicate_count = 0;
   for (std::size_t i = 0; i < r.duplicate_of.size(); ++i)
     r.duplicate_count += r.duplicate_of[i] != i ? 1u : 0u;
+  dirty_ = false;
+  last_out_ = 0;
+  if (dimension_ == 2) {
+    planar_triangles(in_place);
+    return;
+  }
   if (dimension_ < 3) return;
   // New index of each real cell (mark_ is reused as the map); ghosts and free slots map to -1.
   const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
@@ -815,14 +935,286 @@ void Delaunay3<T>::compact(bool in_place) {
       o.neighbors[i] = map_neighbor(c.neighbors[i]);
     }
   }
+  // The query start: a real cell of the last inserted point (under it when last_ is a ghost).
+  std::uint32_t last = last_;
+  if (cells_[last].vertices[3] == kGhost) last = std::uint32_t(cells_[last].neighbors[3]) >> 2;
+  last_out_ = mark_[last] == kNone ? 0 : static_cast<std::int32_t>(mark_[last]);
   // The marks were overwritten: restart the epochs.
   std::fill(mark_.begin(), mark_.end(), 0u);
   epoch_ = 0;
 }
 
-// ---- the lifted-hull method (brute force) ------------------------------------------------
+// Dimension 2: every real cell has the synthetic apex as a vertex; its opposite face is a
+// planar Delaunay triangle.
+template <Real T>
+void Delaunay3<T>::planar_triangles(bool in_place) {
+  Delaunay3Result& r = result_;
+  r.triangles.clear();
+  for (const Delaunay3Cell& c : cells_) {
+    if (c.vertices[3] >= kDead) continue;
+    int j = 0;
+    while (j < 3 && c.vertices[std::size_t(j)] != apex_) ++j;
+    std::array<std::uint32_t, 3> t;
+    for (int k = 0; k < 3; ++k) t[std::size_t(k)] = orig_[c.vertices[std::size_t(kFace[j][k])]];
+    if (apex_flip_) std::swap(t[1], t[2]);
+    r.triangles.push_back(t);
+  }
+  if (in_place) {
+    cells_.clear();
+    cells_.shrink_to_fit();
+    mark_.clear();
+    mark_.shrink_to_fit();
+    sorted_.clear();
+    sorted_.shrink_to_fit();
+    orig_.clear();
+    orig_.shrink_to_fit();
+    dimension_ = -1;
+  }
+}
+
+// ---- the lifted-hull method: a 4D convex hull by beneath-beyond -------------------------
 
 namespace {
+
+// The hull of the lifted points p' = (p, |p|^2) closed above by the point at vertical infinity
+// kGhost. Facets are 4-tuples of point indices: a lower facet (a, b, c, d) has
+// orient3d(a, b, c, d) > 0 and is a Delaunay tetrahedron; a facet (a, b, c, kGhost) stands on
+// the hull face abc with the outside on its positive side. nb[i] is the facet across the ridge
+// opposite v[i]. Replacing one vertex of a facet by a point keeps the facet's orientation, so a
+// new facet is a copy of a removed one with the apex put in.
+template <class T>
+class LiftedHull {
+ public:
+  explicit LiftedHull(std::span<const Vec3<T>> points) : p_(points) {}
+
+  struct Facet {
+    std::array<std::uint32_t, 4> v;
+    std::array<std::uint32_t, 4> nb;
+    std::uint32_t head;  // first point of the outside set (kNone: empty)
+    bool alive;
+  };
+
+  // Builds the hull, inserting the points in `order` (all distinct, not all coplanar).
+  bool build(std::span<const std::uint32_t> order);
+
+  std::vector<Facet> facets;
+
+ private:
+  struct Horizon {
+    std::uint32_t facet, face, other;
+  };
+
+  // p sees facet f: p' lies strictly on the outer side of its hyperplane.
+  bool sees(std::uint32_t f, std::uint32_t q) const noexcept {
+    const Facet& F = facets[f];
+    const Vec3<T>* p = p_.data();
+    if (F.v[3] == kGhost) {
+      const Sign s = orient3d(p[F.v[0]], p[F.v[1]], p[F.v[2]], p[q]);
+      if (s != Sign::zero) return s == Sign::positive;
+      // On the plane of the hull face: seen together with the lower facet under the face.
+      const Facet& G = facets[F.nb[3]];
+      return insphere_perturbed_inline(p[G.v[0]], p[G.v[1]], p[G.v[2]], p[G.v[3]], p[q]) ==
+             Sign::positive;
+    }
+    return insphere_perturbed_inline(p[F.v[0]], p[F.v[1]], p[F.v[2]], p[F.v[3]], p[q]) ==
+           Sign::positive;
+  }
+
+  std::uint32_t any_visible(std::uint32_t q) const noexcept {
+    for (std::uint32_t f = 0; f < facets.size(); ++f)
+      if (facets[f].alive && sees(f, q)) return f;
+    return kNone;
+  }
+
+  void assign(std::uint32_t q, std::uint32_t f) noexcept {
+    owner_[q] = f;
+    next_[q] = facets[f].head;
+    facets[f].head = q;
+  }
+
+  std::uint32_t new_facet(const Facet& f) {
+    if (!free_.empty()) {
+      const std::uint32_t s = free_.back();
+      free_.pop_back();
+      facets[s] = f;
+      return s;
+    }
+    facets.push_back(f);
+    return static_cast<std::uint32_t>(facets.size() - 1);
+  }
+
+  // Glues the ridges through `apex` among the given facets: the ridge of facet f opposite v[j]
+  // (v[j] != apex) is named by its two vertices other than the apex.
+  bool link(std::span<const std::uint32_t> list, std::uint32_t apex) {
+    open_.clear();
+    for (const std::uint32_t f : list)
+      for (std::uint32_t j = 0; j < 4; ++j) {
+        const auto& v = facets[f].v;
+        if (v[j] == apex) continue;
+        std::uint32_t e[2], k = 0;
+        for (std::uint32_t i = 0; i < 4; ++i)
+          if (i != j && v[i] != apex) e[k++] = v[i];
+        const std::uint64_t key =
+            (std::uint64_t(std::min(e[0], e[1])) << 32) | std::max(e[0], e[1]);
+        const auto it = open_.find(key);
+        if (it == open_.end()) {
+          open_.emplace(key, std::pair<std::uint32_t, std::uint32_t>{f, j});
+        } else {
+          facets[f].nb[j] = it->second.first;
+          facets[it->second.first].nb[it->second.second] = f;
+          open_.erase(it);
+        }
+      }
+    return open_.empty();
+  }
+
+  std::span<const Vec3<T>> p_;
+  std::vector<std::uint32_t> owner_, next_, mark_, free_, stack_, visible_, fresh_;
+  std::vector<Horizon> horizon_;
+  std::map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> open_;
+  std::uint32_t epoch_ = 0;
+};
+
+template <class T>
+bool LiftedHull<T>::build(std::span<const std::uint32_t> order) {
+  const Vec3<T>* p = p_.data();
+  const std::size_t m = order.size();
+  owner_.assign(p_.size(), kNone);
+  next_.assign(p_.size(), kNone);
+  std::vector<char> inserted(p_.size(), 0);
+  // The first simplex: the first point, the next one, the first off their line, the first off
+  // their plane.
+  std::size_t i2 = 2;
+  while (i2 < m && collinear(p[order[0]], p[order[1]], p[order[i2]])) ++i2;
+  std::size_t i3 = i2 + 1;
+  while (i3 < m && orient3d(p[order[0]], p[order[1]], p[order[i2]], p[order[i3]]) == Sign::zero)
+    ++i3;
+  if (i3 >= m) return false;
+  std::uint32_t a = order[0], b = order[1], c = order[i2], d = order[i3];
+  if (orient3d(p[a], p[b], p[c], p[d]) == Sign::negative) std::swap(c, d);
+  facets.assign(5, Facet{{a, b, c, d}, {kNone, kNone, kNone, kNone}, kNone, true});
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    const auto& v = facets[0].v;
+    facets[1 + i].v = {v[std::size_t(kFace[i][0])], v[std::size_t(kFace[i][2])],
+                       v[std::size_t(kFace[i][1])], kGhost};
+    facets[1 + i].nb[3] = 0;
+    facets[0].nb[i] = 1 + i;
+  }
+  const std::uint32_t ghosts[4] = {1, 2, 3, 4};
+  if (!link(ghosts, kGhost)) return false;
+  for (const std::uint32_t q : {a, b, c, d}) inserted[q] = 1;
+  for (const std::uint32_t q : order) {
+    if (inserted[q]) continue;
+    const std::uint32_t f = any_visible(q);
+    if (f == kNone) return false;  // a lifted point is always a hull vertex
+    assign(q, f);
+  }
+  mark_.assign(facets.size(), 0);
+
+  for (const std::uint32_t q : order) {
+    if (inserted[q]) continue;
+    inserted[q] = 1;
+    std::uint32_t f0 = owner_[q];
+    // A facet on the hull plane of q may stop being seen when the lower facet under it changed.
+    if (!sees(f0, q)) f0 = any_visible(q);
+    if (f0 == kNone) return false;
+    // The visible facets: a connected region, searched from f0.
+    ++epoch_;
+    const std::uint32_t in = 2 * epoch_, out = in + 1;
+    if (mark_.size() < facets.size()) mark_.resize(facets.size(), 0);
+    visible_.assign(1, f0);
+    stack_.assign(1, f0);
+    horizon_.clear();
+    mark_[f0] = in;
+    while (!stack_.empty()) {
+      const std::uint32_t f = stack_.back();
+      stack_.pop_back();
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        const std::uint32_t g = facets[f].nb[i];
+        if (mark_[g] == in) continue;
+        if (mark_[g] != out) {
+          if (sees(g, q)) {
+            mark_[g] = in;
+            stack_.push_back(g);
+            visible_.push_back(g);
+            continue;
+          }
+          mark_[g] = out;
+        }
+        horizon_.push_back({f, i, g});
+      }
+    }
+    // The cone from q over the horizon ridges.
+    fresh_.clear();
+    for (const Horizon& h : horizon_) {
+      Facet nf = facets[h.facet];
+      nf.v[h.face] = q;
+      nf.nb = {kNone, kNone, kNone, kNone};
+      nf.nb[h.face] = h.other;
+      nf.head = kNone;
+      nf.alive = true;
+      const std::uint32_t s = new_facet(nf);
+      auto& back = facets[h.other].nb;
+      for (auto& x : back)
+        if (x == h.facet) x = s;
+      fresh_.push_back(s);
+    }
+    if (!link(fresh_, q)) return false;
+    if (mark_.size() < facets.size()) mark_.resize(facets.size(), 0);
+    // Re-assign the outside sets of the removed facets to the new ones.
+    for (const std::uint32_t f : visible_) {
+      facets[f].alive = false;
+      for (std::uint32_t x = facets[f].head; x != kNone;) {
+        const std::uint32_t nx = next_[x];
+        if (!inserted[x]) {
+          std::uint32_t g = kNone;
+          for (const std::uint32_t s : fresh_)
+            if (sees(s, x)) {
+              g = s;
+              break;
+            }
+          if (g == kNone) g = any_visible(x);
+          if (g == kNone) return false;
+          assign(x, g);
+        }
+        x = nx;
+      }
+      facets[f].head = kNone;
+    }
+    for (const std::uint32_t f : visible_) free_.push_back(f);
+  }
+  return true;
+}
+
+// The points with their duplicates removed (the smallest index of equal points is kept, in
+// lexicographic order) and their affine dimension.
+template <class T>
+int dedupe_and_dimension(std::span<const Vec3<T>> pts, Delaunay3Result& r,
+                         std::vector<std::uint32_t>& kept) {
+  const std::size_t n = pts.size();
+  std::vector<std::uint32_t> idx(n);
+  std::iota(idx.begin(), idx.end(), 0u);
+  std::stable_sort(idx.begin(), idx.end(), [&](std::uint32_t i, std::uint32_t j) {
+    return lexicographic_compare(pts[i], pts[j]) == Sign::negative;
+  });
+  kept.clear();
+  for (const std::uint32_t i : idx) {
+    if (!kept.empty() && same_point(pts[i], pts[kept.back()])) {
+      r.duplicate_of[i] = kept.back();
+      ++r.duplicate_count;
+    } else {
+      kept.push_back(i);
+    }
+  }
+  const std::size_t m = kept.size();
+  if (m == 1) return 0;
+  std::size_t i2 = 2;
+  while (i2 < m && collinear(pts[kept[0]], pts[kept[1]], pts[kept[i2]])) ++i2;
+  if (i2 == m) return 1;
+  for (std::size_t i3 = i2 + 1; i3 < m; ++i3)
+    if (orient3d(pts[kept[0]], pts[kept[1]], pts[kept[i2]], pts[kept[i3]]) != Sign::zero) return 3;
+  return 2;
+}
 
 template <class T>
 Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
@@ -837,92 +1229,280 @@ Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
       return r;
     }
   }
-  if (n > 64) {
+  if (n > kMaxPoints) {
     r.status = Status::invalid_input;
     return r;
   }
   r.status = Status::ok;
   std::vector<std::uint32_t> kept;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    for (const std::uint32_t k : kept) {
-      if (same_point(pts[i], pts[k])) {
-        r.duplicate_of[i] = k;
-        break;
-      }
-    }
-    if (r.duplicate_of[i] == i)
-      kept.push_back(i);
-    else
-      ++r.duplicate_count;
-  }
-  const std::size_t m = kept.size();
-  // Affine dimension of the kept points.
-  int dim = m > 1 ? 1 : 0;
-  std::size_t i2 = 2;
-  while (i2 < m && collinear(pts[kept[0]], pts[kept[1]], pts[kept[i2]])) ++i2;
-  if (i2 < m) {
-    dim = 2;
-    for (std::size_t i3 = i2 + 1; i3 < m && dim < 3; ++i3)
-      if (orient3d(pts[kept[0]], pts[kept[1]], pts[kept[i2]], pts[kept[i3]]) != Sign::zero) dim = 3;
-  }
+  const int dim = dedupe_and_dimension(pts, r, kept);
   r.dimension = dim;
-  if (dim < 3) return r;
-
-  // Every quadruple whose lifted hyperplane has all other lifted points above it (perturbed
-  // insphere negative) is a lower facet of the lifted hull: a Delaunay tetrahedron.
-  for (std::size_t a = 0; a < m; ++a)
-    for (std::size_t b = a + 1; b < m; ++b)
-      for (std::size_t c = b + 1; c < m; ++c)
-        for (std::size_t d = c + 1; d < m; ++d) {
-          std::uint32_t q[4] = {kept[a], kept[b], kept[c], kept[d]};
-          const Sign o = orient3d(pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]]);
-          if (o == Sign::zero) continue;
-          if (o == Sign::negative) std::swap(q[2], q[3]);
-          bool empty = true;
-          for (std::size_t e = 0; e < m && empty; ++e) {
-            if (e == a || e == b || e == c || e == d) continue;
-            empty = insphere_perturbed_inline(pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]],
-                                              pts[kept[e]]) == Sign::negative;
-          }
-          if (empty) r.tetrahedra.push_back({{q[0], q[1], q[2], q[3]}, {-1, -1, -1, -1}});
-        }
-  // Adjacency by matching faces (sorted vertex triples); unmatched faces are the hull.
-  struct FaceKey {
-    std::array<std::uint32_t, 3> key;
-    std::uint32_t cell, face;
-  };
-  std::vector<FaceKey> faces;
-  for (std::uint32_t t = 0; t < r.tetrahedra.size(); ++t)
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      const auto& v = r.tetrahedra[t].vertices;
-      std::array<std::uint32_t, 3> k = {v[std::size_t(kFace[i][0])], v[std::size_t(kFace[i][1])],
-                                        v[std::size_t(kFace[i][2])]};
-      std::sort(k.begin(), k.end());
-      faces.push_back({k, t, i});
+  if (dim < 2) {
+    r.chain = kept;  // lexicographic order is the order along the line
+    return r;
+  }
+  // Internal point k is input kept[k]; dimension 2 appends the synthetic apex.
+  std::vector<Vec3<T>> q(kept.size());
+  for (std::size_t k = 0; k < kept.size(); ++k) q[k] = pts[kept[k]];
+  PlanarApex<T> apex{};
+  if (dim == 2) {
+    std::size_t i2 = 2;
+    while (collinear(q[0], q[1], q[i2])) ++i2;
+    apex = planar_apex(q[0], q[1], q[i2]);
+    q.push_back(apex.point);
+  }
+  const std::uint32_t m = static_cast<std::uint32_t>(q.size());
+  // A fixed-seed shuffle: random insertion order, no spatial sorting.
+  std::vector<std::uint32_t> order(m);
+  std::iota(order.begin(), order.end(), 0u);
+  std::uint64_t state = 0x243F6A8885A308D3ull;
+  for (std::uint32_t i = m; i > 1; --i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    std::swap(order[i - 1], order[static_cast<std::uint32_t>((state >> 33) % i)]);
+  }
+  LiftedHull<T> hull{std::span<const Vec3<T>>(q)};
+  if (!hull.build(order)) {
+    r.status = Status::invalid_topology;  // impossible with a consistent perturbation
+    return r;
+  }
+  const std::uint32_t apex_id = dim == 2 ? m - 1 : kNone;
+  std::vector<std::int32_t> index(hull.facets.size(), -1);
+  std::int32_t count = 0;
+  for (std::size_t f = 0; f < hull.facets.size(); ++f)
+    if (hull.facets[f].alive && hull.facets[f].v[3] != kGhost) index[f] = count++;
+  for (std::size_t f = 0; f < hull.facets.size(); ++f) {
+    const auto& F = hull.facets[f];
+    if (!F.alive) continue;
+    if (dim == 2) {
+      if (F.v[3] == kGhost) continue;
+      int j = 0;
+      while (F.v[std::size_t(j)] != apex_id) ++j;
+      std::array<std::uint32_t, 3> t;
+      for (int k = 0; k < 3; ++k) t[std::size_t(k)] = kept[F.v[std::size_t(kFace[j][k])]];
+      if (apex.flip) std::swap(t[1], t[2]);
+      r.triangles.push_back(t);
+      continue;
     }
-  std::sort(faces.begin(), faces.end(),
-            [](const FaceKey& x, const FaceKey& y) { return x.key < y.key; });
-  for (std::size_t k = 0; k < faces.size();) {
-    std::size_t e = k + 1;
-    while (e < faces.size() && faces[e].key == faces[k].key) ++e;
-    if (e - k == 2) {
-      r.tetrahedra[faces[k].cell].neighbors[faces[k].face] = std::int32_t(faces[k + 1].cell);
-      r.tetrahedra[faces[k + 1].cell].neighbors[faces[k + 1].face] = std::int32_t(faces[k].cell);
-    } else if (e - k == 1) {
-      const auto& v = r.tetrahedra[faces[k].cell].vertices;
-      const int i = int(faces[k].face);
-      // Face i has the cell on its positive side; the outward orientation is the reverse.
-      r.hull.push_back(
-          {v[std::size_t(kFace[i][0])], v[std::size_t(kFace[i][2])], v[std::size_t(kFace[i][1])]});
-    } else {
-      r.status = Status::invalid_topology;  // impossible with a consistent perturbation
+    if (F.v[3] == kGhost) {
+      r.hull.push_back({kept[F.v[0]], kept[F.v[1]], kept[F.v[2]]});
+      continue;
     }
-    k = e;
+    Delaunay3Cell c;
+    for (std::size_t i = 0; i < 4; ++i) {
+      c.vertices[i] = kept[F.v[i]];
+      c.neighbors[i] = index[F.nb[i]];
+    }
+    r.tetrahedra.push_back(c);
   }
   return r;
 }
 
 }  // namespace
+
+// ---- queries on a result ---------------------------------------------------------------
+
+namespace {
+
+// Fills r for a point inside or on the closed tetrahedron t; bit i of zero_mask says the point
+// is on the plane of face i (the face opposite corner i).
+void classify_location(Locate3Result& r, std::size_t t, unsigned zero_mask) noexcept {
+  r.tetrahedron = static_cast<std::int32_t>(t);
+  const int zeros = std::popcount(zero_mask);
+  if (zeros == 0) {
+    r.location = Location3::inside;
+  } else if (zeros == 1) {
+    r.location = Location3::on_face;
+    r.face = std::countr_zero(zero_mask);
+  } else if (zeros == 2) {
+    // Faces i and j share the edge of the two other corners.
+    r.location = Location3::on_edge;
+    const unsigned rest = ~zero_mask & 15u;
+    r.edge = {std::countr_zero(rest), 31 - std::countl_zero(rest)};
+  } else {
+    // Three faces share the corner none of them is opposite to.
+    r.location = Location3::on_vertex;
+    r.corner = std::countr_zero(~zero_mask & 15u);
+  }
+}
+
+[[nodiscard]] bool valid_cell(const Delaunay3Cell& c, std::size_t np, std::size_t nt) noexcept {
+  for (std::size_t i = 0; i < 4; ++i)
+    if (c.vertices[i] >= np || (c.neighbors[i] >= 0 && std::size_t(c.neighbors[i]) >= nt))
+      return false;
+  return true;
+}
+
+template <class T>
+[[nodiscard]] Sign face_side(std::span<const Vec3<T>> pts, const Delaunay3Cell& c, int i,
+                             const Vec3<T>& p) noexcept {
+  return orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],
+                  pts[c.vertices[std::size_t(kFace[i][1])]],
+                  pts[c.vertices[std::size_t(kFace[i][2])]], p);
+}
+
+}  // namespace
+
+template <Real T>
+Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points, const Vec3<T>& p,
+                     std::int32_t start, std::size_t max_steps) noexcept {
+  Locate3Result r;
+  const std::size_t nt = dt.tetrahedra.size();
+  if (nt == 0) {
+    r.status = Status::empty_input;
+    return r;
+  }
+  if (!is_finite(p.x) || !is_finite(p.y) || !is_finite(p.z)) {
+    r.status = Status::non_finite_input;
+    return r;
+  }
+  const std::size_t np = points.size();
+  if (max_steps == 0) max_steps = nt + 64;
+  // The visibility walk: leave through the first face p is strictly beyond. In a Delaunay
+  // tetrahedralization it visits no tetrahedron twice (acyclicity of the in-front relation).
+  std::size_t t = start >= 0 && std::size_t(start) < nt ? std::size_t(start) : 0;
+  std::size_t came = nt;
+  for (std::size_t step = 0; step < max_steps; ++step) {
+    r.steps = step + 1;
+    const Delaunay3Cell& c = dt.tetrahedra[t];
+    if (!valid_cell(c, np, nt)) {
+      r.status = Status::invalid_input;
+      return r;
+    }
+    unsigned zero_mask = 0;
+    bool moved = false;
+    for (int i = 0; i < 4; ++i) {
+      const std::int32_t nb = c.neighbors[std::size_t(i)];
+      if (nb >= 0 && std::size_t(nb) == came) continue;  // p is strictly on this side
+      const Sign s = face_side(points, c, i, p);
+      if (s == Sign::negative) {
+        if (nb < 0) {  // beyond a hull face: outside the convex hull
+          r.location = Location3::outside;
+          r.tetrahedron = static_cast<std::int32_t>(t);
+          r.face = i;
+          return r;
+        }
+        came = t;
+        t = std::size_t(nb);
+        moved = true;
+        break;
+      }
+      if (s == Sign::zero) zero_mask |= 1u << i;
+    }
+    if (!moved) {
+      classify_location(r, t, zero_mask);
+      return r;
+    }
+  }
+  // Out of steps: an exact scan.
+  r.scanned = true;
+  for (std::size_t u = 0; u < nt; ++u) {
+    const Delaunay3Cell& c = dt.tetrahedra[u];
+    if (!valid_cell(c, np, nt)) {
+      r.status = Status::invalid_input;
+      return r;
+    }
+    unsigned zero_mask = 0;
+    bool in = true;
+    for (int i = 0; i < 4 && in; ++i) {
+      const Sign s = face_side(points, c, i, p);
+      in = s != Sign::negative;
+      if (s == Sign::zero) zero_mask |= 1u << i;
+    }
+    if (in) {
+      classify_location(r, u, zero_mask);
+      return r;
+    }
+  }
+  for (std::size_t u = 0; u < nt; ++u)
+    for (int i = 0; i < 4; ++i)
+      if (dt.tetrahedra[u].neighbors[std::size_t(i)] < 0 &&
+          face_side(points, dt.tetrahedra[u], i, p) == Sign::negative) {
+        r.location = Location3::outside;
+        r.tetrahedron = static_cast<std::int32_t>(u);
+        r.face = i;
+        return r;
+      }
+  r.status = Status::invalid_input;  // not a tetrahedralization of a convex region
+  return r;
+}
+
+template <Real T>
+NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
+                                    const Vec3<T>& p, std::int32_t start) noexcept {
+  NearestVertex3Result r;
+  if (!is_finite(p.x) || !is_finite(p.y) || !is_finite(p.z)) {
+    r.status = Status::non_finite_input;
+    return r;
+  }
+  const std::size_t np = points.size();
+  // Every kept point by an exact comparison: lower dimensions, and the fallback below.
+  auto scan = [&]() noexcept {
+    r.tetrahedron = -1;
+    bool found = false;
+    for (std::size_t i = 0; i < np; ++i) {
+      if (i < dt.duplicate_of.size() && dt.duplicate_of[i] != i) continue;
+      if (!found || compare_sqr_distance(p, points[i], points[r.vertex]) == Sign::negative)
+        r.vertex = static_cast<std::uint32_t>(i);
+      found = true;
+    }
+    r.status = found ? Status::ok : Status::empty_input;
+  };
+  if (dt.tetrahedra.empty()) {
+    scan();
+    return r;
+  }
+  const Locate3Result loc = locate(dt, points, p, start, 0);
+  if (loc.status != Status::ok) {
+    r.status = loc.status;
+    return r;
+  }
+  std::size_t t = std::size_t(loc.tetrahedron);
+  std::uint32_t best = dt.tetrahedra[t].vertices[0];
+  for (const std::uint32_t v : dt.tetrahedra[t].vertices)
+    if (compare_sqr_distance(p, points[v], points[best]) == Sign::negative) best = v;
+  // Greedy descent: search the star of `best` (the tetrahedra around it, reached across the
+  // faces through it) for a strictly closer vertex. Each move strictly decreases the distance.
+  constexpr std::size_t kStar = 512;
+  std::uint32_t star[kStar];
+  for (;;) {
+    std::size_t count = 1, head = 0;
+    star[0] = static_cast<std::uint32_t>(t);
+    bool moved = false;
+    while (head < count && !moved) {
+      const std::uint32_t s = star[head++];
+      const Delaunay3Cell& c = dt.tetrahedra[s];
+      if (!valid_cell(c, np, dt.tetrahedra.size())) {
+        r.status = Status::invalid_input;
+        return r;
+      }
+      for (std::size_t i = 0; i < 4 && !moved; ++i) {
+        const std::uint32_t w = c.vertices[i];
+        if (w == best) continue;
+        if (compare_sqr_distance(p, points[w], points[best]) == Sign::negative) {
+          best = w;
+          t = s;
+          moved = true;
+          break;
+        }
+        // Face i contains `best` (it is opposite another corner): its neighbour is in the star.
+        const std::int32_t nb = c.neighbors[i];
+        if (nb < 0) continue;
+        bool seen = false;
+        for (std::size_t k = 0; k < count && !seen; ++k) seen = star[k] == std::uint32_t(nb);
+        if (seen) continue;
+        if (count == kStar) {  // an unusually large star: decide by scanning
+          scan();
+          return r;
+        }
+        star[count++] = static_cast<std::uint32_t>(nb);
+      }
+    }
+    if (!moved) break;
+  }
+  r.vertex = best;
+  r.tetrahedron = static_cast<std::int32_t>(t);
+  return r;
+}
 
 template <Real T>
 Delaunay3Result delaunay(std::span<const Vec3<T>> points, const Delaunay3Options& options) {
@@ -938,6 +1518,16 @@ template class Delaunay3<float>;
 template class Delaunay3<double>;
 template Delaunay3Result delaunay<float>(std::span<const Vec3<float>>, const Delaunay3Options&);
 template Delaunay3Result delaunay<double>(std::span<const Vec3<double>>, const Delaunay3Options&);
+template Locate3Result locate<float>(const Delaunay3Result&, std::span<const Vec3<float>>,
+                                     const Vec3<float>&, std::int32_t, std::size_t) noexcept;
+template Locate3Result locate<double>(const Delaunay3Result&, std::span<const Vec3<double>>,
+                                      const Vec3<double>&, std::int32_t, std::size_t) noexcept;
+template NearestVertex3Result nearest_vertex<float>(const Delaunay3Result&,
+                                                    std::span<const Vec3<float>>,
+                                                    const Vec3<float>&, std::int32_t) noexcept;
+template NearestVertex3Result nearest_vertex<double>(const Delaunay3Result&,
+                                                     std::span<const Vec3<double>>,
+                                                     const Vec3<double>&, std::int32_t) noexcept;
 template Sign insphere_perturbed<float>(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&,
                                         const Vec3<float>&, const Vec3<float>&) noexcept;
 template Sign insphere_perturbed<double>(const Vec3<double>&, const Vec3<double>&,

@@ -27,10 +27,29 @@
 //
 // Second method (Delaunay3Method::lifted_hull): the book's construction - lift every point p to
 // (p, |p|^2) on the paraboloid in 4D; the lower convex hull's facets project to the Delaunay
-// tetrahedra. Evaluated by brute force: a non-degenerate quadruple is a lower facet iff every
-// other lifted point lies above its hyperplane, i.e. the perturbed insphere test is negative
-// for every other point. O(n^5) time: for small n (at most 64 points, else invalid_input) and as
-// an independent oracle of the incremental method.
+// tetrahedra. Computed as a 4D convex hull in its own right (beneath-beyond with outside sets,
+// as in Qhull): the lifted points are inserted in a fixed-seed random order (no spatial sort, no
+// walk), each uninserted point is kept in the outside set of one facet it sees, the facets a new
+// point sees are found by a search from that facet, replaced by the cone from the point over
+// their horizon, and the points of the removed facets are re-assigned to the new facets (with an
+// exact scan of all facets as the fallback). The upper side is closed by a point at vertical
+// infinity, so the facets through it are the 3D hull faces. orient4d of lifted points is the
+// insphere determinant, so every decision is the exact (perturbed) insphere or orient3d. The
+// facets through the point at infinity are seen from p when p is strictly beyond their hull face,
+// or on its plane and the lower facet under that face is seen. Duplicates are removed first (the
+// smallest index is kept). O(n log n) expected for random input, O(n^2) worst; about 10x slower
+// than the incremental method: an independent second algorithm that the tests compare against.
+//
+// Coplanar input (dimension 2). Both methods add one synthetic point e off the plane (a copy of
+// a first point with one coordinate changed) and tetrahedralize; every cell then has e as a
+// vertex and its face opposite e is a Delaunay triangle of the plane: the ball through a, b, c, e
+// meets the plane in the circumdisk of a, b, c, so insphere(a, b, c, e, d) is the exact in-plane
+// incircle test of d, in any tilted plane, with no projection (a coordinate projection is affine
+// and does not preserve circles). The perturbation then orders the in-plane ties by the
+// lexicographic rank of the points (e's own term vanishes), so the planar result is the unique
+// Delaunay triangulation of the perturbed points in their plane, independent of where e is and
+// of the input order. Exact under the same ranges as insphere (e's changed coordinate is half
+// the original one, or 1 when that is 0).
 //
 // Output (Delaunay3Result):
 //   tetrahedra[t].vertices   input point indices with orient3d(v0, v1, v2, v3) > 0 (exactly).
@@ -47,7 +66,32 @@
 //   dimension                3 for a real tetrahedralization; 2 when all points are coplanar,
 //                            1 collinear, 0 all equal (then tetrahedra and hull are empty and
 //                            duplicate_of is still filled); -1 for empty or bad input.
+//   triangles                dimension 2 only: the Delaunay triangulation of the points in their
+//                            plane (input indices). All triangles face the same way: their normal
+//                            (b - a) x (c - a) has a positive component along the first axis
+//                            (x, then y, then z) not parallel to the plane (counter-clockwise
+//                            seen from +z for a plane z = const). They cover the points' convex
+//                            polygon; points on its boundary are vertices.
+//   chain                    dimension 1: the distinct points in order along their line
+//                            (lexicographic order, x then y then z), consecutive ones forming
+//                            the segments; dimension 0: the one kept point.
 // Lower-dimensional output is data: the status stays ok.
+//
+// Queries on a result (free functions, also members of Delaunay3): locate(p) walks from a start
+// tetrahedron toward p (visibility walk, exact orient3d, at most max_steps steps, then an exact
+// scan of all tetrahedra) and reports inside / on_face / on_edge / on_vertex / outside (strictly
+// outside the hull, with a hull face p lies beyond). nearest_vertex(p) locates p and then
+// descends greedily over Delaunay edges to strictly closer vertices (exact distance comparison);
+// on a Delaunay tetrahedralization that ends at a nearest vertex (the lifted points form a convex
+// polytope whose edges are Delaunay edges, and |v - p|^2 is a linear function on it up to a
+// constant, so a vertex with no improving edge is a minimum). Both are O(n^(1/3)) expected steps
+// for evenly spread points from a far start, O(1) from a near one; no allocation. For results of
+// dimension < 3, locate reports empty_input and nearest_vertex scans the kept points.
+//
+// Incremental use: Delaunay3::insert adds points to a finished tetrahedralization (the same
+// walk and cavity code; a batch is Hilbert-sorted first); result() is compacted lazily, once per
+// batch of insertions, O(tetrahedra). When the current result has dimension < 3, insert rebuilds
+// from all points.
 //
 // Bad input: any NaN or infinite coordinate gives Status::non_finite_input and an empty result;
 // no points gives Status::empty_input; more than 2^26 points gives Status::invalid_input. Every
@@ -102,14 +146,45 @@ struct Delaunay3Result {
   std::vector<std::array<std::uint32_t, 3>> hull;  ///< boundary faces, outward normals
   std::vector<std::uint32_t> duplicate_of;         ///< per input point: itself or the kept point
   std::size_t duplicate_count = 0;                 ///< number of i with duplicate_of[i] != i
+  std::vector<std::array<std::uint32_t, 3>> triangles;  ///< dimension 2: in-plane Delaunay
+  std::vector<std::uint32_t> chain;                     ///< dimension 1 (or 0): sorted points
 
   [[nodiscard]] std::size_t tetrahedron_count() const noexcept { return tetrahedra.size(); }
 };
 
+/// Where a point lies relative to a tetrahedralization.
+enum class Location3 : std::uint8_t {
+  outside,    ///< strictly outside the hull: beyond hull face `face` of `tetrahedron`
+  inside,     ///< strictly inside `tetrahedron`
+  on_face,    ///< in the relative interior of face `face` of `tetrahedron`
+  on_edge,    ///< in the relative interior of the edge (corners edge[0], edge[1])
+  on_vertex,  ///< equal to corner `corner` of `tetrahedron`
+};
+
+/// The result of locate (3D).
+struct Locate3Result {
+  Status status = Status::ok;  ///< ok; empty_input (no tetrahedra); non_finite_input;
+                               ///< invalid_input (an index of the result is out of range)
+  Location3 location = Location3::outside;
+  std::int32_t tetrahedron = -1;       ///< a tetrahedron of the result, -1 when not found
+  int face = -1;                       ///< on_face, outside: face index (opposite vertices[face])
+  std::array<int, 2> edge = {-1, -1};  ///< on_edge: the edge's two corners, increasing
+  int corner = -1;                     ///< on_vertex: the corner equal to the point
+  std::size_t steps = 0;               ///< tetrahedra visited by the walk
+  bool scanned = false;                ///< the walk ran out of steps and an exact scan decided
+};
+
+/// The result of nearest_vertex (3D).
+struct NearestVertex3Result {
+  Status status = Status::ok;     ///< ok; empty_input; non_finite_input; invalid_input
+  std::uint32_t vertex = 0;       ///< input index of a nearest vertex (a kept point)
+  std::int32_t tetrahedron = -1;  ///< a tetrahedron with that vertex (-1 for dimension < 3)
+};
+
 /// Algorithm used by delaunay (3D).
 enum class Delaunay3Method : std::uint8_t {
-  incremental,  ///< Bowyer-Watson with BRIO/Hilbert order and walking (fast, any n)
-  lifted_hull,  ///< lower hull of the lifted points by brute force, O(n^5), n <= 64 (oracle)
+  incremental,  ///< Bowyer-Watson with BRIO/Hilbert order and walking (fast)
+  lifted_hull,  ///< 4D convex hull of the lifted points, beneath-beyond (second algorithm)
 };
 
 /// Options of delaunay (3D).
@@ -130,7 +205,24 @@ template <Real T>
 [[nodiscard]] Delaunay3Result delaunay(std::span<const Vec3<T>> points,
                                        const Delaunay3Options& options = {});
 
-/// Reusable 3D Delaunay tetrahedralizer: keeps its buffers between calls.
+/// Walks from tetrahedron `start` of `dt` toward p and reports where p lies (see the top of
+/// delaunay3.hpp). max_steps = 0 means the tetrahedron count plus 64, which a walk in a Delaunay
+/// tetrahedralization never exceeds (it visits no tetrahedron twice); past max_steps an exact
+/// scan decides. `points` are the points `dt` was computed from.
+template <Real T>
+[[nodiscard]] Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
+                                   const Vec3<T>& p, std::int32_t start = 0,
+                                   std::size_t max_steps = 0) noexcept;
+
+/// A vertex of `dt` nearest to p (exact comparisons): locate from `start`, then greedy descent
+/// over Delaunay edges. Ties: one of the nearest. Dimension < 3: a scan of the kept points.
+template <Real T>
+[[nodiscard]] NearestVertex3Result nearest_vertex(const Delaunay3Result& dt,
+                                                  std::span<const Vec3<T>> points, const Vec3<T>& p,
+                                                  std::int32_t start = 0) noexcept;
+
+/// Reusable 3D Delaunay tetrahedralizer: keeps its buffers between calls, accepts further
+/// points after a tetrahedralization, and answers locate / nearest-vertex queries.
 template <Real T>
 class Delaunay3 {
  public:
@@ -139,11 +231,25 @@ class Delaunay3 {
   /// The same for a flat array x0, y0, z0, x1, ... of n points.
   const Delaunay3Result& triangulate(const T* xyz, std::size_t n);
 
-  /// The last result.
-  [[nodiscard]] const Delaunay3Result& result() const noexcept { return result_; }
+  /// Adds one point (index = points().size() before the call) and restores the Delaunay
+  /// property: O(1) expected near the previously inserted point. When the current result has
+  /// dimension < 3 everything is rebuilt. A non-finite point is refused (non_finite_input,
+  /// nothing added).
+  Status insert(const Vec3<T>& p);
+  /// Adds several points (indices continue from points().size()), inserted along a Hilbert
+  /// curve for short walks. Refused as a whole (non_finite_input) if any point is not finite.
+  Status insert(std::span<const Vec3<T>> points);
+
+  /// The tetrahedralization of every point so far (compacted lazily after insert()).
+  const Delaunay3Result& result();
   /// Moves the result out (the internal arrays become the result without a copy) and resets
   /// the object.
   Delaunay3Result take_result();
+
+  /// locate() on result(), starting from a tetrahedron of the last inserted point.
+  [[nodiscard]] Locate3Result locate(const Vec3<T>& p, std::size_t max_steps = 0);
+  /// nearest_vertex() on result(), starting from a tetrahedron of the last inserted point.
+  [[nodiscard]] NearestVertex3Result nearest_vertex(const Vec3<T>& p);
 
   [[nodiscard]] std::span<const Vec3<T>> points() const noexcept { return points_; }
 
@@ -155,6 +261,7 @@ class Delaunay3 {
 
   void run();
   void compact(bool in_place);
+  void planar_triangles(bool in_place);
   void lower_dimensional(int dimension);
   std::uint32_t walk(std::uint32_t v, std::uint32_t start, std::uint32_t* duplicate) noexcept;
   std::uint32_t scan(std::uint32_t v, std::uint32_t* duplicate) noexcept;
@@ -185,7 +292,11 @@ class Delaunay3 {
   int edge_bits_ = 8;
   std::vector<std::uint64_t> keys_, keys_tmp_;
   std::uint32_t last_ = 0;
+  std::int32_t last_out_ = 0;  // a result tetrahedron of the last inserted point (query start)
   std::uint32_t walk_rng_ = 0x2545F491u;
+  std::uint32_t apex_ = 0;  // dimension 2: the synthetic point off the plane (internal index)
+  bool apex_flip_ = false;  // dimension 2: reverse the faces opposite the apex
+  bool dirty_ = false;      // insert() ran since the last compaction
   int dimension_ = -1;
   Status status_ = Status::empty_input;
   Delaunay3Result result_;
@@ -204,6 +315,19 @@ extern template Delaunay3Result delaunay<float>(std::span<const Vec3<float>>,
                                                 const Delaunay3Options&);
 extern template Delaunay3Result delaunay<double>(std::span<const Vec3<double>>,
                                                  const Delaunay3Options&);
+extern template Locate3Result locate<float>(const Delaunay3Result&, std::span<const Vec3<float>>,
+                                            const Vec3<float>&, std::int32_t, std::size_t) noexcept;
+extern template Locate3Result locate<double>(const Delaunay3Result&, std::span<const Vec3<double>>,
+                                             const Vec3<double>&, std::int32_t,
+                                             std::size_t) noexcept;
+extern template NearestVertex3Result nearest_vertex<float>(const Delaunay3Result&,
+                                                           std::span<const Vec3<float>>,
+                                                           const Vec3<float>&,
+                                                           std::int32_t) noexcept;
+extern template NearestVertex3Result nearest_vertex<double>(const Delaunay3Result&,
+                                                            std::span<const Vec3<double>>,
+                                                            const Vec3<double>&,
+                                                            std::int32_t) noexcept;
 extern template Sign insphere_perturbed<float>(const Vec3<float>&, const Vec3<float>&,
                                                const Vec3<float>&, const Vec3<float>&,
                                                const Vec3<float>&) noexcept;
