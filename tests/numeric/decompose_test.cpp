@@ -221,3 +221,62 @@ TYPED_TEST(DecomposeTest, PolarFactorsAreOrthogonalAndSymmetricPositive) {
   }
   EXPECT_EQ(polar(MatX<T>(2, 3)).status, Status::invalid_input);
 }
+
+// MatX itself (numeric/matrix.hpp), against Eigen on the same entries: the products, transpose,
+// difference and Frobenius norm the decompositions are built from, including the norm's scaling
+// (entries near overflow and underflow) and its non-finite policy.
+TYPED_TEST(DecomposeTest, MatXArithmeticMatchesEigen) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const double eps = double(eps_v<T>);
+  for (int i = 0; i < 500; ++i) {
+    const int m = 1 + i % 4, k = 1 + (i / 4) % 5, n = 1 + (i / 20) % 3;
+    const MatX<T> a = draw<T>(rng, m, k, i % 3), b = draw<T>(rng, k, n, (i + 1) % 3);
+    const Eigen::MatrixXd ea = to_eigen(a), eb = to_eigen(b);
+    const double scale = ea.cwiseAbs().maxCoeff() * eb.cwiseAbs().maxCoeff() * k + 1e-300;
+    ASSERT_LE((to_eigen(a * b) - ea * eb).cwiseAbs().maxCoeff(), 4.0 * k * eps * scale) << i;
+    ASSERT_EQ(to_eigen(transpose(a)), ea.transpose()) << i;
+    const MatX<T> c = draw<T>(rng, m, k, 0);
+    const Eigen::MatrixXd diff = ea - to_eigen(c);  // exact in double for float entries
+    ASSERT_LE((to_eigen(a - c) - diff).cwiseAbs().maxCoeff(), eps * diff.cwiseAbs().maxCoeff()) << i;
+    std::vector<T> x(static_cast<std::size_t>(k));
+    Eigen::VectorXd ex(k);
+    for (int j = 0; j < k; ++j) ex(j) = double(x[std::size_t(j)] = rng.uniform<T>(-2, 2));
+    const std::vector<T> y = a * x;
+    const Eigen::VectorXd ey = ea * ex;
+    ASSERT_EQ(int(y.size()), m);
+    for (int r = 0; r < m; ++r)
+      ASSERT_NEAR(double(y[std::size_t(r)]), ey(r), 4.0 * k * eps * (ea.cwiseAbs().maxCoeff() * 2 + 1e-300));
+    ASSERT_NEAR(double(frobenius_norm(a)), ea.norm(), 4.0 * eps * ea.norm()) << i;
+  }
+  // Conversions with the fixed-size type, identity, emptiness.
+  Mat<T, 2, 3> f{};
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 3; ++c) f(r, c) = T(r * 3 + c + 1);
+  const MatX<T> fx(f);
+  EXPECT_EQ(fx.rows, 2);
+  EXPECT_EQ(fx.cols, 3);
+  EXPECT_EQ(fx(1, 2), T(6));
+  EXPECT_TRUE((fx.template to_mat<2, 3>() == f));
+  EXPECT_EQ(to_eigen(MatX<T>::identity(3)), Eigen::MatrixXd::Identity(3, 3));
+  EXPECT_TRUE(MatX<T>().empty());
+  EXPECT_TRUE(MatX<T>(3, 0).empty());
+  EXPECT_EQ(frobenius_norm(MatX<T>()), T(0));
+  // Scaling: the naive sum of squares would overflow (to inf) or underflow (to 0).
+  const T big = std::numeric_limits<T>::max() / T(4), tiny = std::numeric_limits<T>::denorm_min();
+  MatX<T> hb(2, 2, big), ht(2, 1, tiny);
+  EXPECT_NEAR(double(frobenius_norm(hb)) / double(big), 2.0, 4.0 * eps);
+  EXPECT_GT(frobenius_norm(ht), T(0));
+  EXPECT_TRUE(is_finite(hb));
+  // Non-finite entries: the norm is NaN (a NaN anywhere) or inf, never a finite value.
+  MatX<T> bad = MatX<T>::identity(3);
+  bad(2, 1) = std::numeric_limits<T>::quiet_NaN();
+  EXPECT_FALSE(is_finite(bad));
+  EXPECT_TRUE(std::isnan(frobenius_norm(bad)));
+  bad(0, 0) = std::numeric_limits<T>::infinity();
+  EXPECT_TRUE(std::isnan(frobenius_norm(bad)));  // NaN wins over inf wherever it sits
+  bad(2, 1) = T(1);
+  EXPECT_EQ(frobenius_norm(bad), std::numeric_limits<T>::infinity());
+  EXPECT_FALSE(is_finite(bad));
+}

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace locus {
@@ -94,12 +95,20 @@ template <class T>
   return a;
 }
 
-/// Frobenius norm, scaled to avoid overflow and underflow.
+/// Frobenius norm, scaled to avoid overflow and underflow. NaN when an entry is NaN, +inf when
+/// an entry is infinite (and none is NaN); 0 for an empty matrix.
 template <class T>
 [[nodiscard]] T frobenius_norm(const MatX<T>& a) noexcept {
   T m = T(0);
-  for (T v : a.data) m = std::abs(v) > m ? std::abs(v) : m;
-  if (m == T(0) || !is_finite(m)) return m;
+  bool infinite = false;
+  for (T v : a.data) {
+    if (v != v) return v;  // a NaN entry: the norm is undefined, never a finite-looking value
+    const T av = std::abs(v);
+    infinite = infinite || av == std::numeric_limits<T>::infinity();
+    m = av > m ? av : m;
+  }
+  if (infinite) return std::numeric_limits<T>::infinity();
+  if (m == T(0)) return m;
   T s = T(0);
   for (T v : a.data) s += sqr(v / m);
   return m * std::sqrt(s);
