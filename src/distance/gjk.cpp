@@ -50,7 +50,7 @@ class Minkowski {
     p.a = vec_cast<double>(a_.core(a_.shape, dt));
     p.b = vec_cast<double>(b_.core(b_.shape, -dt));
     p.y = p.a - p.b;
-    if (!is_finite(p.a) || !is_finite(p.b) || !is_finite(p.y)) {
+    if (!is_finite(p.y)) {  // also catches a non-finite a or b (inf - inf is NaN)
       finite_ = false;
     } else {
       scale_ = std::max(scale_, std::max(max_abs(p.a), max_abs(p.b)));
@@ -68,6 +68,12 @@ class Minkowski {
 };
 
 // ---- signed-volumes subalgorithm --------------------------------------------------------------
+//
+// Every function takes the caller's points y and `must`, the index of the point just added
+// (W_k), or -1. The nearest point of conv(S_k + {W_k}) beats V_k = the nearest point of
+// conv(S_k) (otherwise GJK has already stopped), so a face without W_k cannot be the answer:
+// such faces are skipped, which halves the work of the triangle and tetrahedron cases. (Were
+// rounding to make a skipped face win, the "no progress" test of run_gjk keeps S_k.)
 
 /// The point of a sub-simplex nearest to the origin: indices into the caller's points, weights.
 template <int N>
@@ -119,24 +125,35 @@ template <int N>
   return s;
 }
 
-/// Best of the three edges of a triangle.
+/// Best of the edges of the face ids[0..k) (k = 3: a triangle) that contain `must`: the edge
+/// opposite ids[q] is taken when beyond[q] (the origin lies beyond it).
 template <int N>
-[[nodiscard]] Sub<N> edges_of(const V<N>* y, int i, int j, int k) noexcept {
-  Sub<N> best = sub1(y, i, j);
-  keep_better(best, sub1(y, j, k));
-  keep_better(best, sub1(y, i, k));
+[[nodiscard]] Sub<N> edges_beyond(const V<N>* y, const int* ids, const bool* beyond, int must) noexcept {
+  Sub<N> best;
+  for (int q = 0; q < 3; ++q)
+    if (beyond[q] && ids[q] != must) keep_better(best, sub1(y, ids[(q + 1) % 3], ids[(q + 2) % 3]));
   return best;
 }
 
-/// Triangle y[i] y[j] y[k] in 3D: project the origin onto its plane, then barycentric signs
-/// from signed areas in the coordinate plane where the triangle's projection is largest.
-[[nodiscard]] Sub<3> sub2_3d(const V<3>* y, int i, int j, int k) noexcept {
-  const Triangle3<double> tri{y[i], y[j], y[k]};
-  const V<3> n = normal(tri);
-  const double len = length(n);
+/// Triangle y[i] y[j] y[k] in 3D (not full-dimensional): project the origin onto its plane,
+/// then barycentric signs from signed areas in the coordinate plane where the triangle's
+/// projection is largest.
+[[nodiscard]] Sub<3> sub2_3d(const V<3>* y, int i, int j, int k, int must) noexcept {
+  const int ids[3] = {i, j, k};
+  const V<3> e1 = y[j] - y[i], e2 = y[k] - y[i];
+  const V<3> n = cross(e1, e2);
+  const double nn = sqr_length(n), l1 = sqr_length(e1), l2 = sqr_length(e2);
   // Needle or collinear (sine of the angle below 8 eps): the plane is ill-defined and the edges
-  // are as close as the interior. Lengths, not squares, so that 1e-80 or 1e80 scales work.
-  if (!(len > 8.0 * kEps * length(y[j] - y[i]) * length(y[k] - y[i]))) return edges_of(y, i, j, k);
+  // are as close as the interior. Squares within 1e-100 .. 1e100 (no under- or overflow of
+  // their products); lengths otherwise, so that 1e-80 or 1e80 scales work too.
+  const bool moderate = l1 > 1e-100 && l2 > 1e-100 && l1 < 1e100 && l2 < 1e100;
+  const double len = moderate ? std::sqrt(nn) : length(n);  // length() rescales when needed
+  const bool needle = moderate ? !(nn > 64.0 * kEps * kEps * l1 * l2)
+                               : !(len > 8.0 * kEps * length(e1) * length(e2));
+  if (needle) {
+    const bool all[3] = {true, true, true};
+    return edges_beyond(y, ids, all, must);
+  }
   const V<3> nu = n / len;
   const V<3> p = (dot(y[i] + y[j] + y[k], nu) / 3.0) * nu;
   const V<3> an = cwise_abs(n);
@@ -147,110 +164,90 @@ template <int N>
   };
   const double mu = area(y[i], y[j], y[k]);
   const double c[3] = {area(p, y[j], y[k]), area(y[i], p, y[k]), area(y[i], y[j], p)};
-  bool inside = true;
-  for (double ci : c) inside = inside && (mu > 0.0 ? ci > 0.0 : ci < 0.0);
-  if (inside) {
-    Sub<3> s;
-    s.n = 3;
-    s.idx[0] = i;
-    s.idx[1] = j;
-    s.idx[2] = k;
-    const double sum = c[0] + c[1] + c[2];
-    for (int q = 0; q < 3; ++q) s.w[q] = c[q] / sum;
-    s.v = p;
-    s.vv = sqr_length(p);
-    return s;
+  bool beyond[3], inside = true;
+  for (int q = 0; q < 3; ++q) {
+    beyond[q] = !(mu > 0.0 ? c[q] > 0.0 : c[q] < 0.0);
+    inside = inside && !beyond[q];
   }
-  const int ids[3] = {i, j, k};
-  Sub<3> best;
-  for (int q = 0; q < 3; ++q)
-    if (!(mu > 0.0 ? c[q] > 0.0 : c[q] < 0.0))
-      keep_better(best, sub1(y, ids[(q + 1) % 3], ids[(q + 2) % 3]));
-  return best;
+  if (!inside) return edges_beyond(y, ids, beyond, must);
+  Sub<3> s;
+  s.n = 3;
+  const double sum = c[0] + c[1] + c[2];
+  for (int q = 0; q < 3; ++q) {
+    s.idx[q] = ids[q];
+    s.w[q] = c[q] / sum;
+  }
+  s.v = p;
+  s.vv = sqr_length(p);
+  return s;
 }
 
-/// Full-dimensional triangle in 2D: exact orient2d signs decide containment.
-[[nodiscard]] Sub<2> sub2_2d(const V<2>* y, int i, int j, int k) noexcept {
-  const V<2> o{};
-  const Sign s = orient2d(y[i], y[j], y[k]);
-  if (s == Sign::zero) return edges_of(y, i, j, k);
-  const Sign si[3] = {orient2d(o, y[j], y[k]), orient2d(y[i], o, y[k]), orient2d(y[i], y[j], o)};
-  const int ids[3] = {i, j, k};
-  if (si[0] == s && si[1] == s && si[2] == s) {
-    double c[3] = {perp_dot(y[j], y[k]), perp_dot(-y[i], y[k] - y[i]), perp_dot(y[j] - y[i], -y[i])};
-    double sum = 0.0;
-    for (double& ci : c) {
-      ci = s == Sign::positive ? std::max(ci, 0.0) : std::max(-ci, 0.0);
-      sum += ci;
-    }
-    Sub<2> r;
-    r.n = 3;
-    for (int q = 0; q < 3; ++q) {
-      r.idx[q] = ids[q];
-      r.w[q] = sum > 0.0 ? c[q] / sum : 1.0 / 3.0;
-    }
-    r.v = V<2>{};
-    r.vv = 0.0;
-    r.enclosed = true;
-    return r;
-  }
-  Sub<2> best;
-  for (int q = 0; q < 3; ++q)
-    if (si[q] != s) keep_better(best, sub1(y, ids[(q + 1) % 3], ids[(q + 2) % 3]));
-  return best;
+/// The exact sign of det[b - a; c - a; ...] (orient2d / orient3d) and its floating value.
+[[nodiscard]] Sign orient(const V<2>* p) noexcept { return orient2d(p[0], p[1], p[2]); }
+[[nodiscard]] Sign orient(const V<3>* p) noexcept { return orient3d(p[0], p[1], p[2], p[3]); }
+[[nodiscard]] double det(const V<2>* p) noexcept { return perp_dot(p[1] - p[0], p[2] - p[0]); }
+[[nodiscard]] double det(const V<3>* p) noexcept {
+  return dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0]));
 }
 
-/// Tetrahedron in 3D: exact orient3d signs decide containment.
-[[nodiscard]] Sub<3> sub3_3d(const V<3>* y) noexcept {
-  const V<3> o{};
-  const Sign s = orient3d(y[0], y[1], y[2], y[3]);
-  if (s == Sign::zero) {
-    Sub<3> best = sub2_3d(y, 1, 2, 3);
-    keep_better(best, sub2_3d(y, 0, 2, 3));
-    keep_better(best, sub2_3d(y, 0, 1, 3));
-    keep_better(best, sub2_3d(y, 0, 1, 2));
-    return best;
-  }
-  const Sign si[4] = {orient3d(o, y[1], y[2], y[3]), orient3d(y[0], o, y[2], y[3]),
-                      orient3d(y[0], y[1], o, y[3]), orient3d(y[0], y[1], y[2], o)};
-  if (si[0] == s && si[1] == s && si[2] == s && si[3] == s) {
-    const auto det = [](const V<3>& a, const V<3>& b, const V<3>& c) { return dot(a, cross(b, c)); };
-    double c[4] = {det(y[1], y[2], y[3]), det(-y[0], y[2] - y[0], y[3] - y[0]),
-                   det(y[1] - y[0], -y[0], y[3] - y[0]), det(y[1] - y[0], y[2] - y[0], -y[0])};
-    double sum = 0.0;
-    for (double& ci : c) {
-      ci = s == Sign::positive ? std::max(ci, 0.0) : std::max(-ci, 0.0);
-      sum += ci;
-    }
-    Sub<3> r;
-    r.n = 4;
-    for (int q = 0; q < 4; ++q) {
-      r.idx[q] = q;
-      r.w[q] = sum > 0.0 ? c[q] / sum : 0.25;
-    }
-    r.v = V<3>{};
-    r.vv = 0.0;
-    r.enclosed = true;
-    return r;
-  }
+/// The nearest point of facet f (the points other than y[f]) of a full-dimensional simplex.
+[[nodiscard]] Sub<2> facet_nearest(const V<2>* y, int f, int) noexcept {
+  return sub1(y, (f + 1) % 3, (f + 2) % 3);
+}
+[[nodiscard]] Sub<3> facet_nearest(const V<3>* y, int f, int must) noexcept {
   static constexpr int face[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-  Sub<3> best;
-  for (int q = 0; q < 4; ++q)
-    if (si[q] != s) keep_better(best, sub2_3d(y, face[q][0], face[q][1], face[q][2]));
+  return sub2_3d(y, face[f][0], face[f][1], face[f][2], must);
+}
+
+/// Full-dimensional simplex y[0..N] (a triangle in 2D, a tetrahedron in 3D): the exact signs
+/// of the N + 1 simplices with one vertex replaced by the origin decide containment (the origin
+/// is inside iff all agree with the simplex's own sign); inside, those determinants are the
+/// barycentric weights; outside, the facets the origin lies beyond are searched.
+template <int N>
+[[nodiscard]] Sub<N> full_simplex(const V<N>* y, int must) noexcept {
+  const Sign s = orient(y);
+  Sign si[N + 1];
+  bool inside = s != Sign::zero;
+  for (int q = 0; q <= N; ++q) {
+    V<N> t[N + 1];
+    for (int r = 0; r <= N; ++r) t[r] = r == q ? V<N>{} : y[r];
+    si[q] = s == Sign::zero ? Sign::zero : orient(t);
+    inside = inside && si[q] == s;
+  }
+  if (inside) {
+    Sub<N> r;
+    double c[N + 1], sum = 0.0;
+    for (int q = 0; q <= N; ++q) {
+      V<N> t[N + 1];
+      for (int k = 0; k <= N; ++k) t[k] = k == q ? V<N>{} : y[k];
+      c[q] = s == Sign::positive ? std::max(det(t), 0.0) : std::max(-det(t), 0.0);
+      sum += c[q];
+    }
+    r.n = N + 1;
+    for (int q = 0; q <= N; ++q) {
+      r.idx[q] = q;
+      r.w[q] = sum > 0.0 ? c[q] / sum : 1.0 / (N + 1);
+    }
+    r.v = V<N>{};
+    r.vv = 0.0;
+    r.enclosed = true;
+    return r;
+  }
+  // A flat simplex (s = 0): every facet with `must`; otherwise those the origin lies beyond.
+  Sub<N> best;
+  for (int q = 0; q <= N; ++q)
+    if (q != must && (s == Sign::zero || si[q] != s)) keep_better(best, facet_nearest(y, q, must));
   return best;
 }
 
-/// The point of conv(y[0..n-1]) nearest to the origin.
+/// The point of conv(y[0..n-1]) nearest to the origin; y[n-1] is the point just added.
 template <int N>
 [[nodiscard]] Sub<N> nearest(const V<N>* y, int n) noexcept {
   if (n == 1) return vertex_sub(y, 0);
   if (n == 2) return sub1(y, 0, 1);
-  if constexpr (N == 2) {
-    return sub2_2d(y, 0, 1, 2);
-  } else {
-    if (n == 3) return sub2_3d(y, 0, 1, 2);
-    return sub3_3d(y);
-  }
+  if (n == N + 1) return full_simplex<N>(y, n - 1);
+  if constexpr (N == 3) return sub2_3d(y, 0, 1, 2, 2);
+  return vertex_sub(y, n - 1);  // unreachable: n <= N + 1
 }
 
 // ---- GJK ----------------------------------------------------------------------------------
@@ -322,12 +319,12 @@ template <class T, int N>
       }
       break;
     }
-    V<N> y[N + 2];
-    Pt<N> cand[N + 2];
-    for (int i = 0; i < st.n; ++i) cand[i] = st.s[i];
-    cand[st.n] = w;
+    // S_k + {W_k}: W_k goes to the free slot (st.n <= N here: a full simplex encloses the
+    // origin and ends the loop), so S_k stays intact if no progress is made.
+    st.s[st.n] = w;
     const int m = st.n + 1;
-    for (int i = 0; i < m; ++i) y[i] = cand[i].y;
+    V<N> y[N + 1];
+    for (int i = 0; i < m; ++i) y[i] = st.s[i].y;
     const Sub<N> sub = nearest<N>(y, m);
     if (!(sub.vv < st.vv) && !sub.enclosed) {
       // No progress: rounding has taken over; keep the previous (better) simplex.
@@ -337,16 +334,16 @@ template <class T, int N>
       }
       break;
     }
-    GjkState<N> next = st;
-    next.n = sub.n;
+    Pt<N> kept[N + 1];
+    for (int i = 0; i < sub.n; ++i) kept[i] = st.s[sub.idx[i]];
     for (int i = 0; i < sub.n; ++i) {
-      next.s[i] = cand[sub.idx[i]];
-      next.w[i] = sub.w[i];
+      st.s[i] = kept[i];
+      st.w[i] = sub.w[i];
     }
-    next.v = sub.v;
-    next.vv = sub.vv;
-    next.enclosed = sub.enclosed;
-    st = next;
+    st.n = sub.n;
+    st.v = sub.v;
+    st.vv = sub.vv;
+    st.enclosed = sub.enclosed;
     if (step) {
       trace_simplex(step->simplex, st);
       step->v_next = vec_cast<T>(st.v);

@@ -312,6 +312,37 @@ TYPED_TEST(Circle3PairsTest, LinearSpecialConfigurations) {
   EXPECT_EQ(sw.param_a, par.param_b);
 }
 
+// A tilted axis is never hit exactly in floating point: the whole circle is still equidistant
+// from the axis point, so unique must be false (point_circle.hpp alone only sees exact axis
+// points). A line clearly off the axis keeps unique = true.
+TYPED_TEST(Circle3PairsTest, LinearOnTiltedAxis) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int i = 0; i < 20; ++i) {
+    const Vec3<T> n = rng.unit<T, 3>();
+    const T r = rng.uniform<T>(T(0.5), T(4));
+    const Circle3<T> c{rng.vec<T, 3>(T(-5), T(5)), n * rng.uniform<T>(T(0.5), T(2)), r};
+    const T e = T(1024) * eps_v<T> * T(10);
+    const T h = rng.uniform<T>(T(0.5), T(3));
+    // The axis as a line: closest at the center, distance r.
+    const auto line = distance(Line<T, 3>{c.center + h * n, n * rng.uniform<T>(T(-2), T(-0.3))}, c);
+    EXPECT_NEAR(line.distance, r, e);
+    EXPECT_FALSE(line.unique);
+    // A segment of the axis ending at height h above the center: its end, distance sqrt(r^2+h^2).
+    const auto seg = distance(Segment<T, 3>{c.center + h * n, c.center + (h + T(2)) * n}, c);
+    EXPECT_NEAR(seg.distance, std::sqrt(r * r + h * h), e);
+    EXPECT_FALSE(seg.unique);
+    EXPECT_EQ(seg.param_a, T(0));
+    // Parallel to the axis at a visible offset: a single closest pair.
+    const Vec3<T> off = normalize(cross(n, rng.unit<T, 3>())) * (r * T(0.3));
+    const auto par =
+        distance(Segment<T, 3>{c.center + off + h * n, c.center + off + (h + 2) * n}, c);
+    EXPECT_NEAR(par.distance, std::sqrt(r * r * T(0.49) + h * h), e);
+    EXPECT_TRUE(par.unique);
+  }
+}
+
 TYPED_TEST(Circle3PairsTest, CircleSpecialConfigurations) {
   using T = TypeParam;
   const Vec3<T> z{0, 0, 1}, o{T(1), T(-2), T(0.5)};

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -195,6 +196,118 @@ TEST(Gjk3, RandomPolytopesMatchFeaturePairMinimum) {
   EXPECT_GT(separated, 20 / kScale);
   EXPECT_GT(intersecting, 20 / kScale);
   RecordProperty("worst_abs_error", std::to_string(worst));
+}
+
+/// Rotation taking unit u to unit v.
+Mat3d rotation_between(const Vec3d& u, const Vec3d& v) {
+  const Vec3d axis = cross(u, v);
+  const double s = length(axis), c = dot(u, v);
+  if (s < 1e-12) {
+    if (c > 0) return Mat3d::identity();
+    const Vec3d o = std::fabs(u.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+    return to_matrix(AxisAngle<double>{normalize(cross(u, o)), pi_v<double>});
+  }
+  return to_matrix(AxisAngle<double>{axis / s, std::atan2(s, c)});
+}
+
+TEST(Gjk3, NearlyParallelFacesMatchFeaturePairMinimum) {
+  // Face-face pairs: the largest hull face of b turned against the largest face of a, tilted by
+  // 0 or 1e-12 .. 1e-7 radians, at a gap of 1e-4 .. 1e-1. Every point of the two faces is
+  // almost equally close, so the final simplex is nearly flat: where GJK loses accuracy.
+  Rng rng(47);
+  SCOPED_TRACE(rng.trace());
+  const auto largest_face = [](const Poly3& p) {
+    double best = -1;
+    Vec3d n{}, c{};
+    for (const auto& t : p.tris) {
+      const Triangle3d tri{p.pts[t[0]], p.pts[t[1]], p.pts[t[2]]};
+      if (length(normal(tri)) > best) {
+        best = length(normal(tri));
+        n = normalize(normal(tri));
+        c = (tri.v0 + tri.v1 + tri.v2) / 3.0;
+      }
+    }
+    return std::pair{n, c};
+  };
+  for (int c = 0; c < 120 / kScale; ++c) {
+    const Poly3 a = random_poly3(rng, 24, {0, 0, 0}, 1.0);
+    const Poly3 b0 = random_poly3(rng, 24, {0, 0, 0}, 1.0);
+    const auto [na, ca] = largest_face(a);
+    const auto [nb, cb] = largest_face(b0);
+    const double tilt = c % 4 == 0 ? 0.0 : std::pow(10.0, rng.uniform(-12.0, -7.0));
+    const double gap = std::pow(10.0, rng.uniform(-4.0, -1.0));
+    const Vec3d side = normalize(cross(na, rng.unit<double, 3>()));
+    const Mat3d rot = to_matrix(AxisAngle<double>{side, tilt}) *
+                      to_matrix(AxisAngle<double>{na, rng.uniform(0.0, 6.28)}) * rotation_between(nb, -na);
+    std::vector<Vec3d> moved;
+    for (const auto& q : b0.pts) moved.push_back(rot * q + (ca + gap * na - rot * cb));
+    const Poly3 b = make_poly3(moved);
+    const double exact = brute_distance3(a, b);
+    ASSERT_GT(exact, 0.0);
+    const auto r = gjk_distance(ConvexPoints<double, 3>{a.pts}, ConvexPoints<double, 3>{b.pts});
+    EXPECT_EQ(r.status, Status::ok);
+    EXPECT_EQ(r.contact, Contact::separated);
+    EXPECT_NEAR(r.distance, exact, 2e-15) << "case " << c << " gap " << gap << " tilt " << tilt;
+    EXPECT_NEAR(length(r.closest[1] - r.closest[0]), r.distance, 2e-15);
+    EXPECT_NEAR(dot(r.normal, na), 1.0, 1e-6);  // from a towards b: a's outward face normal
+  }
+}
+
+TEST(Gjk3, NearContactPolytopesMatchFeaturePairMinimum) {
+  // Separated pairs moved together along their separating direction to a gap of 1e-9 .. 1e-6:
+  // the termination test must not stop early (an absolute tolerance would be 1e-6 off here).
+  Rng rng(53);
+  SCOPED_TRACE(rng.trace());
+  int tested = 0;
+  for (int c = 0; c < 120 / kScale; ++c) {
+    const Poly3 a = random_poly3(rng, 24, {0, 0, 0}, 1.0);
+    const Poly3 b0 = random_poly3(rng, 24, 3.0 * rng.unit<double, 3>(), 1.0);
+    const auto r0 = gjk_distance(ConvexPoints<double, 3>{a.pts}, ConvexPoints<double, 3>{b0.pts});
+    const double target = std::pow(10.0, rng.uniform(-9.0, -6.0));
+    std::vector<Vec3d> moved = b0.pts;
+    for (auto& q : moved) q -= (r0.distance - target) * r0.normal;
+    const Poly3 b = make_poly3(moved);
+    const double exact = brute_distance3(a, b);
+    if (!(exact > 0.0)) continue;
+    ++tested;
+    const auto r = gjk_distance(ConvexPoints<double, 3>{a.pts}, ConvexPoints<double, 3>{b.pts});
+    EXPECT_EQ(r.status, Status::ok);
+    EXPECT_NEAR(r.distance, exact, 1e-15) << "case " << c << " target " << target;
+  }
+  EXPECT_GT(tested, 100 / kScale);
+}
+
+TEST(Gjk, FlatSimplexInFullDimension) {
+  // Collinear segments in 2D and coplanar polygons in 3D: every GJK simplex of full size is
+  // flat (orient2d / orient3d = 0), so only its facets can hold the nearest point.
+  EXPECT_NEAR(gjk_distance(Segment2d{{0, 0}, {1, 0}}, Segment2d{{2.5, 0}, {4, 0}}).distance, 1.5, 1e-15);
+  const std::vector<Vec2d> tri2{{0, 0}, {1, 0}, {3, 0}};  // a flat "triangle"
+  EXPECT_NEAR(gjk_distance(ConvexPoints<double, 2>{tri2}, Vec2d{5, 0}).distance, 2.0, 1e-15);
+  EXPECT_EQ(gjk_distance(ConvexPoints<double, 2>{tri2}, Vec2d{2, 0}).contact, Contact::touching);
+  Rng rng(59);
+  SCOPED_TRACE(rng.trace());
+  for (int c = 0; c < 100; ++c) {
+    // Two convex polygons in the plane z = 0 (as 3D point sets), compared with the 2D answer.
+    std::vector<Vec2d> a2, b2;
+    const Vec2d ca = rng.vec<double, 2>(-2, 2), cb = rng.vec<double, 2>(-2, 2);
+    for (int i = 0; i < 8; ++i) {
+      a2.push_back(ca + rng.uniform(0.3, 1.0) * rng.unit<double, 2>());
+      b2.push_back(cb + rng.uniform(0.3, 1.0) * rng.unit<double, 2>());
+    }
+    std::vector<Vec3d> a3, b3;
+    for (const auto& p : a2) a3.push_back({p.x, p.y, 0});
+    for (const auto& p : b2) b3.push_back({p.x, p.y, 0});
+    const auto r2 = gjk_distance(ConvexPoints<double, 2>{a2}, ConvexPoints<double, 2>{b2});
+    const auto r3 = gjk_distance(ConvexPoints<double, 3>{a3}, ConvexPoints<double, 3>{b3});
+    const double mink = minkowski_signed2(a2, b2);
+    if (mink > 1e-9) {
+      EXPECT_NEAR(r2.distance, mink, 1e-14);
+      EXPECT_NEAR(r3.distance, mink, 1e-14);
+    } else if (mink < -1e-9) {
+      EXPECT_EQ(r2.contact, Contact::intersecting);
+      EXPECT_NE(r3.contact, Contact::separated);  // flat in 3D: the boundaries touch
+    }
+  }
 }
 
 TEST(Gjk3, SeparatedPolytopesPenetrationIsMinusDistance) {

@@ -32,26 +32,55 @@
 // Degenerate input: a zero radius makes that circle the point center (point_circle.hpp; its
 // angle is 0); two zero radii give the two centers. A negative radius, a zero normal, and NaN
 // or infinite values give non_finite_distance() (result.hpp). Cost: O(1) but heavier than most
-// pairs: building the degree-8 polynomial and real_roots() (which allocates its O(n^2)
-// workspace, a few hundred bytes), at most 9 candidate evaluations, one atan2.
+// pairs: building the degree-8 polynomial (fixed arrays) and its real roots (numeric/roots.hpp's
+// engine on a fixed stack workspace: no allocation), at most 9 candidate evaluations, one atan2.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/line_circle.hpp>  // detail::sqr_distance_to_circle
 #include <locus/distance/point_circle.hpp>
 #include <locus/distance/result.hpp>
-#include <locus/numeric/polynomial.hpp>
 #include <locus/numeric/roots.hpp>
 #include <locus/primitives/circle.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
-#include <vector>
 
 namespace locus {
 
 namespace detail {
+
+/// A polynomial of degree <= 8 with fixed storage (coefficients low to high): the arithmetic the
+/// circle-circle polynomial needs, without allocation.
+template <class C>
+struct CirclePoly {
+  std::array<C, 9> c{};
+  friend CirclePoly operator+(const CirclePoly& p, const CirclePoly& q) noexcept {
+    CirclePoly r;
+    for (std::size_t i = 0; i < 9; ++i) r.c[i] = p.c[i] + q.c[i];
+    return r;
+  }
+  friend CirclePoly operator-(const CirclePoly& p, const CirclePoly& q) noexcept {
+    CirclePoly r;
+    for (std::size_t i = 0; i < 9; ++i) r.c[i] = p.c[i] - q.c[i];
+    return r;
+  }
+  friend CirclePoly operator*(C s, const CirclePoly& p) noexcept {
+    CirclePoly r;
+    for (std::size_t i = 0; i < 9; ++i) r.c[i] = s * p.c[i];
+    return r;
+  }
+  /// The product; the callers' degrees add up to at most 8 (terms beyond are dropped).
+  friend CirclePoly operator*(const CirclePoly& p, const CirclePoly& q) noexcept {
+    CirclePoly r;
+    for (std::size_t i = 0; i < 9; ++i)
+      for (std::size_t j = 0; i + j < 9; ++j) r.c[i + j] += p.c[i] * q.c[j];
+    return r;
+  }
+};
 
 /// Lexicographic order on the raw scalars of a circle, for the canonical argument order.
 template <class T>
@@ -87,11 +116,12 @@ template <class T>
   const C dd = dot(dp, dp), du = dot(dp, up), dv = dot(dp, vp);
   const C uu = dot(up, up), vv = dot(vp, vp), uv = dot(up, vp);
 
-  using Poly = Polynomial<C>;
-  const Poly one_p{C(1), C(0), C(1)};   // 1 + x^2
-  const Poly one_m{C(1), C(0), C(-1)};  // 1 - x^2
-  const Poly x{C(0), C(1)};
-  // (1 + x^2) h'(a), (1 + x^2)^2 g(a) and (1 + x^2)^2 g'(a) as polynomials in x = tan(a / 2).
+  // Polynomials in x = tan(a / 2) of degree <= 8 as fixed coefficient arrays (low to high).
+  using Poly = CirclePoly<C>;
+  const Poly one_p{{C(1), C(0), C(1)}};   // 1 + x^2
+  const Poly one_m{{C(1), C(0), C(-1)}};  // 1 - x^2
+  const Poly x{{C(0), C(1)}};
+  // (1 + x^2) h'(a), (1 + x^2)^2 g(a) and (1 + x^2)^2 g'(a) as polynomials in x.
   const Poly hp = C(2) * r0 * (b * one_m - C(2) * a * x);
   const Poly g = dd * (one_p * one_p) +
                  r0 * r0 * (uu * (one_m * one_m) + C(4) * uv * (x * one_m) + C(4) * vv * (x * x)) +
@@ -104,25 +134,37 @@ template <class T>
 
   // Coaxial circles: F is constant and the two sides agree to rounding.
   C size = C(0), diff = C(0);
-  for (int i = 0; i <= 8; ++i) {
-    size = std::max(size, std::abs(lhs[i]) + std::abs(rhs[i]));
-    diff = std::max(diff, std::abs(lhs[i] - rhs[i]));
+  for (std::size_t i = 0; i <= 8; ++i) {
+    size = std::max(size, std::abs(lhs.c[i]) + std::abs(rhs.c[i]));
+    diff = std::max(diff, std::abs(lhs.c[i] - rhs.c[i]));
   }
   const bool coaxial = diff <= C(1024) * eps_v<C> * size;
 
   C best_a = C(0);
   if (!coaxial) {
-    std::vector<C> coeff(9);
-    for (int i = 0; i <= 8; ++i) coeff[static_cast<std::size_t>(i)] = lhs[i] - rhs[i];
-    const RealRootsResult<C> roots = real_roots(Poly(std::move(coeff)));
     const auto f_at = [&](C angle) {
       const Vec3<C> w = d + (r0 * std::cos(angle)) * ax.u + (r0 * std::sin(angle)) * ax.v;
       return sqr_distance_to_circle(w, n1, r1);
     };
     best_a = pi_v<C>;
     C best_f = f_at(best_a);
-    for (const Root<C>& root : roots.roots) {
-      const C angle = C(2) * std::atan(root.value);
+    // All real roots of the degree-8 polynomial, on stack buffers of the engine's documented
+    // sizes (real_roots() would allocate them).
+    constexpr int deg = 8;
+    double coeff[deg + 1];
+    bool finite = true;
+    for (std::size_t i = 0; i <= 8; ++i) {
+      coeff[i] = static_cast<double>(lhs.c[i] - rhs.c[i]);
+      finite = finite && is_finite(coeff[i]);
+    }
+    double work[roots::work_doubles(deg)];
+    roots::R r_out[deg], r_tmp[deg];
+    bool budget_hit = false;
+    const int cnt =
+        finite ? roots::real_roots_engine(coeff, nullptr, deg, work, r_out, r_tmp, 0.0, budget_hit)
+               : 0;
+    for (int i = 0; i < cnt; ++i) {
+      const C angle = C(2) * std::atan(static_cast<C>(r_out[i].x));
       const C f = f_at(angle);
       if (f < best_f) best_f = f, best_a = angle;
     }

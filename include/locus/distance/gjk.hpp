@@ -38,7 +38,8 @@
 // (Montanari, Petrinic and Barbieri, "Improving the GJK algorithm for faster and more reliable
 // distance queries between convex objects", ACM TOG 2017): barycentric coordinates from signed
 // areas/volumes in the best-conditioned coordinate projection, recursing only into faces that
-// the origin lies beyond; in full dimension the signs are EXACT (orient2d / orient3d of
+// the origin lies beyond and that contain W_k (V_{k+1} beats V_k, the nearest point of the
+// faces without W_k); in full dimension the signs are EXACT (orient2d / orient3d of
 // core/predicates.hpp), so "the origin is inside" is never a rounding accident. Termination
 // (van den Bergen 1999): |V|^2 - V.W <= relative_tolerance |V|^2 (the distance is then known to
 // that relative accuracy), or W repeats a simplex point (exact for polytopes), or |V| stops

@@ -23,8 +23,10 @@
 //
 // unique = false when the closest point of the linear component lies on the circle's axis with
 // a positive radius (every circle point is then equidistant): the line IS the axis, or a ray /
-// segment ends on the axis nearer than any other point. An interior crossing of the axis by a
-// line that is not the axis is never a minimum. Finitely many tied pairs (a line in the circle's
+// segment ends on the axis nearer than any other point. "On the axis" allows the rounding of the
+// input: a distance from the axis up to 64 eps times the coordinates' scale (a tilted axis given
+// in floating point is never hit exactly). An interior crossing of the axis by a line that is not
+// the axis is never a minimum. Finitely many tied pairs (a line in the circle's
 // plane crossing it twice, symmetric configurations) return one of them with unique = true.
 //
 // Degenerate input: a zero direction (zero-length segment) acts as its point (t = 0); a zero
@@ -112,7 +114,15 @@ template <class T, class Lin>
   const Vec3<T> p = v.at(t);
   const Distance<T, 3, NoParam, T> pc = distance(p, c);
   if (std::isnan(pc.distance)) return non_finite_distance<T, 3, T, T>();
-  return make_distance(p, pc.closest[1], t, pc.param_b, pc.unique);
+  // On the axis every circle point is equally close. point_circle.hpp only sees an EXACT axis
+  // point, which the rounded minimiser of a tilted axis never is: accept distances from the axis
+  // within the rounding of the input (64 eps of its scale).
+  const Vec3<C> w = d + best_t * m;
+  const C rho = length(w - dot(w, n) * n);
+  const C scale = static_cast<C>(max_abs(v.origin)) + static_cast<C>(max_abs(c.center)) +
+                  std::fabs(best_t) * static_cast<C>(max_abs(v.dir)) + r;
+  const bool on_axis = r > C(0) && rho <= C(64) * static_cast<C>(eps_v<T>) * scale;
+  return make_distance(p, pc.closest[1], t, pc.param_b, pc.unique && !on_axis);
 }
 
 }  // namespace detail
