@@ -9,33 +9,40 @@
 #include "gallery.hpp"
 
 #include <locus/curves/bezier.hpp>
+#include <locus/curves/bezier_surface.hpp>
 #include <locus/distance/line_line.hpp>
 #include <locus/distance/line_oriented_box.hpp>
 #include <locus/distance/line_ray.hpp>
 #include <locus/distance/line_rectangle.hpp>
 #include <locus/distance/line_segment.hpp>
+#include <locus/distance/line_tetrahedron.hpp>
 #include <locus/distance/line_triangle.hpp>
 #include <locus/distance/point_circle.hpp>
+#include <locus/distance/point_convex_polygon.hpp>
 #include <locus/distance/point_curve.hpp>
 #include <locus/distance/point_ellipsoid.hpp>
 #include <locus/distance/point_frustum.hpp>
 #include <locus/distance/point_line.hpp>
 #include <locus/distance/point_oriented_box.hpp>
 #include <locus/distance/point_plane.hpp>
+#include <locus/distance/point_polygon3.hpp>
 #include <locus/distance/point_polyline.hpp>
 #include <locus/distance/point_rectangle.hpp>
 #include <locus/distance/point_segment.hpp>
+#include <locus/distance/point_surface.hpp>
 #include <locus/distance/point_tetrahedron.hpp>
 #include <locus/distance/point_triangle.hpp>
 #include <locus/distance/ray_segment.hpp>
 #include <locus/distance/ray_ray.hpp>
 #include <locus/distance/segment_segment.hpp>
+#include <locus/hull/hull2.hpp>
 #include <locus/io/svg_primitives.hpp>
 #include <locus/primitives/circle.hpp>
 #include <locus/primitives/ellipsoid.hpp>
 #include <locus/primitives/frustum.hpp>
 #include <locus/primitives/line.hpp>
 #include <locus/primitives/oriented_box.hpp>
+#include <locus/primitives/planar_polygon.hpp>
 #include <locus/primitives/plane.hpp>
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/ray.hpp>
@@ -49,6 +56,7 @@
 #include <cstdio>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -300,6 +308,77 @@ bool fig_10_12(SvgWriter& w) {
   return true;
 }
 
+// ---- point to polygon ---------------------------------------------------------------------------
+
+// The non-convex pentagon of 10.14 / 10.15 (vertices on the plane z = 0.1 x + 0.15 y), as a
+// PlanarPolygon3 (locus::planar_polygon: Newell plane, frame, plane coordinates), and the queries.
+std::optional<PlanarPolygon3<double>> polygon10() {
+  const std::vector<Vec3d> v{
+      {0, 0, 0}, {2.2, 0.2, 0.25}, {2.0, 1.6, 0.44}, {1.1, 0.9, 0.245}, {0.3, 1.8, 0.3}};
+  return planar_polygon(std::span<const Vec3d>(v));
+}
+const std::array<Vec3d, 3> polygon10_queries{Vec3d{1.2, 0.5, 1.4}, Vec3d{1.2, 1.7, 1.1},
+                                             Vec3d{2.9, -0.5, 0.3}};
+
+// 10.14: distance from points to a filled polygon in 3D: above the interior the closest point
+// is the projection, otherwise a point of the boundary.
+bool fig_10_14(SvgWriter& w) {
+  const auto poly = polygon10();
+  if (!poly) return false;
+  w.set_camera(camera({4, -6, 5}, {1.1, 0.8, 0.5}));
+  std::vector<Vec3d> v3;
+  for (std::size_t i = 0; i < poly->polygon.vertices.size(); ++i) v3.push_back(vertex(*poly, i));
+  closed(w, v3, filled(c::blue, 0.15));
+  for (std::size_t i = 0; i < v3.size(); ++i) point(w, v3[i], "V" + std::to_string(i), c::blue);
+  for (const Vec3d& p : polygon10_queries) {
+    const auto d = distance(p, *poly);
+    if (!std::isfinite(d.distance)) return false;
+    const double h = std::abs(dot(p - poly->frame.origin, poly->frame.normal));
+    const bool interior = std::abs(d.distance - h) <= 1e-12 * (1 + h);
+    bool at_vertex = false;
+    for (const Vec3d& v : v3) at_vertex = at_vertex || length(v - d.closest[1]) <= 1e-12;
+    link(w, d, at_vertex ? "P (a vertex is closest)" : "P",
+         interior ? "projection" : (at_vertex ? "" : "edge point"));
+    label(w, lerp(d.closest[0], d.closest[1], 0.5), "dist " + fmt(d.distance), c::gray);
+  }
+  return true;
+}
+
+// 10.15: the same queries solved in the polygon's plane: P projects to P' = to_plane(frame, P)
+// at height h; the 2D nearest point of the filled polygon to P' (param_b, plane coordinates)
+// gives dist^2 = h^2 + |P' - closest|^2.
+bool fig_10_15(SvgWriter& w) {
+  const auto poly = polygon10();
+  if (!poly) return false;
+  closed(w, poly->polygon.vertices, filled(c::blue, 0.15, 2));
+  for (std::size_t i = 0; i < poly->polygon.vertices.size(); ++i)
+    point(w, poly->polygon.vertices[i], "V" + std::to_string(i), c::blue);
+  // The plane axes, drawn beside the polygon (their origin is the vertex average).
+  const Vec2d ax = poly->polygon.vertices[0] + Vec2d{-0.7, 0.2};
+  w.arrow(ax, ax + Vec2d{0.5, 0}, pen(c::gray, 1.2));
+  w.arrow(ax, ax + Vec2d{0, 0.5}, pen(c::gray, 1.2));
+  label(w, ax + Vec2d{0.5, 0}, "u", c::gray, 2, 4);
+  label(w, ax + Vec2d{0, 0.5}, "v", c::gray, 4, -12);
+  double y = -1.6;
+  for (std::size_t k = 0; k < polygon10_queries.size(); ++k) {
+    const Vec3d& p = polygon10_queries[k];
+    const auto d = distance(p, *poly);
+    if (!std::isfinite(d.distance)) return false;
+    const Vec2d q = to_plane(poly->frame, p);
+    const double h = dot(p - poly->frame.origin, poly->frame.normal);
+    const double in_plane = length(q - d.param_b);
+    w.segment(q, d.param_b, dashed(c::gray, 1.2));
+    point(w, q, "P'" + std::to_string(k), c::red);
+    w.point(d.param_b, dot(c::blue));
+    caption2(w, Vec2d{-1.4, y},
+             "P'" + std::to_string(k) + ": h = " + fmt(h) + ", in plane " + fmt(in_plane) +
+                 ", dist = \u221a(h\u00b2 + d\u00b2) = " + fmt(std::sqrt(h * h + in_plane * in_plane)) +
+                 " (3D: " + fmt(d.distance) + ")");
+    y -= 0.32;
+  }
+  return true;
+}
+
 // ---- circles and disks ----------------------------------------------------------------------
 
 void circle_scene(SvgWriter& w, const Circle3<double>& circ) {
@@ -481,6 +560,43 @@ bool fig_10_25(SvgWriter& w) {
     const auto d = distance(p, curve);
     if (!std::isfinite(d.distance)) return false;
     link(w, d, "P", "t = " + fmt(d.param_b));
+  }
+  return true;
+}
+
+// 10.26: distance from points to a parametric surface: a bicubic Bézier patch and the closest
+// points locus::distance(Vec3, BezierPatch) finds (the global minimum of |S(u, v) - P|^2; an
+// interior critical point, or a point of the boundary curves).
+bool fig_10_26(SvgWriter& w) {
+  const double z[4][4] = {
+      {0.0, 0.6, 0.4, 0.0}, {0.5, 2.2, 1.6, 0.3}, {0.2, 1.4, 2.4, 0.8}, {-0.2, 0.3, 0.9, 0.4}};
+  BezierPatch<double, 3> patch{4, 4, {}};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) patch.control.push_back({1.0 * i, 1.0 * j, z[i][j]});
+  w.set_camera(camera({7, -6, 5}, {1.5, 1.5, 0.8}));
+  for (int i = 0; i < 4; ++i) {
+    std::vector<Vec3d> row, col;
+    for (int j = 0; j < 4; ++j) {
+      row.push_back(patch.control[static_cast<std::size_t>(i * 4 + j)]);
+      col.push_back(patch.control[static_cast<std::size_t>(j * 4 + i)]);
+    }
+    w.polyline(row, dashed(c::light, 0.8));
+    w.polyline(col, dashed(c::light, 0.8));
+  }
+  for (int k = 0; k <= 10; ++k) {
+    std::vector<Vec3d> iso_u, iso_v;
+    for (int m = 0; m <= 40; ++m) {
+      iso_u.push_back(point_at(patch, k / 10.0, m / 40.0));
+      iso_v.push_back(point_at(patch, m / 40.0, k / 10.0));
+    }
+    const SvgStyle st = (k == 0 || k == 10) ? pen(c::blue, 1.8) : pen(c::blue, 0.7);
+    w.polyline(iso_u, st);
+    w.polyline(iso_v, st);
+  }
+  for (const Vec3d& p : {Vec3d{1.1, 1.4, 3.2}, Vec3d{3.9, 2.4, 1.6}, Vec3d{1.8, 1.3, -0.9}}) {
+    const auto d = distance(p, patch);
+    if (!std::isfinite(d.distance)) return false;
+    link(w, d, "P", "(u, v) = " + coordinates(d.param_b.x, d.param_b.y));
   }
   return true;
 }
@@ -755,6 +871,99 @@ bool fig_10_42(SvgWriter& w) {
   return true;
 }
 
+const Tetrahedron3<double> tet10{{{0, 0, 0}, {1.8, 0, 0}, {0.6, 1.6, 0}, {0.7, 0.6, 1.5}}};
+const Line3<double> tet10_line{{2.2, 1.2, 1.1}, {0.35, -1, 0.45}};
+
+// 10.44: distance between a line and a solid tetrahedron.
+bool fig_10_44(SvgWriter& w) {
+  const auto d = distance(tet10_line, tet10);
+  if (!std::isfinite(d.distance)) return false;
+  // Look along the perpendicular of the line and the connecting segment (tilted a little
+  // upwards), so both appear in true length and at a right angle, as in the book.
+  Vec3d side = normalize(cross(d.closest[1] - d.closest[0], tet10_line.direction));
+  if (side.z < 0) side = -side;
+  const Vec3d target = lerp(d.closest[0], centroid(tet10), 0.5);
+  w.set_camera(camera(target + 7.0 * normalize(side + Vec3d{0, 0, 0.3}), target));
+  draw(w, tet10, filled(c::blue, 0.1));
+  for (int i = 0; i < 4; ++i) point(w, tet10.v[i], "V" + std::to_string(i), c::blue);
+  w.segment(point_at(tet10_line, -1.6), point_at(tet10_line, 2.0), pen(c::green));
+  label(w, point_at(tet10_line, 2.0), "line", c::green);
+  link(w, d, "", "");
+  label(w, lerp(d.closest[0], d.closest[1], 0.5), "dist " + fmt(d.distance), c::gray);
+  return true;
+}
+
+// 10.45: (a) the tetrahedron projected onto the plane through the line's origin perpendicular
+// to its direction (plane_frame, to_plane): the line becomes one point O; (b) in the plane's 2D
+// coordinates the projection is the convex hull of the projected vertices (convex_hull), and
+// the distance from O to that polygon (distance_to_convex_polygon) equals the line-tetrahedron
+// distance (locus::distance(Line3, Tetrahedron3), which uses exact face queries instead).
+bool fig_10_45(SvgWriter& w) {
+  const Line3<double>& l = tet10_line;
+  const auto f = plane_frame(l.origin, l.direction);
+  const auto d3 = distance(l, tet10);
+  if (!f || !std::isfinite(d3.distance)) return false;
+  std::vector<Vec2d> proj;
+  for (const Vec3d& v : tet10.v) proj.push_back(to_plane(*f, v));
+  const auto hull = convex_hull(proj);
+  if (hull.status != Status::ok || hull.dimension != 2) return false;
+  std::vector<Vec2d> poly2;
+  for (const std::uint32_t i : hull.indices) poly2.push_back(proj[i]);
+  const Vec2d o = to_plane(*f, l.origin);
+  const auto d2 = distance_to_convex_polygon(o, std::span<const Vec2d>(poly2));
+  if (!std::isfinite(d2.distance)) return false;
+
+  // (a) in 3D, seen obliquely (about 50 degrees off the line direction); the plane square is
+  // centred on the shadow.
+  w.set_camera(camera({-3.1, -5.0, 3.0}, {0.9, 0.5, 0.6}));
+  Vec2d mid{};
+  for (const Vec2d& q : proj) mid += 0.25 * q;
+  const PlaneFrame3<double> patch{to_world(*f, mid), f->u, f->v, f->normal};
+  plane_patch(w, patch, 1.7, c::gray);
+  draw(w, tet10, filled(c::blue, 0.1));
+  w.segment(point_at(l, -1.6), point_at(l, 2.0), pen(c::green));
+  std::vector<Vec3d> shadow;
+  for (std::size_t i = 0; i < proj.size(); ++i)
+    w.segment(tet10.v[i], to_world(*f, proj[i]), dashed(c::light, 1));
+  for (const Vec2d& q : poly2) shadow.push_back(to_world(*f, q));
+  closed(w, shadow, filled(c::orange, 0.25, 1.6));
+  point(w, l.origin, "O", c::green);
+  // Place panel (b) to the right of panel (a)'s image (the camera's image-plane coordinates are
+  // the drawing's world coordinates).
+  double right = -1e300, top = -1e300, bottom = 1e300;
+  for (const Vec3d& p : {tet10.v[0], tet10.v[1], tet10.v[2], tet10.v[3], point_at(l, -1.6),
+                         point_at(l, 2.0), to_world(patch, Vec2d{1.7, 1.7}),
+                         to_world(patch, Vec2d{-1.7, 1.7}), to_world(patch, Vec2d{1.7, -1.7}),
+                         to_world(patch, Vec2d{-1.7, -1.7})}) {
+    Vec2d q{};
+    if (!w.project(p, q)) return false;
+    right = std::max(right, q.x);
+    top = std::max(top, q.y);
+    bottom = std::min(bottom, q.y);
+  }
+  label(w, Vec2d{right - 2.0, bottom - 0.4}, "(a) projection onto the plane \u27c2 d", c::black);
+  double lo_x = 1e300, lo_y = 1e300, hi_y = -1e300;
+  for (const Vec2d& q : poly2) {
+    lo_x = std::min(lo_x, std::min(q.x, o.x));
+    lo_y = std::min(lo_y, std::min(q.y, o.y));
+    hi_y = std::max(hi_y, std::max(q.y, o.y));
+  }
+  const Vec2d off{right + 1.0 - lo_x, 0.5 * (top + bottom) - 0.5 * (lo_y + hi_y)};
+  // (b) in the plane's 2D coordinates.
+  std::vector<Vec2d> panel;
+  for (const Vec2d& q : poly2) panel.push_back(off + q);
+  closed(w, panel, filled(c::orange, 0.25, 1.6));
+  for (std::size_t i = 0; i < proj.size(); ++i)
+    point(w, off + proj[i], "V" + std::to_string(i) + "'", c::blue);
+  w.segment(off + o, off + d2.closest[1], dashed(c::gray, 1.2));
+  point(w, off + o, "O (the line)", c::green);
+  w.point(off + d2.closest[1], dot(c::blue));
+  label(w, off + Vec2d{lo_x, lo_y - 0.5},
+        "(b) 2D: " + fmt(d2.distance, 3) + " = 3D line-tetrahedron " + fmt(d3.distance, 3),
+        c::black);
+  return true;
+}
+
 // 10.46: distance between a line and an oriented box.
 bool fig_10_46(SvgWriter& w) {
   w.set_camera(camera({6, -4, 5}));
@@ -783,6 +992,9 @@ std::vector<Figure> chapter10_distance_figures() {
       {"10.10", "distance(Vec3, Triangle3), distance(Vec3, Plane3), barycentric (level curves)",
        fig_10_10},
       {"10.12", "distance(Vec3, Rectangle3)", fig_10_12},
+      {"10.14", "distance(Vec3, PlanarPolygon3), planar_polygon", fig_10_14},
+      {"10.15", "distance(Vec3, PlanarPolygon3) (param_b: plane coordinates), to_plane",
+       fig_10_15},
       {"10.16", "distance(Vec3, Circle3)", fig_10_16},
       {"10.17", "distance(Vec3, Circle3) (unique = false on the axis)", fig_10_17},
       {"10.18", "distance(Vec3, Disk3)", fig_10_18},
@@ -793,6 +1005,7 @@ std::vector<Figure> chapter10_distance_figures() {
       {"10.23", "distance(Vec3, Frustum3), corners", fig_10_23},
       {"10.24", "distance(Vec3, Ellipsoid3), point_at(Ellipsoid3)", fig_10_24},
       {"10.25", "distance(Vec3, BezierCurve3), point_at(BezierCurve3)", fig_10_25},
+      {"10.26", "distance(Vec3, BezierPatch3), point_at(BezierPatch3)", fig_10_26},
       {"10.27", "distance(Line3, Line3)", fig_10_27},
       {"10.28", "distance for the six linear-linear pairs (param_a, param_b)", fig_10_28},
       {"10.29", "distance(Line3, Line3), distance(Segment3, Segment3)", fig_10_29},
@@ -805,6 +1018,11 @@ std::vector<Figure> chapter10_distance_figures() {
       {"10.37", "distance(Line3, Triangle3)", fig_10_37},
       {"10.38", "point_at(Triangle3, st)", fig_10_38},
       {"10.42", "distance(Line3, Rectangle3)", fig_10_42},
+      {"10.44", "distance(Line3, Tetrahedron3)", fig_10_44},
+      {"10.45",
+       "distance(Line3, Tetrahedron3), plane_frame, to_plane, convex_hull, "
+       "distance_to_convex_polygon",
+       fig_10_45},
       {"10.46", "distance(Line3, OrientedBox3)", fig_10_46},
   };
 }

@@ -30,8 +30,8 @@
 //      edge whose constraint blocks descent; backtracking, every step decreases Q or the
 //      gradient) starts at its centre unless the best point already lies in it; then it is
 //      split (boxes along the physically longer direction).
-//   tau = 2^-26 size + 64 eps size', size the control-net diagonal, size' = size + |P - net
-//   box| (the bound's own rounding).
+//   tau = 2^-26 size + 64 eps (size + max |P_i|), size the diagonal of the box of the
+//   control points (the second term covers the rounding of the bounds themselves).
 // Accuracy: the result is a point of the surface whose distance is an upper bound of the true
 // one; it is a Newton-converged local minimum (or an exact edge minimum), so its distance is
 // accurate to a few ulps of the scale, and the branch and bound certifies (up to rounding) that
@@ -40,9 +40,10 @@
 // (below) ends the search early only for pathological input, still returning a surface point.
 // Computations run in compute_t<T> (double for float input).
 //
-// unique = false when two points of the surface separated by more than 16 sqrt(eps) size are
-// (to 64 eps relative in the squared distance) equally close: a point on a symmetry plane of the
-// patch, the centre of a spherical NURBS patch (every point is closest).
+// unique = false when two critical candidates (Newton-converged points, edge-curve minima) more
+// than 16 sqrt(eps of compute_t<T>) size apart are (to 64 eps of T relative in the squared
+// distance) equally close: a point on a symmetry plane of the patch, the centre of a spherical
+// NURBS patch (every point is closest).
 //
 // Degenerate input: a degree 0 direction (a 1 x n net), a constant patch, collapsed edges
 // (a corner or edge where S_u or S_v vanishes), repeated knots and C0 knot lines are fine (the
