@@ -13,49 +13,62 @@
 // f(n) = (width of the hull along n) * (minimum rectangle area of the projection). Steps:
 //  1. the exact convex hull (hull/hull3.hpp; coplanar facets are triangulated there and
 //     collinear / in-facet points are not vertices; an edge between two coplanar triangles has
-//     a one-point arc, the facet normal, and is skipped);
-//  2. the previous candidate search, kept as a floor: the normal of every hull facet and, when
-//     the hull has at most max_pair_edges edges, the cross product of every pair of hull edge
-//     directions; f by rotating calipers on the projection (bounding/min_rect2.hpp); then a
-//     derivative-free descent over small rotations (refine);
-//  3. (edge_arcs) the one-parameter minimisation over n on arc(e) for every hull edge: f
-//     sampled every <= 0.05 rad along the arc (both ends, the facet normals, included), each
-//     sampled local minimum refined by golden-section search on its bracket to 1e-9 rad; the
-//     descent of step 2 is rerun from the result when it improved;
-//  4. (certify_tol > 0) a proof of optimality by branch and bound over every arc: with R the
-//     radius of the hull about a centre, turning the best frame at n' by the angle d to n
-//     changes each width by <= 2 R d, so f(n) >= f(n') - ((2R + 2Rd)^3 - (2R)^3); arc
-//     intervals are halved until this lower bound is >= (1 - certify_tol) * best. Arcs are
-//     widened by 1e-7 rad at both ends to cover the rounding of the facet normals; a sliver
-//     facet whose rounded normal is not trusted (sine of its angle < 1e-8, e.g. from a point
-//     that rounding moved a hair off a hull edge) leaves its arcs unsearched and the result
-//     uncertified (a far-from-origin set of tiny extent can also defeat the 1e-7 margin).
-// Guarantee: never worse than the best facet-flush box (exact up to rounding) nor than the
-// previous candidate search; when `certified` is true, no enclosing box of the point set has
-// volume below (1 - certify_tol) * volume (up to the rounding of the evaluated f values). The
-// branch and bound replaces O'Rourke's exact event sweep over the smooth pieces of f (and
-// Jylanki's 2015 enumeration of edge triples, itself only conjectured optimal). It is cheap when
-// the minimum is a kink of f (more contacts: the usual case); a smooth, flat minimum costs about
-// sqrt(certify_tol) / (certify_tol * V / R^3) evaluations, and when the work budget runs out the
-// result is returned with Status::limit_exceeded and certified = false. Tests compare with
-// dense orientation searches and the closed-form regular tetrahedron (minimum box = the cube of
-// its edges, no face flush with a facet).
+//     a one-point arc, the facet normal);
+//  2. f at every facet normal (the ends of the arcs, and the facet-flush boxes) and, when the
+//     hull has at most max_pair_edges edges, at the cross product of every pair of hull edge
+//     directions; then a derivative-free descent over small rotations (refine);
+//  3. (edge_arcs) a best-first branch and bound over every arc (angle intervals, f evaluated
+//     at their ends, the interval of smallest lower bound split first) until every interval's
+//     lower bound is >= (1 - certify_tol) * best (certify_tol = 0: a search to 1e-3, not a
+//     proof); the descent is rerun from the result when it improved.
+//     Bound: the arc of edge e is n(t) = cos(t) a + sin(t) b, a rotation about the pole a x b.
+//     The width along n(t), W(t) = min over vertices v of n(t) . (p_e - v), is a minimum of
+//     sinusoids that are >= 0 on the arc, hence concave: on an interval it is >= the smaller
+//     end value. For the rectangle area A(t): rotating the best frame at t back to an end t'
+//     (angle d) turns its sides u, v by 2 sin(d/2) |sin| and |cos| of their angle to the pole,
+//     changing each width by at most that times D (a diameter bound of the hull's projection
+//     along the pole), so A(t') <= (w_u + d s D)(w_v + d c D) and, every width being >= L
+//     (twice the distance from the vertex centroid to the nearest facet plane),
+//     A(t) >= A(t') / (1 + d D / (sqrt(2) L))^2. With the arc ends' normal errors m (the
+//     rounded cross products) the interval is widened by m on every side.
+//     Evaluating f: the projection's hull vertices are silhouette vertices (an incident facet
+//     facing n and one facing away, undecided signs counting as both); the edges are grouped
+//     in cells of nearby facet normals (a cube map on the Gauss sphere) with a bounding cone, so
+//     only cells whose cone meets the plane n^perp are visited; the 2D hull of those vertices
+//     and rotating calipers give the rectangle, support ascents over the vertex graph the width.
+// Guarantee: never worse than the best facet-flush box (exact up to rounding); when `certified`
+// is true, no enclosing box of the point set has volume below (1 - certify_tol) * volume (up to
+// the rounding of the evaluated f values and of the hull vertices relative to the first). A
+// sliver facet whose rounded normal is not trusted (sine of its angle < 1e-8, e.g. from a point
+// that rounding moved a hair off a hull edge) leaves its arcs unsearched and the result
+// uncertified. This replaces O'Rourke's exact event sweep over the smooth pieces of f (and
+// Jylanki's 2015 enumeration of edge triples, itself only conjectured optimal); the bound is
+// first order, so a flat f (points on or in a sphere: f varies by ~1% over all normals) needs
+// many intervals: ~5 10^4 evaluations for 10^5 points in a ball (1400 hull vertices), while a
+// box-like or ellipsoidal set needs few. Tests compare with dense orientation searches refined
+// by descent and the closed-form regular tetrahedron (minimum box = the cube of its edges, no
+// face flush with a facet).
 //
 // Exactness: the hull and the 2D hulls/calipers of the projections are exact for the rounded
 // projected points; normals, projections, extents and volume are rounded constructions
-// (double, then T). Every input point lies inside the box up to a few ulps of the set's scale.
+// (double, then T). Every input point lies inside the box up to a few ulps of the set's scale
+// (the returned box is always refitted over every hull vertex).
 //
-// Result: status, box (axes orthonormal and right-handed), volume, candidates (orientations
-// evaluated by calipers), arcs (hull edges whose arc was searched).
+// Result: status, box (axes orthonormal and right-handed), volume, candidates (normals at which
+// f was evaluated), arcs (hull edges whose arc was searched).
 // Degenerate input: all points equal -> ok, zero box at the point; collinear -> ok, a box of
 // zero width and height along the segment; coplanar -> ok, the minimum-area rectangle in the
 // plane with extent[2] = 0 (volume 0). Empty -> empty_input; NaN/Inf -> non_finite_input.
-// Budget: max_work bounds the number of projected vertices over all candidates, descent and arc
-// points (default 4 10^8); when it runs out the best box so far is returned with
-// Status::limit_exceeded (it still encloses every point).
-// Cost: hull + O(C h log h) for C orientations and h hull vertices (C ~ 2h facets, E^2 edge
-// pairs when E <= max_pair_edges, and per edge about phi / 0.05 + 1 samples plus ~40 golden
-// steps per sampled local minimum, phi = the edge's exterior dihedral angle).
+// Budget: max_work bounds the work of the evaluations (cells, edges and vertices visited;
+// default 4 10^8, a few seconds). When the first 64 facets show that the facet pass alone
+// would exceed it (hulls of ~10^5 vertices, e.g. points on a sphere), the facets are visited in
+// a spread (stride) order and the arcs are skipped. When it runs out, the best box so far
+// (descended) is returned with Status::limit_exceeded and certified = false (it still encloses
+// every point).
+// Cost: hull + (F + evaluations) * (visited cells and edges + silhouette log silhouette); the
+// evaluations are F facet normals plus the branch and bound's (a few per arc on box-like sets;
+// see above for flat f). 10^5 points: cuboid (181 hull vertices) ~1800 evaluations, ellipsoid
+// (1400) ~10^4, ball (1400) ~5.6 10^4, all certified; sphere (10^5) budget-limited.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -72,9 +85,9 @@ namespace locus {
 struct MinBoxOptions {
   std::size_t max_pair_edges = 60;  ///< edge-pair candidates only for hulls with <= this many edges
   bool refine = true;               ///< local descent over rotations from the best candidate
-  bool edge_arcs = true;  ///< search every hull edge's arc of supporting normals (O'Rourke)
+  bool edge_arcs = true;      ///< search every hull edge's arc of supporting normals (O'Rourke)
   double certify_tol = 1e-6;  ///< relative gap proved by branch and bound on the arcs (0: skip)
-  std::uint64_t max_work = 400000000;  ///< budget of projected vertices (see the header comment)
+  std::uint64_t max_work = 400000000;  ///< budget of work units (see the header comment)
 };
 
 /// The minimum-volume enclosing box found (see the header comment for its guarantee).
@@ -83,9 +96,9 @@ struct MinBoxResult {
   Status status = Status::empty_input;
   OrientedBox<T, 3> box{};
   T volume = T(0);
-  std::size_t candidates = 0;  ///< orientations evaluated by calipers (directions + arc points)
+  std::size_t candidates = 0;  ///< normals at which f was evaluated (directions + arc points)
   std::size_t arcs = 0;        ///< hull edges whose arc of supporting normals was searched
-  bool certified = false;  ///< proved: no enclosing box has volume < (1 - certify_tol) * volume
+  bool certified = false;      ///< proved: no enclosing box has volume < (1 - certify_tol) * volume
 };
 
 /// A minimum-volume box enclosing `points` (see the header comment).
