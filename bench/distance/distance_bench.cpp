@@ -4,17 +4,22 @@
 // segment-triangle, point-OBB and point-AABB in 3D, float and double, over 4096 random inputs
 // cycled so that the data stays in cache. Items per second = queries per second.
 //
-// Peers (when CGAL is found, LOCUS_HAVE_CGAL): CGAL::squared_distance on the SAME inputs (the
-// double inputs converted to CGAL objects once, outside the timed loop), with two kernels:
-// Simple_cartesian<double> (plain floating point, the fair peer) and
-// Exact_predicates_inexact_constructions_kernel (what CGAL users usually take). CGAL returns
-// only the squared distance while locus also returns both closest points and their parameters.
-// CGAL (5.5) has no point-box distance at all: neither an oriented box nor Iso_cuboid_3 /
-// Bbox_3 has a squared_distance overload, so the box queries run for locus alone; and no
-// segment-triangle distance: that peer is composed from CGAL's own queries (see below). CGAL's
-// CMake target adds -frounding-math to this translation unit, locus code included.
+// Every pair runs the same templated loop (cycle()) with three kinds of query on the same inputs:
+//   <pair>/distance<T>      locus::distance: the full result (closest points, parameters, sqrt);
+//   <pair>/sqr_distance<T>  locus::sqr_distance: the squared distance only, like CGAL's;
+//   <pair>/cgal<Kernel>     the peer on the double inputs (converted once, outside the loop):
+//     CGAL::squared_distance with Simple_cartesian<double> (plain floating point, the fair peer)
+//     and Exact_predicates_inexact_constructions_kernel (what CGAL users usually take), when
+//     CGAL is found (LOCUS_HAVE_CGAL). CGAL 5.5 has no segment-triangle distance: that peer is
+//     composed from CGAL's own queries (see cgal_query). It has no point-box distance either
+//     (no squared_distance for Iso_cuboid_3, Bbox_3 or an oriented box), so the box pairs run
+//     against <pair>/textbook: the plain textbook loop written here (per axis: the coordinate in
+//     the box frame, the excess over the slab with if/else, summed squares; no input checks), the
+//     code a user would write instead of calling a library.
+// CGAL's CMake target adds -frounding-math to this translation unit, locus code included.
 //
-// Run: locus_bench_distance --benchmark_min_time=0.2
+// Run: locus_bench_distance --benchmark_min_time=0.2 --benchmark_filter='^(point|segment|seg)'
+
 #include <locus/distance/point_aligned_box.hpp>
 #include <locus/distance/point_oriented_box.hpp>
 #include <locus/distance/point_triangle.hpp>
@@ -35,6 +40,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -152,98 +158,130 @@ const SegmentTriangleInput& segment_triangle_input() {
   return in;
 }
 
-// ---- locus ------------------------------------------------------------------------------------
+// ---- one loop for every query -------------------------------------------------------------
+
+// Runs query(a[i], b[i]) over the cycled inputs; items per second = queries per second.
+template <class A, class B, class Query>
+void cycle(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b, Query query) {
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(query(a[i], b[i]));
+    i = (i + 1) & (kCount - 1);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
 
 template <class T>
 locus::Vec3<T> cast(const locus::Vec3d& v) {
   return {static_cast<T>(v.x), static_cast<T>(v.y), static_cast<T>(v.z)};
 }
-
 template <class T>
-void point_triangle(benchmark::State& state) {
-  const auto& in = point_triangle_input();
-  std::vector<locus::Vec3<T>> p;
-  std::vector<locus::Triangle3<T>> t;
-  for (std::size_t i = 0; i < kCount; ++i) {
-    p.push_back(cast<T>(in.p[i]));
-    t.push_back({cast<T>(in.t[i].v0), cast<T>(in.t[i].v1), cast<T>(in.t[i].v2)});
-  }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(locus::distance(p[i], t[i]));
-    i = (i + 1) & (kCount - 1);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+locus::Segment3<T> cast(const locus::Segment3<double>& s) {
+  return {cast<T>(s.p0), cast<T>(s.p1)};
+}
+template <class T>
+locus::Triangle3<T> cast(const locus::Triangle3<double>& t) {
+  return {cast<T>(t.v0), cast<T>(t.v1), cast<T>(t.v2)};
+}
+template <class T>
+locus::OrientedBox3<T> cast(const locus::OrientedBox3<double>& b) {
+  return {cast<T>(b.center), {cast<T>(b.axis[0]), cast<T>(b.axis[1]), cast<T>(b.axis[2])},
+          cast<T>(b.extent)};
+}
+template <class T>
+locus::AlignedBox3<T> cast(const locus::AlignedBox3<double>& b) {
+  return {cast<T>(b.min), cast<T>(b.max)};
+}
+template <class T, class X>
+auto cast_all(const std::vector<X>& v) {
+  std::vector<decltype(cast<T>(v[0]))> r;
+  for (const X& x : v) r.push_back(cast<T>(x));
+  return r;
 }
 
-template <class T>
-void segment_segment(benchmark::State& state) {
-  const auto& in = segment_pair_input(state.range(0) != 0);
-  std::vector<locus::Segment3<T>> a, b;
-  for (std::size_t i = 0; i < kCount; ++i) {
-    a.push_back({cast<T>(in.a[i].p0), cast<T>(in.a[i].p1)});
-    b.push_back({cast<T>(in.b[i].p0), cast<T>(in.b[i].p1)});
+// The pairs: the double inputs (arg: segment-segment nearly parallel when 1).
+struct PointTriangle {
+  static auto input(const benchmark::State&) {
+    const auto& in = point_triangle_input();
+    return std::pair{in.p, in.t};
   }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(locus::distance(a[i], b[i]));
-    i = (i + 1) & (kCount - 1);
+};
+struct SegmentSegment {
+  static auto input(const benchmark::State& state) {
+    const auto& in = segment_pair_input(state.range(0) != 0);
+    return std::pair{in.a, in.b};
   }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+};
+struct PointObb {
+  static auto input(const benchmark::State&) {
+    const auto& in = point_obb_input();
+    return std::pair{in.p, in.box};
+  }
+};
+struct PointAabb {
+  static auto input(const benchmark::State&) {
+    const auto& in = point_aabb_input();
+    return std::pair{in.p, in.box};
+  }
+};
+struct SegmentTriangle {
+  static auto input(const benchmark::State&) {
+    const auto& in = segment_triangle_input();
+    return std::pair{in.s, in.t};
+  }
+};
+
+struct FullQuery {
+  template <class A, class B>
+  auto operator()(const A& a, const B& b) const {
+    return locus::distance(a, b);
+  }
+};
+struct SqrQuery {
+  template <class A, class B>
+  auto operator()(const A& a, const B& b) const {
+    return locus::sqr_distance(a, b);
+  }
+};
+
+// locus on the pair's inputs converted to T.
+template <class Pair, class T, class Query>
+void locus_bench(benchmark::State& state) {
+  const auto in = Pair::input(state);
+  cycle(state, cast_all<T>(in.first), cast_all<T>(in.second), Query{});
 }
 
-template <class T>
-void point_obb(benchmark::State& state) {
-  const auto& in = point_obb_input();
-  std::vector<locus::Vec3<T>> p;
-  std::vector<locus::OrientedBox3<T>> box;
-  for (std::size_t i = 0; i < kCount; ++i) {
-    const auto& b = in.box[i];
-    p.push_back(cast<T>(in.p[i]));
-    box.push_back({cast<T>(b.center),
-                   {cast<T>(b.axis[0]), cast<T>(b.axis[1]), cast<T>(b.axis[2])},
-                   cast<T>(b.extent)});
-  }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(locus::distance(p[i], box[i]));
-    i = (i + 1) & (kCount - 1);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
-}
+// ---- the textbook peer for the boxes (no library has it) --------------------------------------
 
-template <class T>
-void point_aabb(benchmark::State& state) {
-  const auto& in = point_aabb_input();
-  std::vector<locus::Vec3<T>> p;
-  std::vector<locus::AlignedBox3<T>> box;
-  for (std::size_t i = 0; i < kCount; ++i) {
-    p.push_back(cast<T>(in.p[i]));
-    box.push_back({cast<T>(in.box[i].min), cast<T>(in.box[i].max)});
+struct TextbookQuery {
+  static double excess(double x, double lo, double hi) {
+    if (x < lo) return x - lo;
+    if (x > hi) return x - hi;
+    return 0.0;
   }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(locus::distance(p[i], box[i]));
-    i = (i + 1) & (kCount - 1);
+  double operator()(const locus::Vec3d& p, const locus::OrientedBox3<double>& b) const {
+    const locus::Vec3d d = p - b.center;
+    double sq = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double x = d.x * b.axis[i].x + d.y * b.axis[i].y + d.z * b.axis[i].z;
+      const double e = excess(x, -b.extent[i], b.extent[i]);
+      sq += e * e;
+    }
+    return sq;
   }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
-}
-
-template <class T>
-void seg_triangle(benchmark::State& state) {
-  const auto& in = segment_triangle_input();
-  std::vector<locus::Segment3<T>> s;
-  std::vector<locus::Triangle3<T>> t;
-  for (std::size_t i = 0; i < kCount; ++i) {
-    s.push_back({cast<T>(in.s[i].p0), cast<T>(in.s[i].p1)});
-    t.push_back({cast<T>(in.t[i].v0), cast<T>(in.t[i].v1), cast<T>(in.t[i].v2)});
+  double operator()(const locus::Vec3d& p, const locus::AlignedBox3<double>& b) const {
+    double sq = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double e = excess(p[i], b.min[i], b.max[i]);
+      sq += e * e;
+    }
+    return sq;
   }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(locus::distance(s[i], t[i]));
-    i = (i + 1) & (kCount - 1);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+};
+template <class Pair>
+void textbook_bench(benchmark::State& state) {
+  const auto in = Pair::input(state);
+  cycle(state, in.first, in.second, TextbookQuery{});
 }
 
 // ---- CGAL -------------------------------------------------------------------------------------
@@ -253,98 +291,75 @@ using Simple = CGAL::Simple_cartesian<double>;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 template <class K>
-typename K::Point_3 cgal_point(const locus::Vec3d& v) {
+typename K::Point_3 to_cgal(const locus::Vec3d& v) {
   return {v.x, v.y, v.z};
 }
-
-// Runs CGAL::squared_distance(a[i], b[i]) over the cycled inputs.
-template <class A, class B>
-void cgal_loop(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b) {
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(CGAL::squared_distance(a[i], b[i]));
-    i = (i + 1) & (kCount - 1);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+template <class K>
+typename K::Segment_3 to_cgal(const locus::Segment3<double>& s) {
+  return {to_cgal<K>(s.p0), to_cgal<K>(s.p1)};
+}
+template <class K>
+typename K::Triangle_3 to_cgal(const locus::Triangle3<double>& t) {
+  return {to_cgal<K>(t.v0), to_cgal<K>(t.v1), to_cgal<K>(t.v2)};
+}
+template <class K, class X>
+auto to_cgal_all(const std::vector<X>& v) {
+  std::vector<decltype(to_cgal<K>(v[0]))> r;
+  for (const X& x : v) r.push_back(to_cgal<K>(x));
+  return r;
 }
 
 template <class K>
-void cgal_point_triangle(benchmark::State& state) {
-  const auto& in = point_triangle_input();
-  std::vector<typename K::Point_3> p;
-  std::vector<typename K::Triangle_3> t;
-  for (std::size_t i = 0; i < kCount; ++i) {
-    p.push_back(cgal_point<K>(in.p[i]));
-    t.emplace_back(cgal_point<K>(in.t[i].v0), cgal_point<K>(in.t[i].v1),
-                   cgal_point<K>(in.t[i].v2));
+struct CgalQuery {
+  template <class A, class B>
+  auto operator()(const A& a, const B& b) const {
+    return CGAL::squared_distance(a, b);
   }
-  cgal_loop(state, p, t);
-}
+  // CGAL 5.5 has no Segment_3 / Triangle_3 squared_distance (it arrived in CGAL 6): the peer is
+  // the usual composition from CGAL's own queries: 0 when do_intersect(segment, triangle),
+  // otherwise the minimum over the two end points to the triangle and the segment to the three
+  // edges (the closest pair of disjoint convex sets has a point on a boundary feature).
+  double operator()(const typename K::Segment_3& seg, const typename K::Triangle_3& tri) const {
+    if (CGAL::do_intersect(seg, tri)) return 0.0;
+    double d = CGAL::to_double(CGAL::squared_distance(seg.source(), tri));
+    d = std::min(d, CGAL::to_double(CGAL::squared_distance(seg.target(), tri)));
+    for (int e = 0; e < 3; ++e)
+      d = std::min(d, CGAL::to_double(CGAL::squared_distance(
+                          seg, typename K::Segment_3(tri.vertex(e), tri.vertex((e + 1) % 3)))));
+    return d;
+  }
+};
 
-template <class K>
-void cgal_segment_segment(benchmark::State& state) {
-  const auto& in = segment_pair_input(state.range(0) != 0);
-  std::vector<typename K::Segment_3> a, b;
-  for (std::size_t i = 0; i < kCount; ++i) {
-    a.emplace_back(cgal_point<K>(in.a[i].p0), cgal_point<K>(in.a[i].p1));
-    b.emplace_back(cgal_point<K>(in.b[i].p0), cgal_point<K>(in.b[i].p1));
-  }
-  cgal_loop(state, a, b);
-}
-
-// CGAL 5.5 has no Segment_3 / Triangle_3 squared_distance (it arrived in CGAL 6): the peer is
-// the usual composition from CGAL's own queries: 0 when do_intersect(segment, triangle),
-// otherwise the minimum over the two end points to the triangle and the segment to the three
-// edges (the closest pair of disjoint convex sets has a point on a boundary feature).
-template <class K>
-void cgal_seg_triangle(benchmark::State& state) {
-  const auto& in = segment_triangle_input();
-  std::vector<typename K::Segment_3> s;
-  std::vector<typename K::Triangle_3> t;
-  for (std::size_t i = 0; i < kCount; ++i) {
-    s.emplace_back(cgal_point<K>(in.s[i].p0), cgal_point<K>(in.s[i].p1));
-    t.emplace_back(cgal_point<K>(in.t[i].v0), cgal_point<K>(in.t[i].v1), cgal_point<K>(in.t[i].v2));
-  }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const auto& seg = s[i];
-    const auto& tri = t[i];
-    double d = 0;
-    if (!CGAL::do_intersect(seg, tri)) {
-      d = CGAL::squared_distance(seg.source(), tri);
-      d = std::min(d, CGAL::squared_distance(seg.target(), tri));
-      for (int e = 0; e < 3; ++e)
-        d = std::min(d, CGAL::squared_distance(
-                            seg, typename K::Segment_3(tri.vertex(e), tri.vertex((e + 1) % 3))));
-    }
-    benchmark::DoNotOptimize(d);
-    i = (i + 1) & (kCount - 1);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+template <class Pair, class K>
+void cgal_bench(benchmark::State& state) {
+  const auto in = Pair::input(state);
+  cycle(state, to_cgal_all<K>(in.first), to_cgal_all<K>(in.second), CgalQuery<K>{});
 }
 #endif
 
 }  // namespace
 
-BENCHMARK(point_triangle<float>);
-BENCHMARK(point_triangle<double>);
+// Registers <name>/distance<T>, <name>/sqr_distance<T> for float and double, then the peers.
+#define LOCUS_BENCH_LOCUS(Pair, name, ...)                                                       \
+  BENCHMARK(locus_bench<Pair, float, FullQuery>)->Name(name "/distance<float>") __VA_ARGS__;      \
+  BENCHMARK(locus_bench<Pair, double, FullQuery>)->Name(name "/distance<double>") __VA_ARGS__;    \
+  BENCHMARK(locus_bench<Pair, float, SqrQuery>)->Name(name "/sqr_distance<float>") __VA_ARGS__;   \
+  BENCHMARK(locus_bench<Pair, double, SqrQuery>)->Name(name "/sqr_distance<double>") __VA_ARGS__
 #if defined(LOCUS_HAVE_CGAL)
-BENCHMARK(cgal_point_triangle<Simple>)->Name("cgal_point_triangle<Simple_cartesian>");
-BENCHMARK(cgal_point_triangle<Epick>)->Name("cgal_point_triangle<Epick>");
+#define LOCUS_BENCH_CGAL(Pair, name, ...)                                                        \
+  BENCHMARK(cgal_bench<Pair, Simple>)->Name(name "/cgal<Simple_cartesian>") __VA_ARGS__;         \
+  BENCHMARK(cgal_bench<Pair, Epick>)->Name(name "/cgal<Epick>") __VA_ARGS__
+#else
+#define LOCUS_BENCH_CGAL(Pair, name, ...)
 #endif
-BENCHMARK(segment_segment<float>)->Arg(0)->Arg(1);
-BENCHMARK(segment_segment<double>)->Arg(0)->Arg(1);
-#if defined(LOCUS_HAVE_CGAL)
-BENCHMARK(cgal_segment_segment<Simple>)->Name("cgal_segment_segment<Simple_cartesian>")->Arg(0)->Arg(1);
-BENCHMARK(cgal_segment_segment<Epick>)->Name("cgal_segment_segment<Epick>")->Arg(0)->Arg(1);
-#endif
-BENCHMARK(point_obb<float>);
-BENCHMARK(point_obb<double>);
-BENCHMARK(seg_triangle<float>);
-BENCHMARK(seg_triangle<double>);
-#if defined(LOCUS_HAVE_CGAL)
-BENCHMARK(cgal_seg_triangle<Simple>)->Name("cgal_seg_triangle<Simple_cartesian> (composed)");
-BENCHMARK(cgal_seg_triangle<Epick>)->Name("cgal_seg_triangle<Epick> (composed)");
-#endif
-BENCHMARK(point_aabb<float>);
-BENCHMARK(point_aabb<double>);
+
+LOCUS_BENCH_LOCUS(PointTriangle, "point_triangle");
+LOCUS_BENCH_CGAL(PointTriangle, "point_triangle");
+LOCUS_BENCH_LOCUS(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
+LOCUS_BENCH_CGAL(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
+LOCUS_BENCH_LOCUS(SegmentTriangle, "segment_triangle");
+LOCUS_BENCH_CGAL(SegmentTriangle, "segment_triangle");
+LOCUS_BENCH_LOCUS(PointObb, "point_obb");
+BENCHMARK(textbook_bench<PointObb>)->Name("point_obb/textbook<double>");
+LOCUS_BENCH_LOCUS(PointAabb, "point_aabb");
+BENCHMARK(textbook_bench<PointAabb>)->Name("point_aabb/textbook<double>");

@@ -3,7 +3,8 @@
 // random segments and triangles in a cube (a mix of crossing and separated pairs), separated
 // pairs only (segments above the triangles' cube), and nearly parallel segments (parallel to
 // their triangle's plane up to a 1e-6 tilt). 4096 inputs are cycled so that the data stays in
-// cache; items per second = queries per second. Segment-rectangle alongside for scale.
+// cache; items per second = queries per second. Each kind runs distance() (the full result) and
+// sqr_distance() (the squared distance only). Segment-rectangle alongside for scale.
 #include <locus/distance/segment_rectangle.hpp>
 #include <locus/distance/segment_triangle.hpp>
 
@@ -27,7 +28,20 @@ locus::Vec3<T> rvec(std::mt19937_64& rng, double lo, double hi) {
 
 // kind 0: everything in [-1, 1]^3; 1: segments in [-1, 1]^2 x [2, 4] (never crossing);
 // 2: segments parallel to the triangle's plane up to a 1e-6 tilt, 0.1 above it.
-template <class T>
+struct FullQuery {
+  template <class A, class B>
+  auto operator()(const A& a, const B& b) const {
+    return locus::distance(a, b);
+  }
+};
+struct SqrQuery {
+  template <class A, class B>
+  auto operator()(const A& a, const B& b) const {
+    return locus::sqr_distance(a, b);
+  }
+};
+
+template <class T, class Query>
 void segment_triangle(benchmark::State& state) {
   const int kind = static_cast<int>(state.range(0));
   std::mt19937_64 rng(7);
@@ -53,7 +67,7 @@ void segment_triangle(benchmark::State& state) {
   }
   std::size_t i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(locus::distance(s[i], t[i]));
+    benchmark::DoNotOptimize(Query{}(s[i], t[i]));
     i = (i + 1) & (kCount - 1);
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
@@ -80,8 +94,14 @@ void segment_rectangle(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 
-BENCHMARK(segment_triangle<float>)->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
-BENCHMARK(segment_triangle<double>)->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
+BENCHMARK(segment_triangle<float, FullQuery>)
+    ->Name("segment_triangle_kinds/distance<float>")->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
+BENCHMARK(segment_triangle<double, FullQuery>)
+    ->Name("segment_triangle_kinds/distance<double>")->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
+BENCHMARK(segment_triangle<float, SqrQuery>)
+    ->Name("segment_triangle_kinds/sqr_distance<float>")->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
+BENCHMARK(segment_triangle<double, SqrQuery>)
+    ->Name("segment_triangle_kinds/sqr_distance<double>")->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
 BENCHMARK(segment_rectangle<float>);
 BENCHMARK(segment_rectangle<double>);
 

@@ -15,7 +15,9 @@
 //      opt.check_agreement) agrees with it to opt.agree (relative to scale) unless the minimiser
 //      lies outside the oracle's window on an unbounded object;
 //   6. a random rigid motion (rotation + translation; translation only for axis-aligned boxes)
-//      applied to both objects leaves the squared distance unchanged to k eps scale^2.
+//      applied to both objects leaves the squared distance unchanged to k eps scale^2;
+//   7. where the pair has sqr_distance(a, b): it equals r.sqr_distance exactly, in both argument
+//      orders (the lean query shares the full query's computation).
 // Side<P> describes how the harness sees a primitive: its parameter map from [0, 1]^k (the
 // oracle's search space), point_at, the parameter-domain test, and the rigid motion.
 
@@ -504,6 +506,11 @@ void check_pairs(Gen&& gen, const Options<T>& opt = {}) {
         SB::in_window(b, r.param_b, opt.window)) {
       const T agree = opt.agree > T(0) ? opt.agree : (std::is_same_v<T, float> ? T(2e-3) : T(1e-5));
       EXPECT_NEAR(std::sqrt(o), r.distance, agree * s) << "oracle did not converge to the answer";
+    }
+    // 7. the squared-distance-only query
+    if constexpr (requires { locus::sqr_distance(a, b); }) {
+      EXPECT_EQ(locus::sqr_distance(a, b), r.sqr_distance);
+      EXPECT_EQ(locus::sqr_distance(b, a), r.sqr_distance);
     }
     // 6. rigid motions leave the distance unchanged
     {

@@ -5,6 +5,7 @@
 #include <locus/distance/line_line.hpp>
 #include <locus/distance/line_ray.hpp>
 #include <locus/distance/line_segment.hpp>
+#include <locus/distance/point_segment.hpp>
 #include <locus/distance/ray_ray.hpp>
 #include <locus/distance/ray_segment.hpp>
 #include <locus/distance/segment_segment.hpp>
@@ -113,6 +114,10 @@ void run_pair(MakeA make_a, MakeB make_b) {
     // The closest points are rounded: the squared distance is within k eps scale^2.
     const T scale = std::max({T(8), max_abs(r.closest[0]), max_abs(r.closest[1])});
     EXPECT_NEAR(double(r.sqr_distance), exact, double(tol<T>(64, scale * scale))) << "case " << n;
+    if constexpr (requires { sqr_distance(a, b); }) {
+      EXPECT_EQ(sqr_distance(a, b), r.sqr_distance) << "case " << n;
+      EXPECT_EQ(sqr_distance(b, a), r.sqr_distance) << "case " << n;
+    }
   }
 }
 
@@ -358,6 +363,79 @@ TYPED_TEST(LinearLinearTest, NearParallelRayAndLineAreContinuous) {
                     ex::sqr_linear_linear(qb, ex::line(line.origin, line.direction)).get_d(),
                     tol<T>(16))
             << "k = " << k;
+      }
+    }
+  }
+}
+
+// Two segments in either order give bit-identical, swapped answers (no canonical argument order
+// on the fast path: its arithmetic is mirrored exactly), over the whole mixed distribution:
+// generic, nearly parallel, parallel, crossing, zero-length; sqr_distance likewise.
+TYPED_TEST(LinearLinearTest, SegmentPairSwapIsBitIdentical) {
+  using T = TypeParam;
+  Rng rng(locus_test::test_seed() + 21);
+  SCOPED_TRACE(rng.trace());
+  for (int n = 0; n < 2000; ++n) {
+    const auto p = random_linear_pair<T, 3>(rng, T(4));
+    const Segment3<T> a = as_segment<T, 3>(p.first), b = as_segment<T, 3>(p.second);
+    const auto r = distance(a, b), q = distance(b, a);
+    EXPECT_EQ(r.sqr_distance, q.sqr_distance) << "case " << n;
+    EXPECT_EQ(r.distance, q.distance) << "case " << n;
+    EXPECT_EQ(r.closest[0], q.closest[1]) << "case " << n;
+    EXPECT_EQ(r.closest[1], q.closest[0]) << "case " << n;
+    EXPECT_EQ(r.param_a, q.param_b) << "case " << n;
+    EXPECT_EQ(r.param_b, q.param_a) << "case " << n;
+    EXPECT_EQ(r.unique, q.unique) << "case " << n;
+    EXPECT_EQ(sqr_distance(a, b), r.sqr_distance) << "case " << n;
+    EXPECT_EQ(sqr_distance(b, a), r.sqr_distance) << "case " << n;
+  }
+}
+
+// sqr_distance for a point and a segment: the full query's value exactly, the exact rational
+// distance to rounding, the endpoint for a zero-length segment.
+TYPED_TEST(LinearLinearTest, PointSegmentSqrDistance) {
+  using T = TypeParam;
+  Rng rng(locus_test::test_seed() + 22);
+  SCOPED_TRACE(rng.trace());
+  for (int n = 0; n < 400; ++n) {
+    const auto p = rng.vec<T, 3>(-8, 8);
+    Segment3<T> s{rng.vec<T, 3>(-4, 4), rng.vec<T, 3>(-4, 4)};
+    if (n % 10 == 0) s.p1 = s.p0;
+    const auto r = distance(p, s);
+    EXPECT_EQ(sqr_distance(p, s), r.sqr_distance) << "case " << n;
+    EXPECT_EQ(sqr_distance(s, p), r.sqr_distance) << "case " << n;
+    const double exact = ex::sqr_point_linear(ex::to_q(p), ex::segment(s.p0, s.p1)).get_d();
+    EXPECT_NEAR(double(sqr_distance(p, s)), exact, double(tol<T>(32, T(256)))) << "case " << n;
+  }
+  const Segment2<T> point{{T(1), T(1)}, {T(1), T(1)}};
+  EXPECT_EQ(sqr_distance(Vec2<T>{T(4), T(5)}, point), T(25));
+  EXPECT_EQ(sqr_distance(Vec2<T>{T(4), T(5)}, Segment2<T>{{T(0), T(1)}, {T(8), T(1)}}), T(16));
+}
+
+// sqr_distance is NaN for a NaN or an infinity in any coordinate, segment-segment (2D and 3D)
+// and point-segment, in both argument orders.
+TYPED_TEST(LinearLinearTest, SqrDistanceNonFiniteInputGivesNaN) {
+  using T = TypeParam;
+  const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+  for (int k = 0; k < 12; ++k) {
+    for (const T x : {nan, inf, -inf}) {
+      Segment3<T> a{{T(0), T(0), T(0)}, {T(1), T(2), T(0)}};
+      Segment3<T> b{{T(3), T(0), T(1)}, {T(0), T(3), T(2)}};
+      Vec3<T>* v[4] = {&a.p0, &a.p1, &b.p0, &b.p1};
+      (*v[k / 3])[k % 3] = x;
+      EXPECT_TRUE(std::isnan(sqr_distance(a, b))) << k;
+      EXPECT_TRUE(std::isnan(sqr_distance(b, a))) << k;
+      if (k < 6) {
+        EXPECT_TRUE(std::isnan(sqr_distance(a, Vec3<T>{}))) << k;
+      }
+      if (k >= 6 && k < 9) {
+        EXPECT_TRUE(std::isnan(sqr_distance(b.p0, Segment3<T>{}))) << k;
+      }
+      if (k % 3 < 2) {
+        const auto p2 = [](const Vec3<T>& u) { return Vec2<T>{u.x, u.y}; };
+        EXPECT_TRUE(std::isnan(sqr_distance(Segment2<T>{p2(a.p0), p2(a.p1)},
+                                            Segment2<T>{p2(b.p0), p2(b.p1)})))
+            << k;
       }
     }
   }

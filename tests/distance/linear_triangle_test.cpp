@@ -152,6 +152,10 @@ void run(Make make) {
     const double exact = ex::sqr_linear_triangle(q_of(l), ex::tri_of(tri)).get_d();
     const T scale = std::max({T(16), max_abs(r.closest[0]), max_abs(r.closest[1])});
     EXPECT_NEAR(double(r.sqr_distance), exact, double(tol<T>(64, scale * scale))) << "case " << n;
+    if constexpr (requires { sqr_distance(l, tri); }) {
+      EXPECT_EQ(sqr_distance(l, tri), r.sqr_distance) << "case " << n;
+      EXPECT_EQ(sqr_distance(tri, l), r.sqr_distance) << "case " << n;
+    }
   }
 }
 
@@ -190,7 +194,9 @@ TYPED_TEST(LinearTriangleTest, SegmentMeetsTriangleExactly) {
     if (!degenerate) {
       EXPECT_EQ(r.distance == T(0), e == 0) << "case " << n << " exact " << e.get_d();
       EXPECT_EQ(r.sqr_distance == T(0), e == 0) << "case " << n;
+      EXPECT_EQ(sqr_distance(seg, tri) == T(0), e == 0) << "case " << n;
     }
+    EXPECT_EQ(sqr_distance(seg, tri), r.sqr_distance) << "case " << n;
     EXPECT_NEAR(double(r.sqr_distance), e.get_d(), double(tol<T>(64, T(64)))) << "case " << n;
     if (e == 0) {
       ++zero;
@@ -344,6 +350,12 @@ TYPED_TEST(LinearTriangleTest, DegenerateInput) {
   const auto q = distance(Line3<T>{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}}, pt);
   EXPECT_NEAR(q.sqr_distance, T(13), tol<T>(16, T(13)));
   EXPECT_NEAR(q.param_a, T(1), tol<T>(8));
+  // sqr_distance on the same degenerate input.
+  EXPECT_EQ(sqr_distance(Segment3<T>{p, p}, tri), T(9));
+  EXPECT_NEAR(sqr_distance(Segment3<T>{{T(1), T(-1), T(2)}, {T(1), T(1), T(2)}}, col), T(4),
+              tol<T>(8, T(4)));
+  EXPECT_EQ(sqr_distance(pt, Segment3<T>{{T(1), T(0), T(0)}, {T(1), T(4), T(0)}}), T(9));
+  EXPECT_EQ(sqr_distance(Segment3<T>{{T(1), T(0), T(0)}, {T(1), T(4), T(0)}}, pt), T(9));
 }
 
 TYPED_TEST(LinearTriangleTest, SwappedOverloads) {
@@ -374,4 +386,15 @@ TYPED_TEST(LinearTriangleTest, NonFiniteInputGivesNaNResult) {
   EXPECT_TRUE(dist::is_nan_result(r));
   EXPECT_TRUE(std::isnan(r.param_a) && std::isnan(r.param_b.z));
   EXPECT_TRUE(dist::is_nan_result(distance(bad, Line3<T>{{}, {T(1), T(1), T(1)}})));
+  // sqr_distance: NaN for a NaN or an infinity in any of the 15 coordinates.
+  for (int k = 0; k < 15; ++k) {
+    for (const T x : {nan, inf, -inf}) {
+      Segment3<T> s{{T(0.2), T(0.2), T(1)}, {T(0.3), T(0.1), T(2)}};
+      Triangle3<T> t = tri;
+      Vec3<T>* v[5] = {&s.p0, &s.p1, &t.v0, &t.v1, &t.v2};
+      (*v[k / 3])[k % 3] = x;
+      EXPECT_TRUE(std::isnan(sqr_distance(s, t))) << k;
+      EXPECT_TRUE(std::isnan(sqr_distance(t, s))) << k;
+    }
+  }
 }

@@ -10,6 +10,7 @@
 #include "distance/harness.hpp"
 #include "support/typed.hpp"
 
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -72,8 +73,10 @@ void harness() {
   });
 }
 
-// Exact oracle for the aligned box (sum of squared excesses in rationals), and a second
-// algorithm for the oriented box: the aligned query in the box's frame.
+// Exact oracle for the aligned box (sum of squared excesses in rationals); for the oriented box
+// the same in rationals in the box's frame (the input axes are orthonormal to rounding, so this
+// is the true distance to a few eps scale^2), and a second algorithm: the aligned query on the
+// rounded frame coordinates. sqr_distance equals the full query exactly.
 template <class T, int N>
 void oracles() {
   Rng rng(locus_test::test_seed() + 11);
@@ -90,12 +93,24 @@ void oracles() {
     }
     const auto r = distance(p, box);
     EXPECT_NEAR(double(r.sqr_distance), e.get_d(), double(tol<T>(8, S * S))) << "case " << n;
+    EXPECT_EQ(sqr_distance(p, box), r.sqr_distance) << "case " << n;
+    EXPECT_EQ(sqr_distance(box, p), r.sqr_distance) << "case " << n;
     const auto obb = random_obb<T, N>(rng, S);
     Vec<T, N> local{};
     for (int i = 0; i < N; ++i) local[i] = dot(p - obb.center, obb.axis[i]);
     const auto o = distance(p, obb);
     const auto a = distance(local, AlignedBox<T, N>{-obb.extent, obb.extent});
     EXPECT_NEAR(o.sqr_distance, a.sqr_distance, tol<T>(64, S * S)) << "case " << n;
+    mpq_class eo = 0;
+    const auto d = ex::sub(ex::to_q(p), ex::to_q(obb.center));
+    for (int i = 0; i < N; ++i) {
+      const mpq_class x = ex::dot(d, ex::to_q(obb.axis[i])), h(double(obb.extent[i]));
+      if (x < -h) eo += (x + h) * (x + h);
+      if (x > h) eo += (x - h) * (x - h);
+    }
+    EXPECT_NEAR(double(o.sqr_distance), eo.get_d(), double(tol<T>(64, S * S))) << "case " << n;
+    EXPECT_EQ(sqr_distance(p, obb), o.sqr_distance) << "case " << n;
+    EXPECT_EQ(sqr_distance(obb, p), o.sqr_distance) << "case " << n;
   }
 }
 
@@ -174,6 +189,15 @@ TYPED_TEST(PointBoxTest, FlatBoxes) {
   const Rectangle3<T> line{
       {T(0), T(0), T(0)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}}, {T(3), T(-1)}};
   EXPECT_EQ(distance(Vec3<T>{T(0), T(3), T(4)}, line).distance, T(5));
+  EXPECT_EQ(sqr_distance(Vec2<T>{T(2), T(4)}, seg), T(9));
+  EXPECT_EQ(sqr_distance(Vec2<T>{T(4), T(5)}, point), T(25));
+  EXPECT_EQ(sqr_distance(neg, Vec2<T>{T(4), T(5)}), T(25));
+  // A point inside an oriented box is at distance exactly 0 (measured in the box's frame).
+  const OrientedBox3<T> tilted{{T(0.1), T(0.2), T(0.3)},
+                               {{T(0.6), T(0.8), T(0)}, {T(-0.8), T(0.6), T(0)}, {T(0), T(0), T(1)}},
+                               {T(1), T(2), T(3)}};
+  EXPECT_EQ(distance(Vec3<T>{T(0.7), T(-0.4), T(1.1)}, tilted).distance, T(0));
+  EXPECT_EQ(sqr_distance(Vec3<T>{T(0.7), T(-0.4), T(1.1)}, tilted), T(0));
 }
 
 TYPED_TEST(PointBoxTest, NonFiniteAndEmptyInputGiveNaNResult) {
@@ -192,4 +216,29 @@ TYPED_TEST(PointBoxTest, NonFiniteAndEmptyInputGiveNaNResult) {
   const auto q = distance(Vec2<T>{}, r);
   EXPECT_TRUE(dist::is_nan_result(q));
   EXPECT_TRUE(std::isnan(q.param_b.x));
+  // sqr_distance: NaN for a NaN or an infinity anywhere, and for an empty box.
+  EXPECT_TRUE(std::isnan(sqr_distance(Vec3<T>{}, empty_box<T, 3>())));
+  EXPECT_TRUE(std::isnan(sqr_distance(AlignedBox3<T>{{T(2), T(0), T(0)}, {T(1), T(1), T(1)}},
+                                      Vec3<T>{})));
+  for (int k = 0; k < 9; ++k) {
+    for (const T x : {nan, inf, -inf}) {
+      Vec3<T> p{T(0.5), T(3), T(0.5)};
+      AlignedBox3<T> b = box;
+      Vec3<T>* v[3] = {&p, &b.min, &b.max};
+      (*v[k / 3])[k % 3] = x;
+      EXPECT_TRUE(std::isnan(sqr_distance(p, b))) << k;
+      EXPECT_TRUE(std::isnan(sqr_distance(b, p))) << k;
+    }
+  }
+  for (int k = 0; k < 18; ++k) {
+    for (const T x : {nan, inf, -inf}) {
+      Vec3<T> p{T(0.5), T(3), T(0.5)};
+      OrientedBox3<T> o = oriented_box(box);
+      Vec3<T>* v[6] = {&p, &o.center, &o.extent, &o.axis[0], &o.axis[1], &o.axis[2]};
+      (*v[k / 3])[k % 3] = x;
+      EXPECT_TRUE(std::isnan(sqr_distance(p, o))) << k;
+      EXPECT_TRUE(std::isnan(sqr_distance(o, p))) << k;
+      EXPECT_TRUE(dist::is_nan_result(distance(p, o))) << k;
+    }
+  }
 }

@@ -7,6 +7,7 @@
 #include "distance/harness.hpp"
 #include "support/typed.hpp"
 
+#include <cmath>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -48,10 +49,12 @@ void harness() {
 
 // Exact oracle: the squared distance to a triangle is the minimum of (a) the squared distance
 // to its plane when the projection is inside and (b) the three exact point-segment distances.
-// Here (a) is checked in 2D (distance 0 inside, decided by exact orient2d) and the boundary part
-// exactly in both dimensions: for a point outside, the distance equals the nearest edge's.
+// Here (a) is checked in 2D (distance 0 inside, decided by exact orient2d) and in 3D (the
+// projection solved in rationals: inside when its s, t >= 0, s + t <= 1, then the squared
+// distance is |p - foot|^2), and the boundary part exactly in both dimensions. sqr_distance is
+// checked against the full query (exactly) and so against the same oracle.
 template <class T, int N>
-void exact_boundary() {
+void exact_oracle() {
   Rng rng(locus_test::test_seed() + 7);
   SCOPED_TRACE(rng.trace());
   const T S = 10;
@@ -71,10 +74,22 @@ void exact_boundary() {
       const bool nonpos = s0 != Sign::positive && s1 != Sign::positive && s2 != Sign::positive;
       if ((nonneg || nonpos) && !is_degenerate(tri)) e = 0;
     } else {
-      if (r.param_b.x > T(0) && r.param_b.y > T(0) && r.param_b.z > T(0)) continue;  // interior
+      const auto q0 = ex::to_q(tri.v0), e0 = ex::sub(ex::to_q(tri.v1), q0),
+                 e1 = ex::sub(ex::to_q(tri.v2), q0), w = ex::sub(q0, qp);
+      const mpq_class a = ex::dot(e0, e0), b = ex::dot(e0, e1), c = ex::dot(e1, e1),
+                      dd = ex::dot(e0, w), ee = ex::dot(e1, w), det = a * c - b * b;
+      if (det != 0) {
+        const mpq_class s = (b * ee - c * dd) / det, t = (b * dd - a * ee) / det;
+        if (s >= 0 && t >= 0 && s + t <= 1) {
+          const auto foot = ex::sub(ex::axpy(ex::axpy(q0, s, e0), t, e1), qp);
+          e = ex::dot(foot, foot);
+        }
+      }
     }
     EXPECT_NEAR(double(r.sqr_distance), e.get_d(), double(tol<T>(64, S * S * T(4))))
         << "case " << n;
+    EXPECT_EQ(sqr_distance(p, tri), r.sqr_distance) << "case " << n;
+    EXPECT_EQ(sqr_distance(tri, p), r.sqr_distance) << "case " << n;
   }
 }
 
@@ -82,8 +97,8 @@ void exact_boundary() {
 
 TYPED_TEST(PointTriangleTest, Harness2D) { harness<TypeParam, 2>(); }
 TYPED_TEST(PointTriangleTest, Harness3D) { harness<TypeParam, 3>(); }
-TYPED_TEST(PointTriangleTest, ExactOracle2D) { exact_boundary<TypeParam, 2>(); }
-TYPED_TEST(PointTriangleTest, ExactBoundaryOracle3D) { exact_boundary<TypeParam, 3>(); }
+TYPED_TEST(PointTriangleTest, ExactOracle2D) { exact_oracle<TypeParam, 2>(); }
+TYPED_TEST(PointTriangleTest, ExactOracle3D) { exact_oracle<TypeParam, 3>(); }
 
 // Figure 6.6: the seven regions of the (s, t) plane around the triangle (0,0), (1,0), (0,1):
 // region 0 inside; 1 beyond edge v1 v2; 3 left of v0 v2; 5 below v0 v1; 2, 4, 6 the vertex
@@ -167,6 +182,55 @@ TYPED_TEST(PointTriangleTest, NonFiniteInputGivesNaNResult) {
   EXPECT_TRUE(dist::is_nan_result(r));
   EXPECT_TRUE(std::isnan(r.param_b.x) && std::isnan(r.closest[1].y));
   EXPECT_TRUE(dist::is_nan_result(distance(bad, Vec3<T>{})));
+  // sqr_distance: NaN for a NaN or an infinity in any coordinate of either argument, 2D and 3D
+  // (an infinite point next to a well-shaped triangle would otherwise clamp to a vertex).
+  for (int k = 0; k < 12; ++k) {
+    for (const T x : {nan, inf, -inf}) {
+      Vec3<T> q{T(0.2), T(0.3), T(1)};
+      Triangle3<T> t3 = tri;
+      Vec3<T>* v[4] = {&q, &t3.v0, &t3.v1, &t3.v2};
+      (*v[k / 3])[k % 3] = x;
+      EXPECT_TRUE(std::isnan(sqr_distance(q, t3))) << k;
+      EXPECT_TRUE(std::isnan(sqr_distance(t3, q))) << k;
+      if (k % 3 < 2) {
+        const auto p2 = [](const Vec3<T>& u) { return Vec2<T>{u.x, u.y}; };
+        EXPECT_TRUE(std::isnan(sqr_distance(p2(q), Triangle2<T>{p2(t3.v0), p2(t3.v1), p2(t3.v2)})))
+            << k;
+      }
+    }
+  }
+}
+
+// sqr_distance on the degenerate and figure cases, against the exact values.
+TYPED_TEST(PointTriangleTest, SqrDistanceDegenerateAndRegions) {
+  using T = TypeParam;
+  const Triangle3<T> collinear{{T(0), T(0), T(0)}, {T(2), T(2), T(2)}, {T(1), T(1), T(1)}};
+  EXPECT_EQ(sqr_distance(Vec3<T>{T(4), T(4), T(4)}, collinear), T(12));
+  EXPECT_NEAR(sqr_distance(Vec3<T>{T(1), T(1), T(-2)}, collinear), T(6), tol<T>(16, T(6)));
+  const Triangle3<T> point{{T(1), T(1), T(1)}, {T(1), T(1), T(1)}, {T(1), T(1), T(1)}};
+  EXPECT_EQ(sqr_distance(Vec3<T>{T(4), T(5), T(1)}, point), T(25));
+  const Triangle3<T> two{{T(1), T(1), T(1)}, {T(1), T(1), T(1)}, {T(4), T(1), T(1)}};
+  EXPECT_EQ(sqr_distance(Vec3<T>{T(2), T(4), T(5)}, two), T(25));
+  // The seven regions of figure 6.6 lifted to z = 2, the point 3 above or below: every region
+  // of the branch-free path, with the exact squared distances.
+  const Triangle3<T> tri{{T(0), T(0), T(2)}, {T(4), T(0), T(2)}, {T(0), T(4), T(2)}};
+  struct Case {
+    T x, y, sqr_in_plane;
+  };
+  const Case cases[] = {{T(1), T(1), T(0)},  {T(3), T(3), T(2)},  {T(-1), T(6), T(5)},
+                        {T(-2), T(1), T(4)}, {T(-1), T(-2), T(5)}, {T(3), T(-5), T(25)},
+                        {T(6), T(-1), T(5)}, {T(-3), T(9), T(34)}, {T(9), T(-3), T(34)}};
+  for (const Case& c : cases) {
+    for (const T z : {T(5), T(-1)}) {
+      const Vec3<T> p{c.x, c.y, z};
+      EXPECT_NEAR(sqr_distance(p, tri), c.sqr_in_plane + T(9), tol<T>(16, T(50)))
+          << c.x << " " << c.y << " " << z;
+      EXPECT_EQ(sqr_distance(p, tri), distance(p, tri).sqr_distance);
+    }
+  }
+  const Triangle2<T> flat{{T(0), T(0)}, {T(4), T(0)}, {T(0), T(4)}};
+  EXPECT_EQ(sqr_distance(Vec2<T>{T(1), T(1)}, flat), T(0));
+  EXPECT_EQ(sqr_distance(Vec2<T>{T(-3), T(-4)}, flat), T(25));
 }
 
 // A needle triangle in 3D (angle ~2e-6 at v0 in double, 6e-3 in float): the plane solve is

@@ -9,36 +9,78 @@
 // center + sum s[i] extent[i] axis[i]. distance(box, p) is the swapped result. The box is solid.
 //
 // Method: in the box's frame the query is the aligned one: x[i] = (p - center) . axis[i] is
-// clamped to [-extent[i], extent[i]]; s[i] = clamped / extent[i]. The squared distance is taken
-// between p and the reconstructed closest point (so |closest[0] - closest[1]| = distance).
+// clamped to [-extent[i], extent[i]]; s[i] = clamped / extent[i]. The squared distance is the sum
+// of the squared excesses x[i] - clamped[i], measured in the frame: a point inside has distance
+// exactly 0 and is its own closest point, and the error is a few ulps of |p - center| (not of
+// |center|). closest[1] = p - sum excess[i] axis[i] maps the excess back, so |closest[0] -
+// closest[1]| = distance to a few ulps of the distance itself; it equals point_at(box, s) up to
+// the rounding of either (a few eps * (|center| + |extent|)).
 //
 // Preconditions and degenerate input: the axes are unit and mutually orthogonal (the box's
 // contract, not checked). A zero extent flattens the box along that axis (s[i] = 0); a negative
 // extent is treated as 0. NaN or infinite values give non_finite_distance() (result.hpp).
-// unique is always true. Cost: O(N^2).
+// unique is always true. Cost: O(N^2), no branch on the data.
+//
+// sqr_distance(p, box) (either order) returns distance(p, box).sqr_distance, bit for bit, without
+// the closest point, the parameters or the square root: N dot products, N min/max pairs, no
+// division, branch-free; NaN for non-finite input.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/distance/detail/branchless.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/primitives/oriented_box.hpp>
 
+#include <cmath>
+#include <limits>
+
 namespace locus {
+
+namespace detail {
+
+/// In the box's frame: the clamped coordinates and the squared distance (the sum of the squared
+/// excesses over the slabs). Finite input assumed.
+template <class T, int N>
+struct PointOrientedBoxCore {
+  Vec<T, N> clamped;  ///< x[i] clamped to [-extent[i], extent[i]] (negative extents as 0)
+  Vec<T, N> excess;   ///< x[i] - clamped[i]
+  Vec<T, N> extent;   ///< max(extent[i], 0)
+  T sqr;              ///< sqr_length(excess)
+};
+template <class T, int N>
+[[nodiscard]] constexpr PointOrientedBoxCore<T, N> point_oriented_box(
+    const Vec<T, N>& p, const OrientedBox<T, N>& box) noexcept {
+  PointOrientedBoxCore<T, N> r{};
+  const Vec<T, N> d = p - box.center;
+  for (int i = 0; i < N; ++i) {
+    const T x = dot(d, box.axis[i]);
+    const T e = select(box.extent[i] > T(0), box.extent[i], T(0));
+    const T ne = -e;
+    const T above = x < ne ? ne : x;
+    r.clamped[i] = e < above ? e : above;
+    r.extent[i] = e;
+    r.excess[i] = x - r.clamped[i];
+  }
+  r.sqr = sqr_length(r.excess);
+  return r;
+}
+
+}  // namespace detail
 
 /// Distance from p to the solid oriented box; param_b = s in [-1, 1]^N.
 template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, NoParam, Vec<T, N>> distance(
     const Vec<T, N>& p, const OrientedBox<T, N>& box) noexcept {
-  bool finite = is_finite(p) && is_finite(box.center) && is_finite(box.extent);
-  for (int i = 0; i < N; ++i) finite = finite && is_finite(box.axis[i]);
-  if (!finite) return non_finite_distance<T, N, NoParam, Vec<T, N>>();
-  const Vec<T, N> d = p - box.center;
-  Vec<T, N> s{};
+  T fz = finite_zero(p, box.center, box.extent);
+  for (int i = 0; i < N; ++i) fz += finite_zero(box.axis[i]);
+  if (!(fz == T(0))) return non_finite_distance<T, N, NoParam, Vec<T, N>>();
+  const detail::PointOrientedBoxCore<T, N> r = detail::point_oriented_box(p, box);
+  Vec<T, N> s{}, c = p;
   for (int i = 0; i < N; ++i) {
-    const T e = box.extent[i];
-    if (!(e > T(0))) continue;
-    s[i] = clamp(dot(d, box.axis[i]) / e, T(-1), T(1));
+    s[i] = detail::select(r.extent[i] > T(0), r.clamped[i] / r.extent[i], T(0));
+    c -= r.excess[i] * box.axis[i];
   }
-  return detail::make_distance(p, point_at(box, s), NoParam{}, s, true);
+  return {length(r.excess), r.sqr, {p, c}, NoParam{}, s, true};
 }
 
 /// The swapped query: closest[0] and param_a belong to the box.
@@ -46,6 +88,22 @@ template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, Vec<T, N>, NoParam> distance(const OrientedBox<T, N>& box,
                                                                  const Vec<T, N>& p) noexcept {
   return swapped(distance(p, box));
+}
+
+/// Squared distance from p to the solid oriented box: distance(p, box).sqr_distance (the same
+/// bits), with no branch, no closest point, no parameters and no square root; NaN for non-finite
+/// input.
+template <Real T, int N>
+[[nodiscard]] inline T sqr_distance(const Vec<T, N>& p, const OrientedBox<T, N>& box) noexcept {
+  T fz = finite_zero(p, box.center, box.extent);
+  for (int i = 0; i < N; ++i) fz += finite_zero(box.axis[i]);
+  return detail::point_oriented_box(p, box).sqr + fz;
+}
+
+/// sqr_distance(p, box).
+template <Real T, int N>
+[[nodiscard]] inline T sqr_distance(const OrientedBox<T, N>& box, const Vec<T, N>& p) noexcept {
+  return sqr_distance(p, box);
 }
 
 }  // namespace locus

@@ -14,6 +14,9 @@
 // Degenerate input: a zero-length segment acts as the point p0 (t = 0). NaN or infinite coordinates
 // give non_finite_distance() (distance NaN, unique false; see result.hpp). Cost: O(N), one
 // division, one square root.
+//
+// sqr_distance(p, segment) (either order) returns distance(p, segment).sqr_distance, bit for bit,
+// without the closest point, the parameter or the square root; NaN for non-finite input.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -36,6 +39,19 @@ template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, T, NoParam> distance(const Segment<T, N>& x,
                                                          const Vec<T, N>& p) noexcept {
   return swapped(distance(p, x));
+}
+
+/// Squared distance from p to the segment: distance(p, x).sqr_distance (the same bits), without
+/// the closest point, the parameter or the square root; NaN for non-finite input.
+template <Real T, int N>
+[[nodiscard]] inline T sqr_distance(const Vec<T, N>& p, const Segment<T, N>& x) noexcept {
+  return detail::point_linear_core(p, x).sqr;
+}
+
+/// sqr_distance(p, x).
+template <Real T, int N>
+[[nodiscard]] inline T sqr_distance(const Segment<T, N>& x, const Vec<T, N>& p) noexcept {
+  return sqr_distance(p, x);
 }
 
 }  // namespace locus

@@ -20,19 +20,29 @@
 // edge v0 v1 (regions 4, 5, 6), s + t > 1 the edge v1 v2 (regions 1, 2, 6); each is an exact
 // clamped point-segment projection, and the nearest of those edges wins. This covers the seven
 // regions of figure 6.6 without region-specific code, and the vertex regions come out of the clamps
-// exactly. In 3D the common case (finite input, well-shaped triangle) runs as a compact fast path
-// that performs the same operations in the same order (same results), testing the finiteness
-// of all the input with one branch; everything else goes through the general code.
+// exactly. In 3D the common case (finite input, well-shaped triangle: 16 |e0 x e1|^2 >= |e0|^2
+// |e1|^2, so the plane solution is accurate to a few ulps) runs as a branch-free fast path: when
+// the plane solution violates two constraints (a vertex region) only the edge along which moving
+// away from that vertex descends can hold the answer (both cannot when the triangle is not flat),
+// so every region is ONE clamped projection, and the region's edge and parameters are chosen
+// with selects (detail/branchless.hpp), not branches: on mixed input the region is
+// unpredictable. Its finiteness test comes free with its range tests. Everything else goes
+// through the general code.
 //
 // Degenerate input: when the triangle is (nearly) flat, |e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2 (the
 // plane solve is ill-conditioned), the answer is the nearest of the three edges, each handled as a
 // point-segment query (plus the plane solution when it still lands inside), so collinear and
 // coincident vertices give the distance to the segment or point they span. NaN or infinite
 // coordinates give non_finite_distance() (result.hpp). unique is always true. Cost: O(N), one 2x2
-// solve, one to three point-segment projections.
+// solve, one to three point-segment projections (one, with two divisions, on the fast path).
+//
+// sqr_distance(p, tri) (either order) returns distance(p, tri).sqr_distance, bit for bit (the
+// same core), without the result's closest points, the barycentric coordinates or the square
+// root; NaN for non-finite input.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/distance/detail/branchless.hpp>
 #include <locus/distance/detail/linear.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/primitives/segment.hpp>
@@ -44,21 +54,24 @@ namespace locus {
 
 namespace detail {
 
-/// The sum of x - x over the coordinates: exactly 0 when every coordinate is finite, NaN
-/// otherwise; lets a fast path test all its input with one branch.
+/// What a point-triangle query finds; distance() and sqr_distance() both read it. finite is
+/// false (and sqr NaN) exactly when some input coordinate is NaN or infinite.
 template <class T, int N>
-[[nodiscard]] constexpr T finite_probe(const Vec<T, N>& v) noexcept {
-  T z = T(0);
-  for (int i = 0; i < N; ++i) z += v[i] - v[i];
-  return z;
-}
+struct PointTriangleCore {
+  Vec3<T> bary;       ///< barycentric (u, v, w) of the closest point
+  Vec<T, N> closest;  ///< point_at_barycentric(tri, bary)
+  T sqr;              ///< sqr_length(closest - p)
+  bool finite;
+};
 
 /// The general point-triangle query (every case; see the header comment).
 template <class T, int N>
-[[nodiscard]] inline Distance<T, N, NoParam, Vec3<T>> point_triangle_general(
+[[nodiscard]] inline PointTriangleCore<T, N> point_triangle_general(
     const Vec<T, N>& p, const Triangle<T, N>& tri) noexcept {
-  if (!is_finite(p) || !is_finite(tri.v0) || !is_finite(tri.v1) || !is_finite(tri.v2))
-    return non_finite_distance<T, N, NoParam, Vec3<T>>();
+  if (!all_finite(p, tri.v0, tri.v1, tri.v2)) {
+    constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+    return {splat<T, 3>(nan), splat<T, N>(nan), nan, false};
+  }
   const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v0, w = tri.v0 - p;
   const T a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), d = dot(e0, w), e = dot(e1, w);
   const T det = detail::sqr_cross_norm(e0, e1);  // a c - b^2 without cancellation
@@ -84,10 +97,7 @@ template <class T, int N>
     const T total = a0 + a1 + a2;
     const bool ccw = a0 >= T(0) && a1 >= T(0) && a2 >= T(0);
     const bool cw = a0 <= T(0) && a1 <= T(0) && a2 <= T(0);
-    if ((ccw || cw) && total != T(0)) {
-      const Vec3<T> bary{a0 / total, a1 / total, a2 / total};
-      return {T(0), T(0), {p, p}, NoParam{}, bary, true};
-    }
+    if ((ccw || cw) && total != T(0)) return {{a0 / total, a1 / total, a2 / total}, p, T(0), true};
   }
   if (det > T(0)) {
     T s = (b * e - c * d) / det, t = (b * d - a * e) / det;
@@ -104,7 +114,8 @@ template <class T, int N>
     if (det > T(64) * eps_v<T> * a * c) {
       if (inside) {
         const Vec3<T> bary{T(1) - s - t, s, t};
-        return detail::make_distance(p, point_at_barycentric(tri, bary), NoParam{}, bary, true);
+        const Vec<T, N> x = point_at_barycentric(tri, bary);
+        return {bary, x, sqr_length(x - p), true};
       }
       edge02 = s < T(0);
       edge01 = t < T(0);
@@ -125,7 +136,55 @@ template <class T, int N>
   if (edge01) edge(tri.v0, tri.v1, 0, 1);
   if (edge02) edge(tri.v0, tri.v2, 0, 2);
   if (edge12) edge(tri.v1, tri.v2, 1, 2);
-  return detail::make_distance(p, point_at_barycentric(tri, best_bary), NoParam{}, best_bary, true);
+  return {best_bary, point_at_barycentric(tri, best_bary), best, true};
+}
+
+/// The point-triangle query behind distance() and sqr_distance(): the branch-free fast path for
+/// finite input and a well-shaped triangle in 3D (see the header comment), the general code for
+/// everything else.
+template <class T, int N>
+[[nodiscard]] inline PointTriangleCore<T, N> point_triangle(const Vec<T, N>& p,
+                                                            const Triangle<T, N>& tri) noexcept {
+  if constexpr (N != 2) {
+    const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v0, e2 = tri.v2 - tri.v1;
+    const Vec<T, N> w0 = p - tri.v0, w1 = p - tri.v1;
+    const T a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
+    const T d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
+    const T ac = a * c, det = ac - b * b;  // no harmful cancellation when well-shaped
+    constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
+    // Well-shaped (16 |e0 x e1|^2 >= |e0|^2 |e1|^2: Cramer's rule is accurate to a few ulps),
+    // no squares out of range, and finite input: e0, e1, e2 are finite when a, c, f are, and
+    // then d, e, g are finite exactly when p is (a NaN or an infinity in w0 reaches every
+    // product).
+    if (T(16) * det >= ac && a >= lo && c >= lo && f >= lo && ac <= hi && f <= hi &&
+        (d - d) + (e - e) + (g - g) == T(0)) {
+      const T sn = c * d - b * e, tn = a * e - b * d;  // det * (s, t) of the plane solution
+      Vec3<T> bary;
+      if (sn >= T(0) && tn >= T(0) && sn + tn <= det) {
+        const T s = sn / det, t = tn / det;
+        bary = {T(1) - s - t, s, t};
+      } else {
+        // Outside: the nearest of the three edges' clamped projections (the nearest of the one
+        // or two whose constraints the plane solution violates, by KKT; evaluating all three
+        // costs less than choosing). Branch-free: the region is unpredictable on mixed input.
+        // The bounds are computed (0 = a - a for finite a) so that each clamp compiles to a max
+        // and a min instruction, and the choices are single-comparison selects (blends).
+        const T zero = a - a, one = zero + T(1);
+        const T l0 = clamp_minmax(d / a, zero, one), l1 = clamp_minmax(e / c, zero, one);
+        const T l2 = clamp_minmax(g / f, zero, one);
+        const T q0 = sqr_length(w0 - l0 * e0), q1 = sqr_length(w0 - l1 * e1);
+        const T q2 = sqr_length(w1 - l2 * e2);
+        // Ties keep the first in the order v0 v1, v0 v2, v1 v2.
+        const T q01 = q1 < q0 ? q1 : q0;
+        const T u = q1 < q0 ? T(1) - l1 : T(1) - l0, v = q1 < q0 ? zero : l0;
+        const T w = q1 < q0 ? l1 : zero;
+        bary = {q2 < q01 ? zero : u, q2 < q01 ? T(1) - l2 : v, q2 < q01 ? l2 : w};
+      }
+      const Vec<T, N> x = point_at_barycentric(tri, bary);
+      return {bary, x, sqr_length(x - p), true};
+    }
+  }
+  return detail::point_triangle_general(p, tri);
 }
 
 }  // namespace detail
@@ -134,49 +193,9 @@ template <class T, int N>
 template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, NoParam, Vec3<T>> distance(const Vec<T, N>& p,
                                                                const Triangle<T, N>& tri) noexcept {
-  if constexpr (N != 2) {
-    // Fast path for finite input and a well-shaped triangle (16 |e0 x e1|^2 >= |e0|^2 |e1|^2,
-    // no refinement, well conditioned), the common case: the same operations, in the same
-    // order, as the general code takes for it (so the same bits), with one branch for the
-    // finiteness of the input and no bookkeeping. Edges v0 v1 and v0 v2 reuse the dot products:
-    // dot(p - v0, e) = -dot(e, v0 - p) exactly.
-    const T probe = detail::finite_probe(p) + detail::finite_probe(tri.v0) +
-                    detail::finite_probe(tri.v1) + detail::finite_probe(tri.v2);
-    if (probe == T(0)) {
-      const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v0, w = tri.v0 - p;
-      const T a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), d = dot(e0, w), e = dot(e1, w);
-      const T det = detail::sqr_cross_norm(e0, e1);
-      const T ac = a * c;
-      constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
-      if (T(16) * det >= ac && a >= lo && c >= lo && ac <= hi) {
-        const T s = (b * e - c * d) / det, t = (b * d - a * e) / det;
-        Vec3<T> bary{T(1) - s - t, s, t};
-        if (!(s >= T(0) && t >= T(0) && s + t <= T(1))) {
-          // KKT: only the edges whose constraints the plane solution violates; ties keep the
-          // first in the order v0 v1, v0 v2, v1 v2.
-          T best = T(-1);  // none yet (q may overflow to inf: the first edge is still taken)
-          const auto edge = [&](const Vec3<T>& cand) {
-            const T q = sqr_length(point_at_barycentric(tri, cand) - p);
-            if (best < T(0) || q < best) best = q, bary = cand;
-          };
-          if (t < T(0)) {
-            const T l = clamp(-d / a, T(0), T(1));
-            edge(Vec3<T>{T(1) - l, l, T(0)});
-          }
-          if (s < T(0)) {
-            const T l = clamp(-e / c, T(0), T(1));
-            edge(Vec3<T>{T(1) - l, T(0), l});
-          }
-          if (s + t > T(1)) {
-            const T l = detail::closest_param(detail::view(Segment<T, N>{tri.v1, tri.v2}), p);
-            edge(Vec3<T>{T(0), T(1) - l, l});
-          }
-        }
-        return detail::make_distance(p, point_at_barycentric(tri, bary), NoParam{}, bary, true);
-      }
-    }
-  }
-  return detail::point_triangle_general(p, tri);
+  const detail::PointTriangleCore<T, N> r = detail::point_triangle(p, tri);
+  if (!r.finite) return non_finite_distance<T, N, NoParam, Vec3<T>>();
+  return detail::make_distance(p, r.closest, NoParam{}, r.bary, true);
 }
 
 /// The swapped query: closest[0] and param_a (barycentric) belong to the triangle.
@@ -184,6 +203,20 @@ template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, Vec3<T>, NoParam> distance(const Triangle<T, N>& tri,
                                                                const Vec<T, N>& p) noexcept {
   return swapped(distance(p, tri));
+}
+
+/// Squared distance from p to the filled triangle: distance(p, tri).sqr_distance (the same
+/// bits), without the closest points, the parameters or the square root; NaN for non-finite
+/// input.
+template <Real T, int N>
+[[nodiscard]] inline T sqr_distance(const Vec<T, N>& p, const Triangle<T, N>& tri) noexcept {
+  return detail::point_triangle(p, tri).sqr;
+}
+
+/// sqr_distance(p, tri).
+template <Real T, int N>
+[[nodiscard]] inline T sqr_distance(const Triangle<T, N>& tri, const Vec<T, N>& p) noexcept {
+  return sqr_distance(p, tri);
 }
 
 }  // namespace locus

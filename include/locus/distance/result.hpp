@@ -28,6 +28,14 @@
 // are not errors: the object degenerates (a zero-length segment acts as its point), as each
 // header documents. Finite input large enough to overflow the squared distance gives inf.
 //
+// Squared distance only: sqr_distance(a, b) (both argument orders, float and double, noexcept,
+// [[nodiscard]]) returns just distance(a, b).sqr_distance, for the pairs that offer it (point-
+// segment, segment-segment, point-triangle in 2D and 3D, point-aligned box, point-oriented box,
+// segment-triangle; see each header). It runs the same computation as distance() (one shared
+// core, so the value is the same bits) but skips the closest points' result, the parameters and
+// the square root; non-finite input gives NaN (no other error value). Use it to compare or
+// threshold distances, as CGAL's squared_distance is used.
+//
 // Cost: the result is an aggregate of at most 2 N + 8 scalars; no allocation.
 
 #include <locus/core/scalar.hpp>

@@ -9,17 +9,26 @@
 //   t in [0, 1], point_at(seg, t) = (1 - t) p0 + t p1.
 // Method (detail/linear.hpp): the convex quadratic |x(s) - y(t)|^2 is minimised over the
 // parameter domain; when the directions are well separated and the unconstrained minimiser lies
-// in the domain it is the answer, otherwise the minimum over the in-domain interior point and
-// the exact point-to-component solutions on the domain's finite edges is taken. The answer is
-// therefore continuous as the input passes through (nearly) parallel configurations and is never
-// a "parallel" guess: its squared distance is within a few eps * scale^2 of the exact one.
+// in the domain it is the answer. When it lies outside and the directions are not nearly
+// parallel, the answer is ONE exact clamped point-segment projection on an edge of the domain
+// (chosen by the violated constraints and, at a corner, by the sign of the derivative; computed
+// with selects, no data-dependent branch: segment_pair_fast). Otherwise (nearly parallel, or
+// degenerate) the minimum over the in-domain interior point and the exact point-to-component
+// solutions on the domain's finite edges is taken. The answer is therefore continuous as the
+// input passes through (nearly) parallel configurations and is never a "parallel" guess: its
+// squared distance is within a few eps * scale^2 of the exact one. distance(y, x) is bit for bit
+// the swap of distance(x, y).
 // unique = false when the directions are parallel (sin^2 angle <= 64 eps^2) and the parameter
 // ranges overlap in an interval (parallel lines, overlapping parallel segments): one pair of the
 // infinitely many is returned.
 //
 // Degenerate input: a zero-length segment acts as the point p0 (t = 0); the query then reduces to
 // a point-linear distance. NaN or infinite coordinates give non_finite_distance() (result.hpp).
-// Cost: O(N), at most six point-linear projections in the nearly parallel case.
+// Cost: O(N); two divisions, one square root in the common case; at most six point-linear
+// projections in the nearly parallel case.
+//
+// sqr_distance(x, y) returns distance(x, y).sqr_distance, bit for bit, without the closest
+// points, the parameters or the square root; NaN for non-finite input. Symmetric like distance.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -34,6 +43,13 @@ template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, T, T> distance(const Segment<T, N>& x,
                                                    const Segment<T, N>& y) noexcept {
   return detail::linear_linear_distance<T, N>(x, y);
+}
+
+/// Squared distance between two segments: distance(x, y).sqr_distance (the same bits), without
+/// the closest points, the parameters or the square root; NaN for non-finite input.
+template <Real T, int N>
+[[nodiscard]] inline T sqr_distance(const Segment<T, N>& x, const Segment<T, N>& y) noexcept {
+  return detail::segment_pair(x, y).sqr;
 }
 
 }  // namespace locus

@@ -36,9 +36,13 @@
 // (nearly) flat triangle (|e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2: collinear or coincident vertices)
 // acts as the union of its three edges, so the answer is the distance to the segment or point
 // it spans, continuously. NaN or infinite coordinates give non_finite_distance() (result.hpp).
-// Cost: O(1): one 3x3 solve and one to three point-triangle / linear-segment queries in the
+// Cost: O(1): one 3x3 solve and one to three point-triangle / segment-segment queries in the
 // generic case plus two to five exact orient3d signs, at most 7 sub-queries in the nearly parallel
 // case.
+//
+// sqr_distance(seg, tri) (either order) returns distance(seg, tri).sqr_distance, bit for bit
+// (exactly 0 under the same contact rule), without the closest points, the parameters or the
+// square root; NaN for non-finite input.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -62,6 +66,20 @@ template <Real T>
 [[nodiscard]] inline Distance<T, 3, Vec3<T>, T> distance(const Triangle3<T>& tri,
                                                          const Segment3<T>& seg) noexcept {
   return swapped(distance(seg, tri));
+}
+
+/// Squared distance between a segment and a solid triangle: distance(seg, tri).sqr_distance (the
+/// same bits), without the closest points, the parameters or the square root; NaN for non-finite
+/// input.
+template <Real T>
+[[nodiscard]] inline T sqr_distance(const Segment3<T>& seg, const Triangle3<T>& tri) noexcept {
+  return detail::linear_triangle_core(seg, tri).sqr;
+}
+
+/// sqr_distance(seg, tri).
+template <Real T>
+[[nodiscard]] inline T sqr_distance(const Triangle3<T>& tri, const Segment3<T>& seg) noexcept {
+  return sqr_distance(seg, tri);
 }
 
 }  // namespace locus

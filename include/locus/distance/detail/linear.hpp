@@ -39,11 +39,13 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/distance/detail/branchless.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/primitives/line.hpp>
 #include <locus/primitives/ray.hpp>
 #include <locus/primitives/segment.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -83,15 +85,15 @@ template <class T, int N>
 
 template <class T, int N>
 [[nodiscard]] constexpr bool finite_input(const Line<T, N>& l) noexcept {
-  return is_finite(l.origin) && is_finite(l.direction);
+  return all_finite(l.origin, l.direction);
 }
 template <class T, int N>
 [[nodiscard]] constexpr bool finite_input(const Ray<T, N>& r) noexcept {
-  return is_finite(r.origin) && is_finite(r.direction);
+  return all_finite(r.origin, r.direction);
 }
 template <class T, int N>
 [[nodiscard]] constexpr bool finite_input(const Segment<T, N>& s) noexcept {
-  return is_finite(s.p0) && is_finite(s.p1);
+  return all_finite(s.p0, s.p1);
 }
 
 /// Parameter of the point of `l` closest to p (exact clamp to the domain). A zero direction
@@ -230,13 +232,35 @@ template <class T, int N>
   return {bs, bt, unique};
 }
 
+/// What a point-linear query finds; distance() and sqr_distance() both read it. finite is false
+/// (and sqr NaN) exactly when some input coordinate is NaN or infinite.
+template <class T, int N>
+struct PointLinearCore {
+  T t;                ///< parameter of the closest point
+  Vec<T, N> closest;  ///< point_at(l, t)
+  T sqr;              ///< sqr_length(closest - p)
+  bool finite;
+};
+
+template <class T, int N, class L>
+[[nodiscard]] inline PointLinearCore<T, N> point_linear_core(const Vec<T, N>& p,
+                                                             const L& l) noexcept {
+  if (!(all_finite(p) && finite_input(l))) {
+    constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+    return {nan, splat<T, N>(nan), nan, false};
+  }
+  const T t = closest_param(view(l), p);
+  const Vec<T, N> x = point_at(l, t);
+  return {t, x, sqr_length(x - p), true};
+}
+
 /// distance(p, l) for a point and a line, ray or segment.
 template <class T, int N, class L>
 [[nodiscard]] inline Distance<T, N, NoParam, T> point_linear(const Vec<T, N>& p,
                                                              const L& l) noexcept {
-  if (!is_finite(p) || !finite_input(l)) return non_finite_distance<T, N, NoParam, T>();
-  const T t = closest_param(view(l), p);
-  return make_distance(p, point_at(l, t), NoParam{}, t, true);
+  const PointLinearCore<T, N> r = point_linear_core(p, l);
+  if (!r.finite) return non_finite_distance<T, N, NoParam, T>();
+  return make_distance(p, r.closest, NoParam{}, r.t, true);
 }
 
 /// Lexicographic order of the views' defining points (origin, then end or direction).
@@ -253,10 +277,94 @@ template <class L>
   return lex_less(va.bounded_hi ? va.end : va.dir, vb.bounded_hi ? vb.end : vb.dir);
 }
 
+/// What a linear-linear query finds; distance() and sqr_distance() both read it. finite is false
+/// (and everything NaN) exactly when some input coordinate is NaN or infinite.
+template <class T, int N>
+struct LinearPairCore {
+  T s, t;                     ///< parameters on the first and the second component
+  std::array<Vec<T, N>, 2> closest;  ///< point_at(first, s), point_at(second, t)
+  T sqr;                      ///< sqr_length(closest[0] - closest[1])
+  bool unique;
+  bool finite;
+};
+
+/// The fast path for two segments: finite input, squares in range, and directions that are not
+/// nearly parallel (|dA x dB|^2 > 64 eps |dA|^2 |dB|^2), unless the unconstrained minimiser lies
+/// in the domain at an angle below ~14 degrees (that case needs linear_linear's refinement).
+/// Returns false when it does not apply. The minimum of the convex R(s, t) is the unconstrained
+/// minimiser (Cramer's rule) when it lies in [0, 1]^2. Otherwise (KKT) it lies on an edge of the
+/// domain whose constraint the minimiser violates: the one edge when it violates one; at a corner
+/// region (two violated) the edge along which moving away from the corner descends (both cannot
+/// descend when |dA x dB| > 0, as in point_triangle.hpp; when neither does, or rounding says both,
+/// the corner itself). So every case is ONE exact clamped 1D projection, chosen with selects: the
+/// region is unpredictable on mixed input, and a mispredicted branch costs more than the whole
+/// query. Each operation is mirrored exactly under swapping the arguments ((a, b, c, d, e) ->
+/// (c, b, a, -e, -d) and the two Cramer numerators trade places without rounding differences),
+/// so the result is bit for bit the swap without a canonical argument order.
+template <class T, int N>
+[[nodiscard]] inline bool segment_pair_fast(const Segment<T, N>& x, const Segment<T, N>& y,
+                                            LinearPairCore<T, N>& out) noexcept {
+  const Vec<T, N> da = x.p1 - x.p0, db = y.p1 - y.p0, r = x.p0 - y.p0;
+  const T a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
+  const T D = sqr_cross_norm(da, db), ac = a * c;
+  const T sn = b * e - c * d, tn = a * e - b * d;  // D * (s, t) of the unconstrained minimiser
+  const bool sl = sn < T(0), sh = sn > D, tl = tn < T(0), th = tn > D;
+  const bool s_out = sl | sh, t_out = tl | th;
+  constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
+  // da, db are finite when a, c are; then d, e are finite exactly when r (x.p0, y.p0) is.
+  if (!(a >= lo && c >= lo && ac <= hi && (d - d) + (e - e) == T(0) &&
+        D > T(64) * eps_v<T> * ac && (s_out | t_out | (T(16) * D >= ac))))
+    return false;
+  const T sc = select(sh, T(1), T(0)), tc = select(th, T(1), T(0));  // the violated bounds
+  // Derivatives of R / 2 along s and t at (sc, tc), and whether moving into the domain along
+  // each descends.
+  const T gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
+  const bool ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
+  const bool dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
+  const bool move_t = s_out & ((!t_out) | (dt & (!ds)));  // s = sc, t projected
+  const bool move_s = t_out & ((!s_out) | (ds & (!dt)));  // t = tc, s projected
+  const bool pin_s = s_out & (!move_s), pin_t = t_out & (!move_t);
+  const T qs = select(move_s, b * tc - d, sn) / select(move_s, a, D);  // in [0, 1] if inside
+  const T qt = select(move_t, b * sc + e, tn) / select(move_t, c, D);
+  const T zero = a - a, one = zero + T(1);  // computed bounds: the clamps become max/min
+  const T s = select(pin_s, sc, clamp_minmax(qs, zero, one));
+  const T t = select(pin_t, tc, clamp_minmax(qt, zero, one));
+  const Vec<T, N> pa = lerp(x.p0, x.p1, s), pb = lerp(y.p0, y.p1, t);
+  out = {s, t, {pa, pb}, sqr_length(pa - pb), true, true};
+  return true;
+}
+
+/// Two segments: the fast path, else linear_linear in the canonical argument order.
+template <class T, int N>
+[[nodiscard]] inline LinearPairCore<T, N> segment_pair(const Segment<T, N>& x,
+                                                       const Segment<T, N>& y) noexcept {
+  LinearPairCore<T, N> out{};
+  if (segment_pair_fast(x, y, out)) return out;
+  if (!(finite_input(x) && finite_input(y))) {
+    constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+    return {nan, nan, {splat<T, N>(nan), splat<T, N>(nan)}, nan, false, false};
+  }
+  // Same types: solve in a canonical order so that the swapped query gives the same bits (the
+  // candidates' rounding would otherwise depend on the order).
+  const bool swap = lex_less(y, x);
+  const Segment<T, N>& u = swap ? y : x;
+  const Segment<T, N>& v = swap ? x : y;
+  const LinLinParams<T> st = linear_linear(view(u), view(v));
+  const Vec<T, N> pu = point_at(u, st.s), pv = point_at(v, st.t);
+  const T sqr = sqr_length(pu - pv);
+  if (swap) return {st.t, st.s, {pv, pu}, sqr, st.unique, true};
+  return {st.s, st.t, {pu, pv}, sqr, st.unique, true};
+}
+
 /// distance(a, b) for two linear components.
 template <class T, int N, class LA, class LB>
 [[nodiscard]] inline Distance<T, N, T, T> linear_linear_distance(const LA& a,
                                                                  const LB& b) noexcept {
+  if constexpr (std::is_same_v<LA, Segment<T, N>> && std::is_same_v<LB, Segment<T, N>>) {
+    const LinearPairCore<T, N> r = segment_pair(a, b);
+    if (!r.finite) return non_finite_distance<T, N, T, T>();
+    return make_distance(r.closest[0], r.closest[1], r.s, r.t, r.unique);
+  }
   if (!finite_input(a) || !finite_input(b)) return non_finite_distance<T, N, T, T>();
   if constexpr (std::is_same_v<LA, LB>) {
     // Same types: solve in a canonical order so that distance(b, a) is bit for bit the swap of

@@ -12,7 +12,7 @@
 // Cramer's rule on triple products. When the crossing lies in the prism it is the answer
 // (distance 0). Otherwise the minimum lies on a facet of the prism: an end t = 0 or t = 1 of A
 // (a point-triangle or point-rectangle query) or an edge of P (a linear-segment query,
-// detail/linear.hpp). By KKT only the facets whose constraints the unconstrained minimiser
+// detail/linear.hpp; the branch-free two-segment query when A is a segment). By KKT only the facets whose constraints the unconstrained minimiser
 // violates can hold it (if none of the active constraints at the minimum were violated, the
 // segment towards the minimiser would be a feasible descent direction), so in well-conditioned
 // cases only those one to three facets are evaluated: this is the book's partition of the
@@ -50,6 +50,7 @@
 #include <locus/primitives/segment.hpp>
 #include <locus/primitives/triangle.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -142,14 +143,23 @@ template <class T>
   using P = Vec3<T>;
   BestCandidate<T, P> best;
   const auto point_candidate = [&](T t, const Vec3<T>& x) {
-    const auto r = locus::distance(x, tri);
-    best.offer(r.sqr_distance, t, r.param_b, true);
+    const PointTriangleCore<T, 3> r = point_triangle(x, tri);
+    best.offer(r.sqr, t, r.bary, true);
   };
   const Vec3<T>* v[3] = {&tri.v0, &tri.v1, &tri.v2};
   const auto edge_candidate = [&](int i, int j) {
-    const LinearView<T, 3> E = view(Segment3<T>{*v[i], *v[j]});
-    const LinLinParams<T> st = linear_linear(A, E);
+    const Segment3<T> edge{*v[i], *v[j]};
     P bary{};
+    if (A.bounded_lo && A.bounded_hi) {
+      // A segment: the two-segment query (its fast path is branch-free; detail/linear.hpp).
+      const LinearPairCore<T, 3> st = segment_pair(Segment3<T>{A.origin, A.end}, edge);
+      bary[i] = T(1) - st.t;
+      bary[j] = st.t;
+      best.offer(st.sqr, st.s, bary, st.unique);
+      return;
+    }
+    const LinearView<T, 3> E = view(edge);
+    const LinLinParams<T> st = linear_linear(A, E);
     bary[i] = T(1) - st.t;
     bary[j] = st.t;
     best.offer(sqr_length(A.at(st.s) - E.at(st.t)), st.s, bary, st.unique);
@@ -187,14 +197,14 @@ template <class T>
         // end's pair is optimal outright when moving into the component does not approach the
         // triangle: the domain is a product, so blockwise optimality is optimality.
         if (A.bounded_lo && ts < T(0)) {
-          const auto r = locus::distance(A.origin, tri);
-          best.offer(r.sqr_distance, T(0), r.param_b, true);
-          if (dot(A.dir, A.origin - r.closest[1]) >= T(0)) return {T(0), r.param_b, true};
+          const PointTriangleCore<T, 3> r = point_triangle(A.origin, tri);
+          best.offer(r.sqr, T(0), r.bary, true);
+          if (dot(A.dir, A.origin - r.closest) >= T(0)) return {T(0), r.bary, true};
         }
         if (A.bounded_hi && ts > T(1)) {
-          const auto r = locus::distance(A.end, tri);
-          best.offer(r.sqr_distance, T(1), r.param_b, true);
-          if (dot(A.dir, A.end - r.closest[1]) <= T(0)) return {T(1), r.param_b, true};
+          const PointTriangleCore<T, 3> r = point_triangle(A.end, tri);
+          best.offer(r.sqr, T(1), r.bary, true);
+          if (dot(A.dir, A.end - r.closest) <= T(0)) return {T(1), r.bary, true};
         }
         if (ss < T(0)) edge_candidate(0, 2);
         if (us < T(0)) edge_candidate(0, 1);
@@ -209,9 +219,9 @@ template <class T>
   // triangle, then that point projected back onto A and onto the triangle again.
   if (have_crossing) {
     const T t0 = A.clamp_param(tc);
-    const auto r0 = locus::distance(A.at(t0), tri);
-    best.offer(r0.sqr_distance, t0, r0.param_b, true);
-    const T t1 = closest_param(A, r0.closest[1]);
+    const PointTriangleCore<T, 3> r0 = point_triangle(A.at(t0), tri);
+    best.offer(r0.sqr, t0, r0.bary, true);
+    const T t1 = closest_param(A, r0.closest);
     point_candidate(t1, A.at(t1));
   }
   if (A.bounded_lo) point_candidate(T(0), A.origin);
@@ -239,12 +249,25 @@ template <class T>
   return {best.t, best.param, unique};
 }
 
-/// distance(l, tri) for a line, ray or segment and a solid triangle in 3D.
+/// What a linear-triangle query finds; distance() and sqr_distance() both read it. finite is
+/// false (and sqr NaN) exactly when some input coordinate is NaN or infinite.
+template <class T>
+struct LinearTriangleCore {
+  T t;                                ///< parameter on the linear component
+  Vec3<T> bary;                       ///< barycentric on the triangle
+  std::array<Vec3<T>, 2> closest;     ///< on the component, on the triangle
+  T sqr;                              ///< sqr_length(closest[0] - closest[1])
+  bool unique;
+  bool finite;
+};
+
 template <class T, class L>
-[[nodiscard]] inline Distance<T, 3, T, Vec3<T>> linear_triangle_distance(
-    const L& l, const Triangle3<T>& tri) noexcept {
-  if (!finite_input(l) || !is_finite(tri.v0) || !is_finite(tri.v1) || !is_finite(tri.v2))
-    return non_finite_distance<T, 3, T, Vec3<T>>();
+[[nodiscard]] inline LinearTriangleCore<T> linear_triangle_core(const L& l,
+                                                                const Triangle3<T>& tri) noexcept {
+  if (!(finite_input(l) && all_finite(tri.v0, tri.v1, tri.v2))) {
+    constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+    return {nan, splat<T, 3>(nan), {splat<T, 3>(nan), splat<T, 3>(nan)}, nan, false, false};
+  }
   int meets = -1;
   if constexpr (std::is_same_v<L, Segment3<T>>) meets = segment_meets_triangle(l.p0, l.p1, tri);
   const LinearPlanarParams<T, Vec3<T>> r = linear_triangle(view(l), tri, meets);
@@ -259,8 +282,17 @@ template <class T, class L>
     return ab > cd ? ab : cd;
   };
   if (meets == 1 && max_abs(on_line - on_tri) <= T(32) * eps_v<T> * scale())
-    return {T(0), T(0), {on_tri, on_tri}, r.t, r.param, r.unique};
-  return make_distance(on_line, on_tri, r.t, r.param, r.unique);
+    return {r.t, r.param, {on_tri, on_tri}, T(0), r.unique, true};
+  return {r.t, r.param, {on_line, on_tri}, sqr_length(on_line - on_tri), r.unique, true};
+}
+
+/// distance(l, tri) for a line, ray or segment and a solid triangle in 3D.
+template <class T, class L>
+[[nodiscard]] inline Distance<T, 3, T, Vec3<T>> linear_triangle_distance(
+    const L& l, const Triangle3<T>& tri) noexcept {
+  const LinearTriangleCore<T> r = linear_triangle_core(l, tri);
+  if (!r.finite) return non_finite_distance<T, 3, T, Vec3<T>>();
+  return make_distance(r.closest[0], r.closest[1], r.t, r.bary, r.unique);
 }
 
 /// Parameters (t on A, (s, t) on rect) of a closest pair of a linear component and a solid
