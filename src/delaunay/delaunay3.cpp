@@ -201,6 +201,18 @@ void brio_order(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& tm
   return (a + 0x1p52) - 0x1p52 == a;
 }
 
+// The exponent ex with 2^(ex-1) <= m < 2^ex (frexp's) for a normal m > 0, without a libm call;
+// 0 for subnormal m, which the callers' range checks reject.
+[[nodiscard]] inline int binary_exponent(double m) noexcept {
+  const int biased = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7FFu);
+  return biased == 0 ? 0 : biased - 1022;
+}
+
+// 2^k for -1022 <= k <= 1023.
+[[nodiscard]] inline double power_of_two(int k) noexcept {
+  return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
+}
+
 // orient3d for the zero-heavy perturbation: when the nine differences to d are exact integer
 // multiples of a power of two q with |difference| < 2^16 q, the double determinant (products
 // below 2^32 q^2, the sum below 2^51 q^3) is exact; otherwise the exact predicate decides.
@@ -220,10 +232,9 @@ template <class T>
       m = std::max(m, std::abs(dv[i][k]));
     }
   if (exact && m > 0.0 && std::isfinite(m)) {
-    int ex = 0;
-    std::frexp(m, &ex);
-    const double inv_q = std::ldexp(1.0, 16 - ex);
+    const int ex = binary_exponent(m);
     bool on_lattice = ex > -300 && ex < 300;
+    const double inv_q = on_lattice ? power_of_two(16 - ex) : 0.0;
     for (int i = 0; i < 3 && on_lattice; ++i)
       for (int k = 0; k < 3 && on_lattice; ++k) on_lattice = is_small_integer(dv[i][k] * inv_q);
     if (on_lattice) {
@@ -244,12 +255,11 @@ template <class T>
 // C_e = -orient3d(a, b, c, d) (raising e moves it outside) and, by antisymmetry, C_q for a
 // vertex q = orient3d of (a, b, c, d) with q replaced by e. The largest eps with a nonzero
 // cofactor decides.
+// order[] = 0 .. 4 sorted so that p[order[0]] is the lexicographically largest (insertion
+// sort: five points).
 template <class T>
-LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
-                                           const Vec3<T>& d, const Vec3<T>& e) noexcept {
-  const Vec3<T>* p[5] = {&a, &b, &c, &d, &e};
-  int order[5] = {0, 1, 2, 3, 4};
-  // Insertion sort, lexicographically largest first.
+void lexicographic_descending(const Vec3<T>* const p[5], int order[5]) noexcept {
+  for (int i = 0; i < 5; ++i) order[i] = i;
   for (int i = 1; i < 5; ++i) {
     const int k = order[i];
     int j = i;
@@ -259,6 +269,14 @@ LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, c
     }
     order[j] = k;
   }
+}
+
+template <class T>
+LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
+                                           const Vec3<T>& d, const Vec3<T>& e) noexcept {
+  const Vec3<T>* const p[5] = {&a, &b, &c, &d, &e};
+  int order[5];
+  lexicographic_descending(p, order);
   for (const int k : order) {
     Sign s;
     if (k == 4) {
@@ -278,10 +296,15 @@ LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, c
 // multiples of a power of two q with |difference| < 2^9 q, every product and sum of the double
 // evaluation below is an integer multiple of q^k (k its degree) below 2^53 q^k (the largest,
 // the final sum, is below 4 * 3 * 2^18 * 3 * 2^28 < 2^52), so the double determinant is exact
-// and so is its sign. Otherwise defer to the exact predicate.
-LOCUS_D3_NOINLINE Sign insphere_slow(const Vec3<double>& a, const Vec3<double>& b,
-                                     const Vec3<double>& c, const Vec3<double>& d,
-                                     const Vec3<double>& e) noexcept {
+// and so is its sign. An exact zero is then perturbed with the same minors: with e at the
+// origin, the cofactors of perturbed_zero_case are orient3d(e, b, c, d) = minor[0],
+// orient3d(a, e, c, d) = -minor[1], orient3d(a, b, e, d) = minor[2], orient3d(a, b, c, e) =
+// -minor[3] and orient3d(a, b, c, d) = minor[0] - minor[1] + minor[2] - minor[3] (row
+// operations), all exact in double (below 4 * 6 * 2^27 q^3). Off the lattice: the exact
+// predicate, then perturbed_zero_case.
+LOCUS_D3_NOINLINE Sign insphere_perturbed_slow(const Vec3<double>& a, const Vec3<double>& b,
+                                               const Vec3<double>& c, const Vec3<double>& d,
+                                               const Vec3<double>& e) noexcept {
   const Vec3<double>* p[4] = {&a, &b, &c, &d};
   double dv[4][3];
   double m = 0.0;
@@ -293,11 +316,10 @@ LOCUS_D3_NOINLINE Sign insphere_slow(const Vec3<double>& a, const Vec3<double>& 
       m = std::max(m, std::abs(dv[i][k]));
     }
   if (exact && m > 0.0 && std::isfinite(m)) {
-    int ex = 0;
-    std::frexp(m, &ex);                            // m < 2^ex
-    const double inv_q = std::ldexp(1.0, 9 - ex);  // 1 / q with q = 2^(ex - 9)
+    const int ex = binary_exponent(m);  // m < 2^ex
     // q^5 must not underflow (5 (ex - 9) >= -1074) nor 2^53 q^5 overflow.
     bool on_lattice = ex > -200 && ex < 190;
+    const double inv_q = on_lattice ? power_of_two(9 - ex) : 0.0;  // 1 / q, q = 2^(ex - 9)
     for (int i = 0; i < 4 && on_lattice; ++i)
       for (int k = 0; k < 3 && on_lattice; ++k) on_lattice = is_small_integer(dv[i][k] * inv_q);
     if (on_lattice) {
@@ -319,10 +341,23 @@ LOCUS_D3_NOINLINE Sign insphere_slow(const Vec3<double>& a, const Vec3<double>& 
       // insphere is its negation.
       const double det =
           (lift[1] * minor[1] + lift[3] * minor[3]) - (lift[0] * minor[0] + lift[2] * minor[2]);
-      return -sign_of(det);
+      if (det != 0.0) return -detail::nonzero_sign(det);
+      const double cofactor[5] = {minor[0], -minor[1], minor[2], -minor[3],
+                                  -((minor[0] - minor[1]) + (minor[2] - minor[3]))};
+      // The lexicographically largest point with a nonzero cofactor decides.
+      const Vec3<double>* const pts[5] = {&a, &b, &c, &d, &e};
+      int top = -1;
+      for (int k = 0; k < 5; ++k)
+        if (cofactor[k] != 0.0 &&
+            (top < 0 || lexicographic_compare(*pts[k], *pts[top]) == Sign::positive))
+          top = k;
+      return top < 0 ? Sign::zero  // a, b, c, d coplanar and e on their plane
+                     : detail::nonzero_sign(cofactor[top]);
     }
   }
-  return insphere(a, b, c, d, e);
+  const Sign s = insphere(a, b, c, d, e);
+  if (s != Sign::zero) return s;
+  return perturbed_zero_case(a, b, c, d, e);
 }
 
 // Stage-A bound of core/predicates.hpp with a cheaper permanent. That bound is
@@ -365,16 +400,15 @@ LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const V
   // Shewchuk's sign convention: ours is the negation.
   if (std::abs(det) > bound) [[likely]]
     return -detail::nonzero_sign(det);
-  return insphere_slow(a, b, c, d, e);
+  return insphere_perturbed_slow(a, b, c, d, e);
 }
 
+// The perturbed insphere (float input is promoted exactly; the perturbation only compares and
+// takes orientations, so deciding it on the doubles is the same).
 template <class T>
 LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
                                                const Vec3<T>& d, const Vec3<T>& e) noexcept {
-  const Sign s = insphere_fast(a, b, c, d, e);
-  if (s != Sign::zero) [[likely]]
-    return s;
-  return perturbed_zero_case(a, b, c, d, e);
+  return insphere_fast(a, b, c, d, e);
 }
 
 }  // namespace
