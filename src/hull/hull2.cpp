@@ -12,6 +12,13 @@ namespace locus {
 
 namespace {
 
+// From this many points to sort, the LSD radix sort (radix_sorted) replaces the bucket sort;
+// below, the bucket array fits in the caches and one scatter beats the radix passes.
+constexpr std::size_t radix_min_points = std::size_t{1} << 15;
+// At most 2^10 top-level buckets: 1024 write streams, whose open cache lines fit in L2 and
+// whose pages fit in the second-level TLB (4096 streams measured slower).
+constexpr unsigned radix_top_bits = 10;
+
 template <class Item>
 [[nodiscard]] inline bool item_less(const Item& a, const Item& b) noexcept {
   if (a.p.y != b.p.y) return a.p.y < b.p.y;
@@ -19,12 +26,28 @@ template <class Item>
   return a.index < b.index;
 }
 
-template <class Item>
-void insertion_sort(Item* first, Item* last) noexcept {
+// Function objects rather than function pointers, so every sort inlines its comparison.
+struct ItemLess {
+  template <class Item>
+  [[nodiscard]] bool operator()(const Item& a, const Item& b) const noexcept {
+    return item_less(a, b);
+  }
+};
+// For the items of radix_sorted: keys are a non-decreasing function of y, so a smaller key means
+// a smaller y and only equal keys need the exact comparison.
+struct KeyedItemLess {
+  template <class Item>
+  [[nodiscard]] bool operator()(const Item& a, const Item& b) const noexcept {
+    return a.key != b.key ? a.key < b.key : item_less(a, b);
+  }
+};
+
+template <class Item, class Less = ItemLess>
+void insertion_sort(Item* first, Item* last, Less less = {}) noexcept {
   for (Item* i = first + 1; i < last; ++i) {
     Item v = *i;
     Item* j = i;
-    while (j > first && item_less(v, *(j - 1))) {
+    while (j > first && less(v, *(j - 1))) {
       *j = *(j - 1);
       --j;
     }
@@ -114,19 +137,39 @@ void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options
       ext_max[k] = -std::numeric_limits<double>::infinity();
     }
     bool finite = true;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2<T> p = points[i];
-      finite &= (std::abs(p.x) <= big) & (std::abs(p.y) <= big);
-      const double x = static_cast<double>(p.x), y = static_cast<double>(p.y);
-      const double v[4] = {y, x, x + y, x - y};
-      for (int k = 0; k < 4; ++k) {
-        if (v[k] < ext_min[k]) {
-          ext_min[k] = v[k];
-          arg_min[k] = i;
+    // Blocks: a branch-free pass takes each block's extreme values; only a block that beats a
+    // running extreme (rare after the first few) is scanned again for the index, with the same
+    // strict comparisons, so the result is the one of a single scan.
+    constexpr std::size_t block = 256;
+    for (std::size_t b0 = 0; b0 < n; b0 += block) {
+      const std::size_t b1 = std::min(n, b0 + block);
+      double lo[4], hi[4];
+      for (int k = 0; k < 4; ++k) lo[k] = ext_min[k], hi[k] = ext_max[k];
+      for (std::size_t i = b0; i < b1; ++i) {
+        const Vec2<T> p = points[i];
+        finite &= (std::abs(p.x) <= big) & (std::abs(p.y) <= big);
+        const double x = static_cast<double>(p.x), y = static_cast<double>(p.y);
+        const double v[4] = {y, x, x + y, x - y};
+        for (int k = 0; k < 4; ++k) {
+          lo[k] = v[k] < lo[k] ? v[k] : lo[k];
+          hi[k] = v[k] > hi[k] ? v[k] : hi[k];
         }
-        if (v[k] > ext_max[k]) {
-          ext_max[k] = v[k];
-          arg_max[k] = i;
+      }
+      bool improves = false;
+      for (int k = 0; k < 4; ++k) improves |= (lo[k] < ext_min[k]) | (hi[k] > ext_max[k]);
+      if (!improves) continue;
+      for (std::size_t i = b0; i < b1; ++i) {
+        const double x = static_cast<double>(points[i].x), y = static_cast<double>(points[i].y);
+        const double v[4] = {y, x, x + y, x - y};
+        for (int k = 0; k < 4; ++k) {
+          if (v[k] < ext_min[k]) {
+            ext_min[k] = v[k];
+            arg_min[k] = i;
+          }
+          if (v[k] > ext_max[k]) {
+            ext_max[k] = v[k];
+            arg_max[k] = i;
+          }
         }
       }
     }
@@ -241,9 +284,10 @@ void ConvexHull2<T>::gather_sorted(std::span<const Vec2<T>> points, const std::u
     if (m <= 32)
       insertion_sort(a, a + m);
     else
-      std::sort(a, a + m, item_less<Item>);
+      std::sort(a, a + m, ItemLess{});
     return;
   }
+  if (m >= radix_min_points && radix_sorted(points, selected, m, ymin, ymax)) return;
   // Clamped both ways: ymin/ymax may come from a superset of the selected points.
   const double top = static_cast<double>(nb - 1);
   const auto bucket = [&](T y) {
@@ -265,17 +309,114 @@ void ConvexHull2<T>::gather_sorted(std::span<const Vec2<T>> points, const std::u
       if (end - begin <= 32)
         insertion_sort(a + begin, a + end);
       else
-        std::sort(a + begin, a + end, item_less<Item>);
+        std::sort(a + begin, a + end, ItemLess{});
     }
     begin = end;
   }
 }
 
-// Andrew's monotone chain over the sorted items, split first by the line from the lowest point F
-// to the highest point L: the right chain (from F up to L) is the chain of the points on or right
-// of FL, the left chain (from L down to F) that of the points on or left of it; each pass keeps
-// only left turns (or also straight continuations when keeping collinear points). Duplicates
-// are skipped in place (the first of equal items has the smallest index).
+// items_ = the selected points sorted by (y, x, index), for many points. The one-level bucket
+// scatter of gather_sorted writes every item to a random place of an array far larger than the
+// caches; on points that all survive the filter (a circle, say) that scatter was most of the
+// hull's time. Here each point gets a key, a monotone (non-decreasing) quantisation of y to 32
+// bits, and two bucket levels keep every memory access in order or in cache:
+//   1. the input is read in order and each item is scattered by its key's top bits into at most
+//      2^12 buckets: 4096 sequential write streams, whose open cache lines fit in L2;
+//   2. each bucket (a few hundred items, in cache) is bucket-sorted again by the rest of its key
+//      through a scratch buffer, and each small sub-bucket is sorted by the exact comparison.
+// Keys only place items; the exact comparison orders every sub-bucket and equal keys share one,
+// so the result is exactly sorted whatever the rounding of the keys.
+template <Real T>
+bool ConvexHull2<T>::radix_sorted(std::span<const Vec2<T>> points, const std::uint32_t* selected,
+                                  std::size_t m, double ymin, double ymax) {
+  constexpr double levels = 0x1p32;
+  const double scale = levels / (ymax - ymin);
+  if (!std::isfinite(scale)) return false;  // y range below ~1e-300: the bucket path copes
+  // Clamped both ways: ymin/ymax may come from a superset of the selected points.
+  const auto key_of = [&](T y) {
+    return static_cast<std::uint32_t>(
+        std::min(std::max(0.0, (static_cast<double>(y) - ymin) * scale), levels - 1.0));
+  };
+  const auto id = [&](std::size_t k) -> std::uint32_t {
+    return selected ? selected[k] : static_cast<std::uint32_t>(k);
+  };
+  // About 256 items per top bucket, at most 2^12 buckets.
+  unsigned top_bits = 1;
+  while (top_bits < radix_top_bits && (std::size_t{256} << top_bits) < m) ++top_bits;
+  const unsigned low_bits = 32 - top_bits;
+  const std::size_t nb = std::size_t{1} << top_bits;
+  counts_.assign(nb + 1, 0);
+  std::uint32_t* start = counts_.data();
+  for (std::size_t k = 0; k < m; ++k) ++start[(key_of(points[id(k)].y) >> low_bits) + 1];
+  std::uint32_t largest = 0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    largest = std::max(largest, start[b + 1]);
+    start[b + 1] += start[b];
+  }
+  items_.resize(m);
+  Item* a = items_.data();
+  {
+    // Write cursors in a copy: start[] keeps the bucket boundaries for step 2.
+    sub_counts_.assign(start, start + nb);
+    std::uint32_t* cursor = sub_counts_.data();
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::uint32_t i = id(k);
+      const Vec2<T> p = points[i];
+      const std::uint32_t q = key_of(p.y);
+      a[cursor[q >> low_bits]++] = Item{p, i, q};
+    }
+  }
+  // Step 2: about two items per sub-bucket.
+  items2_.resize(largest);
+  Item* scratch = items2_.data();
+  const std::uint64_t low_mask = (std::uint64_t{1} << low_bits) - 1;
+  for (std::size_t b = 0; b < nb; ++b) {
+    Item* first = a + start[b];
+    const std::size_t size = start[b + 1] - start[b];
+    if (size <= 32) {
+      if (size > 1) insertion_sort(first, first + size, KeyedItemLess{});
+      continue;
+    }
+    const std::uint64_t ns = size / 2;
+    const auto sub = [&](std::uint32_t key) {
+      return static_cast<std::size_t>(((key & low_mask) * ns) >> low_bits);
+    };
+    sub_counts_.assign(ns + 1, 0);
+    std::uint32_t* c = sub_counts_.data();
+    for (std::size_t k = 0; k < size; ++k) ++c[sub(first[k].key) + 1];
+    for (std::size_t j = 0; j < ns; ++j) c[j + 1] += c[j];
+    for (std::size_t k = 0; k < size; ++k) scratch[c[sub(first[k].key)]++] = first[k];
+    std::copy(scratch, scratch + size, first);
+    // c[j] is now the end of sub-bucket j.
+    std::size_t begin = 0;
+    for (std::size_t j = 0; j < ns; ++j) {
+      const std::size_t end = c[j];
+      if (end - begin > 1) {
+        if (end - begin <= 32)
+          insertion_sort(first + begin, first + end, KeyedItemLess{});
+        else
+          std::sort(first + begin, first + end, KeyedItemLess{});
+      }
+      begin = end;
+    }
+  }
+  return true;
+}
+
+// Andrew's monotone chain over the sorted items, split by the line from the lowest point F to
+// the highest point L: the right chain (from F up to L) is the chain of the points right of FL,
+// the left chain that of the points left of it. One pass in sorted order builds both chains from
+// F up to L: the right one keeps only left turns, the left one only right turns (or, keeping
+// collinear points, also straight continuations). The points strictly between F and L on FL are
+// never hull vertices; they are on the boundary only when one side is empty (then that side's
+// chain is F, those points, L), so the pass leaves them out and only counts them. Duplicates are
+// skipped (the first of equal items has the smallest index). The hull is the right chain
+// followed by the left chain reversed.
+//
+// Memory: the two chains share one stack array growing from both ends (positions in items_,
+// for the turn tests) and the output itself, growing the same way (input indices, written while
+// the item is in cache): every distinct point is in at most one chain but F and L are in both,
+// so last + 3 entries never overlap.
 template <Real T>
 void ConvexHull2<T>::monotone_chain(bool keep_collinear, Hull2Result& out) {
   const std::size_t m = items_.size();
@@ -287,54 +428,79 @@ void ConvexHull2<T>::monotone_chain(bool keep_collinear, Hull2Result& out) {
     out.indices.push_back(it[0].index);
     return;
   }
-  enum : std::uint8_t { right = 1, left = 2, on = 3, skip = 0 };
-  side_.resize(m);
-  std::uint8_t* side = side_.data();
+  const std::size_t top = last + 2;  // the bottom of the left chain
+  hull_.resize(top + 1);
+  out.indices.resize(top + 1);
+  std::uint32_t* pos = hull_.data();
+  std::uint32_t* ids = out.indices.data();
   const Vec2<T> f = it[0].p, l = it[last].p;
-  std::size_t n_on = 0, n_off = 0;
-  side[0] = on;
-  for (std::size_t i = 1; i < m; ++i) {
-    if (it[i].p == it[i - 1].p) {
-      side[i] = skip;
+  // Whether the top of a chain goes: `a`, `b` are its top two entries, `pop_sign` the turn
+  // that removes b (a straight continuation, zero, removes it too unless collinear points are
+  // kept).
+  const auto pops = [&](std::uint32_t a, std::uint32_t b, std::size_t i, Sign pop_sign) {
+    const Sign s = orient2d(it[a].p, it[b].p, it[i].p);
+    return s == pop_sign || (s == Sign::zero && !keep_collinear);
+  };
+  std::size_t kr = 1, kl = 1, n_on = 0;
+  pos[0] = pos[top] = 0;
+  ids[0] = ids[top] = it[0].index;
+  bool any_right = false, any_left = false;
+  for (std::size_t i = 1; i <= last; ++i) {
+    if (it[i].p == it[i - 1].p) continue;
+    const Sign s = i == last ? Sign::zero : orient2d(f, l, it[i].p);
+    if (s == Sign::zero && i != last) {
+      ++n_on;
       continue;
     }
-    const Sign s = orient2d(f, l, it[i].p);
-    side[i] = s == Sign::negative ? right : (s == Sign::positive ? left : on);
-    n_on += s == Sign::zero;
-    n_off += s != Sign::zero;
+    const auto at = static_cast<std::uint32_t>(i);
+    if (s != Sign::positive) {
+      any_right |= s == Sign::negative;
+      while (kr >= 2 && pops(pos[kr - 2], pos[kr - 1], i, Sign::negative)) --kr;
+      pos[kr] = at;
+      ids[kr++] = it[i].index;
+    }
+    if (s != Sign::negative) {
+      any_left |= s == Sign::positive;
+      while (kl >= 2 && pops(pos[top - (kl - 2)], pos[top - (kl - 1)], i, Sign::positive)) --kl;
+      pos[top - kl] = at;
+      ids[top - kl++] = it[i].index;
+    }
   }
-  if (n_off == 0) {
+  if (!any_right && !any_left) {
     out.dimension = 1;
+    out.indices.clear();
     if (keep_collinear) {
-      for (std::size_t i = 0; i < m; ++i)
-        if (side[i] != skip) out.indices.push_back(it[i].index);
+      for (std::size_t i = 0; i <= last; ++i)
+        if (i == 0 || !(it[i].p == it[i - 1].p)) out.indices.push_back(it[i].index);
     } else {
       out.indices = {it[0].index, it[last].index};
     }
     return;
   }
-  hull_.resize(m + n_on + 4);
-  std::uint32_t* h = hull_.data();
-  const auto bad = [&](std::uint32_t a, std::uint32_t b, std::size_t c) {
-    const Sign s = orient2d(it[a].p, it[b].p, it[c].p);
-    return keep_collinear ? s == Sign::negative : s != Sign::positive;
-  };
-  std::size_t k = 0;
-  for (std::size_t i = 0; i <= last; ++i) {
-    if ((side[i] & right) == 0) continue;
-    while (k >= 2 && bad(h[k - 2], h[k - 1], i)) --k;
-    h[k++] = static_cast<std::uint32_t>(i);
-  }
-  const std::size_t lower = k + 1;
-  for (std::size_t i = last; i-- > 0;) {
-    if ((side[i] & left) == 0) continue;
-    while (k >= lower && bad(h[k - 2], h[k - 1], i)) --k;
-    h[k++] = static_cast<std::uint32_t>(i);
-  }
-  const std::size_t size = k - 1;
   out.dimension = 2;
-  out.indices.resize(size);
-  for (std::size_t i = 0; i < size; ++i) out.indices[i] = it[h[i]].index;
+  // The left chain from below L down to above F lies at ids[top - (kl - 2), top): move it
+  // after the right chain (the ranges do not overlap in a way that a forward copy could spoil:
+  // the destination starts before the source).
+  std::copy(ids + top - (kl - 2), ids + top, ids + kr);
+  out.indices.resize(kr + kl - 2);
+  // With both sides nonempty, FL is inside the hull; with one side empty, FL is an edge and
+  // that side's chain is F, the points on FL, L.
+  if (!keep_collinear || n_on == 0 || (any_right && any_left)) return;
+  // Right side empty: the right chain is F, L; the points go between them. Left side empty:
+  // they come last, from L down to F.
+  const auto on_fl = [&](std::size_t i) {
+    return !(it[i].p == it[i - 1].p) && orient2d(f, l, it[i].p) == Sign::zero;
+  };
+  if (!any_right) {
+    aux_.assign(out.indices.begin() + 1, out.indices.end());  // L, then the left chain
+    out.indices.resize(1);
+    for (std::size_t i = 1; i < last; ++i)
+      if (on_fl(i)) out.indices.push_back(it[i].index);
+    out.indices.insert(out.indices.end(), aux_.begin(), aux_.end());
+  } else {
+    for (std::size_t i = last; i-- > 1;)
+      if (on_fl(i)) out.indices.push_back(it[i].index);
+  }
 }
 
 // The book's incremental method on sorted input: each new point is the lexicographic maximum so

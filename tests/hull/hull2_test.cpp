@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <set>
 #include <vector>
@@ -523,6 +524,40 @@ TYPED_TEST(Hull2, LargeSetsAgree) {
   check_all(disk);
   check_all(circle);
   check_all(clustered);
+}
+
+// Sets large enough for the two-level key sort (more than 2^15 points to sort): on a circle
+// every point survives the filter; snapped to a coarse grid the circle has duplicates, equal y and
+// collinear boundary points; few rows give long runs of equal keys; a y range of a few
+// subnormals (double) cannot be scaled to keys and takes the other sort. The methods share that
+// sort, so the exact invariants of check_hull (convex, winding once, containing every point,
+// every boundary point listed) and the smallest-index representatives are the oracle.
+TYPED_TEST(Hull2, LargeSetsKeySort) {
+  using T = TypeParam;
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const int n = 36000;
+  std::vector<std::vector<Vec2<T>>> sets(4);
+  for (int i = 0; i < n; ++i) {
+    const auto u = rng.unit<T, 2>();
+    sets[0].push_back(u);
+    sets[1].push_back({std::round(u.x * T(300)) / T(64), std::round(u.y * T(300)) / T(64)});
+    sets[2].push_back({rng.uniform<T>(T(-1), T(1)), T(rng.uniform_int(0, 3))});
+    if constexpr (std::is_same_v<T, double>)
+      sets[3].push_back({rng.uniform<T>(T(-1), T(1)), T(rng.uniform_int(0, 8)) * T(1e-310)});
+  }
+  for (const auto& pts : sets) {
+    if (pts.empty()) continue;
+    std::map<std::pair<T, T>, std::uint32_t> first;
+    for (std::uint32_t i = 0; i < pts.size(); ++i) first.emplace(std::pair{pts[i].x, pts[i].y}, i);
+    for (bool keep : {false, true}) {
+      const Hull2Result ref = hull(pts, Hull2Method::monotone_chain, keep);
+      EXPECT_TRUE(check_hull(pts, ref, keep)) << "keep " << keep;
+      for (auto i : ref.indices) EXPECT_EQ(first.at({pts[i].x, pts[i].y}), i);
+      for (auto m : {Hull2Method::incremental, Hull2Method::divide_and_conquer})
+        EXPECT_EQ(hull(pts, m, keep).indices, ref.indices) << "method " << int(m);
+    }
+  }
 }
 
 // Scaling by powers of two (exact) gives the same indices, down to tiny and up to huge

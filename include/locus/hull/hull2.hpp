@@ -26,9 +26,10 @@
 // Methods (Hull2Options::method):
 //   monotone_chain (default, fastest): an Akl-Toussaint filter discards the points strictly
 //     inside a box certified (by exact orient2d on its corners) to lie inside the hull of eight
-//     extreme points; the survivors are sorted by a bucket sort on y (exact ties resolved by a
-//     comparison sort inside the buckets) and Andrew's monotone chain links them. O(n) expected on
-//     uniform input, O(n log n) worst case.
+//     extreme points; the survivors are sorted by a bucket sort on y (two levels, in cache, for
+//     many survivors; exact ties resolved by a comparison sort inside the buckets) and one pass of
+//     Andrew's monotone chain links both chains. O(n) expected on uniform input and on points in
+//     convex position spread smoothly (a circle), O(n log n) worst case.
 //   incremental: the book's incremental merge (figure 13.34: the tangents from the new point to
 //     the current hull; figure 13.35: the five cases of a point against a degenerate hull that is
 //     a segment) after a lexicographic sort, so every new point is outside and the tangent search
@@ -87,14 +88,18 @@ class ConvexHull2 {
   struct Item {
     Vec2<T> p;
     std::uint32_t index;
+    std::uint32_t key;  // radix_sorted: quantised y (fills what would be padding for double)
     // Left uninitialised on purpose: resizing the large sort buffer must not zero-fill it.
     Item() noexcept {}  // NOLINT
-    Item(const Vec2<T>& q, std::uint32_t i) noexcept : p(q), index(i) {}
+    Item(const Vec2<T>& q, std::uint32_t i, std::uint32_t k = 0) noexcept
+        : p(q), index(i), key(k) {}
   };
 
  private:
   void gather_sorted(std::span<const Vec2<T>> points, const std::uint32_t* selected, std::size_t m,
                      double ymin, double ymax);
+  bool radix_sorted(std::span<const Vec2<T>> points, const std::uint32_t* selected, std::size_t m,
+                    double ymin, double ymax);
   void monotone_chain(bool keep_collinear, Hull2Result& out);
   void incremental(Hull2Result& out);
   void divide_and_conquer(Hull2Result& out);
@@ -104,10 +109,11 @@ class ConvexHull2 {
 
   std::vector<Item> items_;  // filtered, sorted, deduplicated points
   std::vector<std::uint32_t> counts_;
-  std::vector<std::uint32_t> hull_;  // positions in items_
+  std::vector<Item> items2_;  // radix_sorted: scratch for one bucket
+  std::vector<std::uint32_t> sub_counts_;
+  std::vector<std::uint32_t> hull_;  // positions in items_ (monotone chain: both chains)
   std::vector<std::uint32_t> aux_;   // method-specific
   std::vector<std::uint32_t> aux2_;
-  std::vector<std::uint8_t> side_;  // monotone chain: side of the bottom-top line
 };
 
 /// The convex hull of a 2D point set (one call over ConvexHull2).
