@@ -291,6 +291,31 @@ LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, c
   return Sign::zero;  // only when a, b, c, d are coplanar and e lies on their plane
 }
 
+// p > q lexicographically (x, then y, then z).
+[[nodiscard]] inline bool lexicographically_greater(const Vec3<double>& p,
+                                                    const Vec3<double>& q) noexcept {
+  if (p.x != q.x) return p.x > q.x;
+  if (p.y != q.y) return p.y > q.y;
+  return p.z > q.z;
+}
+
+// The perturbed sign of an exactly cospherical a, b, c, d, e from the exact minors of the
+// differences p - e (see insphere_perturbed_slow): the lexicographically largest point with a
+// nonzero cofactor decides.
+LOCUS_D3_NOINLINE Sign perturbed_from_minors(const Vec3<double>& a, const Vec3<double>& b,
+                                             const Vec3<double>& c, const Vec3<double>& d,
+                                             const Vec3<double>& e,
+                                             const double minor[4]) noexcept {
+  const double cofactor[5] = {minor[0], -minor[1], minor[2], -minor[3],
+                              -((minor[0] - minor[1]) + (minor[2] - minor[3]))};
+  const Vec3<double>* const pts[5] = {&a, &b, &c, &d, &e};
+  int top = -1;
+  for (int k = 0; k < 5; ++k)
+    if (cofactor[k] != 0.0 && (top < 0 || lexicographically_greater(*pts[k], *pts[top]))) top = k;
+  return top < 0 ? Sign::zero  // a, b, c, d coplanar and e on their plane
+                 : detail::nonzero_sign(cofactor[top]);
+}
+
 // The insphere filter fails on every exactly cospherical quintuple (grids!) and the adaptive
 // predicate costs 1.5-3 us there. When the twelve differences p - e are exact and are integer
 // multiples of a power of two q with |difference| < 2^9 q, every product and sum of the double
@@ -342,17 +367,7 @@ LOCUS_D3_NOINLINE Sign insphere_perturbed_slow(const Vec3<double>& a, const Vec3
       const double det =
           (lift[1] * minor[1] + lift[3] * minor[3]) - (lift[0] * minor[0] + lift[2] * minor[2]);
       if (det != 0.0) return -detail::nonzero_sign(det);
-      const double cofactor[5] = {minor[0], -minor[1], minor[2], -minor[3],
-                                  -((minor[0] - minor[1]) + (minor[2] - minor[3]))};
-      // The lexicographically largest point with a nonzero cofactor decides.
-      const Vec3<double>* const pts[5] = {&a, &b, &c, &d, &e};
-      int top = -1;
-      for (int k = 0; k < 5; ++k)
-        if (cofactor[k] != 0.0 &&
-            (top < 0 || lexicographic_compare(*pts[k], *pts[top]) == Sign::positive))
-          top = k;
-      return top < 0 ? Sign::zero  // a, b, c, d coplanar and e on their plane
-                     : detail::nonzero_sign(cofactor[top]);
+      return perturbed_from_minors(a, b, c, d, e, minor);
     }
   }
   const Sign s = insphere(a, b, c, d, e);
@@ -409,6 +424,81 @@ template <class T>
 LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
                                                const Vec3<T>& d, const Vec3<T>& e) noexcept {
   return insphere_fast(a, b, c, d, e);
+}
+
+// Input on a small lattice: every coordinate an integer multiple of one power of two q and
+// every coordinate difference below 2^9 q (integer grids, voxels). Then the double evaluation of
+// insphere_fast is exact (every product and sum an integer multiple of q^k below 2^53 q^k, as in
+// insphere_perturbed_slow, whose minors are abc, bcd, cda, dab here), so no filter is needed,
+// and an exact zero is perturbed from the same minors.
+template <class T>
+LOCUS_D3_INLINE Sign insphere_perturbed_lattice(const Vec3<T>& pa, const Vec3<T>& pb,
+                                                const Vec3<T>& pc, const Vec3<T>& pd,
+                                                const Vec3<T>& pe) noexcept {
+  const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
+                     c = detail::to_double(pc), d = detail::to_double(pd),
+                     e = detail::to_double(pe);
+  const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
+  const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;
+  const double aez = a.z - e.z, bez = b.z - e.z, cez = c.z - e.z, dez = d.z - e.z;
+  const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
+  const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
+  const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+  const double abc = aez * bc - bez * ac + cez * ab;
+  const double bcd = bez * cd - cez * bd + dez * bc;
+  const double cda = cez * da + dez * ac + aez * cd;
+  const double dab = dez * ab + aez * bd + bez * da;
+  const double alift = aex * aex + aey * aey + aez * aez;
+  const double blift = bex * bex + bey * bey + bez * bez;
+  const double clift = cex * cex + cey * cey + cez * cez;
+  const double dlift = dex * dex + dey * dey + dez * dez;
+  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  if (det != 0.0) [[likely]]
+    return -detail::nonzero_sign(det);
+  const double minor[4] = {bcd, cda, dab, abc};
+  return perturbed_from_minors(a, b, c, d, e, minor);
+}
+
+// orient3d on a small lattice: the double determinant is exact (products below 6 * 2^27 q^3).
+template <class T>
+LOCUS_D3_INLINE Sign orient3d_on_lattice(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
+                                         const Vec3<T>& pd) noexcept {
+  const double ux = double(pb.x) - double(pa.x), uy = double(pb.y) - double(pa.y),
+               uz = double(pb.z) - double(pa.z);
+  const double vx = double(pc.x) - double(pa.x), vy = double(pc.y) - double(pa.y),
+               vz = double(pc.z) - double(pa.z);
+  const double wx = double(pd.x) - double(pa.x), wy = double(pd.y) - double(pa.y),
+               wz = double(pd.z) - double(pa.z);
+  return sign_of(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx));
+}
+
+// True when `points` lie on a small lattice (above): q = 2^(ex - 9) from the largest extent,
+// every coordinate k q with |k| < 2^52 and every extent below 2^9 q, checked on the integers k.
+template <class T>
+[[nodiscard]] bool on_small_lattice(std::span<const Vec3<T>> points) noexcept {
+  if (points.empty()) return false;
+  Vec3<double> lo = detail::to_double(points[0]), hi = lo;
+  for (const auto& p : points)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], double(p[i]));
+      hi[i] = std::max(hi[i], double(p[i]));
+    }
+  const double m = std::max(std::max(hi.x - lo.x, hi.y - lo.y), hi.z - lo.z);
+  if (!(m > 0.0) || !std::isfinite(m)) return false;
+  const int ex = binary_exponent(m);
+  if (!(ex > -200 && ex < 190)) return false;
+  const double inv_q = power_of_two(9 - ex);
+  for (int i = 0; i < 3; ++i) {
+    const double klo = lo[i] * inv_q, khi = hi[i] * inv_q;
+    if (!is_small_integer(klo) || !is_small_integer(khi) || !(khi - klo < 512.0)) return false;
+  }
+  const double q = power_of_two(ex - 9);
+  for (const auto& p : points)
+    for (int i = 0; i < 3; ++i) {
+      const double k = double(p[i]) * inv_q;
+      if (!is_small_integer(k) || k * q != double(p[i])) return false;  // (no underflow)
+    }
+  return true;
 }
 
 }  // namespace
@@ -482,6 +572,7 @@ Status Delaunay3<T>::insert(std::span<const Vec3<T>> points) {
     compact(false);
     return status_;
   }
+  lattice_ = false;  // (the general predicates are exact too; re-checking would cost O(n))
   result_.duplicate_of.resize(points_.size());
   std::iota(result_.duplicate_of.begin() + std::ptrdiff_t(n0), result_.duplicate_of.end(),
             static_cast<std::uint32_t>(n0));
@@ -589,16 +680,21 @@ LOCUS_D3_INLINE bool Delaunay3<T>::in_conflict(std::uint32_t t, std::uint32_t v)
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T>& p = pts[v];
   if (c.vertices[3] == kGhost) [[unlikely]] {
-    const Sign s = orient3d(pts[c.vertices[0]], pts[c.vertices[1]], pts[c.vertices[2]], p);
+    const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]];
+    const Sign s = lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p);
     if (s != Sign::zero) return s == Sign::positive;
     // On the hull plane: the ghost goes with the real cell under the face, so the face is
     // either inside the cavity or not on its boundary (never a flat new cell).
     const Delaunay3Cell& r = cells_[std::uint32_t(c.neighbors[3]) >> 2];
-    return insphere_perturbed_inline(pts[r.vertices[0]], pts[r.vertices[1]], pts[r.vertices[2]],
-                                     pts[r.vertices[3]], p) == Sign::positive;
+    const Vec3<T>&ra = pts[r.vertices[0]], &rb = pts[r.vertices[1]], &rc = pts[r.vertices[2]],
+          &rd = pts[r.vertices[3]];
+    return (lattice_ ? insphere_perturbed_lattice(ra, rb, rc, rd, p)
+                     : insphere_perturbed_inline(ra, rb, rc, rd, p)) == Sign::positive;
   }
-  return insphere_perturbed_inline(pts[c.vertices[0]], pts[c.vertices[1]], pts[c.vertices[2]],
-                                   pts[c.vertices[3]], p) == Sign::positive;
+  const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]],
+        &d = pts[c.vertices[3]];
+  if (lattice_) return insphere_perturbed_lattice(a, b, cc, d, p) == Sign::positive;
+  return insphere_perturbed_inline(a, b, cc, d, p) == Sign::positive;
 }
 
 template <Real T>
@@ -638,8 +734,8 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
   for (std::size_t step = 0; step < budget; ++step) {
     const Delaunay3Cell& c = cells_[t];
     if (c.vertices[3] == kGhost) {
-      if (orient3d(pts[c.vertices[0]], pts[c.vertices[1]], pts[c.vertices[2]], p) ==
-          Sign::positive) {
+      const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]];
+      if ((lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p)) == Sign::positive) {
         walk_rng_ = rng;
         return t;
       }
@@ -656,9 +752,10 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
       const int i = (start + j) & 3;
       const std::uint32_t nb = std::uint32_t(c.neighbors[std::size_t(i)]) >> 2;
       if (nb == came) continue;
-      const Sign s = orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],
-                              pts[c.vertices[std::size_t(kFace[i][1])]],
-                              pts[c.vertices[std::size_t(kFace[i][2])]], p);
+      const Vec3<T>& a = pts[c.vertices[std::size_t(kFace[i][0])]];
+      const Vec3<T>& b = pts[c.vertices[std::size_t(kFace[i][1])]];
+      const Vec3<T>& cc = pts[c.vertices[std::size_t(kFace[i][2])]];
+      const Sign s = lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p);
       if (s == Sign::negative) {
         came = t;
         t = nb;
@@ -806,6 +903,7 @@ void Delaunay3<T>::run() {
   walk_rng_ = 0x2545F491u;
   dimension_ = -1;
   dirty_ = false;
+  lattice_ = false;
   last_out_ = 0;
   status_ = Status::ok;
   result_ = Delaunay3Result{};
@@ -871,6 +969,7 @@ void Delaunay3<T>::run() {
     apex_flip_ = apex.flip;
     dimension_ = 2;
   }
+  lattice_ = on_small_lattice(std::span<const Vec3<T>>(sorted_));
   std::uint32_t a = 0, b = static_cast<std::uint32_t>(k1), c = static_cast<std::uint32_t>(k2),
                 d = static_cast<std::uint32_t>(k3);
   if (orient3d(pts[a], pts[b], pts[c], pts[d]) == Sign::negative) std::swap(c, d);

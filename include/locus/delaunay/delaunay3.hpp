@@ -297,6 +297,7 @@ class Delaunay3 {
   std::uint32_t apex_ = 0;  // dimension 2: the synthetic point off the plane (internal index)
   bool apex_flip_ = false;  // dimension 2: reverse the faces opposite the apex
   bool dirty_ = false;      // insert() ran since the last compaction
+  bool lattice_ = false;    // all points on a small lattice: exact double predicates
   int dimension_ = -1;
   Status status_ = Status::empty_input;
   Delaunay3Result result_;
