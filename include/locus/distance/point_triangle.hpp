@@ -21,20 +21,19 @@
 // clamped point-segment projection, and the nearest of those edges wins. This covers the seven
 // regions of figure 6.6 without region-specific code, and the vertex regions come out of the clamps
 // exactly. In 3D the common case (finite input, well-shaped triangle: 16 |e0 x e1|^2 >= |e0|^2
-// |e1|^2, so the plane solution is accurate to a few ulps) runs as a branch-free fast path: when
-// the plane solution violates two constraints (a vertex region) only the edge along which moving
-// away from that vertex descends can hold the answer (both cannot when the triangle is not flat),
-// so every region is ONE clamped projection, and the region's edge and parameters are chosen
-// with selects (detail/branchless.hpp), not branches: on mixed input the region is
-// unpredictable. Its finiteness test comes free with its range tests. Everything else goes
-// through the general code.
+// |e1|^2, so the plane solution is accurate to a few ulps) runs as a fast path with one branch
+// (inside or not): outside, all three edges' clamped projections are evaluated and the nearest
+// is chosen with min/blend instructions (detail/branchless.hpp) instead of branching on the
+// region, which is unpredictable on mixed input and costs more to mispredict than the two extra
+// projections. Its finiteness test comes with its range tests. Everything else goes through the
+// general code.
 //
 // Degenerate input: when the triangle is (nearly) flat, |e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2 (the
 // plane solve is ill-conditioned), the answer is the nearest of the three edges, each handled as a
 // point-segment query (plus the plane solution when it still lands inside), so collinear and
 // coincident vertices give the distance to the segment or point they span. NaN or infinite
 // coordinates give non_finite_distance() (result.hpp). unique is always true. Cost: O(N), one 2x2
-// solve, one to three point-segment projections (one, with two divisions, on the fast path).
+// solve, one to three point-segment projections.
 //
 // sqr_distance(p, tri) (either order) returns distance(p, tri).sqr_distance, bit for bit (the
 // same core), without the result's closest points, the barycentric coordinates or the square
