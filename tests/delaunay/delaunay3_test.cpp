@@ -1061,6 +1061,19 @@ TYPED_TEST(Delaunay3Test, LiftedHullAgainstIncremental) {
   cases.push_back(random_points<T>(rng, std::size_t(2000 / kScale)));
   cases.push_back(grid<T>(8 / (kScale > 1 ? 2 : 1) + 1, 7, 6));  // cospherical cells
   cases.push_back(integer_sphere<T>(kScale == 1 ? 243 : 50));    // all cospherical
+  // Integer points at the edge of the small-lattice fast path (extent 511: exact double
+  // determinants with no filter), clustered at the box corners so that differences are large
+  // and degeneracies frequent; the lifted hull uses the general predicates.
+  Points<T> corners;
+  for (int i = 0; i < 1200 / kScale; ++i) {
+    Vec3<T> q;
+    for (int k = 0; k < 3; ++k) {
+      const int v = rng.uniform_int(0, 7);
+      q[k] = T(v < 4 ? v : 504 + v);
+    }
+    corners.push_back(q);
+  }
+  cases.push_back(corners);
   auto with_dups = random_points<T>(rng, std::size_t(400 / kScale));
   for (int k = 0; k < 100 / kScale; ++k)
     with_dups.push_back(with_dups[std::size_t(rng.uniform_int(0, 99 / kScale))]);
