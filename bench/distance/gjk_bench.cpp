@@ -8,9 +8,16 @@
 // loops. Accuracy (counter max_err, and printed once to stderr): the largest absolute error over
 // the pairs against the exact answer: for distances the minimum over all vertex-triangle and
 // edge-edge pairs (locus point_triangle / segment_segment), for depths the smallest face-plane
-// distance of the hull of the 32 x 32 vertex differences (the Minkowski difference). Counter
-// near_contact_err: the same for distance queries on the separated pairs moved together along
-// their separating direction to distances 1e-8 .. 1e-3 (where termination tolerances show).
+// distance of the hull of the 32 x 32 vertex differences (the Minkowski difference). Three
+// classes of distance queries, each with its own counter (and a line on stderr):
+//   max_err           generic separated pairs (distance about 0.5 .. 3);
+//   near_contact_err  the same pairs moved together along their separating direction to a gap
+//                     of 1e-9 .. 1e-6 (relative to the unit-size shapes), where termination
+//                     tolerances show;
+//   parallel_err      face-face pairs: a large face of b turned to face a large face of a,
+//                     tilted by 0 or 1e-12 .. 1e-7 radians, at a gap of 1e-4 .. 1e-1 (every point
+//                     of the two faces is almost equally close: the closest features are
+//                     degenerate and the final GJK simplex is nearly flat).
 //
 // Peers (LOCUS_HAVE_CCD, LOCUS_HAVE_FCL): libccd 2.1 has no distance query (ccdGJKDist exists
 // only in FCL's fork of it), so its GJK distance is measured through FCL's GJKSolver_libccd;
@@ -20,7 +27,7 @@
 // FCL's Convex scans linearly up to 32 vertices, like ConvexPoints). Default tolerances
 // everywhere (locus: 64 eps relative; libccd/FCL: 1e-6 distance, 1e-4 EPA).
 //
-// Run: locus_bench_distance --benchmark_filter=Gjk --benchmark_min_time=0.2
+// Run: locus_bench_distance --benchmark_filter=Gjk --benchmark_min_time=0.5
 #include <locus/core/rotation.hpp>
 #include <locus/distance/gjk.hpp>
 #include <locus/distance/point_triangle.hpp>
@@ -49,6 +56,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -139,13 +147,13 @@ const PairSet& pairs(bool separated) {
 }
 
 /// The separated pairs moved together along their separating direction so that the distance
-/// is 1e-8 .. 1e-3 (near contact, where termination tolerances show); exact by brute force.
+/// is 1e-9 .. 1e-6 (near contact, where termination tolerances show); exact by brute force.
 const PairSet& close_pairs() {
   static const PairSet close = [] {
     const PairSet& s = pairs(true);
     PairSet c;
     std::mt19937_64 rng(303);
-    std::uniform_real_distribution<double> u(3, 8);
+    std::uniform_real_distribution<double> u(6, 9);
     for (std::size_t i = 0; i < kPairs; ++i) {
       const auto r = locus::gjk_distance(locus::ConvexPoints<double, 3>{s.a[i].v},
                                          locus::ConvexPoints<double, 3>{s.b[i].v});
@@ -163,13 +171,92 @@ const PairSet& close_pairs() {
   return close;
 }
 
-/// Largest error over the near-contact pairs of a distance function (accuracy only).
+/// The hull triangle of largest area: its unit outward normal and centroid.
+std::pair<locus::Vec3d, locus::Vec3d> largest_face(const Poly& p) {
+  double best = -1;
+  locus::Vec3d n{}, c{};
+  for (const auto& t : p.tris) {
+    const locus::Triangle3d tri{p.v[t[0]], p.v[t[1]], p.v[t[2]]};
+    const locus::Vec3d m = locus::normal(tri);
+    if (locus::length(m) > best) {
+      best = locus::length(m);
+      n = locus::normalize(m);
+      c = (tri.v0 + tri.v1 + tri.v2) / 3.0;
+    }
+  }
+  return {n, c};
+}
+
+/// Rotation taking unit u to unit v (about u x v; a half turn about any axis orthogonal to u
+/// when v = -u).
+locus::Mat3d rotation_between(const locus::Vec3d& u, const locus::Vec3d& v) {
+  const locus::Vec3d axis = locus::cross(u, v);
+  const double s = locus::length(axis), c = locus::dot(u, v);
+  if (s < 1e-12) {
+    if (c > 0) return locus::Mat3d::identity();
+    const locus::Vec3d o = std::fabs(u.x) < 0.9 ? locus::Vec3d{1, 0, 0} : locus::Vec3d{0, 1, 0};
+    return locus::to_matrix(locus::AxisAngle<double>{locus::normalize(locus::cross(u, o)), std::acos(-1.0)});
+  }
+  return locus::to_matrix(locus::AxisAngle<double>{axis / s, std::atan2(s, c)});
+}
+
+/// Face-face pairs (see the header comment): b's largest face turned against a's largest face,
+/// spun about the common normal, tilted by a tiny angle, its centroid at gap g over a's.
+const PairSet& parallel_pairs() {
+  static const PairSet par = [] {
+    PairSet c;
+    std::mt19937_64 rng(404);
+    std::normal_distribution<double> g;
+    std::uniform_real_distribution<double> u(0, 1);
+    while (c.a.size() < kPairs) {
+      Poly a = random_poly(rng, {0, 0, 0}), b = random_poly(rng, {0, 0, 0});
+      const auto [na, ca] = largest_face(a);
+      const auto [nb, cb] = largest_face(b);
+      const double tilt = u(rng) < 0.25 ? 0.0 : std::pow(10.0, -7.0 - 5.0 * u(rng));
+      const double gap = std::pow(10.0, -1.0 - 3.0 * u(rng));
+      const locus::Vec3d side = locus::normalize(locus::cross(na, locus::Vec3d{g(rng), g(rng), g(rng)}));
+      const locus::Mat3d rot = locus::to_matrix(locus::AxisAngle<double>{side, tilt}) *
+                               locus::to_matrix(locus::AxisAngle<double>{na, 6.3 * u(rng)}) *
+                               rotation_between(nb, -na);
+      const locus::Vec3d t = ca + gap * na - rot * cb;
+      for (auto& q : b.v) q = rot * q + t;
+      const double e = brute_distance(a, b);
+      if (!(e > 0)) continue;
+      c.a.push_back(std::move(a));
+      c.b.push_back(std::move(b));
+      c.exact.push_back(e);
+    }
+    return c;
+  }();
+  return par;
+}
+
+/// Largest error of a distance function over a set of pairs (accuracy only, not timed).
 template <class F>
-double close_error(F&& distance_of) {
-  const PairSet& c = close_pairs();
+double set_error(const PairSet& c, F&& distance_of) {
   double max_err = 0;
-  for (std::size_t i = 0; i < c.a.size(); ++i) max_err = std::max(max_err, std::fabs(distance_of(c, i) - c.exact[i]));
+  for (std::size_t i = 0; i < c.a.size(); ++i) {
+    const double e = std::fabs(distance_of(c, i) - c.exact[i]);
+    max_err = std::isnan(e) ? std::numeric_limits<double>::infinity() : std::max(max_err, e);
+  }
   return max_err;
+}
+
+/// The three accuracy classes of a distance function, as counters and one stderr line.
+template <class F>
+void distance_accuracy(benchmark::State& state, const char* name, F&& distance_of) {
+  state.counters["max_err"] = set_error(pairs(true), distance_of);
+  state.counters["near_contact_err"] = set_error(close_pairs(), distance_of);
+  state.counters["parallel_err"] = set_error(parallel_pairs(), distance_of);
+  static std::set<std::string> printed;
+  if (printed.insert(name).second)
+    std::fprintf(stderr, "%-34s max abs error: generic %.3g  near contact %.3g  face-face %.3g\n", name,
+                 state.counters["max_err"].value, state.counters["near_contact_err"].value,
+                 state.counters["parallel_err"].value);
+}
+
+void report_time(benchmark::State& state) {
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 
 void report(benchmark::State& state, const char* name, double max_err) {
@@ -184,12 +271,7 @@ void report(benchmark::State& state, const char* name, double max_err) {
 
 void BM_Gjk_Distance_locus(benchmark::State& state) {
   const PairSet& s = pairs(true);
-  double max_err = 0;
-  for (std::size_t i = 0; i < kPairs; ++i) {
-    const auto r = locus::gjk_distance(locus::ConvexPoints<double, 3>{s.a[i].v}, locus::ConvexPoints<double, 3>{s.b[i].v});
-    max_err = std::max(max_err, std::fabs(r.distance - s.exact[i]));
-  }
-  state.counters["near_contact_err"] = close_error([](const PairSet& c, std::size_t k) {
+  distance_accuracy(state, "distance locus", [](const PairSet& c, std::size_t k) {
     return locus::gjk_distance(locus::ConvexPoints<double, 3>{c.a[k].v}, locus::ConvexPoints<double, 3>{c.b[k].v}).distance;
   });
   std::size_t i = 0;
@@ -198,7 +280,7 @@ void BM_Gjk_Distance_locus(benchmark::State& state) {
     benchmark::DoNotOptimize(r.distance);
     i = (i + 1) % kPairs;
   }
-  report(state, "distance locus", max_err);
+  report_time(state);
 }
 BENCHMARK(BM_Gjk_Distance_locus);
 
@@ -314,15 +396,19 @@ void BM_Gjk_Distance_fcl(benchmark::State& state, const char* name) {
     solver.shapeDistance(a[i], id, b[i], id, &d, &p1, &p2);
     return d;
   };
-  double max_err = 0;
-  for (std::size_t i = 0; i < kPairs; ++i) max_err = std::max(max_err, std::fabs(run(i) - s.exact[i]));
   {
-    const PairSet& c = close_pairs();
-    const auto ca = fcl_shapes(c.a), cb = fcl_shapes(c.b);
-    state.counters["near_contact_err"] = close_error([&](const PairSet&, std::size_t k) {
+    // FCL shapes for every accuracy set (built once per benchmark, outside the timing).
+    const PairSet* sets[3] = {&pairs(true), &close_pairs(), &parallel_pairs()};
+    std::vector<fcl::Convex<double>> fa[3], fb[3];
+    for (int k = 0; k < 3; ++k) {
+      fa[k] = fcl_shapes(sets[k]->a);
+      fb[k] = fcl_shapes(sets[k]->b);
+    }
+    distance_accuracy(state, name, [&](const PairSet& c, std::size_t k) {
+      const int set = &c == sets[0] ? 0 : &c == sets[1] ? 1 : 2;
       double d = 0;
       fcl::Vector3d p1, p2;
-      solver.shapeDistance(ca[k], id, cb[k], id, &d, &p1, &p2);
+      solver.shapeDistance(fa[set][k], id, fb[set][k], id, &d, &p1, &p2);
       return d;
     });
   }
@@ -331,7 +417,7 @@ void BM_Gjk_Distance_fcl(benchmark::State& state, const char* name) {
     benchmark::DoNotOptimize(run(i));
     i = (i + 1) % kPairs;
   }
-  report(state, name, max_err);
+  report_time(state);
 }
 void BM_Gjk_Distance_fcl_libccd(benchmark::State& state) {
   BM_Gjk_Distance_fcl<fcl::detail::GJKSolver_libccd<double>>(state, "distance FCL GJKSolver_libccd");

@@ -44,7 +44,11 @@ class Minkowski {
   Pt<N> operator()(V<N> d) noexcept {
     // Normalise by the largest component so that float shapes see neither under- nor overflow.
     const double m = max_abs(d);
-    if (m > 0.0) d = d / m;
+    if (m >= std::numeric_limits<double>::min()) {
+      d *= 1.0 / m;  // one division (1 / m is finite for a normal m)
+    } else if (m > 0.0) {
+      d = d / m;
+    }
     const Vec<T, N> dt = vec_cast<T>(d);
     Pt<N> p;
     p.a = vec_cast<double>(a_.core(a_.shape, dt));
