@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// Gallery, chapter 6 (distance in 2D): figures 6.1-6.10 and 6.16-6.22. Every closest point,
+// Gallery, chapter 6 (distance in 2D): figures 6.1-6.10 and 6.16-6.23. Every closest point,
 // distance and parameter shown is the result of a locus::distance query on the literal inputs;
 // region maps classify a grid of query points by the parameters locus::distance returns (which
 // barycentric coordinates or box coordinates are clamped), and level curves of the squared
@@ -9,7 +9,9 @@
 
 #include <locus/curves/bezier.hpp>
 
+#include <locus/distance/line_curve.hpp>
 #include <locus/distance/line_line.hpp>
+#include <locus/distance/line_quadratic_curve.hpp>
 #include <locus/distance/line_ray.hpp>
 #include <locus/distance/line_segment.hpp>
 #include <locus/distance/point_convex_polygon.hpp>
@@ -28,9 +30,10 @@
 #include <locus/primitives/aligned_box.hpp>
 #include <locus/primitives/ellipse.hpp>
 #include <locus/primitives/frustum.hpp>
-#include <locus/primitives/polygon.hpp>
 #include <locus/primitives/line.hpp>
+#include <locus/primitives/polygon.hpp>
 #include <locus/primitives/polyline.hpp>
+#include <locus/primitives/quadratic_curve.hpp>
 #include <locus/primitives/ray.hpp>
 #include <locus/primitives/rectangle.hpp>
 #include <locus/primitives/segment.hpp>
@@ -765,6 +768,57 @@ bool fig_6_22(SvgWriter& w) {
   return true;
 }
 
+// A right-angle mark at `at` between the unit directions u (along the object) and v (towards the
+// other closest point).
+void right_angle(SvgWriter& w, const Vec2d& at, Vec2d u, const Vec2d& v, double size) {
+  if (dot(u, v) < 0) u = -u;
+  if (perp_dot(v, u) < 0) u = -u;  // keep the mark on one side, whatever the tangent's sign
+  w.polyline(std::vector<Vec2d>{at + size * u, at + size * (u + v), at + size * v},
+             pen(c::gray, 1));
+}
+
+// 6.23: the segment connecting the closest points is perpendicular to both objects: (a) a
+// segment and a cubic Bézier curve, (b) a line and an ellipse given as a general quadratic curve.
+// The right-angle marks use the tangents at the returned points (the curve's derivative, the
+// conic's gradient), not the drawing.
+bool fig_6_23(SvgWriter& w) {
+  const BezierCurve2<double> curve{{{0, 0}, {0.7, 2.6}, {2.2, -1.0}, {3.2, 1.4}}};
+  const Segment<double, 2> seg{{-0.3, 2.0}, {2.2, 1.45}};
+  w.curve([&](double t) { return point_at(curve, t); }, 0, 1, 120, pen(c::blue, 2));
+  w.polyline(curve.control, dashed(c::light, 1));
+  draw(w, seg, pen(c::green, 2));
+  const auto a = distance(seg, curve);
+  // The figure's point: an interior pair on both, where the connecting segment is perpendicular.
+  if (!std::isfinite(a.distance) || !(a.param_a > 0 && a.param_a < 1) ||
+      !(a.param_b > 0 && a.param_b < 1))
+    return false;
+  const Vec2d link_a = normalize(a.closest[1] - a.closest[0]);
+  right_angle(w, a.closest[0], normalize(seg.p1 - seg.p0), link_a, 0.14);
+  right_angle(w, a.closest[1], normalize(derivative_at(curve, a.param_b, 1)), -link_a, 0.14);
+  closest_link(w, a, "", "");
+  label(w, Vec2d{0.4, -1.5}, "(a) segment, Bézier: dist = " + fmt(a.distance));
+
+  // The ellipse with half-axes 1.6, 0.8 rotated by 30 degrees about (6.6, 0.6), handed to the
+  // query as a general quadratic curve.
+  const double ang = std::numbers::pi / 6;
+  const Ellipse2<double> e{
+      {6.6, 0.6}, {{std::cos(ang), std::sin(ang)}, {-std::sin(ang), std::cos(ang)}}, {1.6, 0.8}};
+  const QuadraticCurve2<double> q = to_quadratic(e);
+  const Line2<double> line{{7.2, 2.35}, normalize(Vec2d{1, -0.35})};
+  w.curve([&](double t) { return point_at(e, t); }, 0, 2 * std::numbers::pi, 160, pen(c::blue, 2));
+  draw_line(w, line, 2.0, c::green);
+  const auto b = distance(line, q);
+  if (!std::isfinite(b.distance) || !(b.distance > 0)) return false;
+  const Vec2d x = b.closest[1];
+  const Vec2d grad{2 * q.a * x.x + q.b * x.y + q.d, q.b * x.x + 2 * q.c * x.y + q.e};
+  const Vec2d link_b = normalize(b.closest[0] - b.closest[1]);
+  right_angle(w, b.closest[0], line.direction, -link_b, 0.14);
+  right_angle(w, x, normalize(perp(grad)), link_b, 0.14);
+  closest_link(w, b, "", "");
+  label(w, Vec2d{5.4, -1.5}, "(b) line, conic: dist = " + fmt(b.distance));
+  return true;
+}
+
 }  // namespace
 
 std::vector<Figure> chapter6_distance_figures() {
@@ -793,6 +847,7 @@ std::vector<Figure> chapter6_distance_figures() {
       {"6.20", "distance(Ray2, Ray2), barycentric (level curves)", fig_6_20},
       {"6.21", "distance(Ray2, Ray2), unique", fig_6_21},
       {"6.22", "distance(Segment2, Segment2)", fig_6_22},
+      {"6.23", "distance(Segment2, BezierCurve2), distance(Line2, QuadraticCurve2)", fig_6_23},
   };
 }
 
