@@ -9,12 +9,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
 namespace {
 
 using locus::dot;
+using locus::Vec2f;
 using locus::Vec3d;
 
 TEST(Support, PolytopesAttainTheMaximumOverTheirVertices) {
@@ -38,6 +40,32 @@ TEST(Support, PolytopesAttainTheMaximumOverTheirVertices) {
     }
     EXPECT_NEAR(dot(d, locus::support(box, d)), box_best, 1e-15);
   }
+}
+
+TEST(Support, ConvexPointsFlagsEveryNonFinitePointAndSurvivesOverflowingSums) {
+  // A NaN or infinite coordinate anywhere (also one that would lose the comparison, -inf) makes
+  // the support all NaN; huge finite coordinates whose dot products overflow when summed do not.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const Vec3d d{1, 0.5, -0.25};
+  for (int n = 1; n <= 9; ++n)
+    for (int bad = 0; bad < n; ++bad)
+      for (double v : {nan, inf, -inf}) {
+        std::vector<Vec3d> pts;
+        for (int i = 0; i < n; ++i) pts.push_back({double(i), -double(i), 0.5});
+        pts[static_cast<std::size_t>(bad)].y = v;
+        const Vec3d s = locus::support(locus::ConvexPoints<double, 3>{pts}, d);
+        EXPECT_TRUE(std::isnan(s.x) && std::isnan(s.y) && std::isnan(s.z)) << n << " " << bad << " " << v;
+      }
+  std::vector<Vec3d> huge;
+  for (int i = 0; i < 8; ++i) huge.push_back({1e308 * (0.5 + 0.05 * i), 0, 0});
+  const Vec3d h = locus::support(locus::ConvexPoints<double, 3>{huge}, Vec3d{1, 0, 0});
+  EXPECT_EQ(h.x, huge.back().x);
+  // Ties: the lowest index wins.
+  const std::vector<Vec3d> tie{{0, 0, 0}, {1, 5, 0}, {1, -5, 0}, {1, 0, 0}};
+  EXPECT_EQ(locus::support(locus::ConvexPoints<double, 3>{tie}, Vec3d{1, 0, 0}).y, 5.0);
+  const std::vector<Vec2f> tie2{{0, 0}, {2, 1}, {2, 3}};
+  EXPECT_EQ(locus::support(locus::ConvexPoints<float, 2>{tie2}, Vec2f{1, 0}).y, 1.0f);
 }
 
 TEST(Support, SphereIsNeverBeatenByABoundarySample) {

@@ -169,16 +169,20 @@ template <Real T, int N>
   if (c.points.empty()) return splat<T, N>(std::numeric_limits<T>::quiet_NaN());
   std::size_t best = 0;
   T hbest = dot(c.points[0], d);
-  bool bad = !(std::fabs(hbest) < inf);
+  // The sum of the dot products is finite exactly when every one is, unless it overflows; only
+  // then are the points checked one by one (a test per point costs GJK's inner loop ~5%).
+  T sum = hbest;
   for (std::size_t i = 1; i < c.points.size(); ++i) {
     const T h = dot(c.points[i], d);
-    bad |= !(std::fabs(h) < inf);
+    sum += h;
     if (h > hbest) {
       hbest = h;
       best = i;
     }
   }
-  if (bad) return splat<T, N>(std::numeric_limits<T>::quiet_NaN());
+  if (!(std::fabs(sum) < inf))
+    for (const auto& q : c.points)
+      if (!(std::fabs(dot(q, d)) < inf)) return splat<T, N>(std::numeric_limits<T>::quiet_NaN());
   return c.points[best];
 }
 
