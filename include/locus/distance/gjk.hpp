@@ -65,11 +65,11 @@
 // (h faces replaced, a lazy min-heap of faces). Measured (bench/distance/gjk_bench.cpp, two
 // random 32-vertex polyhedra, CPU time on a loaded shared machine, medians of 3-5 repetitions
 // over four runs): distance 1.6-1.8x the speed of FCL's GJKSolver_libccd and 3-3.2x
-// GJKSolver_indep; error <= 1e-15 on generic,
-// near-contact (gap 1e-9 .. 1e-6) and face-face (nearly parallel faces) pairs, where FCL's
-// solvers are off by up to 2e-8 (face-face) and 4e-3 (near contact). Penetration: 1.7-1.9x faster
-// than libccd's GJK + EPA and exact where libccd and FCL are off by 0.2 .. 2 on unit shapes;
-// slower than MPR (libccd, FCL's libccd solver), which is not a penetration depth.
+// GJKSolver_indep; error <= 1e-15 on generic, near-contact (gap 1e-9 .. 1e-6) and face-face
+// (nearly parallel faces) pairs, where FCL's solvers are off by up to 2e-8 (face-face) and 4e-3
+// (near contact). Penetration: 1.7-1.9x faster than libccd's GJK + EPA and exact where libccd
+// and FCL are off by 0.2 .. 2 on unit shapes; slower than MPR (libccd, FCL's libccd solver),
+// which is not a penetration depth.
 // Nothing allocates unless options.trace is set; EPA uses about 60 KB of stack.
 
 #include <locus/config.hpp>
