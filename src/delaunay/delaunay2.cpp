@@ -4,7 +4,7 @@
 // Internal representation: a closed triangulated sphere. Real triangles are counter-clockwise;
 // every hull edge u -> v (interior on its left) is matched by a ghost triangle (v, u, kGhost)
 // whose "interior" is the open half-plane beyond the edge. Ghost triangles always keep the ghost
-// vertex at corner 2 so "is ghost" is one load. adj_[e] is the opposite half-edge of e and is
+// vertex at corner 2 so "is ghost" is one load. adj()[e] is the opposite half-edge of e and is
 // always defined (the surface has no boundary), which removes every hull special case from the
 // split and flip code.
 
@@ -73,57 +73,74 @@ template <class T>
   return static_cast<std::uint32_t>(q);
 }
 
-// Sorts keys[0, n) ((key << 32 | index) values) ascending: two 16-bit LSD radix passes on the
-// key (stable, so ties stay in index order), or std::sort for short ranges.
-void radix_sort_keys(std::uint64_t* keys, std::size_t n, std::vector<std::uint64_t>& tmp_buf) {
+// Sorts keys[0, n) ((key << 32 | index) values, key < 2^bits) ascending: LSD radix passes of at
+// most 12 bits on the key (stable, so ties stay in index order; 4096 buckets keep every
+// pass's write streams in cache), or std::sort for short ranges.
+void radix_sort_keys(std::uint64_t* keys, std::size_t n, unsigned bits,
+                     std::vector<std::uint64_t>& tmp_buf, std::vector<std::uint32_t>& count) {
   if (n < (1u << 14)) {
     std::sort(keys, keys + n);
     return;
   }
+  const unsigned passes = std::max(1u, (bits + 11) / 12);
+  const unsigned digit = (bits + passes - 1) / passes;
+  const std::uint64_t mask = (std::uint64_t{1} << digit) - 1;
   tmp_buf.resize(n);
+  count.resize(std::size_t{1} << digit);
   std::uint64_t* src = keys;
   std::uint64_t* dst = tmp_buf.data();
-  std::vector<std::uint32_t> count(1u << 16);
-  for (int pass = 0; pass < 2; ++pass) {
-    const int shift = 32 + 16 * pass;
+  for (unsigned pass = 0; pass < passes; ++pass) {
+    const unsigned shift = 32 + digit * pass;
     std::fill(count.begin(), count.end(), 0u);
-    for (std::size_t i = 0; i < n; ++i) ++count[(src[i] >> shift) & 0xFFFFu];
+    for (std::size_t i = 0; i < n; ++i) ++count[(src[i] >> shift) & mask];
     std::uint32_t sum = 0;
     for (auto& c : count) {
       const std::uint32_t c0 = c;
       c = sum;
       sum += c0;
     }
-    for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & 0xFFFFu]++] = src[i];
+    for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & mask]++] = src[i];
     std::swap(src, dst);
   }
-  // Two passes: the result is back in keys.
+  if (src != keys) std::copy(src, src + n, keys);
 }
 
-// Biased randomized insertion order (Amenta, Choi, Rote 2003) with Hilbert-sorted rounds: a
-// fixed-seed shuffle, then the last 7/8 of every prefix is sorted along the curve and the first
-// 1/8 recursively. Early rounds spread over the whole domain, so later points mostly fall
-// inside the current hull (few flips, no long hull fans) and each round is walked in curve
-// order (short walks). Deterministic: the seed is fixed.
-void brio_order(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& tmp) {
+// A fixed pseudo-random 64-bit value per index (splitmix64's output function).
+[[nodiscard]] inline std::uint64_t index_hash(std::uint64_t i) noexcept {
+  std::uint64_t z = (i + 1) * 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// Biased randomized insertion order (Amenta, Choi, Rote 2003) with Hilbert-sorted rounds. Point
+// i joins round j (j = 0 is inserted last) with probability 7/8 * 8^-j, decided by a fixed hash
+// of i (at least 3j leading zero bits); the rounds stop where about 256 points remain, which
+// form the first round. So the last round holds about 7/8 of the points, the one before 7/64,
+// and so on. Each round is sorted along the Hilbert curve (ties in index order). Early rounds
+// spread over the whole domain, so later points mostly fall inside the current hull (few flips,
+// no long hull fans) and each round is walked in curve order (short walks). Deterministic, and
+// unlike a shuffle of the whole array, it touches memory in order. On entry keys[i] = (Hilbert
+// key << 32 | i); on exit keys is the insertion order.
+void brio_order(std::vector<std::uint64_t>& keys, unsigned key_bits,
+                std::vector<std::uint64_t>& tmp, std::vector<std::uint32_t>& count) {
   const std::size_t n = keys.size();
-  std::uint64_t state = 0x9E3779B97F4A7C15ull;
-  for (std::size_t i = n; i > 1; --i) {
-    state += 0x9E3779B97F4A7C15ull;  // splitmix64
-    std::uint64_t z = state;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    const std::size_t j = static_cast<std::size_t>(z % i);
-    std::swap(keys[i - 1], keys[j]);
-  }
-  std::size_t end = n;
-  while (end > 256) {
-    const std::size_t mid = end / 8;
-    radix_sort_keys(keys.data() + mid, end - mid, tmp);
-    end = mid;
-  }
-  radix_sort_keys(keys.data(), end, tmp);
+  unsigned rounds = 1;
+  while (rounds < 21 && (n >> (3 * rounds)) > 256) ++rounds;
+  const auto rank = [&](std::size_t i) {  // 0 for the first round inserted
+    const unsigned j = static_cast<unsigned>(std::countl_zero(index_hash(i))) / 3;
+    return rounds - 1 - std::min(j, rounds - 1);
+  };
+  std::size_t start[22] = {};
+  for (std::size_t i = 0; i < n; ++i) ++start[rank(i) + 1];
+  for (unsigned r = 0; r < rounds; ++r) start[r + 1] += start[r];
+  std::size_t cursor[22];
+  std::copy(start, start + rounds, cursor);
+  tmp.resize(n);
+  for (std::size_t i = 0; i < n; ++i) tmp[cursor[rank(i)]++] = keys[i];
+  keys.swap(tmp);
+  for (unsigned r = 0; r < rounds; ++r)
+    radix_sort_keys(keys.data() + start[r], start[r + 1] - start[r], key_bits, tmp, count);
 }
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -272,7 +289,7 @@ LocateResult locate(const Delaunay2Result& dt, std::span<const Vec2<T>> points, 
     }
     if (moved) continue;
     r.triangle = static_cast<std::int32_t>(t);
-    const int zeros = std::popcount(zero_mask);
+    const int zeros = std::popcount(zero_mask);  // not hot: locate() on a result
     if (zeros == 0) {
       r.location = Location::inside;
     } else if (zeros == 1) {
@@ -310,7 +327,7 @@ void Delaunay2<T>::reset() {
 template <Real T>
 const Delaunay2Result& Delaunay2<T>::triangulate(std::span<const Vec2<T>> points) {
   points_.assign(points.begin(), points.end());
-  run();
+  run(points_);
   return result();
 }
 
@@ -318,7 +335,7 @@ template <Real T>
 const Delaunay2Result& Delaunay2<T>::triangulate(const T* xy, std::size_t n) {
   points_.resize(n);
   for (std::size_t i = 0; i < n; ++i) points_[i] = Vec2<T>{xy[2 * i], xy[2 * i + 1]};
-  run();
+  run(points_);
   return result();
 }
 
@@ -335,22 +352,22 @@ LOCUS_D2_INLINE void Delaunay2<T>::set_triangle(std::uint32_t t, std::uint32_t a
     out[0] = base;
     out[1] = base + 1;
     out[2] = base + 2;
-    adj_[base] = opp_ab;
-    adj_[base + 1] = opp_bc;
-    adj_[base + 2] = opp_ca;
-    if (opp_ab != kNone) adj_[opp_ab] = base;
-    if (opp_bc != kNone) adj_[opp_bc] = base + 1;
-    if (opp_ca != kNone) adj_[opp_ca] = base + 2;
+    adj()[base] = opp_ab;
+    adj()[base + 1] = opp_bc;
+    adj()[base + 2] = opp_ca;
+    if (opp_ab != kNone) adj()[opp_ab] = base;
+    if (opp_bc != kNone) adj()[opp_bc] = base + 1;
+    if (opp_ca != kNone) adj()[opp_ca] = base + 2;
     return;
   }
   const std::uint32_t v[3] = {a, b, c};
   const std::uint32_t o[3] = {opp_ab, opp_bc, opp_ca};
-  set_triangle_rotated(tri_.data(), adj_.data(), t, v, o, out);
+  set_triangle_rotated(tri_.data(), adj(), t, v, o, out);
 }
 
 template <Real T>
 bool Delaunay2<T>::in_conflict(std::uint32_t v, std::uint32_t e) const noexcept {
-  const std::uint32_t o = adj_[e];
+  const std::uint32_t o = adj()[e];
   const std::uint32_t base = o - o % 3;
   const Vec2<T>* pts = sorted_.data();
   const Vec2<T>& p = pts[v];
@@ -378,7 +395,7 @@ std::uint32_t Delaunay2<T>::scan(const Vec2<T>& p, std::uint32_t* duplicate) con
       if (s == Sign::zero) zero_mask |= 1u << i;
     }
     if (!inside) continue;
-    if (std::popcount(zero_mask) >= 2) {
+    if ((zero_mask & (zero_mask - 1)) != 0) {  // two edges through p (no popcount call)
       const std::uint32_t corner = zero_mask == 3u ? 1u : (zero_mask == 6u ? 2u : 0u);
       *duplicate = tri_[base + corner];
     }
@@ -404,7 +421,7 @@ std::uint32_t Delaunay2<T>::walk(const Vec2<T>& p, std::uint32_t t,
     const std::uint32_t base = 3 * t;
     if (tri_[base + 2] == kGhost) {
       if (orient2d(pts[tri_[base]], pts[tri_[base + 1]], p) == Sign::positive) return t;
-      t = adj_[base] / 3;
+      t = adj()[base] / 3;
       came = kNone;  // p may lie on that hull edge: test it again from inside
       continue;
     }
@@ -415,7 +432,7 @@ std::uint32_t Delaunay2<T>::walk(const Vec2<T>& p, std::uint32_t t,
       if (e == came) continue;
       const Sign s = orient2d(pts[tri_[e]], pts[tri_[nxt(e)]], p);
       if (s == Sign::negative) {
-        came = adj_[e];
+        came = adj()[e];
         t = came / 3;
         moved = true;
         break;
@@ -423,7 +440,7 @@ std::uint32_t Delaunay2<T>::walk(const Vec2<T>& p, std::uint32_t t,
       if (s == Sign::zero) zero_mask |= 1u << i;
     }
     if (moved) continue;
-    if (std::popcount(zero_mask) >= 2) {
+    if ((zero_mask & (zero_mask - 1)) != 0) {  // two edges through p (no popcount call)
       const std::uint32_t corner = zero_mask == 3u ? 1u : (zero_mask == 6u ? 2u : 0u);
       *duplicate = tri_[base + corner];
     }
@@ -443,7 +460,7 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
   }
   const std::uint32_t base = 3 * t;
   const std::uint32_t a = tri_[base], b = tri_[base + 1], c = tri_[base + 2];
-  const std::uint32_t oab = adj_[base], obc = adj_[base + 1], oca = adj_[base + 2];
+  const std::uint32_t oab = adj()[base], obc = adj()[base + 1], oca = adj()[base + 2];
   const std::uint32_t t1 = static_cast<std::uint32_t>(tri_.size() / 3);
   const std::uint32_t t2 = t1 + 1;
   tri_.resize(tri_.size() + 6);
@@ -452,12 +469,12 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
   set_triangle(t, a, b, v, oab, kNone, kNone, e0);
   set_triangle(t1, b, c, v, obc, kNone, kNone, e1);
   set_triangle(t2, c, a, v, oca, kNone, kNone, e2);
-  adj_[e0[1]] = e1[2];
-  adj_[e1[2]] = e0[1];
-  adj_[e1[1]] = e2[2];
-  adj_[e2[2]] = e1[1];
-  adj_[e2[1]] = e0[2];
-  adj_[e0[2]] = e2[1];
+  adj()[e0[1]] = e1[2];
+  adj()[e1[2]] = e0[1];
+  adj()[e1[1]] = e2[2];
+  adj()[e2[2]] = e1[1];
+  adj()[e2[1]] = e0[2];
+  adj()[e0[2]] = e2[1];
   stack_.clear();
   stack_.push_back(e0[0]);
   stack_.push_back(e1[0]);
@@ -473,7 +490,7 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
     if (budget-- == 0) return false;
     const std::uint32_t e = stack_.back();
     stack_.pop_back();
-    const std::uint32_t o = adj_[e];
+    const std::uint32_t o = adj()[e];
     const std::uint32_t ob = o - o % 3;
     const std::uint32_t x = tri_[e], y = tri_[nxt(e)];
     const std::uint32_t z = tri_[prv(o)];
@@ -483,14 +500,14 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
     } else if (incircle_fast(pts[y], pts[x], pts[z], pv) != Sign::positive) {
       continue;
     }
-    const std::uint32_t a1 = adj_[nxt(e)], a2 = adj_[prv(e)];
-    const std::uint32_t b1 = adj_[nxt(o)], b2 = adj_[prv(o)];
+    const std::uint32_t a1 = adj()[nxt(e)], a2 = adj()[prv(e)];
+    const std::uint32_t b1 = adj()[nxt(o)], b2 = adj()[prv(o)];
     const std::uint32_t ta = e / 3, tb = o / 3;
     std::uint32_t f[3], g[3];
     set_triangle(ta, v, x, z, a2, b1, kNone, f);
     set_triangle(tb, v, z, y, kNone, b2, a1, g);
-    adj_[f[2]] = g[0];
-    adj_[g[0]] = f[2];
+    adj()[f[2]] = g[0];
+    adj()[g[0]] = f[2];
     stack_.push_back(f[1]);
     stack_.push_back(g[1]);
     last_ = ta;
@@ -499,14 +516,14 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
 }
 
 template <Real T>
-void Delaunay2<T>::lower_dimensional() {
+void Delaunay2<T>::lower_dimensional(std::span<const Vec2<T>> in) {
   // All distinct points collinear (or a single one): sort lexicographically; equal neighbours
   // are duplicates of the first of their run (smallest index, as the sort is stable on ties).
-  const std::size_t n = points_.size();
+  const std::size_t n = in.size();
   std::vector<std::uint32_t> idx(n);
   std::iota(idx.begin(), idx.end(), 0u);
   std::stable_sort(idx.begin(), idx.end(), [&](std::uint32_t i, std::uint32_t j) {
-    return lexicographic_compare(points_[i], points_[j]) == Sign::negative;
+    return lexicographic_compare(in[i], in[j]) == Sign::negative;
   });
   result_.hull.clear();
   std::uint32_t kept = idx[0];
@@ -514,7 +531,7 @@ void Delaunay2<T>::lower_dimensional() {
   result_.duplicate_of[kept] = kept;
   for (std::size_t k = 1; k < n; ++k) {
     const std::uint32_t i = idx[k];
-    if (same_point(points_[i], points_[kept])) {
+    if (same_point(in[i], in[kept])) {
       result_.duplicate_of[i] = kept;
     } else {
       kept = i;
@@ -526,9 +543,9 @@ void Delaunay2<T>::lower_dimensional() {
 }
 
 template <Real T>
-void Delaunay2<T>::run() {
+void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
   reset();
-  const std::size_t n = points_.size();
+  const std::size_t n = in.size();
   result_.duplicate_of.resize(n);
   std::iota(result_.duplicate_of.begin(), result_.duplicate_of.end(), 0u);
   if (n == 0) {
@@ -539,9 +556,9 @@ void Delaunay2<T>::run() {
     status_ = Status::invalid_input;
     return;
   }
-  T lo_x = points_[0].x, hi_x = lo_x, lo_y = points_[0].y, hi_y = lo_y;
+  T lo_x = in[0].x, hi_x = lo_x, lo_y = in[0].y, hi_y = lo_y;
   bool finite = true;
-  for (const auto& q : points_) {
+  for (const auto& q : in) {
     finite = finite && is_finite(q.x) && is_finite(q.y);
     lo_x = std::min(lo_x, q.x);
     hi_x = std::max(hi_x, q.x);
@@ -557,21 +574,22 @@ void Delaunay2<T>::run() {
   // cost time without improving locality.
   int levels = 4;
   while (levels < 16 && (std::size_t(1) << (2 * levels)) < 16 * n) ++levels;
+  const auto key_bits = static_cast<unsigned>(2 * levels);
   keys_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t h =
-        hilbert_index(quantize(points_[i].x, lo_x, hi_x) >> (16 - levels),
-                      quantize(points_[i].y, lo_y, hi_y) >> (16 - levels), levels);
+        hilbert_index(quantize(in[i].x, lo_x, hi_x) >> (16 - levels),
+                      quantize(in[i].y, lo_y, hi_y) >> (16 - levels), levels);
     keys_[i] = (std::uint64_t(h) << 32) | std::uint64_t(i);
   }
-  brio_order(keys_, keys_tmp_);
+  brio_order(keys_, key_bits, keys_tmp_, counts_);
   // The triangulation works on a copy of the points in Hilbert order (vertex k is input point
   // orig_[k]), so the coordinates a walk or an incircle test reads are close in memory.
   orig_.resize(n);
   sorted_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     orig_[k] = static_cast<std::uint32_t>(keys_[k]);
-    sorted_[k] = points_[orig_[k]];
+    sorted_[k] = in[orig_[k]];
   }
 
   // A first non-degenerate triangle: the first point, the first different one, the first one
@@ -581,14 +599,14 @@ void Delaunay2<T>::run() {
   std::size_t k1 = 1;
   while (k1 < n && same_point(pts[k1], pts[p0])) ++k1;
   if (k1 == n) {
-    lower_dimensional();
+    lower_dimensional(in);
     return;
   }
   const std::uint32_t p1 = static_cast<std::uint32_t>(k1);
   std::size_t k2 = k1 + 1;
   while (k2 < n && orient2d(pts[p0], pts[p1], pts[k2]) == Sign::zero) ++k2;
   if (k2 == n) {
-    lower_dimensional();
+    lower_dimensional(in);
     return;
   }
   dimension_ = 2;
@@ -606,7 +624,7 @@ void Delaunay2<T>::run() {
   // a->G (4) / G->a (11); b->G (7) / G->b (5); c->G (10) / G->c (8).
   const std::uint32_t init_adj[12] = {3, 6, 9, 0, 11, 7, 1, 5, 10, 2, 8, 4};
   std::copy(init_tri, init_tri + 12, tri_.begin());
-  std::copy(init_adj, init_adj + 12, adj_.begin());
+  std::copy(init_adj, init_adj + 12, adj());
   last_ = 0;
 
   for (std::size_t k = 1; k < k1; ++k) result_.duplicate_of[orig_[k]] = orig_[p0];
@@ -618,6 +636,15 @@ void Delaunay2<T>::run() {
   if (!ok) status_ = Status::limit_exceeded;
 }
 
+// The result: the real triangles packed into slots [0, count) with input point indices, their
+// opposite half-edges (-1 on the hull), the hull. Ghost triangles are few (one per hull edge) and
+// form one cycle around the hull, so instead of renumbering every triangle, the hull walk lists
+// them, their real neighbours' half-edges are cut (kNone, which is -1 as int32), and each ghost
+// slot below count receives the real triangle of a slot at or above count (its neighbours' back
+// links follow): O(h) moves and one pass that maps vertices to input indices. In place (from
+// take_result(), the internal arrays are not needed any more) the arrays are packed themselves
+// and handed over: no second pair of 12-byte-per-triangle arrays is allocated or touched;
+// otherwise copies are packed. Both give the same numbering.
 template <Real T>
 void Delaunay2<T>::compact(bool in_place) {
   Delaunay2Result& r = result_;
@@ -634,65 +661,68 @@ void Delaunay2<T>::compact(bool in_place) {
   }
   r.hull.clear();
   const std::uint32_t nt = static_cast<std::uint32_t>(tri_.size() / 3);
-  // New index of each real triangle; ghosts map to kNone.
-  order_.resize(nt);
-  std::uint32_t count = 0;
-  std::uint32_t some_ghost = kNone;
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    if (tri_[3 * t + 2] == kGhost) {
-      order_[t] = kNone;
-      some_ghost = t;
-    } else {
-      order_[t] = count++;
-    }
-  }
-  r.halfedges.resize(3 * std::size_t(count));
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    const std::uint32_t nt_new = order_[t];
-    if (nt_new == kNone) continue;
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t o = adj_[3 * t + i];
-      const std::uint32_t to = order_[o / 3];
-      r.halfedges[3 * nt_new + i] = to == kNone ? -1 : static_cast<std::int32_t>(3 * to + o % 3);
-    }
-  }
+  const std::uint32_t* opp = adj();
+  std::uint32_t some_ghost = 0;
+  while (some_ghost + 1 < nt && tri_[3 * some_ghost + 2] != kGhost) ++some_ghost;
   // Hull: ghost (u, v, G) lies beyond hull edge v -> u; the ghost across its half-edge G -> u
   // is (w, u, G), so visiting u, w, ... follows the hull counter-clockwise.
-  if (some_ghost != kNone) {
+  std::vector<std::uint32_t>& ghosts = order_;
+  ghosts.clear();
+  {
     std::uint32_t g = some_ghost;
     for (std::uint32_t guard = 0; guard < nt; ++guard) {
       r.hull.push_back(orig_[tri_[3 * g]]);
-      g = adj_[3 * g + 2] / 3;
+      ghosts.push_back(g);
+      g = opp[3 * g + 2] / 3;
       if (g == some_ghost) break;
     }
     const auto smallest = std::min_element(r.hull.begin(), r.hull.end());
     std::rotate(r.hull.begin(), smallest, r.hull.end());
   }
-  // Triangle of the last point, renumbered, as the walk start of locate().
-  last_out_ = order_[last_] == kNone ? order_[adj_[3 * last_] / 3] : order_[last_];
-  if (in_place) {
-    // take_result(): the internal arrays are not needed any more, so the triangles are packed
-    // into tri_ itself (slot order_[t] <= t) and handed over: no second 12-byte-per-triangle
-    // array is allocated and touched.
-    for (std::uint32_t t = 0; t < nt; ++t) {
-      const std::uint32_t nt_new = order_[t];
-      if (nt_new == kNone) continue;
-      for (std::uint32_t i = 0; i < 3; ++i) tri_[3 * nt_new + i] = orig_[tri_[3 * t + i]];
+  const auto count = static_cast<std::uint32_t>(nt - ghosts.size());
+  // Triangle of the last point (a real one), followed through the moves: the walk start of
+  // locate().
+  std::uint32_t last_real = tri_[3 * last_ + 2] == kGhost ? opp[3 * last_] / 3 : last_;
+  std::uint32_t* tri = tri_.data();
+  std::uint32_t* adj_out = adj();
+  if (!in_place) {
+    r.triangles.assign(tri_.begin(), tri_.end());
+    r.halfedges.assign(adj_.begin(), adj_.end());
+    tri = r.triangles.data();
+    adj_out = reinterpret_cast<std::uint32_t*>(r.halfedges.data());
+  }
+  for (const std::uint32_t g : ghosts) adj_out[adj_out[3 * g]] = kNone;
+  std::sort(ghosts.begin(), ghosts.end());
+  std::size_t above = static_cast<std::size_t>(
+      std::lower_bound(ghosts.begin(), ghosts.end(), count) - ghosts.begin());
+  std::uint32_t from = count;
+  for (std::size_t k = 0; k < ghosts.size() && ghosts[k] < count; ++k) {
+    const std::uint32_t hole = ghosts[k];
+    while (above < ghosts.size() && ghosts[above] == from) ++above, ++from;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t o = adj_out[3 * from + i];
+      tri[3 * hole + i] = tri[3 * from + i];
+      adj_out[3 * hole + i] = o;
+      if (o != kNone) adj_out[o] = 3 * hole + i;
     }
+    if (from == last_real) last_real = hole;
+    ++from;
+  }
+  last_out_ = last_real;
+  for (std::size_t e = 0; e < 3 * std::size_t(count); ++e) tri[e] = orig_[tri[e]];
+  if (in_place) {
     tri_.resize(3 * std::size_t(count));
+    adj_.resize(3 * std::size_t(count));
     r.triangles.swap(tri_);
+    r.halfedges.swap(adj_);
     tri_.clear();
     adj_.clear();
     dimension_ = -1;
   } else {
     r.triangles.resize(3 * std::size_t(count));
-    for (std::uint32_t t = 0; t < nt; ++t) {
-      const std::uint32_t nt_new = order_[t];
-      if (nt_new == kNone) continue;
-      for (std::uint32_t i = 0; i < 3; ++i) r.triangles[3 * nt_new + i] = orig_[tri_[3 * t + i]];
-    }
+    r.halfedges.resize(3 * std::size_t(count));
   }
-  order_.clear();
+  ghosts.clear();
 }
 
 template <Real T>
@@ -710,7 +740,7 @@ Delaunay2Result Delaunay2<T>::take_result() {
   Delaunay2Result r = std::move(result_);
   result_ = Delaunay2Result{};
   points_.clear();
-  run();
+  run(points_);
   dirty_ = true;
   return r;
 }
@@ -722,7 +752,7 @@ Status Delaunay2<T>::insert(const Vec2<T>& p) {
   points_.push_back(p);
   dirty_ = true;
   if (dimension_ < 2) {
-    run();
+    run(points_);
     return status_;
   }
   const std::uint32_t v = static_cast<std::uint32_t>(sorted_.size());
@@ -740,18 +770,20 @@ LocateResult Delaunay2<T>::locate(const Vec2<T>& p, std::size_t max_steps) {
                             static_cast<std::int32_t>(last_out_), max_steps);
 }
 
+// The one-call forms triangulate the caller's points where they are (no copy into points_,
+// which only insert() and locate() need) and pack the result in place (take_result's compact).
 template <Real T>
 Delaunay2Result delaunay(std::span<const Vec2<T>> points) {
   Delaunay2<T> d;
-  d.triangulate(points);
+  d.run(points);
   return d.take_result();
 }
 
 template <Real T>
 Delaunay2Result delaunay(const T* xy, std::size_t n) {
-  Delaunay2<T> d;
-  d.triangulate(xy, n);
-  return d.take_result();
+  std::vector<Vec2<T>> points(n);
+  for (std::size_t i = 0; i < n; ++i) points[i] = Vec2<T>{xy[2 * i], xy[2 * i + 1]};
+  return delaunay(std::span<const Vec2<T>>(points));
 }
 
 template class Delaunay2<float>;

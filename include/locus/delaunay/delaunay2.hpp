@@ -138,8 +138,11 @@ class Delaunay2 {
   [[nodiscard]] std::span<const Vec2<T>> points() const noexcept { return points_; }
 
  private:
+  template <Real U>
+  friend Delaunay2Result delaunay(std::span<const Vec2<U>> points);
+
   void reset();
-  void run();
+  void run(std::span<const Vec2<T>> in);
   std::uint32_t walk(const Vec2<T>& p, std::uint32_t start, std::uint32_t* duplicate) noexcept;
   std::uint32_t scan(const Vec2<T>& p, std::uint32_t* duplicate) const noexcept;
   bool insert_vertex(std::uint32_t v);
@@ -148,17 +151,27 @@ class Delaunay2 {
                     std::uint32_t* out_edges) noexcept;
   bool in_conflict(std::uint32_t p, std::uint32_t e) const noexcept;
   void compact(bool in_place);
-  void lower_dimensional();
+  void lower_dimensional(std::span<const Vec2<T>> in);
+  // adj_ read and written as the unsigned half-edge indices the code computes with (kNone =
+  // 0xFFFFFFFF); stored as int32 (kNone = -1) so take_result() hands it over as the halfedges.
+  // Accessing an int32 object through its corresponding unsigned type is allowed.
+  [[nodiscard]] std::uint32_t* adj() noexcept {
+    return reinterpret_cast<std::uint32_t*>(adj_.data());
+  }
+  [[nodiscard]] const std::uint32_t* adj() const noexcept {
+    return reinterpret_cast<const std::uint32_t*>(adj_.data());
+  }
 
   std::vector<Vec2<T>> points_;  // as given
   std::vector<Vec2<T>> sorted_;  // internal vertex k = points_[orig_[k]], Hilbert order
   std::vector<std::uint32_t> orig_;
   std::vector<std::uint32_t> tri_;  // with ghost triangles (vertex kGhost at corner 2)
-  std::vector<std::uint32_t> adj_;  // opposite half-edge (the surface is closed)
-  std::vector<std::uint32_t> order_;
+  std::vector<std::int32_t> adj_;  // opposite half-edge (the surface is closed), see adj()
+  std::vector<std::uint32_t> order_;  // compact(): the ghost triangles
   std::vector<std::uint32_t> stack_;
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint64_t> keys_tmp_;
+  std::vector<std::uint32_t> counts_;  // radix sort buckets
   std::uint32_t last_ = 0;      // a triangle incident to the last inserted vertex
   std::uint32_t last_out_ = 0;  // the same triangle in result() numbering
   int dimension_ = -1;
