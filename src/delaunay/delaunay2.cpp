@@ -11,6 +11,7 @@
 #include <locus/delaunay/delaunay2.hpp>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -42,21 +43,51 @@ template <class T>
   return to_int(lexicographic_compare(a, p)) * to_int(lexicographic_compare(p, b)) > 0;
 }
 
+// One level of the Hilbert curve: the frame of each sub-square is the parent's composed with
+// "flip both axes if rx" and "swap", and flips commute with the swap, so the accumulated frame
+// is two bits (flip, swap). Returns the quadrant's 2-bit position and updates the frame.
+constexpr std::uint32_t hilbert_level(std::uint32_t xbit, std::uint32_t ybit, std::uint32_t& flip,
+                                      std::uint32_t& swap) noexcept {
+  std::uint32_t rx = xbit ^ flip;
+  std::uint32_t ry = ybit ^ flip;
+  const std::uint32_t t = (rx ^ ry) & swap;
+  rx ^= t;
+  ry ^= t;
+  const std::uint32_t turn = ry ^ 1u;
+  flip ^= rx & turn;
+  swap ^= turn;
+  return (3u * rx) ^ ry;
+}
+
+// Two levels at a time: entry [frame << 4 | x2 << 2 | y2] holds the 4 digit bits and the new
+// frame (bits 4-5), frame = flip << 1 | swap.
+constexpr std::array<std::uint8_t, 64> hilbert_table2 = [] {
+  std::array<std::uint8_t, 64> table{};
+  for (std::uint32_t k = 0; k < 64; ++k) {
+    std::uint32_t flip = (k >> 5) & 1u, swap = (k >> 4) & 1u;
+    const std::uint32_t x2 = (k >> 2) & 3u, y2 = k & 3u;
+    std::uint32_t d = hilbert_level(x2 >> 1, y2 >> 1, flip, swap);
+    d = (d << 2) | hilbert_level(x2 & 1u, y2 & 1u, flip, swap);
+    table[k] = static_cast<std::uint8_t>(d | (flip << 5) | (swap << 4));
+  }
+  return table;
+}();
+
 // Position along the Hilbert curve of the given order of the cell (x, y), 0 <= x, y < 2^levels.
-// The frame of each sub-square is the parent's composed with "flip both axes if rx" and "swap",
-// and flips commute with the swap, so the accumulated frame is two xor bits: branch-free.
 [[nodiscard]] std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int levels) noexcept {
   std::uint32_t d = 0, flip = 0, swap = 0;
-  for (int l = levels - 1; l >= 0; --l) {
-    std::uint32_t rx = ((x >> l) & 1u) ^ flip;
-    std::uint32_t ry = ((y >> l) & 1u) ^ flip;
-    const std::uint32_t t = (rx ^ ry) & swap;
-    rx ^= t;
-    ry ^= t;
-    d = (d << 2) | ((3u * rx) ^ ry);
-    const std::uint32_t turn = ry ^ 1u;
-    flip ^= rx & turn;
-    swap ^= turn;
+  int l = levels;
+  if (l % 2 != 0) {
+    --l;
+    d = hilbert_level((x >> l) & 1u, (y >> l) & 1u, flip, swap);
+  }
+  std::uint32_t frame = flip << 1 | swap;
+  while (l > 0) {
+    l -= 2;
+    const std::uint32_t e =
+        hilbert_table2[frame << 4 | ((x >> l) & 3u) << 2 | ((y >> l) & 3u)];
+    d = (d << 4) | (e & 15u);
+    frame = e >> 4;
   }
   return d;
 }
@@ -313,8 +344,8 @@ template <Real T>
 void Delaunay2<T>::reset() {
   tri_.clear();
   adj_.clear();
+  nt_ = 0;
   order_.clear();
-  stack_.clear();
   last_ = 0;
   dimension_ = -1;
   dirty_ = true;
@@ -383,7 +414,7 @@ bool Delaunay2<T>::in_conflict(std::uint32_t v, std::uint32_t e) const noexcept 
 template <Real T>
 std::uint32_t Delaunay2<T>::scan(const Vec2<T>& p, std::uint32_t* duplicate) const noexcept {
   const Vec2<T>* pts = sorted_.data();
-  const std::uint32_t nt = static_cast<std::uint32_t>(tri_.size() / 3);
+  const std::uint32_t nt = nt_;
   for (std::uint32_t t = 0; t < nt; ++t) {
     const std::uint32_t base = 3 * t;
     if (tri_[base + 2] == kGhost) continue;
@@ -414,7 +445,7 @@ std::uint32_t Delaunay2<T>::walk(const Vec2<T>& p, std::uint32_t t,
                                  std::uint32_t* duplicate) noexcept {
   // A visibility walk in a Delaunay triangulation never revisits a triangle (Edelsbrunner), so
   // it ends within the triangle count; the budget is a guard against a corrupted structure.
-  const std::size_t budget = tri_.size() / 3 + 64;
+  const std::size_t budget = std::size_t(nt_) + 64;
   const Vec2<T>* pts = sorted_.data();
   std::uint32_t came = kNone;
   for (std::size_t step = 0; step < budget; ++step) {
@@ -461,10 +492,15 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
   const std::uint32_t base = 3 * t;
   const std::uint32_t a = tri_[base], b = tri_[base + 1], c = tri_[base + 2];
   const std::uint32_t oab = adj()[base], obc = adj()[base + 1], oca = adj()[base + 2];
-  const std::uint32_t t1 = static_cast<std::uint32_t>(tri_.size() / 3);
+  // run() sized the arrays for every point; insert() may need more.
+  if (3 * (std::size_t(nt_) + 2) > tri_.size()) {
+    const std::size_t size = std::max(2 * tri_.size(), 3 * (std::size_t(nt_) + 2));
+    tri_.resize(size);
+    adj_.resize(size);
+  }
+  const std::uint32_t t1 = nt_;
   const std::uint32_t t2 = t1 + 1;
-  tri_.resize(tri_.size() + 6);
-  adj_.resize(adj_.size() + 6);
+  nt_ += 2;
   std::uint32_t e0[3], e1[3], e2[3];
   set_triangle(t, a, b, v, oab, kNone, kNone, e0);
   set_triangle(t1, b, c, v, obc, kNone, kNone, e1);
@@ -475,21 +511,25 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
   adj()[e2[2]] = e1[1];
   adj()[e2[1]] = e0[2];
   adj()[e0[2]] = e2[1];
-  stack_.clear();
-  stack_.push_back(e0[0]);
-  stack_.push_back(e1[0]);
-  stack_.push_back(e2[0]);
+  // The stack of link edges to test, with an inline push (no out-of-line vector growth call).
+  std::size_t depth = 0;
+  const auto push = [&](std::uint32_t e) {
+    if (depth == stack_.size()) stack_.resize(2 * depth + 16);
+    stack_[depth++] = e;
+  };
+  push(e0[0]);
+  push(e1[0]);
+  push(e2[0]);
   last_ = t;
 
   // Lawson: flip link edges while v is strictly inside the circle across them. Each flip adds
   // an edge at v, so the number of flips is below the vertex count; the budget only guards.
-  std::size_t budget = 3 * (tri_.size() / 3) + 64;
+  std::size_t budget = 3 * std::size_t(nt_) + 64;
   const Vec2<T>* pts = sorted_.data();
   const Vec2<T> pv = pts[v];
-  while (!stack_.empty()) {
+  while (depth > 0) {
     if (budget-- == 0) return false;
-    const std::uint32_t e = stack_.back();
-    stack_.pop_back();
+    const std::uint32_t e = stack_[--depth];
     const std::uint32_t o = adj()[e];
     const std::uint32_t ob = o - o % 3;
     const std::uint32_t x = tri_[e], y = tri_[nxt(e)];
@@ -508,8 +548,8 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
     set_triangle(tb, v, z, y, kNone, b2, a1, g);
     adj()[f[2]] = g[0];
     adj()[g[0]] = f[2];
-    stack_.push_back(f[1]);
-    stack_.push_back(g[1]);
+    push(f[1]);
+    push(g[1]);
     last_ = ta;
   }
   return true;
@@ -614,10 +654,11 @@ void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
   std::uint32_t a = p0, b = p1, c = p2;
   if (orient2d(pts[a], pts[b], pts[c]) == Sign::negative) std::swap(b, c);
 
-  tri_.reserve(6 * (n + 1));
-  adj_.reserve(6 * (n + 1));
-  tri_.resize(12);
-  adj_.resize(12);
+  // A closed triangulation of n + 1 vertices (the ghost one included) has 2 (n + 1) - 4
+  // triangles: allocate them all now, not six entries per insertion.
+  tri_.resize(6 * (n + 1));
+  adj_.resize(6 * (n + 1));
+  nt_ = 4;
   // t0 = (a, b, c); ghosts t1 = (b, a, G), t2 = (c, b, G), t3 = (a, c, G).
   const std::uint32_t init_tri[12] = {a, b, c, b, a, kGhost, c, b, kGhost, a, c, kGhost};
   // Opposite half-edges: a->b (0) / b->a (3); b->c (1) / c->b (6); c->a (2) / a->c (9);
@@ -660,7 +701,7 @@ void Delaunay2<T>::compact(bool in_place) {
     return;
   }
   r.hull.clear();
-  const std::uint32_t nt = static_cast<std::uint32_t>(tri_.size() / 3);
+  const std::uint32_t nt = nt_;
   const std::uint32_t* opp = adj();
   std::uint32_t some_ghost = 0;
   while (some_ghost + 1 < nt && tri_[3 * some_ghost + 2] != kGhost) ++some_ghost;
@@ -686,8 +727,8 @@ void Delaunay2<T>::compact(bool in_place) {
   std::uint32_t* tri = tri_.data();
   std::uint32_t* adj_out = adj();
   if (!in_place) {
-    r.triangles.assign(tri_.begin(), tri_.end());
-    r.halfedges.assign(adj_.begin(), adj_.end());
+    r.triangles.assign(tri_.begin(), tri_.begin() + 3 * std::ptrdiff_t(nt));
+    r.halfedges.assign(adj_.begin(), adj_.begin() + 3 * std::ptrdiff_t(nt));
     tri = r.triangles.data();
     adj_out = reinterpret_cast<std::uint32_t*>(r.halfedges.data());
   }
@@ -717,6 +758,7 @@ void Delaunay2<T>::compact(bool in_place) {
     r.halfedges.swap(adj_);
     tri_.clear();
     adj_.clear();
+    nt_ = 0;
     dimension_ = -1;
   } else {
     r.triangles.resize(3 * std::size_t(count));

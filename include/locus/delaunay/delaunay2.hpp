@@ -172,6 +172,7 @@ class Delaunay2 {
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint64_t> keys_tmp_;
   std::vector<std::uint32_t> counts_;  // radix sort buckets
+  std::uint32_t nt_ = 0;        // triangles in use in tri_ / adj_ (sized ahead)
   std::uint32_t last_ = 0;      // a triangle incident to the last inserted vertex
   std::uint32_t last_out_ = 0;  // the same triangle in result() numbering
   int dimension_ = -1;
