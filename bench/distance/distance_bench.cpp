@@ -16,9 +16,14 @@
 //     against <pair>/textbook: the plain textbook loop written here (per axis: the coordinate in
 //     the box frame, the excess over the slab with if/else, summed squares; no input checks), the
 //     code a user would write instead of calling a library.
-// CGAL's CMake target adds -frounding-math to this translation unit, locus code included.
+// The CGAL peers live in distance_peers_bench.cpp (same inputs and loop: distance_inputs.hpp), a
+// separate translation unit: CGAL's CMake target adds -frounding-math to every source that links
+// it, and bench/CMakeLists.txt takes it back (-fno-rounding-math) for this file, which holds only
+// locus and the textbook loops, so that locus is timed as compiled in a user's program.
 //
 // Run: locus_bench_distance --benchmark_min_time=0.2 --benchmark_filter='^(point|segment|seg)'
+
+#include "distance/distance_inputs.hpp"
 
 #include <locus/distance/point_aligned_box.hpp>
 #include <locus/distance/point_oriented_box.hpp>
@@ -28,208 +33,9 @@
 
 #include <benchmark/benchmark.h>
 
-#if defined(LOCUS_HAVE_CGAL)
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/intersections.h>
-#include <CGAL/squared_distance_3.h>
-#endif
-
-#include <algorithm>
-#include <cmath>
-#include <cstddef>
-#include <cstdint>
-#include <random>
-#include <utility>
-#include <vector>
-
 namespace {
 
-constexpr std::size_t kCount = 4096;
-
-// ---- inputs (double; every library gets the same ones) ---------------------------------------
-
-locus::Vec3d rvec(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(lo, hi);
-  const double x = u(rng), y = u(rng), z = u(rng);
-  return {x, y, z};
-}
-
-struct PointTriangleInput {
-  std::vector<locus::Vec3d> p;
-  std::vector<locus::Triangle3<double>> t;
-};
-const PointTriangleInput& point_triangle_input() {
-  static const PointTriangleInput in = [] {
-    PointTriangleInput r;
-    std::mt19937_64 rng(1);
-    for (std::size_t i = 0; i < kCount; ++i) {
-      r.p.push_back(rvec(rng, -2, 2));
-      const auto a = rvec(rng, -1, 1), b = rvec(rng, -1, 1), c = rvec(rng, -1, 1);
-      r.t.push_back({a, b, c});
-    }
-    return r;
-  }();
-  return in;
-}
-
-struct SegmentPairInput {
-  std::vector<locus::Segment3<double>> a, b;
-};
-const SegmentPairInput& segment_pair_input(bool near_parallel) {
-  static const auto make = [](bool np) {
-    SegmentPairInput r;
-    std::mt19937_64 rng(2);
-    for (std::size_t i = 0; i < kCount; ++i) {
-      const auto p0 = rvec(rng, -1, 1), p1 = rvec(rng, -1, 1);
-      r.a.push_back({p0, p1});
-      if (np) {
-        const auto off = rvec(rng, -1, 1);
-        const auto jitter = rvec(rng, -1e-6, 1e-6);
-        r.b.push_back({p0 + off, p1 + off + jitter});
-      } else {
-        const auto q0 = rvec(rng, -1, 1), q1 = rvec(rng, -1, 1);
-        r.b.push_back({q0, q1});
-      }
-    }
-    return r;
-  };
-  static const SegmentPairInput generic = make(false), parallel = make(true);
-  return near_parallel ? parallel : generic;
-}
-
-struct PointObbInput {
-  std::vector<locus::Vec3d> p;
-  std::vector<locus::OrientedBox3<double>> box;
-};
-const PointObbInput& point_obb_input() {
-  static const PointObbInput in = [] {
-    PointObbInput r;
-    std::mt19937_64 rng(3);
-    for (std::size_t i = 0; i < kCount; ++i) {
-      r.p.push_back(rvec(rng, -3, 3));
-      // A random rotation by Gram-Schmidt.
-      const auto x = locus::normalize(rvec(rng, -1, 1));
-      const auto y = locus::normalize(locus::cross(x, rvec(rng, -1, 1)));
-      const auto z = locus::cross(x, y);
-      const auto c = rvec(rng, -1, 1);
-      const auto e = rvec(rng, 0.1, 1);
-      r.box.push_back({c, {x, y, z}, e});
-    }
-    return r;
-  }();
-  return in;
-}
-
-struct PointAabbInput {
-  std::vector<locus::Vec3d> p;
-  std::vector<locus::AlignedBox3<double>> box;
-};
-const PointAabbInput& point_aabb_input() {
-  static const PointAabbInput in = [] {
-    PointAabbInput r;
-    std::mt19937_64 rng(4);
-    for (std::size_t i = 0; i < kCount; ++i) {
-      r.p.push_back(rvec(rng, -3, 3));
-      const auto c = rvec(rng, -1, 1), e = rvec(rng, 0.1, 1);
-      r.box.push_back({c - e, c + e});
-    }
-    return r;
-  }();
-  return in;
-}
-
-struct SegmentTriangleInput {
-  std::vector<locus::Segment3<double>> s;
-  std::vector<locus::Triangle3<double>> t;
-};
-const SegmentTriangleInput& segment_triangle_input() {
-  static const SegmentTriangleInput in = [] {
-    SegmentTriangleInput r;
-    std::mt19937_64 rng(5);
-    for (std::size_t i = 0; i < kCount; ++i) {
-      const auto p0 = rvec(rng, -1.5, 1.5), p1 = rvec(rng, -1.5, 1.5);
-      r.s.push_back({p0, p1});
-      const auto a = rvec(rng, -1, 1), b = rvec(rng, -1, 1), c = rvec(rng, -1, 1);
-      r.t.push_back({a, b, c});
-    }
-    return r;
-  }();
-  return in;
-}
-
-// ---- one loop for every query -------------------------------------------------------------
-
-// Runs query(a[i], b[i]) over the cycled inputs; items per second = queries per second.
-template <class A, class B, class Query>
-void cycle(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b, Query query) {
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(query(a[i], b[i]));
-    i = (i + 1) & (kCount - 1);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
-}
-
-template <class T>
-locus::Vec3<T> cast(const locus::Vec3d& v) {
-  return {static_cast<T>(v.x), static_cast<T>(v.y), static_cast<T>(v.z)};
-}
-template <class T>
-locus::Segment3<T> cast(const locus::Segment3<double>& s) {
-  return {cast<T>(s.p0), cast<T>(s.p1)};
-}
-template <class T>
-locus::Triangle3<T> cast(const locus::Triangle3<double>& t) {
-  return {cast<T>(t.v0), cast<T>(t.v1), cast<T>(t.v2)};
-}
-template <class T>
-locus::OrientedBox3<T> cast(const locus::OrientedBox3<double>& b) {
-  return {cast<T>(b.center), {cast<T>(b.axis[0]), cast<T>(b.axis[1]), cast<T>(b.axis[2])},
-          cast<T>(b.extent)};
-}
-template <class T>
-locus::AlignedBox3<T> cast(const locus::AlignedBox3<double>& b) {
-  return {cast<T>(b.min), cast<T>(b.max)};
-}
-template <class T, class X>
-auto cast_all(const std::vector<X>& v) {
-  std::vector<decltype(cast<T>(v[0]))> r;
-  for (const X& x : v) r.push_back(cast<T>(x));
-  return r;
-}
-
-// The pairs: the double inputs (arg: segment-segment nearly parallel when 1).
-struct PointTriangle {
-  static auto input(const benchmark::State&) {
-    const auto& in = point_triangle_input();
-    return std::pair{in.p, in.t};
-  }
-};
-struct SegmentSegment {
-  static auto input(const benchmark::State& state) {
-    const auto& in = segment_pair_input(state.range(0) != 0);
-    return std::pair{in.a, in.b};
-  }
-};
-struct PointObb {
-  static auto input(const benchmark::State&) {
-    const auto& in = point_obb_input();
-    return std::pair{in.p, in.box};
-  }
-};
-struct PointAabb {
-  static auto input(const benchmark::State&) {
-    const auto& in = point_aabb_input();
-    return std::pair{in.p, in.box};
-  }
-};
-struct SegmentTriangle {
-  static auto input(const benchmark::State&) {
-    const auto& in = segment_triangle_input();
-    return std::pair{in.s, in.t};
-  }
-};
+using namespace locus_bench_distance;
 
 struct FullQuery {
   template <class A, class B>
@@ -284,81 +90,18 @@ void textbook_bench(benchmark::State& state) {
   cycle(state, in.first, in.second, TextbookQuery{});
 }
 
-// ---- CGAL -------------------------------------------------------------------------------------
-
-#if defined(LOCUS_HAVE_CGAL)
-using Simple = CGAL::Simple_cartesian<double>;
-using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-template <class K>
-typename K::Point_3 to_cgal(const locus::Vec3d& v) {
-  return {v.x, v.y, v.z};
-}
-template <class K>
-typename K::Segment_3 to_cgal(const locus::Segment3<double>& s) {
-  return {to_cgal<K>(s.p0), to_cgal<K>(s.p1)};
-}
-template <class K>
-typename K::Triangle_3 to_cgal(const locus::Triangle3<double>& t) {
-  return {to_cgal<K>(t.v0), to_cgal<K>(t.v1), to_cgal<K>(t.v2)};
-}
-template <class K, class X>
-auto to_cgal_all(const std::vector<X>& v) {
-  std::vector<decltype(to_cgal<K>(v[0]))> r;
-  for (const X& x : v) r.push_back(to_cgal<K>(x));
-  return r;
-}
-
-template <class K>
-struct CgalQuery {
-  template <class A, class B>
-  auto operator()(const A& a, const B& b) const {
-    return CGAL::squared_distance(a, b);
-  }
-  // CGAL 5.5 has no Segment_3 / Triangle_3 squared_distance (it arrived in CGAL 6): the peer is
-  // the usual composition from CGAL's own queries: 0 when do_intersect(segment, triangle),
-  // otherwise the minimum over the two end points to the triangle and the segment to the three
-  // edges (the closest pair of disjoint convex sets has a point on a boundary feature).
-  double operator()(const typename K::Segment_3& seg, const typename K::Triangle_3& tri) const {
-    if (CGAL::do_intersect(seg, tri)) return 0.0;
-    double d = CGAL::to_double(CGAL::squared_distance(seg.source(), tri));
-    d = std::min(d, CGAL::to_double(CGAL::squared_distance(seg.target(), tri)));
-    for (int e = 0; e < 3; ++e)
-      d = std::min(d, CGAL::to_double(CGAL::squared_distance(
-                          seg, typename K::Segment_3(tri.vertex(e), tri.vertex((e + 1) % 3)))));
-    return d;
-  }
-};
-
-template <class Pair, class K>
-void cgal_bench(benchmark::State& state) {
-  const auto in = Pair::input(state);
-  cycle(state, to_cgal_all<K>(in.first), to_cgal_all<K>(in.second), CgalQuery<K>{});
-}
-#endif
-
 }  // namespace
 
-// Registers <name>/distance<T>, <name>/sqr_distance<T> for float and double, then the peers.
-#define LOCUS_BENCH_LOCUS(Pair, name, ...)                                                       \
-  BENCHMARK(locus_bench<Pair, float, FullQuery>)->Name(name "/distance<float>") __VA_ARGS__;      \
-  BENCHMARK(locus_bench<Pair, double, FullQuery>)->Name(name "/distance<double>") __VA_ARGS__;    \
-  BENCHMARK(locus_bench<Pair, float, SqrQuery>)->Name(name "/sqr_distance<float>") __VA_ARGS__;   \
+// Registers <name>/distance<T>, <name>/sqr_distance<T> for float and double.
+#define LOCUS_BENCH_LOCUS(Pair, name, ...)                                                      \
+  BENCHMARK(locus_bench<Pair, float, FullQuery>)->Name(name "/distance<float>") __VA_ARGS__;    \
+  BENCHMARK(locus_bench<Pair, double, FullQuery>)->Name(name "/distance<double>") __VA_ARGS__;  \
+  BENCHMARK(locus_bench<Pair, float, SqrQuery>)->Name(name "/sqr_distance<float>") __VA_ARGS__; \
   BENCHMARK(locus_bench<Pair, double, SqrQuery>)->Name(name "/sqr_distance<double>") __VA_ARGS__
-#if defined(LOCUS_HAVE_CGAL)
-#define LOCUS_BENCH_CGAL(Pair, name, ...)                                                        \
-  BENCHMARK(cgal_bench<Pair, Simple>)->Name(name "/cgal<Simple_cartesian>") __VA_ARGS__;         \
-  BENCHMARK(cgal_bench<Pair, Epick>)->Name(name "/cgal<Epick>") __VA_ARGS__
-#else
-#define LOCUS_BENCH_CGAL(Pair, name, ...)
-#endif
 
 LOCUS_BENCH_LOCUS(PointTriangle, "point_triangle");
-LOCUS_BENCH_CGAL(PointTriangle, "point_triangle");
 LOCUS_BENCH_LOCUS(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
-LOCUS_BENCH_CGAL(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
 LOCUS_BENCH_LOCUS(SegmentTriangle, "segment_triangle");
-LOCUS_BENCH_CGAL(SegmentTriangle, "segment_triangle");
 LOCUS_BENCH_LOCUS(PointObb, "point_obb");
 BENCHMARK(textbook_bench<PointObb>)->Name("point_obb/textbook<double>");
 LOCUS_BENCH_LOCUS(PointAabb, "point_aabb");
