@@ -627,7 +627,12 @@ void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
   // orig_[k]), so the coordinates a walk or an incircle test reads are close in memory.
   orig_.resize(n);
   sorted_.resize(n);
+  // The reads of `in` are in random order: prefetching a few iterations ahead overlaps them.
+  constexpr std::size_t ahead = 16;
   for (std::size_t k = 0; k < n; ++k) {
+#if defined(__GNUC__) || defined(__clang__)
+    if (k + ahead < n) __builtin_prefetch(&in[static_cast<std::uint32_t>(keys_[k + ahead])]);
+#endif
     orig_[k] = static_cast<std::uint32_t>(keys_[k]);
     sorted_[k] = in[orig_[k]];
   }
