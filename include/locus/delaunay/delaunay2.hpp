@@ -4,10 +4,11 @@
 // exact predicate (orient2d, incircle of core/predicates.hpp). CAPABILITIES row cg.delaunay2;
 // book section 13.8, figures 13.42-13.51.
 //
-// Algorithm. The points are inserted in a biased randomized order (BRIO: a fixed-seed shuffle,
-// then rounds of geometrically growing size, each sorted along a Hilbert curve over the bounding
-// box, about 16 curve cells per point, stable radix sort), so consecutive points are close and
-// most points fall inside the hull of the earlier rounds. Each point
+// Algorithm. The points are inserted in a biased randomized order (BRIO: a fixed hash of each
+// point's index puts it in one of rounds growing geometrically (8x), each round sorted along a
+// Hilbert curve over the bounding box, about 16 curve cells per point, stable radix sort), so
+// consecutive points are close and most points fall inside the hull of the earlier rounds. Each
+// point
 // is located by a visibility walk from the triangle of the previously inserted point, the
 // containing triangle is split in three (a point on an edge gives a degenerate triangle that the
 // first flip removes) and the link edges are flipped while the opposite vertex lies strictly
@@ -33,7 +34,7 @@
 //
 // Cocircular input (grids, points on a circle): the Delaunay triangulation is not unique; the
 // result is one valid choice, deterministic: the same input (values and order) gives the same
-// output (the shuffle has a fixed seed); a permuted input may give another valid choice.
+// output (the rounds come from a fixed hash); a permuted input may give another valid choice.
 //
 // Bad input: any NaN or infinite coordinate gives Status::non_finite_input and an empty result;
 // no points gives Status::empty_input. Every walk has a step budget; a walk that exceeds it falls
@@ -45,11 +46,12 @@
 // still a triangulation without crash or hang, but possibly not Delaunay.
 //
 // Cost: O(n log n) expected (n Hilbert keys, radix-sorted BRIO rounds, O(1) expected walk
-// steps and about 3 flips per point). Measured (bench/delaunay/delaunay2_bench.cpp, -O2, CPU
-// time): 10^6 uniform points 0.36 s one call / 0.29 s reusing a Delaunay2, vs CGAL
-// Delaunay_triangulation_2<Epick> 0.64 s; 1000 x 1000 grid 0.37 s vs 0.73 s. Peak memory about
-// 155 bytes per point above the input (index arrays with ghosts, the Hilbert-ordered copy of
-// the points, the result); 10^6 points: 175 MB max RSS vs CGAL's 192 MB.
+// steps and about 3 flips per point). Measured (bench/delaunay/delaunay2_bench.cpp, -O3, CPU
+// time, a loaded 2-core machine): 10^6 uniform points about 0.46-0.5x the time of CGAL's
+// Delaunay_triangulation_2<Epick> for one call, 1000 x 1000 grid about 0.5-0.7x. Peak heap
+// growth of one call about 88 bytes per point (Hilbert keys, the Hilbert-ordered copy of the
+// points, index arrays with ghosts that become the result in place); 10^6 points: 84 MB vs
+// CGAL's 145 MB. A reused Delaunay2 keeps its own copy of the points and of the result (145 MB).
 
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
