@@ -3,7 +3,6 @@
 // hull edge's arc of supporting normals (bounding/min_box3.hpp; row cg.minbox).
 
 #include <locus/bounding/min_box3.hpp>
-#include <locus/bounding/min_rect2.hpp>
 #include <locus/core/basis.hpp>
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
@@ -29,7 +28,92 @@ struct Frame {
   V3 center;   // relative to the reference point
   double extent[3];
   double volume;
+  // Chord ratios of a candidate (see chord_factor; inf: unknown). For a direction x, the chord
+  // of x is q - p for vertices p of minimum and q of maximum x . v, so width(x) = x . (q - p).
+  // sec: |q - p| / width(x); tan: the part of q - p off x that a rotation about an axis
+  // perpendicular to the normal n can turn into x, over width(x): for x = n, the part
+  // perpendicular to n; for x perpendicular to n, the part along n (its part along n cross x
+  // stays perpendicular to x under such rotations). *_width: x = the normal axis[2]; *_rect:
+  // the largest over every x perpendicular to it.
+  double sec_width = inf, tan_width = inf, sec_rect = inf, tan_rect = inf;
 };
+
+// The minimum-area rectangle of a strictly convex counter-clockwise polygon (k >= 3) by
+// rotating calipers (a side flush with an edge), and the largest chord ratios (see Frame) over
+// all directions given the vertices' heights z along the projection direction. Over the
+// directions between two consecutive edge normals the chord's vertices are fixed and the
+// width is a cosine of the direction, so the ratios are largest at an edge normal: there the
+// chords are from the edge's two ends to the antipodal vertex (to both vertices of an
+// antipodal edge parallel to it up to rounding). Caliper steps are rounded: a step missed by
+// rounding (a near tie) changes the extents by rounding only.
+struct PolygonRect {
+  double area;
+  V2 axis0;  // along the flush edge
+  double extent[2];
+  V2 center;
+  double sec, tan;
+};
+
+PolygonRect rect_of_polygon(const std::vector<V2>& p, const std::vector<double>& z) {
+  const std::size_t k = p.size();
+  const auto at = [&](std::size_t i) -> const V2& { return p[i % k]; };
+  PolygonRect best{inf, V2{1.0, 0.0}, {0.0, 0.0}, V2{}, 1.0, 0.0};
+  // Largest squared chord ratios, times the squared width.
+  double sec2 = 1.0, tan2 = 0.0;
+  // The chord from vertex i to j at the normal of an edge u, width2 = (x . chord)^2 * |u|^2.
+  const auto chord = [&](std::size_t i, std::size_t j, double width2) {
+    const V2 d = at(j) - at(i);
+    const double dz = z[j % k] - z[i % k];
+    sec2 = std::max(sec2, (sqr_length(d) + dz * dz) / width2);
+    tan2 = std::max(tan2, dz * dz / width2);
+  };
+  std::size_t right = 1, top = 1, left = 1;
+  for (std::size_t i = 0; i < k; ++i) {
+    const V2& a = at(i);
+    const V2 u = at(i + 1) - a;
+    const double uu = sqr_length(u);
+    if (right < i + 1) right = i + 1;
+    while (right < i + k && dot(u, at(right + 1) - at(right)) > 0.0) ++right;
+    if (top < right) top = right;
+    while (top < i + k && perp_dot(u, at(top + 1) - at(top)) > 0.0) ++top;
+    if (left < top) left = top;
+    while (left < i + k + 1 && dot(u, at(left + 1) - at(left)) < 0.0) ++left;
+    const double smax = dot(u, at(right) - a), smin = dot(u, at(left) - a);
+    const double tmax = perp_dot(u, at(top) - a);
+    const double area = (smax - smin) * tmax / uu;
+    if (area < best.area) {
+      const double len = std::sqrt(uu);
+      best.area = area;
+      best.axis0 = (1.0 / len) * u;
+      best.extent[0] = 0.5 * (smax - smin) / len;
+      best.extent[1] = 0.5 * tmax / len;
+      best.center = a + (0.5 * (smax + smin) / uu) * u + best.extent[1] * perp(best.axis0);
+    }
+    if (!(tmax > 0.0)) {
+      sec2 = tan2 = inf;
+      continue;
+    }
+    const double w2 = tmax * tmax / uu;  // (width at the edge normal)^2
+    chord(i, top, w2);
+    chord(i + 1, top, w2);
+    const double tie = 1e-9 * tmax;
+    if (perp_dot(u, at(top + 1) - at(top)) > -tie) chord(i + 1, top + 1, w2);
+    if (perp_dot(u, at(top + k - 1) - at(top)) > -tie) chord(i, top + k - 1, w2);
+  }
+  best.sec = std::sqrt(sec2);
+  best.tan = std::sqrt(tan2);
+  return best;
+}
+
+// A lower bound of width(R x) / width(x) over rotations R by at most angle d about an axis
+// perpendicular to the normal n, for x = n or x perpendicular to n with chord ratios sec and
+// tan (see Frame): width(R x) >= (R x) . chord, and with R x - x = sin d (p cross x) +
+// (1 - cos d) p cross (p cross x) for the unit axis p, (R x - x) . chord >=
+// -(1 - cos d) |chord| - sin d |p . (x cross chord)|, the last factor at most tan * width(x);
+// 1 - cos d <= d^2 / 2 and sin d <= d. 0 when unknown.
+double chord_factor(double sec, double tan, double d) {
+  return std::max(0.0, 1.0 - (0.5 * d * d * sec + d * tan) * (1.0 + 4.0 * eps));
+}
 
 // The hull as a mesh over local vertex indices, with rounded facet normals and a bound on
 // each normal's angular error.
@@ -49,13 +133,38 @@ struct Mesh {
   std::vector<std::uint32_t> first, neighbours;  // vertex adjacency (CSR over edges)
   // Edges grouped by the direction of their facet normals (a cube-map grid on the Gauss
   // sphere): every normal of a cell's edges, widened by its error, lies within the angle
-  // asin(sine) of `centre` (sine = 2 when that angle reaches pi / 2).
+  // asin(sine) of `centre` (sine = 2 when that angle reaches pi / 2); blocks of cells the same
+  // way (the cells of a block are consecutive).
   struct Cell {
     V3 centre;
     double sine;
-    std::uint32_t begin, end;  // range in `edges`
+    std::uint32_t begin, end;  // range in `edges` (cells) or `cells` (blocks)
   };
-  std::vector<Cell> cells;
+  std::vector<Cell> cells, blocks;
+  // The silhouette test data of `edges` (same order): the facet normals rounded to float and
+  // a bound on the error of a dot product of a unit vector with either of them.
+  struct SilhouetteEdge {
+    float nf[3], ng[3];
+    float err;
+    std::uint32_t a, b;
+  };
+  std::vector<SilhouetteEdge> sil;
+  // Cube-map lookup: the cube face and grid of the cells, and per grid square the index of
+  // an end vertex of one of its edges (UINT32_MAX if none): a start near the vertex of
+  // maximum x . v for x in that square.
+  std::size_t grid = 0;
+  std::vector<std::uint32_t> square_vertex;
+  std::size_t square(const V3& c) const {
+    const V3 a = cwise_abs(c);
+    const int k = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+    const double s = a[k] > 0.0 ? 1.0 / a[k] : 0.0;
+    const auto cell = [&](double x) {
+      const double t = (x * s + 1.0) * 0.5 * static_cast<double>(grid);
+      return t > 0.0 ? std::min(grid - 1, static_cast<std::size_t>(t)) : std::size_t{0};
+    };
+    const std::size_t face = static_cast<std::size_t>(2 * k + (c[k] < 0.0 ? 1 : 0));
+    return (face * grid + cell(c[(k + 1) % 3])) * grid + cell(c[(k + 2) % 3]);
+  }
 
   // A vertex of maximum x . v, by ascent over the vertex graph from `start` (a local maximum
   // of a linear function over a convex polytope's vertex graph is global).
@@ -99,27 +208,36 @@ class Evaluator {
       tick_ = 1;
     }
     proj_.clear();
+    height_.clear();
     const auto take = [&](std::uint32_t i) {
       if (stamp_[i] == tick_) return;
       stamp_[i] = tick_;
       proj_.push_back({dot(u, m_.verts[i]), dot(v, m_.verts[i])});
+      height_.push_back(dot(w, m_.verts[i]));
     };
-    // Bit 1: the facet may face n (n . N >= 0); bit 2: it may face away.
-    const auto side = [&](std::uint32_t f) {
-      const double d = dot(w, m_.normal[f]), e = m_.normal_err[f] + 4.0 * eps;
-      return (d >= -e ? 1 : 0) | (d <= e ? 2 : 0);
+    // An edge is kept when one of its facets may face n (n . N >= 0) and one may face away
+    // (n . N <= 0), given the error bound of the rounded normals.
+    const auto dotf = [&](const float* x) {
+      return w.x * static_cast<double>(x[0]) + w.y * static_cast<double>(x[1]) +
+             w.z * static_cast<double>(x[2]);
     };
-    work_ = m_.cells.size();
-    for (const Mesh::Cell& c : all ? std::span<const Mesh::Cell>() : std::span(m_.cells)) {
-      // A cell whose normals all lie strictly on one side of the plane n^perp has no
+    work_ = m_.blocks.size();
+    for (const Mesh::Cell& blk : all ? std::span<const Mesh::Cell>() : std::span(m_.blocks)) {
+      // A block or cell whose normals all lie strictly on one side of the plane n^perp has no
       // silhouette edge.
-      if (std::abs(dot(w, c.centre)) > c.sine + 4.0 * eps) continue;
-      work_ += c.end - c.begin;
-      for (std::uint32_t k = c.begin; k < c.end; ++k) {
-        const Mesh::Edge& e = m_.edges[k];
-        if ((side(e.f) | side(e.g)) == 3) {
-          take(e.a);
-          take(e.b);
+      if (std::abs(dot(w, blk.centre)) > blk.sine + 4.0 * eps) continue;
+      work_ += blk.end - blk.begin;
+      for (std::uint32_t ci = blk.begin; ci < blk.end; ++ci) {
+        const Mesh::Cell& c = m_.cells[ci];
+        if (std::abs(dot(w, c.centre)) > c.sine + 4.0 * eps) continue;
+        work_ += c.end - c.begin;
+        for (std::uint32_t k = c.begin; k < c.end; ++k) {
+          const Mesh::SilhouetteEdge& e = m_.sil[k];
+          const double df = dotf(e.nf), dg = dotf(e.ng), err = static_cast<double>(e.err);
+          if (std::max(df, dg) >= -err && std::min(df, dg) <= err) {
+            take(e.a);
+            take(e.b);
+          }
         }
       }
     }
@@ -127,6 +245,7 @@ class Evaluator {
       for (std::uint32_t i = 0; i < m_.verts.size(); ++i) take(i);
     work_ += proj_.size();
     double hmin = inf, hmax = -inf;
+    out.sec_width = out.tan_width = inf;
     if (m_.neighbours.empty()) {
       for (const V3& p : m_.verts) {
         const double h = dot(w, p);
@@ -135,16 +254,32 @@ class Evaluator {
       }
       work_ += m_.verts.size();
     } else {
+      // Start the ascents at a vertex of the cube-map square of +-w when it has one.
+      const std::uint32_t up = m_.square_vertex[m_.square(w)],
+                          down = m_.square_vertex[m_.square(-w)];
+      if (up != std::numeric_limits<std::uint32_t>::max()) top_ = up;
+      if (down != std::numeric_limits<std::uint32_t>::max()) bottom_ = down;
       top_ = m_.climb(w, top_, work_);
       bottom_ = m_.climb(-w, bottom_, work_);
       hmax = dot(w, m_.verts[top_]);
       hmin = dot(w, m_.verts[bottom_]);
+      const V3 chord = m_.verts[top_] - m_.verts[bottom_];
+      if (hmax - hmin > 0.0) {
+        out.sec_width = length(chord) / (hmax - hmin);
+        out.tan_width = length(chord - dot(w, chord) * w) / (hmax - hmin);
+      }
     }
     hull2_.compute(proj_, Hull2Options{}, h2_);
     if (h2_.status != Status::ok || h2_.dimension != 2) return false;
     poly_.resize(h2_.indices.size());
-    for (std::size_t i = 0; i < poly_.size(); ++i) poly_[i] = proj_[h2_.indices[i]];
-    const detail::PolygonRect r = detail::min_rect_of_convex_polygon(poly_, RectCriterion::area);
+    poly_z_.resize(h2_.indices.size());
+    for (std::size_t i = 0; i < poly_.size(); ++i) {
+      poly_[i] = proj_[h2_.indices[i]];
+      poly_z_[i] = height_[h2_.indices[i]];
+    }
+    const PolygonRect r = rect_of_polygon(poly_, poly_z_);
+    out.sec_rect = r.sec;
+    out.tan_rect = r.tan;
     const V2 a1 = perp(r.axis0);
     out.axis[0] = r.axis0.x * u + r.axis0.y * v;
     out.axis[1] = a1.x * u + a1.y * v;
@@ -202,6 +337,7 @@ class Evaluator {
   std::uint32_t top_ = 0, bottom_ = 0;  // warm starts of the support ascents
   std::uint64_t work_ = 0;
   std::vector<V2> proj_, poly_;
+  std::vector<double> height_, poly_z_;  // heights along the normal of proj_, poly_
   ConvexHull2<double> hull2_;
   Hull2Result h2_;
 };
@@ -336,20 +472,15 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
     }
 
   {
-    // Cube-map cells of about 16 edges, keyed by the mean normal of each edge's facets.
-    const std::size_t grid = std::max<std::size_t>(
+    // Cube-map cells of about 16 edges, keyed by the mean normal of each edge's facets, in
+    // blocks of 4 x 4 cells (sorted by block, then by cell, so a block's cells are consecutive).
+    m.grid = std::max<std::size_t>(
         1, static_cast<std::size_t>(std::sqrt(static_cast<double>(m.edges.size()) / 96.0)));
+    const std::size_t g = m.grid, bg = (g + 3) / 4;
     const auto key = [&](const Mesh::Edge& e) {
-      const V3 c = m.normal[e.f] + m.normal[e.g];
-      const V3 a = cwise_abs(c);
-      const int k = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
-      const double s = a[k] > 0.0 ? 1.0 / a[k] : 0.0;
-      const auto cell = [&](double x) {
-        return std::min(grid - 1,
-                        static_cast<std::size_t>((x * s + 1.0) * 0.5 * static_cast<double>(grid)));
-      };
-      const std::size_t face = static_cast<std::size_t>(2 * k + (c[k] < 0.0 ? 1 : 0));
-      return (face * grid + cell(c[(k + 1) % 3])) * grid + cell(c[(k + 2) % 3]);
+      const std::size_t sq = m.square(m.normal[e.f] + m.normal[e.g]);
+      const std::size_t face = sq / (g * g), i = sq / g % g, j = sq % g;
+      return ((((face * bg + i / 4) * bg + j / 4) * 4 + i % 4) * 4 + j % 4) * g * g * 6 + sq;
     };
     std::vector<std::pair<std::size_t, Mesh::Edge>> keyed;
     keyed.reserve(m.edges.size());
@@ -357,14 +488,36 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
     std::sort(keyed.begin(), keyed.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
     for (std::size_t i = 0; i < keyed.size(); ++i) m.edges[i] = keyed[i].second;
-    for (std::size_t i = 0; i < keyed.size();) {
-      std::size_t j = i;
-      V3 c{};
-      while (j < keyed.size() && keyed[j].first == keyed[i].first) {
-        c += m.normal[m.edges[j].f] + m.normal[m.edges[j].g];
-        ++j;
+    {
+      // Renumber the vertices in the order the cells first reach them, so the vertices of a
+      // silhouette (and of an ascent) lie close in memory.
+      std::vector<std::uint32_t> id(m.verts.size(), std::numeric_limits<std::uint32_t>::max());
+      std::vector<V3> verts;
+      verts.reserve(m.verts.size());
+      const auto renumber = [&](std::uint32_t& v) {
+        if (id[v] == std::numeric_limits<std::uint32_t>::max()) {
+          id[v] = static_cast<std::uint32_t>(verts.size());
+          verts.push_back(m.verts[v]);
+        }
+        v = id[v];
+      };
+      for (Mesh::Edge& e : m.edges) {
+        renumber(e.a);
+        renumber(e.b);
       }
-      // Widest angle from the centre (rounded up), as a sine; 2 = not bounded below pi / 2.
+      for (std::uint32_t v = 0; v < m.verts.size(); ++v) {  // (every vertex has an edge)
+        std::uint32_t u = v;
+        renumber(u);
+      }
+      for (auto& t : m.tris)
+        for (std::uint32_t& v : t) v = id[v];
+      m.verts = std::move(verts);
+    }
+    m.square_vertex.assign(6 * g * g, std::numeric_limits<std::uint32_t>::max());
+    const std::size_t per_block = 6 * g * g * 16;
+    // Widest angle from the unit centre c (rounded up) of the normals of edges [i, j), as a
+    // sine; 2 = not bounded below pi / 2.
+    const auto cone = [&](V3 c, std::size_t i, std::size_t j) {
       double sine = 2.0;
       if (sqr_length(c) > 0.0) {
         c = normalize(c);
@@ -377,8 +530,48 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
         angle += 1e-12;
         if (angle < 1.5) sine = std::sin(angle);
       }
-      m.cells.push_back({c, sine, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-      i = j;
+      return Mesh::Cell{c, sine, 0, 0};
+    };
+    for (std::size_t i = 0; i < keyed.size();) {
+      const std::size_t block_key = keyed[i].first / per_block;
+      const std::size_t block_begin = i;
+      V3 block_sum{};
+      const auto first_cell = static_cast<std::uint32_t>(m.cells.size());
+      while (i < keyed.size() && keyed[i].first / per_block == block_key) {
+        std::size_t j = i;
+        V3 c{};
+        while (j < keyed.size() && keyed[j].first == keyed[i].first) {
+          c += m.normal[m.edges[j].f] + m.normal[m.edges[j].g];
+          ++j;
+        }
+        m.square_vertex[keyed[i].first % (6 * g * g)] = m.edges[i].a;
+        Mesh::Cell cell = cone(c, i, j);
+        cell.begin = static_cast<std::uint32_t>(i);
+        cell.end = static_cast<std::uint32_t>(j);
+        m.cells.push_back(cell);
+        block_sum += c;
+        i = j;
+      }
+      Mesh::Cell block = cone(block_sum, block_begin, i);
+      block.begin = first_cell;
+      block.end = static_cast<std::uint32_t>(m.cells.size());
+      m.blocks.push_back(block);
+    }
+    m.sil.resize(m.edges.size());
+    for (std::size_t i = 0; i < m.edges.size(); ++i) {
+      const Mesh::Edge& e = m.edges[i];
+      Mesh::SilhouetteEdge& s = m.sil[i];
+      for (int k = 0; k < 3; ++k) {
+        s.nf[k] = static_cast<float>(m.normal[e.f][k]);
+        s.ng[k] = static_cast<float>(m.normal[e.g][k]);
+      }
+      // Float rounding moves a unit normal by at most 2^-24 (relative, per component).
+      const double err = std::max(m.normal_err[e.f], m.normal_err[e.g]) + 1.2e-7 + 8.0 * eps;
+      s.err = static_cast<float>(err);
+      if (static_cast<double>(s.err) < err)
+        s.err = std::nextafter(s.err, std::numeric_limits<float>::infinity());
+      s.a = e.a;
+      s.b = e.b;
     }
   }
   m.first.assign(m.verts.size() + 1, 0);
@@ -409,15 +602,19 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
     ev.fit(f.axis, g);
     if (g.volume < best.volume) best = g;
   };
-  const auto evaluate = [&](const V3& n, double& value, double& width) {
+  // f at n with the end data of the bounds: value (f), width along n, chord cosines.
+  struct Sample {
+    double value = inf, width = 0.0, sec_width = inf, tan_width = inf, sec_rect = inf,
+           tan_rect = inf;
+  };
+  const auto evaluate = [&](const V3& n, Sample& out) {
     if (work > options.max_work) {
       exhausted = true;
       return false;
     }
     ++r.candidates;
     Frame f;
-    value = inf;
-    width = 0.0;
+    out = Sample{};
     bool ok = ev.candidate(n, f);
     work += ev.last_work();
     if (!ok) return true;
@@ -433,161 +630,297 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
         if (!ok) return true;
       }
     }
-    value = f.volume;
-    width = 2.0 * f.extent[2];
+    out = {f.volume, 2.0 * f.extent[2], f.sec_width, f.tan_width, f.sec_rect, f.tan_rect};
     consider(f);
     return true;
   };
 
-  // Every facet normal (the ends of the arcs; the facet-flush boxes). When the first ones
-  // show that the whole pass cannot fit the budget (a hull with very many vertices, e.g.
-  // points on a sphere), the facets are visited in a stride order that spreads the ones the
-  // budget reaches over the hull, and the arcs are not searched.
-  std::vector<double> fvalue(nt, inf), fwidth(nt, 0.0);
-  const std::size_t head = std::min<std::size_t>(64, nt);
-  for (std::size_t t = 0; t < head && !exhausted; ++t)
-    if (std::isfinite(m.normal_err[t])) evaluate(m.normal[t], fvalue[t], fwidth[t]);
-  std::size_t stride = 1;
-  if (static_cast<double>(work) / static_cast<double>(head) * static_cast<double>(nt) >
-      static_cast<double>(options.max_work)) {
-    stride = 7919;  // a prime, made coprime with nt: j -> j * stride mod nt is a permutation
-    while (std::gcd(stride, nt) != 1) stride += 2;
-  }
-  for (std::size_t j = 0; j < nt && !exhausted; ++j) {
-    const std::size_t t = (j * stride) % nt;
-    if (t >= head && std::isfinite(m.normal_err[t])) evaluate(m.normal[t], fvalue[t], fwidth[t]);
-  }
-  // The cross products of edge pairs of small hulls.
-  if (m.edges.size() <= options.max_pair_edges)
-    for (std::size_t i = 0; i < m.edges.size() && !exhausted; ++i)
-      for (std::size_t j = i + 1; j < m.edges.size() && !exhausted; ++j) {
-        const V3 n = cross(m.verts[m.edges[i].b] - m.verts[m.edges[i].a],
-                           m.verts[m.edges[j].b] - m.verts[m.edges[j].a]);
-        double value = 0.0, width = 0.0;
-        if (sqr_length(n) > 0.0) evaluate(normalize(n), value, width);
-      }
-  if (!(best.volume < inf)) {
-    // Budget too small for a single candidate: the box of the coordinate axes.
-    const V3 axes[3] = {V3{1, 0, 0}, V3{0, 1, 0}, V3{0, 0, 1}};
-    ev.fit(axes, best);
-  }
-  if (options.refine) refine(ev, m, best, work, options.max_work + options.max_work / 16);
-
-  if (options.edge_arcs && !exhausted) {
-    // Branch and bound over the arcs (see the header comment for the bound). The centre of the
-    // vertices is inside the hull; D bounds its diameter and L every width of it.
-    V3 centre{};
-    for (const V3& p : m.verts) centre += p;
-    centre = (1.0 / static_cast<double>(h)) * centre;
-    double radius = 0.0;
-    for (const V3& p : m.verts) radius = std::max(radius, length(p - centre));
-    const double diam = 2.0 * radius * (1.0 + 1e-12);
-    double inradius = inf;
-    bool all_trusted = true;
-    for (std::size_t t = 0; t < nt; ++t) {
-      if (!std::isfinite(m.normal_err[t])) {
-        all_trusted = false;
-        continue;
-      }
-      const double dist = dot(m.normal[t], m.verts[m.tris[t][0]] - centre);
-      inradius = std::min(inradius, dist - (m.normal_err[t] + 8.0 * eps) * diam);
+  // The centre of the vertices is inside the hull; diam bounds its diameter and min_width every
+  // width of it (0 when the hull is flat to rounding: then no bound is usable).
+  V3 centre{};
+  for (const V3& p : m.verts) centre += p;
+  centre = (1.0 / static_cast<double>(h)) * centre;
+  double radius = 0.0;
+  for (const V3& p : m.verts) radius = std::max(radius, length(p - centre));
+  const double diam = 2.0 * radius * (1.0 + 1e-12);
+  double inradius = inf;
+  bool all_trusted = true;
+  for (std::size_t t = 0; t < nt; ++t) {
+    if (!std::isfinite(m.normal_err[t])) {
+      all_trusted = false;
+      continue;
     }
-    const double min_width = 2.0 * inradius;
-    const double tol = options.certify_tol > 0.0 ? options.certify_tol : 1e-3;
+    const double dist = dot(m.normal[t], m.verts[m.tris[t][0]] - centre);
+    inradius = std::min(inradius, dist - (m.normal_err[t] + 8.0 * eps) * diam);
+  }
+  const double min_width = 2.0 * std::max(0.0, inradius);
+  const double tol = options.certify_tol > 0.0 ? options.certify_tol : 1e-3;
 
-    struct Arc {
-      V3 a, b;        // n(t) = cos(t) a + sin(t) b
-      double margin;  // angular error of the arc's ends
-      double diam;    // diameter bound of the hull's projection along the arc's pole a x b
-    };
-    struct Piece {
+  // Branch and bound over regions of normals (for hulls with very many facets, where
+  // evaluating every facet normal would be the main cost). Since f(-n) = f(n), the normals are
+  // those of the three cube faces +x, +y, +z (every n or -n lies on one); a region is a square
+  // of a face in gnomonic coordinates, bounded by the largest angle r from its centre's
+  // normal n0 to its corners (the set of normals within an angle of n0 is convex there, so the
+  // corners are the farthest points). Every frame with a normal in the region is a frame at
+  // n0 rotated by at most r, so f >= f(n0) times the chord factor of the width along n0 and
+  // the squared chord factor of the rectangle (or the Lipschitz factors, whichever is larger).
+  const auto search_regions = [&] {
+    struct Region {
       double bound;
-      std::uint32_t arc;
-      double lo, hi, flo, fhi, wlo, whi;  // angle interval; f and width along n at its ends
-      bool operator<(const Piece& o) const { return bound > o.bound; }  // min-heap
+      int face;
+      double u0, u1, v0, v1;
+      double angle, value, slope;  // r, f(n0), first-order relative loss of the bound per radian
     };
-    std::vector<Arc> arcs;
-    std::priority_queue<Piece> heap;
-    // Lower bound of f over the piece (and within the arc's margin of it): the width along n is
-    // concave on the arc, the rectangle area changes by the factor of the header comment.
-    const auto lower_bound = [&](const Piece& p) {
-      if (!(std::isfinite(p.flo) && std::isfinite(p.fhi) && min_width > 0.0)) return 0.0;
-      if (!(p.wlo > 0.0 && p.whi > 0.0)) return 0.0;
-      const Arc& arc = arcs[p.arc];
-      const double w = std::min(p.wlo, p.whi) - 4.0 * arc.margin * diam;
-      if (!(w > 0.0)) return 0.0;
-      const double rect = std::min(p.flo / p.wlo, p.fhi / p.whi);
-      const double g =
-          1.0 +
-          (0.7071067811865476 * 0.5 * (p.hi - p.lo) * arc.diam + arc.margin * diam) / min_width;
-      return w * rect / (g * g);
+    const auto later = [](const Region& x, const Region& y) { return x.bound > y.bound; };
+    std::vector<Region> heap;  // min-heap on bound
+    const auto normal_at = [](int face, double a, double b) {
+      V3 n{};
+      n[face] = 1.0;
+      n[(face + 1) % 3] = a;
+      n[(face + 2) % 3] = b;
+      return normalize(n);
     };
-    // Projection diameters per arc cost O(h) each; above this the global one is used.
-    const bool per_arc_diam = m.edges.size() * h <= 50000000u;
-    bool proved = all_trusted && min_width > 0.0;
-    // (A hull flat to rounding has no usable width bound: its arcs are left unsearched.)
-    for (const Mesh::Edge& e :
-         (min_width > 0.0 ? std::span<const Mesh::Edge>(m.edges) : std::span<const Mesh::Edge>())) {
-      if (!std::isfinite(m.normal_err[e.f]) || !std::isfinite(m.normal_err[e.g])) continue;
-      const V3 a = m.normal[e.f];
-      const double c = dot(a, m.normal[e.g]);
-      const V3 s = m.normal[e.g] - c * a;
-      const double sn = length(s);
-      const V3 b = sn > 0.0 ? (1.0 / sn) * s : complete_basis(a).axis[1];
-      double arc_diam = diam;
-      if (per_arc_diam) {
-        const V3 pole = normalize(cross(a, b));
-        double r2 = 0.0;
-        for (const V3& q : m.verts) {
-          const V3 d = q - centre;
-          const double z = dot(d, pole);
-          r2 = std::max(r2, sqr_length(d) - z * z);
+    bool proved = true;
+    // Evaluate the centre, bound the region, keep it when the bound is below the threshold.
+    const auto visit = [&](int face, double u0, double u1, double v0, double v1) {
+      const V3 n0 = normal_at(face, 0.5 * (u0 + u1), 0.5 * (v0 + v1));
+      double angle = 0.0;
+      for (double a : {u0, u1})
+        for (double b : {v0, v1}) {
+          const V3 c = normal_at(face, a, b);
+          angle = std::max(angle, std::atan2(length(cross(n0, c)), dot(n0, c)));
         }
-        arc_diam = std::min(diam, 2.0 * std::sqrt(r2) * (1.0 + 1e-12) + 8.0 * eps * diam);
+      angle = angle * (1.0 + 1e-12) + 1e-14;
+      Sample s;
+      if (!evaluate(n0, s)) return false;
+      double bound = 0.0, slope = inf;
+      if (std::isfinite(s.value) && s.width > 0.0) {
+        const double rect = s.value / s.width;
+        const double kw =
+            std::max(chord_factor(s.sec_width, s.tan_width, angle), 1.0 - angle * diam / s.width);
+        const double g = 1.0 + angle * diam / min_width;
+        const double ka = std::max(chord_factor(s.sec_rect, s.tan_rect, angle), 1.0 / g);
+        bound = s.width * kw * rect * ka * ka * (1.0 - 8.0 * eps);
+        slope =
+            std::min(s.tan_width, diam / s.width) + 2.0 * std::min(s.tan_rect, diam / min_width);
       }
-      arcs.push_back({a, b, m.normal_err[e.f] + m.normal_err[e.g] + 8.0 * eps, arc_diam});
-      Piece p{0.0,         static_cast<std::uint32_t>(arcs.size() - 1),
-              0.0,         std::atan2(sn, c),
-              fvalue[e.f], fvalue[e.g],
-              fwidth[e.f], fwidth[e.g]};
-      p.bound = lower_bound(p);
-      if (p.bound < (1.0 - tol) * best.volume) heap.push(p);
-    }
-    r.arcs = arcs.size();
-    const double best_before = best.volume;
-    while (!heap.empty()) {
-      const double threshold = (1.0 - tol) * best.volume;
-      if (heap.top().bound >= threshold) break;  // every piece left is proved
-      const Piece p = heap.top();
-      heap.pop();
-      // Splitting cannot help a piece below 1e-12 rad, nor one with an end whose own bound
-      // at zero distance fails (the arc ends' normal errors alone exceed the tolerance).
-      Piece at_lo = p, at_hi = p;
-      at_lo.hi = at_lo.lo;
-      at_lo.fhi = at_lo.flo;
-      at_lo.whi = at_lo.wlo;
-      at_hi.lo = at_hi.hi;
-      at_hi.flo = at_hi.fhi;
-      at_hi.wlo = at_hi.whi;
-      if (p.hi - p.lo < 1e-12 || lower_bound(at_lo) < threshold || lower_bound(at_hi) < threshold) {
-        proved = false;
-        continue;
+      if (bound < (1.0 - tol) * best.volume) {
+        if (angle < 1e-10) {
+          proved = false;  // splitting cannot help further
+        } else {
+          heap.push_back({bound, face, u0, u1, v0, v1, angle, s.value, slope});
+          std::push_heap(heap.begin(), heap.end(), later);
+        }
       }
-      const Arc& arc = arcs[p.arc];
-      const double mid = 0.5 * (p.lo + p.hi);
-      double fm = 0.0, wm = 0.0;
-      if (!evaluate(normalize(std::cos(mid) * arc.a + std::sin(mid) * arc.b), fm, wm)) break;
-      Piece left{0.0, p.arc, p.lo, mid, p.flo, fm, p.wlo, wm};
-      Piece right{0.0, p.arc, mid, p.hi, fm, p.fhi, wm, p.whi};
-      left.bound = lower_bound(left);
-      right.bound = lower_bound(right);
-      const double t2 = (1.0 - tol) * best.volume;
-      if (left.bound < t2) heap.push(left);
-      if (right.bound < t2) heap.push(right);
+      return true;
+    };
+    // Regions still to prove predict more work than the budget has left: the search stops
+    // as if the budget had run out (after a sixteenth of it, for the quality of the box).
+    // Each needs about (r / r') ^ 2 evaluations, r' the radius at which the first-order loss
+    // of its bound would leave it above the threshold, at most 1024 (five levels of splits:
+    // near the minimum f grows away from the centre, so the estimate is far too high there).
+    const std::size_t evaluations_before = r.candidates;
+    const auto hopeless = [&] {
+      if (work < options.max_work / 16) return false;
+      double need = 0.0;
+      for (const Region& q : heap) {
+        const double gap = 1.0 - (1.0 - tol) * best.volume / q.value;
+        const double r1 = gap / q.slope;
+        need += r1 * 32.0 > q.angle ? sqr(q.angle / r1) : 1024.0;
+      }
+      const double per_evaluation =
+          static_cast<double>(work) /
+          static_cast<double>(std::max<std::size_t>(1, r.candidates - evaluations_before));
+      return need * per_evaluation >
+             static_cast<double>(options.max_work - std::min(work, options.max_work));
+    };
+    constexpr int grid = 4;
+    for (int face = 0; face < 3 && !exhausted; ++face)
+      for (int i = 0; i < grid && !exhausted; ++i)
+        for (int j = 0; j < grid && !exhausted; ++j)
+          visit(face, -1.0 + 2.0 * i / grid, -1.0 + 2.0 * (i + 1) / grid, -1.0 + 2.0 * j / grid,
+                -1.0 + 2.0 * (j + 1) / grid);
+    std::size_t splits = 0;
+    while (!heap.empty() && !exhausted) {
+      std::pop_heap(heap.begin(), heap.end(), later);
+      const Region q = heap.back();
+      heap.pop_back();
+      if (q.bound >= (1.0 - tol) * best.volume) {
+        heap.clear();
+        break;
+      }
+      const double um = 0.5 * (q.u0 + q.u1), vm = 0.5 * (q.v0 + q.v1);
+      if (!visit(q.face, q.u0, um, q.v0, vm) || !visit(q.face, um, q.u1, q.v0, vm) ||
+          !visit(q.face, q.u0, um, vm, q.v1) || !visit(q.face, um, q.u1, vm, q.v1))
+        break;
+      if (++splits % 128 == 0 && hopeless()) exhausted = true;
     }
-    r.certified = proved && !exhausted && options.certify_tol > 0.0;
-    if (best.volume < best_before && options.refine && !exhausted)
-      refine(ev, m, best, work, options.max_work);
+    r.certified = proved && heap.empty() && !exhausted && options.certify_tol > 0.0;
+    if (options.refine) refine(ev, m, best, work, options.max_work + options.max_work / 16);
+  };
+
+  // Every facet normal (the ends of the arcs; the facet-flush boxes). When the first ones
+  // show that the facet pass alone would take half the budget (a hull with very many
+  // vertices, e.g. points on a sphere), the arcs are replaced by the branch and bound over
+  // regions (with edge_arcs), or the facets are visited in a stride order that spreads the
+  // ones the budget reaches over the hull (without it, or when the regions cannot be bounded).
+  std::vector<Sample> fsample(nt);
+  const std::size_t head = std::min<std::size_t>(64, nt);
+  std::uint64_t head_work = 0;  // (without the confirmations of new best boxes)
+  for (std::size_t t = 0; t < head && !exhausted; ++t)
+    if (std::isfinite(m.normal_err[t])) {
+      evaluate(m.normal[t], fsample[t]);
+      head_work += ev.last_work();
+    }
+  const double predicted =
+      static_cast<double>(head_work) / static_cast<double>(head) * static_cast<double>(nt);
+  if (options.edge_arcs && min_width > 0.0 && !exhausted &&
+      (options.search == MinBoxSearch::regions ||
+       (options.search == MinBoxSearch::automatic &&
+        predicted > 0.5 * static_cast<double>(options.max_work)))) {
+    search_regions();
+  } else {
+    std::size_t stride = 1;
+    if (predicted > static_cast<double>(options.max_work)) {
+      stride = 7919;  // a prime, made coprime with nt: j -> j * stride mod nt is a permutation
+      while (std::gcd(stride, nt) != 1) stride += 2;
+    }
+    for (std::size_t j = 0; j < nt && !exhausted; ++j) {
+      const std::size_t t = (j * stride) % nt;
+      if (t >= head && std::isfinite(m.normal_err[t])) evaluate(m.normal[t], fsample[t]);
+    }
+    // The cross products of edge pairs of small hulls.
+    if (m.edges.size() <= options.max_pair_edges)
+      for (std::size_t i = 0; i < m.edges.size() && !exhausted; ++i)
+        for (std::size_t j = i + 1; j < m.edges.size() && !exhausted; ++j) {
+          const V3 n = cross(m.verts[m.edges[i].b] - m.verts[m.edges[i].a],
+                             m.verts[m.edges[j].b] - m.verts[m.edges[j].a]);
+          Sample pair;
+          if (sqr_length(n) > 0.0) evaluate(normalize(n), pair);
+        }
+    if (!(best.volume < inf)) {
+      // Budget too small for a single candidate: the box of the coordinate axes.
+      const V3 axes[3] = {V3{1, 0, 0}, V3{0, 1, 0}, V3{0, 0, 1}};
+      ev.fit(axes, best);
+    }
+    if (options.refine) refine(ev, m, best, work, options.max_work + options.max_work / 16);
+
+    if (options.edge_arcs && !exhausted) {
+      // Branch and bound over the arcs (see the header comment for the bound).
+
+      struct Arc {
+        V3 a, b;        // n(t) = cos(t) a + sin(t) b
+        double margin;  // angular error of the arc's ends
+        double diam;    // diameter bound of the hull's projection along the arc's pole a x b
+      };
+      struct Piece {
+        double bound;
+        std::uint32_t arc;
+        double lo, hi;    // angle interval
+        Sample slo, shi;  // f, width along n and chord cosines at its ends
+        bool operator<(const Piece& o) const { return bound > o.bound; }  // min-heap
+      };
+      std::vector<Arc> arcs;
+      std::priority_queue<Piece> heap;
+      // Lower bound of f over the piece (and within the arc's margin of it). The width along n
+      // is concave on the arc: at least its chord between the ends. The rectangle area at t is
+      // at least the area at an end t' shrunk by the rotation by |t - t'| (plus the margin) that
+      // maps the frames at t' to those at t: the larger of the chord factor (chord_factor, per
+      // side) and the Lipschitz factor of the header comment. On each of K sub-intervals the
+      // bound is the smaller chord width times the larger of the two ends' area bounds at the
+      // sub-interval's far points.
+      const auto lower_bound = [&](const Piece& p) {
+        if (!(std::isfinite(p.slo.value) && std::isfinite(p.shi.value) && min_width > 0.0))
+          return 0.0;
+        if (!(p.slo.width > 0.0 && p.shi.width > 0.0)) return 0.0;
+        const Arc& arc = arcs[p.arc];
+        const double wm = 4.0 * arc.margin * diam;
+        const double alo = p.slo.value / p.slo.width, ahi = p.shi.value / p.shi.width;
+        const auto area = [&](double a, const Sample& e, double d) {
+          const double g =
+              1.0 + (0.7071067811865476 * d * arc.diam + arc.margin * diam) / min_width;
+          const double k = chord_factor(e.sec_rect, e.tan_rect, d + arc.margin);
+          return a * std::max(1.0 / (g * g), k * k);
+        };
+        constexpr int K = 8;
+        const double len = p.hi - p.lo;
+        double bound = inf;
+        for (int j = 0; j < K; ++j) {
+          const double x0 = len * j / K, x1 = len * (j + 1) / K;
+          const double w0 = p.slo.width + (p.shi.width - p.slo.width) * (j / double(K));
+          const double w1 = p.slo.width + (p.shi.width - p.slo.width) * ((j + 1) / double(K));
+          const double w = std::min(w0, w1) * (1.0 - 4.0 * eps) - wm;
+          if (!(w > 0.0)) return 0.0;
+          const double rect = std::max(area(alo, p.slo, x1), area(ahi, p.shi, len - x0));
+          bound = std::min(bound, w * rect);
+        }
+        return bound;
+      };
+      // Projection diameters per arc cost O(h) each; above this the global one is used.
+      const bool per_arc_diam = m.edges.size() * h <= 50000000u;
+      bool proved = all_trusted && min_width > 0.0;
+      // (A hull flat to rounding has no usable width bound: its arcs are left unsearched.)
+      for (const Mesh::Edge& e : (min_width > 0.0 ? std::span<const Mesh::Edge>(m.edges)
+                                                  : std::span<const Mesh::Edge>())) {
+        if (!std::isfinite(m.normal_err[e.f]) || !std::isfinite(m.normal_err[e.g])) continue;
+        const V3 a = m.normal[e.f];
+        const double c = dot(a, m.normal[e.g]);
+        const V3 s = m.normal[e.g] - c * a;
+        const double sn = length(s);
+        const V3 b = sn > 0.0 ? (1.0 / sn) * s : complete_basis(a).axis[1];
+        double arc_diam = diam;
+        if (per_arc_diam) {
+          const V3 pole = normalize(cross(a, b));
+          double r2 = 0.0;
+          for (const V3& q : m.verts) {
+            const V3 d = q - centre;
+            const double z = dot(d, pole);
+            r2 = std::max(r2, sqr_length(d) - z * z);
+          }
+          arc_diam = std::min(diam, 2.0 * std::sqrt(r2) * (1.0 + 1e-12) + 8.0 * eps * diam);
+        }
+        arcs.push_back({a, b, m.normal_err[e.f] + m.normal_err[e.g] + 8.0 * eps, arc_diam});
+        Piece p{0.0,          static_cast<std::uint32_t>(arcs.size() - 1),
+                0.0,          std::atan2(sn, c),
+                fsample[e.f], fsample[e.g]};
+        p.bound = lower_bound(p);
+        if (p.bound < (1.0 - tol) * best.volume) heap.push(p);
+      }
+      r.arcs = arcs.size();
+      const double best_before = best.volume;
+      while (!heap.empty()) {
+        const double threshold = (1.0 - tol) * best.volume;
+        if (heap.top().bound >= threshold) break;  // every piece left is proved
+        const Piece p = heap.top();
+        heap.pop();
+        // Splitting cannot help a piece below 1e-12 rad, nor one with an end whose own bound
+        // at zero distance fails (the arc ends' normal errors alone exceed the tolerance).
+        Piece at_lo = p, at_hi = p;
+        at_lo.hi = at_lo.lo;
+        at_lo.shi = at_lo.slo;
+        at_hi.lo = at_hi.hi;
+        at_hi.slo = at_hi.shi;
+        if (p.hi - p.lo < 1e-12 || lower_bound(at_lo) < threshold ||
+            lower_bound(at_hi) < threshold) {
+          proved = false;
+          continue;
+        }
+        const Arc& arc = arcs[p.arc];
+        const double mid = 0.5 * (p.lo + p.hi);
+        Sample sm;
+        if (!evaluate(normalize(std::cos(mid) * arc.a + std::sin(mid) * arc.b), sm)) break;
+        Piece left{0.0, p.arc, p.lo, mid, p.slo, sm};
+        Piece right{0.0, p.arc, mid, p.hi, sm, p.shi};
+        left.bound = lower_bound(left);
+        right.bound = lower_bound(right);
+        const double t2 = (1.0 - tol) * best.volume;
+        if (left.bound < t2) heap.push(left);
+        if (right.bound < t2) heap.push(right);
+      }
+      r.certified = proved && !exhausted && options.certify_tol > 0.0;
+      if (best.volume < best_before && options.refine && !exhausted)
+        refine(ev, m, best, work, options.max_work);
+    }
   }
   r.box = to_box<T>(best, ref);
   r.volume = static_cast<T>(best.volume);

@@ -21,36 +21,60 @@
 //     at their ends, the interval of smallest lower bound split first) until every interval's
 //     lower bound is >= (1 - certify_tol) * best (certify_tol = 0: a search to 1e-3, not a
 //     proof); the descent is rerun from the result when it improved.
-//     Bound: the arc of edge e is n(t) = cos(t) a + sin(t) b, a rotation about the pole a x b.
-//     The width along n(t), W(t) = min over vertices v of n(t) . (p_e - v), is a minimum of
-//     sinusoids that are >= 0 on the arc, hence concave: on an interval it is >= the smaller
-//     end value. For the rectangle area A(t): rotating the best frame at t back to an end t'
-//     (angle d) turns its sides u, v by 2 sin(d/2) |sin| and |cos| of their angle to the pole,
-//     changing each width by at most that times D (a diameter bound of the hull's projection
-//     along the pole), so A(t') <= (w_u + d s D)(w_v + d c D) and, every width being >= L
-//     (twice the distance from the vertex centroid to the nearest facet plane),
-//     A(t) >= A(t') / (1 + d D / (sqrt(2) L))^2. With the arc ends' normal errors m (the
-//     rounded cross products) the interval is widened by m on every side.
+//     Bound: the arc of edge e is n(t) = cos(t) a + sin(t) b, a rotation about the pole a x b
+//     (the edge direction, perpendicular to every n(t)). The width along n(t),
+//     W(t) = min over vertices v of n(t) . (p_e - v), is a minimum of sinusoids that are >= 0
+//     on the arc, hence concave: on an interval it is >= the chord of its end values. Every
+//     frame at t is a frame at an end t' rotated by d = |t - t'| about the pole, so the
+//     rectangle area A(t) >= A(t') k^2 for the factor k of either argument:
+//     - chords: for a direction x at t' with extreme vertices p, q (width(x) = x . (q - p)),
+//       width(R x) >= (R x) . (q - p) >= width(x) (1 - d^2/2 sec - d tan), where sec =
+//       |q - p| / width(x) and tan = |(q - p) . n(t')| / width(x) (a rotation about an axis
+//       perpendicular to n only tilts x towards n to first order); the largest ratios over all
+//       x come from the rotating calipers (at the edge normals of the projection);
+//     - Lipschitz: rotating turns the sides u, v by 2 sin(d/2) |sin| and |cos| of their angle
+//       to the pole, changing each width by at most that times D (a diameter bound of the
+//       hull's projection along the pole), and every width is >= L (twice the distance from
+//       the vertex centroid to the nearest facet plane): k = 1 / (1 + d D / (sqrt(2) L)).
+//     The interval is cut in 8 parts, each bounded by its smaller chord width times the larger
+//     of the two ends' area bounds; the arc ends' normal errors m widen every distance by m.
+//     The chord factor makes the loss second order for smooth, round sets (tan is about the
+//     vertex spacing): 10^5 points in a ball need ~7000 evaluations instead of 5.6 10^4.
+//  3'. hulls whose facet pass alone would take half of max_work (e.g. 10^5 points on a
+//     sphere: 2 10^5 facets), or search = regions, replace steps 2-3 (after 64 facets) by a
+//     best-first branch and bound over regions of normals: squares of the cube faces +x, +y,
+//     +z in gnomonic coordinates (f(-n) = f(n)), split in four; a region of angular radius r
+//     around n0 has f >= W(n0) A(n0) times the chord (or Lipschitz) factors of W and A for
+//     rotations by r (every frame with a normal in it is a frame at n0 rotated by at most r
+//     about an axis perpendicular to n0). Such a
+//     set's f is flat (10^5 points on a sphere: within ~10^-4 of the minimum everywhere), a
+//     proof would take ~5 10^5 evaluations; when the regions left predict more work than the
+//     budget has left (each about (r / r')^2 evaluations, r' the radius where the first-order
+//     loss of its bound drops below its gap, at most 1024), the search stops (checked every
+//     512 evaluations once a sixteenth of max_work is spent) as if out of budget
+//     (limit_exceeded) and returns the best box found, descended.
 //     Evaluating f: the projection's hull vertices are silhouette vertices (an incident facet
 //     facing n and one facing away, undecided signs counting as both); the edges are grouped
-//     in cells of nearby facet normals (a cube map on the Gauss sphere) with a bounding cone, so
-//     only cells whose cone meets the plane n^perp are visited; the 2D hull of those vertices
-//     and rotating calipers give the rectangle, support ascents over the vertex graph the width.
-// Guarantee: never worse than the best facet-flush box (exact up to rounding); when `certified`
-// is true, no enclosing box of the point set has volume below (1 - certify_tol) * volume (up to
-// the rounding of the evaluated f values and of the hull vertices relative to the first). A
-// sliver facet whose rounded normal is not trusted (sine of its angle < 1e-8, e.g. from a point
-// that rounding moved a hair off a hull edge) leaves its arcs unsearched and the result
+//     in cells of nearby facet normals (a cube map on the Gauss sphere, blocks of 4 x 4 cells)
+//     with bounding cones, so only blocks and cells whose cone meets the plane n^perp are
+//     visited, and the edges' facet normals are stored in float next to them (with their
+//     rounding in the error bound); the 2D hull of those vertices and rotating calipers give
+//     the rectangle, support ascents over the vertex graph (started from the cube-map square
+//     of n) the width.
+// Guarantee: never worse than the best facet-flush box (exact up to rounding) unless the
+// facet pass is replaced by regions (3'); when `certified` is true, no enclosing box of the
+// point set has volume below (1 - certify_tol) * volume (up to the rounding of the evaluated f
+// values, of the chord ratios and of the hull vertices relative to the first). A sliver facet
+// whose rounded normal is not trusted (sine of its angle < 1e-8, e.g. from a point that
+// rounding moved a hair off a hull edge) leaves its arcs unsearched and the result
 // uncertified. This replaces O'Rourke's exact event sweep over the smooth pieces of f (and
-// Jylanki's 2015 enumeration of edge triples, itself only conjectured optimal); the bound is
-// first order, so a flat f (points on or in a sphere: f varies by ~1% over all normals) needs
-// many intervals: ~5 10^4 evaluations for 10^5 points in a ball (1400 hull vertices), while a
-// box-like or ellipsoidal set needs few. Tests compare with dense orientation searches refined
-// by descent and the closed-form regular tetrahedron (minimum box = the cube of its edges, no
-// face flush with a facet).
+// Jylanki's 2015 enumeration of edge triples, itself only conjectured optimal). Tests compare
+// with dense orientation searches refined by descent and the closed-form regular tetrahedron
+// (minimum box = the cube of its edges, no face flush with a facet).
 //
-// Exactness: the hull and the 2D hulls/calipers of the projections are exact for the rounded
-// projected points; normals, projections, extents and volume are rounded constructions
+// Exactness: the hull and the 2D hulls of the projections are exact for the rounded projected
+// points; caliper steps (a near tie can only shrink an extent by rounding), normals,
+// projections, extents and volume are rounded constructions
 // (double, then T). Every input point lies inside the box up to a few ulps of the set's scale
 // (the returned box is always refitted over every hull vertex).
 //
@@ -59,16 +83,16 @@
 // Degenerate input: all points equal -> ok, zero box at the point; collinear -> ok, a box of
 // zero width and height along the segment; coplanar -> ok, the minimum-area rectangle in the
 // plane with extent[2] = 0 (volume 0). Empty -> empty_input; NaN/Inf -> non_finite_input.
-// Budget: max_work bounds the work of the evaluations (cells, edges and vertices visited;
-// default 4 10^8, a few seconds). When the first 64 facets show that the facet pass alone
-// would exceed it (hulls of ~10^5 vertices, e.g. points on a sphere), the facets are visited in
-// a spread (stride) order and the arcs are skipped. When it runs out, the best box so far
-// (descended) is returned with Status::limit_exceeded and certified = false (it still encloses
-// every point).
+// Budget: max_work bounds the work of the evaluations (blocks, cells, edges and vertices
+// visited; default 4 10^8, a few seconds). When the first 64 facets show that the facet pass
+// alone would exceed it without edge_arcs, the facets are visited in a spread (stride) order.
+// When it runs out (or the regions predict so, 3'), the best box so far (descended) is
+// returned with Status::limit_exceeded and certified = false (it still encloses every point).
 // Cost: hull + (F + evaluations) * (visited cells and edges + silhouette log silhouette); the
-// evaluations are F facet normals plus the branch and bound's (a few per arc on box-like sets;
-// see above for flat f). 10^5 points: cuboid (181 hull vertices) ~1800 evaluations, ellipsoid
-// (1400) ~10^4, ball (1400) ~5.6 10^4, all certified; sphere (10^5) budget-limited.
+// evaluations are F facet normals plus the branch and bound's (a few per arc on box-like and
+// round sets). 10^5 points: cuboid (181 hull vertices) ~1000 evaluations, ellipsoid (1400)
+// ~3700, ball (1400) ~6600, all certified; sphere (10^5 vertices) ~2700 region evaluations,
+// stopped as hopeless (10^4 points on a sphere: arcs, ~2 10^4 evaluations, certified).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -81,6 +105,13 @@
 
 namespace locus {
 
+/// The branch and bound of min_box (see the header comment).
+enum class MinBoxSearch : std::uint8_t {
+  automatic,  ///< arcs, or regions when the facet pass alone would take half of max_work
+  arcs,       ///< over the hull edges' arcs of normals (step 3)
+  regions,    ///< over regions of normals (step 3')
+};
+
 /// Options of min_box.
 struct MinBoxOptions {
   std::size_t max_pair_edges = 60;  ///< edge-pair candidates only for hulls with <= this many edges
@@ -88,6 +119,7 @@ struct MinBoxOptions {
   bool edge_arcs = true;      ///< search every hull edge's arc of supporting normals (O'Rourke)
   double certify_tol = 1e-6;  ///< relative gap proved by branch and bound on the arcs (0: skip)
   std::uint64_t max_work = 400000000;  ///< budget of work units (see the header comment)
+  MinBoxSearch search = MinBoxSearch::automatic;  ///< with edge_arcs: which branch and bound
 };
 
 /// The minimum-volume enclosing box found (see the header comment for its guarantee).
