@@ -56,14 +56,16 @@ struct PolygonRect {
 
 PolygonRect rect_of_polygon(const std::vector<V2>& p, const std::vector<double>& z) {
   const std::size_t k = p.size();
-  const auto at = [&](std::size_t i) -> const V2& { return p[i % k]; };
+  // (Indices stay below 3k + 1.)
+  const auto wrap = [k](std::size_t i) { return i < k ? i : (i < 2 * k ? i - k : i - 2 * k); };
+  const auto at = [&](std::size_t i) -> const V2& { return p[wrap(i)]; };
   PolygonRect best{inf, V2{1.0, 0.0}, {0.0, 0.0}, V2{}, 1.0, 0.0};
   // Largest squared chord ratios, times the squared width.
   double sec2 = 1.0, tan2 = 0.0;
   // The chord from vertex i to j at the normal of an edge u, width2 = (x . chord)^2 * |u|^2.
   const auto chord = [&](std::size_t i, std::size_t j, double width2) {
     const V2 d = at(j) - at(i);
-    const double dz = z[j % k] - z[i % k];
+    const double dz = z[wrap(j)] - z[wrap(i)];
     sec2 = std::max(sec2, (sqr_length(d) + dz * dz) / width2);
     tan2 = std::max(tan2, dz * dz / width2);
   };
@@ -812,6 +814,7 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
         V3 a, b;        // n(t) = cos(t) a + sin(t) b
         double margin;  // angular error of the arc's ends
         double diam;    // diameter bound of the hull's projection along the arc's pole a x b
+        bool coarse;    // diam is the hull's (the projection's is computed when first needed)
       };
       struct Piece {
         double bound;
@@ -868,18 +871,8 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
         const V3 s = m.normal[e.g] - c * a;
         const double sn = length(s);
         const V3 b = sn > 0.0 ? (1.0 / sn) * s : complete_basis(a).axis[1];
-        double arc_diam = diam;
-        if (per_arc_diam) {
-          const V3 pole = normalize(cross(a, b));
-          double r2 = 0.0;
-          for (const V3& q : m.verts) {
-            const V3 d = q - centre;
-            const double z = dot(d, pole);
-            r2 = std::max(r2, sqr_length(d) - z * z);
-          }
-          arc_diam = std::min(diam, 2.0 * std::sqrt(r2) * (1.0 + 1e-12) + 8.0 * eps * diam);
-        }
-        arcs.push_back({a, b, m.normal_err[e.f] + m.normal_err[e.g] + 8.0 * eps, arc_diam});
+        arcs.push_back(
+            {a, b, m.normal_err[e.f] + m.normal_err[e.g] + 8.0 * eps, diam, per_arc_diam});
         Piece p{0.0,          static_cast<std::uint32_t>(arcs.size() - 1),
                 0.0,          std::atan2(sn, c),
                 fsample[e.f], fsample[e.g]};
@@ -891,8 +884,24 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       while (!heap.empty()) {
         const double threshold = (1.0 - tol) * best.volume;
         if (heap.top().bound >= threshold) break;  // every piece left is proved
-        const Piece p = heap.top();
+        Piece p = heap.top();
         heap.pop();
+        if (arcs[p.arc].coarse) {
+          // The diameter of the projection along the pole (O(h)) before the first split.
+          Arc& arc = arcs[p.arc];
+          const V3 pole = normalize(cross(arc.a, arc.b));
+          double r2 = 0.0;
+          for (const V3& q : m.verts) {
+            const V3 d = q - centre;
+            const double z = dot(d, pole);
+            r2 = std::max(r2, sqr_length(d) - z * z);
+          }
+          arc.diam = std::min(diam, 2.0 * std::sqrt(r2) * (1.0 + 1e-12) + 8.0 * eps * diam);
+          arc.coarse = false;
+          p.bound = std::max(p.bound, lower_bound(p));
+          if (p.bound < threshold) heap.push(p);
+          continue;
+        }
         // Splitting cannot help a piece below 1e-12 rad, nor one with an end whose own bound
         // at zero distance fails (the arc ends' normal errors alone exceed the tolerance).
         Piece at_lo = p, at_hi = p;
