@@ -609,6 +609,7 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
     double value = inf, width = 0.0, sec_width = inf, tan_width = inf, sec_rect = inf,
            tan_rect = inf;
   };
+  Frame last{};  // the frame of the last evaluation
   const auto evaluate = [&](const V3& n, Sample& out) {
     if (work > options.max_work) {
       exhausted = true;
@@ -633,6 +634,7 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       }
     }
     out = {f.volume, 2.0 * f.extent[2], f.sec_width, f.tan_width, f.sec_rect, f.tan_rect};
+    last = f;
     consider(f);
     return true;
   };
@@ -683,6 +685,19 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       return normalize(n);
     };
     bool proved = true;
+    // The best frames evaluated (starts of descents when the search stops unproved).
+    std::vector<Frame> starts;
+    starts.reserve(8);
+    const auto keep_start = [&](const Sample& s) {
+      if (!std::isfinite(s.value) ||
+          (starts.size() == starts.capacity() && !(s.value < starts.back().volume)))
+        return;
+      if (starts.size() == starts.capacity()) starts.pop_back();
+      starts.insert(
+          std::upper_bound(starts.begin(), starts.end(), last,
+                           [](const Frame& x, const Frame& y) { return x.volume < y.volume; }),
+          last);
+    };
     // Evaluate the centre, bound the region, keep it when the bound is below the threshold.
     const auto visit = [&](int face, double u0, double u1, double v0, double v1) {
       const V3 n0 = normal_at(face, 0.5 * (u0 + u1), 0.5 * (v0 + v1));
@@ -695,6 +710,7 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       angle = angle * (1.0 + 1e-12) + 1e-14;
       Sample s;
       if (!evaluate(n0, s)) return false;
+      keep_start(s);
       double bound = 0.0, slope = inf;
       if (std::isfinite(s.value) && s.width > 0.0) {
         const double rect = s.value / s.width;
@@ -743,6 +759,7 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
           visit(face, -1.0 + 2.0 * i / grid, -1.0 + 2.0 * (i + 1) / grid, -1.0 + 2.0 * j / grid,
                 -1.0 + 2.0 * (j + 1) / grid);
     std::size_t splits = 0;
+    bool given_up = false;
     while (!heap.empty() && !exhausted) {
       std::pop_heap(heap.begin(), heap.end(), later);
       const Region q = heap.back();
@@ -755,10 +772,36 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       if (!visit(q.face, q.u0, um, q.v0, vm) || !visit(q.face, um, q.u1, q.v0, vm) ||
           !visit(q.face, q.u0, um, vm, q.v1) || !visit(q.face, um, q.u1, vm, q.v1))
         break;
-      if (++splits % 128 == 0 && hopeless()) exhausted = true;
+      if (++splits % 128 == 0 && hopeless()) {
+        exhausted = given_up = true;
+        break;
+      }
     }
     r.certified = proved && heap.empty() && !exhausted && options.certify_tol > 0.0;
-    if (options.refine) refine(ev, m, best, work, options.max_work + options.max_work / 16);
+    if (given_up) {
+      // Facet normals (where f has its local minima more often than at region centres), in a
+      // stride order spreading them over the hull, with up to an eighth of the budget.
+      std::size_t stride = 7919;  // coprime with nt: j -> j * stride mod nt is a permutation
+      while (std::gcd(stride, nt) != 1) stride += 2;
+      const std::uint64_t stop = work + options.max_work / 8;
+      Sample s;
+      for (std::size_t j = 0; j < nt && work < stop; ++j) {
+        const std::size_t t = (j * stride) % nt;
+        if (!std::isfinite(m.normal_err[t])) continue;
+        if (!evaluate(m.normal[t], s)) break;
+        keep_start(s);
+      }
+    }
+    if (options.refine) {
+      refine(ev, m, best, work, options.max_work + options.max_work / 16);
+      // Unproved: f is flat or the budget small, descend from the other best frames too (the
+      // minimum may be in another basin).
+      if (!r.certified)
+        for (Frame& f : starts) {
+          refine(ev, m, f, work, options.max_work + options.max_work / 8);
+          if (f.volume < best.volume) best = f;
+        }
+    }
   };
 
   // Every facet normal (the ends of the arcs; the facet-flush boxes). When the first ones

@@ -543,7 +543,7 @@ TYPED_TEST(MinBox, RegionSearchCertifiedLikeArcs) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
 #if defined(__SANITIZE_ADDRESS__)
-  const int n = 80, samples = 200, shape_count = 1;
+  const int n = 60, samples = 200, shape_count = 1;
 #else
   const int n = 400, samples = 1500, shape_count = 3;
 #endif
@@ -589,7 +589,7 @@ TYPED_TEST(MinBox, RegionSearchStopsWhenHopeless) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
 #if defined(__SANITIZE_ADDRESS__)
-  const int n = 600;
+  const int n = 400;
 #else
   const int n = 3000;
 #endif

@@ -52,7 +52,9 @@
 //     budget has left (each about (r / r')^2 evaluations, r' the radius where the first-order
 //     loss of its bound drops below its gap, at most 1024), the search stops (checked every
 //     512 evaluations once a sixteenth of max_work is spent) as if out of budget
-//     (limit_exceeded) and returns the best box found, descended.
+//     (limit_exceeded), evaluates facet normals in a spread (stride) order with up to an
+//     eighth of max_work (f's local minima lie on the arcs, often at facet normals, rarely at
+//     region centres), and returns the best box of descents from the 8 best frames found.
 //     Evaluating f: the projection's hull vertices are silhouette vertices (an incident facet
 //     facing n and one facing away, undecided signs counting as both); the edges are grouped
 //     in cells of nearby facet normals (a cube map on the Gauss sphere, blocks of 4 x 4 cells)
@@ -92,7 +94,8 @@
 // evaluations are F facet normals plus the branch and bound's (a few per arc on box-like and
 // round sets). 10^5 points: cuboid (181 hull vertices) ~1000 evaluations, ellipsoid (1400)
 // ~3700, ball (1400) ~6600, all certified; sphere (10^5 vertices) ~2700 region evaluations,
-// stopped as hopeless (10^4 points on a sphere: arcs, ~2 10^4 evaluations, certified).
+// stopped as hopeless, then ~5000 facet normals (2 10^4 points on a sphere: arcs, ~6 10^4
+// evaluations, certified).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
