@@ -474,10 +474,12 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
     }
 
   {
-    // Cube-map cells of about 16 edges, keyed by the mean normal of each edge's facets, in
+    // Cube-map cells of about 2 edges (16 above 16384 edges, where the blocks' tests would
+    // cost more than the edges' saved), keyed by the mean normal of each edge's facets, in
     // blocks of 4 x 4 cells (sorted by block, then by cell, so a block's cells are consecutive).
-    m.grid = std::max<std::size_t>(
-        1, static_cast<std::size_t>(std::sqrt(static_cast<double>(m.edges.size()) / 96.0)));
+    const double per_cell = m.edges.size() <= 16384 ? 2.0 : 16.0;
+    m.grid = std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(
+                                          static_cast<double>(m.edges.size()) / (6.0 * per_cell))));
     const std::size_t g = m.grid, bg = (g + 3) / 4;
     const auto key = [&](const Mesh::Edge& e) {
       const std::size_t sq = m.square(m.normal[e.f] + m.normal[e.g]);

@@ -57,12 +57,12 @@
 //     region centres), and returns the best box of descents from the 8 best frames found.
 //     Evaluating f: the projection's hull vertices are silhouette vertices (an incident facet
 //     facing n and one facing away, undecided signs counting as both); the edges are grouped
-//     in cells of nearby facet normals (a cube map on the Gauss sphere, blocks of 4 x 4 cells)
-//     with bounding cones, so only blocks and cells whose cone meets the plane n^perp are
-//     visited, and the edges' facet normals are stored in float next to them (with their
-//     rounding in the error bound); the 2D hull of those vertices and rotating calipers give
-//     the rectangle, support ascents over the vertex graph (started from the cube-map square
-//     of n) the width.
+//     in cells of nearby facet normals (a cube map on the Gauss sphere, cells of ~2 edges, or
+//     ~16 on hulls of over 16384 edges, in blocks of 4 x 4 cells) with bounding cones, so
+//     only blocks and cells whose cone meets the plane n^perp are visited, and the edges'
+//     facet normals are stored in float next to them (with their rounding in the error
+//     bound); the 2D hull of those vertices and rotating calipers give the rectangle, support
+//     ascents over the vertex graph (started from the cube-map square of n) the width.
 // Guarantee: never worse than the best facet-flush box (exact up to rounding) unless the
 // facet pass is replaced by regions (3'); when `certified` is true, no enclosing box of the
 // point set has volume below (1 - certify_tol) * volume (up to the rounding of the evaluated f
