@@ -718,7 +718,8 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
         const double rect = s.value / s.width;
         const double kw =
             std::max(chord_factor(s.sec_width, s.tan_width, angle), 1.0 - angle * diam / s.width);
-        const double g = 1.0 + angle * diam / min_width;
+        // (min_width bounds every width only when every facet normal is trusted.)
+        const double g = all_trusted ? 1.0 + angle * diam / min_width : inf;
         const double ka = std::max(chord_factor(s.sec_rect, s.tan_rect, angle), 1.0 / g);
         bound = s.width * kw * rect * ka * ka * (1.0 - 8.0 * eps);
         slope =

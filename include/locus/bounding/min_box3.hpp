@@ -69,7 +69,7 @@
 // values, of the chord ratios and of the hull vertices relative to the first). A sliver facet
 // whose rounded normal is not trusted (sine of its angle < 1e-8, e.g. from a point that
 // rounding moved a hair off a hull edge) leaves its arcs unsearched and the result
-// uncertified. This replaces O'Rourke's exact event sweep over the smooth pieces of f (and
+// uncertified (the regions then use the chord factors only: L is not a bound). This replaces O'Rourke's exact event sweep over the smooth pieces of f (and
 // Jylanki's 2015 enumeration of edge triples, itself only conjectured optimal). Tests compare
 // with dense orientation searches refined by descent and the closed-form regular tetrahedron
 // (minimum box = the cube of its edges, no face flush with a facet).
