@@ -5,11 +5,14 @@
 #include <locus/distance/point_aligned_box.hpp>
 #include <locus/distance/point_oriented_box.hpp>
 #include <locus/distance/point_rectangle.hpp>
+#include <locus/distance/detail/branchless.hpp>
 
 #include "distance/exact.hpp"
 #include "distance/harness.hpp"
 #include "support/typed.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -241,4 +244,31 @@ TYPED_TEST(PointBoxTest, NonFiniteAndEmptyInputGiveNaNResult) {
       EXPECT_TRUE(dist::is_nan_result(distance(p, o))) << k;
     }
   }
+}
+
+// detail/branchless.hpp, the selection primitives of the box fast paths, against the plain
+// conditional and std::clamp on random values, signed zeros, infinities and NaN.
+TEST(Branchless, SelectAndClampMatchTheConditionalForms) {
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const double inf = std::numeric_limits<double>::infinity();
+  const double specials[] = {0.0, -0.0, 1.0, -1.0, inf, -inf, 5e-324, -1e308};
+  for (int i = 0; i < 4000; ++i) {
+    const double x = i < 64 ? specials[i % 8] : rng.uniform<double>(-4, 4);
+    const double y = i < 64 ? specials[(i / 8) % 8] : rng.uniform<double>(-4, 4);
+    const bool c = (i & 1) != 0;
+    // Bit-exact: the blend must keep -0.0 and subnormals as they are.
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(detail::select(c, x, y)),
+              std::bit_cast<std::uint64_t>(c ? x : y)) << i;
+    const float xf = float(x), yf = float(y);
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(detail::select(c, xf, yf)),
+              std::bit_cast<std::uint32_t>(c ? xf : yf)) << i;
+    const double lo = std::min(x, y), hi = std::max(x, y), v = rng.uniform<double>(-5, 5);
+    ASSERT_EQ(detail::clamp_minmax(v, lo, hi), std::clamp(v, lo, hi)) << i;
+  }
+  // A NaN argument stays NaN (never clamped to a finite-looking bound).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(detail::clamp_minmax(nan, 0.0, 1.0)));
+  EXPECT_TRUE(std::isnan(detail::select(true, nan, 1.0)));
+  EXPECT_EQ(detail::select(false, nan, 1.0), 1.0);
 }

@@ -4,6 +4,7 @@
 // defining identities of each factorisation.
 #include <locus/core/linear_system.hpp>
 #include <locus/numeric/decompose.hpp>
+#include <locus/numeric/matrix.hpp>
 
 #include "support/typed.hpp"
 
