@@ -13,6 +13,7 @@
 #include <locus/distance/line_curve.hpp>
 #include <locus/distance/line_ellipse.hpp>
 #include <locus/distance/line_quadratic_curve.hpp>
+#include <locus/distance/detail/pair_candidates.hpp>
 
 #include "distance/harness.hpp"
 #include "distance/side_curved.hpp"
@@ -895,4 +896,46 @@ TYPED_TEST(LinearCurveTest, CurveNonFinite) {
   EXPECT_TRUE(dist::is_nan_result(distance(Line<T, 3>{{0, 0, 0}, {1, 0, 0}}, bad)));
   const NurbsCurve<T, 2> negw{1, {{0, 0}, {1, 1}}, {T(1), T(-1)}, {0, 0, 1, 1}};
   EXPECT_TRUE(dist::is_nan_result(distance(negw, Ray<T, 2>{{0, 0}, {1, 0}})));
+}
+
+// detail/pair_candidates.hpp on its own, against a brute-force scan of the offered pairs: the
+// best is the FIRST pair of smallest score, NaN scores are never taken, a runner-up is always
+// distinct from the best (points more than sqrt(sep2) apart) and scores no better, and tied()
+// compares distances with the absolute tolerance.
+TEST(PairCandidates, BestIsTheFirstSmallestAndTheRunnerUpIsDistinct) {
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  using PC = detail::PairCandidates<double, 2, int, int>;
+  for (int trial = 0; trial < 500; ++trial) {
+    PC pc;
+    pc.sep2 = 0.25;
+    struct Offer { double d2; Vec2d xa, xb; };
+    std::vector<Offer> offers;
+    const int n = 1 + trial % 9;
+    for (int k = 0; k < n; ++k) {
+      // Scores on a coarse lattice (ties are common), points on a coarse lattice (coincident
+      // pairs are common), now and then a NaN score.
+      const double d2 = rng.uniform_int(0, 9) == 0 ? std::numeric_limits<double>::quiet_NaN()
+                                                    : double(rng.uniform_int(0, 4));
+      const Vec2d xa{double(rng.uniform_int(0, 2)), 0.0}, xb{double(rng.uniform_int(0, 2)), 1.0};
+      offers.push_back({d2, xa, xb});
+      pc.offer(d2, k, k, xa, xb);
+    }
+    int first_best = -1;
+    for (int k = 0; k < n; ++k)
+      if (!std::isnan(offers[std::size_t(k)].d2) &&
+          (first_best < 0 || offers[std::size_t(k)].d2 < offers[std::size_t(first_best)].d2))
+        first_best = k;
+    ASSERT_EQ(pc.found, first_best >= 0) << trial;
+    if (first_best < 0) continue;
+    EXPECT_EQ(pc.best.pa, first_best) << trial;
+    EXPECT_EQ(pc.best.d2, offers[std::size_t(first_best)].d2) << trial;
+    if (pc.has_alt) {
+      EXPECT_TRUE(pc.distinct(pc.alt, pc.best)) << trial;
+      EXPECT_GE(pc.alt.d2, pc.best.d2) << trial;
+      EXPECT_EQ(pc.tied(0.0), pc.alt.d2 == pc.best.d2) << trial;
+    } else {
+      EXPECT_FALSE(pc.tied(1e300)) << trial;
+    }
+  }
 }
