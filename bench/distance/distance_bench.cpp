@@ -7,6 +7,8 @@
 // Every pair runs the same templated loop (cycle()) with three kinds of query on the same inputs:
 //   <pair>/distance<T>      locus::distance: the full result (closest points, parameters, sqrt);
 //   <pair>/sqr_distance<T>  locus::sqr_distance: the squared distance only, like CGAL's;
+//   <pair>/sqr_distances<T> locus::sqr_distances (distance/batch.hpp): the same values for all
+//                           4096 pairs in one call (items = queries), several per SIMD instruction;
 //   <pair>/cgal<Kernel>     the peer on the double inputs (converted once, outside the loop):
 //     CGAL::squared_distance with Simple_cartesian<double> (plain floating point, the fair peer)
 //     and Exact_predicates_inexact_constructions_kernel (what CGAL users usually take), when
@@ -25,6 +27,7 @@
 
 #include "distance/distance_inputs.hpp"
 
+#include <locus/distance/batch.hpp>
 #include <locus/distance/point_aligned_box.hpp>
 #include <locus/distance/point_oriented_box.hpp>
 #include <locus/distance/point_triangle.hpp>
@@ -55,6 +58,24 @@ template <class Pair, class T, class Query>
 void locus_bench(benchmark::State& state) {
   const auto in = Pair::input(state);
   cycle(state, cast_all<T>(in.first), cast_all<T>(in.second), Query{});
+}
+
+// locus's batch form over all the inputs at once; items per second = queries per second.
+template <class Pair, class T>
+void batch_bench(benchmark::State& state) {
+  const auto in = Pair::input(state);
+  const auto a = cast_all<T>(in.first);
+  const auto b = cast_all<T>(in.second);
+  using A = typename decltype(a)::value_type;
+  using B = typename decltype(b)::value_type;
+  std::vector<T> out(a.size());
+  for (auto _ : state) {
+    locus::sqr_distances(std::span<const A>(a), std::span<const B>(b), std::span<T>(out));
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
+                          static_cast<std::int64_t>(a.size()));
 }
 
 // ---- the textbook peer for the boxes (no library has it) --------------------------------------
@@ -92,12 +113,15 @@ void textbook_bench(benchmark::State& state) {
 
 }  // namespace
 
-// Registers <name>/distance<T>, <name>/sqr_distance<T> for float and double.
+// Registers <name>/distance<T>, <name>/sqr_distance<T>, <name>/sqr_distances<T> for float and
+// double.
 #define LOCUS_BENCH_LOCUS(Pair, name, ...)                                                      \
   BENCHMARK(locus_bench<Pair, float, FullQuery>)->Name(name "/distance<float>") __VA_ARGS__;    \
   BENCHMARK(locus_bench<Pair, double, FullQuery>)->Name(name "/distance<double>") __VA_ARGS__;  \
   BENCHMARK(locus_bench<Pair, float, SqrQuery>)->Name(name "/sqr_distance<float>") __VA_ARGS__; \
-  BENCHMARK(locus_bench<Pair, double, SqrQuery>)->Name(name "/sqr_distance<double>") __VA_ARGS__
+  BENCHMARK(locus_bench<Pair, double, SqrQuery>)->Name(name "/sqr_distance<double>") __VA_ARGS__; \
+  BENCHMARK(batch_bench<Pair, float>)->Name(name "/sqr_distances<float>") __VA_ARGS__;           \
+  BENCHMARK(batch_bench<Pair, double>)->Name(name "/sqr_distances<double>") __VA_ARGS__
 
 LOCUS_BENCH_LOCUS(PointTriangle, "point_triangle");
 LOCUS_BENCH_LOCUS(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Batched squared distances: many queries of one pair type in one call, several per SIMD
+// instruction (rows dist3.pt-triangle, dist3.linear-linear, dist3.linear-triangle, dist3.pt-aabb,
+// dist3.pt-obb; the per-query functions are in the pair headers).
+//
+// sqr_distances(a, b, out) sets out[i] = sqr_distance(a[i], b[i]) for every i, for the pairs
+//   point - triangle, segment - segment, segment - triangle, point - aligned box and
+//   point - oriented box (3D, float and double),
+// either as two spans of equal length (query i pairs a[i] with b[i]) or as a span and one object
+// (every element against the same triangle, segment or box: the "one against many" form, e.g.
+// a point cloud against one triangle). Both argument orders are offered; out.size() must equal
+// the number of queries (LOCUS_ASSERT; with assertions off, min of the sizes is processed).
+//
+// Results: out[i] is EXACTLY the value sqr_distance(a[i], b[i]) of the pair's header returns, bit
+// for bit, for every input (NaN for non-finite input; exactly 0 for a segment meeting a triangle,
+// under the contact rule of segment_triangle.hpp), when the caller's code is compiled without
+// floating-point contraction (the default on x86-64 unless FMA is enabled, e.g. by -march=native);
+// with contraction the per-query functions may differ from these by rounding. The combinatorial
+// decisions are the per-query functions' own (exact predicates where they use them).
+//
+// Method: each query's common case (finite input, well-shaped triangles, segments not nearly
+// parallel, ...) is the per-query function's branch-free fast path, evaluated for 4 doubles or 8
+// floats at once (src/distance/lanes.hpp); the lanes it does not cover (non-finite or extreme
+// input, thin triangles, nearly parallel segments, segments that may touch a triangle) are
+// recomputed by the per-query function, which is why the results agree bit for bit. On x86-64 the
+// library carries an AVX2 and a baseline version and picks one at load time. Throughput (queries
+// per second, bench/distance/distance_bench.cpp): several times the per-query functions'.
+// No allocation; noexcept.
+
+#include <locus/core/vec.hpp>
+#include <locus/primitives/aligned_box.hpp>
+#include <locus/primitives/oriented_box.hpp>
+#include <locus/primitives/segment.hpp>
+#include <locus/primitives/triangle.hpp>
+
+#include <span>
+
+namespace locus {
+
+// The pairs and their "one against many" forms, declared for float and double (compiled in
+// src/distance/batch.cpp).
+#define LOCUS_BATCH_PAIR(A, B)                                                                 \
+  void sqr_distances(std::span<const A<float>> a, std::span<const B<float>> b,                 \
+                     std::span<float> out) noexcept;                                           \
+  void sqr_distances(std::span<const A<double>> a, std::span<const B<double>> b,               \
+                     std::span<double> out) noexcept;                                          \
+  void sqr_distances(std::span<const A<float>> a, const B<float>& b,                           \
+                     std::span<float> out) noexcept;                                           \
+  void sqr_distances(std::span<const A<double>> a, const B<double>& b,                         \
+                     std::span<double> out) noexcept;                                          \
+  void sqr_distances(const A<float>& a, std::span<const B<float>> b,                           \
+                     std::span<float> out) noexcept;                                           \
+  void sqr_distances(const A<double>& a, std::span<const B<double>> b,                         \
+                     std::span<double> out) noexcept;
+
+LOCUS_BATCH_PAIR(Vec3, Triangle3)
+LOCUS_BATCH_PAIR(Segment3, Segment3)
+LOCUS_BATCH_PAIR(Segment3, Triangle3)
+LOCUS_BATCH_PAIR(Vec3, AlignedBox3)
+LOCUS_BATCH_PAIR(Vec3, OrientedBox3)
+#undef LOCUS_BATCH_PAIR
+
+// The swapped argument orders of the mixed pairs: the same values (sqr_distance is symmetric).
+#define LOCUS_BATCH_SWAPPED(A, B, T)                                                           \
+  inline void sqr_distances(std::span<const B<T>> b, std::span<const A<T>> a,                  \
+                            std::span<T> out) noexcept {                                       \
+    sqr_distances(a, b, out);                                                                  \
+  }                                                                                            \
+  inline void sqr_distances(std::span<const B<T>> b, const A<T>& a, std::span<T> out) noexcept { \
+    sqr_distances(a, b, out);                                                                  \
+  }                                                                                            \
+  inline void sqr_distances(const B<T>& b, std::span<const A<T>> a, std::span<T> out) noexcept { \
+    sqr_distances(a, b, out);                                                                  \
+  }
+#define LOCUS_BATCH_SWAPPED_FD(A, B) LOCUS_BATCH_SWAPPED(A, B, float) LOCUS_BATCH_SWAPPED(A, B, double)
+LOCUS_BATCH_SWAPPED_FD(Vec3, Triangle3)
+LOCUS_BATCH_SWAPPED_FD(Segment3, Triangle3)
+LOCUS_BATCH_SWAPPED_FD(Vec3, AlignedBox3)
+LOCUS_BATCH_SWAPPED_FD(Vec3, OrientedBox3)
+#undef LOCUS_BATCH_SWAPPED_FD
+#undef LOCUS_BATCH_SWAPPED
+
+}  // namespace locus

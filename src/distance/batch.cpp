@@ -1,0 +1,395 @@
+// SPDX-License-Identifier: BSL-1.0
+// The batched squared distances of include/locus/distance/batch.hpp. Each kernel evaluates the
+// branch-free fast path of one pair's per-query function (the same operations in the same order,
+// mirrored lane by lane; see lanes.hpp) for W queries at once, and marks the lanes that path does
+// not cover; run() recomputes those with the per-query function. Compiled with -ffp-contract=off
+// (CMakeLists.txt) so that no operation is fused and every lane rounds as the scalar code does.
+
+#include "lanes.hpp"
+
+#include <locus/config.hpp>
+#include <locus/distance/batch.hpp>
+#include <locus/distance/point_aligned_box.hpp>
+#include <locus/distance/point_oriented_box.hpp>
+#include <locus/distance/point_triangle.hpp>
+#include <locus/distance/segment_segment.hpp>
+#include <locus/distance/segment_triangle.hpp>
+
+#include <cstddef>
+#include <limits>
+
+namespace locus {
+namespace {
+
+using lanes::gather;
+using lanes::gather3;
+using lanes::M;
+using lanes::Result;
+using lanes::sel;
+using lanes::Source;
+using lanes::V;
+using lanes::V3;
+
+template <class T>
+constexpr T kMin = std::numeric_limits<T>::min();
+template <class T>
+constexpr T kMax = std::numeric_limits<T>::max();
+
+// ---- point - triangle (detail::point_triangle, the 3D fast path) -------------------------------
+
+template <class T>
+struct PointTriangleLanes {
+  V3<T> bary;     // barycentric (u, v, w) of the closest point
+  V3<T> closest;  // point_at_barycentric(tri, bary)
+  V<T> sqr;
+  M<T> scalar;    // lanes outside the fast path
+};
+
+template <class T>
+LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, const V3<T>& v0,
+                                                             const V3<T>& v1, const V3<T>& v2) {
+  const V3<T> e0 = v1 - v0, e1 = v2 - v0, e2 = v2 - v1, w0 = p - v0, w1 = p - v1;
+  const V<T> a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
+  const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
+  const V<T> ac = a * c, det = ac - b * b;
+  const M<T> fast = (T(16) * det >= ac) & (a >= kMin<T>) & (c >= kMin<T>) & (f >= kMin<T>) &
+                    (ac <= kMax<T>) & (f <= kMax<T>) & (((d - d) + (e - e)) + (g - g) == T(0));
+  const V<T> sn = c * d - b * e, tn = a * e - b * d;
+  const M<T> inside = (sn >= T(0)) & (tn >= T(0)) & (sn + tn <= det);
+  const V<T> s = sn / det, t = tn / det;
+  // Outside: the nearest of the three edges' clamped projections.
+  const V<T> zero = a - a, one = zero + T(1);
+  const V<T> l0 = lanes::clamp_minmax<T>(d / a, zero, one);
+  const V<T> l1 = lanes::clamp_minmax<T>(e / c, zero, one);
+  const V<T> l2 = lanes::clamp_minmax<T>(g / f, zero, one);
+  const V3<T> r0 = w0 - l0 * e0, r1 = w0 - l1 * e1, r2 = w1 - l2 * e2;
+  const V<T> q0 = dot(r0, r0), q1 = dot(r1, r1), q2 = dot(r2, r2);
+  const M<T> m1 = q1 < q0;
+  const V<T> q01 = sel<T>(m1, q1, q0);
+  const V<T> u = sel<T>(m1, T(1) - l1, T(1) - l0), v = sel<T>(m1, zero, l0);
+  const V<T> w = sel<T>(m1, l1, zero);
+  const M<T> m2 = q2 < q01;
+  V3<T> bary{sel<T>(m2, zero, u), sel<T>(m2, T(1) - l2, v), sel<T>(m2, l2, w)};
+  bary = lanes::sel<T>(inside, V3<T>{T(1) - s - t, s, t}, bary);
+  const V3<T> x = bary.x * v0 + bary.y * v1 + bary.z * v2;
+  const V3<T> dx = x - p;
+  return {bary, x, dot(dx, dx), ~fast};
+}
+
+template <class T, class A, class B>
+LOCUS_LANE_INLINE void point_triangle_run(const Source<A>& a, const Source<B>& b, T* out,
+                                          std::size_t n) {
+  lanes::run<T>(
+      a, b, out, n,
+      [](const Source<Vec3<T>>& p, const Source<Triangle3<T>>& t, std::size_t i) LOCUS_LANE_LAMBDA {
+        const auto pl = point_triangle_lanes<T>(
+            gather3<T>(p, i, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; }),
+            gather3<T>(t, i, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v0; }),
+            gather3<T>(t, i, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v1; }),
+            gather3<T>(t, i, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v2; }));
+        return Result<T>{pl.sqr, pl.scalar};
+      },
+      [](const Vec3<T>& p, const Triangle3<T>& t) LOCUS_LANE_LAMBDA { return sqr_distance(p, t); });
+}
+
+// ---- segment - segment (detail::segment_pair) ------------------------------------------------
+
+template <class T>
+struct SegmentLanes {
+  V3<T> p0, p1;
+};
+
+template <class T>
+struct SegmentPairLanes {
+  V<T> s, t;      // parameters on the first and the second segment
+  V<T> sqr;
+  M<T> scalar;
+};
+
+/// detail::closest_param for a segment whose |dir|^2 = a is a normal number: the clamped
+/// projection, and whether it was finite (otherwise the scalar code takes a rescaling path).
+template <class T>
+LOCUS_LANE_INLINE V<T> closest_param_lanes(const SegmentLanes<T>& l, const V3<T>& dir, V<T> a,
+                                           const V3<T>& p, M<T>& not_finite) {
+  const V<T> t = dot(p - l.p0, dir) / a;
+  not_finite |= ~lanes::finite<T>(t);
+  const V<T> lo = sel<T>(t < T(0), V<T>{}, t);
+  return sel<T>(lo > T(1), lanes::splat<T>(T(1)), lo);
+}
+
+/// detail::lex_less of two segments (p0 lexicographically, then p1).
+template <class T>
+LOCUS_LANE_INLINE M<T> lex_less(const V3<T>& a, const V3<T>& b) {
+  return (a.x < b.x) | ((a.x == b.x) & ((a.y < b.y) | ((a.y == b.y) & (a.z < b.z))));
+}
+template <class T>
+LOCUS_LANE_INLINE M<T> lex_less(const SegmentLanes<T>& a, const SegmentLanes<T>& b) {
+  const M<T> same = (a.p0.x == b.p0.x) & (a.p0.y == b.p0.y) & (a.p0.z == b.p0.z);
+  return (same & lex_less<T>(a.p1, b.p1)) | (~same & lex_less<T>(a.p0, b.p0));
+}
+
+template <class T>
+LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& x,
+                                                         const SegmentLanes<T>& y) {
+  constexpr T tiny = T(64) * eps_v<T>;
+  // detail::segment_pair_fast.
+  const V3<T> da = x.p1 - x.p0, db = y.p1 - y.p0, r = x.p0 - y.p0;
+  const V<T> a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
+  const V<T> D = lanes::sqr_cross_norm<T>(da, db), ac = a * c;
+  const V<T> sn = b * e - c * d, tn = a * e - b * d;
+  const M<T> sl = sn < T(0), sh = sn > D, tl = tn < T(0), th = tn > D;
+  const M<T> s_out = sl | sh, t_out = tl | th;
+  const M<T> regular = (a >= kMin<T>) & (c >= kMin<T>) & (ac <= kMax<T>) &
+                       ((d - d) + (e - e) == T(0));
+  const M<T> fast = regular & (D > tiny * ac) & (s_out | t_out | (T(16) * D >= ac));
+  const V<T> zero = a - a, one = zero + T(1);
+  const V<T> sc = sel<T>(sh, lanes::splat<T>(T(1)), V<T>{});
+  const V<T> tc = sel<T>(th, lanes::splat<T>(T(1)), V<T>{});
+  const V<T> gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
+  const M<T> ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
+  const M<T> dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
+  const M<T> move_t = s_out & (~t_out | (dt & ~ds));
+  const M<T> move_s = t_out & (~s_out | (ds & ~dt));
+  const M<T> pin_s = s_out & ~move_s, pin_t = t_out & ~move_t;
+  const V<T> qs = sel<T>(move_s, b * tc - d, sn) / sel<T>(move_s, a, D);
+  const V<T> qt = sel<T>(move_t, b * sc + e, tn) / sel<T>(move_t, c, D);
+  const V<T> fs = sel<T>(pin_s, sc, lanes::clamp_minmax<T>(qs, zero, one));
+  const V<T> ft = sel<T>(pin_t, tc, lanes::clamp_minmax<T>(qt, zero, one));
+
+  // The rest (nearly parallel, or an interior minimiser at a small angle): detail::linear_linear
+  // in the canonical argument order, for input in range (a, c normal, finite projections; other
+  // lanes go to the scalar code). Since the fast path declined, linear_linear's only outcomes are
+  // the refined interior point (inside and D > 64 eps ac) or the best of every candidate.
+  const M<T> swap = lex_less<T>(y, x);
+  const SegmentLanes<T> A{lanes::sel<T>(swap, y.p0, x.p0), lanes::sel<T>(swap, y.p1, x.p1)};
+  const SegmentLanes<T> B{lanes::sel<T>(swap, x.p0, y.p0), lanes::sel<T>(swap, x.p1, y.p1)};
+  const V3<T> dA = A.p1 - A.p0, dB = B.p1 - B.p0, rr = A.p0 - B.p0;
+  const V<T> aa = dot(dA, dA), cc = dot(dB, dB);
+  const V<T> bb = dot(dA, dB), dd = dot(dA, rr), ee = dot(dB, rr);
+  const V<T> DD = lanes::sqr_cross_norm<T>(dA, dB), acc = aa * cc;
+  // Lanes linear_linear would take elsewhere: input out of range (it may then reach its KKT
+  // branch, or rescale a projection), or a projection that overflows.
+  M<T> scalar = ~fast & ~(regular & (aa <= kMax<T>) & (cc <= kMax<T>) & (acc >= kMin<T>));
+  const V<T> s0 = (bb * ee - cc * dd) / DD, t0 = (aa * ee - bb * dd) / DD;
+  const M<T> interior = (DD > T(0)) & lanes::finite<T>(s0) & lanes::finite<T>(t0);
+  const M<T> inside = (s0 >= T(0)) & (s0 <= T(1)) & (t0 >= T(0)) & (t0 <= T(1));
+  M<T> bad{};  // some projection the scalar code would rescale
+  const V<T> s0c = lanes::clamp_minmax<T>(s0, V<T>{}, lanes::splat<T>(T(1)));
+  const V<T> ti = closest_param_lanes<T>(B, dB, cc, lanes::lerp<T>(A.p0, A.p1, s0c), bad);
+  const V<T> si = closest_param_lanes<T>(A, dA, aa, lanes::lerp<T>(B.p0, B.p1, ti), bad);
+  bad &= interior;  // the refinement only runs with an interior point
+  const V<T> zz{}, oo = lanes::splat<T>(T(1));
+  V<T> bs = si, bt = ti;
+  const auto q_of = [&](V<T> s, V<T> t) LOCUS_LANE_LAMBDA {
+    const V3<T> dq = lanes::lerp<T>(A.p0, A.p1, s) - lanes::lerp<T>(B.p0, B.p1, t);
+    return dot(dq, dq);
+  };
+  V<T> best = sel<T>(interior, q_of(si, ti), lanes::splat<T>(std::numeric_limits<T>::infinity()));
+  const auto consider = [&](V<T> s, V<T> t) LOCUS_LANE_LAMBDA {
+    const V<T> q = q_of(s, t);
+    const M<T> take = q < best;
+    best = sel<T>(take, q, best);
+    bs = sel<T>(take, s, bs);
+    bt = sel<T>(take, t, bt);
+  };
+  consider(zz, closest_param_lanes<T>(B, dB, cc, A.p0, bad));
+  consider(oo, closest_param_lanes<T>(B, dB, cc, A.p1, bad));
+  consider(closest_param_lanes<T>(A, dA, aa, B.p0, bad), zz);
+  consider(closest_param_lanes<T>(A, dA, aa, B.p1, bad), oo);
+  const M<T> refined = interior & inside & (DD > tiny * acc);
+  bs = sel<T>(refined, si, bs);
+  bt = sel<T>(refined, ti, bt);
+  scalar |= ~fast & (bad | ~lanes::finite<T>(best));
+  // Back to the caller's order.
+  const V<T> s = sel<T>(fast, fs, sel<T>(swap, bt, bs));
+  const V<T> t = sel<T>(fast, ft, sel<T>(swap, bs, bt));
+  const V3<T> dq = lanes::lerp<T>(x.p0, x.p1, s) - lanes::lerp<T>(y.p0, y.p1, t);
+  return {s, t, dot(dq, dq), scalar};
+}
+
+template <class T>
+LOCUS_LANE_INLINE SegmentLanes<T> gather_segment(const Source<Segment3<T>>& src, std::size_t i) {
+  return {gather3<T>(src, i, [](const Segment3<T>& s) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return s.p0; }),
+          gather3<T>(src, i, [](const Segment3<T>& s) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return s.p1; })};
+}
+
+template <class T>
+LOCUS_LANE_INLINE void segment_segment_run(const Source<Segment3<T>>& a,
+                                           const Source<Segment3<T>>& b, T* out, std::size_t n) {
+  lanes::run<T>(
+      a, b, out, n,
+      [](const Source<Segment3<T>>& x, const Source<Segment3<T>>& y, std::size_t i) LOCUS_LANE_LAMBDA {
+        const SegmentPairLanes<T> r =
+            segment_pair_lanes<T>(gather_segment<T>(x, i), gather_segment<T>(y, i));
+        return Result<T>{r.sqr, r.scalar};
+      },
+      [](const Segment3<T>& x, const Segment3<T>& y) LOCUS_LANE_LAMBDA { return sqr_distance(x, y); });
+}
+
+// ---- point - boxes (the per-query functions have no special cases) --------------------------
+
+template <class T>
+LOCUS_LANE_INLINE void point_aligned_box_run(const Source<Vec3<T>>& a,
+                                             const Source<AlignedBox3<T>>& b, T* out,
+                                             std::size_t n) {
+  lanes::run<T>(
+      a, b, out, n,
+      [](const Source<Vec3<T>>& ps, const Source<AlignedBox3<T>>& bs, std::size_t i) LOCUS_LANE_LAMBDA {
+        const V3<T> p = gather3<T>(ps, i, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; });
+        const V3<T> lo =
+            gather3<T>(bs, i, [](const AlignedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.min; });
+        const V3<T> hi =
+            gather3<T>(bs, i, [](const AlignedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.max; });
+        // detail::point_aligned_box: the clamped coordinate's excess, squared and summed onto 0.
+        const auto excess = [](V<T> x, V<T> l, V<T> h) LOCUS_LANE_LAMBDA {
+          const V<T> above = sel<T>(x < l, l, x);
+          const V<T> e = x - sel<T>(h < above, h, above);
+          return e * e;
+        };
+        const V<T> sqr =
+            ((V<T>{} + excess(p.x, lo.x, hi.x)) + excess(p.y, lo.y, hi.y)) + excess(p.z, lo.z, hi.z);
+        const V<T> fz = ((V<T>{} + lanes::finite_zero<T>(p)) + lanes::finite_zero<T>(lo)) +
+                        lanes::finite_zero<T>(hi);
+        const M<T> empty = (hi.x < lo.x) | (hi.y < lo.y) | (hi.z < lo.z);
+        const V<T> nan = lanes::splat<T>(std::numeric_limits<T>::quiet_NaN());
+        return Result<T>{sel<T>(empty, nan, sqr + fz), M<T>{}};
+      },
+      [](const Vec3<T>& p, const AlignedBox3<T>& box) LOCUS_LANE_LAMBDA { return sqr_distance(p, box); });
+}
+
+template <class T>
+LOCUS_LANE_INLINE void point_oriented_box_run(const Source<Vec3<T>>& a,
+                                              const Source<OrientedBox3<T>>& b, T* out,
+                                              std::size_t n) {
+  lanes::run<T>(
+      a, b, out, n,
+      [](const Source<Vec3<T>>& ps, const Source<OrientedBox3<T>>& bs, std::size_t i) LOCUS_LANE_LAMBDA {
+        const V3<T> p = gather3<T>(ps, i, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; });
+        const V3<T> c =
+            gather3<T>(bs, i, [](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.center; });
+        const V3<T> ext =
+            gather3<T>(bs, i, [](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.extent; });
+        V3<T> axis[3];
+        for (int k = 0; k < 3; ++k)
+          axis[k] = gather3<T>(
+              bs, i, [k](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.axis[k]; });
+        // detail::point_oriented_box: per axis the coordinate in the box frame and its excess
+        // over the slab (a negative extent acts as 0), squared and summed onto 0.
+        const V3<T> d = p - c;
+        const V<T> extents[3] = {ext.x, ext.y, ext.z};
+        V<T> sqr{};
+        for (int k = 0; k < 3; ++k) {
+          const V<T> x = dot(d, axis[k]);
+          const V<T> e = sel<T>(extents[k] > T(0), extents[k], V<T>{});
+          const V<T> ne = -e;
+          const V<T> above = sel<T>(x < ne, ne, x);
+          const V<T> excess = x - sel<T>(e < above, e, above);
+          sqr = sqr + excess * excess;
+        }
+        V<T> fz = ((V<T>{} + lanes::finite_zero<T>(p)) + lanes::finite_zero<T>(c)) +
+                  lanes::finite_zero<T>(ext);
+        for (int k = 0; k < 3; ++k) fz = fz + lanes::finite_zero<T>(axis[k]);
+        return Result<T>{sqr + fz, M<T>{}};
+      },
+      [](const Vec3<T>& p, const OrientedBox3<T>& box) LOCUS_LANE_LAMBDA { return sqr_distance(p, box); });
+}
+
+// ---- the entry points -------------------------------------------------------------------------
+
+template <class A, class B>
+struct Sources {
+  Source<A> a;
+  Source<B> b;
+  std::size_t n;
+};
+
+template <class A, class B, class T>
+Sources<A, B> sources(std::span<const A> a, std::span<const B> b, std::span<T> out) {
+  LOCUS_ASSERT(a.size() == b.size() && a.size() == out.size(),
+               "sqr_distances: the spans must have the same length");
+  std::size_t n = a.size() < b.size() ? a.size() : b.size();
+  n = n < out.size() ? n : out.size();
+  const std::size_t last = n == 0 ? 0 : n - 1;
+  return {{a.data(), 1, last}, {b.data(), 1, last}, n};
+}
+template <class A, class B, class T>
+Sources<A, B> sources(std::span<const A> a, const B& b, std::span<T> out) {
+  LOCUS_ASSERT(a.size() == out.size(), "sqr_distances: out must have one value per query");
+  const std::size_t n = a.size() < out.size() ? a.size() : out.size();
+  const std::size_t last = n == 0 ? 0 : n - 1;
+  return {{a.data(), 1, last}, {&b, 0, last}, n};
+}
+template <class A, class B, class T>
+Sources<A, B> sources(const A& a, std::span<const B> b, std::span<T> out) {
+  LOCUS_ASSERT(b.size() == out.size(), "sqr_distances: out must have one value per query");
+  const std::size_t n = b.size() < out.size() ? b.size() : out.size();
+  const std::size_t last = n == 0 ? 0 : n - 1;
+  return {{&a, 0, last}, {b.data(), 1, last}, n};
+}
+
+// One clone set per pair and scalar type (the target_clones functions are not templates).
+#define LOCUS_BATCH_DRIVER(name, run, A, B, T)                                       \
+  LOCUS_LANE_CLONES void name(const Source<A>& a, const Source<B>& b, T* out,        \
+                              std::size_t n) {                                       \
+    run<T>(a, b, out, n);                                                            \
+  }
+LOCUS_BATCH_DRIVER(point_triangle_f, point_triangle_run, Vec3<float>, Triangle3<float>, float)
+LOCUS_BATCH_DRIVER(point_triangle_d, point_triangle_run, Vec3<double>, Triangle3<double>, double)
+LOCUS_BATCH_DRIVER(segment_segment_f, segment_segment_run, Segment3<float>, Segment3<float>, float)
+LOCUS_BATCH_DRIVER(segment_segment_d, segment_segment_run, Segment3<double>, Segment3<double>,
+                   double)
+LOCUS_BATCH_DRIVER(point_aligned_box_f, point_aligned_box_run, Vec3<float>, AlignedBox3<float>,
+                   float)
+LOCUS_BATCH_DRIVER(point_aligned_box_d, point_aligned_box_run, Vec3<double>, AlignedBox3<double>,
+                   double)
+LOCUS_BATCH_DRIVER(point_oriented_box_f, point_oriented_box_run, Vec3<float>,
+                   OrientedBox3<float>, float)
+LOCUS_BATCH_DRIVER(point_oriented_box_d, point_oriented_box_run, Vec3<double>,
+                   OrientedBox3<double>, double)
+#undef LOCUS_BATCH_DRIVER
+
+// Segment - triangle: per query for now.
+template <class T>
+void segment_triangle_each(const Source<Segment3<T>>& a, const Source<Triangle3<T>>& b, T* out,
+                           std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = sqr_distance(a.at(i), b.at(i));
+}
+void segment_triangle_f(const Source<Segment3<float>>& a, const Source<Triangle3<float>>& b,
+                        float* out, std::size_t n) {
+  segment_triangle_each(a, b, out, n);
+}
+void segment_triangle_d(const Source<Segment3<double>>& a, const Source<Triangle3<double>>& b,
+                        double* out, std::size_t n) {
+  segment_triangle_each(a, b, out, n);
+}
+
+}  // namespace
+
+// Every overload: the three forms (span-span, span-one, one-span) for one pair and scalar type.
+#define LOCUS_BATCH_ENTRY(A, B, T, driver)                                                      \
+  void sqr_distances(std::span<const A<T>> a, std::span<const B<T>> b,                          \
+                     std::span<T> out) noexcept {                                               \
+    const auto s = sources(a, b, out);                                                          \
+    driver(s.a, s.b, out.data(), s.n);                                                          \
+  }                                                                                             \
+  void sqr_distances(std::span<const A<T>> a, const B<T>& b, std::span<T> out) noexcept {       \
+    const auto s = sources(a, b, out);                                                          \
+    driver(s.a, s.b, out.data(), s.n);                                                          \
+  }                                                                                             \
+  void sqr_distances(const A<T>& a, std::span<const B<T>> b, std::span<T> out) noexcept {       \
+    const auto s = sources(a, b, out);                                                          \
+    driver(s.a, s.b, out.data(), s.n);                                                          \
+  }
+LOCUS_BATCH_ENTRY(Vec3, Triangle3, float, point_triangle_f)
+LOCUS_BATCH_ENTRY(Vec3, Triangle3, double, point_triangle_d)
+LOCUS_BATCH_ENTRY(Segment3, Segment3, float, segment_segment_f)
+LOCUS_BATCH_ENTRY(Segment3, Segment3, double, segment_segment_d)
+LOCUS_BATCH_ENTRY(Segment3, Triangle3, float, segment_triangle_f)
+LOCUS_BATCH_ENTRY(Segment3, Triangle3, double, segment_triangle_d)
+LOCUS_BATCH_ENTRY(Vec3, AlignedBox3, float, point_aligned_box_f)
+LOCUS_BATCH_ENTRY(Vec3, AlignedBox3, double, point_aligned_box_d)
+LOCUS_BATCH_ENTRY(Vec3, OrientedBox3, float, point_oriented_box_f)
+LOCUS_BATCH_ENTRY(Vec3, OrientedBox3, double, point_oriented_box_d)
+#undef LOCUS_BATCH_ENTRY
+
+}  // namespace locus

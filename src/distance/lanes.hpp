@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Private to src/distance/batch*.cpp: W queries at once in the lanes of one SIMD register, for the
+// batched distance queries of include/locus/distance/batch.hpp.
+//
+// Lanes<T>::V is a GCC/Clang vector of W = 32 / sizeof(T) values (4 doubles or 8 floats: one AVX
+// register; the compiler splits it into two SSE registers where AVX is not enabled). Arithmetic is
+// the compiler's element-wise + - * /, each lane rounded exactly as the scalar operation, so a
+// kernel that performs the same operations in the same order as a scalar query gives the same
+// bits in every lane (with floating-point contraction off: batch*.cpp are compiled with
+// -ffp-contract=off). Comparisons give Lanes<T>::M, a mask of all-ones / all-zeros integers per
+// lane; sel(m, a, b) is the lane-wise m ? a : b (a blend), which is how the scalar queries'
+// selects and `x < y ? x : y` minima are mirrored.
+//
+// Objects are read in groups of W consecutive queries (gather()): lane k holds query i + k, and
+// past the end of the input the last query is repeated (its lanes are computed and discarded), so
+// a kernel never reads out of bounds and never needs a scalar tail loop. A source with stride 0
+// is one object broadcast to every query (the "one against many" overloads).
+
+#include <locus/core/vec.hpp>
+
+#include <cstddef>
+#include <cstring>
+#include <utility>
+
+// Everything a kernel calls is inlined into the driver, so that it is compiled for the driver's
+// instruction set and no vector crosses a call (LOCUS_LANE_LAMBDA: the same for lambdas).
+#if defined(__GNUC__)
+#define LOCUS_LANE_INLINE inline __attribute__((always_inline))
+#define LOCUS_LANE_LAMBDA __attribute__((always_inline))
+#else
+#define LOCUS_LANE_INLINE inline
+#define LOCUS_LANE_LAMBDA
+#endif
+
+// The batch drivers are compiled twice, for AVX2 and for the baseline instruction set, and the
+// dynamic loader picks one for the running processor (GNU ifunc); elsewhere once, for whatever
+// the compiler targets.
+#if defined(__x86_64__) && defined(__has_attribute) && !defined(LOCUS_NO_MULTIVERSION)
+#if __has_attribute(target_clones)
+#define LOCUS_LANE_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#ifndef LOCUS_LANE_CLONES
+#define LOCUS_LANE_CLONES
+#endif
+
+namespace locus::lanes {
+
+template <class T>
+struct Lanes {
+  static constexpr int W = static_cast<int>(32 / sizeof(T));
+  typedef T V __attribute__((vector_size(32)));
+  using M = decltype(V{} < V{});
+};
+
+template <class T>
+using V = typename Lanes<T>::V;
+template <class T>
+using M = typename Lanes<T>::M;
+
+/// Every lane = x.
+template <class T>
+LOCUS_LANE_INLINE V<T> splat(T x) {
+  return V<T>{} + x;
+}
+
+/// Lane-wise m ? a : b.
+template <class T>
+LOCUS_LANE_INLINE V<T> sel(M<T> m, V<T> a, V<T> b) {
+  return m ? a : b;
+}
+
+/// Lane-wise (x < lo ? lo : x), then (hi < that ? hi : that): detail::clamp_minmax.
+template <class T>
+LOCUS_LANE_INLINE V<T> clamp_minmax(V<T> x, V<T> lo, V<T> hi) {
+  const V<T> above = sel<T>(x < lo, lo, x);
+  return sel<T>(hi < above, hi, above);
+}
+
+/// Lanes whose value is finite (x - x is 0 for finite x, NaN otherwise).
+template <class T>
+LOCUS_LANE_INLINE M<T> finite(V<T> x) {
+  return (x - x) == V<T>{};
+}
+
+/// True when some lane of m is set.
+template <class T>
+LOCUS_LANE_INLINE bool any(M<T> m) {
+  for (int k = 0; k < Lanes<T>::W; ++k)
+    if (m[k]) return true;
+  return false;
+}
+
+/// A 3D vector per lane, with the scalar Vec3 operations in the same evaluation order as
+/// core/vec.hpp (dot = (x x' + y y') + z z').
+template <class T>
+struct V3 {
+  V<T> x, y, z;
+};
+template <class T>
+LOCUS_LANE_INLINE V3<T> operator-(const V3<T>& a, const V3<T>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class T>
+LOCUS_LANE_INLINE V3<T> operator+(const V3<T>& a, const V3<T>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class T>
+LOCUS_LANE_INLINE V3<T> operator*(V<T> s, const V3<T>& a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+template <class T>
+LOCUS_LANE_INLINE V<T> dot(const V3<T>& a, const V3<T>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+/// detail::sqr_cross_norm for N = 3: the squared 2x2 minors (x, y), (x, z), (y, z) summed in that
+/// order onto 0.
+template <class T>
+LOCUS_LANE_INLINE V<T> sqr_cross_norm(const V3<T>& a, const V3<T>& b) {
+  const V<T> m01 = a.x * b.y - a.y * b.x, m02 = a.x * b.z - a.z * b.x;
+  const V<T> m12 = a.y * b.z - a.z * b.y;
+  return ((V<T>{} + m01 * m01) + m02 * m02) + m12 * m12;
+}
+/// core/vec.hpp lerp: (1 - t) a + t b per coordinate.
+template <class T>
+LOCUS_LANE_INLINE V3<T> lerp(const V3<T>& a, const V3<T>& b, V<T> t) {
+  const V<T> u = T(1) - t;
+  return {u * a.x + t * b.x, u * a.y + t * b.y, u * a.z + t * b.z};
+}
+template <class T>
+LOCUS_LANE_INLINE V3<T> sel(M<T> m, const V3<T>& a, const V3<T>& b) {
+  return {sel<T>(m, a.x, b.x), sel<T>(m, a.y, b.y), sel<T>(m, a.z, b.z)};
+}
+/// finite_zero of one vector: (x 0 + y 0) + z 0 (0 for finite coordinates, NaN otherwise).
+template <class T>
+LOCUS_LANE_INLINE V<T> finite_zero(const V3<T>& a) {
+  return a.x * T(0) + a.y * T(0) + a.z * T(0);
+}
+
+/// One input of a batch: `stride` 1 for an array of objects, 0 for one object shared by all.
+template <class Obj>
+struct Source {
+  const Obj* data;
+  std::size_t stride;
+  std::size_t last;  ///< index of the last query (its object is repeated past the end)
+
+  [[nodiscard]] LOCUS_LANE_INLINE const Obj& at(std::size_t i) const {
+    return data[(i < last ? i : last) * stride];
+  }
+};
+
+/// Lane k = field(src.at(i + k)) for a scalar field.
+template <class T, class Obj, class Field>
+LOCUS_LANE_INLINE V<T> gather(const Source<Obj>& src, std::size_t i, Field field) {
+  return [&]<std::size_t... k>(std::index_sequence<k...>) LOCUS_LANE_LAMBDA {
+    return V<T>{field(src.at(i + k))...};
+  }(std::make_index_sequence<Lanes<T>::W>{});
+}
+
+/// Lanes of a Vec3 member of the objects (member(obj) returns a const Vec3<T>&).
+template <class T, class Obj, class Member>
+LOCUS_LANE_INLINE V3<T> gather3(const Source<Obj>& src, std::size_t i, Member member) {
+  return {gather<T>(src, i, [&](const Obj& o) LOCUS_LANE_LAMBDA { return member(o).x; }),
+          gather<T>(src, i, [&](const Obj& o) LOCUS_LANE_LAMBDA { return member(o).y; }),
+          gather<T>(src, i, [&](const Obj& o) LOCUS_LANE_LAMBDA { return member(o).z; })};
+}
+
+/// What a kernel returns for W queries: the squared distances, and the lanes the kernel does not
+/// handle (they are recomputed by the scalar query).
+template <class T>
+struct Result {
+  V<T> sqr;
+  M<T> scalar;
+};
+
+/// Runs kernel(a, b, i) over the n queries W at a time, writes the squared distances to out, and
+/// recomputes the lanes the kernel hands back with the scalar query (scalar(a, b)).
+template <class T, class A, class B, class Kernel, class Scalar>
+LOCUS_LANE_INLINE void run(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
+                           Kernel kernel, Scalar scalar) {
+  constexpr std::size_t W = Lanes<T>::W;
+  for (std::size_t i = 0; i < n; i += W) {
+    const Result<T> r = kernel(a, b, i);
+    const std::size_t m = n - i < W ? n - i : W;
+    T values[W];
+    std::memcpy(values, &r.sqr, sizeof values);
+    if (any<T>(r.scalar))
+      for (std::size_t k = 0; k < m; ++k)
+        if (r.scalar[k]) values[k] = scalar(a.at(i + k), b.at(i + k));
+    std::memcpy(out + i, values, m * sizeof(T));
+  }
+}
+
+}  // namespace locus::lanes
