@@ -27,6 +27,7 @@ using lanes::M;
 using lanes::Result;
 using lanes::sel;
 using lanes::Source;
+using lanes::Group;
 using lanes::V;
 using lanes::V3;
 
@@ -48,7 +49,16 @@ struct PointTriangleLanes {
 template <class T>
 LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, const V3<T>& v0,
                                                              const V3<T>& v1, const V3<T>& v2) {
-  const V3<T> e0 = v1 - v0, e1 = v2 - v0, e2 = v2 - v1, w0 = p - v0, w1 = p - v1;
+  // The origin at the vertex opposite the longest edge (rotation r1: (v1, v2, v0), r2: (v2, v0,
+  // v1)).
+  const V3<T> d01 = v1 - v0, d02 = v2 - v0, d12 = v2 - v1;
+  const V<T> l01 = dot(d01, d01), l02 = dot(d02, d02), l12 = dot(d12, d12);
+  const M<T> keep = (l12 >= l01) & (l12 >= l02);
+  const M<T> r1 = ~keep & (l02 >= l01), r2 = ~keep & ~(l02 >= l01);
+  const V3<T> o = lanes::sel<T>(r1, v1, lanes::sel<T>(r2, v2, v0));
+  const V3<T> x = lanes::sel<T>(r1, v2, lanes::sel<T>(r2, v0, v1));
+  const V3<T> y = lanes::sel<T>(r1, v0, lanes::sel<T>(r2, v1, v2));
+  const V3<T> e0 = x - o, e1 = y - o, e2 = y - x, w0 = p - o, w1 = p - x;
   const V<T> a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
   const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
   const V<T> ac = a * c, det = ac - b * b;
@@ -62,18 +72,21 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, con
   const V<T> l0 = lanes::clamp_minmax<T>(d / a, zero, one);
   const V<T> l1 = lanes::clamp_minmax<T>(e / c, zero, one);
   const V<T> l2 = lanes::clamp_minmax<T>(g / f, zero, one);
-  const V3<T> r0 = w0 - l0 * e0, r1 = w0 - l1 * e1, r2 = w1 - l2 * e2;
-  const V<T> q0 = dot(r0, r0), q1 = dot(r1, r1), q2 = dot(r2, r2);
+  const V3<T> q0v = w0 - l0 * e0, q1v = w0 - l1 * e1, q2v = w1 - l2 * e2;
+  const V<T> q0 = dot(q0v, q0v), q1 = dot(q1v, q1v), q2 = dot(q2v, q2v);
   const M<T> m1 = q1 < q0;
   const V<T> q01 = sel<T>(m1, q1, q0);
   const V<T> u = sel<T>(m1, T(1) - l1, T(1) - l0), v = sel<T>(m1, zero, l0);
   const V<T> w = sel<T>(m1, l1, zero);
   const M<T> m2 = q2 < q01;
-  V3<T> bary{sel<T>(m2, zero, u), sel<T>(m2, T(1) - l2, v), sel<T>(m2, l2, w)};
-  bary = lanes::sel<T>(inside, V3<T>{T(1) - s - t, s, t}, bary);
-  const V3<T> x = bary.x * v0 + bary.y * v1 + bary.z * v2;
-  const V3<T> dx = x - p;
-  return {bary, x, dot(dx, dx), ~fast};
+  V3<T> rb{sel<T>(m2, zero, u), sel<T>(m2, T(1) - l2, v), sel<T>(m2, l2, w)};
+  rb = lanes::sel<T>(inside, V3<T>{T(1) - s - t, s, t}, rb);
+  const V3<T> bary{sel<T>(r1, rb.z, sel<T>(r2, rb.y, rb.x)),
+                   sel<T>(r1, rb.x, sel<T>(r2, rb.z, rb.y)),
+                   sel<T>(r1, rb.y, sel<T>(r2, rb.x, rb.z))};
+  const V3<T> cp = bary.x * v0 + bary.y * v1 + bary.z * v2;
+  const V3<T> dx = cp - p;
+  return {bary, cp, dot(dx, dx), ~fast};
 }
 
 template <class T, class A, class B>
@@ -81,12 +94,12 @@ LOCUS_LANE_INLINE void point_triangle_run(const Source<A>& a, const Source<B>& b
                                           std::size_t n) {
   lanes::run<T>(
       a, b, out, n,
-      [](const Source<Vec3<T>>& p, const Source<Triangle3<T>>& t, std::size_t i) LOCUS_LANE_LAMBDA {
+      [](const auto& p, const auto& t) LOCUS_LANE_LAMBDA {
         const auto pl = point_triangle_lanes<T>(
-            gather3<T>(p, i, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; }),
-            gather3<T>(t, i, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v0; }),
-            gather3<T>(t, i, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v1; }),
-            gather3<T>(t, i, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v2; }));
+            gather3<T>(p, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; }),
+            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v0; }),
+            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v1; }),
+            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v2; }));
         return Result<T>{pl.sqr, pl.scalar};
       },
       [](const Vec3<T>& p, const Triangle3<T>& t) LOCUS_LANE_LAMBDA { return sqr_distance(p, t); });
@@ -128,34 +141,13 @@ LOCUS_LANE_INLINE M<T> lex_less(const SegmentLanes<T>& a, const SegmentLanes<T>&
   return (same & lex_less<T>(a.p1, b.p1)) | (~same & lex_less<T>(a.p0, b.p0));
 }
 
+/// The lanes segment_pair_fast declines (nearly parallel, or an interior minimiser at a small
+/// angle): the parameters in the caller's order, and the lanes left to the scalar code. regular:
+/// segment_pair_fast's range and finiteness test.
 template <class T>
-LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& x,
-                                                         const SegmentLanes<T>& y) {
+LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x,
+                                                        const SegmentLanes<T>& y, M<T> regular) {
   constexpr T tiny = T(64) * eps_v<T>;
-  // detail::segment_pair_fast.
-  const V3<T> da = x.p1 - x.p0, db = y.p1 - y.p0, r = x.p0 - y.p0;
-  const V<T> a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
-  const V<T> D = lanes::sqr_cross_norm<T>(da, db), ac = a * c;
-  const V<T> sn = b * e - c * d, tn = a * e - b * d;
-  const M<T> sl = sn < T(0), sh = sn > D, tl = tn < T(0), th = tn > D;
-  const M<T> s_out = sl | sh, t_out = tl | th;
-  const M<T> regular = (a >= kMin<T>) & (c >= kMin<T>) & (ac <= kMax<T>) &
-                       ((d - d) + (e - e) == T(0));
-  const M<T> fast = regular & (D > tiny * ac) & (s_out | t_out | (T(16) * D >= ac));
-  const V<T> zero = a - a, one = zero + T(1);
-  const V<T> sc = sel<T>(sh, lanes::splat<T>(T(1)), V<T>{});
-  const V<T> tc = sel<T>(th, lanes::splat<T>(T(1)), V<T>{});
-  const V<T> gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
-  const M<T> ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
-  const M<T> dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
-  const M<T> move_t = s_out & (~t_out | (dt & ~ds));
-  const M<T> move_s = t_out & (~s_out | (ds & ~dt));
-  const M<T> pin_s = s_out & ~move_s, pin_t = t_out & ~move_t;
-  const V<T> qs = sel<T>(move_s, b * tc - d, sn) / sel<T>(move_s, a, D);
-  const V<T> qt = sel<T>(move_t, b * sc + e, tn) / sel<T>(move_t, c, D);
-  const V<T> fs = sel<T>(pin_s, sc, lanes::clamp_minmax<T>(qs, zero, one));
-  const V<T> ft = sel<T>(pin_t, tc, lanes::clamp_minmax<T>(qt, zero, one));
-
   // The rest (nearly parallel, or an interior minimiser at a small angle): detail::linear_linear
   // in the canonical argument order, for input in range (a, c normal, finite projections; other
   // lanes go to the scalar code). Since the fast path declined, linear_linear's only outcomes are
@@ -169,7 +161,7 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
   const V<T> DD = lanes::sqr_cross_norm<T>(dA, dB), acc = aa * cc;
   // Lanes linear_linear would take elsewhere: input out of range (it may then reach its KKT
   // branch, or rescale a projection), or a projection that overflows.
-  M<T> scalar = ~fast & ~(regular & (aa <= kMax<T>) & (cc <= kMax<T>) & (acc >= kMin<T>));
+  M<T> scalar = ~(regular & (aa <= kMax<T>) & (cc <= kMax<T>) & (acc >= kMin<T>));
   const V<T> s0 = (bb * ee - cc * dd) / DD, t0 = (aa * ee - bb * dd) / DD;
   const M<T> interior = (DD > T(0)) & lanes::finite<T>(s0) & lanes::finite<T>(t0);
   const M<T> inside = (s0 >= T(0)) & (s0 <= T(1)) & (t0 >= T(0)) & (t0 <= T(1));
@@ -199,18 +191,56 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
   const M<T> refined = interior & inside & (DD > tiny * acc);
   bs = sel<T>(refined, si, bs);
   bt = sel<T>(refined, ti, bt);
-  scalar |= ~fast & (bad | ~lanes::finite<T>(best));
+  scalar |= bad | ~lanes::finite<T>(best);
   // Back to the caller's order.
-  const V<T> s = sel<T>(fast, fs, sel<T>(swap, bt, bs));
-  const V<T> t = sel<T>(fast, ft, sel<T>(swap, bs, bt));
-  const V3<T> dq = lanes::lerp<T>(x.p0, x.p1, s) - lanes::lerp<T>(y.p0, y.p1, t);
-  return {s, t, dot(dq, dq), scalar};
+  return {sel<T>(swap, bt, bs), sel<T>(swap, bs, bt), V<T>{}, scalar};
 }
 
 template <class T>
-LOCUS_LANE_INLINE SegmentLanes<T> gather_segment(const Source<Segment3<T>>& src, std::size_t i) {
-  return {gather3<T>(src, i, [](const Segment3<T>& s) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return s.p0; }),
-          gather3<T>(src, i, [](const Segment3<T>& s) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return s.p1; })};
+LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& x,
+                                                         const SegmentLanes<T>& y) {
+  constexpr T tiny = T(64) * eps_v<T>;
+  // detail::segment_pair_fast.
+  const V3<T> da = x.p1 - x.p0, db = y.p1 - y.p0, r = x.p0 - y.p0;
+  const V<T> a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
+  const V<T> D = lanes::sqr_cross_norm<T>(da, db), ac = a * c;
+  const V<T> sn = b * e - c * d, tn = a * e - b * d;
+  const M<T> sl = sn < T(0), sh = sn > D, tl = tn < T(0), th = tn > D;
+  const M<T> s_out = sl | sh, t_out = tl | th;
+  const M<T> regular = (a >= kMin<T>) & (c >= kMin<T>) & (ac <= kMax<T>) &
+                       ((d - d) + (e - e) == T(0));
+  const M<T> fast = regular & (D > tiny * ac) & (s_out | t_out | (T(16) * D >= ac));
+  const V<T> zero = a - a, one = zero + T(1);
+  const V<T> sc = sel<T>(sh, lanes::splat<T>(T(1)), V<T>{});
+  const V<T> tc = sel<T>(th, lanes::splat<T>(T(1)), V<T>{});
+  const V<T> gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
+  const M<T> ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
+  const M<T> dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
+  const M<T> move_t = s_out & (~t_out | (dt & ~ds));
+  const M<T> move_s = t_out & (~s_out | (ds & ~dt));
+  const M<T> pin_s = s_out & ~move_s, pin_t = t_out & ~move_t;
+  const V<T> qs = sel<T>(move_s, b * tc - d, sn) / sel<T>(move_s, a, D);
+  const V<T> qt = sel<T>(move_t, b * sc + e, tn) / sel<T>(move_t, c, D);
+  const V<T> fs = sel<T>(pin_s, sc, lanes::clamp_minmax<T>(qs, zero, one));
+  const V<T> ft = sel<T>(pin_t, tc, lanes::clamp_minmax<T>(qt, zero, one));
+
+  if (lanes::all<T>(fast)) {
+    const V3<T> dq = lanes::lerp<T>(x.p0, x.p1, fs) - lanes::lerp<T>(y.p0, y.p1, ft);
+    return {fs, ft, dot(dq, dq), M<T>{}};
+  }
+  SegmentPairLanes<T> rest = segment_pair_rest<T>(x, y, regular);
+  rest.s = sel<T>(fast, fs, rest.s);
+  rest.t = sel<T>(fast, ft, rest.t);
+  rest.scalar &= ~fast;
+  const V3<T> dq = lanes::lerp<T>(x.p0, x.p1, rest.s) - lanes::lerp<T>(y.p0, y.p1, rest.t);
+  rest.sqr = dot(dq, dq);
+  return rest;
+}
+
+template <class T, class G>
+LOCUS_LANE_INLINE SegmentLanes<T> gather_segment(const G& g) {
+  return {gather3<T>(g, [](const Segment3<T>& s) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return s.p0; }),
+          gather3<T>(g, [](const Segment3<T>& s) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return s.p1; })};
 }
 
 template <class T>
@@ -218,9 +248,9 @@ LOCUS_LANE_INLINE void segment_segment_run(const Source<Segment3<T>>& a,
                                            const Source<Segment3<T>>& b, T* out, std::size_t n) {
   lanes::run<T>(
       a, b, out, n,
-      [](const Source<Segment3<T>>& x, const Source<Segment3<T>>& y, std::size_t i) LOCUS_LANE_LAMBDA {
+      [](const auto& x, const auto& y) LOCUS_LANE_LAMBDA {
         const SegmentPairLanes<T> r =
-            segment_pair_lanes<T>(gather_segment<T>(x, i), gather_segment<T>(y, i));
+            segment_pair_lanes<T>(gather_segment<T>(x), gather_segment<T>(y));
         return Result<T>{r.sqr, r.scalar};
       },
       [](const Segment3<T>& x, const Segment3<T>& y) LOCUS_LANE_LAMBDA { return sqr_distance(x, y); });
@@ -234,12 +264,12 @@ LOCUS_LANE_INLINE void point_aligned_box_run(const Source<Vec3<T>>& a,
                                              std::size_t n) {
   lanes::run<T>(
       a, b, out, n,
-      [](const Source<Vec3<T>>& ps, const Source<AlignedBox3<T>>& bs, std::size_t i) LOCUS_LANE_LAMBDA {
-        const V3<T> p = gather3<T>(ps, i, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; });
+      [](const auto& ps, const auto& bs) LOCUS_LANE_LAMBDA {
+        const V3<T> p = gather3<T>(ps, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; });
         const V3<T> lo =
-            gather3<T>(bs, i, [](const AlignedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.min; });
+            gather3<T>(bs, [](const AlignedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.min; });
         const V3<T> hi =
-            gather3<T>(bs, i, [](const AlignedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.max; });
+            gather3<T>(bs, [](const AlignedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.max; });
         // detail::point_aligned_box: the clamped coordinate's excess, squared and summed onto 0.
         const auto excess = [](V<T> x, V<T> l, V<T> h) LOCUS_LANE_LAMBDA {
           const V<T> above = sel<T>(x < l, l, x);
@@ -263,16 +293,16 @@ LOCUS_LANE_INLINE void point_oriented_box_run(const Source<Vec3<T>>& a,
                                               std::size_t n) {
   lanes::run<T>(
       a, b, out, n,
-      [](const Source<Vec3<T>>& ps, const Source<OrientedBox3<T>>& bs, std::size_t i) LOCUS_LANE_LAMBDA {
-        const V3<T> p = gather3<T>(ps, i, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; });
+      [](const auto& ps, const auto& bs) LOCUS_LANE_LAMBDA {
+        const V3<T> p = gather3<T>(ps, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; });
         const V3<T> c =
-            gather3<T>(bs, i, [](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.center; });
+            gather3<T>(bs, [](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.center; });
         const V3<T> ext =
-            gather3<T>(bs, i, [](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.extent; });
+            gather3<T>(bs, [](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.extent; });
         V3<T> axis[3];
         for (int k = 0; k < 3; ++k)
           axis[k] = gather3<T>(
-              bs, i, [k](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.axis[k]; });
+              bs, [k](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.axis[k]; });
         // detail::point_oriented_box: per axis the coordinate in the box frame and its excess
         // over the slab (a negative extent acts as 0), squared and summed onto 0.
         const V3<T> d = p - c;
@@ -309,22 +339,19 @@ Sources<A, B> sources(std::span<const A> a, std::span<const B> b, std::span<T> o
                "sqr_distances: the spans must have the same length");
   std::size_t n = a.size() < b.size() ? a.size() : b.size();
   n = n < out.size() ? n : out.size();
-  const std::size_t last = n == 0 ? 0 : n - 1;
-  return {{a.data(), 1, last}, {b.data(), 1, last}, n};
+  return {{a.data(), 1}, {b.data(), 1}, n};
 }
 template <class A, class B, class T>
 Sources<A, B> sources(std::span<const A> a, const B& b, std::span<T> out) {
   LOCUS_ASSERT(a.size() == out.size(), "sqr_distances: out must have one value per query");
   const std::size_t n = a.size() < out.size() ? a.size() : out.size();
-  const std::size_t last = n == 0 ? 0 : n - 1;
-  return {{a.data(), 1, last}, {&b, 0, last}, n};
+  return {{a.data(), 1}, {&b, 0}, n};
 }
 template <class A, class B, class T>
 Sources<A, B> sources(const A& a, std::span<const B> b, std::span<T> out) {
   LOCUS_ASSERT(b.size() == out.size(), "sqr_distances: out must have one value per query");
   const std::size_t n = b.size() < out.size() ? b.size() : out.size();
-  const std::size_t last = n == 0 ? 0 : n - 1;
-  return {{&a, 0, last}, {b.data(), 1, last}, n};
+  return {{&a, 0}, {b.data(), 1}, n};
 }
 
 // One clone set per pair and scalar type (the target_clones functions are not templates).
@@ -352,7 +379,8 @@ LOCUS_BATCH_DRIVER(point_oriented_box_d, point_oriented_box_run, Vec3<double>,
 template <class T>
 void segment_triangle_each(const Source<Segment3<T>>& a, const Source<Triangle3<T>>& b, T* out,
                            std::size_t n) {
-  for (std::size_t i = 0; i < n; ++i) out[i] = sqr_distance(a.at(i), b.at(i));
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] = sqr_distance(a.data[i * a.stride], b.data[i * b.stride]);
 }
 void segment_triangle_f(const Source<Segment3<float>>& a, const Source<Triangle3<float>>& b,
                         float* out, std::size_t n) {

@@ -12,10 +12,11 @@
 // lane; sel(m, a, b) is the lane-wise m ? a : b (a blend), which is how the scalar queries'
 // selects and `x < y ? x : y` minima are mirrored.
 //
-// Objects are read in groups of W consecutive queries (gather()): lane k holds query i + k, and
-// past the end of the input the last query is repeated (its lanes are computed and discarded), so
-// a kernel never reads out of bounds and never needs a scalar tail loop. A source with stride 0
-// is one object broadcast to every query (the "one against many" overloads).
+// Objects are read in groups of W consecutive queries (Group, gather()): lane k holds query i + k;
+// the last, partial group is copied to a local array with the last query repeated (its lanes are
+// computed and discarded), so a kernel never reads out of bounds and needs no scalar tail loop.
+// A source with stride 0 is one object broadcast to every query (the "one against many"
+// overloads).
 
 #include <locus/core/vec.hpp>
 
@@ -92,6 +93,14 @@ LOCUS_LANE_INLINE bool any(M<T> m) {
   return false;
 }
 
+/// True when every lane of m is set.
+template <class T>
+LOCUS_LANE_INLINE bool all(M<T> m) {
+  for (int k = 0; k < Lanes<T>::W; ++k)
+    if (!m[k]) return false;
+  return true;
+}
+
 /// A 3D vector per lane, with the scalar Vec3 operations in the same evaluation order as
 /// core/vec.hpp (dot = (x x' + y y') + z z').
 template <class T>
@@ -143,27 +152,32 @@ template <class Obj>
 struct Source {
   const Obj* data;
   std::size_t stride;
-  std::size_t last;  ///< index of the last query (its object is repeated past the end)
+};
 
-  [[nodiscard]] LOCUS_LANE_INLINE const Obj& at(std::size_t i) const {
-    return data[(i < last ? i : last) * stride];
+/// The objects of W consecutive queries: lane k reads p[k] (kStep) or *p (a broadcast object).
+/// The step is a compile-time constant so that every lane's fields are loaded at fixed offsets.
+template <class Obj, bool kStep>
+struct Group {
+  const Obj* p;
+  [[nodiscard]] LOCUS_LANE_INLINE const Obj& operator[](std::size_t k) const {
+    return kStep ? p[k] : *p;
   }
 };
 
-/// Lane k = field(src.at(i + k)) for a scalar field.
-template <class T, class Obj, class Field>
-LOCUS_LANE_INLINE V<T> gather(const Source<Obj>& src, std::size_t i, Field field) {
+/// Lane k = field(group[k]) for a scalar field.
+template <class T, class G, class Field>
+LOCUS_LANE_INLINE V<T> gather(const G& g, Field field) {
   return [&]<std::size_t... k>(std::index_sequence<k...>) LOCUS_LANE_LAMBDA {
-    return V<T>{field(src.at(i + k))...};
+    return V<T>{field(g[k])...};
   }(std::make_index_sequence<Lanes<T>::W>{});
 }
 
 /// Lanes of a Vec3 member of the objects (member(obj) returns a const Vec3<T>&).
-template <class T, class Obj, class Member>
-LOCUS_LANE_INLINE V3<T> gather3(const Source<Obj>& src, std::size_t i, Member member) {
-  return {gather<T>(src, i, [&](const Obj& o) LOCUS_LANE_LAMBDA { return member(o).x; }),
-          gather<T>(src, i, [&](const Obj& o) LOCUS_LANE_LAMBDA { return member(o).y; }),
-          gather<T>(src, i, [&](const Obj& o) LOCUS_LANE_LAMBDA { return member(o).z; })};
+template <class T, class G, class Member>
+LOCUS_LANE_INLINE V3<T> gather3(const G& g, Member member) {
+  return {gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return member(o).x; }),
+          gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return member(o).y; }),
+          gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return member(o).z; })};
 }
 
 /// What a kernel returns for W queries: the squared distances, and the lanes the kernel does not
@@ -174,22 +188,47 @@ struct Result {
   M<T> scalar;
 };
 
-/// Runs kernel(a, b, i) over the n queries W at a time, writes the squared distances to out, and
-/// recomputes the lanes the kernel hands back with the scalar query (scalar(a, b)).
-template <class T, class A, class B, class Kernel, class Scalar>
-LOCUS_LANE_INLINE void run(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
-                           Kernel kernel, Scalar scalar) {
+template <class T, bool kStepA, bool kStepB, class A, class B, class Kernel, class Scalar>
+LOCUS_LANE_INLINE void run_groups(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
+                                  Kernel kernel, Scalar scalar) {
   constexpr std::size_t W = Lanes<T>::W;
-  for (std::size_t i = 0; i < n; i += W) {
-    const Result<T> r = kernel(a, b, i);
-    const std::size_t m = n - i < W ? n - i : W;
+  const auto finish = [&](const Result<T>& r, std::size_t i, std::size_t m) LOCUS_LANE_LAMBDA {
     T values[W];
     std::memcpy(values, &r.sqr, sizeof values);
     if (any<T>(r.scalar))
       for (std::size_t k = 0; k < m; ++k)
-        if (r.scalar[k]) values[k] = scalar(a.at(i + k), b.at(i + k));
+        if (r.scalar[k]) values[k] = scalar(a.data[(i + k) * a.stride], b.data[(i + k) * b.stride]);
     std::memcpy(out + i, values, m * sizeof(T));
+  };
+  std::size_t i = 0;
+  for (; i + W <= n; i += W)
+    finish(kernel(Group<A, kStepA>{a.data + (kStepA ? i : 0)},
+                  Group<B, kStepB>{b.data + (kStepB ? i : 0)}),
+           i, W);
+  if (i == n) return;
+  // The tail: the remaining queries, the last one repeated to fill the group.
+  A ta[W];
+  B tb[W];
+  for (std::size_t k = 0; k < W; ++k) {
+    const std::size_t j = i + k < n ? i + k : n - 1;
+    if constexpr (kStepA) ta[k] = a.data[j];
+    if constexpr (kStepB) tb[k] = b.data[j];
   }
+  finish(kernel(Group<A, kStepA>{kStepA ? ta : a.data}, Group<B, kStepB>{kStepB ? tb : b.data}),
+         i, n - i);
+}
+
+/// Runs kernel(group_a, group_b) over the n queries W at a time, writes the squared distances to
+/// out, and recomputes the lanes the kernel hands back with the scalar query (scalar(a, b)).
+template <class T, class A, class B, class Kernel, class Scalar>
+LOCUS_LANE_INLINE void run(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
+                           Kernel kernel, Scalar scalar) {
+  if (a.stride != 0 && b.stride != 0)
+    run_groups<T, true, true>(a, b, out, n, kernel, scalar);
+  else if (a.stride != 0)
+    run_groups<T, true, false>(a, b, out, n, kernel, scalar);
+  else
+    run_groups<T, false, true>(a, b, out, n, kernel, scalar);
 }
 
 }  // namespace locus::lanes

@@ -21,8 +21,9 @@
 // clamped point-segment projection, and the nearest of those edges wins. This covers the seven
 // regions of figure 6.6 without region-specific code, and the vertex regions come out of the clamps
 // exactly. In 3D the common case (finite input, well-shaped triangle: 16 |e0 x e1|^2 >= |e0|^2
-// |e1|^2, so the plane solution is accurate to a few ulps) runs as a fast path with one branch
-// (inside or not): outside, all three edges' clamped projections are evaluated and the nearest
+// |e1|^2 with the edges e0, e1 taken from the vertex opposite the longest edge, so that only
+// needles fail it; the plane solution is then accurate to a few ulps) runs as a fast path with
+// one branch (inside or not): outside, all three edges' clamped projections are evaluated and the nearest
 // is chosen with min/blend instructions (detail/branchless.hpp) instead of branching on the
 // region, which is unpredictable on mixed input and costs more to mispredict than the two extra
 // projections. Its finiteness test comes with its range tests. Everything else goes through the
@@ -145,8 +146,22 @@ template <class T, int N>
 [[nodiscard]] inline PointTriangleCore<T, N> point_triangle(const Vec<T, N>& p,
                                                             const Triangle<T, N>& tri) noexcept {
   if constexpr (N != 2) {
-    const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v0, e2 = tri.v2 - tri.v1;
-    const Vec<T, N> w0 = p - tri.v0, w1 = p - tri.v1;
+    // Origin at the vertex opposite the longest edge: its angle is the triangle's largest
+    // (>= 60 degrees), so the well-shaped test below fails only for needles (largest angle above
+    // ~165 degrees), whatever the vertex order. Rotation r: (o, x, y) = (v0, v1, v2), (v1, v2, v0)
+    // or (v2, v0, v1), chosen with selects.
+    const T l01 = sqr_length(tri.v1 - tri.v0), l02 = sqr_length(tri.v2 - tri.v0);
+    const T l12 = sqr_length(tri.v2 - tri.v1);
+    const bool keep = l12 >= l01 && l12 >= l02;
+    const bool r1 = !keep && l02 >= l01, r2 = !keep && !(l02 >= l01);
+    Vec<T, N> o, x, y;
+    for (int i = 0; i < N; ++i) {
+      o[i] = select(r1, tri.v1[i], select(r2, tri.v2[i], tri.v0[i]));
+      x[i] = select(r1, tri.v2[i], select(r2, tri.v0[i], tri.v1[i]));
+      y[i] = select(r1, tri.v0[i], select(r2, tri.v1[i], tri.v2[i]));
+    }
+    const Vec<T, N> e0 = x - o, e1 = y - o, e2 = y - x;
+    const Vec<T, N> w0 = p - o, w1 = p - x;
     const T a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
     const T d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
     const T ac = a * c, det = ac - b * b;  // no harmful cancellation when well-shaped
@@ -158,10 +173,10 @@ template <class T, int N>
     if (T(16) * det >= ac && a >= lo && c >= lo && f >= lo && ac <= hi && f <= hi &&
         (d - d) + (e - e) + (g - g) == T(0)) {
       const T sn = c * d - b * e, tn = a * e - b * d;  // det * (s, t) of the plane solution
-      Vec3<T> bary;
+      Vec3<T> rb;  // barycentric in (o, x, y)
       if (sn >= T(0) && tn >= T(0) && sn + tn <= det) {
         const T s = sn / det, t = tn / det;
-        bary = {T(1) - s - t, s, t};
+        rb = {T(1) - s - t, s, t};
       } else {
         // Outside: the nearest of the three edges' clamped projections (the nearest of the one
         // or two whose constraints the plane solution violates, by KKT; evaluating all three
@@ -173,14 +188,18 @@ template <class T, int N>
         const T l2 = clamp_minmax(g / f, zero, one);
         const T q0 = sqr_length(w0 - l0 * e0), q1 = sqr_length(w0 - l1 * e1);
         const T q2 = sqr_length(w1 - l2 * e2);
-        // Ties keep the first in the order v0 v1, v0 v2, v1 v2.
+        // Ties keep the first in the order o x, o y, x y.
         const T q01 = q1 < q0 ? q1 : q0;
         const T u = q1 < q0 ? T(1) - l1 : T(1) - l0, v = q1 < q0 ? zero : l0;
         const T w = q1 < q0 ? l1 : zero;
-        bary = {q2 < q01 ? zero : u, q2 < q01 ? T(1) - l2 : v, q2 < q01 ? l2 : w};
+        rb = {q2 < q01 ? zero : u, q2 < q01 ? T(1) - l2 : v, q2 < q01 ? l2 : w};
       }
-      const Vec<T, N> x = point_at_barycentric(tri, bary);
-      return {bary, x, sqr_length(x - p), true};
+      // Back to the triangle's own vertex order.
+      const Vec3<T> bary{select(r1, rb.z, select(r2, rb.y, rb.x)),
+                         select(r1, rb.x, select(r2, rb.z, rb.y)),
+                         select(r1, rb.y, select(r2, rb.x, rb.z))};
+      const Vec<T, N> cp = point_at_barycentric(tri, bary);
+      return {bary, cp, sqr_length(cp - p), true};
     }
   }
   return detail::point_triangle_general(p, tri);
