@@ -8,7 +8,9 @@
 //   <pair>/distance<T>      locus::distance: the full result (closest points, parameters, sqrt);
 //   <pair>/sqr_distance<T>  locus::sqr_distance: the squared distance only, like CGAL's;
 //   <pair>/sqr_distances<T> locus::sqr_distances (distance/batch.hpp): the same values for all
-//                           4096 pairs in one call (items = queries), several per SIMD instruction;
+//                           4096 pairs in one call (items = queries), several per SIMD instruction
+//                           (point_triangle/sqr_distances_one_triangle<T>: 4096 points against one
+//                           triangle);
 //   <pair>/cgal<Kernel>     the peer on the double inputs (converted once, outside the loop):
 //     CGAL::squared_distance with Simple_cartesian<double> (plain floating point, the fair peer)
 //     and Exact_predicates_inexact_constructions_kernel (what CGAL users usually take), when
@@ -78,6 +80,23 @@ void batch_bench(benchmark::State& state) {
                           static_cast<std::int64_t>(a.size()));
 }
 
+// The "one against many" form: every point against the first triangle (a point cloud against
+// one triangle); items per second = queries per second.
+template <class T>
+void point_cloud_triangle_bench(benchmark::State& state) {
+  const auto in = PointTriangle::input(state);
+  const auto p = cast_all<T>(in.first);
+  const auto tri = cast<T>(in.second.front());
+  std::vector<T> out(p.size());
+  for (auto _ : state) {
+    locus::sqr_distances(std::span<const locus::Vec3<T>>(p), tri, std::span<T>(out));
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
+                          static_cast<std::int64_t>(p.size()));
+}
+
 // ---- the textbook peer for the boxes (no library has it) --------------------------------------
 
 struct TextbookQuery {
@@ -115,15 +134,19 @@ void textbook_bench(benchmark::State& state) {
 
 // Registers <name>/distance<T>, <name>/sqr_distance<T>, <name>/sqr_distances<T> for float and
 // double.
-#define LOCUS_BENCH_LOCUS(Pair, name, ...)                                                      \
-  BENCHMARK(locus_bench<Pair, float, FullQuery>)->Name(name "/distance<float>") __VA_ARGS__;    \
-  BENCHMARK(locus_bench<Pair, double, FullQuery>)->Name(name "/distance<double>") __VA_ARGS__;  \
-  BENCHMARK(locus_bench<Pair, float, SqrQuery>)->Name(name "/sqr_distance<float>") __VA_ARGS__; \
+#define LOCUS_BENCH_LOCUS(Pair, name, ...)                                                        \
+  BENCHMARK(locus_bench<Pair, float, FullQuery>)->Name(name "/distance<float>") __VA_ARGS__;      \
+  BENCHMARK(locus_bench<Pair, double, FullQuery>)->Name(name "/distance<double>") __VA_ARGS__;    \
+  BENCHMARK(locus_bench<Pair, float, SqrQuery>)->Name(name "/sqr_distance<float>") __VA_ARGS__;   \
   BENCHMARK(locus_bench<Pair, double, SqrQuery>)->Name(name "/sqr_distance<double>") __VA_ARGS__; \
-  BENCHMARK(batch_bench<Pair, float>)->Name(name "/sqr_distances<float>") __VA_ARGS__;           \
+  BENCHMARK(batch_bench<Pair, float>)->Name(name "/sqr_distances<float>") __VA_ARGS__;            \
   BENCHMARK(batch_bench<Pair, double>)->Name(name "/sqr_distances<double>") __VA_ARGS__
 
 LOCUS_BENCH_LOCUS(PointTriangle, "point_triangle");
+BENCHMARK(point_cloud_triangle_bench<float>)
+    ->Name("point_triangle/sqr_distances_one_triangle<float>");
+BENCHMARK(point_cloud_triangle_bench<double>)
+    ->Name("point_triangle/sqr_distances_one_triangle<double>");
 LOCUS_BENCH_LOCUS(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
 LOCUS_BENCH_LOCUS(SegmentTriangle, "segment_triangle");
 LOCUS_BENCH_LOCUS(PointObb, "point_obb");

@@ -16,6 +16,7 @@
 #include <locus/distance/segment_triangle.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 
 namespace locus {
@@ -23,11 +24,11 @@ namespace {
 
 using lanes::gather;
 using lanes::gather3;
+using lanes::Group;
 using lanes::M;
 using lanes::Result;
 using lanes::sel;
 using lanes::Source;
-using lanes::Group;
 using lanes::V;
 using lanes::V3;
 
@@ -43,7 +44,7 @@ struct PointTriangleLanes {
   V3<T> bary;     // barycentric (u, v, w) of the closest point
   V3<T> closest;  // point_at_barycentric(tri, bary)
   V<T> sqr;
-  M<T> scalar;    // lanes outside the fast path
+  M<T> scalar;  // lanes outside the fast path
 };
 
 template <class T>
@@ -62,8 +63,9 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, con
   const V<T> a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
   const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
   const V<T> ac = a * c, det = ac - b * b;
-  const M<T> fast = (T(16) * det >= ac) & (a >= kMin<T>) & (c >= kMin<T>) & (f >= kMin<T>) &
-                    (ac <= kMax<T>) & (f <= kMax<T>) & (((d - d) + (e - e)) + (g - g) == T(0));
+  const M<T> fast =
+      (T(16) * det >= ac) & (a >= kMin<T>)&(c >= kMin<T>)&(f >= kMin<T>)&(ac <= kMax<T>)&(
+                                f <= kMax<T>)&(((d - d) + (e - e)) + (g - g) == T(0));
   const V<T> sn = c * d - b * e, tn = a * e - b * d;
   const M<T> inside = (sn >= T(0)) & (tn >= T(0)) & (sn + tn <= det);
   const V<T> s = sn / det, t = tn / det;
@@ -84,7 +86,7 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, con
   const V3<T> bary{sel<T>(r1, rb.z, sel<T>(r2, rb.y, rb.x)),
                    sel<T>(r1, rb.x, sel<T>(r2, rb.z, rb.y)),
                    sel<T>(r1, rb.y, sel<T>(r2, rb.x, rb.z))};
-  const V3<T> cp = bary.x * v0 + bary.y * v1 + bary.z * v2;
+  const V3<T> cp = rb.x * o + rb.y * x + rb.z * y;
   const V3<T> dx = cp - p;
   return {bary, cp, dot(dx, dx), ~fast};
 }
@@ -96,10 +98,8 @@ LOCUS_LANE_INLINE void point_triangle_run(const Source<A>& a, const Source<B>& b
       a, b, out, n,
       [](const auto& p, const auto& t) LOCUS_LANE_LAMBDA {
         const auto pl = point_triangle_lanes<T>(
-            gather3<T>(p, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; }),
-            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v0; }),
-            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v1; }),
-            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v2; }));
+            gather3<T>(p, std::identity{}), gather3<T>(t, &Triangle3<T>::v0),
+            gather3<T>(t, &Triangle3<T>::v1), gather3<T>(t, &Triangle3<T>::v2));
         return Result<T>{pl.sqr, pl.scalar};
       },
       [](const Vec3<T>& p, const Triangle3<T>& t) LOCUS_LANE_LAMBDA { return sqr_distance(p, t); });
@@ -114,7 +114,7 @@ struct SegmentLanes {
 
 template <class T>
 struct SegmentPairLanes {
-  V<T> s, t;      // parameters on the first and the second segment
+  V<T> s, t;  // parameters on the first and the second segment
   V<T> sqr;
   M<T> scalar;
 };
@@ -161,7 +161,7 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
   const V<T> DD = lanes::sqr_cross_norm<T>(dA, dB), acc = aa * cc;
   // Lanes linear_linear would take elsewhere: input out of range (it may then reach its KKT
   // branch, or rescale a projection), or a projection that overflows.
-  M<T> scalar = ~(regular & (aa <= kMax<T>) & (cc <= kMax<T>) & (acc >= kMin<T>));
+  M<T> scalar = ~(regular & (aa <= kMax<T>)&(cc <= kMax<T>)&(acc >= kMin<T>));
   const V<T> s0 = (bb * ee - cc * dd) / DD, t0 = (aa * ee - bb * dd) / DD;
   const M<T> interior = (DD > T(0)) & lanes::finite<T>(s0) & lanes::finite<T>(t0);
   const M<T> inside = (s0 >= T(0)) & (s0 <= T(1)) & (t0 >= T(0)) & (t0 <= T(1));
@@ -205,10 +205,9 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
   const V<T> a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
   const V<T> D = lanes::sqr_cross_norm<T>(da, db), ac = a * c;
   const V<T> sn = b * e - c * d, tn = a * e - b * d;
-  const M<T> sl = sn < T(0), sh = sn > D, tl = tn < T(0), th = tn > D;
+  const M<T> sl = sn<T(0), sh = sn> D, tl = tn<T(0), th = tn> D;
   const M<T> s_out = sl | sh, t_out = tl | th;
-  const M<T> regular = (a >= kMin<T>) & (c >= kMin<T>) & (ac <= kMax<T>) &
-                       ((d - d) + (e - e) == T(0));
+  const M<T> regular = (a >= kMin<T>)&(c >= kMin<T>)&(ac <= kMax<T>)&((d - d) + (e - e) == T(0));
   const M<T> fast = regular & (D > tiny * ac) & (s_out | t_out | (T(16) * D >= ac));
   const V<T> zero = a - a, one = zero + T(1);
   const V<T> sc = sel<T>(sh, lanes::splat<T>(T(1)), V<T>{});
@@ -239,8 +238,7 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
 
 template <class T, class G>
 LOCUS_LANE_INLINE SegmentLanes<T> gather_segment(const G& g) {
-  return {gather3<T>(g, [](const Segment3<T>& s) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return s.p0; }),
-          gather3<T>(g, [](const Segment3<T>& s) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return s.p1; })};
+  return {gather3<T>(g, &Segment3<T>::p0), gather3<T>(g, &Segment3<T>::p1)};
 }
 
 template <class T>
@@ -253,7 +251,8 @@ LOCUS_LANE_INLINE void segment_segment_run(const Source<Segment3<T>>& a,
             segment_pair_lanes<T>(gather_segment<T>(x), gather_segment<T>(y));
         return Result<T>{r.sqr, r.scalar};
       },
-      [](const Segment3<T>& x, const Segment3<T>& y) LOCUS_LANE_LAMBDA { return sqr_distance(x, y); });
+      [](const Segment3<T>& x, const Segment3<T>& y)
+          LOCUS_LANE_LAMBDA { return sqr_distance(x, y); });
 }
 
 // ---- segment - triangle (detail::linear_triangle_core for a segment) ---------------------------
@@ -357,7 +356,7 @@ LOCUS_LANE_INLINE Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg, c
   if (lanes::any<T>(kkt & ok)) {
     // The end beyond the crossing: its point-triangle pair is optimal outright when moving into
     // the segment does not approach the triangle.
-    const M<T> before = ts < T(0), after = ts > T(1);
+    const M<T> before = ts<T(0), after = ts> T(1);
     const V3<T> end = lanes::sel<T>(before, seg.p0, seg.p1);
     const PointTriangleLanes<T> pt = point_triangle_lanes<T>(end, v0, v1, v2);
     const M<T> has_end = before | after;
@@ -369,8 +368,8 @@ LOCUS_LANE_INLINE Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg, c
     V<T> best_t = sel<T>(before, zero, one);
     V3<T> best_bary = pt.bary;
     // The edges whose constraints the crossing violates, in the scalar order.
-    const auto edge = [&](M<T> wanted, const V3<T>& vi, const V3<T>& vj, int i, int j)
-                          LOCUS_LANE_LAMBDA {
+    const auto edge = [&](M<T> wanted, const V3<T>& vi, const V3<T>& vj, int i,
+                          int j) LOCUS_LANE_LAMBDA {
       if (!lanes::any<T>(wanted & ok & ~end_wins)) return;
       const SegmentPairLanes<T> st = segment_pair_lanes<T>(seg, SegmentLanes<T>{vi, vj});
       scalar |= wanted & ~end_wins & st.scalar;
@@ -408,16 +407,13 @@ LOCUS_LANE_INLINE Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg, c
 
 template <class T>
 LOCUS_LANE_INLINE void segment_triangle_run(const Source<Segment3<T>>& a,
-                                            const Source<Triangle3<T>>& b, T* out,
-                                            std::size_t n) {
+                                            const Source<Triangle3<T>>& b, T* out, std::size_t n) {
   lanes::run<T>(
       a, b, out, n,
       [](const auto& s, const auto& t) LOCUS_LANE_LAMBDA {
-        return segment_triangle_lanes<T>(
-            gather_segment<T>(s),
-            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v0; }),
-            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v1; }),
-            gather3<T>(t, [](const Triangle3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.v2; }));
+        return segment_triangle_lanes<T>(gather_segment<T>(s), gather3<T>(t, &Triangle3<T>::v0),
+                                         gather3<T>(t, &Triangle3<T>::v1),
+                                         gather3<T>(t, &Triangle3<T>::v2));
       },
       [](const Segment3<T>& s, const Triangle3<T>& t) { return sqr_distance(s, t); });
 }
@@ -431,26 +427,25 @@ LOCUS_LANE_INLINE void point_aligned_box_run(const Source<Vec3<T>>& a,
   lanes::run<T>(
       a, b, out, n,
       [](const auto& ps, const auto& bs) LOCUS_LANE_LAMBDA {
-        const V3<T> p = gather3<T>(ps, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; });
-        const V3<T> lo =
-            gather3<T>(bs, [](const AlignedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.min; });
-        const V3<T> hi =
-            gather3<T>(bs, [](const AlignedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.max; });
+        const V3<T> p = gather3<T>(ps, std::identity{});
+        const V3<T> lo = gather3<T>(bs, &AlignedBox3<T>::min);
+        const V3<T> hi = gather3<T>(bs, &AlignedBox3<T>::max);
         // detail::point_aligned_box: the clamped coordinate's excess, squared and summed onto 0.
         const auto excess = [](V<T> x, V<T> l, V<T> h) LOCUS_LANE_LAMBDA {
           const V<T> above = sel<T>(x < l, l, x);
           const V<T> e = x - sel<T>(h < above, h, above);
           return e * e;
         };
-        const V<T> sqr =
-            ((V<T>{} + excess(p.x, lo.x, hi.x)) + excess(p.y, lo.y, hi.y)) + excess(p.z, lo.z, hi.z);
+        const V<T> sqr = ((V<T>{} + excess(p.x, lo.x, hi.x)) + excess(p.y, lo.y, hi.y)) +
+                         excess(p.z, lo.z, hi.z);
         const V<T> fz = ((V<T>{} + lanes::finite_zero<T>(p)) + lanes::finite_zero<T>(lo)) +
                         lanes::finite_zero<T>(hi);
         const M<T> empty = (hi.x < lo.x) | (hi.y < lo.y) | (hi.z < lo.z);
         const V<T> nan = lanes::splat<T>(std::numeric_limits<T>::quiet_NaN());
         return Result<T>{sel<T>(empty, nan, sqr + fz), M<T>{}};
       },
-      [](const Vec3<T>& p, const AlignedBox3<T>& box) LOCUS_LANE_LAMBDA { return sqr_distance(p, box); });
+      [](const Vec3<T>& p, const AlignedBox3<T>& box)
+          LOCUS_LANE_LAMBDA { return sqr_distance(p, box); });
 }
 
 template <class T>
@@ -460,15 +455,14 @@ LOCUS_LANE_INLINE void point_oriented_box_run(const Source<Vec3<T>>& a,
   lanes::run<T>(
       a, b, out, n,
       [](const auto& ps, const auto& bs) LOCUS_LANE_LAMBDA {
-        const V3<T> p = gather3<T>(ps, [](const Vec3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x; });
-        const V3<T> c =
-            gather3<T>(bs, [](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.center; });
-        const V3<T> ext =
-            gather3<T>(bs, [](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.extent; });
+        const V3<T> p = gather3<T>(ps, std::identity{});
+        const V3<T> c = gather3<T>(bs, &OrientedBox3<T>::center);
+        const V3<T> ext = gather3<T>(bs, &OrientedBox3<T>::extent);
         V3<T> axis[3];
         for (int k = 0; k < 3; ++k)
-          axis[k] = gather3<T>(
-              bs, [k](const OrientedBox3<T>& x) LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.axis[k]; });
+          axis[k] = gather3<T>(bs,
+                               [k](const OrientedBox3<T>& x)
+                                   LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.axis[k]; });
         // detail::point_oriented_box: per axis the coordinate in the box frame and its excess
         // over the slab (a negative extent acts as 0), squared and summed onto 0.
         const V3<T> d = p - c;
@@ -487,7 +481,8 @@ LOCUS_LANE_INLINE void point_oriented_box_run(const Source<Vec3<T>>& a,
         for (int k = 0; k < 3; ++k) fz = fz + lanes::finite_zero<T>(axis[k]);
         return Result<T>{sqr + fz, M<T>{}};
       },
-      [](const Vec3<T>& p, const OrientedBox3<T>& box) LOCUS_LANE_LAMBDA { return sqr_distance(p, box); });
+      [](const Vec3<T>& p, const OrientedBox3<T>& box)
+          LOCUS_LANE_LAMBDA { return sqr_distance(p, box); });
 }
 
 // ---- the entry points -------------------------------------------------------------------------
@@ -521,10 +516,9 @@ Sources<A, B> sources(const A& a, std::span<const B> b, std::span<T> out) {
 }
 
 // One clone set per pair and scalar type (the target_clones functions are not templates).
-#define LOCUS_BATCH_DRIVER(name, run, A, B, T)                                       \
-  LOCUS_LANE_CLONES void name(const Source<A>& a, const Source<B>& b, T* out,        \
-                              std::size_t n) {                                       \
-    run<T>(a, b, out, n);                                                            \
+#define LOCUS_BATCH_DRIVER(name, run, A, B, T)                                                 \
+  LOCUS_LANE_CLONES void name(const Source<A>& a, const Source<B>& b, T* out, std::size_t n) { \
+    run<T>(a, b, out, n);                                                                      \
   }
 LOCUS_BATCH_DRIVER(point_triangle_f, point_triangle_run, Vec3<float>, Triangle3<float>, float)
 LOCUS_BATCH_DRIVER(point_triangle_d, point_triangle_run, Vec3<double>, Triangle3<double>, double)
@@ -535,10 +529,10 @@ LOCUS_BATCH_DRIVER(point_aligned_box_f, point_aligned_box_run, Vec3<float>, Alig
                    float)
 LOCUS_BATCH_DRIVER(point_aligned_box_d, point_aligned_box_run, Vec3<double>, AlignedBox3<double>,
                    double)
-LOCUS_BATCH_DRIVER(point_oriented_box_f, point_oriented_box_run, Vec3<float>,
-                   OrientedBox3<float>, float)
-LOCUS_BATCH_DRIVER(point_oriented_box_d, point_oriented_box_run, Vec3<double>,
-                   OrientedBox3<double>, double)
+LOCUS_BATCH_DRIVER(point_oriented_box_f, point_oriented_box_run, Vec3<float>, OrientedBox3<float>,
+                   float)
+LOCUS_BATCH_DRIVER(point_oriented_box_d, point_oriented_box_run, Vec3<double>, OrientedBox3<double>,
+                   double)
 LOCUS_BATCH_DRIVER(segment_triangle_f, segment_triangle_run, Segment3<float>, Triangle3<float>,
                    float)
 LOCUS_BATCH_DRIVER(segment_triangle_d, segment_triangle_run, Segment3<double>, Triangle3<double>,
@@ -548,19 +542,19 @@ LOCUS_BATCH_DRIVER(segment_triangle_d, segment_triangle_run, Segment3<double>, T
 }  // namespace
 
 // Every overload: the three forms (span-span, span-one, one-span) for one pair and scalar type.
-#define LOCUS_BATCH_ENTRY(A, B, T, driver)                                                      \
-  void sqr_distances(std::span<const A<T>> a, std::span<const B<T>> b,                          \
-                     std::span<T> out) noexcept {                                               \
-    const auto s = sources(a, b, out);                                                          \
-    driver(s.a, s.b, out.data(), s.n);                                                          \
-  }                                                                                             \
-  void sqr_distances(std::span<const A<T>> a, const B<T>& b, std::span<T> out) noexcept {       \
-    const auto s = sources(a, b, out);                                                          \
-    driver(s.a, s.b, out.data(), s.n);                                                          \
-  }                                                                                             \
-  void sqr_distances(const A<T>& a, std::span<const B<T>> b, std::span<T> out) noexcept {       \
-    const auto s = sources(a, b, out);                                                          \
-    driver(s.a, s.b, out.data(), s.n);                                                          \
+#define LOCUS_BATCH_ENTRY(A, B, T, driver)                                                \
+  void sqr_distances(std::span<const A<T>> a, std::span<const B<T>> b,                    \
+                     std::span<T> out) noexcept {                                         \
+    const auto s = sources(a, b, out);                                                    \
+    driver(s.a, s.b, out.data(), s.n);                                                    \
+  }                                                                                       \
+  void sqr_distances(std::span<const A<T>> a, const B<T>& b, std::span<T> out) noexcept { \
+    const auto s = sources(a, b, out);                                                    \
+    driver(s.a, s.b, out.data(), s.n);                                                    \
+  }                                                                                       \
+  void sqr_distances(const A<T>& a, std::span<const B<T>> b, std::span<T> out) noexcept { \
+    const auto s = sources(a, b, out);                                                    \
+    driver(s.a, s.b, out.data(), s.n);                                                    \
   }
 LOCUS_BATCH_ENTRY(Vec3, Triangle3, float, point_triangle_f)
 LOCUS_BATCH_ENTRY(Vec3, Triangle3, double, point_triangle_d)

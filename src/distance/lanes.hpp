@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <utility>
 
 // Everything a kernel calls is inlined into the driver, so that it is compiled for the driver's
@@ -169,15 +170,17 @@ template <class T, class G, class Field>
 LOCUS_LANE_INLINE V<T> gather(const G& g, Field field) {
   return [&]<std::size_t... k>(std::index_sequence<k...>) LOCUS_LANE_LAMBDA {
     return V<T>{field(g[k])...};
-  }(std::make_index_sequence<Lanes<T>::W>{});
+  }
+  (std::make_index_sequence<Lanes<T>::W>{});
 }
 
-/// Lanes of a Vec3 member of the objects (member(obj) returns a const Vec3<T>&).
+/// Lanes of a Vec3 of the objects: std::invoke(member, obj) is that Vec3 (a pointer to a data
+/// member such as &Triangle3<T>::v0, std::identity{} for the objects themselves, or a lambda).
 template <class T, class G, class Member>
 LOCUS_LANE_INLINE V3<T> gather3(const G& g, Member member) {
-  return {gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return member(o).x; }),
-          gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return member(o).y; }),
-          gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return member(o).z; })};
+  return {gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).x; }),
+          gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).y; }),
+          gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).z; })};
 }
 
 /// What a kernel returns for W queries: the squared distances, and the lanes the kernel does not
@@ -200,22 +203,29 @@ LOCUS_LANE_INLINE void run_groups(const Source<A>& a, const Source<B>& b, T* out
         if (r.scalar[k]) values[k] = scalar(a.data[(i + k) * a.stride], b.data[(i + k) * b.stride]);
     std::memcpy(out + i, values, m * sizeof(T));
   };
-  std::size_t i = 0;
-  for (; i + W <= n; i += W)
-    finish(kernel(Group<A, kStepA>{a.data + (kStepA ? i : 0)},
-                  Group<B, kStepB>{b.data + (kStepB ? i : 0)}),
-           i, W);
-  if (i == n) return;
-  // The tail: the remaining queries, the last one repeated to fill the group.
+  // One call site of the kernel (it is large): the last, partial group reads copies of its
+  // queries with the last one repeated to fill the group.
   A ta[W];
   B tb[W];
-  for (std::size_t k = 0; k < W; ++k) {
-    const std::size_t j = i + k < n ? i + k : n - 1;
-    if constexpr (kStepA) ta[k] = a.data[j];
-    if constexpr (kStepB) tb[k] = b.data[j];
+  // A broadcast object is copied first: out cannot alias the copy, so the compiler may hoist
+  // the kernel's work on that object out of the loop.
+  const A one_a = *a.data;
+  const B one_b = *b.data;
+  for (std::size_t i = 0; i < n; i += W) {
+    const A* pa = kStepA ? a.data + i : &one_a;
+    const B* pb = kStepB ? b.data + i : &one_b;
+    const std::size_t m = n - i < W ? n - i : W;
+    if (m < W) {
+      for (std::size_t k = 0; k < W; ++k) {
+        const std::size_t j = i + (k < m ? k : m - 1);
+        if constexpr (kStepA) ta[k] = a.data[j];
+        if constexpr (kStepB) tb[k] = b.data[j];
+      }
+      if constexpr (kStepA) pa = ta;
+      if constexpr (kStepB) pb = tb;
+    }
+    finish(kernel(Group<A, kStepA>{pa}, Group<B, kStepB>{pb}), i, m);
   }
-  finish(kernel(Group<A, kStepA>{kStepA ? ta : a.data}, Group<B, kStepB>{kStepB ? tb : b.data}),
-         i, n - i);
 }
 
 /// Runs kernel(group_a, group_b) over the n queries W at a time, writes the squared distances to
@@ -223,6 +233,7 @@ LOCUS_LANE_INLINE void run_groups(const Source<A>& a, const Source<B>& b, T* out
 template <class T, class A, class B, class Kernel, class Scalar>
 LOCUS_LANE_INLINE void run(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
                            Kernel kernel, Scalar scalar) {
+  if (n == 0) return;  // the spans' data may then be null
   if (a.stride != 0 && b.stride != 0)
     run_groups<T, true, true>(a, b, out, n, kernel, scalar);
   else if (a.stride != 0)

@@ -153,7 +153,7 @@ template <class T>
 AlignedBox3<T> random_aabb(Rng& rng) {
   const Vec3<T> c = rng.vec<T, 3>(T(-1), T(1));
   Vec3<T> e = rng.vec<T, 3>(T(0), T(1));
-  if (rng.uniform_int(0, 7) == 0) e[rng.uniform_int(0, 2)] = T(0);   // flat
+  if (rng.uniform_int(0, 7) == 0) e[rng.uniform_int(0, 2)] = T(0);      // flat
   if (rng.uniform_int(0, 15) == 0) e[rng.uniform_int(0, 2)] = T(-0.1);  // empty axis
   AlignedBox3<T> b{c - e, c + e};
   maybe_poison(rng, b.min);
@@ -184,8 +184,8 @@ void check_pair(const std::vector<A>& a, const std::vector<B>& b, const std::str
     const T want = sqr_distance(a[i], b[i]);
     if (!same_value(out[i], want) || !same_value(swapped[i], want)) {
       ++failures;
-      ADD_FAILURE() << what << " query " << i << " of " << n << ": batch " << out[i]
-                    << ", swapped " << swapped[i] << ", per query " << want;
+      ADD_FAILURE() << what << " query " << i << " of " << n << ": batch " << out[i] << ", swapped "
+                    << swapped[i] << ", per query " << want;
     }
   }
   if (n == 0) return;
@@ -202,8 +202,7 @@ void check_pair(const std::vector<A>& a, const std::vector<B>& b, const std::str
         !same_value(other[i], want_other)) {
       ++failures;
       ADD_FAILURE() << what << " one-against-many query " << i << ": " << one[i] << " / "
-                    << one_swapped[i] << " vs " << want << ", " << other[i] << " vs "
-                    << want_other;
+                    << one_swapped[i] << " vs " << want << ", " << other[i] << " vs " << want_other;
     }
   }
 }
@@ -232,8 +231,8 @@ void check_same_type_pair(const std::vector<A>& a, const std::vector<A>& b,
     const T want = sqr_distance(a[i], b[0]), want_other = sqr_distance(a[0], b[i]);
     if (!same_value(one[i], want) || !same_value(other[i], want_other)) {
       ++failures;
-      ADD_FAILURE() << what << " one-against-many query " << i << ": " << one[i] << " vs "
-                    << want << ", " << other[i] << " vs " << want_other;
+      ADD_FAILURE() << what << " one-against-many query " << i << ": " << one[i] << " vs " << want
+                    << ", " << other[i] << " vs " << want_other;
     }
   }
 }
@@ -300,7 +299,8 @@ TYPED_TEST(BatchTest, SegmentTriangleMatchesPerQuery) {
           break;
         }
         case 1: {  // parallel to the plane
-          const Vec3<T> lift = cross(tri.v1 - tri.v0, tri.v2 - tri.v0) * rng.uniform<T>(T(-1), T(1));
+          const Vec3<T> lift =
+              cross(tri.v1 - tri.v0, tri.v2 - tri.v0) * rng.uniform<T>(T(-1), T(1));
           s.push_back({tri.v0 + lift + rng.vec<T, 3>(T(-1), T(1)) * T(0),
                        tri.v1 + lift + (tri.v2 - tri.v0) * rng.uniform<T>(T(-1), T(1))});
           break;

@@ -40,18 +40,18 @@ namespace locus {
 
 // The pairs and their "one against many" forms, declared for float and double (compiled in
 // src/distance/batch.cpp).
-#define LOCUS_BATCH_PAIR(A, B)                                                                 \
-  void sqr_distances(std::span<const A<float>> a, std::span<const B<float>> b,                 \
-                     std::span<float> out) noexcept;                                           \
-  void sqr_distances(std::span<const A<double>> a, std::span<const B<double>> b,               \
-                     std::span<double> out) noexcept;                                          \
-  void sqr_distances(std::span<const A<float>> a, const B<float>& b,                           \
-                     std::span<float> out) noexcept;                                           \
-  void sqr_distances(std::span<const A<double>> a, const B<double>& b,                         \
-                     std::span<double> out) noexcept;                                          \
-  void sqr_distances(const A<float>& a, std::span<const B<float>> b,                           \
-                     std::span<float> out) noexcept;                                           \
-  void sqr_distances(const A<double>& a, std::span<const B<double>> b,                         \
+#define LOCUS_BATCH_PAIR(A, B)                                                   \
+  void sqr_distances(std::span<const A<float>> a, std::span<const B<float>> b,   \
+                     std::span<float> out) noexcept;                             \
+  void sqr_distances(std::span<const A<double>> a, std::span<const B<double>> b, \
+                     std::span<double> out) noexcept;                            \
+  void sqr_distances(std::span<const A<float>> a, const B<float>& b,             \
+                     std::span<float> out) noexcept;                             \
+  void sqr_distances(std::span<const A<double>> a, const B<double>& b,           \
+                     std::span<double> out) noexcept;                            \
+  void sqr_distances(const A<float>& a, std::span<const B<float>> b,             \
+                     std::span<float> out) noexcept;                             \
+  void sqr_distances(const A<double>& a, std::span<const B<double>> b,           \
                      std::span<double> out) noexcept;
 
 LOCUS_BATCH_PAIR(Vec3, Triangle3)
@@ -62,18 +62,19 @@ LOCUS_BATCH_PAIR(Vec3, OrientedBox3)
 #undef LOCUS_BATCH_PAIR
 
 // The swapped argument orders of the mixed pairs: the same values (sqr_distance is symmetric).
-#define LOCUS_BATCH_SWAPPED(A, B, T)                                                           \
-  inline void sqr_distances(std::span<const B<T>> b, std::span<const A<T>> a,                  \
-                            std::span<T> out) noexcept {                                       \
-    sqr_distances(a, b, out);                                                                  \
-  }                                                                                            \
+#define LOCUS_BATCH_SWAPPED(A, B, T)                                                             \
+  inline void sqr_distances(std::span<const B<T>> b, std::span<const A<T>> a,                    \
+                            std::span<T> out) noexcept {                                         \
+    sqr_distances(a, b, out);                                                                    \
+  }                                                                                              \
   inline void sqr_distances(std::span<const B<T>> b, const A<T>& a, std::span<T> out) noexcept { \
-    sqr_distances(a, b, out);                                                                  \
-  }                                                                                            \
+    sqr_distances(a, b, out);                                                                    \
+  }                                                                                              \
   inline void sqr_distances(const B<T>& b, std::span<const A<T>> a, std::span<T> out) noexcept { \
-    sqr_distances(a, b, out);                                                                  \
+    sqr_distances(a, b, out);                                                                    \
   }
-#define LOCUS_BATCH_SWAPPED_FD(A, B) LOCUS_BATCH_SWAPPED(A, B, float) LOCUS_BATCH_SWAPPED(A, B, double)
+#define LOCUS_BATCH_SWAPPED_FD(A, B) \
+  LOCUS_BATCH_SWAPPED(A, B, float) LOCUS_BATCH_SWAPPED(A, B, double)
 LOCUS_BATCH_SWAPPED_FD(Vec3, Triangle3)
 LOCUS_BATCH_SWAPPED_FD(Segment3, Triangle3)
 LOCUS_BATCH_SWAPPED_FD(Vec3, AlignedBox3)

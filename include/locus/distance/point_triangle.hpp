@@ -6,7 +6,8 @@
 //
 // distance(p, tri) returns Distance<T, N, NoParam, Vec3<T>>: closest[1] = the point of the
 // triangle nearest to p, param_b = its barycentric coordinates (u, v, w) (u + v + w = 1, all
-// >= 0; closest[1] = point_at_barycentric(tri, param_b), so a vertex is reproduced exactly).
+// >= 0; closest[1] = point_at_barycentric(tri, param_b) up to the order of the sum, so a vertex
+// is reproduced exactly).
 // distance(tri, p) is the swapped result. The triangle is filled: a point inside has distance 0.
 //
 // Method: minimise |v0 + s (v1 - v0) + t (v2 - v0) - p|^2 over s, t >= 0, s + t <= 1 (the
@@ -59,7 +60,7 @@ namespace detail {
 template <class T, int N>
 struct PointTriangleCore {
   Vec3<T> bary;       ///< barycentric (u, v, w) of the closest point
-  Vec<T, N> closest;  ///< point_at_barycentric(tri, bary)
+  Vec<T, N> closest;  ///< point_at_barycentric(tri, bary) (up to the order of the sum)
   T sqr;              ///< sqr_length(closest - p)
   bool finite;
 };
@@ -194,11 +195,12 @@ template <class T, int N>
         const T w = q1 < q0 ? l1 : zero;
         rb = {q2 < q01 ? zero : u, q2 < q01 ? T(1) - l2 : v, q2 < q01 ? l2 : w};
       }
-      // Back to the triangle's own vertex order.
+      // The point from the rotated vertices (a vertex or an edge point is still exact), and the
+      // barycentric coordinates back in the triangle's own vertex order.
+      const Vec<T, N> cp = rb.x * o + rb.y * x + rb.z * y;
       const Vec3<T> bary{select(r1, rb.z, select(r2, rb.y, rb.x)),
                          select(r1, rb.x, select(r2, rb.z, rb.y)),
                          select(r1, rb.y, select(r2, rb.x, rb.z))};
-      const Vec<T, N> cp = point_at_barycentric(tri, bary);
       return {bary, cp, sqr_length(cp - p), true};
     }
   }

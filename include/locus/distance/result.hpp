@@ -34,7 +34,9 @@
 // segment-triangle; see each header). It runs the same computation as distance() (one shared
 // core, so the value is the same bits) but skips the closest points' result, the parameters and
 // the square root; non-finite input gives NaN (no other error value). Use it to compare or
-// threshold distances, as CGAL's squared_distance is used.
+// threshold distances, as CGAL's squared_distance is used. Many queries of one of those 3D pairs
+// at once: sqr_distances(span_a, span_b, out) in batch.hpp (the same bits, several queries per
+// SIMD instruction).
 //
 // Cost: the result is an aggregate of at most 2 N + 8 scalars; no allocation.
 
