@@ -23,10 +23,13 @@ using namespace locus_bench_distance;
 
 using Simple = CGAL::Simple_cartesian<double>;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+// The float peer of locus's float queries (the same inputs rounded to float).
+using SimpleFloat = CGAL::Simple_cartesian<float>;
 
 template <class K>
 typename K::Point_3 to_cgal(const locus::Vec3d& v) {
-  return {v.x, v.y, v.z};
+  using FT = typename K::FT;
+  return {static_cast<FT>(v.x), static_cast<FT>(v.y), static_cast<FT>(v.z)};
 }
 template <class K>
 typename K::Segment_3 to_cgal(const locus::Segment3<double>& s) {
@@ -73,7 +76,8 @@ void cgal_bench(benchmark::State& state) {
 
 #define LOCUS_BENCH_CGAL(Pair, name, ...)                                                \
   BENCHMARK(cgal_bench<Pair, Simple>)->Name(name "/cgal<Simple_cartesian>") __VA_ARGS__; \
-  BENCHMARK(cgal_bench<Pair, Epick>)->Name(name "/cgal<Epick>") __VA_ARGS__
+  BENCHMARK(cgal_bench<Pair, Epick>)->Name(name "/cgal<Epick>") __VA_ARGS__;             \
+  BENCHMARK(cgal_bench<Pair, SimpleFloat>)->Name(name "/cgal<Simple_cartesian<float>>") __VA_ARGS__
 
 LOCUS_BENCH_CGAL(PointTriangle, "point_triangle");
 LOCUS_BENCH_CGAL(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
