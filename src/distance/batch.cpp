@@ -172,28 +172,35 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
   bad &= interior;  // the refinement only runs with an interior point
   const V<T> zz{}, oo = lanes::splat<T>(T(1));
   V<T> bs = si, bt = ti;
-  const auto q_of = [&](V<T> s, V<T> t) LOCUS_LANE_LAMBDA {
-    const V3<T> dq = lanes::lerp<T>(A.p0, A.p1, s) - lanes::lerp<T>(B.p0, B.p1, t);
+  // |A(s) - B(t)|^2 as the scalar code evaluates it. At s = 0 or 1 the point lerp(A, s) is the end
+  // point itself up to the sign of a zero coordinate, which no square sees: the end points'
+  // candidates use the end points directly.
+  const auto sqr_gap = [](const V3<T>& u, const V3<T>& v) LOCUS_LANE_LAMBDA {
+    const V3<T> dq = u - v;
     return dot(dq, dq);
   };
-  V<T> best = sel<T>(interior, q_of(si, ti), lanes::splat<T>(std::numeric_limits<T>::infinity()));
-  const auto consider = [&](V<T> s, V<T> t) LOCUS_LANE_LAMBDA {
-    const V<T> q = q_of(s, t);
+  const V<T> q_interior = sqr_gap(lanes::lerp<T>(A.p0, A.p1, si), lanes::lerp<T>(B.p0, B.p1, ti));
+  V<T> best = sel<T>(interior, q_interior, lanes::splat<T>(std::numeric_limits<T>::infinity()));
+  const auto consider = [&](V<T> s, V<T> t, V<T> q) LOCUS_LANE_LAMBDA {
     const M<T> take = q < best;
     best = sel<T>(take, q, best);
     bs = sel<T>(take, s, bs);
     bt = sel<T>(take, t, bt);
   };
-  consider(zz, closest_param_lanes<T>(B, dB, cc, A.p0, bad));
-  consider(oo, closest_param_lanes<T>(B, dB, cc, A.p1, bad));
-  consider(closest_param_lanes<T>(A, dA, aa, B.p0, bad), zz);
-  consider(closest_param_lanes<T>(A, dA, aa, B.p1, bad), oo);
+  const V<T> t_a0 = closest_param_lanes<T>(B, dB, cc, A.p0, bad);
+  consider(zz, t_a0, sqr_gap(A.p0, lanes::lerp<T>(B.p0, B.p1, t_a0)));
+  const V<T> t_a1 = closest_param_lanes<T>(B, dB, cc, A.p1, bad);
+  consider(oo, t_a1, sqr_gap(A.p1, lanes::lerp<T>(B.p0, B.p1, t_a1)));
+  const V<T> s_b0 = closest_param_lanes<T>(A, dA, aa, B.p0, bad);
+  consider(s_b0, zz, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b0), B.p0));
+  const V<T> s_b1 = closest_param_lanes<T>(A, dA, aa, B.p1, bad);
+  consider(s_b1, oo, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b1), B.p1));
   const M<T> refined = interior & inside & (DD > tiny * acc);
   bs = sel<T>(refined, si, bs);
   bt = sel<T>(refined, ti, bt);
   scalar |= bad | ~lanes::finite<T>(best);
-  // Back to the caller's order.
-  return {sel<T>(swap, bt, bs), sel<T>(swap, bs, bt), V<T>{}, scalar};
+  // Back to the caller's order (the squared distance is symmetric: the chosen candidate's).
+  return {sel<T>(swap, bt, bs), sel<T>(swap, bs, bt), sel<T>(refined, q_interior, best), scalar};
 }
 
 template <class T>
@@ -205,35 +212,40 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
   const V<T> a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
   const V<T> D = lanes::sqr_cross_norm<T>(da, db), ac = a * c;
   const V<T> sn = b * e - c * d, tn = a * e - b * d;
-  const M<T> sl = sn<T(0), sh = sn> D, tl = tn<T(0), th = tn> D;
+  const M<T> sl = (sn < T(0)), sh = (sn > D), tl = (tn < T(0)), th = (tn > D);
   const M<T> s_out = sl | sh, t_out = tl | th;
-  const M<T> regular = (a >= kMin<T>)&(c >= kMin<T>)&(ac <= kMax<T>)&((d - d) + (e - e) == T(0));
+  const M<T> regular =
+      (a >= kMin<T>) & (c >= kMin<T>) & (ac <= kMax<T>) & ((d - d) + (e - e) == T(0));
   const M<T> fast = regular & (D > tiny * ac) & (s_out | t_out | (T(16) * D >= ac));
-  const V<T> zero = a - a, one = zero + T(1);
-  const V<T> sc = sel<T>(sh, lanes::splat<T>(T(1)), V<T>{});
-  const V<T> tc = sel<T>(th, lanes::splat<T>(T(1)), V<T>{});
-  const V<T> gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
-  const M<T> ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
-  const M<T> dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
-  const M<T> move_t = s_out & (~t_out | (dt & ~ds));
-  const M<T> move_s = t_out & (~s_out | (ds & ~dt));
-  const M<T> pin_s = s_out & ~move_s, pin_t = t_out & ~move_t;
-  const V<T> qs = sel<T>(move_s, b * tc - d, sn) / sel<T>(move_s, a, D);
-  const V<T> qt = sel<T>(move_t, b * sc + e, tn) / sel<T>(move_t, c, D);
-  const V<T> fs = sel<T>(pin_s, sc, lanes::clamp_minmax<T>(qs, zero, one));
-  const V<T> ft = sel<T>(pin_t, tc, lanes::clamp_minmax<T>(qt, zero, one));
-
-  if (lanes::all<T>(fast)) {
-    const V3<T> dq = lanes::lerp<T>(x.p0, x.p1, fs) - lanes::lerp<T>(y.p0, y.p1, ft);
-    return {fs, ft, dot(dq, dq), M<T>{}};
-  }
+  // The parameters of the fast lanes: one exact clamped projection each.
+  const auto fast_pair = [&]() LOCUS_LANE_LAMBDA {
+    const V<T> zero = a - a, one = zero + T(1);
+    const V<T> sc = sel<T>(sh, lanes::splat<T>(T(1)), V<T>{});
+    const V<T> tc = sel<T>(th, lanes::splat<T>(T(1)), V<T>{});
+    const V<T> gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
+    const M<T> ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
+    const M<T> dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
+    const M<T> move_t = s_out & (~t_out | (dt & ~ds));
+    const M<T> move_s = t_out & (~s_out | (ds & ~dt));
+    const M<T> pin_s = s_out & ~move_s, pin_t = t_out & ~move_t;
+    const V<T> qs = sel<T>(move_s, b * tc - d, sn) / sel<T>(move_s, a, D);
+    const V<T> qt = sel<T>(move_t, b * sc + e, tn) / sel<T>(move_t, c, D);
+    SegmentPairLanes<T> f;
+    f.s = sel<T>(pin_s, sc, lanes::clamp_minmax<T>(qs, zero, one));
+    f.t = sel<T>(pin_t, tc, lanes::clamp_minmax<T>(qt, zero, one));
+    const V3<T> dq = lanes::lerp<T>(x.p0, x.p1, f.s) - lanes::lerp<T>(y.p0, y.p1, f.t);
+    f.sqr = dot(dq, dq);
+    f.scalar = M<T>{};
+    return f;
+  };
+  if (lanes::all<T>(fast)) return fast_pair();
+  // Some lanes need the rest (all of them, for nearly parallel input); the fast lanes' work is
+  // skipped when there are none.
   SegmentPairLanes<T> rest = segment_pair_rest<T>(x, y, regular);
-  rest.s = sel<T>(fast, fs, rest.s);
-  rest.t = sel<T>(fast, ft, rest.t);
-  rest.scalar &= ~fast;
-  const V3<T> dq = lanes::lerp<T>(x.p0, x.p1, rest.s) - lanes::lerp<T>(y.p0, y.p1, rest.t);
-  rest.sqr = dot(dq, dq);
-  return rest;
+  if (!lanes::any<T>(fast)) return rest;
+  const SegmentPairLanes<T> f = fast_pair();
+  return {sel<T>(fast, f.s, rest.s), sel<T>(fast, f.t, rest.t), sel<T>(fast, f.sqr, rest.sqr),
+          rest.scalar & ~fast};
 }
 
 template <class T, class G>
