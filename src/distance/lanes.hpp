@@ -191,7 +191,8 @@ struct Result {
   M<T> scalar;
 };
 
-template <class T, bool kStepA, bool kStepB, class A, class B, class Kernel, class Scalar>
+template <class T, int kUnroll, bool kStepA, bool kStepB, class A, class B, class Kernel,
+          class Scalar>
 LOCUS_LANE_INLINE void run_groups(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
                                   Kernel kernel, Scalar scalar) {
   constexpr std::size_t W = Lanes<T>::W;
@@ -211,7 +212,20 @@ LOCUS_LANE_INLINE void run_groups(const Source<A>& a, const Source<B>& b, T* out
   // the kernel's work on that object out of the loop.
   const A one_a = *a.data;
   const B one_b = *b.data;
-  for (std::size_t i = 0; i < n; i += W) {
+  std::size_t i0 = 0;
+  if constexpr (kUnroll == 2) {
+    // Two independent groups per step: their dependency chains (divisions feeding projections)
+    // overlap in the out-of-order window, which one large group's cannot.
+    for (; i0 + 2 * W <= n; i0 += 2 * W) {
+      const Result<T> r0 = kernel(Group<A, kStepA>{kStepA ? a.data + i0 : &one_a},
+                                  Group<B, kStepB>{kStepB ? b.data + i0 : &one_b});
+      const Result<T> r1 = kernel(Group<A, kStepA>{kStepA ? a.data + i0 + W : &one_a},
+                                  Group<B, kStepB>{kStepB ? b.data + i0 + W : &one_b});
+      finish(r0, i0, W);
+      finish(r1, i0 + W, W);
+    }
+  }
+  for (std::size_t i = i0; i < n; i += W) {
     const A* pa = kStepA ? a.data + i : &one_a;
     const B* pb = kStepB ? b.data + i : &one_b;
     const std::size_t m = n - i < W ? n - i : W;
@@ -230,16 +244,17 @@ LOCUS_LANE_INLINE void run_groups(const Source<A>& a, const Source<B>& b, T* out
 
 /// Runs kernel(group_a, group_b) over the n queries W at a time, writes the squared distances to
 /// out, and recomputes the lanes the kernel hands back with the scalar query (scalar(a, b)).
-template <class T, class A, class B, class Kernel, class Scalar>
+/// kUnroll = 2 evaluates two groups per step (for the smaller kernels: it doubles the code).
+template <class T, int kUnroll = 1, class A, class B, class Kernel, class Scalar>
 LOCUS_LANE_INLINE void run(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
                            Kernel kernel, Scalar scalar) {
   if (n == 0) return;  // the spans' data may then be null
   if (a.stride != 0 && b.stride != 0)
-    run_groups<T, true, true>(a, b, out, n, kernel, scalar);
+    run_groups<T, kUnroll, true, true>(a, b, out, n, kernel, scalar);
   else if (a.stride != 0)
-    run_groups<T, true, false>(a, b, out, n, kernel, scalar);
+    run_groups<T, kUnroll, true, false>(a, b, out, n, kernel, scalar);
   else
-    run_groups<T, false, true>(a, b, out, n, kernel, scalar);
+    run_groups<T, kUnroll, false, true>(a, b, out, n, kernel, scalar);
 }
 
 }  // namespace locus::lanes

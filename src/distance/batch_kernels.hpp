@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Private to src/distance/batch_*.cpp, the batched squared distances of
+// include/locus/distance/batch.hpp: the lane kernels that more than one pair uses (point -
+// triangle, segment - segment; the segment - triangle kernel is built from both) and the entry
+// points' plumbing. Each kernel evaluates the branch-free fast path of one pair's per-query
+// function (the same operations in the same order, mirrored lane by lane; see lanes.hpp) for W
+// queries at once, and marks the lanes that path does not cover; lanes::run() recomputes those
+// with the per-query function. The batch_*.cpp files are compiled with -ffp-contract=off
+// (CMakeLists.txt) so that no operation is fused and every lane rounds as the scalar code does.
+// One translation unit per pair keeps each compile short and lets them build in parallel.
+
+#include "lanes.hpp"
+
+#include <locus/config.hpp>
+#include <locus/distance/batch.hpp>
+#include <locus/distance/point_triangle.hpp>
+#include <locus/distance/segment_segment.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <span>
+
+namespace locus {
+namespace {
+
+using lanes::gather;
+using lanes::gather3;
+using lanes::Group;
+using lanes::M;
+using lanes::Result;
+using lanes::sel;
+using lanes::Source;
+using lanes::V;
+using lanes::V3;
+
+template <class T>
+constexpr T kMin = std::numeric_limits<T>::min();
+template <class T>
+constexpr T kMax = std::numeric_limits<T>::max();
+
+// ---- point - triangle (detail::point_triangle, the 3D fast path) -------------------------------
+
+template <class T>
+struct PointTriangleLanes {
+  V3<T> bary;     // barycentric (u, v, w) of the closest point
+  V3<T> closest;  // point_at_barycentric(tri, bary)
+  V<T> sqr;
+  M<T> scalar;  // lanes outside the fast path
+};
+
+template <class T>
+LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, const V3<T>& v0,
+                                                             const V3<T>& v1, const V3<T>& v2) {
+  // The origin at the vertex opposite the longest edge (rotation r1: (v1, v2, v0), r2: (v2, v0,
+  // v1)).
+  const V3<T> d01 = v1 - v0, d02 = v2 - v0, d12 = v2 - v1;
+  const V<T> l01 = dot(d01, d01), l02 = dot(d02, d02), l12 = dot(d12, d12);
+  const M<T> keep = (l12 >= l01) & (l12 >= l02);
+  const M<T> r1 = ~keep & (l02 >= l01), r2 = ~keep & ~(l02 >= l01);
+  const V3<T> o = lanes::sel<T>(r1, v1, lanes::sel<T>(r2, v2, v0));
+  const V3<T> x = lanes::sel<T>(r1, v2, lanes::sel<T>(r2, v0, v1));
+  const V3<T> y = lanes::sel<T>(r1, v0, lanes::sel<T>(r2, v1, v2));
+  const V3<T> e0 = x - o, e1 = y - o, e2 = y - x, w0 = p - o, w1 = p - x;
+  const V<T> a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
+  const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
+  const V<T> ac = a * c, det = ac - b * b;
+  const M<T> fast =
+      (T(16) * det >= ac) & (a >= kMin<T>)&(c >= kMin<T>)&(f >= kMin<T>)&(ac <= kMax<T>)&(
+                                f <= kMax<T>)&(((d - d) + (e - e)) + (g - g) == T(0));
+  const V<T> sn = c * d - b * e, tn = a * e - b * d;
+  const M<T> inside = (sn >= T(0)) & (tn >= T(0)) & (sn + tn <= det);
+  const V<T> s = sn / det, t = tn / det;
+  // Outside: the nearest of the three edges' clamped projections.
+  const V<T> zero = a - a, one = zero + T(1);
+  const V<T> l0 = lanes::clamp_minmax<T>(d / a, zero, one);
+  const V<T> l1 = lanes::clamp_minmax<T>(e / c, zero, one);
+  const V<T> l2 = lanes::clamp_minmax<T>(g / f, zero, one);
+  const V3<T> q0v = w0 - l0 * e0, q1v = w0 - l1 * e1, q2v = w1 - l2 * e2;
+  const V<T> q0 = dot(q0v, q0v), q1 = dot(q1v, q1v), q2 = dot(q2v, q2v);
+  const M<T> m1 = q1 < q0;
+  const V<T> q01 = sel<T>(m1, q1, q0);
+  const V<T> u = sel<T>(m1, T(1) - l1, T(1) - l0), v = sel<T>(m1, zero, l0);
+  const V<T> w = sel<T>(m1, l1, zero);
+  const M<T> m2 = q2 < q01;
+  V3<T> rb{sel<T>(m2, zero, u), sel<T>(m2, T(1) - l2, v), sel<T>(m2, l2, w)};
+  rb = lanes::sel<T>(inside, V3<T>{T(1) - s - t, s, t}, rb);
+  const V3<T> bary{sel<T>(r1, rb.z, sel<T>(r2, rb.y, rb.x)),
+                   sel<T>(r1, rb.x, sel<T>(r2, rb.z, rb.y)),
+                   sel<T>(r1, rb.y, sel<T>(r2, rb.x, rb.z))};
+  const V3<T> cp = rb.x * o + rb.y * x + rb.z * y;
+  const V3<T> dx = cp - p;
+  return {bary, cp, dot(dx, dx), ~fast};
+}
+
+// ---- segment - segment (detail::segment_pair) ------------------------------------------------
+
+template <class T>
+struct SegmentLanes {
+  V3<T> p0, p1;
+};
+
+template <class T>
+struct SegmentPairLanes {
+  V<T> s, t;  // parameters on the first and the second segment
+  V<T> sqr;
+  M<T> scalar;
+};
+
+/// detail::closest_param for a segment whose |dir|^2 = a is a normal number: the clamped
+/// projection, and whether it was finite (otherwise the scalar code takes a rescaling path).
+template <class T>
+LOCUS_LANE_INLINE V<T> closest_param_lanes(const SegmentLanes<T>& l, const V3<T>& dir, V<T> a,
+                                           const V3<T>& p, M<T>& not_finite) {
+  const V<T> t = dot(p - l.p0, dir) / a;
+  not_finite |= ~lanes::finite<T>(t);
+  const V<T> lo = sel<T>(t < T(0), V<T>{}, t);
+  return sel<T>(lo > T(1), lanes::splat<T>(T(1)), lo);
+}
+
+/// detail::lex_less of two segments (p0 lexicographically, then p1).
+template <class T>
+LOCUS_LANE_INLINE M<T> lex_less(const V3<T>& a, const V3<T>& b) {
+  return (a.x < b.x) | ((a.x == b.x) & ((a.y < b.y) | ((a.y == b.y) & (a.z < b.z))));
+}
+template <class T>
+LOCUS_LANE_INLINE M<T> lex_less(const SegmentLanes<T>& a, const SegmentLanes<T>& b) {
+  const M<T> same = (a.p0.x == b.p0.x) & (a.p0.y == b.p0.y) & (a.p0.z == b.p0.z);
+  return (same & lex_less<T>(a.p1, b.p1)) | (~same & lex_less<T>(a.p0, b.p0));
+}
+
+/// The lanes segment_pair_fast declines (nearly parallel, or an interior minimiser at a small
+/// angle): the parameters in the caller's order, and the lanes left to the scalar code. regular:
+/// segment_pair_fast's range and finiteness test.
+template <class T>
+LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x,
+                                                        const SegmentLanes<T>& y, M<T> regular) {
+  constexpr T tiny = T(64) * eps_v<T>;
+  // The rest (nearly parallel, or an interior minimiser at a small angle): detail::linear_linear
+  // in the canonical argument order, for input in range (a, c normal, finite projections; other
+  // lanes go to the scalar code). Since the fast path declined, linear_linear's only outcomes are
+  // the refined interior point (inside and D > 64 eps ac) or the best of every candidate.
+  const M<T> swap = lex_less<T>(y, x);
+  const SegmentLanes<T> A{lanes::sel<T>(swap, y.p0, x.p0), lanes::sel<T>(swap, y.p1, x.p1)};
+  const SegmentLanes<T> B{lanes::sel<T>(swap, x.p0, y.p0), lanes::sel<T>(swap, x.p1, y.p1)};
+  const V3<T> dA = A.p1 - A.p0, dB = B.p1 - B.p0, rr = A.p0 - B.p0;
+  const V<T> aa = dot(dA, dA), cc = dot(dB, dB);
+  const V<T> bb = dot(dA, dB), dd = dot(dA, rr), ee = dot(dB, rr);
+  const V<T> DD = lanes::sqr_cross_norm<T>(dA, dB), acc = aa * cc;
+  // Lanes linear_linear would take elsewhere: input out of range (it may then reach its KKT
+  // branch, or rescale a projection), or a projection that overflows.
+  M<T> scalar = ~(regular & (aa <= kMax<T>)&(cc <= kMax<T>)&(acc >= kMin<T>));
+  const V<T> s0 = (bb * ee - cc * dd) / DD, t0 = (aa * ee - bb * dd) / DD;
+  const M<T> interior = (DD > T(0)) & lanes::finite<T>(s0) & lanes::finite<T>(t0);
+  const M<T> inside = (s0 >= T(0)) & (s0 <= T(1)) & (t0 >= T(0)) & (t0 <= T(1));
+  M<T> bad{};  // some projection the scalar code would rescale
+  const V<T> s0c = lanes::clamp_minmax<T>(s0, V<T>{}, lanes::splat<T>(T(1)));
+  const V<T> ti = closest_param_lanes<T>(B, dB, cc, lanes::lerp<T>(A.p0, A.p1, s0c), bad);
+  const V<T> si = closest_param_lanes<T>(A, dA, aa, lanes::lerp<T>(B.p0, B.p1, ti), bad);
+  bad &= interior;  // the refinement only runs with an interior point
+  const V<T> zz{}, oo = lanes::splat<T>(T(1));
+  V<T> bs = si, bt = ti;
+  // |A(s) - B(t)|^2 as the scalar code evaluates it. At s = 0 or 1 the point lerp(A, s) is the end
+  // point itself up to the sign of a zero coordinate, which no square sees: the end points'
+  // candidates use the end points directly.
+  const auto sqr_gap = [](const V3<T>& u, const V3<T>& v) LOCUS_LANE_LAMBDA {
+    const V3<T> dq = u - v;
+    return dot(dq, dq);
+  };
+  const V<T> q_interior = sqr_gap(lanes::lerp<T>(A.p0, A.p1, si), lanes::lerp<T>(B.p0, B.p1, ti));
+  V<T> best = sel<T>(interior, q_interior, lanes::splat<T>(std::numeric_limits<T>::infinity()));
+  const auto consider = [&](V<T> s, V<T> t, V<T> q) LOCUS_LANE_LAMBDA {
+    const M<T> take = q < best;
+    best = sel<T>(take, q, best);
+    bs = sel<T>(take, s, bs);
+    bt = sel<T>(take, t, bt);
+  };
+  const V<T> t_a0 = closest_param_lanes<T>(B, dB, cc, A.p0, bad);
+  consider(zz, t_a0, sqr_gap(A.p0, lanes::lerp<T>(B.p0, B.p1, t_a0)));
+  const V<T> t_a1 = closest_param_lanes<T>(B, dB, cc, A.p1, bad);
+  consider(oo, t_a1, sqr_gap(A.p1, lanes::lerp<T>(B.p0, B.p1, t_a1)));
+  const V<T> s_b0 = closest_param_lanes<T>(A, dA, aa, B.p0, bad);
+  consider(s_b0, zz, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b0), B.p0));
+  const V<T> s_b1 = closest_param_lanes<T>(A, dA, aa, B.p1, bad);
+  consider(s_b1, oo, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b1), B.p1));
+  const M<T> refined = interior & inside & (DD > tiny * acc);
+  bs = sel<T>(refined, si, bs);
+  bt = sel<T>(refined, ti, bt);
+  scalar |= bad | ~lanes::finite<T>(best);
+  // Back to the caller's order (the squared distance is symmetric: the chosen candidate's).
+  return {sel<T>(swap, bt, bs), sel<T>(swap, bs, bt), sel<T>(refined, q_interior, best), scalar};
+}
+
+template <class T>
+LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& x,
+                                                         const SegmentLanes<T>& y) {
+  constexpr T tiny = T(64) * eps_v<T>;
+  // detail::segment_pair_fast.
+  const V3<T> da = x.p1 - x.p0, db = y.p1 - y.p0, r = x.p0 - y.p0;
+  const V<T> a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
+  const V<T> D = lanes::sqr_cross_norm<T>(da, db), ac = a * c;
+  const V<T> sn = b * e - c * d, tn = a * e - b * d;
+  const M<T> sl = (sn < T(0)), sh = (sn > D), tl = (tn < T(0)), th = (tn > D);
+  const M<T> s_out = sl | sh, t_out = tl | th;
+  const M<T> regular = (a >= kMin<T>)&(c >= kMin<T>)&(ac <= kMax<T>)&((d - d) + (e - e) == T(0));
+  const M<T> fast = regular & (D > tiny * ac) & (s_out | t_out | (T(16) * D >= ac));
+  // The parameters of the fast lanes: one exact clamped projection each.
+  const auto fast_pair = [&]() LOCUS_LANE_LAMBDA {
+    const V<T> zero = a - a, one = zero + T(1);
+    const V<T> sc = sel<T>(sh, lanes::splat<T>(T(1)), V<T>{});
+    const V<T> tc = sel<T>(th, lanes::splat<T>(T(1)), V<T>{});
+    const V<T> gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
+    const M<T> ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
+    const M<T> dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
+    const M<T> move_t = s_out & (~t_out | (dt & ~ds));
+    const M<T> move_s = t_out & (~s_out | (ds & ~dt));
+    const M<T> pin_s = s_out & ~move_s, pin_t = t_out & ~move_t;
+    const V<T> qs = sel<T>(move_s, b * tc - d, sn) / sel<T>(move_s, a, D);
+    const V<T> qt = sel<T>(move_t, b * sc + e, tn) / sel<T>(move_t, c, D);
+    SegmentPairLanes<T> f;
+    f.s = sel<T>(pin_s, sc, lanes::clamp_minmax<T>(qs, zero, one));
+    f.t = sel<T>(pin_t, tc, lanes::clamp_minmax<T>(qt, zero, one));
+    const V3<T> dq = lanes::lerp<T>(x.p0, x.p1, f.s) - lanes::lerp<T>(y.p0, y.p1, f.t);
+    f.sqr = dot(dq, dq);
+    f.scalar = M<T>{};
+    return f;
+  };
+  if (lanes::all<T>(fast)) return fast_pair();
+  // Some lanes need the rest (all of them, for nearly parallel input); the fast lanes' work is
+  // skipped when there are none.
+  SegmentPairLanes<T> rest = segment_pair_rest<T>(x, y, regular);
+  if (!lanes::any<T>(fast)) return rest;
+  const SegmentPairLanes<T> f = fast_pair();
+  return {sel<T>(fast, f.s, rest.s), sel<T>(fast, f.t, rest.t), sel<T>(fast, f.sqr, rest.sqr),
+          rest.scalar & ~fast};
+}
+
+template <class T, class G>
+LOCUS_LANE_INLINE SegmentLanes<T> gather_segment(const G& g) {
+  return {gather3<T>(g, &Segment3<T>::p0), gather3<T>(g, &Segment3<T>::p1)};
+}
+
+// ---- the entry points -------------------------------------------------------------------------
+
+template <class A, class B>
+struct Sources {
+  Source<A> a;
+  Source<B> b;
+  std::size_t n;
+};
+
+template <class A, class B, class T>
+Sources<A, B> sources(std::span<const A> a, std::span<const B> b, std::span<T> out) {
+  LOCUS_ASSERT(a.size() == b.size() && a.size() == out.size(),
+               "sqr_distances: the spans must have the same length");
+  std::size_t n = a.size() < b.size() ? a.size() : b.size();
+  n = n < out.size() ? n : out.size();
+  return {{a.data(), 1}, {b.data(), 1}, n};
+}
+template <class A, class B, class T>
+Sources<A, B> sources(std::span<const A> a, const B& b, std::span<T> out) {
+  LOCUS_ASSERT(a.size() == out.size(), "sqr_distances: out must have one value per query");
+  const std::size_t n = a.size() < out.size() ? a.size() : out.size();
+  return {{a.data(), 1}, {&b, 0}, n};
+}
+template <class A, class B, class T>
+Sources<A, B> sources(const A& a, std::span<const B> b, std::span<T> out) {
+  LOCUS_ASSERT(b.size() == out.size(), "sqr_distances: out must have one value per query");
+  const std::size_t n = b.size() < out.size() ? b.size() : out.size();
+  return {{&a, 0}, {b.data(), 1}, n};
+}
+
+}  // namespace
+
+// Defines sqr_distances for one pair (A, B) and scalar type T in its three forms (span-span,
+// span-one, one-span), over run<T>(source_a, source_b, out, n) compiled once per instruction set
+// (the target_clones driver is not a template). Used inside namespace locus.
+#define LOCUS_BATCH_DEFINE(A, B, T, run)                                                       \
+  namespace {                                                                                  \
+  LOCUS_LANE_CLONES void run##_##T(const lanes::Source<A<T>>& a, const lanes::Source<B<T>>& b, \
+                                   T* out, std::size_t n) {                                    \
+    run<T>(a, b, out, n);                                                                      \
+  }                                                                                            \
+  }                                                                                            \
+  void sqr_distances(std::span<const A<T>> a, std::span<const B<T>> b,                         \
+                     std::span<T> out) noexcept {                                              \
+    const auto s = sources(a, b, out);                                                         \
+    run##_##T(s.a, s.b, out.data(), s.n);                                                      \
+  }                                                                                            \
+  void sqr_distances(std::span<const A<T>> a, const B<T>& b, std::span<T> out) noexcept {      \
+    const auto s = sources(a, b, out);                                                         \
+    run##_##T(s.a, s.b, out.data(), s.n);                                                      \
+  }                                                                                            \
+  void sqr_distances(const A<T>& a, std::span<const B<T>> b, std::span<T> out) noexcept {      \
+    const auto s = sources(a, b, out);                                                         \
+    run##_##T(s.a, s.b, out.data(), s.n);                                                      \
+  }
+
+}  // namespace locus
