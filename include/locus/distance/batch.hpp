@@ -19,13 +19,17 @@
 // with contraction the per-query functions may differ from these by rounding. The combinatorial
 // decisions are the per-query functions' own (exact predicates where they use them).
 //
-// Method: each query's common case (finite input, well-shaped triangles, segments not nearly
-// parallel, ...) is the per-query function's branch-free fast path, evaluated for 4 doubles or 8
-// floats at once (src/distance/lanes.hpp); the lanes it does not cover (non-finite or extreme
-// input, thin triangles, nearly parallel segments, segments that may touch a triangle) are
-// recomputed by the per-query function, which is why the results agree bit for bit. On x86-64 the
-// library carries an AVX2 and a baseline version and picks one at load time. Throughput (queries
-// per second, bench/distance/distance_bench.cpp): several times the per-query functions'.
+// Method: each pair's per-query computation (its branch-free fast path, and for segment pairs
+// also the nearly parallel branch; for segment-triangle the exact meeting test through a
+// floating-point filter, the crossing and the KKT candidates) is evaluated for 4 doubles or 8
+// floats at once (src/distance/lanes.hpp), operation for operation; the lanes it does not cover
+// (non-finite or extreme input, needle triangles, meeting tests the filter cannot decide, rare
+// branches) are recomputed by the per-query function, which is why the results agree bit for
+// bit. On x86-64 the library carries an AVX2 and a baseline version and picks one at load time
+// (build locus with -DLOCUS_NO_MULTIVERSION to compile the kernels once, for the compiler's own
+// target). Throughput (bench/distance/distance_bench.cpp, M queries per second, double, one
+// run): point-triangle 89 (per query 28; CGAL 58), segment-segment 113 (26; CGAL 70),
+// segment-triangle 16 (5.6; CGAL 5.7), point-AABB 357 (208).
 // No allocation; noexcept.
 
 #include <locus/core/vec.hpp>
