@@ -42,19 +42,6 @@ namespace {
 
 using namespace locus_bench_distance;
 
-struct FullQuery {
-  template <class A, class B>
-  auto operator()(const A& a, const B& b) const {
-    return locus::distance(a, b);
-  }
-};
-struct SqrQuery {
-  template <class A, class B>
-  auto operator()(const A& a, const B& b) const {
-    return locus::sqr_distance(a, b);
-  }
-};
-
 // locus on the pair's inputs converted to T.
 template <class Pair, class T, class Query>
 void locus_bench(benchmark::State& state) {

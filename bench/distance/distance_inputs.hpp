@@ -137,6 +137,21 @@ inline const SegmentTriangleInput& segment_triangle_input() {
 
 // ---- one loop for every query -------------------------------------------------------------
 
+// The two locus query forms a loop can time (found by argument-dependent lookup, so that this
+// header needs no distance header of its own).
+struct FullQuery {  // distance(a, b): closest points, parameters, square root
+  template <class A, class B>
+  auto operator()(const A& a, const B& b) const {
+    return distance(a, b);
+  }
+};
+struct SqrQuery {  // sqr_distance(a, b): the squared distance only
+  template <class A, class B>
+  auto operator()(const A& a, const B& b) const {
+    return sqr_distance(a, b);
+  }
+};
+
 // Runs query(a[i], b[i]) over the cycled inputs; items per second = queries per second.
 template <class A, class B, class Query>
 void cycle(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b, Query query) {

@@ -5,6 +5,8 @@
 // their triangle's plane up to a 1e-6 tilt). 4096 inputs are cycled so that the data stays in
 // cache; items per second = queries per second. Each kind runs distance() (the full result) and
 // sqr_distance() (the squared distance only). Segment-rectangle alongside for scale.
+#include "distance/distance_inputs.hpp"
+
 #include <locus/distance/segment_rectangle.hpp>
 #include <locus/distance/segment_triangle.hpp>
 
@@ -18,29 +20,10 @@
 
 namespace {
 
-constexpr std::size_t kCount = 4096;
-
-template <class T>
-locus::Vec3<T> rvec(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(lo, hi);
-  return {static_cast<T>(u(rng)), static_cast<T>(u(rng)), static_cast<T>(u(rng))};
-}
+using namespace locus_bench_distance;
 
 // kind 0: everything in [-1, 1]^3; 1: segments in [-1, 1]^2 x [2, 4] (never crossing);
 // 2: segments parallel to the triangle's plane up to a 1e-6 tilt, 0.1 above it.
-struct FullQuery {
-  template <class A, class B>
-  auto operator()(const A& a, const B& b) const {
-    return locus::distance(a, b);
-  }
-};
-struct SqrQuery {
-  template <class A, class B>
-  auto operator()(const A& a, const B& b) const {
-    return locus::sqr_distance(a, b);
-  }
-};
-
 template <class T, class Query>
 void segment_triangle(benchmark::State& state) {
   const int kind = static_cast<int>(state.range(0));
@@ -49,8 +32,9 @@ void segment_triangle(benchmark::State& state) {
   std::vector<locus::Triangle3<T>> t;
   std::size_t crossing = 0;
   for (std::size_t i = 0; i < kCount; ++i) {
-    const locus::Triangle3<T> tri{rvec<T>(rng, -1, 1), rvec<T>(rng, -1, 1), rvec<T>(rng, -1, 1)};
-    locus::Segment3<T> seg{rvec<T>(rng, -1, 1), rvec<T>(rng, -1, 1)};
+    const locus::Triangle3<T> tri{cast<T>(rvec(rng, -1, 1)), cast<T>(rvec(rng, -1, 1)),
+                                  cast<T>(rvec(rng, -1, 1))};
+    locus::Segment3<T> seg{cast<T>(rvec(rng, -1, 1)), cast<T>(rvec(rng, -1, 1))};
     if (kind == 1) {
       seg.p0.z += T(3);
       seg.p1.z += T(3);
@@ -65,12 +49,7 @@ void segment_triangle(benchmark::State& state) {
     t.push_back(tri);
     crossing += locus::distance(seg, tri).distance == T(0) ? 1u : 0u;
   }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(Query{}(s[i], t[i]));
-    i = (i + 1) & (kCount - 1);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  cycle(state, s, t, Query{});
   state.counters["crossing_fraction"] = double(crossing) / double(kCount);
 }
 
@@ -80,28 +59,39 @@ void segment_rectangle(benchmark::State& state) {
   std::vector<locus::Segment3<T>> s;
   std::vector<locus::Rectangle3<T>> r;
   for (std::size_t i = 0; i < kCount; ++i) {
-    const auto x = locus::normalize(rvec<T>(rng, -1, 1));
-    const auto y = locus::normalize(locus::cross(x, rvec<T>(rng, -1, 1)));
-    const auto e = rvec<T>(rng, 0.1, 1);
-    r.push_back({rvec<T>(rng, -1, 1), {x, y}, {e.x, e.y}});
-    s.push_back({rvec<T>(rng, -1, 1), rvec<T>(rng, -1, 1)});
+    const auto x = locus::normalize(cast<T>(rvec(rng, -1, 1)));
+    const auto y = locus::normalize(locus::cross(x, cast<T>(rvec(rng, -1, 1))));
+    const auto e = cast<T>(rvec(rng, 0.1, 1));
+    r.push_back({cast<T>(rvec(rng, -1, 1)), {x, y}, {e.x, e.y}});
+    s.push_back({cast<T>(rvec(rng, -1, 1)), cast<T>(rvec(rng, -1, 1))});
   }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(locus::distance(s[i], r[i]));
-    i = (i + 1) & (kCount - 1);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  cycle(state, s, r, FullQuery{});
 }
 
 BENCHMARK(segment_triangle<float, FullQuery>)
-    ->Name("segment_triangle_kinds/distance<float>")->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
+    ->Name("segment_triangle_kinds/distance<float>")
+    ->ArgName("kind")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2);
 BENCHMARK(segment_triangle<double, FullQuery>)
-    ->Name("segment_triangle_kinds/distance<double>")->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
+    ->Name("segment_triangle_kinds/distance<double>")
+    ->ArgName("kind")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2);
 BENCHMARK(segment_triangle<float, SqrQuery>)
-    ->Name("segment_triangle_kinds/sqr_distance<float>")->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
+    ->Name("segment_triangle_kinds/sqr_distance<float>")
+    ->ArgName("kind")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2);
 BENCHMARK(segment_triangle<double, SqrQuery>)
-    ->Name("segment_triangle_kinds/sqr_distance<double>")->ArgName("kind")->Arg(0)->Arg(1)->Arg(2);
+    ->Name("segment_triangle_kinds/sqr_distance<double>")
+    ->ArgName("kind")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2);
 BENCHMARK(segment_rectangle<float>);
 BENCHMARK(segment_rectangle<double>);
 

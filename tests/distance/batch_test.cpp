@@ -171,7 +171,9 @@ OrientedBox3<T> random_obb(Rng& rng) {
   return b;
 }
 
-// Checks every form of sqr_distances over a[0..n), b[0..n) against the per-query function.
+// Checks every form of sqr_distances over a[0..n), b[0..n) against the per-query function: the
+// two spans in both orders (for a same-type pair, the spans exchanged), and one object against
+// the other span, each way.
 template <class T, class A, class B>
 void check_pair(const std::vector<A>& a, const std::vector<B>& b, const std::string& what) {
   ASSERT_EQ(a.size(), b.size());
@@ -181,58 +183,27 @@ void check_pair(const std::vector<A>& a, const std::vector<B>& b, const std::str
   sqr_distances(std::span<const B>(b), std::span<const A>(a), std::span<T>(swapped));
   int failures = 0;
   for (std::size_t i = 0; i < n && failures < 5; ++i) {
-    const T want = sqr_distance(a[i], b[i]);
-    if (!same_value(out[i], want) || !same_value(swapped[i], want)) {
+    const T want = sqr_distance(a[i], b[i]), want_swapped = sqr_distance(b[i], a[i]);
+    if (!same_value(out[i], want) || !same_value(swapped[i], want_swapped)) {
       ++failures;
-      ADD_FAILURE() << what << " query " << i << " of " << n << ": batch " << out[i] << ", swapped "
-                    << swapped[i] << ", per query " << want;
+      ADD_FAILURE() << what << " query " << i << " of " << n << ": batch " << out[i] << " / "
+                    << swapped[i] << ", per query " << want << " / " << want_swapped;
     }
   }
   if (n == 0) return;
-  // One against many, both ways: the first object of each side against the other side.
-  std::vector<T> one(n, T(-1)), one_swapped(n, T(-1));
+  std::vector<T> one(n, T(-1)), one_swapped(n, T(-1)), other(n, T(-1));
   sqr_distances(std::span<const A>(a), b[0], std::span<T>(one));
   sqr_distances(b[0], std::span<const A>(a), std::span<T>(one_swapped));
-  std::vector<T> other(n, T(-1));
   sqr_distances(a[0], std::span<const B>(b), std::span<T>(other));
   for (std::size_t i = 0; i < n && failures < 5; ++i) {
-    const T want = sqr_distance(a[i], b[0]);
+    const T want = sqr_distance(a[i], b[0]), want_swapped = sqr_distance(b[0], a[i]);
     const T want_other = sqr_distance(a[0], b[i]);
-    if (!same_value(one[i], want) || !same_value(one_swapped[i], want) ||
+    if (!same_value(one[i], want) || !same_value(one_swapped[i], want_swapped) ||
         !same_value(other[i], want_other)) {
       ++failures;
       ADD_FAILURE() << what << " one-against-many query " << i << ": " << one[i] << " / "
-                    << one_swapped[i] << " vs " << want << ", " << other[i] << " vs " << want_other;
-    }
-  }
-}
-
-// Same-type pairs have no distinct swapped order: check the two spans exchanged instead.
-template <class T, class A>
-void check_same_type_pair(const std::vector<A>& a, const std::vector<A>& b,
-                          const std::string& what) {
-  const std::size_t n = a.size();
-  std::vector<T> out(n, T(-1)), exchanged(n, T(-1)), one(n, T(-1)), other(n, T(-1));
-  sqr_distances(std::span<const A>(a), std::span<const A>(b), std::span<T>(out));
-  sqr_distances(std::span<const A>(b), std::span<const A>(a), std::span<T>(exchanged));
-  int failures = 0;
-  for (std::size_t i = 0; i < n && failures < 5; ++i) {
-    const T want = sqr_distance(a[i], b[i]), want_exchanged = sqr_distance(b[i], a[i]);
-    if (!same_value(out[i], want) || !same_value(exchanged[i], want_exchanged)) {
-      ++failures;
-      ADD_FAILURE() << what << " query " << i << " of " << n << ": batch " << out[i] << " / "
-                    << exchanged[i] << ", per query " << want << " / " << want_exchanged;
-    }
-  }
-  if (n == 0) return;
-  sqr_distances(std::span<const A>(a), b[0], std::span<T>(one));
-  sqr_distances(a[0], std::span<const A>(b), std::span<T>(other));
-  for (std::size_t i = 0; i < n && failures < 5; ++i) {
-    const T want = sqr_distance(a[i], b[0]), want_other = sqr_distance(a[0], b[i]);
-    if (!same_value(one[i], want) || !same_value(other[i], want_other)) {
-      ++failures;
-      ADD_FAILURE() << what << " one-against-many query " << i << ": " << one[i] << " vs " << want
-                    << ", " << other[i] << " vs " << want_other;
+                    << one_swapped[i] << " vs " << want << " / " << want_swapped << ", " << other[i]
+                    << " vs " << want_other;
     }
   }
 }
@@ -276,7 +247,7 @@ TYPED_TEST(BatchTest, SegmentSegmentMatchesPerQuery) {
       a.push_back(random_segment<T>(rng, nullptr));
       b.push_back(random_segment<T>(rng, &a.back()));
     }
-    check_same_type_pair<T>(a, b, "segment-segment n=" + std::to_string(n));
+    check_pair<T>(a, b, "segment-segment n=" + std::to_string(n));
   }
 }
 
