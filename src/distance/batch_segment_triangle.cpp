@@ -19,7 +19,7 @@ LOCUS_LANE_INLINE M<T> filter_range(const V3<T>& v) {
   constexpr T lo = sizeof(T) == 8 ? T(0x1p-250) : T(0x1p-16);
   constexpr T hi = sizeof(T) == 8 ? T(0x1p250) : T(0x1p39);
   const auto one = [](V<T> x) LOCUS_LANE_LAMBDA {
-    const V<T> m = sel<T>(x < T(0), -x, x);
+    const V<T> m = lanes::abs<T>(x);
     return (m == T(0)) | ((m >= lo) & (m <= hi));
   };
   return one(v.x) & one(v.y) & one(v.z);
@@ -40,7 +40,7 @@ LOCUS_LANE_INLINE Orient<T> orient3d_filter(const V3<T>& a, const V3<T>& b, cons
   const V<T> m0 = v.y * w.z, m1 = v.z * w.y, m2 = v.z * w.x, m3 = v.x * w.z;
   const V<T> m4 = v.x * w.y, m5 = v.y * w.x;
   const V<T> det = u.x * (m0 - m1) + u.y * (m2 - m3) + u.z * (m4 - m5);
-  const auto abs = [](V<T> x) LOCUS_LANE_LAMBDA { return sel<T>(x < T(0), -x, x); };
+  const auto abs = [](V<T> x) LOCUS_LANE_LAMBDA { return lanes::abs<T>(x); };
   const V<T> permanent = abs(u.x) * (abs(m0) + abs(m1)) + abs(u.y) * (abs(m2) + abs(m3)) +
                          abs(u.z) * (abs(m4) + abs(m5));
   // Shewchuk's bound is (7 + 56 u) u permanent with u = eps / 2; 4 eps is a little larger.
@@ -51,8 +51,7 @@ LOCUS_LANE_INLINE Orient<T> orient3d_filter(const V3<T>& a, const V3<T>& b, cons
 template <class T>
 LOCUS_LANE_INLINE V<T> max_abs(const V3<T>& v) {
   // core/vec.hpp max_abs (the maximum is exact whatever the order).
-  const auto abs = [](V<T> x) LOCUS_LANE_LAMBDA { return sel<T>(x < T(0), -x, x); };
-  const V<T> x = abs(v.x), y = abs(v.y), z = abs(v.z);
+  const V<T> x = lanes::abs<T>(v.x), y = lanes::abs<T>(v.y), z = lanes::abs<T>(v.z);
   const V<T> xy = sel<T>(x < y, y, x);
   return sel<T>(xy < z, z, xy);
 }

@@ -80,6 +80,12 @@ LOCUS_LANE_INLINE V<T> clamp_minmax(V<T> x, V<T> lo, V<T> hi) {
   return sel<T>(hi < above, hi, above);
 }
 
+/// Lane-wise |x|.
+template <class T>
+LOCUS_LANE_INLINE V<T> abs(V<T> x) {
+  return sel<T>(x < T(0), -x, x);
+}
+
 /// Lanes whose value is finite (x - x is 0 for finite x, NaN otherwise).
 template <class T>
 LOCUS_LANE_INLINE M<T> finite(V<T> x) {
