@@ -10,6 +10,7 @@
 #include <locus/distance/line_circle.hpp>
 
 #include "distance/harness.hpp"
+#include "distance/linear_oracle.hpp"
 #include "support/typed.hpp"
 
 #include <cmath>
@@ -32,15 +33,12 @@ constexpr int kCaseScale = 4;
 constexpr int kCaseScale = 1;
 #endif
 
-using LD = long double;
+using locus_test::linear_oracle::LD;
+using locus_test::linear_oracle::min_over_angle;
+using locus_test::linear_oracle::near_ld;
+using locus_test::linear_oracle::sqr_to_linear;
+using locus_test::linear_oracle::to_ld;
 using V = Vec3<LD>;
-
-::testing::AssertionResult near_ld(LD got, LD want, LD abs_tol) {
-  if (std::abs(got - want) <= abs_tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure()
-         << "got " << static_cast<double>(got) << ", brute force " << static_cast<double>(want)
-         << ", tol " << static_cast<double>(abs_tol);
-}
 
 struct CircleLD {
   V c, u, v, n;
@@ -64,59 +62,7 @@ LD sqr_to_circle(const V& p, const CircleLD& c) {
   return z * z + (rho - c.r) * (rho - c.r);
 }
 
-struct LinLD {
-  V o, d;
-  bool lo, hi;
-};
-template <class T>
-LinLD to_ld(const Line<T, 3>& l) {
-  return {vec_cast<LD>(l.origin), vec_cast<LD>(l.direction), false, false};
-}
-template <class T>
-LinLD to_ld(const Ray<T, 3>& l) {
-  return {vec_cast<LD>(l.origin), vec_cast<LD>(l.direction), true, false};
-}
-template <class T>
-LinLD to_ld(const Segment<T, 3>& s) {
-  return {vec_cast<LD>(s.p0), vec_cast<LD>(s.p1) - vec_cast<LD>(s.p0), true, true};
-}
-
-LD sqr_to_linear(const V& p, const LinLD& l) {
-  const LD dd = sqr_length(l.d);
-  LD t = dd > 0 ? dot(p - l.o, l.d) / dd : LD(0);
-  if (l.lo && t < 0) t = 0;
-  if (l.hi && t > 1) t = 1;
-  return sqr_length(l.o + t * l.d - p);
-}
-
-/// min over the angle a of f(a): 1024 samples, each discrete local minimum refined by golden
-/// section on its neighbouring interval.
-template <class F>
-LD min_over_angle(F&& f) {
-  constexpr int n = 1024;
-  const LD two_pi = LD(2) * std::acos(LD(-1));
-  const LD h = two_pi / n;
-  static LD val[n];
-  for (int i = 0; i < n; ++i) val[i] = f(h * LD(i));
-  LD best = std::numeric_limits<LD>::infinity();
-  for (int i = 0; i < n; ++i) {
-    const LD prev = val[(i + n - 1) % n], next = val[(i + 1) % n];
-    if (!(val[i] <= prev && val[i] <= next)) continue;
-    LD a = h * LD(i - 1), b = h * LD(i + 1);
-    const LD g = (std::sqrt(LD(5)) - 1) / 2;
-    LD x1 = b - g * (b - a), x2 = a + g * (b - a);
-    LD f1 = f(x1), f2 = f(x2);
-    for (int k = 0; k < 80; ++k) {
-      if (f1 < f2) {
-        b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = f(x1);
-      } else {
-        a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = f(x2);
-      }
-    }
-    best = std::min({best, val[i], f1, f2});
-  }
-  return best;
-}
+using LinLD = locus_test::linear_oracle::LinLD<3>;
 
 template <class Lin, class T>
 LD brute_linear_circle(const Lin& lin, const Circle3<T>& c) {

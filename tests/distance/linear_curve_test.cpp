@@ -10,12 +10,13 @@
 // densely, and every discrete local minimum of the EXACT clamped point-to-linear distance is
 // refined by golden section. Both the returned distance and its realisability (closest points
 // on the objects, |closest[0] - closest[1]| = distance) are checked.
+#include <locus/distance/detail/pair_candidates.hpp>
 #include <locus/distance/line_curve.hpp>
 #include <locus/distance/line_ellipse.hpp>
 #include <locus/distance/line_quadratic_curve.hpp>
-#include <locus/distance/detail/pair_candidates.hpp>
 
 #include "distance/harness.hpp"
+#include "distance/linear_oracle.hpp"
 #include "distance/side_curved.hpp"
 #include "support/typed.hpp"
 
@@ -44,72 +45,12 @@ constexpr int kCaseScale = 6;
 constexpr int kCaseScale = 1;
 #endif
 
-using LD = long double;
-
-::testing::AssertionResult near_ld(LD got, LD want, LD abs_tol) {
-  if (std::fabs(got - want) <= abs_tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure()
-         << "got " << static_cast<double>(got) << ", oracle " << static_cast<double>(want)
-         << ", diff " << static_cast<double>(got - want) << ", tol "
-         << static_cast<double>(abs_tol);
-}
-
-template <int N>
-struct LinLD {
-  Vec<LD, N> o, d;
-  bool lo, hi;
-};
-template <class T, int N>
-LinLD<N> to_ld(const Line<T, N>& l) {
-  return {vec_cast<LD>(l.origin), vec_cast<LD>(l.direction), false, false};
-}
-template <class T, int N>
-LinLD<N> to_ld(const Ray<T, N>& l) {
-  return {vec_cast<LD>(l.origin), vec_cast<LD>(l.direction), true, false};
-}
-template <class T, int N>
-LinLD<N> to_ld(const Segment<T, N>& s) {
-  return {vec_cast<LD>(s.p0), vec_cast<LD>(s.p1) - vec_cast<LD>(s.p0), true, true};
-}
-
-template <int N>
-LD sqr_to_linear(const Vec<LD, N>& p, const LinLD<N>& l) {
-  const LD dd = sqr_length(l.d);
-  LD t = dd > 0 ? dot(p - l.o, l.d) / dd : LD(0);
-  if (l.lo && t < 0) t = 0;
-  if (l.hi && t > 1) t = 1;
-  return sqr_length(l.o + t * l.d - p);
-}
-
-/// min of f over [lo, hi] given its n + 1 samples val[i] = f(lo + i (hi - lo) / n): every
-/// discrete local minimum (ends included) is refined by golden section on its neighbouring
-/// interval.
-template <class F>
-LD min_over_samples(const std::vector<LD>& val, F&& f, LD lo, LD hi) {
-  const int n = static_cast<int>(val.size()) - 1;
-  const LD h = (hi - lo) / n;
-  LD best = std::numeric_limits<LD>::infinity();
-  for (int i = 0; i <= n; ++i) {
-    const LD vi = val[static_cast<std::size_t>(i)];
-    const LD prev = i > 0 ? val[static_cast<std::size_t>(i - 1)] : vi;
-    const LD next = i < n ? val[static_cast<std::size_t>(i + 1)] : vi;
-    best = std::min(best, vi);
-    if (!(vi <= prev && vi <= next)) continue;
-    LD a = lo + h * LD(std::max(i - 1, 0)), b = lo + h * LD(std::min(i + 1, n));
-    const LD g = (std::sqrt(LD(5)) - 1) / 2;
-    LD x1 = b - g * (b - a), x2 = a + g * (b - a);
-    LD f1 = f(x1), f2 = f(x2);
-    for (int k = 0; k < 90; ++k) {
-      if (f1 < f2) {
-        b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = f(x1);
-      } else {
-        a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = f(x2);
-      }
-    }
-    best = std::min({best, f1, f2});
-  }
-  return best;
-}
+using locus_test::linear_oracle::LD;
+using locus_test::linear_oracle::LinLD;
+using locus_test::linear_oracle::min_over_samples;
+using locus_test::linear_oracle::near_ld;
+using locus_test::linear_oracle::sqr_to_linear;
+using locus_test::linear_oracle::to_ld;
 
 /// A parametrised piece X(u), u in [lo, hi], sampled once at n + 1 points so that several
 /// linear components can be measured against it.
@@ -909,14 +850,17 @@ TEST(PairCandidates, BestIsTheFirstSmallestAndTheRunnerUpIsDistinct) {
   for (int trial = 0; trial < 500; ++trial) {
     PC pc;
     pc.sep2 = 0.25;
-    struct Offer { double d2; Vec2d xa, xb; };
+    struct Offer {
+      double d2;
+      Vec2d xa, xb;
+    };
     std::vector<Offer> offers;
     const int n = 1 + trial % 9;
     for (int k = 0; k < n; ++k) {
       // Scores on a coarse lattice (ties are common), points on a coarse lattice (coincident
       // pairs are common), now and then a NaN score.
       const double d2 = rng.uniform_int(0, 9) == 0 ? std::numeric_limits<double>::quiet_NaN()
-                                                    : double(rng.uniform_int(0, 4));
+                                                   : double(rng.uniform_int(0, 4));
       const Vec2d xa{double(rng.uniform_int(0, 2)), 0.0}, xb{double(rng.uniform_int(0, 2)), 1.0};
       offers.push_back({d2, xa, xb});
       pc.offer(d2, k, k, xa, xb);
