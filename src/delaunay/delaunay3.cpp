@@ -375,20 +375,18 @@ LOCUS_D3_NOINLINE Sign insphere_perturbed_slow(const Vec3<double>& a, const Vec3
   return perturbed_zero_case(a, b, c, d, e);
 }
 
-// Stage-A bound of core/predicates.hpp with a cheaper permanent. That bound is
-// insphere_bound_a * P, P the permanent evaluated in floating point. With mx, my, mz the
-// largest |differences| per axis, every 2x2 permanent term is at most 2 mx my, every 3x3 one at
-// most 6 mx my mz, so P <= 6 mx my mz (alift + blift + clift + dlift) up to the few roundings
-// of the two evaluation orders (under 16 units of 2^-53 relative), which the factor
-// 1 + 2^-40 covers. The determinant is evaluated exactly as in core/predicates.hpp.
-constexpr double kInsphereSemiStatic = detail::insphere_bound_a * (1.0 + 0x1p-40);
-
-template <class T>
-LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
-                                   const Vec3<T>& pd, const Vec3<T>& pe) noexcept {
-  const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
-                     c = detail::to_double(pc), d = detail::to_double(pd),
-                     e = detail::to_double(pe);
+// The insphere determinant of core/predicates.hpp (Shewchuk's sign), evaluated in the same order
+// (so the same bits), with the pieces the callers below reuse: the differences to e per axis, the
+// 3x3 minors {bcd, cda, dab, abc} and the lifts |x - e|^2.
+struct InsphereDet {
+  double x[4], y[4], z[4];  // a - e, b - e, c - e, d - e per axis
+  double minor[4];          // bcd, cda, dab, abc
+  double lift[4];           // alift, blift, clift, dlift
+  double det;
+};
+LOCUS_D3_INLINE InsphereDet insphere_det(const Vec3<double>& a, const Vec3<double>& b,
+                                         const Vec3<double>& c, const Vec3<double>& d,
+                                         const Vec3<double>& e) noexcept {
   const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
   const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;
   const double aez = a.z - e.z, bez = b.z - e.z, cez = c.z - e.z, dez = d.z - e.z;
@@ -404,17 +402,35 @@ LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const V
   const double clift = cex * cex + cey * cey + cez * cez;
   const double dlift = dex * dex + dey * dey + dez * dez;
   const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-  const double mx =
-      std::max(std::max(std::abs(aex), std::abs(bex)), std::max(std::abs(cex), std::abs(dex)));
-  const double my =
-      std::max(std::max(std::abs(aey), std::abs(bey)), std::max(std::abs(cey), std::abs(dey)));
-  const double mz =
-      std::max(std::max(std::abs(aez), std::abs(bez)), std::max(std::abs(cez), std::abs(dez)));
-  const double k = 6.0 * ((mx * my) * mz);
-  const double bound = kInsphereSemiStatic * (k * ((alift + blift) + (clift + dlift)));
+  return {{aex, bex, cex, dex}, {aey, bey, cey, dey},         {aez, bez, cez, dez},
+          {bcd, cda, dab, abc}, {alift, blift, clift, dlift}, det};
+}
+
+// Stage-A bound of core/predicates.hpp with a cheaper permanent. That bound is
+// insphere_bound_a * P, P the permanent evaluated in floating point. With mx, my, mz the
+// largest |differences| per axis, every 2x2 permanent term is at most 2 mx my, every 3x3 one at
+// most 6 mx my mz, so P <= 6 mx my mz (alift + blift + clift + dlift) up to the few roundings
+// of the two evaluation orders (under 16 units of 2^-53 relative), which the factor
+// 1 + 2^-40 covers. The determinant is evaluated exactly as in core/predicates.hpp.
+constexpr double kInsphereSemiStatic = detail::insphere_bound_a * (1.0 + 0x1p-40);
+
+template <class T>
+LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
+                                   const Vec3<T>& pd, const Vec3<T>& pe) noexcept {
+  const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
+                     c = detail::to_double(pc), d = detail::to_double(pd),
+                     e = detail::to_double(pe);
+  const InsphereDet q = insphere_det(a, b, c, d, e);
+  const auto max4 = [](const double* v) {
+    return std::max(std::max(std::abs(v[0]), std::abs(v[1])),
+                    std::max(std::abs(v[2]), std::abs(v[3])));
+  };
+  const double k = 6.0 * ((max4(q.x) * max4(q.y)) * max4(q.z));
+  const double bound =
+      kInsphereSemiStatic * (k * ((q.lift[0] + q.lift[1]) + (q.lift[2] + q.lift[3])));
   // Shewchuk's sign convention: ours is the negation.
-  if (std::abs(det) > bound) [[likely]]
-    return -detail::nonzero_sign(det);
+  if (std::abs(q.det) > bound) [[likely]]
+    return -detail::nonzero_sign(q.det);
   return insphere_perturbed_slow(a, b, c, d, e);
 }
 
@@ -438,25 +454,10 @@ LOCUS_D3_INLINE Sign insphere_perturbed_lattice(const Vec3<T>& pa, const Vec3<T>
   const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
                      c = detail::to_double(pc), d = detail::to_double(pd),
                      e = detail::to_double(pe);
-  const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
-  const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;
-  const double aez = a.z - e.z, bez = b.z - e.z, cez = c.z - e.z, dez = d.z - e.z;
-  const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
-  const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
-  const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-  const double abc = aez * bc - bez * ac + cez * ab;
-  const double bcd = bez * cd - cez * bd + dez * bc;
-  const double cda = cez * da + dez * ac + aez * cd;
-  const double dab = dez * ab + aez * bd + bez * da;
-  const double alift = aex * aex + aey * aey + aez * aez;
-  const double blift = bex * bex + bey * bey + bez * bez;
-  const double clift = cex * cex + cey * cey + cez * cez;
-  const double dlift = dex * dex + dey * dey + dez * dez;
-  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-  if (det != 0.0) [[likely]]
-    return -detail::nonzero_sign(det);
-  const double minor[4] = {bcd, cda, dab, abc};
-  return perturbed_from_minors(a, b, c, d, e, minor);
+  const InsphereDet q = insphere_det(a, b, c, d, e);
+  if (q.det != 0.0) [[likely]]
+    return -detail::nonzero_sign(q.det);
+  return perturbed_from_minors(a, b, c, d, e, q.minor);
 }
 
 // orient3d on a small lattice: the double determinant is exact (products below 6 * 2^27 q^3).
