@@ -442,6 +442,36 @@ TYPED_TEST(DetailLinearTest, ClosestParamExact) {
   EXPECT_EQ(detail::closest_param(detail::view(Segment2<T>{a, a}), Vec2<T>{T(5), T(-3)}), T(0));
 }
 
+// A point far beyond the end of a very short segment: the unclamped parameter overflows to
+// +-inf and must still be clamped to the nearer end (not reset to 0); a ray keeps its origin only
+// when the point lies behind it. A line has no end to clamp to: 0 (documented fallback).
+TYPED_TEST(DetailLinearTest, ClosestParamOverflowClamps) {
+  using T = TypeParam;
+  constexpr T dmin = std::numeric_limits<T>::denorm_min();
+  const Vec3<T> x{T(1), T(0), T(0)}, zero{};
+  for (const T len : {dmin, T(64) * dmin, std::numeric_limits<T>::min() / T(4)}) {
+    SCOPED_TRACE(::testing::Message() << "length " << len);
+    const auto seg = detail::view(Segment3<T>{zero, len * x});
+    EXPECT_EQ(detail::closest_param(seg, x), T(1));
+    EXPECT_EQ(detail::closest_param(seg, -x), T(0));
+    EXPECT_EQ(detail::closest_param(seg, T(1e10) * x), T(1));
+    const auto ray = detail::view(Ray3<T>{zero, len * x});
+    EXPECT_EQ(detail::closest_param(ray, -x), T(0));
+    const T tr = detail::closest_param(ray, x);  // +inf unclamped: no finite answer but 0
+    EXPECT_TRUE(tr == T(0) || tr >= T(1) / (len * T(2)));
+    check_closest_param(seg, Vec3<T>{T(3) * len, len, T(0)});  // moderate t still exact
+  }
+  if constexpr (std::is_same_v<T, double>) {
+    const auto seg = detail::view(Segment3<T>{zero, T(1e-300) * x});
+    EXPECT_EQ(detail::closest_param(seg, T(1e10) * x), T(1));
+  }
+  // Subnormal direction, moderate parameter: no rounding to the subnormal grid (25.01 stays
+  // close to 25.01, not 24 or 25).
+  const auto sub = detail::view(Line3<T>{zero, T(100) * dmin * x});
+  const T t = detail::closest_param(sub, T(2501) * dmin * x);
+  EXPECT_NEAR(double(t), 25.01, 25.01 * double(tol<T>(T(8))));
+}
+
 TYPED_TEST(DetailLinearTest, SqrCrossNormAndOverlaps) {
   using T = TypeParam;
   Rng rng;

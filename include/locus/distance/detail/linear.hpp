@@ -98,7 +98,8 @@ template <class T, int N>
 
 /// Parameter of the point of `l` closest to p (exact clamp to the domain). A zero direction
 /// (or one whose square underflows to zero after scaling) gives 0: the component acts as its
-/// origin.
+/// origin. A parameter that overflows (p very far along a very short direction) is clamped by a
+/// bounded end; where the domain leaves it infinite (a ray or line) or it is NaN, 0.
 template <class T, int N>
 [[nodiscard]] inline T closest_param(const LinearView<T, N>& l, const Vec<T, N>& p) noexcept {
   const T a = sqr_length(l.dir);
@@ -106,13 +107,21 @@ template <class T, int N>
     const T t = dot(p - l.origin, l.dir) / a;
     if (is_finite(t)) return l.clamp_param(t);
   }
-  // |dir|^2 underflowed or overflowed: scale by the largest component first.
+  // |dir|^2 underflowed or overflowed, or the parameter overflowed: scale by the largest
+  // component first. The offset is scaled by the same factor when that stays finite, so a
+  // subnormal direction does not round the products to the subnormal grid.
   const T m = max_abs(l.dir);
   if (!(m > T(0))) return T(0);
   const Vec<T, N> u = l.dir / m;
-  const T t = dot(p - l.origin, u) / (sqr_length(u) * m);
-  if (!is_finite(t)) return T(0);
-  return l.clamp_param(t);
+  const Vec<T, N> w = p - l.origin;
+  const Vec<T, N> ws = w / m;
+  bool ws_finite = true;
+  for (int i = 0; i < N; ++i) ws_finite = ws_finite && is_finite(ws[i]);
+  const T t = ws_finite ? dot(ws, u) / sqr_length(u) : dot(w, u) / (sqr_length(u) * m);
+  // An infinite parameter is clamped by a bounded end (a point far beyond the end of a short
+  // segment); 0 only when the domain leaves it infinite or it is NaN.
+  const T c = l.clamp_param(t);
+  return is_finite(c) ? c : T(0);
 }
 
 /// |a x b|^2 in any dimension: the sum over coordinate planes of the squared 2x2 minors.
