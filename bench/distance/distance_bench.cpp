@@ -10,7 +10,8 @@
 //   <pair>/sqr_distances<T> locus::sqr_distances (distance/batch.hpp): the same values for all
 //                           4096 pairs in one call (items = queries), several per SIMD instruction
 //                           (point_triangle/sqr_distances_one_triangle<T>: 4096 points against one
-//                           triangle);
+//                           triangle; <pair>/sqr_distances_avx2<double>: capped to the AVX2
+//                           version of the kernels, on a processor that has x86-64-v4);
 //   <pair>/cgal<Kernel>     the peer on the double inputs (converted once, outside the loop):
 //     CGAL::squared_distance with Simple_cartesian<double> (plain floating point, the fair peer)
 //     and Exact_predicates_inexact_constructions_kernel (what CGAL users usually take), when
@@ -50,8 +51,16 @@ void locus_bench(benchmark::State& state) {
 }
 
 // locus's batch form over all the inputs at once; items per second = queries per second.
-template <class Pair, class T>
+// kIsa caps the compiled version of the kernels (detail::set_batch_isa: 2 x86-64-v4 where the
+// processor has it, 1 AVX2).
+template <class Pair, class T, int kIsa = 2>
 void batch_bench(benchmark::State& state) {
+  const auto level = locus::detail::set_batch_isa(static_cast<locus::detail::BatchIsa>(kIsa));
+  if (static_cast<int>(level) != kIsa) {
+    state.SkipWithError("the processor lacks this instruction set");
+    locus::detail::set_batch_isa(locus::detail::BatchIsa::x86_64_v4);
+    return;
+  }
   const auto in = Pair::input(state);
   const auto a = cast_all<T>(in.first);
   const auto b = cast_all<T>(in.second);
@@ -65,6 +74,7 @@ void batch_bench(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
                           static_cast<std::int64_t>(a.size()));
+  locus::detail::set_batch_isa(locus::detail::BatchIsa::x86_64_v4);
 }
 
 // The "one against many" form: every point against the first triangle (a point cloud against
@@ -127,7 +137,8 @@ void textbook_bench(benchmark::State& state) {
   BENCHMARK(locus_bench<Pair, float, SqrQuery>)->Name(name "/sqr_distance<float>") __VA_ARGS__;   \
   BENCHMARK(locus_bench<Pair, double, SqrQuery>)->Name(name "/sqr_distance<double>") __VA_ARGS__; \
   BENCHMARK(batch_bench<Pair, float>)->Name(name "/sqr_distances<float>") __VA_ARGS__;            \
-  BENCHMARK(batch_bench<Pair, double>)->Name(name "/sqr_distances<double>") __VA_ARGS__
+  BENCHMARK(batch_bench<Pair, double>)->Name(name "/sqr_distances<double>") __VA_ARGS__;          \
+  BENCHMARK(batch_bench<Pair, double, 1>)->Name(name "/sqr_distances_avx2<double>") __VA_ARGS__
 
 LOCUS_BENCH_LOCUS(PointTriangle, "point_triangle");
 BENCHMARK(point_cloud_triangle_bench<float>)

@@ -275,12 +275,16 @@ Sources<A, B> sources(const A& a, std::span<const B> b, std::span<T> out) {
 
 // Defines sqr_distances for one pair (A, B) and scalar type T in its three forms (span-span,
 // span-one, one-span), over run<T>(source_a, source_b, out, n) compiled once per instruction set
-// (the target_clones driver is not a template). Used inside namespace locus.
+// (lanes.hpp, LOCUS_LANE_VERSIONS). Used inside namespace locus.
 #define LOCUS_BATCH_DEFINE(A, B, T, run)                                                       \
   namespace {                                                                                  \
-  LOCUS_LANE_CLONES void run##_##T(const lanes::Source<A<T>>& a, const lanes::Source<B<T>>& b, \
-                                   T* out, std::size_t n) {                                    \
-    run<T>(a, b, out, n);                                                                      \
+  LOCUS_LANE_VERSIONS(run##_##T,                                                               \
+                      (const lanes::Source<A<T>>& a, const lanes::Source<B<T>>& b, T* out,     \
+                       std::size_t n),                                                         \
+                      run<T>(a, b, out, n))                                                    \
+  void run##_##T(const lanes::Source<A<T>>& a, const lanes::Source<B<T>>& b, T* out,           \
+                 std::size_t n) {                                                              \
+    run##_##T##_versions.pick()(a, b, out, n);                                                 \
   }                                                                                            \
   }                                                                                            \
   void sqr_distances(std::span<const A<T>> a, std::span<const B<T>> b,                         \

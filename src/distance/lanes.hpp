@@ -19,6 +19,7 @@
 // overloads).
 
 #include <locus/core/vec.hpp>
+#include <locus/distance/batch.hpp>
 
 #include <cstddef>
 #include <cstring>
@@ -35,19 +36,54 @@
 #define LOCUS_LANE_LAMBDA
 #endif
 
-// The batch drivers are compiled twice, for AVX2 and for the baseline instruction set, and the
-// dynamic loader picks one for the running processor (GNU ifunc); elsewhere once, for whatever
-// the compiler targets.
+// The batch drivers are compiled three times on x86-64 (LOCUS_LANE_VERSIONS): for x86-64-v4
+// (AVX-512: the same 32-byte vectors, but 32 registers, so fewer spills, and mask registers), for
+// AVX2 and for the baseline instruction set; detail::batch_isa() (simd_level.cpp) picks one at
+// the call from the running processor, capped by detail::set_batch_isa() so that tests exercise
+// every version on one machine. Elsewhere, or with -DLOCUS_NO_MULTIVERSION, once, for whatever
+// the compiler targets. The kernels are inlined into each version (a callee without a target
+// attribute may be inlined into any target), so each is compiled for its version's instructions.
 #if defined(__x86_64__) && defined(__has_attribute) && !defined(LOCUS_NO_MULTIVERSION)
-#if __has_attribute(target_clones)
-#define LOCUS_LANE_CLONES __attribute__((target_clones("avx2", "default")))
+#if __has_attribute(target)
+#define LOCUS_LANE_MULTIVERSION 1
 #endif
 #endif
-#ifndef LOCUS_LANE_CLONES
-#define LOCUS_LANE_CLONES
+
+// LOCUS_LANE_VERSIONS(name, (params), call): defines name_v4, name_avx2 and name_baseline, each
+// with the parameter list params and the body `call;` compiled for its instruction set, and
+// name_versions, whose pick() is the version detail::batch_isa() permits.
+#ifdef LOCUS_LANE_MULTIVERSION
+#define LOCUS_LANE_VERSIONS(name, params, call)                                             \
+  __attribute__((target("arch=x86-64-v4"))) void name##_v4 params { call; }                \
+  __attribute__((target("avx2"))) void name##_avx2 params { call; }                        \
+  void name##_baseline params { call; }                                                     \
+  [[maybe_unused]] constexpr auto name##_versions = ::locus::lanes::Versions<decltype(       \
+      &name##_baseline)>{&name##_v4, &name##_avx2, &name##_baseline};
+#else
+#define LOCUS_LANE_VERSIONS(name, params, call)                                             \
+  void name##_baseline params { call; }                                                     \
+  [[maybe_unused]] constexpr auto name##_versions = ::locus::lanes::Versions<decltype(       \
+      &name##_baseline)>{&name##_baseline, &name##_baseline, &name##_baseline};
 #endif
 
 namespace locus::lanes {
+
+/// The versions of one driver, best instruction set first; pick() is the one detail::batch_isa()
+/// permits.
+template <class Fn>
+struct Versions {
+  Fn v4, avx2, baseline;
+  [[nodiscard]] Fn pick() const noexcept {
+    switch (detail::batch_isa()) {
+      case detail::BatchIsa::x86_64_v4:
+        return v4;
+      case detail::BatchIsa::avx2:
+        return avx2;
+      default:
+        return baseline;
+    }
+  }
+};
 
 template <class T>
 struct Lanes {

@@ -7,7 +7,8 @@
 // thin and flat triangles, parallel and nearly parallel segments at every angle, zero-length
 // segments, shared end points, huge and tiny coordinates, NaN and infinities, empty and flat
 // boxes), in the span-span, span-one and one-span forms and both argument orders, for every batch
-// length from 0 to a few lane groups (tails), plus the agreement of one sample with the exact
+// length from 0 to a few lane groups (tails), under every compiled version of the kernels the
+// processor runs (x86-64-v4, AVX2, baseline), plus the agreement of one sample with the exact
 // rational distance.
 #include <locus/distance/batch.hpp>
 #include <locus/distance/point_aligned_box.hpp>
@@ -175,7 +176,7 @@ OrientedBox3<T> random_obb(Rng& rng) {
 // two spans in both orders (for a same-type pair, the spans exchanged), and one object against
 // the other span, each way.
 template <class T, class A, class B>
-void check_pair(const std::vector<A>& a, const std::vector<B>& b, const std::string& what) {
+void check_pair_once(const std::vector<A>& a, const std::vector<B>& b, const std::string& what) {
   ASSERT_EQ(a.size(), b.size());
   const std::size_t n = a.size();
   std::vector<T> out(n, T(-1)), swapped(n, T(-1));
@@ -206,6 +207,22 @@ void check_pair(const std::vector<A>& a, const std::vector<B>& b, const std::str
                     << " vs " << want_other;
     }
   }
+}
+
+// check_pair_once under every compiled version of the kernels this processor runs (x86-64-v4,
+// AVX2, baseline: detail::set_batch_isa), so that each is tested on one machine.
+template <class T, class A, class B>
+void check_pair(const std::vector<A>& a, const std::vector<B>& b, const std::string& what) {
+  using detail::BatchIsa;
+  int tested = -1;
+  for (const BatchIsa level : {BatchIsa::x86_64_v4, BatchIsa::avx2, BatchIsa::baseline}) {
+    const BatchIsa used = detail::set_batch_isa(level);
+    EXPECT_LE(static_cast<int>(used), static_cast<int>(level));
+    if (static_cast<int>(used) == tested) continue;  // the processor lacks this level
+    tested = static_cast<int>(used);
+    check_pair_once<T>(a, b, what + " isa " + std::to_string(tested));
+  }
+  detail::set_batch_isa(BatchIsa::x86_64_v4);
 }
 
 // Batch lengths: every length up to three lane groups of floats (tails of every size), then a

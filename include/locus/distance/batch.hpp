@@ -25,9 +25,10 @@
 // floats at once (src/distance/lanes.hpp), operation for operation; the lanes it does not cover
 // (non-finite or extreme input, needle triangles, meeting tests the filter cannot decide, rare
 // branches) are recomputed by the per-query function, which is why the results agree bit for
-// bit. On x86-64 the library carries an AVX2 and a baseline version and picks one at load time
-// (build locus with -DLOCUS_NO_MULTIVERSION to compile the kernels once, for the compiler's own
-// target). Throughput (bench/distance/distance_bench.cpp, M queries per second, double, one
+// bit. On x86-64 the library carries an x86-64-v4 (AVX-512), an AVX2 and a baseline version and
+// picks the best one the processor runs at each call (detail::set_batch_isa caps it, for tests
+// and benchmarks; build locus with -DLOCUS_NO_MULTIVERSION to compile the kernels once, for the
+// compiler's own target). Every version gives the same bits. Throughput (bench/distance/distance_bench.cpp, M queries per second, double, one
 // run): point-triangle 89 (per query 28; CGAL 58), segment-segment 113 (26; CGAL 70),
 // segment-triangle 16 (5.6; CGAL 5.7), point-AABB 357 (208).
 // No allocation; noexcept.
@@ -41,6 +42,19 @@
 #include <span>
 
 namespace locus {
+
+namespace detail {
+/// The instruction sets the batched kernels are compiled for (x86-64; elsewhere, or built with
+/// LOCUS_NO_MULTIVERSION, every level runs the one compiled version).
+enum class BatchIsa { baseline = 0, avx2 = 1, x86_64_v4 = 2 };
+/// The version the batched queries use now: the best the processor supports, capped by
+/// set_batch_isa.
+[[nodiscard]] BatchIsa batch_isa() noexcept;
+/// Caps the version the batched queries use (for tests and benchmarks that compare the
+/// versions; default: no cap). Returns the level now in use (limit, or less where the processor
+/// lacks it). Thread-safe; affects later calls in every thread.
+BatchIsa set_batch_isa(BatchIsa limit) noexcept;
+}  // namespace detail
 
 // The pairs and their "one against many" forms, declared for float and double (compiled in
 // src/distance/batch.cpp).
