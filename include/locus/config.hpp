@@ -15,6 +15,17 @@
 #define LOCUS_VERSION_MINOR 1
 #define LOCUS_VERSION_PATCH 0
 
+// LOCUS_ALWAYS_INLINE: for the few small helpers on a query's hot path that the compiler's size
+// heuristics would otherwise leave out of line in large callers (a float Vec3 returned from a
+// call passes through the stack and stalls the load that reads it back).
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCUS_ALWAYS_INLINE __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define LOCUS_ALWAYS_INLINE __forceinline
+#else
+#define LOCUS_ALWAYS_INLINE
+#endif
+
 namespace locus {
 
 /// Signature of an assertion handler: the failed condition, a message, the source location.

@@ -276,29 +276,29 @@ Sources<A, B> sources(const A& a, std::span<const B> b, std::span<T> out) {
 // Defines sqr_distances for one pair (A, B) and scalar type T in its three forms (span-span,
 // span-one, one-span), over run<T>(source_a, source_b, out, n) compiled once per instruction set
 // (lanes.hpp, LOCUS_LANE_VERSIONS). Used inside namespace locus.
-#define LOCUS_BATCH_DEFINE(A, B, T, run)                                                       \
-  namespace {                                                                                  \
-  LOCUS_LANE_VERSIONS(run##_##T,                                                               \
-                      (const lanes::Source<A<T>>& a, const lanes::Source<B<T>>& b, T* out,     \
-                       std::size_t n),                                                         \
-                      run<T>(a, b, out, n))                                                    \
-  void run##_##T(const lanes::Source<A<T>>& a, const lanes::Source<B<T>>& b, T* out,           \
-                 std::size_t n) {                                                              \
-    run##_##T##_versions.pick()(a, b, out, n);                                                 \
-  }                                                                                            \
-  }                                                                                            \
-  void sqr_distances(std::span<const A<T>> a, std::span<const B<T>> b,                         \
-                     std::span<T> out) noexcept {                                              \
-    const auto s = sources(a, b, out);                                                         \
-    run##_##T(s.a, s.b, out.data(), s.n);                                                      \
-  }                                                                                            \
-  void sqr_distances(std::span<const A<T>> a, const B<T>& b, std::span<T> out) noexcept {      \
-    const auto s = sources(a, b, out);                                                         \
-    run##_##T(s.a, s.b, out.data(), s.n);                                                      \
-  }                                                                                            \
-  void sqr_distances(const A<T>& a, std::span<const B<T>> b, std::span<T> out) noexcept {      \
-    const auto s = sources(a, b, out);                                                         \
-    run##_##T(s.a, s.b, out.data(), s.n);                                                      \
+#define LOCUS_BATCH_DEFINE(A, B, T, run)                                                   \
+  namespace {                                                                              \
+  LOCUS_LANE_VERSIONS(run##_##T,                                                           \
+                      (const lanes::Source<A<T>>& a, const lanes::Source<B<T>>& b, T* out, \
+                       std::size_t n),                                                     \
+                      run<T>(a, b, out, n))                                                \
+  void run##_##T(const lanes::Source<A<T>>& a, const lanes::Source<B<T>>& b, T* out,       \
+                 std::size_t n) {                                                          \
+    run##_##T##_versions.pick()(a, b, out, n);                                             \
+  }                                                                                        \
+  }                                                                                        \
+  void sqr_distances(std::span<const A<T>> a, std::span<const B<T>> b,                     \
+                     std::span<T> out) noexcept {                                          \
+    const auto s = sources(a, b, out);                                                     \
+    run##_##T(s.a, s.b, out.data(), s.n);                                                  \
+  }                                                                                        \
+  void sqr_distances(std::span<const A<T>> a, const B<T>& b, std::span<T> out) noexcept {  \
+    const auto s = sources(a, b, out);                                                     \
+    run##_##T(s.a, s.b, out.data(), s.n);                                                  \
+  }                                                                                        \
+  void sqr_distances(const A<T>& a, std::span<const B<T>> b, std::span<T> out) noexcept {  \
+    const auto s = sources(a, b, out);                                                     \
+    run##_##T(s.a, s.b, out.data(), s.n);                                                  \
   }
 
 }  // namespace locus

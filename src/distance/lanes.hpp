@@ -53,17 +53,19 @@
 // with the parameter list params and the body `call;` compiled for its instruction set, and
 // name_versions, whose pick() is the version detail::batch_isa() permits.
 #ifdef LOCUS_LANE_MULTIVERSION
-#define LOCUS_LANE_VERSIONS(name, params, call)                                             \
-  __attribute__((target("arch=x86-64-v4"))) void name##_v4 params { call; }                \
-  __attribute__((target("avx2"))) void name##_avx2 params { call; }                        \
-  void name##_baseline params { call; }                                                     \
-  [[maybe_unused]] constexpr auto name##_versions = ::locus::lanes::Versions<decltype(       \
-      &name##_baseline)>{&name##_v4, &name##_avx2, &name##_baseline};
+#define LOCUS_LANE_VERSIONS(name, params, call)                                      \
+  __attribute__((target("arch=x86-64-v4"))) void name##_v4 params { call; }          \
+  __attribute__((target("avx2"))) void name##_avx2 params { call; }                  \
+  void name##_baseline params { call; }                                              \
+  [[maybe_unused]] constexpr auto name##_versions =                                  \
+      ::locus::lanes::Versions<decltype(&name##_baseline)>{&name##_v4, &name##_avx2, \
+                                                           &name##_baseline};
 #else
-#define LOCUS_LANE_VERSIONS(name, params, call)                                             \
-  void name##_baseline params { call; }                                                     \
-  [[maybe_unused]] constexpr auto name##_versions = ::locus::lanes::Versions<decltype(       \
-      &name##_baseline)>{&name##_baseline, &name##_baseline, &name##_baseline};
+#define LOCUS_LANE_VERSIONS(name, params, call)                                                \
+  void name##_baseline params { call; }                                                        \
+  [[maybe_unused]] constexpr auto name##_versions =                                            \
+      ::locus::lanes::Versions<decltype(&name##_baseline)>{&name##_baseline, &name##_baseline, \
+                                                           &name##_baseline};
 #endif
 
 namespace locus::lanes {

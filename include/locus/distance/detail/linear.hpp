@@ -60,10 +60,10 @@ struct LinearView {
   bool bounded_lo;
   bool bounded_hi;
 
-  [[nodiscard]] constexpr Vec<T, N> at(T t) const noexcept {
+  [[nodiscard]] LOCUS_ALWAYS_INLINE constexpr Vec<T, N> at(T t) const noexcept {
     return bounded_hi ? lerp(origin, end, t) : origin + t * dir;
   }
-  [[nodiscard]] constexpr T clamp_param(T t) const noexcept {
+  [[nodiscard]] LOCUS_ALWAYS_INLINE constexpr T clamp_param(T t) const noexcept {
     if (bounded_lo && t < T(0)) t = T(0);
     if (bounded_hi && t > T(1)) t = T(1);
     return t;
@@ -71,15 +71,15 @@ struct LinearView {
 };
 
 template <class T, int N>
-[[nodiscard]] constexpr LinearView<T, N> view(const Line<T, N>& l) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE constexpr LinearView<T, N> view(const Line<T, N>& l) noexcept {
   return {l.origin, l.origin, l.direction, false, false};
 }
 template <class T, int N>
-[[nodiscard]] constexpr LinearView<T, N> view(const Ray<T, N>& r) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE constexpr LinearView<T, N> view(const Ray<T, N>& r) noexcept {
   return {r.origin, r.origin, r.direction, true, false};
 }
 template <class T, int N>
-[[nodiscard]] constexpr LinearView<T, N> view(const Segment<T, N>& s) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE constexpr LinearView<T, N> view(const Segment<T, N>& s) noexcept {
   return {s.p0, s.p1, s.p1 - s.p0, true, true};
 }
 
@@ -96,20 +96,13 @@ template <class T, int N>
   return all_finite(s.p0, s.p1);
 }
 
-/// Parameter of the point of `l` closest to p (exact clamp to the domain). A zero direction
-/// (or one whose square underflows to zero after scaling) gives 0: the component acts as its
-/// origin. A parameter that overflows (p very far along a very short direction) is clamped by a
-/// bounded end; where the domain leaves it infinite (a ray or line) or it is NaN, 0.
+/// closest_param when |dir|^2 underflows or overflows, or the parameter overflows: scale by the
+/// largest component first. The offset is scaled by the same factor when that stays finite, so a
+/// subnormal direction does not round the products to the subnormal grid. An infinite parameter
+/// is clamped by a bounded end (a point far beyond the end of a short segment); 0 when the domain
+/// leaves it infinite or it is NaN. (Kept out of closest_param so that its common path inlines.)
 template <class T, int N>
-[[nodiscard]] inline T closest_param(const LinearView<T, N>& l, const Vec<T, N>& p) noexcept {
-  const T a = sqr_length(l.dir);
-  if (a >= std::numeric_limits<T>::min() && a <= std::numeric_limits<T>::max()) {
-    const T t = dot(p - l.origin, l.dir) / a;
-    if (is_finite(t)) return l.clamp_param(t);
-  }
-  // |dir|^2 underflowed or overflowed, or the parameter overflowed: scale by the largest
-  // component first. The offset is scaled by the same factor when that stays finite, so a
-  // subnormal direction does not round the products to the subnormal grid.
+[[nodiscard]] T closest_param_rescaled(const LinearView<T, N>& l, const Vec<T, N>& p) noexcept {
   const T m = max_abs(l.dir);
   if (!(m > T(0))) return T(0);
   const Vec<T, N> u = l.dir / m;
@@ -118,10 +111,23 @@ template <class T, int N>
   bool ws_finite = true;
   for (int i = 0; i < N; ++i) ws_finite = ws_finite && is_finite(ws[i]);
   const T t = ws_finite ? dot(ws, u) / sqr_length(u) : dot(w, u) / (sqr_length(u) * m);
-  // An infinite parameter is clamped by a bounded end (a point far beyond the end of a short
-  // segment); 0 only when the domain leaves it infinite or it is NaN.
   const T c = l.clamp_param(t);
   return is_finite(c) ? c : T(0);
+}
+
+/// Parameter of the point of `l` closest to p (exact clamp to the domain). A zero direction
+/// (or one whose square underflows to zero after scaling) gives 0: the component acts as its
+/// origin. A parameter that overflows (p very far along a very short direction) is clamped by a
+/// bounded end; where the domain leaves it infinite (a ray or line) or it is NaN, 0.
+template <class T, int N>
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline T closest_param(const LinearView<T, N>& l,
+                                                         const Vec<T, N>& p) noexcept {
+  const T a = sqr_length(l.dir);
+  if (a >= std::numeric_limits<T>::min() && a <= std::numeric_limits<T>::max()) {
+    const T t = dot(p - l.origin, l.dir) / a;
+    if (is_finite(t)) return l.clamp_param(t);
+  }
+  return closest_param_rescaled(l, p);
 }
 
 /// |a x b|^2 in any dimension: the sum over coordinate planes of the squared 2x2 minors.
@@ -290,9 +296,9 @@ template <class L>
 /// (and everything NaN) exactly when some input coordinate is NaN or infinite.
 template <class T, int N>
 struct LinearPairCore {
-  T s, t;                     ///< parameters on the first and the second component
+  T s, t;                            ///< parameters on the first and the second component
   std::array<Vec<T, N>, 2> closest;  ///< point_at(first, s), point_at(second, t)
-  T sqr;                      ///< sqr_length(closest[0] - closest[1])
+  T sqr;                             ///< sqr_length(closest[0] - closest[1])
   bool unique;
   bool finite;
 };
@@ -317,12 +323,12 @@ template <class T, int N>
   const T a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
   const T D = sqr_cross_norm(da, db), ac = a * c;
   const T sn = b * e - c * d, tn = a * e - b * d;  // D * (s, t) of the unconstrained minimiser
-  const bool sl = sn < T(0), sh = sn > D, tl = tn < T(0), th = tn > D;
+  const bool sl = sn<T(0), sh = sn> D, tl = tn<T(0), th = tn> D;
   const bool s_out = sl | sh, t_out = tl | th;
   constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
   // da, db are finite when a, c are; then d, e are finite exactly when r (x.p0, y.p0) is.
-  if (!(a >= lo && c >= lo && ac <= hi && (d - d) + (e - e) == T(0) &&
-        D > T(64) * eps_v<T> * ac && (s_out | t_out | (T(16) * D >= ac))))
+  if (!(a >= lo && c >= lo && ac <= hi && (d - d) + (e - e) == T(0) && D > T(64) * eps_v<T> * ac &&
+        (s_out | t_out | (T(16) * D >= ac))))
     return false;
   const T sc = select(sh, T(1), T(0)), tc = select(th, T(1), T(0));  // the violated bounds
   // Derivatives of R / 2 along s and t at (sc, tc), and whether moving into the domain along
