@@ -797,12 +797,22 @@ TYPED_TEST(DetailLinearTest, BestCandidateOffer) {
     EXPECT_FALSE(b.unique);
   }
   {
-    // A NaN first offer is taken (found), and, as coded, nothing compares below NaN afterwards.
+    // A NaN first offer is taken (found), and replaced by the first comparable offer; later
+    // offers compete as usual.
     BC b;
     b.offer(nan, T(0.3), Vec2<T>{T(1), T(1)}, true);
     EXPECT_TRUE(b.found);
     EXPECT_TRUE(std::isnan(double(b.sqr)));
-    b.offer(T(0), T(0.6), Vec2<T>{T(2), T(2)}, true);
-    EXPECT_EQ(b.t, T(0.3));
+    b.offer(nan, T(0.4), Vec2<T>{T(1), T(1)}, true);
+    EXPECT_TRUE(std::isnan(double(b.sqr)));
+    b.offer(T(5), T(0.6), Vec2<T>{T(2), T(2)}, false);
+    EXPECT_EQ(b.sqr, T(5));
+    EXPECT_EQ(b.t, T(0.6));
+    EXPECT_FALSE(b.unique);
+    b.offer(nan, T(0.7), Vec2<T>{T(3), T(3)}, true);
+    EXPECT_EQ(b.t, T(0.6));
+    b.offer(T(1), T(0.8), Vec2<T>{T(4), T(4)}, true);
+    EXPECT_EQ(b.t, T(0.8));
+    EXPECT_EQ(b.param, (Vec2<T>{T(4), T(4)}));
   }
 }

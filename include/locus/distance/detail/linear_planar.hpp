@@ -74,7 +74,9 @@ struct BestCandidate {
   bool unique = true;
   bool found = false;
   constexpr void offer(T q, T t_, const P& p_, bool unique_) noexcept {
-    if (!found || q < sqr) {
+    // A NaN candidate (only from overflowing arithmetic on huge input) is kept only until a
+    // comparable one arrives: nothing compares below NaN.
+    if (!found || q < sqr || (!(sqr == sqr) && q == q)) {
       sqr = q;
       t = t_;
       param = p_;
