@@ -213,6 +213,14 @@ TYPED_TEST(LinearTetrahedronTest, DegenerateInput) {
   const auto r = distance(Segment3<T>{in, in}, tet);
   EXPECT_EQ(r.distance, T(0));
   EXPECT_TRUE(r.unique);  // a point: a single pair
+  // A line with a zero direction inside the solid is that point: distance 0, not the distance
+  // to the boundary (regression: lines had no inside test for their origin).
+  for (const auto& rr :
+       {distance(Line3<T>{in, Vec3<T>{}}, tet), distance(Ray3<T>{in, Vec3<T>{}}, tet)}) {
+    EXPECT_EQ(rr.distance, T(0));
+    EXPECT_EQ(rr.closest[0], in);
+    EXPECT_TRUE(rr.unique);
+  }
 }
 
 TYPED_TEST(LinearTetrahedronTest, NonFiniteInputGivesNaNResult) {

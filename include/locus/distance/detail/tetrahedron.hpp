@@ -121,10 +121,12 @@ template <class T, class L>
   };
   int side0[4] = {0, 0, 0, 0}, side1[4] = {0, 0, 0, 0};
   if (o != 0) {
-    // A finite end inside the solid is a closest point (distance exactly 0).
-    bool in0 = A.bounded_lo, in1 = A.bounded_hi;
+    // A finite end inside the solid is a closest point (distance exactly 0); so is the origin of
+    // a zero direction (the component is that point).
+    const bool has_origin = A.bounded_lo || !(max_abs(A.dir) > T(0));
+    bool in0 = has_origin, in1 = A.bounded_hi;
     for (int i = 0; i < 4; ++i) {
-      if (A.bounded_lo) in0 = (side0[i] = tet_outside(tet, o, i, A.origin)) <= 0 && in0;
+      if (has_origin) in0 = (side0[i] = tet_outside(tet, o, i, A.origin)) <= 0 && in0;
       if (A.bounded_hi) in1 = (side1[i] = tet_outside(tet, o, i, A.end)) <= 0 && in1;
     }
     if (in0 || in1) {
