@@ -12,9 +12,11 @@
 //    the component's line, or behind the origin (dot(d, x - o) < -mu |d|: ray and segment), or
 //    beyond the far end (dot(d, x - p1) > mu |d|: segment).
 // Each region is convex and every point of it is farther than mu, so a rejected edge cannot be
-// closer (up to the rounding of mu and of the tests, which only matters for near-ties); ties keep
-// the earlier edge. The solve is detail::linear_linear_distance (detail/linear.hpp), so the
-// answer is the brute-force minimum over the edges.
+// closer; mu is grown by a bound on the rounding of the distances and of the tests (a few eps *
+// scale, scale the largest coordinate magnitude), so that near-ties are solved rather than
+// rejected and the answer is exactly the minimum over the edges; ties keep the earlier edge.
+// The solve is detail::linear_linear_distance (detail/linear.hpp), so the answer is the
+// brute-force minimum over the edges, bit for bit.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -23,6 +25,7 @@
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/segment.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <span>
@@ -35,9 +38,12 @@ template <class T, int N, class L>
                                                                    std::span<const Vec<T, N>> v,
                                                                    bool closed) noexcept {
   if (v.empty() || !finite_input(l)) return non_finite_distance<T, N, T, T>();
-  for (const Vec<T, N>& x : v)
-    if (!is_finite(x)) return non_finite_distance<T, N, T, T>();
   const LinearView<T, N> lv = view(l);
+  T scale = max_abs(lv.origin) + max_abs(lv.end);
+  for (const Vec<T, N>& x : v) {
+    if (!is_finite(x)) return non_finite_distance<T, N, T, T>();
+    scale = std::max(scale, max_abs(x));
+  }
   const std::size_t m = segment_count(v.size(), closed);
   if (m == 0) {  // a single vertex: the point-linear query
     const T t = closest_param(lv, v[0]);
@@ -53,8 +59,16 @@ template <class T, int N, class L>
   }
   const T dir_len = length(lv.dir);
 
+  // The rejection radius: mu grown by the rounding error of the per-edge squared distances (a
+  // few eps * scale^2, scale the magnitude of the closest points) and of the rejection tests
+  // (a few eps * scale), so that an edge is skipped only when its computed distance could not be
+  // below the best one: the answer is then exactly the minimum over the edges.
+  const T s4 = T(4) * scale;
+  const auto radius = [&](T d) {
+    return std::sqrt(d * d + T(256) * eps_v<T> * s4 * s4) + T(16) * eps_v<T> * s4;
+  };
   Distance<T, N, T, T> best = linear_linear_distance<T, N>(l, edge(v, 0));
-  T mu = best.distance;
+  T mu = radius(best.distance);
   for (std::size_t i = 1; i < m; ++i) {
     const Segment<T, N> s = edge(v, i);
     bool rejected = false;
@@ -80,7 +94,7 @@ template <class T, int N, class L>
     if (r.sqr_distance < best.sqr_distance) {
       best = r;
       best.param_b = static_cast<T>(i) + r.param_b;
-      mu = r.distance;
+      mu = radius(r.distance);
     }
   }
   return best;
