@@ -134,9 +134,11 @@ inline mpq_class sqr_point_tetrahedron(const Q3& p, const std::array<Q3, 4>& v) 
 }
 
 /// Linear component to solid tetrahedron: 0 when a finite end (or, for a line, any point) is
-/// inside or the component crosses a face; otherwise the minimum over the faces.
+/// inside or the component crosses a face; otherwise the minimum over the faces. A zero
+/// direction is the point origin (a line or ray too: it crosses no face).
 inline mpq_class sqr_linear_tetrahedron(const QLinear<3>& A, const std::array<Q3, 4>& v) {
-  if (A.lo && inside_tetrahedron(A.origin, v)) return 0;
+  const bool is_point = dot(A.dir, A.dir) == 0;
+  if ((A.lo || is_point) && inside_tetrahedron(A.origin, v)) return 0;
   if (A.hi && inside_tetrahedron(axpy(A.origin, mpq_class(1), A.dir), v)) return 0;
   const auto f = tet_faces(v);
   mpq_class best = sqr_linear_triangle(A, f[0]);
