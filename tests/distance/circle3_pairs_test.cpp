@@ -331,6 +331,31 @@ TYPED_TEST(Circle3PairsTest, CircleSpecialConfigurations) {
   EXPECT_NEAR(p3.distance, T(4), e);
 }
 
+// Regression (Harness, LOCUS_TEST_SEED=77, case 88): b's center is on a's axis, and b is solved
+// as circle 0 (canonical order). The squared critical-point equation then has double roots at
+// the zeros of h' (the extremes of b along a's normal), one of them the minimiser; rounding made
+// it a complex pair and the solver returned a local minimum (119.48 instead of 18.80).
+TYPED_TEST(Circle3PairsTest, CenterOnOtherAxisDoubleRoot) {
+  using T = TypeParam;
+  const auto cv = [](double x) { return static_cast<T>(x); };
+  const Circle3<T> a{{cv(8.0760788670268333), cv(-3.8761022117420021), cv(9.277412506695498)},
+                     {cv(-1.3802033580830606), cv(0.46272116145862374), cv(-1.5099719219043668)},
+                     cv(2.0263537321561724)};
+  const Circle3<T> b{{cv(3.1204513271790111), cv(-2.2146994064484873), cv(3.8558502443206031)},
+                     {cv(1.073405959990289), cv(0.80082399321442277), cv(-1.4535371557892707)},
+                     cv(3.4628619201707207)};
+  const LD brute = brute_circle_circle(a, b);
+  EXPECT_NEAR(double(brute), 4.3357333, 1e-4);  // sqrt(18.7986), not the local sqrt(119.48)
+  const auto r = distance(a, b);
+  const auto q = distance(b, a);
+  EXPECT_TRUE(near_ld(LD(r.distance), brute, LD(dist_tol<T>(T(10)))));
+  EXPECT_TRUE(near_ld(LD(q.distance), brute, LD(dist_tol<T>(T(10)))));
+  EXPECT_EQ(q.distance, r.distance);
+  EXPECT_EQ(q.closest[0], r.closest[1]);
+  EXPECT_EQ(q.closest[1], r.closest[0]);
+  EXPECT_NEAR(length(r.closest[0] - r.closest[1]), r.distance, dist_tol<T>(T(10)));
+}
+
 TYPED_TEST(Circle3PairsTest, NonFinite) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();

@@ -13,12 +13,14 @@
 // polynomials of degree 1 and 2. F' = 0 reads h' sqrt(g) = r1 g'; squaring and substituting
 // x = tan(a / 2) (cos a = (1 - x^2) / (1 + x^2), sin a = 2x / (1 + x^2)) and clearing (1 + x^2)^4
 // gives a polynomial of degree 8 whose real roots, with a = pi (x = infinity), include every
-// minimiser of F. Each candidate is evaluated in the cancellation-free form
-// (n1.(P - C1))^2 + (rho - r1)^2 and the smallest wins (the global minimum; never below the true
-// distance by more than rounding); its closest point on circle 1 is the point-circle answer
-// (point_circle.hpp). Set-up and roots run in compute_t<T> (double for float). The pair is
-// solved in a canonical argument order, so distance(b, a) is bit for bit the swap of
-// distance(a, b).
+// minimiser of F. Squaring makes double roots where h' and g' vanish together (always at a zero
+// of h'; e.g. every time the center of circle 0 is on the axis of circle 1); rounding can turn
+// them into complex pairs, so the two zeros of h' (closed form) are candidates too. Each candidate
+// is evaluated in the cancellation-free form (n1.(P - C1))^2 + (rho - r1)^2 and the smallest wins
+// (the global minimum; never below the true distance by more than rounding); its closest point on
+// circle 1 is the point-circle answer (point_circle.hpp). Set-up and roots run in compute_t<T>
+// (double for float). The pair is solved in a canonical argument order, so distance(b, a) is bit
+// for bit the swap of distance(a, b).
 //
 // unique = false for coaxial circles (parallel normals, centers on a common axis, including
 // concentric coplanar circles): F is then constant, detected as the degree-8 polynomial
@@ -33,7 +35,7 @@
 // angle is 0); two zero radii give the two centers. A negative radius, a zero normal, and NaN
 // or infinite values give non_finite_distance() (result.hpp). Cost: O(1) but heavier than most
 // pairs: building the degree-8 polynomial (fixed arrays) and its real roots (numeric/roots.hpp's
-// engine on a fixed stack workspace: no allocation), at most 9 candidate evaluations, one atan2.
+// engine on a fixed stack workspace: no allocation), at most 11 candidate evaluations, three atan2.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -167,6 +169,21 @@ template <class T>
       const C angle = C(2) * std::atan(static_cast<C>(r_out[i].x));
       const C f = f_at(angle);
       if (f < best_f) best_f = f, best_a = angle;
+    }
+    // Squaring made double roots: the equation is (h' sqrt(g) - r1 g') (h' sqrt(g) + r1 g') = 0,
+    // and both factors vanish where h' and g' vanish together. Rounding of the coefficients can
+    // turn such a double root into a complex pair that the root finder rightly does not report,
+    // losing a critical point of F that may be the minimum. It happens when the center of circle
+    // 0 lies on the axis of circle 1 (D = |D| n1): with e(a) = cos a U0 + sin a V0, h' = 2 r0 |D|
+    // n1.e' and g' = -2 r0^2 (n1.e) (n1.e'), so both vanish where n1.e' = 0, at the two extremes
+    // of circle 0 along n1. Every common zero of h' and g' is a zero of h' = 2 r0 (b cos a -
+    // a sin a), and those are known in closed form: they are always candidates.
+    if (a != C(0) || b != C(0)) {
+      for (const C angle : {std::atan2(b, a), std::atan2(-b, -a)}) {
+        if (!(angle > -pi_v<C>)) continue;  // -pi is pi, already a candidate
+        const C f = f_at(angle);
+        if (f < best_f) best_f = f, best_a = angle;
+      }
     }
   }
   const T angle0 = static_cast<T>(best_a);
