@@ -42,10 +42,9 @@ constexpr LD kInf = std::numeric_limits<LD>::infinity();
 
 ::testing::AssertionResult near_ld(LD got, LD want, LD abs_tol) {
   if (std::fabs(got - want) <= abs_tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "got " << static_cast<double>(got) << " want "
-                                       << static_cast<double>(want) << " diff "
-                                       << static_cast<double>(got - want) << " tol "
-                                       << static_cast<double>(abs_tol);
+  return ::testing::AssertionFailure()
+         << "got " << static_cast<double>(got) << " want " << static_cast<double>(want) << " diff "
+         << static_cast<double>(got - want) << " tol " << static_cast<double>(abs_tol);
 }
 
 /// Smallest s >= 0 with al s^2 + be s + ga = 0 (infinity if none).
@@ -146,7 +145,8 @@ LD oracle3(const Vec3<T>& p, const Quadric3<T>& q) {
   constexpr int nt = 96, np = 48;
   for (int i = 0; i < nt; ++i)
     for (int j = 0; j <= np; ++j) {
-      const LD th = 6.283185307179586476925L * LD(i) / LD(nt), ph = 3.14159265358979323846L * LD(j) / LD(np);
+      const LD th = 6.283185307179586476925L * LD(i) / LD(nt),
+               ph = 3.14159265358979323846L * LD(j) / LD(np);
       const LD x = std::cos(th) * std::sin(ph), y = std::sin(th) * std::sin(ph), z = std::cos(ph);
       grid.push_back({f(x, y, z), x, y, z});
     }
@@ -164,6 +164,10 @@ LD oracle3(const Vec3<T>& p, const Quadric3<T>& q) {
           (d == 0 ? t.x : d == 1 ? t.y : t.z) += sg * h;
           t.v = f(t.x, t.y, t.z);
           if (t.v < c.v) {
+            // Back onto the unit sphere: unnormalised, a minimum on a coordinate axis made every
+            // step outward along it a (shrinking) improvement for ever (LOCUS_TEST_SEED=50 hung).
+            const LD l = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+            t.x /= l, t.y /= l, t.z /= l;
             c = t;
             moved = true;
             break;
@@ -193,7 +197,7 @@ QuadraticCurve2<T> conic_from(T d0, T d1, T e, T k, T angle, Vec2<T> c) {
   Cc += A[0][0] * cc[0] * cc[0] + 2 * A[0][1] * cc[0] * cc[1] + A[1][1] * cc[1] * cc[1] -
         B[0] * cc[0] - B[1] * cc[1];
   return {static_cast<T>(A[0][0]), static_cast<T>(2 * A[0][1]), static_cast<T>(A[1][1]),
-          static_cast<T>(Bs[0]), static_cast<T>(Bs[1]), static_cast<T>(Cc)};
+          static_cast<T>(Bs[0]),   static_cast<T>(Bs[1]),       static_cast<T>(Cc)};
 }
 
 template <class T>
@@ -233,21 +237,32 @@ TYPED_TEST(PointConicTest, ConicOracle) {
     const T d0 = rng.uniform<T>(T(0.2), T(3));
     T d1 = rng.uniform<T>(T(0.2), T(3)), e = T(0), k = -rng.uniform<T>(T(0.5), T(9));
     switch (n % 5) {
-      case 0: break;                        // ellipse
-      case 1: d1 = -d1; break;              // hyperbola
-      case 2: d1 = T(0), e = T(1), k = T(0); break;  // parabola
-      case 3: d1 = -d1, k = T(0); break;     // two crossing lines
-      case 4: d1 = T(0); break;              // two parallel lines
+      case 0:
+        break;  // ellipse
+      case 1:
+        d1 = -d1;
+        break;  // hyperbola
+      case 2:
+        d1 = T(0), e = T(1), k = T(0);
+        break;  // parabola
+      case 3:
+        d1 = -d1, k = T(0);
+        break;  // two crossing lines
+      case 4:
+        d1 = T(0);
+        break;  // two parallel lines
     }
     // Degenerate classes (line pairs) only survive rounding when the coefficients are exact:
     // axis-aligned, dyadic centre and eigenvalues; the smooth classes are rotated freely.
     const bool exact = n % 5 >= 3;
     const T d0x = exact ? std::round(d0 * T(8)) / T(8) : d0;
     const T d1x = exact ? std::round(d1 * T(8)) / T(8) : d1;
-    const Vec2<T> ctr = exact ? Vec2<T>{T(rng.uniform_int(-24, 24)) / T(8), T(rng.uniform_int(-24, 24)) / T(8)}
-                              : rng.vec<T, 2>(T(-3), T(3));
+    const Vec2<T> ctr =
+        exact ? Vec2<T>{T(rng.uniform_int(-24, 24)) / T(8), T(rng.uniform_int(-24, 24)) / T(8)}
+              : rng.vec<T, 2>(T(-3), T(3));
     const T kx = exact ? std::round(k * T(4)) / T(4) : k;
-    const auto q = conic_from<T>(d0x, d1x, e, kx, exact ? T(0) : rng.uniform<T>(T(0), T(6.28)), ctr);
+    const auto q =
+        conic_from<T>(d0x, d1x, e, kx, exact ? T(0) : rng.uniform<T>(T(0), T(6.28)), ctr);
     const Vec2<T> p = rng.vec<T, 2>(T(-6), T(6));
     const auto r = distance(p, q);
     const LD o = oracle2(p, q);
@@ -258,14 +273,52 @@ TYPED_TEST(PointConicTest, ConicOracle) {
         << " " << q.e << " " << q.f << " p = " << p.x << " " << p.y;
     // On the curve (relative to the size of its terms).
     const Vec2<T> x = r.closest[1];
-    const T terms = std::abs(q.a * x.x * x.x) + std::abs(q.b * x.x * x.y) + std::abs(q.c * x.y * x.y) +
-                    std::abs(q.d * x.x) + std::abs(q.e * x.y) + std::abs(q.f);
+    const T terms = std::abs(q.a * x.x * x.x) + std::abs(q.b * x.x * x.y) +
+                    std::abs(q.c * x.y * x.y) + std::abs(q.d * x.x) + std::abs(q.e * x.y) +
+                    std::abs(q.f);
     EXPECT_LE(std::abs(evaluate(q, x)), T(256) * eps_v<T> * terms);
     const auto s = distance(q, p);
     EXPECT_EQ(s.distance, r.distance);
-    worst = std::max(worst, std::fabs(static_cast<LD>(r.distance) - o) / (LD(eps_v<T>) * LD(scale)));
+    worst =
+        std::max(worst, std::fabs(static_cast<LD>(r.distance) - o) / (LD(eps_v<T>) * LD(scale)));
   }
   std::printf("point-conic: max |distance - oracle| = %.2f eps * 10\n", static_cast<double>(worst));
+}
+
+// Regression (LOCUS_TEST_SEED=50 and 77, ConicOracle float): a parabola rounded into a nearly
+// parabolic ELLIPSE (centre ~1e9 .. 1e11 away). Its axis-form candidate lost every digit, stayed
+// far off the curve after projection, and was accepted unchecked as the nearest point (1.94 and
+// 6.64 instead of 4.03 and 8.59). Only points of the curve may compete now.
+TYPED_TEST(PointConicTest, ConicNearlyParabolicEllipse) {
+  using T = TypeParam;
+  struct Case {
+    float q[6], p[2];
+    double want;
+  };
+  const Case cases[] = {
+      {{0.38764223456382751f, -1.4849425554275513f, 1.4220937490463257f, 0.99511468410491943f,
+        0.25469321012496948f, -1.0548489093780518f},
+       {4.0959911346435547f, 3.0341393947601318f},
+       4.034760712449005},
+      {{0.91422051191329956f, 0.028324641287326813f, 0.00021939053840469569f, -0.65730530023574829f,
+        -1.0103024244308472f, 1.8976002931594849f},
+       {-4.2005634307861328f, -5.6180686950683594f},
+       8.5933377380436262},
+  };
+  for (const Case& c : cases) {
+    const QuadraticCurve2<T> q{T(c.q[0]), T(c.q[1]), T(c.q[2]), T(c.q[3]), T(c.q[4]), T(c.q[5])};
+    const Vec2<T> p{T(c.p[0]), T(c.p[1])};
+    ASSERT_EQ(classify_conic(q), ConicKind::ellipse);
+    const auto r = distance(p, q);
+    EXPECT_TRUE(
+        near_ld(static_cast<LD>(r.distance), oracle2(p, q), static_cast<LD>(tol<T>(64, T(10)))));
+    EXPECT_NEAR(r.distance, T(c.want), tol<T>(64, T(10)));
+    const Vec2<T> x = r.closest[1];
+    const T terms = std::abs(q.a * x.x * x.x) + std::abs(q.b * x.x * x.y) +
+                    std::abs(q.c * x.y * x.y) + std::abs(q.d * x.x) + std::abs(q.e * x.y) +
+                    std::abs(q.f);
+    EXPECT_LE(std::abs(evaluate(q, x)), T(256) * eps_v<T> * terms);
+  }
 }
 
 // Points on the axes of symmetry: closed forms and non-uniqueness.
@@ -291,7 +344,8 @@ TYPED_TEST(PointConicTest, ConicSymmetryAxes) {
   EXPECT_TRUE(v.unique);
   const T x0 = T(6), xs = T(0.8) * x0;
   const auto w = distance(Vec2<T>{x0, T(0)}, h);
-  EXPECT_NEAR(w.distance, std::sqrt((xs - x0) * (xs - x0) + (xs * xs / T(4) - T(1))), tol<T>(32, T(8)));
+  EXPECT_NEAR(w.distance, std::sqrt((xs - x0) * (xs - x0) + (xs * xs / T(4) - T(1))),
+              tol<T>(32, T(8)));
   EXPECT_FALSE(w.unique);
   // Parabola y = x^2: on the axis above the focus-ish threshold 1/2 two points, below the vertex.
   const QuadraticCurve2<T> par{T(1), T(0), T(0), T(0), T(-1), T(0)};
@@ -334,14 +388,20 @@ TYPED_TEST(PointConicTest, ConicDegenerate) {
   // Parallel lines y^2 = 1 and crossing lines x^2 - y^2 = 0.
   EXPECT_NEAR(distance(p, QuadraticCurve2<T>{T(0), T(0), T(1), T(0), T(0), T(-1)}).distance, T(3),
               tol<T>(16, T(4)));
-  const auto xl = distance(Vec2<T>{T(3), T(1)}, QuadraticCurve2<T>{T(1), T(0), T(-1), T(0), T(0), T(0)});
+  const auto xl =
+      distance(Vec2<T>{T(3), T(1)}, QuadraticCurve2<T>{T(1), T(0), T(-1), T(0), T(0), T(0)});
   EXPECT_NEAR(xl.distance, T(2) / std::sqrt(T(2)), tol<T>(16, T(4)));
   // On the bisector of the crossing lines: two feet tie.
-  EXPECT_FALSE(distance(Vec2<T>{T(3), T(0)}, QuadraticCurve2<T>{T(1), T(0), T(-1), T(0), T(0), T(0)}).unique);
+  EXPECT_FALSE(
+      distance(Vec2<T>{T(3), T(0)}, QuadraticCurve2<T>{T(1), T(0), T(-1), T(0), T(0), T(0)})
+          .unique);
   // Bad input.
-  EXPECT_TRUE(dist::is_nan_result(distance(Vec2<T>{nan, T(0)}, QuadraticCurve2<T>{T(1), T(0), T(1), T(0), T(0), T(-1)})));
-  EXPECT_TRUE(dist::is_nan_result(distance(p, QuadraticCurve2<T>{T(1), inf, T(1), T(0), T(0), T(-1)})));
-  EXPECT_TRUE(dist::is_nan_result(distance(QuadraticCurve2<T>{T(1), T(0), nan, T(0), T(0), T(-1)}, p)));
+  EXPECT_TRUE(dist::is_nan_result(
+      distance(Vec2<T>{nan, T(0)}, QuadraticCurve2<T>{T(1), T(0), T(1), T(0), T(0), T(-1)})));
+  EXPECT_TRUE(
+      dist::is_nan_result(distance(p, QuadraticCurve2<T>{T(1), inf, T(1), T(0), T(0), T(-1)})));
+  EXPECT_TRUE(
+      dist::is_nan_result(distance(QuadraticCurve2<T>{T(1), T(0), nan, T(0), T(0), T(-1)}, p)));
 }
 
 TYPED_TEST(PointConicTest, QuadricOracle) {
@@ -351,25 +411,41 @@ TYPED_TEST(PointConicTest, QuadricOracle) {
   LD worst = 0;
   for (int n = 0; n < 35 / kCaseScale; ++n) {
     SCOPED_TRACE("case " + std::to_string(n));
-    Vec3<T> d{rng.uniform<T>(T(0.2), T(3)), rng.uniform<T>(T(0.2), T(3)), rng.uniform<T>(T(0.2), T(3))};
+    Vec3<T> d{rng.uniform<T>(T(0.2), T(3)), rng.uniform<T>(T(0.2), T(3)),
+              rng.uniform<T>(T(0.2), T(3))};
     T e = T(0), k = -rng.uniform<T>(T(0.5), T(9));
     switch (n % 7) {
-      case 0: break;                                   // ellipsoid
-      case 1: d.z = -d.z; break;                       // hyperboloid of one sheet
-      case 2: d.y = -d.y, d.z = -d.z; break;           // two sheets
-      case 3: d.z = -d.z, k = T(0); break;             // cone
-      case 4: d.z = T(0), e = T(1), k = T(0); break;   // elliptic paraboloid
-      case 5: d.y = -d.y, d.z = T(0), e = T(1), k = T(0); break;  // hyperbolic paraboloid
-      case 6: d.z = T(0); break;                       // elliptic cylinder
+      case 0:
+        break;  // ellipsoid
+      case 1:
+        d.z = -d.z;
+        break;  // hyperboloid of one sheet
+      case 2:
+        d.y = -d.y, d.z = -d.z;
+        break;  // two sheets
+      case 3:
+        d.z = -d.z, k = T(0);
+        break;  // cone
+      case 4:
+        d.z = T(0), e = T(1), k = T(0);
+        break;  // elliptic paraboloid
+      case 5:
+        d.y = -d.y, d.z = T(0), e = T(1), k = T(0);
+        break;  // hyperbolic paraboloid
+      case 6:
+        d.z = T(0);
+        break;  // elliptic cylinder
     }
     // The cone only stays a cone when its coefficients are exact (axis-aligned, dyadic).
     const bool exact = n % 7 == 3;
     if (exact)
       for (int i = 0; i < 3; ++i) d[i] = std::round(d[i] * T(8)) / T(8);
-    const Vec3<T> ctr = exact ? Vec3<T>{T(rng.uniform_int(-16, 16)) / T(8), T(rng.uniform_int(-16, 16)) / T(8),
-                                        T(rng.uniform_int(-16, 16)) / T(8)}
-                              : rng.vec<T, 3>(T(-2), T(2));
-    const auto q = quadric_from<T>(d, e, k, exact ? Mat3<T>::identity() : dist::random_rotation<T, 3>(rng), ctr);
+    const Vec3<T> ctr =
+        exact ? Vec3<T>{T(rng.uniform_int(-16, 16)) / T(8), T(rng.uniform_int(-16, 16)) / T(8),
+                        T(rng.uniform_int(-16, 16)) / T(8)}
+              : rng.vec<T, 3>(T(-2), T(2));
+    const auto q = quadric_from<T>(
+        d, e, k, exact ? Mat3<T>::identity() : dist::random_rotation<T, 3>(rng), ctr);
     const Vec3<T> p = rng.vec<T, 3>(T(-5), T(5));
     const auto r = distance(p, q);
     const LD o = oracle3(p, q);
@@ -380,7 +456,8 @@ TYPED_TEST(PointConicTest, QuadricOracle) {
     EXPECT_LE(std::abs(signed_value(q, r.closest[1])), T(1024) * eps_v<T> * T(100));
     worst = std::max(worst, std::fabs(static_cast<LD>(r.distance) - o) / (LD(eps_v<T>) * 10));
   }
-  std::printf("point-quadric: max |distance - oracle| = %.2f eps * 10\n", static_cast<double>(worst));
+  std::printf("point-quadric: max |distance - oracle| = %.2f eps * 10\n",
+              static_cast<double>(worst));
 }
 
 TYPED_TEST(PointConicTest, QuadricSymmetryAndDegenerate) {
@@ -393,10 +470,12 @@ TYPED_TEST(PointConicTest, QuadricSymmetryAndDegenerate) {
   EXPECT_FALSE(distance(Vec3<T>{}, sph).unique);
   EXPECT_NEAR(distance(Vec3<T>{T(0), T(6), T(0)}, sph).distance, T(4), tol<T>(16, T(6)));
   // The ellipsoid as a quadric agrees with the axis form.
-  const Ellipsoid3<T> el{{T(1), T(0), T(-1)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}},
+  const Ellipsoid3<T> el{{T(1), T(0), T(-1)},
+                         {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}},
                          {T(3), T(2), T(1)}};
   const Quadric3<T> qel = to_quadric(el);
-  for (const Vec3<T> p : {Vec3<T>{T(1), T(0), T(-1)}, Vec3<T>{T(5), T(1), T(2)}, Vec3<T>{T(2), T(0), T(-1)}})
+  for (const Vec3<T> p :
+       {Vec3<T>{T(1), T(0), T(-1)}, Vec3<T>{T(5), T(1), T(2)}, Vec3<T>{T(2), T(0), T(-1)}})
     EXPECT_NEAR(distance(p, qel).distance, distance(p, el).distance, tol<T>(64, T(6)));
   // Hyperboloid of one sheet x^2 + y^2 - z^2 = 1 seen from its axis: a circle of closest points
   // at z* = z0 / 2, d^2 = 1 + z*^2 + (z* - z0)^2.
@@ -408,18 +487,22 @@ TYPED_TEST(PointConicTest, QuadricSymmetryAndDegenerate) {
   // Cone x^2 + y^2 = z^2 from a point on its axis below the apex... the apex is on the axis:
   // a point on the axis at z0 > 0 is at distance z0 / sqrt(2) from the cone (a circle of points).
   const Quadric3<T> cone{Mat3<T>::diagonal({T(1), T(1), T(-1)}), {}, T(0)};
-  EXPECT_NEAR(distance(Vec3<T>{T(0), T(0), T(2)}, cone).distance, std::sqrt(T(2)), tol<T>(32, T(4)));
+  EXPECT_NEAR(distance(Vec3<T>{T(0), T(0), T(2)}, cone).distance, std::sqrt(T(2)),
+              tol<T>(32, T(4)));
   // Apex region: a point outside the double cone near the apex plane: the nearest is on a ruling.
-  EXPECT_NEAR(distance(Vec3<T>{T(2), T(0), T(0)}, cone).distance, std::sqrt(T(2)), tol<T>(32, T(4)));
+  EXPECT_NEAR(distance(Vec3<T>{T(2), T(0), T(0)}, cone).distance, std::sqrt(T(2)),
+              tol<T>(32, T(4)));
   // Paraboloid z = x^2 + y^2 from its axis.
   const Quadric3<T> pa{Mat3<T>::diagonal({T(1), T(1), T(0)}), {T(0), T(0), T(-1)}, T(0)};
-  EXPECT_NEAR(distance(Vec3<T>{T(0), T(0), T(3)}, pa).distance, std::sqrt(T(2.75)), tol<T>(32, T(4)));
+  EXPECT_NEAR(distance(Vec3<T>{T(0), T(0), T(3)}, pa).distance, std::sqrt(T(2.75)),
+              tol<T>(32, T(4)));
   EXPECT_NEAR(distance(Vec3<T>{T(0), T(0), T(-2)}, pa).distance, T(2), tol<T>(32, T(4)));
   // Degenerate types: empty, everything, plane, double plane, line, point.
   const Vec3<T> p{T(1), T(2), T(3)};
   EXPECT_EQ(distance(p, Quadric3<T>{I, {}, T(1)}).distance, std::numeric_limits<T>::infinity());
   EXPECT_EQ(distance(p, Quadric3<T>{}).distance, T(0));
-  EXPECT_NEAR(distance(p, Quadric3<T>{{}, {T(0), T(0), T(2)}, T(-2)}).distance, T(2), tol<T>(16, T(4)));
+  EXPECT_NEAR(distance(p, Quadric3<T>{{}, {T(0), T(0), T(2)}, T(-2)}).distance, T(2),
+              tol<T>(16, T(4)));
   EXPECT_NEAR(distance(p, Quadric3<T>{Mat3<T>::diagonal({T(0), T(0), T(1)}), {}, T(0)}).distance,
               T(3), tol<T>(16, T(4)));
   EXPECT_NEAR(distance(p, Quadric3<T>{Mat3<T>::diagonal({T(1), T(1), T(0)}), {}, T(0)}).distance,

@@ -12,7 +12,8 @@
 // coefficients as given):
 //   ellipse, circle      to_ellipse() (in compute_t<T>) and the robust bisection of
 //                        point_ellipse.hpp (exact on the axes and at the centre), its point
-//                        Newton-projected onto the conic; it competes with the Lagrange
+//                        Newton-projected onto the conic; if it then lies on the conic (the
+//                        Lagrange candidates' test) it competes with the Lagrange
 //                        candidates below (which stay accurate for nearly parabolic ellipses,
 //                        where the axis form's far-away centre costs digits).
 //   hyperbola, parabola, intersecting / parallel lines
@@ -69,7 +70,8 @@ template <Real T>
     const Vec2<T>& p, const QuadraticCurve2<T>& q) noexcept {
   using R = Distance<T, 2, NoParam, NoParam>;
   const ConicKind kind = classify_conic(q);
-  if (kind == ConicKind::non_finite || !is_finite(p)) return non_finite_distance<T, 2, NoParam, NoParam>();
+  if (kind == ConicKind::non_finite || !is_finite(p))
+    return non_finite_distance<T, 2, NoParam, NoParam>();
   if (kind == ConicKind::empty) return detail::empty_set_distance<T, 2, NoParam, NoParam>(p);
   if (kind == ConicKind::plane) return R{T(0), T(0), {p, p}, {}, {}, true};
   using C = compute_t<T>;
@@ -102,7 +104,13 @@ template <Real T>
       const C ext[2] = {e->extent[0], e->extent[1]};
       const detail::EllipseLocal<C> loc = detail::ellipse_closest_local(ext, y);
       extra = detail::project_onto(qc, e->center + loc.x[0] * e->axis[0] + loc.x[1] * e->axis[1]);
-      have_extra = is_finite(extra);
+      // Only a point of the curve may compete (the Lagrange candidates pass the same test): for
+      // a nearly parabolic ellipse the axis form (centre ~1e9 away) loses every digit, the point
+      // lands far off the curve, and the six Newton steps need not bring it back; unchecked it
+      // beat the true nearest point (found by a non-default test seed).
+      have_extra =
+          is_finite(extra) && std::fabs(qc.value(extra)) <=
+                                  C(256) * std::numeric_limits<C>::epsilon() * qc.value_abs(extra);
       extra_unique = loc.unique;
     }
   }
