@@ -12,8 +12,8 @@
 #include "support/typed.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -75,7 +75,8 @@ LD oracle_ellipse(const Vec2<T>& p, const Ellipse2<T>& e) {
   };
   constexpr int n = 1024;
   LD vals[n];
-  for (int i = 0; i < n; ++i) vals[i] = f(LD(6.283185307179586476925L) * LD(i) / LD(n), nullptr, nullptr);
+  for (int i = 0; i < n; ++i)
+    vals[i] = f(LD(6.283185307179586476925L) * LD(i) / LD(n), nullptr, nullptr);
   LD best = std::numeric_limits<LD>::infinity();
   for (int i = 0; i < n; ++i) {
     const LD prev = vals[(i + n - 1) % n], next = vals[(i + 1) % n];
@@ -133,7 +134,9 @@ LD oracle_ellipsoid(const Vec3<T>& p, const Ellipsoid3<T>& e) {
           xpp[c] += ex[k] * upp[k] * ax[k][c];
         }
       }
-      const auto dt = [](const LD* a, const LD* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+      const auto dt = [](const LD* a, const LD* b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      };
       if (g) {
         g[0] = 2 * dt(x, xt), g[1] = 2 * dt(x, xp);
         h[0] = 2 * (dt(xt, xt) + dt(x, xtt));
@@ -146,8 +149,10 @@ LD oracle_ellipsoid(const Vec3<T>& p, const Ellipsoid3<T>& e) {
     struct Cand {
       LD f, th, ph;
     };
-    Cand cands[4] = {{std::numeric_limits<LD>::infinity(), 0, 0}, {std::numeric_limits<LD>::infinity(), 0, 0},
-                     {std::numeric_limits<LD>::infinity(), 0, 0}, {std::numeric_limits<LD>::infinity(), 0, 0}};
+    Cand cands[4] = {{std::numeric_limits<LD>::infinity(), 0, 0},
+                     {std::numeric_limits<LD>::infinity(), 0, 0},
+                     {std::numeric_limits<LD>::infinity(), 0, 0},
+                     {std::numeric_limits<LD>::infinity(), 0, 0}};
     for (int i = 0; i < nt; ++i)
       for (int j = 1; j < np; ++j) {
         const LD th = LD(6.283185307179586476925L) * LD(i) / LD(nt);
@@ -189,10 +194,9 @@ LD oracle_ellipsoid(const Vec3<T>& p, const Ellipsoid3<T>& e) {
 
 ::testing::AssertionResult near_ld(LD got, LD want, LD abs_tol) {
   if (std::fabs(got - want) <= abs_tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "got " << static_cast<double>(got) << " want "
-                                       << static_cast<double>(want) << " diff "
-                                       << static_cast<double>(got - want) << " tol "
-                                       << static_cast<double>(abs_tol);
+  return ::testing::AssertionFailure()
+         << "got " << static_cast<double>(got) << " want " << static_cast<double>(want) << " diff "
+         << static_cast<double>(got - want) << " tol " << static_cast<double>(abs_tol);
 }
 
 }  // namespace
@@ -202,15 +206,50 @@ TYPED_TEST(PointEllipseTest, Harness) {
   const T S = 10;
   dist::Options<T> opt;
   opt.cases = 150 / kCaseScale;
+  // The harness oracle polishes only its best random sample by a compass search, which stays in
+  // that sample's basin. Near the evolute the distance along the ellipse has two local minima of
+  // almost equal depth, and with 256 samples the best one may lie in the shallower basin
+  // (LOCUS_TEST_SEED=23, case 48: oracle 1.445437, true and returned 1.444544, checked by brute
+  // force). Dense samples pick the right basin.
+  opt.samples = 4096;
   dist::check_pairs<T, 2, Vec2<T>, Ellipse2<T>>(
-      [&](Rng& rng) { return std::pair{rng.vec<T, 2>(-S, S), random_ellipse<T>(rng, S, true)}; },
+      [&](Rng& rng) {
+        return std::pair{rng.vec<T, 2>(-S, S), random_ellipse<T>(rng, S, true)};
+      },
       opt);
   opt.cases = 60 / kCaseScale;
+  // The harness oracle polishes only its best random sample by a compass search in (theta, phi),
+  // which cannot cross the rim of a flat ellipsoid: when no sample hits the (small, ~0.6% of the
+  // parameter box) patch of the near face below the far face's minimum, it settles on the far
+  // face (LOCUS_TEST_SEED=31337, case 42: oracle 1.446, true distance 0.9035, the query right;
+  // see EllipsoidFlatNearFace). The 4096 samples make that miss negligible too.
   dist::check_pairs<T, 3, Vec3<T>, Ellipsoid3<T>>(
       [&](Rng& rng) {
         return std::pair{rng.vec<T, 3>(-S, S), random_ellipsoid<T>(rng, S, true)};
       },
       opt);
+}
+
+// Regression (LOCUS_TEST_SEED=31337, Harness case 42): a flat ellipsoid (extents 0.333, 5.50,
+// 7.61) seen from beyond its thin axis; the answer is on the near face at 0.903498 (the harness
+// oracle had settled on the far face, 1.446). Checked against the long double oracle and the
+// residual's normality.
+TYPED_TEST(PointEllipseTest, EllipsoidFlatNearFace) {
+  using T = TypeParam;
+  const Vec3<T> p{T(-2.3888892181129195), T(-5.4755137925911246), T(8.2997644240899433)};
+  const Ellipsoid3<T> e{
+      {T(-4.2024517759124329), T(-4.431592185744929), T(5.3699672946993502)},
+      {Vec3<T>{T(0.57227669663269964), T(-0.14483280655781552), T(-0.80716964798965984)},
+       Vec3<T>{T(-0.43585113884676385), T(0.78003335403922458), T(-0.44897856446861306)},
+       Vec3<T>{T(0.694646073376323), T(0.60874578005182411), T(0.38326936743229556)}},
+      {T(0.33300138601518925), T(5.4956613728500141), T(7.6057906224672012)}};
+  const auto r = distance(p, e);
+  EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), oracle_ellipsoid(p, e),
+                      static_cast<LD>(tol<T>(16, T(10)))));
+  EXPECT_NEAR(r.distance, T(0.903498), T(1e-5));
+  EXPECT_TRUE(r.unique);
+  // Near face: the closest point lies on p's side of the thin axis.
+  EXPECT_GT(dot(r.closest[1] - e.center, e.axis[0]) * dot(p - e.center, e.axis[0]), T(0));
 }
 
 // Random points (half of them near the evolute's region inside), random and thin ellipses:
@@ -233,9 +272,11 @@ TYPED_TEST(PointEllipseTest, LongDoubleOracle2D) {
     const T scale = std::max({T(1), s, max_abs(p), max_abs(e.center)});
     EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), o, static_cast<LD>(tol<T>(16, scale))));
     EXPECT_TRUE(locus_test::vec_near(point_at(e, r.param_b), r.closest[1], tol<T>(32, scale)));
-    worst = std::max(worst, std::fabs(static_cast<LD>(r.distance) - o) / (LD(eps_v<T>) * LD(scale)));
+    worst =
+        std::max(worst, std::fabs(static_cast<LD>(r.distance) - o) / (LD(eps_v<T>) * LD(scale)));
   }
-  std::printf("point-ellipse: max |distance - oracle| = %.2f eps * scale\n", static_cast<double>(worst));
+  std::printf("point-ellipse: max |distance - oracle| = %.2f eps * scale\n",
+              static_cast<double>(worst));
 }
 
 TYPED_TEST(PointEllipseTest, LongDoubleOracle3D) {
@@ -255,9 +296,11 @@ TYPED_TEST(PointEllipseTest, LongDoubleOracle3D) {
     const T scale = std::max({T(1), s, max_abs(p), max_abs(e.center)});
     EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), o, static_cast<LD>(tol<T>(16, scale))));
     EXPECT_TRUE(locus_test::vec_near(point_at(e, r.param_b), r.closest[1], tol<T>(32, scale)));
-    worst = std::max(worst, std::fabs(static_cast<LD>(r.distance) - o) / (LD(eps_v<T>) * LD(scale)));
+    worst =
+        std::max(worst, std::fabs(static_cast<LD>(r.distance) - o) / (LD(eps_v<T>) * LD(scale)));
   }
-  std::printf("point-ellipsoid: max |distance - oracle| = %.2f eps * scale\n", static_cast<double>(worst));
+  std::printf("point-ellipsoid: max |distance - oracle| = %.2f eps * scale\n",
+              static_cast<double>(worst));
 }
 
 // Figure 6.14: the closest point X of the ellipse to P satisfies P - X parallel to the normal
@@ -300,12 +343,14 @@ TYPED_TEST(PointEllipseTest, Figure6_14AndAxes) {
   EXPECT_TRUE(above.unique);
   // A hair off the major axis (the classic failure: x1 = y1 / (s + 1) with s + 1 rounded): the
   // same distance as on the axis, for offsets down to the smallest normal numbers.
-  for (const T off : {T(1e-3) * eps_v<T>, eps_v<T>, std::numeric_limits<T>::min() * T(16), T(1e-30)}) {
+  for (const T off :
+       {T(1e-3) * eps_v<T>, eps_v<T>, std::numeric_limits<T>::min() * T(16), T(1e-30)}) {
     const auto hair = distance(e.center + Vec2<T>{T(1.5), off}, e);
     EXPECT_NEAR(hair.distance, on.distance, tol<T>(16, T(8))) << off;
-    const auto hair3 = distance(Vec3<T>{T(1), off, off},
-                                Ellipsoid3<T>{{}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}},
-                                              {T(4), T(3), T(2)}});
+    const auto hair3 = distance(
+        Vec3<T>{T(1), off, off},
+        Ellipsoid3<T>{
+            {}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}, {T(4), T(3), T(2)}});
     const T x0 = T(16) / T(12);  // a^2 y0 / (a^2 - c^2), y0 = 1
     EXPECT_NEAR(hair3.distance, std::sqrt(sqr(x0 - T(1)) + T(4) * (T(1) - sqr(x0 / T(4)))),
                 tol<T>(16, T(8)))
@@ -334,8 +379,8 @@ TYPED_TEST(PointEllipseTest, CirclesAndCentres) {
   EXPECT_TRUE(gen.unique);
   EXPECT_NEAR(gen.param_b, std::atan2(T(4), T(3)), tol<T>(16));
   // Ellipsoid centre, spheroid axis, sphere centre.
-  const Ellipsoid3<T> el{{}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}},
-                         {T(4), T(3), T(2)}};
+  const Ellipsoid3<T> el{
+      {}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}, {T(4), T(3), T(2)}};
   const auto ec = distance(Vec3<T>{}, el);
   EXPECT_EQ(ec.distance, T(2));
   EXPECT_FALSE(ec.unique);
@@ -361,7 +406,7 @@ TYPED_TEST(PointEllipseTest, CirclesAndCentres) {
     if (n % 5 == 0) p[(n + 1) % 3] = T(0);
     const auto r = distance(p, el);
     EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), oracle_ellipsoid(p, el),
-                static_cast<LD>(tol<T>(16, T(8)))));
+                        static_cast<LD>(tol<T>(16, T(8)))));
   }
   // Prolate spheroid: a point on its axis inside has a ring of closest points.
   const Ellipsoid3<T> pr{{}, {el.axis[0], el.axis[1], el.axis[2]}, {T(4), T(2), T(2)}};
@@ -379,10 +424,11 @@ TYPED_TEST(PointEllipseTest, NearDegenerateAndDegenerate) {
   for (const T ratio : {T(1e-6), std::is_same_v<T, double> ? T(1e-9) : T(1e-7)}) {
     const Ellipse2<T> e{{}, {{T(1), T(0)}, {T(0), T(1)}}, {T(3), T(3) * ratio}};
     for (int n = 0; n < 50; ++n) {
-      const Vec2<T> p = n % 2 ? rng.vec<T, 2>(T(-4), T(4))
-                              : Vec2<T>{rng.uniform<T>(T(-3), T(3)), rng.uniform<T>(-T(1e-5), T(1e-5))};
+      const Vec2<T> p =
+          n % 2 ? rng.vec<T, 2>(T(-4), T(4))
+                : Vec2<T>{rng.uniform<T>(T(-3), T(3)), rng.uniform<T>(-T(1e-5), T(1e-5))};
       EXPECT_TRUE(near_ld(static_cast<LD>(distance(p, e).distance), oracle_ellipse(p, e),
-                  static_cast<LD>(tol<T>(16, T(4)))));
+                          static_cast<LD>(tol<T>(16, T(4)))));
     }
   }
   // Zero extents: the segment [-e0, e0], then the point.
@@ -398,17 +444,19 @@ TYPED_TEST(PointEllipseTest, NearDegenerateAndDegenerate) {
   const Ellipse2<T> dot{{T(1), T(1)}, {{T(1), T(0)}, {T(0), T(1)}}, {T(0), T(0)}};
   EXPECT_EQ(distance(Vec2<T>{T(4), T(5)}, dot).distance, T(5));
   // Flat ellipsoid: the filled ellipse; segment; point.
-  const Ellipsoid3<T> disk{{}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}},
-                           {T(4), T(2), T(0)}};
+  const Ellipsoid3<T> disk{
+      {}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}, {T(4), T(2), T(0)}};
   const auto above = distance(Vec3<T>{T(1), T(1), T(3)}, disk);
   EXPECT_NEAR(above.distance, T(3), tol<T>(8, T(4)));
-  EXPECT_TRUE(locus_test::vec_near(point_at(disk, above.param_b), above.closest[1], tol<T>(16, T(4))));
+  EXPECT_TRUE(
+      locus_test::vec_near(point_at(disk, above.param_b), above.closest[1], tol<T>(16, T(4))));
   EXPECT_NEAR(distance(Vec3<T>{T(7), T(0), T(4)}, disk).distance, T(5), tol<T>(8, T(8)));
   const Ellipsoid3<T> stick{{}, {disk.axis[0], disk.axis[1], disk.axis[2]}, {T(0), T(3), T(0)}};
   const auto st = distance(Vec3<T>{T(4), T(5), T(0)}, stick);
   EXPECT_NEAR(st.distance, std::sqrt(T(20)), tol<T>(8, T(8)));
   EXPECT_TRUE(locus_test::vec_near(point_at(stick, st.param_b), st.closest[1], tol<T>(16, T(4))));
-  const Ellipsoid3<T> pt{{T(1), T(1), T(1)}, {disk.axis[0], disk.axis[1], disk.axis[2]}, {T(0), T(0), T(0)}};
+  const Ellipsoid3<T> pt{
+      {T(1), T(1), T(1)}, {disk.axis[0], disk.axis[1], disk.axis[2]}, {T(0), T(0), T(0)}};
   EXPECT_NEAR(distance(Vec3<T>{T(1), T(4), T(5)}, pt).distance, T(5), tol<T>(8, T(8)));
 }
 
@@ -427,8 +475,8 @@ TYPED_TEST(PointEllipseTest, BadInput) {
   bad = e;
   bad.extent[0] = inf;
   EXPECT_TRUE(dist::is_nan_result(distance(Vec2<T>{}, bad)));
-  const Ellipsoid3<T> el{{}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}},
-                         {T(4), T(2), T(1)}};
+  const Ellipsoid3<T> el{
+      {}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}, {T(4), T(2), T(1)}};
   EXPECT_TRUE(dist::is_nan_result(distance(Vec3<T>{T(0), nan, T(0)}, el)));
   Ellipsoid3<T> bel = el;
   bel.extent.z = T(-2);
