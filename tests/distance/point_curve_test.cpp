@@ -177,8 +177,11 @@ std::pair<LD, LD> ld_domain(const Curve& c) {
 template <class T, int N, class Curve>
 LD oracle_curve(const Vec<T, N>& p, const Curve& c) {
   const auto [a, b] = ld_domain(c);
+  // Clamped: a + (b - a) * n / n (and a bracket's end) can round one ulp beyond b, where no
+  // basis function is 1 and ld_point returned the origin (seed 11: |p| = 10.58 taken for the
+  // distance 11.95 to the end of the curve).
   const auto f = [&](LD t) {
-    const VL<N> x = ld_point(c, t);
+    const VL<N> x = ld_point(c, std::clamp(t, a, b));
     LD s = 0;
     for (int k = 0; k < N; ++k)
       s += (x[static_cast<std::size_t>(k)] - p[k]) * (x[static_cast<std::size_t>(k)] - p[k]);
@@ -444,4 +447,26 @@ TEST(PointCurveRegression, OracleMinimumNearAnEnd) {
       {0, 0, 0, 0, 0, 0x1.29062b8d1bbfp-1, 0x1.948315c68ddf8p+0, 0x1.948315c68ddf8p+0,
        0x1.948315c68ddf8p+0, 0x1.948315c68ddf8p+0, 0x1.948315c68ddf8p+0}};
   check_minimum_near_end<2>(Vec2<T>{-0x1.3c3fb92e048a7p+2, 0x1.8bda3998a5894p+2}, n, T(0));
+}
+
+// Seed 11, point-bspline2 case 11: a degree-1 unclamped B-spline (the polyline of its control
+// points). The oracle's last sample a + (b - a) * n / n rounded beyond the domain end, where its
+// Cox-de Boor evaluation gives the origin: it reported |p| = 10.58 instead of the polyline
+// distance 11.949482602537637 (segment P2 P3 at its end P3, by hand) that the library returns.
+TEST(PointCurveRegression, OracleSampleBeyondTheDomainEnd) {
+  using T = double;
+  const BSplineCurve<T, 2> c{
+      1,
+      {{0x1.302cf48259c04p+2, 0x1.4d673bf9a6ep-4},
+       {0x1.957c307f8404p+2, 0x1.4a276d1a5441p+0},
+       {0x1.0ee658e913dap+3, 0x1.0f86fa0f553p+2},
+       {0x1.701df862885bp+0, -0x1.338511405b63p-1},
+       {0x1.41ef3e69a4b32p+2, -0x1.c7b91778ff334p+2},
+       {-0x1.8085e6ff1e32cp+1, -0x1.45c7a9836f687p+2}},
+      {0x1.a84751c14ced2p-2, 0x1.7e92ba962cae3p-1, 0x1.0546601f3b002p+1, 0x1.53e7bc7567948p+1,
+       0x1.d3af8973d0352p+1, 0x1.3267d5f12aee4p+2, 0x1.9132e5665970ap+2, 0x1.c9213a37edec7p+2}};
+  const Vec2<T> p{-0x1.956f598c32a0fp+2, 0x1.0f35b2485d058p+3};
+  const auto r = distance(p, c);
+  EXPECT_NEAR(r.distance, length(c.control[3] - p), tol<T>(16, T(16)));
+  EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), oracle_curve<T, 2>(p, c), tol<T>(32, T(16))));
 }
