@@ -295,7 +295,8 @@ std::array<LD, 4> ld_domain(const S& s) {
 
 /// The oracle: the global minimum of |S(u, v) - p| over a kGrid^2 grid of the domain, refined by
 /// a compass search (8 directions, the step doubled after a success and halved after a failed
-/// sweep, down to 1e-18 of the domain) from the 8 best grid local minima, all in long double.
+/// sweep, down to 1e-18 of the domain) from the 8 best grid local minima (and their ties), all in
+/// long double.
 template <class T, class S>
 LD oracle_surface(const Vec3<T>& p, const S& s) {
   constexpr bool tri = std::is_same_v<S, BezierTriangle<T, 3>>;
@@ -354,7 +355,12 @@ LD oracle_surface(const Vec3<T>& p, const S& s) {
   std::sort(minima.begin(), minima.end());
   LD best = minima.empty() ? std::numeric_limits<LD>::infinity() : minima[0].first;
   const LD dirs[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
-  for (std::size_t m = 0; m < std::min<std::size_t>(minima.size(), 8); ++m) {
+  // The 8 best grid minima, and every one tying with the 8th (to rounding: the evaluation of the
+  // same point differs by ulps along the line): a collapsed edge is a whole grid line of equal
+  // values, which took all 8 slots (seed 5: 8 starts near v = 0 on the collapsed edge u = 0, each
+  // a dead end, while the minimum 1.0484730 lay at (0.0017, 0.717); the oracle said 1.0495214).
+  const LD tie = minima.size() > 8 ? minima[7].first * (1 + 1e-12L) : LD(0);
+  for (std::size_t m = 0; m < minima.size() && (m < 8 || minima[m].first <= tie); ++m) {
     auto [u, v] = uv(minima[m].second.first, minima[m].second.second);
     LD fv = minima[m].first;
     const LD hu0 = (b - a) / n, hv0 = (d - c) / n;
@@ -782,6 +788,39 @@ TEST(PointSurfaceRegression, OracleNarrowValleySeed99999) {
   EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), oracle_surface<T>(p, s), tol<T>(64, scale)));
   EXPECT_LT(r.distance, 0.16966);  // below the old oracle's 0.1696699
   // The distance is realised at the returned parameter (independent long double evaluation).
+  const VL x = ld_point(s, static_cast<LD>(r.param_b.x), static_cast<LD>(r.param_b.y));
+  const VL pl = to_ld(p);
+  LD d2 = 0;
+  for (std::size_t k = 0; k < 3; ++k) d2 += (x[k] - pl[k]) * (x[k] - pl[k]);
+  EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), std::sqrt(d2), tol<T>(16, scale)));
+}
+
+// Seed 5, Degenerate case 11: a bicubic-by-quadratic patch whose u = 0 edge collapses to a point.
+// The grid line u = 0 is a row of (to rounding) equal values that took all 8 of the oracle's
+// starts, each a dead end near v = 0, while the minimum 1.0484730076755702 lies at
+// (0.0017, 0.717); the old oracle said 1.0495214228116383. The library's distance is realised at
+// its parameter (independent long double evaluation) and the fixed oracle agrees.
+TEST(PointSurfaceRegression, OracleCollapsedEdgeSeed5) {
+  using T = double;
+  const BezierPatch<T, 3> s{4,
+                            3,
+                            {{-0x1.4bb2b4d8c4716p+1, -0x1.3bc9fe4073b6dp+2, -0x1.1a60ece52f7dp+0},
+                             {-0x1.4bb2b4d8c4716p+1, -0x1.3bc9fe4073b6dp+2, -0x1.1a60ece52f7dp+0},
+                             {-0x1.4bb2b4d8c4716p+1, -0x1.3bc9fe4073b6dp+2, -0x1.1a60ece52f7dp+0},
+                             {0x1.1b3a0d526e2c2p+3, -0x1.3dae73afdf40fp+3, 0x1.31e2da6e11d3p+3},
+                             {0x1.3c79e525384p+2, 0x1.c65204a12cd5p+1, 0x1.0b6097f91d86p+1},
+                             {0x1.1225ec7276c7cp+1, 0x1.617af9b07ebcp+1, -0x1.9d71e16b08be2p+1},
+                             {0x1.14d01005b351p+1, -0x1.e1b10da9d330ap+2, 0x1.022b3542c4978p+2},
+                             {-0x1.797958b40b241p+2, 0x1.6d393d8a72064p+1, -0x1.c42a85735aee8p+0},
+                             {-0x1.0624977019c5ep+2, -0x1.6edd98c6d148cp+2, 0x1.4a0053542448p+2},
+                             {-0x1.38f45f1c5f37bp+3, -0x1.8a35df5499208p+0, 0x1.674ec6c10fdp-2},
+                             {-0x1.be40930f1b6cap+2, -0x1.f23d7854b45bp+0, -0x1.ce6d7949bb54ep+1},
+                             {-0x1.685375deffe05p+2, -0x1.e062cb9cb564cp+1, -0x1.703335880942p+0}}};
+  const Vec3<T> p{-0x1.9ca45ceb0e10ep+1, -0x1.18d7809e0db9p+2, -0x1.df1cb973bc84ep-2};
+  const auto r = distance(p, s);
+  const T scale = surface_scale(p, s);
+  EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), oracle_surface<T>(p, s), tol<T>(64, scale)));
+  EXPECT_LT(r.distance, 1.049);  // below the old oracle's 1.0495214
   const VL x = ld_point(s, static_cast<LD>(r.param_b.x), static_cast<LD>(r.param_b.y));
   const VL pl = to_ld(p);
   LD d2 = 0;
