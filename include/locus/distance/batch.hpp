@@ -28,9 +28,10 @@
 // bit. On x86-64 the library carries an x86-64-v4 (AVX-512), an AVX2 and a baseline version and
 // picks the best one the processor runs at each call (detail::set_batch_isa caps it, for tests
 // and benchmarks; build locus with -DLOCUS_NO_MULTIVERSION to compile the kernels once, for the
-// compiler's own target). Every version gives the same bits. Throughput (bench/distance/distance_bench.cpp, M queries per second, double, one
-// run): point-triangle 89 (per query 28; CGAL 58), segment-segment 113 (26; CGAL 70),
-// segment-triangle 16 (5.6; CGAL 5.7), point-AABB 357 (208).
+// compiler's own target). Every version gives the same bits. Throughput
+// (bench/distance/distance_bench.cpp, M queries per second, double, x86-64-v4 version, one run):
+// point-triangle 94 (per query 23; CGAL 50), segment-segment 109 (23; CGAL 57),
+// segment-triangle 18 (5.5; CGAL 7.6), point-AABB 431 (154; textbook loop 250).
 // No allocation; noexcept.
 
 #include <locus/core/vec.hpp>

@@ -108,9 +108,7 @@ template <Real T>
       // a nearly parabolic ellipse the axis form (centre ~1e9 away) loses every digit, the point
       // lands far off the curve, and the six Newton steps need not bring it back; unchecked it
       // beat the true nearest point (found by a non-default test seed).
-      have_extra =
-          is_finite(extra) && std::fabs(qc.value(extra)) <=
-                                  C(256) * std::numeric_limits<C>::epsilon() * qc.value_abs(extra);
+      have_extra = qc.contains(extra);
       extra_unique = loc.unique;
     }
   }

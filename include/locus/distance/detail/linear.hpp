@@ -108,9 +108,7 @@ template <class T, int N>
   const Vec<T, N> u = l.dir / m;
   const Vec<T, N> w = p - l.origin;
   const Vec<T, N> ws = w / m;
-  bool ws_finite = true;
-  for (int i = 0; i < N; ++i) ws_finite = ws_finite && is_finite(ws[i]);
-  const T t = ws_finite ? dot(ws, u) / sqr_length(u) : dot(w, u) / (sqr_length(u) * m);
+  const T t = is_finite(ws) ? dot(ws, u) / sqr_length(u) : dot(w, u) / (sqr_length(u) * m);
   const T c = l.clamp_param(t);
   return is_finite(c) ? c : T(0);
 }
@@ -323,7 +321,7 @@ template <class T, int N>
   const T a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
   const T D = sqr_cross_norm(da, db), ac = a * c;
   const T sn = b * e - c * d, tn = a * e - b * d;  // D * (s, t) of the unconstrained minimiser
-  const bool sl = sn<T(0), sh = sn> D, tl = tn<T(0), th = tn> D;
+  const bool sl = (sn < T(0)), sh = (sn > D), tl = (tn < T(0)), th = (tn > D);
   const bool s_out = sl | sh, t_out = tl | th;
   constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
   // da, db are finite when a, c are; then d, e are finite exactly when r (x.p0, y.p0) is.

@@ -69,6 +69,11 @@ struct QuadricN {
     }
     return s;
   }
+  /// x lies on the quadric to rounding: |value| <= 256 eps * value_abs (and x is finite).
+  [[nodiscard]] bool contains(const Vec<C, N>& x) const noexcept {
+    return is_finite(x) &&
+           std::fabs(value(x)) <= C(256) * std::numeric_limits<C>::epsilon() * value_abs(x);
+  }
 };
 
 /// The point p + sum_i y_i axis_i with y_i = -beta_i / (2 l_i) for the `rank` largest |l_i|
@@ -150,13 +155,9 @@ template <class C, int N>
   };
   // Only points of the surface (to rounding) are candidates: a stationary point off the surface
   // (the centre of a hyperboloid) is not.
-  const C on_tol = C(256) * std::numeric_limits<C>::epsilon();
-  const auto on_surface = [&](const Vec<C, N>& x) {
-    return is_finite(x) && std::fabs(q.value(x)) <= on_tol * q.value_abs(x);
-  };
   const auto offer = [&](const C* y) {
     Vec<C, N> x = project_onto(q, at(y));
-    if (!on_surface(x)) return;
+    if (!q.contains(x)) return;
     // Polish: tangent steps towards p, each re-projected, kept only while they get closer. A
     // candidate computed from an ill-conditioned root (nearly degenerate quadrics, clusters)
     // slides into its local minimum.
@@ -171,7 +172,7 @@ template <class C, int N>
       for (int h = 0; h < 12 && !improved; ++h, step = C(0.5) * step) {
         const Vec<C, N> nx = project_onto(q, x + step);
         const C nd2 = sqr_length(nx - p);
-        if (on_surface(nx) && nd2 < d2) {
+        if (q.contains(nx) && nd2 < d2) {
           x = nx;
           d2 = nd2;
           improved = true;
