@@ -748,6 +748,17 @@ TYPED_TEST(PointSurfaceTest, BadInput) {
   EXPECT_TRUE(dist::is_nan_result(distance(nu, Vec3<T>{})));
 }
 
+/// The distance is realised at the returned parameter: the surface point there, evaluated
+/// independently in long double, lies at the reported distance from p.
+template <class T, class S, class R>
+void expect_realised_at_param(const Vec3<T>& p, const S& s, const R& r, T scale) {
+  const VL x = ld_point(s, static_cast<LD>(r.param_b.x), static_cast<LD>(r.param_b.y));
+  const VL pl = to_ld(p);
+  LD d2 = 0;
+  for (std::size_t k = 0; k < 3; ++k) d2 += (x[k] - pl[k]) * (x[k] - pl[k]);
+  EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), std::sqrt(d2), tol<T>(16, scale)));
+}
+
 // Seed 99999, point-nurbs surface case 13: the minimum lies in a narrow valley oblique to the
 // oracle's compass directions. The old oracle (halving steps only, 4000 iterations) stopped at
 // 0.1696699000863587, 2.3e-5 above the library's 0.16964671067200143, which the independent long
@@ -787,12 +798,7 @@ TEST(PointSurfaceRegression, OracleNarrowValleySeed99999) {
   const T scale = surface_scale(p, s);
   EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), oracle_surface<T>(p, s), tol<T>(64, scale)));
   EXPECT_LT(r.distance, 0.16966);  // below the old oracle's 0.1696699
-  // The distance is realised at the returned parameter (independent long double evaluation).
-  const VL x = ld_point(s, static_cast<LD>(r.param_b.x), static_cast<LD>(r.param_b.y));
-  const VL pl = to_ld(p);
-  LD d2 = 0;
-  for (std::size_t k = 0; k < 3; ++k) d2 += (x[k] - pl[k]) * (x[k] - pl[k]);
-  EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), std::sqrt(d2), tol<T>(16, scale)));
+  expect_realised_at_param(p, s, r, scale);
 }
 
 // Seed 5, Degenerate case 11: a bicubic-by-quadratic patch whose u = 0 edge collapses to a point.
@@ -821,9 +827,5 @@ TEST(PointSurfaceRegression, OracleCollapsedEdgeSeed5) {
   const T scale = surface_scale(p, s);
   EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), oracle_surface<T>(p, s), tol<T>(64, scale)));
   EXPECT_LT(r.distance, 1.049);  // below the old oracle's 1.0495214
-  const VL x = ld_point(s, static_cast<LD>(r.param_b.x), static_cast<LD>(r.param_b.y));
-  const VL pl = to_ld(p);
-  LD d2 = 0;
-  for (std::size_t k = 0; k < 3; ++k) d2 += (x[k] - pl[k]) * (x[k] - pl[k]);
-  EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), std::sqrt(d2), tol<T>(16, scale)));
+  expect_realised_at_param(p, s, r, scale);
 }
