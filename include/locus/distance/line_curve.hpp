@@ -32,7 +32,10 @@
 // by numeric/roots.hpp's engine (tangencies are double roots and are not lost). The error of a
 // root enters the squared distance only to second order (first order at distance 0, where the
 // roots of p~ are simple). Everything runs in compute_t<T> (double for float); the returned points
-// are point_at of the returned parameters, in T.
+// are point_at of the returned parameters, in T: param_b is the winning curve parameter rounded to
+// T and param_a the clamped projection of point_at(curve, param_b) onto the linear component (so in
+// float the distance is that of the best representable curve parameter, which on a very short knot
+// span can sit measurably off a crossing).
 //
 // unique = false when infinitely many closest pairs exist: the distance is constant along a piece
 // of the curve inside the linear component's reach (a straight span parallel to the line, a span
@@ -246,9 +249,15 @@ template <class T, int N, class Lin, class Curve>
   });
   if (!tr.found) return non_finite_distance<T, N, T, T>();
 
-  const T t = vt.clamp_param(static_cast<T>(tr.best.pa));
+  // The curve parameter is rounded to T first and the linear parameter is the projection of the
+  // curve point it gives: rounding s moves the point by up to |C'(s)| ulp(s) / 2 (long in float on
+  // a short knot span: 2e-3 per ulp for a 10.7-long degree-1 edge over a 3e-4 span), and keeping
+  // the linear parameter of the unrounded point would pair it with a point that is no longer
+  // opposite (a crossing: 9.7e-4 apart instead of 8.9e-4 at the best float s).
   const T s = static_cast<T>(tr.best.pb);
-  const Vec<T, N> xa = point_at(lin, t), xb = point_at(c, s);
+  const Vec<T, N> xb = point_at(c, s);
+  const T t = vt.clamp_param(static_cast<T>(closest_param(v, vec_cast<C>(xb))));
+  const Vec<T, N> xa = point_at(lin, t);
   bool unique = true;
   const C scale = std::max(static_cast<C>(max_abs(xa)), static_cast<C>(max_abs(xb))) + box;
   const C tol = C(64) * static_cast<C>(eps_v<T>) * scale;
