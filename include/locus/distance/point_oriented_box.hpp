@@ -5,21 +5,28 @@
 // 10.4.2 (figures 10.21, 10.22).
 //
 // distance(p, box) returns Distance<T, N, NoParam, Vec<T, N>>: param_b = s in [-1, 1]^N, the
-// box's symmetric coordinates (oriented_box.hpp), closest[1] = point_at(box, s) =
-// center + sum s[i] extent[i] axis[i]. distance(box, p) is the swapped result. The box is solid.
+// box's symmetric coordinates (oriented_box.hpp), closest[1] ~ point_at(box, s) =
+// center + sum s[i] extent[i] axis[i] (see below). distance(box, p) is the swapped result. The
+// box is solid.
 //
 // Method: in the box's frame the query is the aligned one: x[i] = (p - center) . axis[i] is
 // clamped to [-extent[i], extent[i]]; s[i] = clamped / extent[i]. The squared distance is the sum
 // of the squared excesses x[i] - clamped[i], measured in the frame: a point inside has distance
 // exactly 0 and is its own closest point, and the error is a few ulps of |p - center| (not of
-// |center|). closest[1] = p - sum excess[i] axis[i] maps the excess back, so |closest[0] -
-// closest[1]| = distance to a few ulps of the distance itself; it equals point_at(box, s) up to
-// the rounding of either (a few eps * (|center| + |extent|)).
+// |center|). closest[1] = p - v maps the excess back: v = sum excess[i] axis[i], scaled to the
+// length distance. The scaling matters because stored axes are orthonormal only to rounding:
+// with Gram matrix I + G (|G| a few eps for a rounded rotation, tens of eps after a careless
+// Gram-Schmidt), |sum excess[i] axis[i]| = (1 + O(|G|)) distance, whereas the scaled v keeps
+// |closest[0] - closest[1]| = distance to a few ulps of the distance itself. closest[1] equals
+// point_at(box, s) up to the rounding of either (a few eps * (|center| + |extent|)) plus
+// O(|G| |p - center|), and the reported distance is the true distance to the parallelepiped
+// spanned by the rounded axes up to O(|G| |p - center|).
 //
-// Preconditions and degenerate input: the axes are unit and mutually orthogonal (the box's
-// contract, not checked). A zero extent flattens the box along that axis (s[i] = 0); a negative
-// extent is treated as 0. NaN or infinite values give non_finite_distance() (result.hpp).
-// unique is always true. Cost: O(N^2), no branch on the data.
+// Preconditions and degenerate input: the axes are unit and mutually orthogonal up to rounding
+// (the box's contract, not checked; see above for what the rounding costs). A zero extent
+// flattens the box along that axis (s[i] = 0); a negative extent is treated as 0. NaN or
+// infinite values give non_finite_distance() (result.hpp). unique is always true. Cost: O(N^2),
+// no branch on the data; distance() takes two square roots and N + 1 divisions.
 //
 // sqr_distance(p, box) (either order) returns distance(p, box).sqr_distance, bit for bit, without
 // the closest point, the parameters or the square root: N dot products, N min/max pairs, no
@@ -75,12 +82,18 @@ template <Real T, int N>
   for (int i = 0; i < N; ++i) fz += finite_zero(box.axis[i]);
   if (!(fz == T(0))) return non_finite_distance<T, N, NoParam, Vec<T, N>>();
   const detail::PointOrientedBoxCore<T, N> r = detail::point_oriented_box(p, box);
-  Vec<T, N> s{}, c = p;
+  Vec<T, N> s{}, v{};
   for (int i = 0; i < N; ++i) {
     s[i] = detail::select(r.extent[i] > T(0), r.clamped[i] / r.extent[i], T(0));
-    c -= r.excess[i] * box.axis[i];
+    v += r.excess[i] * box.axis[i];
   }
-  return {length(r.excess), r.sqr, {p, c}, NoParam{}, s, true};
+  // |v| = |excess| only for exactly orthonormal axes; rounded ones (Gram matrix I + G, |G| a few
+  // to tens of eps) make them differ by ~|G| |excess|. Scaling v to the measured length keeps
+  // |closest[0] - closest[1]| = distance to a few ulps; the point moves by the same ~|G| |excess|
+  // that already separates p - v from point_at(box, s).
+  const T dist = length(r.excess), lv = length(v);
+  const Vec<T, N> c = p - detail::select(lv > T(0), dist / lv, T(1)) * v;
+  return {dist, r.sqr, {p, c}, NoParam{}, s, true};
 }
 
 /// The swapped query: closest[0] and param_a belong to the box.
