@@ -170,9 +170,10 @@ template <class T, int N>
     // Well-shaped (16 |e0 x e1|^2 >= |e0|^2 |e1|^2: Cramer's rule is accurate to a few ulps),
     // no squares out of range, and finite input: e0, e1, e2 are finite when a, c, f are, and
     // then d, e, g are finite exactly when p is (a NaN or an infinity in w0 reaches every
-    // product).
+    // product). [[likely]]: GCC predicts a floating-point == to be false, took this path for
+    // cold and left its callees out of line.
     if (T(16) * det >= ac && a >= lo && c >= lo && f >= lo && ac <= hi && f <= hi &&
-        (d - d) + (e - e) + (g - g) == T(0)) {
+        (d - d) + (e - e) + (g - g) == T(0)) [[likely]] {
       const T sn = c * d - b * e, tn = a * e - b * d;  // det * (s, t) of the plane solution
       Vec3<T> rb;  // barycentric in (o, x, y)
       if (sn >= T(0) && tn >= T(0) && sn + tn <= det) {

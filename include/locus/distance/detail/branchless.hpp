@@ -5,26 +5,22 @@
 //
 // Why: which region of a query's parameter domain holds the answer (inside a triangle, beyond an
 // edge, near a vertex) is unpredictable on mixed input, and a mispredicted branch costs about as
-// much as a whole point-triangle query. Compilers turn `c ? x : y` on floating-point values
-// into branches whenever the arms are more than a move, so the fast paths compute every arm
-// they may need (a few multiplies) and pick with select(), which is a bitwise blend the
-// optimiser keeps as such, or with single-comparison conditionals `a < b ? x : y` on values
-// already computed, which compile to blends (compare, and, and-not, or) as well.
+// much as a whole point-triangle query. So the fast paths compute every arm they may need (a few
+// multiplies) and pick with select() or with single-comparison conditionals `a < b ? x : y` on
+// values already computed, which compilers emit as compare-and-blend (or min/max) instructions.
+// select() is the plain conditional: an earlier version forced a bitwise blend through integer
+// registers, and moving each value to a general-purpose register and back cost more than it
+// saved (per-query point-triangle, segment-segment and point-box queries ran 1.2x-2.2x slower
+// with it, bench/distance/distance_bench.cpp, GCC 12 -O3).
 
 #include <locus/core/scalar.hpp>
 
-#include <bit>
-#include <cstdint>
-#include <type_traits>
-
 namespace locus::detail {
 
-/// c ? x : y, computed as a bitwise blend (no branch).
+/// c ? x : y (see above for why this is not a hand-made bitwise blend).
 template <Real T>
 [[nodiscard]] constexpr T select(bool c, T x, T y) noexcept {
-  using U = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
-  const U m = U(0) - static_cast<U>(c);
-  return std::bit_cast<T>(static_cast<U>((std::bit_cast<U>(x) & m) | (std::bit_cast<U>(y) & ~m)));
+  return c ? x : y;
 }
 
 /// clamp(x, lo, hi) for lo <= hi, written as the two IEEE max/min idioms that compile to one
