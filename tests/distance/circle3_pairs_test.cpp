@@ -193,6 +193,26 @@ TYPED_TEST(Circle3PairsTest, LinearAgainstBruteForce) {
   }
 }
 
+// LOCUS_TEST_SEED=24, LinearAgainstBruteForce case 52: a line in the circle's plane crossing it.
+// The crossings were only the quartic's roots, whose squared coefficients left 1.1e-10 in double
+// instead of ~0; they are now also the roots of the quadratic g(t) = r^2.
+TYPED_TEST(Circle3PairsTest, InPlaneCrossing) {
+  using T = TypeParam;
+  const Circle3<T> c{{T(-0x1.0adfbd0da34d4p+1), T(-0x1.229411f29da8cp+1), T(-0x1.3273fe90397edp+2)},
+                     {T(-0x1.5d3020ece2632p-1), T(0x1.326c9697602d3p-1), T(-0x1.1c8e3e77d6f38p-1)},
+                     T(0x1.e699dac3bd668p-3)};
+  const Vec3<T> o{T(-0x1.29e9d9e6504f9p+2), T(0x1.d2a3cea508f3cp+1), T(0x1.2f16648be321bp+2)};
+  const Vec3<T> d{T(0x1.611286e5d1bfep-1), T(-0x1.7e3586a120897p+0), T(-0x1.3a1ba78d9e733p+1)};
+  // In T the line is in the plane to the rounding of its coordinates (up to 8), and the crossing
+  // is found to rounding: a few eps of that scale.
+  const T e = T(16) * eps_v<T> * T(8);
+  for (const auto& r : {distance(Line<T, 3>{o, d}, c), distance(Ray<T, 3>{o, d}, c)}) {
+    EXPECT_LE(r.distance, e);
+    EXPECT_NEAR(length(r.closest[0] - r.closest[1]), r.distance, e);
+    EXPECT_NEAR(length(r.closest[1] - c.center), c.radius, e);
+  }
+}
+
 TYPED_TEST(Circle3PairsTest, CircleCircleAgainstBruteForce) {
   using T = TypeParam;
   Rng rng;

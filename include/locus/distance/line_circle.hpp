@@ -14,9 +14,11 @@
 // Q the part of D + tM perpendicular to n, h = |D + tM|^2 and g = |Q|^2 both quadratics in t.
 // F'(t) = 0 reads h' sqrt(g) = r g'; squaring gives the quartic h'^2 g - r^2 g'^2 = 0, whose
 // real roots include every interior minimiser (also the non-smooth points g = 0, where g' = 0).
-// The candidates are those roots, the minimisers of h and of g, and the domain's endpoints,
-// each clamped to the domain; F is evaluated cancellation-free in the form above and the
-// smallest wins, so the minimum is global (every candidate is a realisable pair of points, so
+// The candidates are those roots, the minimisers of h and of g, the roots of g = r^2 (where the
+// line meets the cylinder through the circle, solved as a quadratic: every crossing of the
+// circle, accurate to rounding, which the squared quartic's roots are not) and the domain's
+// endpoints, each clamped to the domain; F is evaluated cancellation-free in the form above and
+// the smallest wins, so the minimum is global (every candidate is a realisable pair of points, so
 // the answer is never below the true distance by more than rounding). The closest circle point
 // of the winner is then the point-circle answer (point_circle.hpp). Polynomial set-up, roots
 // and candidate evaluation run in compute_t<T> (double for float).
@@ -33,7 +35,7 @@
 // radius is the point center; a line in the circle's plane is handled by the same quartic (an
 // intersection gives distance 0). A negative radius, a zero normal, and NaN or infinite values
 // give non_finite_distance() (result.hpp). Cost: O(1): one quartic (solve_quartic, no
-// allocation), at most 8 candidate evaluations, one atan2.
+// allocation), at most 10 candidate evaluations, one atan2.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -77,7 +79,7 @@ template <class T, class Lin>
   const C r = static_cast<C>(c.radius);
 
   // Candidate parameters (clamped to the domain below).
-  std::array<C, 9> cand{};
+  std::array<C, 10> cand{};
   int nc = 0;
   cand[nc++] = C(0);
   if (v.bounded_hi) cand[nc++] = C(1);
@@ -96,6 +98,21 @@ template <class T, class Lin>
         solve_quartic<C>(q0 * g0 - r2 * pd * pd, q0 * g1 + q1 * g0 - r2 * C(2) * pp * pd,
                          q0 * g2 + q1 * g1 + q2 * g0 - r2 * pp * pp, q1 * g2 + q2 * g1, q2 * g2);
     for (const Root<C>& root : roots) cand[nc++] = root.value;
+    // Where the line meets the cylinder rho = r: g(t) = r^2, solved as a quadratic without
+    // cancellation (dd - r^2 = (rho0 - r)(rho0 + r); the discriminant pd^2 - pp (dd - r^2) =
+    // pp (r^2 - h^2) with h = |mp x dp| / |mp| the distance of the axis from the projected line).
+    // Every crossing of the circle is among these, accurate to rounding, where the quartic's roots
+    // carry the rounding of its squared coefficients (a line in the circle's plane crossing it:
+    // 1e-10 instead of ~0 in double at LOCUS_TEST_SEED=24, 26, 39).
+    if (pp > C(0) && r > C(0)) {
+      const C rho0 = std::sqrt(dd), h = std::sqrt(sqr_length(cross(mp, dp)) / pp);
+      const C disc = pp * (r - h) * (r + h);
+      const C q = -(pd + std::copysign(std::sqrt(disc), pd));
+      if (disc >= C(0) && q != C(0)) {  // q = 0: the double root t = 0 = -pd / pp, offered above
+        cand[nc++] = q / pp;
+        cand[nc++] = (rho0 - r) * (rho0 + r) / q;
+      }
+    }
   }
 
   C best_t = C(0);
