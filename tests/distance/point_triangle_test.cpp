@@ -39,20 +39,44 @@ Triangle<T, N> random_triangle(Rng& rng, T S) {
   return t;
 }
 
-template <class T, int N>
-void harness() {
-  const T S = 10;
-  dist::check_pairs<T, N, Vec<T, N>, Triangle<T, N>>([&](Rng& rng) {
-    return std::pair{rng.vec<T, N>(-T(1.5) * S, T(1.5) * S), random_triangle<T, N>(rng, S)};
-  });
-}
-
 // Exact oracle: the squared distance to a triangle is the minimum of (a) the squared distance
 // to its plane when the projection is inside and (b) the three exact point-segment distances.
 // Here (a) is checked in 2D (distance 0 inside, decided by exact orient2d) and in 3D (the
 // projection solved in rationals: inside when its s, t >= 0, s + t <= 1, then the squared
 // distance is |p - foot|^2), and the boundary part exactly in both dimensions. sqr_distance is
 // checked against the full query (exactly) and so against the same oracle.
+template <class T, int N>
+void check_exact(const Vec<T, N>& p, const Triangle<T, N>& tri, T S, int n) {
+  const auto r = distance(p, tri);
+  const auto qp = ex::to_q(p);
+  mpq_class e = ex::sqr_point_linear(qp, ex::segment(tri.v0, tri.v1));
+  for (const auto& q : {ex::sqr_point_linear(qp, ex::segment(tri.v0, tri.v2)),
+                        ex::sqr_point_linear(qp, ex::segment(tri.v1, tri.v2))})
+    if (q < e) e = q;
+  if constexpr (N == 2) {
+    const Sign s0 = orient2d(tri.v0, tri.v1, p), s1 = orient2d(tri.v1, tri.v2, p),
+               s2 = orient2d(tri.v2, tri.v0, p);
+    const bool nonneg = s0 != Sign::negative && s1 != Sign::negative && s2 != Sign::negative;
+    const bool nonpos = s0 != Sign::positive && s1 != Sign::positive && s2 != Sign::positive;
+    if ((nonneg || nonpos) && !is_degenerate(tri)) e = 0;
+  } else {
+    const auto q0 = ex::to_q(tri.v0), e0 = ex::sub(ex::to_q(tri.v1), q0),
+               e1 = ex::sub(ex::to_q(tri.v2), q0), w = ex::sub(q0, qp);
+    const mpq_class a = ex::dot(e0, e0), b = ex::dot(e0, e1), c = ex::dot(e1, e1),
+                    dd = ex::dot(e0, w), ee = ex::dot(e1, w), det = a * c - b * b;
+    if (det != 0) {
+      const mpq_class s = (b * ee - c * dd) / det, t = (b * dd - a * ee) / det;
+      if (s >= 0 && t >= 0 && s + t <= 1) {
+        const auto foot = ex::sub(ex::axpy(ex::axpy(q0, s, e0), t, e1), qp);
+        e = ex::dot(foot, foot);
+      }
+    }
+  }
+  EXPECT_NEAR(double(r.sqr_distance), e.get_d(), double(tol<T>(64, S * S * T(4)))) << "case " << n;
+  EXPECT_EQ(sqr_distance(p, tri), r.sqr_distance) << "case " << n;
+  EXPECT_EQ(sqr_distance(tri, p), r.sqr_distance) << "case " << n;
+}
+
 template <class T, int N>
 void exact_oracle() {
   Rng rng(locus_test::test_seed() + 7);
@@ -61,36 +85,30 @@ void exact_oracle() {
   for (int n = 0; n < 400; ++n) {
     const auto tri = random_triangle<T, N>(rng, S);
     const auto p = rng.vec<T, N>(-T(1.5) * S, T(1.5) * S);
-    const auto r = distance(p, tri);
-    const auto qp = ex::to_q(p);
-    mpq_class e = ex::sqr_point_linear(qp, ex::segment(tri.v0, tri.v1));
-    for (const auto& q : {ex::sqr_point_linear(qp, ex::segment(tri.v0, tri.v2)),
-                          ex::sqr_point_linear(qp, ex::segment(tri.v1, tri.v2))})
-      if (q < e) e = q;
-    if constexpr (N == 2) {
-      const Sign s0 = orient2d(tri.v0, tri.v1, p), s1 = orient2d(tri.v1, tri.v2, p),
-                 s2 = orient2d(tri.v2, tri.v0, p);
-      const bool nonneg = s0 != Sign::negative && s1 != Sign::negative && s2 != Sign::negative;
-      const bool nonpos = s0 != Sign::positive && s1 != Sign::positive && s2 != Sign::positive;
-      if ((nonneg || nonpos) && !is_degenerate(tri)) e = 0;
-    } else {
-      const auto q0 = ex::to_q(tri.v0), e0 = ex::sub(ex::to_q(tri.v1), q0),
-                 e1 = ex::sub(ex::to_q(tri.v2), q0), w = ex::sub(q0, qp);
-      const mpq_class a = ex::dot(e0, e0), b = ex::dot(e0, e1), c = ex::dot(e1, e1),
-                      dd = ex::dot(e0, w), ee = ex::dot(e1, w), det = a * c - b * b;
-      if (det != 0) {
-        const mpq_class s = (b * ee - c * dd) / det, t = (b * dd - a * ee) / det;
-        if (s >= 0 && t >= 0 && s + t <= 1) {
-          const auto foot = ex::sub(ex::axpy(ex::axpy(q0, s, e0), t, e1), qp);
-          e = ex::dot(foot, foot);
-        }
-      }
-    }
-    EXPECT_NEAR(double(r.sqr_distance), e.get_d(), double(tol<T>(64, S * S * T(4))))
-        << "case " << n;
-    EXPECT_EQ(sqr_distance(p, tri), r.sqr_distance) << "case " << n;
-    EXPECT_EQ(sqr_distance(tri, p), r.sqr_distance) << "case " << n;
+    check_exact(p, tri, S, n);
   }
+}
+
+template <class T, int N>
+void harness() {
+  const T S = 10;
+  dist::Options<T> opt;
+  // The harness's compass oracle cannot follow the valley of a needle (v2 1e-3 off the midpoint
+  // of a 22-long edge: the distance depends on s + t / 2 alone, a direction the compass does not
+  // step along, and it ran out of its budget 1.6e-4 above the exact 2.8222 at
+  // LOCUS_TEST_SEED=27 case 35, double). Every harness case is checked against the exact oracle
+  // above instead of the compass's agreement (the compass keeps its one-sided check: it never
+  // finds a closer pair).
+  opt.check_agreement = false;
+  int n = 0;
+  dist::check_pairs<T, N, Vec<T, N>, Triangle<T, N>>(
+      [&](Rng& rng) {
+        const Vec<T, N> p = rng.vec<T, N>(-T(1.5) * S, T(1.5) * S);
+        const Triangle<T, N> tri = random_triangle<T, N>(rng, S);
+        check_exact(p, tri, S, n++);
+        return std::pair{p, tri};
+      },
+      opt);
 }
 
 }  // namespace
@@ -217,7 +235,7 @@ TYPED_TEST(PointTriangleTest, SqrDistanceDegenerateAndRegions) {
   struct Case {
     T x, y, sqr_in_plane;
   };
-  const Case cases[] = {{T(1), T(1), T(0)},  {T(3), T(3), T(2)},  {T(-1), T(6), T(5)},
+  const Case cases[] = {{T(1), T(1), T(0)},  {T(3), T(3), T(2)},   {T(-1), T(6), T(5)},
                         {T(-2), T(1), T(4)}, {T(-1), T(-2), T(5)}, {T(3), T(-5), T(25)},
                         {T(6), T(-1), T(5)}, {T(-3), T(9), T(34)}, {T(9), T(-3), T(34)}};
   for (const Case& c : cases) {
