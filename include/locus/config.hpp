@@ -16,8 +16,10 @@
 #define LOCUS_VERSION_PATCH 0
 
 // LOCUS_ALWAYS_INLINE: for the few small helpers on a query's hot path that the compiler's size
-// heuristics would otherwise leave out of line in large callers (a float Vec3 returned from a
-// call passes through the stack and stalls the load that reads it back).
+// heuristics would otherwise leave out of line in large callers or large translation units
+// (GCC stops inlining once a unit has grown past --param inline-unit-growth, which a program
+// including many headers reaches; a Vec3 returned from a call passes through the stack and
+// stalls the load that reads it back).
 #if defined(__GNUC__) || defined(__clang__)
 #define LOCUS_ALWAYS_INLINE __attribute__((always_inline))
 #elif defined(_MSC_VER)

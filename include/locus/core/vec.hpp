@@ -189,7 +189,7 @@ template <class T, int N>
 }
 /// The largest absolute component (0 for the zero vector; NaN components are skipped).
 template <class T, int N>
-[[nodiscard]] constexpr T max_abs(const Vec<T, N>& a) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE constexpr T max_abs(const Vec<T, N>& a) noexcept {
   T m = T(0);
   for (int i = 0; i < N; ++i) {
     T v = a[i] < T(0) ? -a[i] : a[i];
@@ -200,7 +200,8 @@ template <class T, int N>
 
 /// Affine combination (1 - t) a + t b; exact at t = 0 and t = 1.
 template <class T, int N>
-[[nodiscard]] constexpr Vec<T, N> lerp(const Vec<T, N>& a, const Vec<T, N>& b, T t) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE constexpr Vec<T, N> lerp(const Vec<T, N>& a, const Vec<T, N>& b,
+                                                           T t) noexcept {
   Vec<T, N> r{};
   for (int i = 0; i < N; ++i) r[i] = (T(1) - t) * a[i] + t * b[i];
   return r;
@@ -250,7 +251,7 @@ template <class T, int N>
 /// Euclidean length. Scales by the largest component first when the plain sum of squares
 /// would overflow or underflow, so length((1e200, 1e200)) is finite.
 template <class T, int N>
-[[nodiscard]] inline T length(const Vec<T, N>& a) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline T length(const Vec<T, N>& a) noexcept {
   T s = sqr_length(a);
   if (s > std::numeric_limits<T>::min() && s < std::numeric_limits<T>::max()) return std::sqrt(s);
   T m = max_abs(a);

@@ -69,8 +69,8 @@ template <class T, int N>
 
 /// Barycentric form (fig 5.5): u v0 + v v1 + w v2 with b = (u, v, w); exact at the vertices.
 template <class T, int N>
-[[nodiscard]] constexpr Vec<T, N> point_at_barycentric(const Triangle<T, N>& tri,
-                                                       const Vec3<T>& b) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE constexpr Vec<T, N> point_at_barycentric(
+    const Triangle<T, N>& tri, const Vec3<T>& b) noexcept {
   return b.x * tri.v0 + b.y * tri.v1 + b.z * tri.v2;
 }
 
