@@ -589,6 +589,80 @@ TYPED_TEST(PointSurfaceTest, SphereOctant) {
               static_cast<double>(worst));
 }
 
+// Points whose radial projection lies just inside an edge of the octant (float seeds 11, 19, 35 of
+// SphereOctant): the edge curve's minimum is within 64 eps (float) of the interior minimum in
+// the squared distance, yet no minimum of the surface, since the sphere gets closer inward: it
+// is no evidence of a tie (unique was false).
+TYPED_TEST(PointSurfaceTest, SphereOctantEdgeMinimumIsNoRival) {
+  using T = TypeParam;
+  const Vec3<T> c{T(1), T(-2), T(0.5)};
+  const T rad = T(3);
+  const NurbsSurface<T, 3> s = sphere_octant(c, rad);
+  const Vec3<T> pts[] = {{T(7.6697998), T(-1.98487091), T(1.1665194)},
+                         {T(1.27324688), T(-1.9979558), T(0.579241514)},
+                         {T(1.539621), T(-0.35896039), T(0.502438962)},
+                         {T(1.62859905), T(-1.94004452), T(0.50153029)}};
+  for (const auto& p : pts) {
+    const auto r = distance(p, s);
+    EXPECT_TRUE(r.unique) << p.x << " " << p.y << " " << p.z;
+    EXPECT_NEAR(r.distance, std::fabs(length(p - c) - rad), tol<T>(64, T(12)));
+    EXPECT_NEAR(length(r.closest[1] - c), rad, tol<T>(64, T(4)));
+  }
+}
+
+// A flat bicubic x quadratic patch and a point above its interior, 0.005 inside the u = 1 edge
+// (FlatPatches, float, LOCUS_TEST_SEED=30, case 10): the edge's minimum was within tau of the
+// true one and the box holding it skipped Newton, so the answer stayed on the edge, 4e-3 from
+// the rectangle's closest point. The best point is now polished by Newton.
+TYPED_TEST(PointSurfaceTest, EdgePointPolishedToTheInteriorMinimum) {
+  using T = TypeParam;
+  const Vec3<T> o{T(-2.80060863), T(4.23825216), T(-2.9341917)};
+  Vec3<T> ax{T(0.323254079), T(0.676155567), T(-0.662057757)};
+  Vec3<T> ay{T(0.883048832), T(-0.467037946), T(-0.0458285362)};
+  if constexpr (std::is_same_v<T, double>) {
+    // The float axes are orthonormal to float precision only: the rectangle oracle needs them
+    // to double precision.
+    ax = normalize(ax);
+    ay = normalize(ay - dot(ax, ay) * ax);
+  }
+  const T ex = T(1.4675281), ey = T(2.79463387);
+  const T xs[] = {T(-1), T(-0.399024963), T(-0.0204324722), T(0.450469255), T(1)};
+  const T ys[] = {T(-1), T(-0.21161741), T(1)};
+  BezierPatch<T, 3> s{5, 3, {}};
+  for (const T x : xs)
+    for (const T y : ys) s.control.push_back(o + (ex * x) * ax + (ey * y) * ay);
+  const Vec3<T> p{T(1.96759796), T(7.85560703), T(0.879829645)};
+  const auto r = distance(p, s);
+  const auto want = distance(p, Rectangle<T, 3>{o, {ax, ay}, {ex, ey}});
+  EXPECT_LT(r.param_b.x, T(1));
+  EXPECT_NEAR(r.distance, want.distance, tol<T>(128, T(16)));
+  EXPECT_TRUE(locus_test::vec_near(r.closest[1], want.closest[1], tol<T>(128, T(16))));
+}
+
+// A flat bicubic B-spline with interior knot lines u, v = 0.3, 0.6 and points above it just
+// beside a knot line (found while fixing the two tests above): the knot line's edge minimum,
+// and a Newton descent in the neighbouring piece blocked there, were within tau of the minimum
+// (the answer stayed on the line: float distance 2 + 1e-6, closest point 2e-3 off) and, once
+// the minimum was polished, within the tie tolerance of it (unique was false). Neither is a
+// minimum: the surface gets closer across the line.
+TYPED_TEST(PointSurfaceTest, KnotLineIsNoMinimum) {
+  using T = TypeParam;
+  const std::vector<T> knots{0, 0, 0, 0, T(0.3), T(0.6), 1, 1, 1, 1};
+  BSplineSurface<T, 3> b{3, 3, 6, 6, {}, knots, knots};
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) b.control.push_back({T(i), T(j), T(0)});
+  const T xk = point_at(b, T(0.3), T(0.5)).x, yk = point_at(b, T(0.5), T(0.6)).y, h = T(2);
+  for (const T off : {T(0), T(2e-3), T(-2e-3), T(6e-4)}) {
+    for (const Vec3<T>& p : {Vec3<T>{xk + off, T(2.1), h}, Vec3<T>{T(1.7), yk + off, -h}}) {
+      const auto r = distance(p, b);
+      EXPECT_TRUE(r.unique) << off;
+      EXPECT_NEAR(r.distance, h, tol<T>(16, h)) << off;
+      EXPECT_TRUE(locus_test::vec_near(r.closest[1], Vec3<T>{p.x, p.y, T(0)}, tol<T>(64, T(4))))
+          << off;
+    }
+  }
+}
+
 // Flat patches: a bicubic whose net is an affine grid of a rectangle is that rectangle (with a
 // non-affine but planar parametrisation when the grid is warped inside the plane).
 TYPED_TEST(PointSurfaceTest, FlatPatches) {

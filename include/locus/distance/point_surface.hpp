@@ -17,6 +17,9 @@
 // extracted by blossoming in compute_t<T>).
 //   1. Boundary: the edges of every piece are rational Bézier curves; their exact global minima
 //      come from point_curve.hpp's all-roots span machinery (distance/detail/rational_span.hpp).
+//      An edge minimum is a minimum of the surface only if Q does not decrease from it into the
+//      piece (nor into the neighbouring piece across a knot line): the sign of (S - P) . S_n,
+//      S_n the derivative along the inward parameter direction, beyond its rounding.
 //   2. Interior: a best-first work heap of sub-pieces (parameter boxes, or sub-triangles of a
 //      4-way midpoint split), each re-extracted from its piece by blossoming (no accumulated
 //      subdivision error). A sub-piece's lower bound is the largest of the distance from P to
@@ -36,6 +39,10 @@
 //   tau = 2^-26 size + (64 eps_C + 16 eps_T) (size + max |P_i|), size the diagonal of the box
 //   of the control points (the second term covers the rounding of the bounds themselves and
 //   the precision of T: a float surface is only defined to float accuracy).
+//   3. Polish: a best point that is neither Newton-converged nor an edge minimum of the surface
+//      (a sub-piece corner, an edge point that Q decreases from) is only within tau of the
+//      minimum (its parameters within ~sqrt(tau) of it): Newton starts from it on every piece
+//      holding it.
 // Accuracy: the result is a point of the surface whose distance is an upper bound of the true
 // one; it is a Newton-converged local minimum (or an exact edge minimum), so its distance is
 // accurate to a few ulps of the scale, and the branch and bound certifies (up to rounding) that
@@ -44,10 +51,14 @@
 // (below) ends the search early only for pathological input, still returning a surface point.
 // Computations run in compute_t<T> (double for float input).
 //
-// unique = false when two critical candidates (Newton-converged points, edge-curve minima) more
-// than 16 sqrt(eps of compute_t<T>) size apart are (to 64 eps of T relative in the squared
-// distance) equally close: a point on a symmetry plane of the patch, the centre of a spherical
-// NURBS patch (every point is closest).
+// unique = false when two critical candidates (Newton-converged points, edge-curve minima that
+// Q does not decrease from inward, see 1.) more than 16 sqrt(eps of compute_t<T>) size apart are
+// (to 64 eps of T relative in the squared distance) equally close: a point on a symmetry plane
+// of the patch, the centre of a spherical NURBS patch (every point is closest). A point that Q
+// decreases from into the domain (an edge point, a Newton descent blocked at a knot line) is no
+// such evidence, however close its distance: the surface gets closer beside it. The test is
+// one-sided derivatives at the candidate itself; along a collapsed edge (a pole) only the
+// candidate's own edge parameter is tried.
 //
 // Degenerate input: a degree 0 direction (a 1 x n net), a constant patch, collapsed edges
 // (a corner or edge where S_u or S_v vanishes), repeated knots and C0 knot lines are fine (the
@@ -225,51 +236,89 @@ inline void triangle_subnet(const V* net, int n, const Vec<C, 2>* corner, V* out
 }
 
 /// The nearest candidate so far (global parameters), and the two nearest distinct CRITICAL
-/// candidates (Newton-converged points, edge-curve critical points and ends) for the tie test:
-/// sub-piece corners sharpen the bound but, being arbitrary points near a minimum, are never
-/// evidence of a second minimum.
+/// candidates (Newton-converged points, edge-curve minima that Q does not decrease from
+/// inward) for the tie test: sub-piece corners and the other edge minima sharpen the bound but,
+/// being no minima of the surface, are never evidence of a second minimum.
 template <class C, int N>
 struct SurfaceNearest {
   bool found = false;
+  bool best_critical = false;  // the best point is a critical candidate (not to be polished)
   C best_d2 = std::numeric_limits<C>::infinity();
   Vec<C, 2> best_param{};
   Vec<C, N> best_point{};
   NearestTracker<C, N> critical;  // its best_t is unused
   C sep2 = C(0);                  // squared separation below which two points are "the same"
+  C tie_rel = C(0);               // the tie test's tolerance, relative on squared distances
 
   void offer(C d2, const Vec<C, 2>& prm, const Vec<C, N>& x, bool is_critical = true) noexcept {
     if (!(d2 == d2)) return;
     if (is_critical) critical.offer(d2, C(0), x);
     if (!found || d2 < best_d2) {
       found = true;
+      best_critical = is_critical;
       best_d2 = d2;
       best_param = prm;
       best_point = x;
     }
   }
-  /// True when a critical candidate distinct from the best point is within tol (relative, on
-  /// squared distances) of it.
-  [[nodiscard]] bool tied(C rel_tol) const noexcept {
-    const C lim = best_d2 + rel_tol * best_d2 + std::numeric_limits<C>::min();
-    const auto rival = [&](C d2, const Vec<C, N>& x) {
-      return d2 <= lim && sqr_length(x - best_point) > sep2;
-    };
+  /// Whether a candidate would be a rival of the best point for the tie test: distinct from
+  /// it and within tie_rel of it.
+  [[nodiscard]] bool rival(C d2, const Vec<C, N>& x) const noexcept {
+    return d2 <= best_d2 + tie_rel * best_d2 + std::numeric_limits<C>::min() &&
+           sqr_length(x - best_point) > sep2;
+  }
+  /// True when a critical candidate is a rival.
+  [[nodiscard]] bool tied() const noexcept {
     return (critical.found && rival(critical.best_d2, critical.best_point)) ||
            (critical.has_alt && rival(critical.alt_d2, critical.alt_point));
   }
 };
 
-/// Offers the global minimum of a rational Bézier edge curve h[0..d] (global parameter t0..t1)
-/// to `tr`; at(t) maps the curve parameter to the surface's (u, v).
-template <class C, int N, class At>
-inline void offer_edge(const Vec<C, N + 1>* h, int d, const Vec<C, N>& p, C t0, C t1, const At& at,
-                       SurfaceNearest<C, N>& tr) noexcept {
+/// An edge-curve minimum of a piece (kind: which edge), whether it is a critical candidate
+/// decided after the search, for the few that could be rivals. c: its parameter along the edge
+/// in [0, 1], or -1 where not known yet.
+template <class C, int N>
+struct EdgeMinimum {
+  C d2;
+  Vec<C, N> x;
+  std::size_t piece;
+  int kind;
+  C c;
+};
+
+/// The minima of a rational Bézier edge curve h[0..d] of a piece, the nearest point and the
+/// nearest one distinct from it, to add(c, d2, x): c the curve parameter in [0, 1], -1 for the
+/// second (the tracker keeps no parameter for it; edge_param finds it when needed).
+template <class C, int N, class Add>
+inline void edge_minima(const Vec<C, N + 1>* h, int d, const Vec<C, N>& p, C sep2,
+                        const Add& add) noexcept {
   NearestTracker<C, N> e;
-  e.sep2 = tr.sep2;
-  point_span_candidates<C, N>(h, d, p, t0, t1, e);
+  e.sep2 = sep2;
+  point_span_candidates<C, N>(h, d, p, C(0), C(1), e);
   if (!e.found) return;
-  tr.offer(e.best_d2, at(e.best_t), e.best_point);
-  if (e.has_alt) tr.offer(e.alt_d2, at(e.best_t), e.alt_point);
+  add(e.best_t, e.best_d2, e.best_point);
+  if (e.has_alt) add(C(-1), e.alt_d2, e.alt_point);
+}
+
+/// The parameter in [0, 1] of the point x of the edge curve h[0..d]: that of its nearest point.
+template <class C, int N>
+[[nodiscard]] inline C edge_param(const Vec<C, N + 1>* h, int d, const Vec<C, N>& x) noexcept {
+  NearestTracker<C, N> a;
+  point_span_candidates<C, N>(h, d, x, C(0), C(1), a);
+  return a.best_t;
+}
+
+/// Whether Q = |S - p|^2 decreases from the jet's point along the parameter direction dir: its
+/// slope (S - p) . S_dir is negative beyond the rounding of the jet (coordinates of magnitude m,
+/// derivatives of a degree-deg piece).
+template <class C, int N>
+[[nodiscard]] inline bool descends(const SurfaceJet<C, N>& j, const Vec<C, N>& p,
+                                   const Vec<C, 2>& dir, int deg) noexcept {
+  const Vec<C, N> r = j.s - p, sd = dir.x * j.su + dir.y * j.sv;
+  const C m = max_abs(j.s) + max_abs(p);
+  const C err = C(64) * std::numeric_limits<C>::epsilon() *
+                (length(r) * (length(sd) + C(deg + 1) * m) + length(sd) * m);
+  return dot(r, sd) < -err;
 }
 
 /// The lower bound of the distance from p to the convex hull of the projected net x[0..count)
@@ -481,7 +530,8 @@ inline bool surface_newton(const Jet& jet, const Vec<C, N>& p, Vec<C, 2>& x, C& 
     if (nb >= 2) break;
     if (nb == 1) {
       const C gt = dot(g, along);
-      const C ht = along.x * along.x * h00 + C(2) * along.x * along.y * h01 + along.y * along.y * h11;
+      const C ht =
+          along.x * along.x * h00 + C(2) * along.x * along.y * h01 + along.y * along.y * h11;
       if (ht > C(0))
         d = (-gt / ht) * along;
       else if (gt != C(0))
@@ -572,6 +622,11 @@ inline constexpr compute_t<T> tau_rounding =
     compute_t<T>(64) * std::numeric_limits<compute_t<T>>::epsilon() +
     compute_t<T>(16) * static_cast<compute_t<T>>(std::numeric_limits<T>::epsilon());
 
+/// The tie test's tolerance (header comment): 64 eps of T, relative on squared distances.
+template <class T>
+inline constexpr compute_t<T> tie_tolerance =
+    compute_t<T>(64) * static_cast<compute_t<T>>(std::numeric_limits<T>::epsilon());
+
 template <class C, int N>
 inline void rect_search(const std::vector<Vec<C, N + 1>>& pool,
                         const std::vector<SurfacePiece<C>>& pieces, int du, int dv,
@@ -581,19 +636,70 @@ inline void rect_search(const std::vector<Vec<C, N + 1>>& pool,
   const std::size_t cnt = rows * cols;
   const C size2 = pool_sqr_size<C, N>(pool);
   tr.sep2 = tr.critical.sep2 = C(256) * std::numeric_limits<C>::epsilon() * size2;
-  // Edges as curves: v = v0, v1 (rows of the net's first / last column) and u = u0, u1.
+  const auto piece_jet = [&](std::size_t k) {
+    const V* top = pool.data() + pieces[k].offset;
+    return [top, du, dv](const Vec<C, 2>& st, SurfaceJet<C, N>& j) {
+      return rect_jet<C, N>(top, du, dv, st.x, st.y, j);
+    };
+  };
+  const auto global_of = [&](std::size_t k, const Vec<C, 2>& st) {
+    const SurfacePiece<C>& pc = pieces[k];
+    return Vec<C, 2>{pc.u0 + st.x * (pc.u1 - pc.u0), pc.v0 + st.y * (pc.v1 - pc.v0)};
+  };
+  // The pieces form a grid with the v spans inner (tensor_pieces): nv pieces per u span.
+  std::size_t nv = 1;
+  while (nv < pieces.size() && pieces[nv].u0 == pieces[0].u0) ++nv;
+  const std::size_t nu = pieces.size() / nv;
+  // Edge kind 0, 1: local t = 0, 1 (the net's first / last column, along s); kind 2, 3: local
+  // s = 0, 1 (first / last row, along t); c the coordinate along the edge.
+  const auto edge_local = [](int kind, C c) {
+    return kind < 2 ? Vec<C, 2>{c, C(kind)} : Vec<C, 2>{C(kind - 2), c};
+  };
   SpanScratch<V, 16> edge(std::max(rows, cols));
-  for (const SurfacePiece<C>& pc : pieces) {
-    const V* net = pool.data() + pc.offset;
-    for (int side = 0; side < 2; ++side) {
-      const C v = side == 0 ? pc.v0 : pc.v1;
-      for (std::size_t i = 0; i < rows; ++i) edge[i] = net[i * cols + (side == 0 ? 0 : cols - 1)];
-      offer_edge<C, N>(edge.data(), du, p, pc.u0, pc.u1, [v](C t) { return Vec<C, 2>{t, v}; }, tr);
-      const C u = side == 0 ? pc.u0 : pc.u1;
-      for (std::size_t k = 0; k < cols; ++k) edge[k] = net[(side == 0 ? 0 : rows - 1) * cols + k];
-      offer_edge<C, N>(edge.data(), dv, p, pc.v0, pc.v1, [u](C t) { return Vec<C, 2>{u, t}; }, tr);
+  const auto edge_net = [&](std::size_t k, int kind) {
+    const V* net = pool.data() + pieces[k].offset;
+    if (kind < 2) {
+      for (std::size_t i = 0; i < rows; ++i) edge[i] = net[i * cols + (kind == 0 ? 0 : cols - 1)];
+      return du;
     }
-  }
+    for (std::size_t i = 0; i < cols; ++i) edge[i] = net[(kind == 2 ? 0 : rows - 1) * cols + i];
+    return dv;
+  };
+  // An edge point is a critical candidate only if Q does not decrease from it into its piece,
+  // nor into the neighbouring piece where the edge is a knot line: otherwise it is no minimum of
+  // the surface and no evidence of a tie, only a bound (and a start for the final polish).
+  // Whether Q decreases from the point st of piece k into a neighbouring piece across a knot
+  // line that st lies on: then st is no minimum of the surface, whatever it is in piece k (a
+  // Newton descent blocked there, an edge minimum).
+  const auto descends_across = [&](std::size_t k, const Vec<C, 2>& st) {
+    const std::size_t iu = k / nv, iv = k % nv;
+    const auto down = [&](std::size_t kn, const Vec<C, 2>& stn, const Vec<C, 2>& dir) {
+      SurfaceJet<C, N> j;
+      return piece_jet(kn)(stn, j) && descends<C, N>(j, p, dir, std::max(du, dv));
+    };
+    return (st.y <= C(0) && iv > 0 && down(k - 1, {st.x, C(1)}, {C(0), C(-1)})) ||
+           (st.y >= C(1) && iv + 1 < nv && down(k + 1, {st.x, C(0)}, {C(0), C(1)})) ||
+           (st.x <= C(0) && iu > 0 && down(k - nv, {C(1), st.y}, {C(-1), C(0)})) ||
+           (st.x >= C(1) && iu + 1 < nu && down(k + nv, {C(0), st.y}, {C(1), C(0)}));
+  };
+  const auto edge_critical = [&](std::size_t k, int kind, C c) {
+    const Vec<C, 2> st = edge_local(kind, c);
+    const Vec<C, 2> dir =
+        kind < 2 ? Vec<C, 2>{C(0), C(1 - 2 * kind)} : Vec<C, 2>{C(1 - 2 * (kind - 2)), C(0)};
+    SurfaceJet<C, N> j;
+    if (piece_jet(k)(st, j) && descends<C, N>(j, p, dir, std::max(du, dv))) return false;
+    return !descends_across(k, st);
+  };
+  std::vector<EdgeMinimum<C, N>> edge_mins;
+  for (std::size_t k = 0; k < pieces.size(); ++k)
+    for (int kind = 0; kind < 4; ++kind) {
+      const int deg = edge_net(k, kind);
+      edge_minima<C, N>(edge.data(), deg, p, tr.sep2, [&](C c, C d2, const Vec<C, N>& x) {
+        // The second minimum of an edge never improves on its first, just offered.
+        if (c >= C(0)) tr.offer(d2, global_of(k, edge_local(kind, c)), x, false);
+        edge_mins.push_back({d2, x, k, kind, c});
+      });
+    }
   std::vector<Vec<C, N>> pts(cnt);
   std::vector<V> sub(cnt);
   const auto project_net = [&](const V* net) {
@@ -602,8 +708,12 @@ inline void rect_search(const std::vector<Vec<C, N + 1>>& pool,
   std::vector<SurfaceWork<C>> heap;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     project_net(pool.data() + pieces[i].offset);
-    heap.push_back({hull_lower_bound<C, N>(pts.data(), cnt, p, nullptr), static_cast<int>(i), 0,
-                    {C(0), C(0)}, {C(1), C(1)}, {}});
+    heap.push_back({hull_lower_bound<C, N>(pts.data(), cnt, p, nullptr),
+                    static_cast<int>(i),
+                    0,
+                    {C(0), C(0)},
+                    {C(1), C(1)},
+                    {}});
   }
   std::make_heap(heap.begin(), heap.end(), work_after<C>);
   const C tau_scale = std::sqrt(size2) + max_abs(p);
@@ -642,7 +752,8 @@ inline void rect_search(const std::vector<Vec<C, N + 1>>& pool,
       const auto jet = [top, du, dv](const Vec<C, 2>& st, SurfaceJet<C, N>& j) {
         return rect_jet<C, N>(top, du, dv, st.x, st.y, j);
       };
-      if (surface_newton<C, N, SquareDomain>(jet, p, x, f, at)) tr.offer(f, global(x), at);
+      if (surface_newton<C, N, SquareDomain>(jet, p, x, f, at))
+        tr.offer(f, global(x), at, !descends_across(static_cast<std::size_t>(w.piece), x));
       if (settled(lb)) continue;
     }
     // Split along the physically longer direction (never along a degree-0 one).
@@ -673,6 +784,29 @@ inline void rect_search(const std::vector<Vec<C, N + 1>>& pool,
     heap.push_back(c1);
     std::push_heap(heap.begin(), heap.end(), work_after<C>);
   }
+  // A best point that is no critical candidate (a sub-piece corner, an edge point that Q
+  // descends from) is only certified to within tau of the minimum, and the search skips
+  // boxes whose bound comes within tau of it: Newton from it, on every piece holding it.
+  if (tr.found && !tr.best_critical) {
+    const Vec<C, 2> g = tr.best_param;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      const SurfacePiece<C>& pc = pieces[k];
+      if (!(g.x >= pc.u0 && g.x <= pc.u1 && g.y >= pc.v0 && g.y <= pc.v1)) continue;
+      Vec<C, 2> x = SquareDomain::project(
+          Vec<C, 2>{(g.x - pc.u0) / (pc.u1 - pc.u0), (g.y - pc.v0) / (pc.v1 - pc.v0)});
+      C f = C(0);
+      Vec<C, N> at{};
+      if (surface_newton<C, N, SquareDomain>(piece_jet(k), p, x, f, at))
+        tr.offer(f, global_of(k, x), at, !descends_across(k, x));
+    }
+  }
+  // The edge minima that could be rivals in the tie test, if they are minima of the surface.
+  for (const EdgeMinimum<C, N>& e : edge_mins) {
+    if (!tr.rival(e.d2, e.x)) continue;
+    const int deg = edge_net(e.piece, e.kind);
+    const C c = e.c >= C(0) ? e.c : edge_param<C, N>(edge.data(), deg, e.x);
+    if (edge_critical(e.piece, e.kind, c)) tr.critical.offer(e.d2, C(0), e.x);
+  }
 }
 
 /// The branch and bound over one triangular piece of degree n (header comment).
@@ -683,18 +817,36 @@ inline void triangle_search(const std::vector<Vec<C, N + 1>>& net, int n, const 
   const auto cnt = static_cast<std::size_t>(triangle_control_count(n));
   const C size2 = pool_sqr_size<C, N>(net);
   tr.sep2 = tr.critical.sep2 = C(256) * std::numeric_limits<C>::epsilon() * size2;
-  {
-    // Edges: v = 0 (P_i0k, u from 0 to 1), u = 0 (P_0jk, v from 0 to 1), w = 0 (P_ij0, u from
-    // 0 to 1 with v = 1 - u).
-    SpanScratch<V, 16> edge(static_cast<std::size_t>(n) + 1);
-    for (int i = 0; i <= n; ++i) edge[static_cast<std::size_t>(i)] = net[static_cast<std::size_t>(triangle_index(n, i, 0))];
-    offer_edge<C, N>(edge.data(), n, p, C(0), C(1), [](C t) { return Vec<C, 2>{t, C(0)}; }, tr);
-    for (int j = 0; j <= n; ++j) edge[static_cast<std::size_t>(j)] = net[static_cast<std::size_t>(triangle_index(n, 0, j))];
-    offer_edge<C, N>(edge.data(), n, p, C(0), C(1), [](C t) { return Vec<C, 2>{C(0), t}; }, tr);
-    for (int i = 0; i <= n; ++i)
-      edge[static_cast<std::size_t>(i)] = net[static_cast<std::size_t>(triangle_index(n, i, n - i))];
-    offer_edge<C, N>(edge.data(), n, p, C(0), C(1), [](C t) { return Vec<C, 2>{t, C(1) - t}; },
-                     tr);
+  // Edges (kind): v = 0 (P_i0k, u from 0 to 1), u = 0 (P_0jk, v from 0 to 1), w = 0 (P_ij0, u
+  // from 0 to 1 with v = 1 - u); an edge point is critical only if Q does not decrease inward
+  // (as for tensor pieces).
+  SpanScratch<V, 16> edge(static_cast<std::size_t>(n) + 1);
+  const auto edge_net = [&](int kind) {
+    for (int i = 0; i <= n; ++i) {
+      const int a = kind == 1 ? 0 : i, b = kind == 0 ? 0 : (kind == 1 ? i : n - i);
+      edge[static_cast<std::size_t>(i)] = net[static_cast<std::size_t>(triangle_index(n, a, b))];
+    }
+  };
+  const auto on_edge = [](int kind, C t) {
+    return kind == 0 ? Vec<C, 2>{t, C(0)}
+                     : (kind == 1 ? Vec<C, 2>{C(0), t} : Vec<C, 2>{t, C(1) - t});
+  };
+  const auto jet = [top = net.data(), n](const Vec<C, 2>& uv, SurfaceJet<C, N>& j) {
+    return triangle_jet<C, N>(top, n, uv.x, uv.y, j);
+  };
+  const auto edge_critical = [&](int kind, C t) {
+    const Vec<C, 2> inward[3] = {{C(0), C(1)}, {C(1), C(0)}, {C(-1), C(-1)}};
+    SurfaceJet<C, N> j;
+    return !(jet(on_edge(kind, t), j) &&
+             descends<C, N>(j, p, inward[static_cast<std::size_t>(kind)], n));
+  };
+  std::vector<EdgeMinimum<C, N>> edge_mins;
+  for (int kind = 0; kind < 3; ++kind) {
+    edge_net(kind);
+    edge_minima<C, N>(edge.data(), n, p, tr.sep2, [&](C t, C d2, const Vec<C, N>& x) {
+      if (t >= C(0)) tr.offer(d2, on_edge(kind, t), x, false);
+      edge_mins.push_back({d2, x, 0, kind, t});
+    });
   }
   std::vector<Vec<C, N>> pts(cnt);
   std::vector<V> sub(cnt);
@@ -704,8 +856,12 @@ inline void triangle_search(const std::vector<Vec<C, N + 1>>& net, int n, const 
   project_net(net.data());
   std::vector<SurfaceWork<C>> heap;
   // Corners: (1, 0) = e1 (P_n00), (0, 1) = e2 (P_0n0), (0, 0) = e3 (P_00n).
-  heap.push_back({hull_lower_bound<C, N>(pts.data(), cnt, p, nullptr), 0, 0, {C(1), C(0)},
-                  {C(0), C(1)}, {C(0), C(0)}});
+  heap.push_back({hull_lower_bound<C, N>(pts.data(), cnt, p, nullptr),
+                  0,
+                  0,
+                  {C(1), C(0)},
+                  {C(0), C(1)},
+                  {C(0), C(0)}});
   const C tau_scale = std::sqrt(size2) + max_abs(p);
   const std::size_t budget = 4096;
   const std::size_t corner_index[3] = {static_cast<std::size_t>(triangle_index(n, n, 0)),
@@ -743,10 +899,6 @@ inline void triangle_search(const std::vector<Vec<C, N + 1>>& net, int n, const 
       Vec<C, 2> x = (w.a + w.b + w.c) / C(3);
       C f = C(0);
       Vec<C, N> at{};
-      const V* top = net.data();
-      const auto jet = [top, n](const Vec<C, 2>& uv, SurfaceJet<C, N>& j) {
-        return triangle_jet<C, N>(top, n, uv.x, uv.y, j);
-      };
       if (surface_newton<C, N, TriangleDomain>(jet, p, x, f, at)) tr.offer(f, x, at);
       if (settled(lb)) continue;
     }
@@ -764,6 +916,19 @@ inline void triangle_search(const std::vector<Vec<C, N + 1>>& net, int n, const 
       heap.push_back(k);
       std::push_heap(heap.begin(), heap.end(), work_after<C>);
     }
+  }
+  // The final polish and the edge minima of rect_search.
+  if (tr.found && !tr.best_critical) {
+    Vec<C, 2> x = TriangleDomain::project(tr.best_param);
+    C f = C(0);
+    Vec<C, N> at{};
+    if (surface_newton<C, N, TriangleDomain>(jet, p, x, f, at)) tr.offer(f, x, at);
+  }
+  for (const EdgeMinimum<C, N>& e : edge_mins) {
+    if (!tr.rival(e.d2, e.x)) continue;
+    edge_net(e.kind);
+    const C t = e.c >= C(0) ? e.c : edge_param<C, N>(edge.data(), n, e.x);
+    if (edge_critical(e.kind, t)) tr.critical.offer(e.d2, C(0), e.x);
   }
 }
 
@@ -785,14 +950,16 @@ inline void tensor_pieces(std::span<const T> ku, int du, int rows, std::span<con
       if (!(kv[ub] < kv[ub + 1])) continue;
       // Along v for the du + 1 rows of the span, then along u for each of the dv + 1 columns.
       for (int i = 0; i <= du; ++i)
-        span_bezier<C, V, T>(kv, dv, b, [&](int j) { return get(a - du + i, j); },
-                             rowpts.data() + static_cast<std::size_t>(i) * nc);
+        span_bezier<C, V, T>(
+            kv, dv, b, [&](int j) { return get(a - du + i, j); },
+            rowpts.data() + static_cast<std::size_t>(i) * nc);
       const std::size_t off = pool.size();
       pool.resize(off + nr * nc);
       for (std::size_t k = 0; k < nc; ++k) {
-        span_bezier<C, V, T>(ku, du, a,
-                             [&](int i) { return rowpts[static_cast<std::size_t>(i - (a - du)) * nc + k]; },
-                             col.data());
+        span_bezier<C, V, T>(
+            ku, du, a,
+            [&](int i) { return rowpts[static_cast<std::size_t>(i - (a - du)) * nc + k]; },
+            col.data());
         for (std::size_t i = 0; i < nr; ++i) pool[off + i * nc + k] = col[i];
       }
       pieces.push_back({off, static_cast<C>(ku[ua]), static_cast<C>(ku[ua + 1]),
@@ -808,8 +975,7 @@ template <class T, int N, class Surface>
   const Vec2<T> prm{static_cast<T>(tr.best_param.x), static_cast<T>(tr.best_param.y)};
   const Vec<T, N> q = point_at(s, prm.x, prm.y);
   if (!is_finite(q)) return non_finite_distance<T, N, NoParam, Vec2<T>>();
-  return make_distance(p, q, NoParam{}, prm,
-                       !tr.tied(compute_t<T>(64) * static_cast<compute_t<T>>(eps_v<T>)));
+  return make_distance(p, q, NoParam{}, prm, !tr.tied());
 }
 
 template <class T, int N, class Surface, class Get>
@@ -822,8 +988,9 @@ template <class T, int N, class Surface, class Get>
   tensor_pieces<C, N, T>(std::span<const T>(s.knots_u), s.degree_u, s.rows,
                          std::span<const T>(s.knots_v), s.degree_v, s.cols, get, pool, pieces);
   SurfaceNearest<C, N> tr;
-  if (!pieces.empty()) rect_search<C, N>(pool, pieces, s.degree_u, s.degree_v, vec_cast<C>(p), tau_rounding<T>,
-                                         tr);
+  tr.tie_rel = tie_tolerance<T>;
+  if (!pieces.empty())
+    rect_search<C, N>(pool, pieces, s.degree_u, s.degree_v, vec_cast<C>(p), tau_rounding<T>, tr);
   return point_surface_result<T, N>(p, s, tr);
 }
 
@@ -831,8 +998,8 @@ template <class T, int N, class Surface, class Get>
 
 /// Distance from p to the rectangular Bézier patch; param_b is (u, v) in [0, 1]^2.
 template <Real T, int N>
-[[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> distance(const Vec<T, N>& p,
-                                                               const BezierPatch<T, N>& s) noexcept {
+[[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> distance(
+    const Vec<T, N>& p, const BezierPatch<T, N>& s) noexcept {
   if (!is_finite(p) || !is_finite(s)) return non_finite_distance<T, N, NoParam, Vec2<T>>();
   using C = compute_t<T>;
   std::vector<Vec<C, N + 1>> pool;
@@ -840,6 +1007,7 @@ template <Real T, int N>
   for (const auto& q : s.control) pool.push_back(detail::homogeneous<C, N>(vec_cast<C>(q), C(1)));
   const std::vector<detail::SurfacePiece<C>> pieces{{0, C(0), C(1), C(0), C(1)}};
   detail::SurfaceNearest<C, N> tr;
+  tr.tie_rel = detail::tie_tolerance<T>;
   detail::rect_search<C, N>(pool, pieces, s.rows - 1, s.cols - 1, vec_cast<C>(p),
                             detail::tau_rounding<T>, tr);
   return detail::point_surface_result<T, N>(p, s, tr);
@@ -855,6 +1023,7 @@ template <Real T, int N>
   net.reserve(s.control.size());
   for (const auto& q : s.control) net.push_back(detail::homogeneous<C, N>(vec_cast<C>(q), C(1)));
   detail::SurfaceNearest<C, N> tr;
+  tr.tie_rel = detail::tie_tolerance<T>;
   detail::triangle_search<C, N>(net, s.degree, vec_cast<C>(p), detail::tau_rounding<T>, tr);
   return detail::point_surface_result<T, N>(p, s, tr);
 }
@@ -863,7 +1032,8 @@ template <Real T, int N>
 template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> distance(
     const Vec<T, N>& p, const BSplineSurface<T, N>& s) noexcept {
-  if (!is_finite(p) || validate(s) != Status::ok) return non_finite_distance<T, N, NoParam, Vec2<T>>();
+  if (!is_finite(p) || validate(s) != Status::ok)
+    return non_finite_distance<T, N, NoParam, Vec2<T>>();
   using C = compute_t<T>;
   const auto cols = static_cast<std::size_t>(s.cols);
   return detail::point_tensor_distance<T, N>(p, s, [&s, cols](int i, int j) {
@@ -877,7 +1047,8 @@ template <Real T, int N>
 template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> distance(
     const Vec<T, N>& p, const NurbsSurface<T, N>& s) noexcept {
-  if (!is_finite(p) || validate(s) != Status::ok) return non_finite_distance<T, N, NoParam, Vec2<T>>();
+  if (!is_finite(p) || validate(s) != Status::ok)
+    return non_finite_distance<T, N, NoParam, Vec2<T>>();
   using C = compute_t<T>;
   const auto cols = static_cast<std::size_t>(s.cols);
   return detail::point_tensor_distance<T, N>(p, s, [&s, cols](int i, int j) {
