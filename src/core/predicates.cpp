@@ -312,6 +312,17 @@ Sign orient2d_adaptive(const Vec2<double>& a, const Vec2<double>& b,
   return orient2d_exact(a, b, c);
 }
 
+// ---- turn2d -----------------------------------------------------------------------------------
+
+// (bx - ax)(dy - cy) - (by - ay)(dx - cx) = m(b, d) - m(b, c) - m(a, d) + m(a, c) with the minors
+// m(p, q) = px qy - py qx of the raw coordinates: no rounded difference anywhere. Reached only
+// when the filter fails (nearly parallel directions), so no intermediate stages.
+Sign turn2d_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
+                  const Vec2<double>& d) noexcept {
+  if (!finite(a) || !finite(b) || !finite(c) || !finite(d)) return Sign::zero;
+  return sign((minor2(b, d) - minor2(b, c)) + (minor2(a, c) - minor2(a, d)));
+}
+
 // ---- orient3d (computed in Shewchuk's sign, returned in ours) ---------------------------------
 
 Sign orient3d_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,

@@ -1010,3 +1010,60 @@ TYPED_TEST(PredicateTest, CompareSqrDistanceMatchesExactOracle) {
 }
 
 }  // namespace
+
+// turn2d against exact rationals: random directions, exactly parallel ones on a dyadic grid
+// (d - c a rational multiple of b - a, all sums exact) nudged by at most one ulp, and nearly
+// parallel ones far from the origin (where the rounded differences b - a, d - c lose the sign).
+template <class T>
+int turn2d_oracle(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c, const Vec2<T>& d) {
+  const auto q = [](T x) { return mpq_class(double(x)); };
+  return sgn((q(b.x) - q(a.x)) * (q(d.y) - q(c.y)) - (q(b.y) - q(a.y)) * (q(d.x) - q(c.x)));
+}
+
+TYPED_TEST(PredicateTest, Turn2dMatchesExactOracle) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const double grid = std::is_same_v<T, double> ? 0x1p-30 : 0x1p-8;
+  int ties = 0, count = 30000;
+  for (int i = 0; i < count; ++i) {
+    Vec2<T> a = rng.vec<T, 2>(T(-10), T(10)), b = rng.vec<T, 2>(T(-10), T(10));
+    Vec2<T> c = rng.vec<T, 2>(T(-10), T(10)), d = rng.vec<T, 2>(T(-10), T(10));
+    if (i % 3 == 0) {
+      Vec2<T> u{};
+      for (int k = 0; k < 2; ++k) {
+        a[k] = T(grid * rng.uniform_int(-1 << 12, 1 << 12));
+        c[k] = T(grid * rng.uniform_int(-1 << 12, 1 << 12));
+        u[k] = T(grid * rng.uniform_int(-1 << 8, 1 << 8));
+      }
+      const int m = rng.uniform_int(-3, 3);
+      for (int k = 0; k < 2; ++k) {
+        b[k] = a[k] + u[k];
+        d[k] = c[k] + T(m) * u[k];
+        // (Not a zero: its neighbour is subnormal, outside the exactness range.)
+        if (d[k] != T(0) && rng.uniform_int(0, 2) == 0) d[k] = bump(d[k], rng.uniform_int(-1, 1));
+      }
+    } else if (i % 3 == 1) {
+      // Far from the origin, directions within a few ulps of each other.
+      const T far = signed_magnitude<T>(rng, 10, 40);
+      a = {far, far * T(0.75)};
+      b = {bump(a.x, rng.uniform_int(1, 1000)), bump(a.y, rng.uniform_int(1, 1000))};
+      c = {bump(a.x, rng.uniform_int(-5, 5)), bump(a.y, rng.uniform_int(-5, 5))};
+      d = {c.x + (b.x - a.x), bump(c.y + (b.y - a.y), rng.uniform_int(-2, 2))};
+    }
+    const int want = turn2d_oracle(a, b, c, d);
+    ties += want == 0;
+    ASSERT_EQ(to_int(turn2d(a, b, c, d)), want)
+        << i << std::hexfloat << " a " << a.x << " " << a.y << " b " << b.x << " " << b.y << " c "
+        << c.x << " " << c.y << " d " << d.x << " " << d.y;
+    ASSERT_EQ(to_int(turn2d(c, d, a, b)), -want) << i;
+    ASSERT_EQ(to_int(turn2d(b, a, c, d)), -want) << i;
+    ASSERT_EQ(turn2d(a, b, a, c), orient2d(a, b, c)) << i;
+  }
+  EXPECT_GT(ties, count / 50);
+  const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+  EXPECT_EQ(turn2d(Vec2<T>{0, 0}, Vec2<T>{1, 0}, Vec2<T>{0, nan}, Vec2<T>{0, 1}), Sign::zero);
+  EXPECT_EQ(turn2d(Vec2<T>{0, 0}, Vec2<T>{1, 0}, Vec2<T>{0, 0}, Vec2<T>{inf, 1}), Sign::zero);
+  EXPECT_EQ(turn2d(Vec2<T>{0, 0}, Vec2<T>{1, 0}, Vec2<T>{5, 5}, Vec2<T>{5, 6}), Sign::positive);
+  EXPECT_EQ(turn2d(Vec2<T>{0, 0}, Vec2<T>{0, 0}, Vec2<T>{5, 5}, Vec2<T>{5, 6}), Sign::zero);
+}

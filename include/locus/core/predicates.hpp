@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Exact geometric predicates: orient2d, orient3d, incircle, insphere, and small exact helpers
-// (orient1d, lexicographic_compare, compare_sqr_distance). CAPABILITIES row core.predicates.
+// (orient1d, lexicographic_compare, compare_sqr_distance, turn2d). CAPABILITIES row
+// core.predicates.
 //
 // Each predicate returns the *exact* sign of a polynomial in the input coordinates. A fast
 // filter, inline here, evaluates the determinant in double and accepts its sign when it exceeds
@@ -24,6 +25,10 @@
 //   insphere(a, b, c, d, e) > 0 iff e is strictly inside the sphere through a, b, c, d when
 //                           orient3d(a, b, c, d) > 0 in OUR convention; the sign flips with the
 //                           orientation. This is the NEGATION of Shewchuk's insphere.
+//   turn2d(a, b, c, d)      > 0 iff the direction c -> d is counter-clockwise from a -> b (less
+//                           than a half turn): sign of det[b - a; d - c]; orient2d(a, b, c) =
+//                           turn2d(a, b, a, c). Zero iff the two directions are parallel (or
+//                           one is zero).
 // All are zero exactly on degenerate configurations (collinear, coplanar, cocircular,
 // cospherical), swap sign under an odd permutation of the points, and are invariant under
 // translation (orient*, in*) and positive scaling.
@@ -35,7 +40,7 @@
 // of promoted floats stay far inside double range). Double input: the result is exact whenever
 // no intermediate product overflows or underflows, which holds when every nonzero coordinate c
 // satisfies 2^-L <= |c| <= 2^H with
-//     orient2d   L = 480, H = 500   (about 3e-145 .. 3e150)
+//     orient2d   L = 480, H = 500   (about 3e-145 .. 3e150; also turn2d, compare_sqr_distance)
 //     orient3d   L = 300, H = 330   (about 5e-91  .. 2e99)
 //     incircle   L = 210, H = 245   (about 6e-64  .. 6e73)
 //     insphere   L = 160, H = 195   (about 7e-49  .. 5e58)
@@ -141,6 +146,10 @@ LOCUS_PREDICATE_COLD [[nodiscard]] Sign insphere_adaptive(const Vec3<double>& a,
                                                           const Vec3<double>& c,
                                                           const Vec3<double>& d,
                                                           const Vec3<double>& e) noexcept;
+/// Exact sign of det[b - a; d - c] (turn2d), expanded into the four 2x2 minors of the points.
+LOCUS_PREDICATE_COLD [[nodiscard]] Sign turn2d_exact(const Vec2<double>& a, const Vec2<double>& b,
+                                                     const Vec2<double>& c,
+                                                     const Vec2<double>& d) noexcept;
 /// Exact sign of |q - p|^2 - |r - p|^2 for n = 2 or 3 coordinates per point.
 LOCUS_PREDICATE_COLD [[nodiscard]] Sign compare_sqr_distance_exact(const double* p, const double* q,
                                                                    const double* r, int n) noexcept;
@@ -394,6 +403,26 @@ template <Real T, int N>
     if (q[i] < p[i]) return Sign::positive;
   }
   return Sign::zero;
+}
+
+/// Exact sign of det[b - a; d - c] = perp_dot(b - a, d - c): positive iff the direction c -> d is
+/// counter-clockwise from a -> b (the turn from one to the other is left, less than a half turn),
+/// zero iff they are parallel or one is zero. The two directions need not share a point
+/// (orient2d(a, b, c) = turn2d(a, b, a, c)): e.g. whether two segments' lines cross, and on which
+/// side, from their end points, without rounding the directions first. Non-finite input gives
+/// zero; exact range as orient2d (it has degree 2). The filter is orient2d's: the same two
+/// rounded differences per product, so the same stage-A bound.
+template <Real T>
+[[nodiscard]] inline Sign turn2d(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c,
+                                 const Vec2<T>& d) noexcept {
+  const double l = (double(b.x) - double(a.x)) * (double(d.y) - double(c.y));
+  const double r = (double(b.y) - double(a.y)) * (double(d.x) - double(c.x));
+  const double det = l - r;
+  const double bound = detail::orient2d_bound_a * (std::abs(l) + std::abs(r));
+  if (std::abs(det) > bound) [[likely]]
+    return detail::nonzero_sign(det);
+  return detail::turn2d_exact(detail::to_double(a), detail::to_double(b), detail::to_double(c),
+                              detail::to_double(d));
 }
 
 /// Exact sign of |q - p|^2 - |r - p|^2: positive iff q is farther from p than r is. Non-finite
