@@ -356,16 +356,23 @@ TYPED_TEST(MinBox, RegularTetrahedronEdgeEdgeCase) {
     const double v = static_cast<double>(r.volume);
     const std::vector<V3> d = to_d(pts);
     const double flush = flush_oracle(d);
+    // The flush boxes of the planes through the (jittered) corners: the hull facets.
+    const double corner_flush = flush_oracle(std::vector<V3>(d.begin(), d.begin() + 4));
     EXPECT_TRUE(r.certified) << "trial " << trial;
     // The edge-edge box wins clearly over the best facet-flush box (the previous search with
-    // facet normals only) and over the flush boxes of every point triple's plane.
+    // facet normals only) and over the flush boxes of the corner triples' planes; the plane of
+    // three interior points can have a normal as close to a face normal of the optimal box as
+    // chance makes it (seed 1: 8.42 against the optimum 8), so against every point triple's
+    // plane the result need only be as good.
     locus::MinBoxOptions facets;
     facets.edge_arcs = false;
     facets.max_pair_edges = 0;
     facets.refine = false;
     const double facet_best = static_cast<double>(locus::min_box<T>(pts, facets).volume);
     EXPECT_LT(v, 0.6 * facet_best) << "trial " << trial;
-    EXPECT_LT(v, 0.9 * flush) << "trial " << trial;
+    EXPECT_LT(v, 0.9 * corner_flush) << "trial " << trial;
+    EXPECT_LE(v, flush * (1 + 1e-9) + 1e-3 * static_cast<double>(locus::eps_v<T>))
+        << "trial " << trial;
     EXPECT_LE(
         v, dense_oracle(d, rng, 3000) * (1 + 1e-9) + 1e-3 * static_cast<double>(locus::eps_v<T>));
     if (jitter == 0.0) {
