@@ -16,6 +16,8 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <utility>
 
 using namespace locus;
@@ -86,6 +88,28 @@ ex::QLinear<static_cast<std::size_t>(N)> q_of(const Segment<T, N>& s) {
   return ex::segment(s.p0, s.p1);
 }
 
+// The defining points of a component in hexadecimal floating point (exact), for failure messages
+// that reproduce the input.
+template <class T, int N>
+std::string hex(const Vec<T, N>& v) {
+  std::ostringstream os;
+  os << std::hexfloat << '{';
+  for (int i = 0; i < N; ++i) os << (i ? ", " : "") << double(v[i]);
+  return os.str() + '}';
+}
+template <class T, int N>
+std::string describe(const Line<T, N>& l) {
+  return "Line{" + hex(l.origin) + ", " + hex(l.direction) + "}";
+}
+template <class T, int N>
+std::string describe(const Ray<T, N>& l) {
+  return "Ray{" + hex(l.origin) + ", " + hex(l.direction) + "}";
+}
+template <class T, int N>
+std::string describe(const Segment<T, N>& s) {
+  return "Segment{" + hex(s.p0) + ", " + hex(s.p1) + "}";
+}
+
 template <class T, int N, class A, class B, class MakeA, class MakeB>
 void run_pair(MakeA make_a, MakeB make_b) {
   const T S = 4;
@@ -113,7 +137,9 @@ void run_pair(MakeA make_a, MakeB make_b) {
     const double exact = ex::sqr_linear_linear(q_of(a), q_of(b)).get_d();
     // The closest points are rounded: the squared distance is within k eps scale^2.
     const T scale = std::max({T(8), max_abs(r.closest[0]), max_abs(r.closest[1])});
-    EXPECT_NEAR(double(r.sqr_distance), exact, double(tol<T>(64, scale * scale))) << "case " << n;
+    EXPECT_NEAR(double(r.sqr_distance), exact, double(tol<T>(64, scale * scale)))
+        << "case " << n << ": " << describe(a) << ", " << describe(b) << " params " << r.param_a
+        << ", " << r.param_b;
     if constexpr (requires { sqr_distance(a, b); }) {
       EXPECT_EQ(sqr_distance(a, b), r.sqr_distance) << "case " << n;
       EXPECT_EQ(sqr_distance(b, a), r.sqr_distance) << "case " << n;
@@ -433,10 +459,146 @@ TYPED_TEST(LinearLinearTest, SqrDistanceNonFiniteInputGivesNaN) {
       }
       if (k % 3 < 2) {
         const auto p2 = [](const Vec3<T>& u) { return Vec2<T>{u.x, u.y}; };
-        EXPECT_TRUE(std::isnan(sqr_distance(Segment2<T>{p2(a.p0), p2(a.p1)},
-                                            Segment2<T>{p2(b.p0), p2(b.p1)})))
+        EXPECT_TRUE(std::isnan(
+            sqr_distance(Segment2<T>{p2(a.p0), p2(a.p1)}, Segment2<T>{p2(b.p0), p2(b.p1)})))
             << k;
       }
     }
   }
+}
+
+namespace {
+
+// The components meet: distance and squared distance exactly 0, the exact rational distance 0,
+// and each closest point (point_at of its component's parameter, bit for bit) the crossing to
+// rounding. A parameter has relative error a few eps (accurate 2x2 minors), so each point's exact
+// distance to the OTHER component is within 8 eps |X| (the rounding of origin + t dir plus the
+// parameter error times |dir| sin angle).
+template <class T, class A, class B>
+void expect_meet(const A& a, const B& b) {
+  SCOPED_TRACE(describe(a) + ", " + describe(b));
+  const auto r = distance(a, b);
+  EXPECT_EQ(r.sqr_distance, T(0));
+  EXPECT_EQ(r.distance, T(0));
+  EXPECT_EQ(r.closest[0], point_at(a, r.param_a));
+  EXPECT_EQ(r.closest[1], point_at(b, r.param_b));
+  // (unique follows the numerical-parallelism rule, sin^2 angle <= 64 eps^2; not checked here.)
+  EXPECT_EQ(ex::sqr_linear_linear(q_of(a), q_of(b)), 0);
+  const double scale =
+      std::max({1.0, double(max_abs(r.closest[0])), double(max_abs(r.closest[1]))});
+  const double bound = 8.0 * double(eps_v<T>) * scale;
+  EXPECT_LE(ex::sqr_point_linear(ex::to_q(r.closest[0]), q_of(b)).get_d(), bound * bound);
+  EXPECT_LE(ex::sqr_point_linear(ex::to_q(r.closest[1]), q_of(a)).get_d(), bound * bound);
+  const auto q = distance(b, a);
+  EXPECT_EQ(q.sqr_distance, T(0));
+  EXPECT_EQ(q.closest[0], r.closest[1]);
+  EXPECT_EQ(q.closest[1], r.closest[0]);
+  EXPECT_EQ(q.param_a, r.param_b);
+  EXPECT_EQ(q.param_b, r.param_a);
+}
+
+}  // namespace
+
+// Regression (LOCUS_TEST_SEED=19, 21, 27 of HarnessAndExactOracle2D, float): nearly parallel
+// lines and rays in the plane (sin angle ~1e-4 .. 1e-6) that cross far away (s ~ 1e4 .. 2e7).
+// Cramer's rule from dot products cancels completely there (for the first pair its numerator
+// rounded to 0), so the library returned the projection of an origin, at squared distance 2.4,
+// 1.0e-3 and 4.9e-4 where the exact answer is 0. Whether the components meet is now decided
+// exactly (orientation signs), and then the crossing is the answer, at distance exactly 0. The
+// inputs are floats, exact in double too.
+TYPED_TEST(LinearLinearTest, NearlyParallelLinesAndRaysInThePlaneMeetFarAway) {
+  using T = TypeParam;
+  const Vec2<T> o0{T(0x1.19e114p+1f), T(0x1.b39fe8p+1f)}, d0{T(-0x1.5a3dc4p+2f), T(0x1.a826a6p+1f)};
+  const Vec2<T> o1{T(0x1.df71acp+1f), T(0x1.48139cp-1f)}, d1{T(-0x1.5a481p+2f), T(0x1.a83344p+1f)};
+  expect_meet<T>(Line2<T>{o0, d0}, Line2<T>{o1, d1});  // seed 19, case 45
+  expect_meet<T>(Line2<T>{o0, d0}, Ray2<T>{o1, d1});
+  expect_meet<T>(Ray2<T>{o0, d0}, Ray2<T>{o1, d1});
+  expect_meet<T>(
+      Line2<T>{{T(-0x1.af5078p+1f), T(-0x1.c165f6p+0f)}, {T(0x1.46d57ep+2f), T(0x1.002e64p+1f)}},
+      Line2<T>{{T(0x1.fa201p+1f), T(0x1.0b0d7cp+0f)},
+               {T(0x1.46e38ep+2f), T(0x1.0038d8p+1f)}});  // seed 21
+  const Vec2<T> o2{T(-0x1.adc43p-1f), T(-0x1.6ab282p-1f)}, d2{T(0x1.650188p+2f), T(0x1.5bf51cp+2f)};
+  const Vec2<T> o3{T(0x1.424842p+1f), T(0x1.5fc254p+0f)},
+      d3{T(-0x1.f3dc68p+1f), T(-0x1.e7310ep+1f)};
+  expect_meet<T>(Line2<T>{o2, d2}, Line2<T>{o3, d3});  // seed 27, case 336
+  expect_meet<T>(Line2<T>{o2, d2}, Ray2<T>{o3, d3});
+  if constexpr (std::is_same_v<T, double>) {
+    // LOCUS_TEST_SEED=5, case 266 (double): sin angle ~1e-12; the origin projection was at squared
+    // distance 1.2e-4.
+    const Vec2<T> o4{0x1.5bce2395a5bcap+1, 0x1.c945aa2401b3p+0},
+        d4{0x1.7817bdd63251p+2, 0x1.28b44497c4416p+1};
+    const Vec2<T> o5{0x1.7cd5b4bd96068p-1, 0x1.05113005b29dp+0},
+        d5{-0x1.0743d1af8bacdp+2, -0x1.9f62c66e160b9p+0};
+    expect_meet<T>(Line2<T>{o4, d4}, Line2<T>{o5, d5});
+    expect_meet<T>(Line2<T>{o4, d4}, Ray2<T>{o5, d5});
+  }
+}
+
+// Regression (LOCUS_TEST_SEED=2 of HarnessAndExactOracle3D, double, case 240): nearly parallel
+// skew lines in 3D. The common perpendicular is at s ~ 1e8; Cramer's rule from dot products gave
+// garbage there, so the projection of an origin (squared distance 9.7138363) won over the exact
+// 9.71383612749. The minimiser now comes from accurately rounded 2x2 minors (the cross product):
+// within k eps scale^2 of the exact squared distance, scale being the closest points' magnitude.
+TYPED_TEST(LinearLinearTest, NearlyParallelSkewLinesMeetTheirCommonPerpendicularFarAway) {
+  using T = TypeParam;
+  if constexpr (std::is_same_v<T, double>) {
+    const Line3<T> a{{-0x1.8302e252031a8p+1, 0x1.d6cd578f1845p-1, -0x1.7532afefc9428p-2},
+                     {0x1.0cac0676d6212p-1, 0x1.6eda47016667cp+2, -0x1.0f4fbbf7545ecp-3}};
+    const Line3<T> b{{-0x1.6764d0972f8c4p-1, -0x1.093748a399fb6p+1, -0x1.057dedccde83p+1},
+                     {-0x1.7824090cbbb4bp-2, -0x1.00cbfe80f9beap+2, 0x1.7bd607273d4b3p-4}};
+    const auto r = distance(a, b);
+    const double exact = ex::sqr_linear_linear(q_of(a), q_of(b)).get_d();
+    const T scale = std::max({T(8), max_abs(r.closest[0]), max_abs(r.closest[1])});
+    EXPECT_GT(scale, T(1e7));  // the far crossing, not an origin's projection
+    EXPECT_NEAR(r.sqr_distance, exact, tol<T>(64, scale * scale));
+    const auto q = distance(b, a);
+    EXPECT_EQ(q.sqr_distance, r.sqr_distance);
+    EXPECT_EQ(q.closest[0], r.closest[1]);
+  }
+  // A ray and a line, a ray and a ray (float too): b's direction tilted towards a by 2^-20 in the
+  // plane z = 1, so the common perpendicular (length 1) lies at s = 2^20 on both.
+  const Ray3<T> ra{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}};
+  const Ray3<T> rb{{T(0), T(1), T(1)}, {T(1), -T(0x1p-20), T(0)}};
+  const auto rr = distance(ra, rb);
+  const T s = std::max(max_abs(rr.closest[0]), max_abs(rr.closest[1]));
+  EXPECT_NEAR(rr.sqr_distance, T(1), tol<T>(64, s * s));
+  EXPECT_NEAR(rr.param_a, T(0x1p20), T(0x1p20) * T(1e-3));
+  const auto rl = distance(Line3<T>{ra.origin, ra.direction}, rb);
+  EXPECT_NEAR(rl.sqr_distance, T(1), tol<T>(64, s * s));
+}
+
+// Touching decided exactly (2D): a ray whose origin lies exactly on a nearly parallel line and
+// turns away from it meets the line only at its origin (distance exactly 0, t = 0, the origin
+// itself); moved off the line by one ulp of 1 it misses it by about that ulp (the exact
+// distance), which the rounding of the candidates' points (~eps 2^k) alone could not tell from
+// 0. Also segments: an end point exactly on the other, leaving it at an angle of ~1 ulp.
+TYPED_TEST(LinearLinearTest, TouchingAtAnEndPointIsDecidedExactlyInThePlane) {
+  using T = TypeParam;
+  constexpr int k = std::is_same_v<T, float> ? 12 : 40;  // tilt 2^-k, 2^-2k on top
+  const T tilt = std::ldexp(T(1), -k), tiny = std::ldexp(T(1), -2 * k);
+  const Line2<T> line{{T(0), T(0)}, {T(1), tilt}};
+  const Vec2<T> on{std::ldexp(T(1), k), T(1)};  // exactly on the line
+  const Ray2<T> away{on, {T(1), tilt + tiny}};
+  const auto r = distance(line, away);
+  EXPECT_EQ(r.sqr_distance, T(0));
+  EXPECT_EQ(r.param_b, T(0));
+  EXPECT_EQ(r.closest[1], on);
+  const Ray2<T> off{{on.x, std::nextafter(T(1), T(2))}, away.direction};
+  const auto q = distance(line, off);
+  const double exact = ex::sqr_linear_linear(q_of(line), q_of(off)).get_d();
+  EXPECT_GT(exact, 0.0);
+  EXPECT_GT(q.sqr_distance, T(0));
+  EXPECT_NEAR(double(q.sqr_distance), exact, double(tol<T>(64, on.x * on.x)));
+  // Segments: b starts exactly on a (2D) and leaves it at the tiny angle.
+  const Segment2<T> a{{T(0), T(0)}, {std::ldexp(T(1), k + 1), T(2)}};
+  const Segment2<T> b{on, {on.x + std::ldexp(T(1), k - 1), std::nextafter(T(1.5), T(2))}};
+  ASSERT_EQ(ex::sqr_linear_linear(q_of(a), q_of(b)), 0);
+  const auto sg = distance(a, b);
+  EXPECT_EQ(sg.sqr_distance, T(0));
+  EXPECT_EQ(sg.param_b, T(0));
+  EXPECT_EQ(sg.closest[1], on);
+  const auto gs = distance(b, a);
+  EXPECT_EQ(gs.sqr_distance, T(0));
+  EXPECT_EQ(gs.param_a, T(0));
+  EXPECT_EQ(gs.closest[0], on);
 }

@@ -10,16 +10,24 @@
 // Method (detail/linear.hpp): the convex quadratic |x(s) - y(t)|^2 is minimised over the
 // parameter domain; when the directions are well separated and the unconstrained minimiser lies
 // in the domain it is the answer, otherwise the minimum over the in-domain interior point and
-// the exact point-to-component solutions on the domain's finite edges is taken. The answer is
-// therefore continuous as the input passes through (nearly) parallel configurations and is never
-// a "parallel" guess: its squared distance is within a few eps * scale^2 of the exact one.
+// the exact point-to-component solutions on the domain's finite edges is taken. For nearly
+// parallel directions the interior point comes from accurately rounded 2x2 minors (the cross
+// product), so it is found even far away (s ~ |x.origin - y.origin| / sin angle). In 2D whether
+// the two meet is decided exactly first (orientation signs): if they do, the closest points are the
+// crossing point (to rounding) and the distance is exactly 0. The squared distance is within a few
+// eps * scale^2 of the exact one, scale being the magnitude of the closest points (far away for
+// nearly parallel input). Like the exact distance, the answer jumps at exact parallelism (in
+// the plane nearly parallel lines meet, parallel ones keep their distance); the parallel answer
+// is returned only for exactly parallel directions, or when the crossing lies beyond the
+// floating-point range.
 // unique = false when the directions are parallel (sin^2 angle <= 64 eps^2) and the parameter
 // ranges overlap in an interval (parallel lines, overlapping parallel segments): one pair of the
 // infinitely many is returned.
 //
 // Degenerate input: a zero direction acts as the point origin (t = 0); the query then reduces to
 // a point-linear distance. NaN or infinite coordinates give non_finite_distance() (result.hpp).
-// Cost: O(N), at most six point-linear projections in the nearly parallel case.
+// Cost: O(N), at most six point-linear projections in the nearly parallel case; in 2D also up to
+// five exact orientation signs (most decided by a floating-point filter) per query.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

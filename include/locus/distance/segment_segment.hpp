@@ -14,7 +14,9 @@
 // (chosen by the violated constraints and, at a corner, by the sign of the derivative; computed
 // with selects, no data-dependent branch: segment_pair_fast). Otherwise (nearly parallel, or
 // degenerate) the minimum over the in-domain interior point and the exact point-to-component
-// solutions on the domain's finite edges is taken. The answer is therefore continuous as the
+// solutions on the domain's finite edges is taken; in 2D, whether nearly parallel segments meet
+// is decided exactly (orientation signs) first, and if they do the closest points are the crossing
+// point (to rounding) and the distance is exactly 0. The answer is therefore continuous as the
 // input passes through (nearly) parallel configurations and is never a "parallel" guess: its
 // squared distance is within a few eps * scale^2 of the exact one. distance(y, x) is bit for bit
 // the swap of distance(x, y).
@@ -25,7 +27,8 @@
 // Degenerate input: a zero-length segment acts as the point p0 (t = 0); the query then reduces to
 // a point-linear distance. NaN or infinite coordinates give non_finite_distance() (result.hpp).
 // Cost: O(N); two divisions, one square root in the common case; at most six point-linear
-// projections in the nearly parallel case.
+// projections in the nearly parallel case, in 2D after up to five exact orientation signs (most
+// decided by a floating-point filter).
 //
 // sqr_distance(x, y) returns distance(x, y).sqr_distance, bit for bit, without the closest
 // points, the parameters or the square root; NaN for non-finite input. Symmetric like distance.

@@ -19,23 +19,40 @@
 // onto A. When the directions are well separated (|dA x dB|^2 > 64 eps |dA|^2 |dB|^2) and the
 // minimiser lies in the domain it is returned; when it lies outside, only the (one or two) edges
 // whose constraints it violates can hold the minimum (KKT), and the nearer of those wins. In the
-// nearly parallel regime every candidate (the refined interior point, each finite edge, and for
-// two lines the projection of A's origin) is evaluated and the smallest squared distance wins.
+// nearly parallel regime every candidate (the interior point, each finite edge, and for two
+// lines the projection of A's origin) is evaluated and the smallest squared distance wins.
 // Every candidate is a realisable pair of points, so the answer is never below the true distance by
 // more than rounding and is a minimum of continuous functions of the input, hence continuous as the
-// input moves through (near-)parallel configurations; this is what the textbook "if det < epsilon
-// then parallel" code gets wrong. |dA x dB|^2 is evaluated as a sum of squared 2x2 minors
-// (Lagrange's identity), not as a c - b^2, so it does not cancel. Error: the squared distance is
-// within a few eps * (scale)^2 of the true one, scale being the magnitude of the closest points
-// (tested against exact rationals). When two unbounded components are parallel to within ~eps the
-// problem itself is ill-posed (the closest points may be arbitrarily far away, and every answer
-// between the parallel distance and the exact one is exact for input perturbed by an ulp); the
-// answer is then one of those.
+// input moves through (near-)parallel configurations wherever the true distance is (a segment
+// bounds the minimiser); this is what the textbook "if det < epsilon then parallel" code gets
+// wrong. |dA x dB|^2 is evaluated as a sum of squared 2x2 minors (Lagrange's identity), not as
+// a c - b^2, so it does not cancel.
+// The interior point in that regime: Cramer's numerators b e - c d, a e - b d cancel as badly as
+// D does, so for two segments (whose parameters the clamp keeps in [0, 1], where a wrong position
+// along the valley costs at most sin^2(angle) |dA|^2 <= 64 eps |dA|^2) it is the refined Cramer
+// point, but when a component is unbounded, where the minimiser may lie arbitrarily far away
+// (s ~ |r| / sin angle), it comes from accurately rounded minors (accurate_minimiser: the
+// numerators are (dB x r) . (dA x dB) and (dA x r) . (dA x dB), each minor a difference of
+// products accurate to a few eps), then refined by the two projections.
+// In 2D the components either meet or have their minimum on an edge of the domain; whether they
+// meet is decided exactly first (five orientation signs with an exact filtered predicate,
+// exact_cross_sign), and when they do the answer is the crossing: its parameters on both (each
+// closest point is the crossing to rounding) and a distance of exactly 0 (meet_2d). (Two
+// segments reach linear_linear only when segment_pair_fast declines them, i.e. nearly parallel or
+// with the interior minimiser at a small angle; crossing segments that it accepts get a distance
+// of a few eps * scale, not necessarily 0.)
+// Error: the squared distance is within a few eps * (scale)^2 of the true one, scale being the
+// magnitude of the closest points (tested against exact rationals); for nearly parallel unbounded
+// components they lie far away, and so does the answer: the true distance itself jumps at exact
+// parallelism (two lines in the plane meet unless exactly parallel). The parallel answer (an edge
+// or an origin's projection) is returned for exactly parallel directions, or when the minimiser
+// lies beyond the floating-point range (sin angle below ~|r| / max).
 //
 // Same-type pairs are solved in a canonical (lexicographic) argument order, so distance(b, a) is
 // bit for bit the swap of distance(a, b).
 // unique = false when the directions are parallel within sin^2(angle) <= (8 eps)^2 (the closest
-// pair is numerically undetermined) and the parameter ranges overlap in more than one point.
+// pair is numerically undetermined) and the parameter ranges overlap in more than one point
+// (parallel_unique; also when 2D components that nearly parallel meet at one exact crossing).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -142,7 +159,178 @@ struct LinLinParams {
   T s;
   T t;
   bool unique;
+  /// 2D only: the components meet (decided exactly); A.at(s) and B.at(t) are the crossing point
+  /// to rounding, and the distance is exactly 0.
+  bool meet = false;
 };
+
+/// The rounding error of p = fl(a b): a b - p exactly (a fused multiply-add where the target has
+/// one; elsewhere Dekker's product with Veltkamp's split, which no FMA contraction can alter
+/// because the target has none). Exact when |a b| is above 2^-969 and |a|, |b| below 2^995.
+[[nodiscard]] inline double product_error(double a, double b, double p) noexcept {
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+  return std::fma(a, b, -p);
+#else
+  constexpr double split = 134217729.0;  // 2^27 + 1
+  const double ta = split * a, tb = split * b;
+  const double ah = ta - (ta - a), al = a - ah;
+  const double bh = tb - (tb - b), bl = b - bh;
+  return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+#endif
+}
+
+/// a b - c d accurately: relative error a few eps (not the absolute eps |a b| of the naive
+/// formula), and exactly 0 when a b == c d (barring underflow). Float: the products are exact in
+/// double. Double: Kahan's algorithm with fused multiply-adds where the target has them (error
+/// <= 2 eps, Jeannerod, Louvet and Muller 2013); elsewhere both products split exactly into
+/// p + pe, where p - w is exact when it cancels (Sterbenz), so only the last two additions round.
+template <class T>
+[[nodiscard]] inline T diff_of_products(T a, T b, T c, T d) noexcept {
+  if constexpr (std::is_same_v<T, float>) {
+    return static_cast<float>(double(a) * double(b) - double(c) * double(d));
+  } else if constexpr (std::is_same_v<T, double>) {
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    const double w = c * d;
+    return std::fma(a, b, -w) - std::fma(c, d, -w);
+#else
+    const double p = a * b, w = c * d;
+    return (p - w) + (product_error(a, b, p) - product_error(c, d, w));
+#endif
+  } else {
+    return a * b - c * d;
+  }
+}
+
+/// The unconstrained minimiser (s, t) of |A(s) - B(t)|^2 from accurately rounded 2x2 minors:
+/// D = |u x v|^2, s = (v x r) . (u x v) / D, t = (u x r) . (u x v) / D with u, v the
+/// directions and r = A.origin - B.origin (Lagrange's identity turns Cramer's numerators
+/// b e - c d and a e - b d into these; computed from dot products they cancel as badly as D does
+/// for nearly parallel directions). Each minor is accurate to a few eps, so the answer has the
+/// conditioning of the problem: s is off by ~eps |r| / (|u| sin angle) ALONG the valley of R
+/// (r itself is rounded), which raises R by only ~(eps |r|)^2. In 2D s = (v x r) / (u x v)
+/// directly. NaN or infinite when the directions are exactly parallel (D = 0) or the minimiser is
+/// beyond the range.
+template <class T, int N>
+[[nodiscard]] inline std::array<T, 2> accurate_minimiser(const LinearView<T, N>& A,
+                                                         const LinearView<T, N>& B) noexcept {
+  const Vec<T, N> r = A.origin - B.origin, u = A.dir, v = B.dir;
+  if constexpr (N == 2) {
+    const T den = diff_of_products(u[0], v[1], u[1], v[0]);
+    return {diff_of_products(v[0], r[1], v[1], r[0]) / den,
+            diff_of_products(u[0], r[1], u[1], r[0]) / den};
+  } else {
+    T D = T(0), sn = T(0), tn = T(0);
+    for (int i = 0; i < N; ++i) {
+      for (int j = i + 1; j < N; ++j) {
+        const T m = diff_of_products(u[i], v[j], u[j], v[i]);
+        D += m * m;
+        sn += diff_of_products(v[i], r[j], v[j], r[i]) * m;
+        tn += diff_of_products(u[i], r[j], u[j], r[i]) * m;
+      }
+    }
+    return {sn / D, tn / D};
+  }
+}
+
+/// hi + lo = a + b exactly (Knuth's TwoSum; no multiplication, so FMA contraction cannot alter
+/// it).
+[[nodiscard]] inline double sum_and_error(double a, double b, double& lo) noexcept {
+  const double hi = a + b;
+  const double bv = hi - a, av = hi - bv;
+  lo = (a - av) + (b - bv);
+  return hi;
+}
+
+/// Exact sign (-1, 0, 1) of (p1 - p0) x (q1 - q0) = perp_dot(p1 - p0, q1 - q0) for double
+/// coordinates: a floating-point filter with orient2d's error bound (two rounded differences,
+/// two products, one subtraction: Shewchuk's stage A), else the eight products of the expanded
+/// determinant, each split exactly into two doubles (product_error), summed exactly as a
+/// nonoverlapping expansion (Shewchuk's Grow-Expansion with zero elimination) whose largest
+/// component carries the sign. Exact under the conditions of orient2d (core/predicates.hpp:
+/// nonzero coordinates between 2^-480 and 2^500; float input always).
+[[nodiscard]] inline int exact_cross_sign(const Vec2<double>& p0, const Vec2<double>& p1,
+                                          const Vec2<double>& q0, const Vec2<double>& q1) noexcept {
+  const double l = (p1[0] - p0[0]) * (q1[1] - q0[1]), r = (p1[1] - p0[1]) * (q1[0] - q0[0]);
+  const double det = l - r;
+  // (3 + 16 eps) eps, eps = 2^-53: orient2d's stage-A bound (core/predicates.hpp).
+  const double bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * (std::abs(l) + std::abs(r));
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  const double f[8][2] = {{p1[0], q1[1]},  {-p1[0], q0[1]}, {-p0[0], q1[1]}, {p0[0], q0[1]},
+                          {-p1[1], q1[0]}, {p1[1], q0[0]},  {p0[1], q1[0]},  {-p0[1], q0[0]}};
+  double e[17];
+  int n = 0;
+  const auto grow = [&](double x) {
+    double q = x;
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      double lo;
+      q = sum_and_error(q, e[i], lo);
+      if (lo != 0.0) e[m++] = lo;
+    }
+    if (q != 0.0) e[m++] = q;
+    n = m;
+  };
+  for (const auto& pq : f) {
+    const double hi = pq[0] * pq[1];
+    grow(product_error(pq[0], pq[1], hi));
+    grow(hi);
+  }
+  return n == 0 ? 0 : (e[n - 1] > 0.0 ? 1 : -1);
+}
+
+/// 2D: whether the components meet, decided exactly, and if so the meeting point (see
+/// LinLinParams). The components' directions as point pairs: a segment's end - origin (its true
+/// direction, not the rounded dir), a ray's or line's dir - 0. With u, v the directions and
+/// r = A.origin - B.origin, the lines cross at s = (v x r) / (u x v), t = (u x r) / (u x v)
+/// unless u x v = 0, and s - 1 = v x (A.end - B.origin) / (u x v),
+/// t - 1 = u x (A.origin - B.end) / (u x v): five exact signs decide every constraint. A
+/// parameter whose sign is exactly zero is exact (0 or 1: the meeting point is that end point,
+/// and the other parameter is its projection); otherwise one comes from accurate_minimiser and
+/// the other by projection (see below). meet = false when the lines are parallel, the components
+/// miss each other, or the crossing lies beyond the floating-point range. unique is left to the
+/// caller.
+template <class T>
+[[nodiscard]] inline LinLinParams<T> meet_2d(const LinearView<T, 2>& A,
+                                             const LinearView<T, 2>& B) noexcept {
+  const auto dbl = [](const Vec2<T>& p) { return Vec2<double>{double(p[0]), double(p[1])}; };
+  const Vec2<double> zero{0.0, 0.0};
+  const Vec2<double> ao = dbl(A.origin), bo = dbl(B.origin);
+  const Vec2<double> a0 = A.bounded_hi ? ao : zero, a1 = A.bounded_hi ? dbl(A.end) : dbl(A.dir);
+  const Vec2<double> b0 = B.bounded_hi ? bo : zero, b1 = B.bounded_hi ? dbl(B.end) : dbl(B.dir);
+  LinLinParams<T> no{T(0), T(0), true};
+  const int sg = exact_cross_sign(a0, a1, b0, b1);
+  if (sg == 0) return no;
+  const int s_lo = sg * exact_cross_sign(b0, b1, bo, ao);  // sign of s
+  if (A.bounded_lo && s_lo < 0) return no;
+  const int s_hi = A.bounded_hi ? sg * exact_cross_sign(b0, b1, bo, dbl(A.end)) : -1;  // of s - 1
+  if (s_hi > 0) return no;
+  const int t_lo = sg * exact_cross_sign(a0, a1, bo, ao);  // sign of t
+  if (B.bounded_lo && t_lo < 0) return no;
+  const int t_hi = B.bounded_hi ? sg * exact_cross_sign(a0, a1, dbl(B.end), ao) : -1;  // of t - 1
+  if (t_hi > 0) return no;
+  if (s_lo == 0 || s_hi == 0) {  // A's end point lies on B
+    const T s = s_lo == 0 ? T(0) : T(1);
+    return {s, closest_param(B, s_lo == 0 ? A.origin : A.end), true, true};
+  }
+  if (t_lo == 0 || t_hi == 0) {  // B's end point lies on A
+    const T t = t_lo == 0 ? T(0) : T(1);
+    return {closest_param(A, t_lo == 0 ? B.origin : B.end), t, true, true};
+  }
+  // The crossing's parameter on one component (a segment if there is one: its clamp bounds the
+  // damage), then the other by projection and the first again by projection, so that the pair is
+  // consistent even where the crossing itself is ill-conditioned: nearly collinear components
+  // (there the rounded direction of a segment may even give u x v the wrong sign, but every point
+  // of the overlap is within rounding of the other component).
+  const std::array<T, 2> st = accurate_minimiser(A, B);
+  if (A.bounded_hi || !B.bounded_hi) {
+    if (!is_finite(st[0]) && !A.bounded_hi) return no;  // beyond the range
+    const T t = closest_param(B, A.at(is_finite(st[0]) ? A.clamp_param(st[0]) : T(0.5)));
+    return {closest_param(A, B.at(t)), t, true, true};
+  }
+  const T s = closest_param(A, B.at(is_finite(st[1]) ? B.clamp_param(st[1]) : T(0.5)));
+  return {s, closest_param(B, A.at(s)), true, true};
+}
 
 /// Length of the intersection of [lo0, hi0] and [lo1, hi1] is positive.
 template <class T>
@@ -150,6 +338,30 @@ template <class T>
   const T lo = lo0 < lo1 ? lo1 : lo0;
   const T hi = hi0 < hi1 ? hi0 : hi1;
   return lo < hi;
+}
+
+/// The unique flag of linear_linear (see the header): false when the directions are parallel
+/// within sin^2(angle) <= (8 eps)^2 (D <= 64 eps^2 a c) and B's parameter range, projected onto
+/// A's line as s(t) = (t b - d) / a, overlaps A's range in an interval.
+template <class T, int N>
+[[nodiscard]] inline bool parallel_unique(const LinearView<T, N>& A, const LinearView<T, N>& B, T a,
+                                          T b, T d, T D, T ac) noexcept {
+  if (!(D <= T(64) * sqr(eps_v<T>) * ac)) return true;
+  constexpr T inf = std::numeric_limits<T>::infinity();
+  const T s0 = -d / a;
+  T lo1, hi1;
+  if (B.bounded_hi) {
+    const T s1 = (b - d) / a;
+    lo1 = s0 < s1 ? s0 : s1;
+    hi1 = s0 < s1 ? s1 : s0;
+  } else if (B.bounded_lo) {
+    lo1 = b > T(0) ? s0 : -inf;
+    hi1 = b > T(0) ? inf : s0;
+  } else {
+    lo1 = -inf;
+    hi1 = inf;
+  }
+  return !overlaps(A.bounded_lo ? T(0) : -inf, A.bounded_hi ? T(1) : inf, lo1, hi1);
 }
 
 /// Parameters (s on A, t on B) of a closest pair of two linear components; see the header.
@@ -166,6 +378,17 @@ template <class T, int N>
   const T b = dot(A.dir, B.dir), d = dot(A.dir, r), e = dot(B.dir, r);
   const T D = sqr_cross_norm(A.dir, B.dir);  // = a c - b^2 without cancellation
   const T ac = a * c;
+
+  // In the plane the components either meet (distance 0) or have their minimum on an edge of the
+  // domain; whether they meet is decided exactly.
+  constexpr bool exact_2d = N == 2 && (std::is_same_v<T, float> || std::is_same_v<T, double>);
+  if constexpr (exact_2d) {
+    LinLinParams<T> m = meet_2d(A, B);
+    if (m.meet) {
+      m.unique = parallel_unique(A, B, a, b, d, D, ac);
+      return m;
+    }
+  }
 
   bool have_interior = false;
   T si = T(0), ti = T(0);
@@ -203,6 +426,23 @@ template <class T, int N>
     }
   }
 
+  // Nearly parallel (or exactly parallel, or Cramer's rule failed).
+  if (!exact_2d && !(A.bounded_hi && B.bounded_hi)) {
+    // An unbounded component: the minimiser may lie far away (s ~ |r| / sin angle), where the
+    // edges cannot stand in for it; Cramer's rule above is then useless (its numerators cancel
+    // like D), so the interior candidate is recomputed from accurate minors. (Two segments keep
+    // the candidate above: their parameters are clamped to [0, 1], so a wrong s along the valley
+    // costs at most sin^2(angle) |dir|^2 <= 64 eps |dir|^2, and the batch kernels reproduce that
+    // arithmetic bit for bit. In 2D components that miss each other have their minimum on an
+    // edge.)
+    const std::array<T, 2> st = accurate_minimiser(A, B);
+    if (is_finite(st[0]) && is_finite(st[1])) {
+      ti = closest_param(B, A.at(A.clamp_param(st[0])));
+      si = closest_param(A, B.at(ti));
+      have_interior = true;
+    }
+  }
+
   T best = std::numeric_limits<T>::infinity();
   T bs = T(0), bt = T(0);
   bool found = false;
@@ -222,27 +462,7 @@ template <class T, int N>
   if (B.bounded_hi) consider(closest_param(A, B.end), T(1));
   if (!A.bounded_lo && !B.bounded_lo) consider(T(0), closest_param(B, A.origin));
 
-  bool unique = true;
-  if (D <= T(64) * sqr(eps_v<T>) * ac) {
-    // Parallel: project B's parameter range onto A's line, s(t) = (t b - d) / a, and see
-    // whether it overlaps A's range in an interval.
-    constexpr T inf = std::numeric_limits<T>::infinity();
-    const T s0 = -d / a;
-    T lo1, hi1;
-    if (B.bounded_hi) {
-      const T s1 = (b - d) / a;
-      lo1 = s0 < s1 ? s0 : s1;
-      hi1 = s0 < s1 ? s1 : s0;
-    } else if (B.bounded_lo) {
-      lo1 = b > T(0) ? s0 : -inf;
-      hi1 = b > T(0) ? inf : s0;
-    } else {
-      lo1 = -inf;
-      hi1 = inf;
-    }
-    unique = !overlaps(A.bounded_lo ? T(0) : -inf, A.bounded_hi ? T(1) : inf, lo1, hi1);
-  }
-  return {bs, bt, unique};
+  return {bs, bt, parallel_unique(A, B, a, b, d, D, ac)};
 }
 
 /// What a point-linear query finds; distance() and sqr_distance() both read it. finite is false
@@ -296,7 +516,7 @@ template <class T, int N>
 struct LinearPairCore {
   T s, t;                            ///< parameters on the first and the second component
   std::array<Vec<T, N>, 2> closest;  ///< point_at(first, s), point_at(second, t)
-  T sqr;                             ///< sqr_length(closest[0] - closest[1])
+  T sqr;                             ///< sqr_length(closest[0] - closest[1]); 0 when 2D ones meet
   bool unique;
   bool finite;
 };
@@ -364,7 +584,7 @@ template <class T, int N>
   const Segment<T, N>& v = swap ? x : y;
   const LinLinParams<T> st = linear_linear(view(u), view(v));
   const Vec<T, N> pu = point_at(u, st.s), pv = point_at(v, st.t);
-  const T sqr = sqr_length(pu - pv);
+  const T sqr = st.meet ? T(0) : sqr_length(pu - pv);  // meeting (2D): exactly 0
   if (swap) return {st.t, st.s, {pv, pu}, sqr, st.unique, true};
   return {st.s, st.t, {pu, pv}, sqr, st.unique, true};
 }
@@ -376,6 +596,8 @@ template <class T, int N, class LA, class LB>
   if constexpr (std::is_same_v<LA, Segment<T, N>> && std::is_same_v<LB, Segment<T, N>>) {
     const LinearPairCore<T, N> r = segment_pair(a, b);
     if (!r.finite) return non_finite_distance<T, N, T, T>();
+    // sqr = 0 with distinct points: 2D segments meeting (segment_pair).
+    if (r.sqr == T(0)) return {T(0), T(0), r.closest, r.s, r.t, r.unique};
     return make_distance(r.closest[0], r.closest[1], r.s, r.t, r.unique);
   }
   if (!finite_input(a) || !finite_input(b)) return non_finite_distance<T, N, T, T>();
@@ -385,6 +607,9 @@ template <class T, int N, class LA, class LB>
     if (lex_less(b, a)) return swapped(linear_linear_distance<T, N>(b, a));
   }
   const LinLinParams<T> st = linear_linear(view(a), view(b));
+  if (st.meet) {  // 2D, meeting: distance exactly 0 (the points are the crossing to rounding)
+    return {T(0), T(0), {point_at(a, st.s), point_at(b, st.t)}, st.s, st.t, st.unique};
+  }
   return make_distance(point_at(a, st.s), point_at(b, st.t), st.s, st.t, st.unique);
 }
 
