@@ -535,8 +535,8 @@ struct LinearPairCore {
 /// (c, b, a, -e, -d) and the two Cramer numerators trade places without rounding differences),
 /// so the result is bit for bit the swap without a canonical argument order.
 template <class T, int N>
-[[nodiscard]] inline bool segment_pair_fast(const Segment<T, N>& x, const Segment<T, N>& y,
-                                            LinearPairCore<T, N>& out) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline bool segment_pair_fast(
+    const Segment<T, N>& x, const Segment<T, N>& y, LinearPairCore<T, N>& out) noexcept {
   const Vec<T, N> da = x.p1 - x.p0, db = y.p1 - y.p0, r = x.p0 - y.p0;
   const T a = dot(da, da), b = dot(da, db), c = dot(db, db), d = dot(da, r), e = dot(db, r);
   const T D = sqr_cross_norm(da, db), ac = a * c;
@@ -546,7 +546,7 @@ template <class T, int N>
   constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
   // da, db are finite when a, c are; then d, e are finite exactly when r (x.p0, y.p0) is.
   if (!(a >= lo && c >= lo && ac <= hi && (d - d) + (e - e) == T(0) && D > T(64) * eps_v<T> * ac &&
-        (s_out | t_out | (T(16) * D >= ac))))
+        (s_out | t_out | (T(16) * D >= ac)))) [[unlikely]]
     return false;
   const T sc = select(sh, T(1), T(0)), tc = select(th, T(1), T(0));  // the violated bounds
   // Derivatives of R / 2 along s and t at (sc, tc), and whether moving into the domain along
