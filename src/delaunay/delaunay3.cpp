@@ -782,6 +782,11 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
   std::uint32_t dup = kNone;
   const std::uint32_t t0 = walk(v, last_, &dup);
   if (dup != kNone) {
+    // Keep the smallest input index of equal points, as the lifted-hull method does, so that
+    // the result does not depend on the insertion order: the internal slots v and dup hold equal
+    // coordinates, so their labels can be swapped. duplicate_of then points to the label kept
+    // at that time, always a smaller index; compact() follows these chains to the final one.
+    if (orig_[v] < orig_[dup]) std::swap(orig_[v], orig_[dup]);
     result_.duplicate_of[orig_[v]] = orig_[dup];
     return true;
   }
@@ -1010,8 +1015,11 @@ void Delaunay3<T>::compact(bool in_place) {
   r.tetrahedra.clear();
   r.hull.clear();
   r.duplicate_count = 0;
-  for (std::size_t i = 0; i < r.duplicate_of.size(); ++i)
+  // duplicate_of[i] < i for a duplicate (insert_vertex), so one ascending pass resolves chains.
+  for (std::size_t i = 0; i < r.duplicate_of.size(); ++i) {
+    r.duplicate_of[i] = r.duplicate_of[r.duplicate_of[i]];
     r.duplicate_count += r.duplicate_of[i] != i ? 1u : 0u;
+  }
   dirty_ = false;
   last_out_ = 0;
   if (dimension_ == 2) {

@@ -38,7 +38,8 @@
 // facets through the point at infinity are seen from p when p is strictly beyond their hull face,
 // or on its plane and the lower facet under that face is seen. Duplicates are removed first (the
 // smallest index is kept). O(n log n) expected for random input, O(n^2) worst; about 5x slower
-// than the incremental method (10^4 uniform points: 0.22 s vs 0.04 s): an independent second algorithm that the tests compare against.
+// than the incremental method (10^4 uniform points: 0.22 s vs 0.04 s): an independent second
+// algorithm that the tests compare against.
 //
 // Coplanar input (dimension 2). Both methods add one synthetic point e off the plane (a copy of
 // a first point with one coordinate changed) and tetrahedralize; every cell then has e as a
@@ -62,7 +63,8 @@
 //                            (the convention of hull/hull3.hpp): a closed triangulated surface.
 //                            Points on the hull boundary that are not extreme are vertices too.
 //   duplicate_of[i]          i for a point that is a vertex, else the index of the vertex with
-//                            exactly the same coordinates.
+//                            exactly the same coordinates: of equal points the smallest index
+//                            is kept, by both methods and whatever the insertion order.
 //   dimension                3 for a real tetrahedralization; 2 when all points are coplanar,
 //                            1 collinear, 0 all equal (then tetrahedra and hull are empty and
 //                            duplicate_of is still filled); -1 for empty or bad input.
