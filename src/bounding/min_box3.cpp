@@ -454,11 +454,36 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
         std::lower_bound(hull.vertices.begin(), hull.vertices.end(), i) - hull.vertices.begin());
   };
   const std::size_t nt = hull.triangles.size();
+  // The triangles in a canonical order (each rotated to start at its smallest vertex, then
+  // sorted), so that the result depends on the hull alone and not on the order in which
+  // convex_hull lists it, which changes with the input (duplicated points, say); the rounding
+  // of the normals and the order of the evaluations would otherwise differ in the last bits.
+  std::vector<std::array<std::uint32_t, 3>> adjacency(nt);
   m.tris.resize(nt);
+  {
+    std::vector<std::array<std::uint32_t, 3>> tri(nt), adj(nt);
+    for (std::size_t t = 0; t < nt; ++t) {
+      std::size_t rot = 0;
+      for (std::size_t k = 1; k < 3; ++k)
+        if (hull.triangles[t][k] < hull.triangles[t][rot]) rot = k;
+      for (std::size_t k = 0; k < 3; ++k) {
+        tri[t][k] = local(hull.triangles[t][(k + rot) % 3]);
+        adj[t][k] = hull.adjacency[t][(k + rot) % 3];
+      }
+    }
+    std::vector<std::uint32_t> order(nt), index(nt);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; });
+    for (std::size_t i = 0; i < nt; ++i) index[order[i]] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < nt; ++i) {
+      m.tris[i] = tri[order[i]];
+      for (std::size_t k = 0; k < 3; ++k) adjacency[i][k] = index[adj[order[i]][k]];
+    }
+  }
   m.normal.resize(nt);
   m.normal_err.resize(nt);
   for (std::size_t t = 0; t < nt; ++t) {
-    for (std::size_t k = 0; k < 3; ++k) m.tris[t][k] = local(hull.triangles[t][k]);
     const V3 e1 = m.verts[m.tris[t][1]] - m.verts[m.tris[t][0]],
              e2 = m.verts[m.tris[t][2]] - m.verts[m.tris[t][0]];
     const V3 n = cross(e1, e2);
@@ -468,7 +493,7 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
   }
   for (std::size_t t = 0; t < nt; ++t)
     for (std::size_t e = 0; e < 3; ++e) {
-      const std::uint32_t u = hull.adjacency[t][e];
+      const std::uint32_t u = adjacency[t][e];
       if (u < t) continue;  // each edge once
       m.edges.push_back({m.tris[t][e], m.tris[t][(e + 1) % 3], static_cast<std::uint32_t>(t), u});
     }
