@@ -35,12 +35,13 @@
 // numerators are (dB x r) . (dA x dB) and (dA x r) . (dA x dB), each minor a difference of
 // products accurate to a few eps), then refined by the two projections.
 // In 2D the components either meet or have their minimum on an edge of the domain; whether they
-// meet is decided exactly first (five orientation signs with an exact filtered predicate,
-// exact_cross_sign), and when they do the answer is the crossing: its parameters on both (each
-// closest point is the crossing to rounding) and a distance of exactly 0 (meet_2d). (Two
-// segments reach linear_linear only when segment_pair_fast declines them, i.e. nearly parallel or
-// with the interior minimiser at a small angle; crossing segments that it accepts get a distance
-// of a few eps * scale, not necessarily 0.)
+// meet is decided exactly first (five signs of core's exact predicate turn2d, the turn between
+// two directions given by their end points), and when they do the answer is the crossing: its
+// parameters on both (each closest point is the crossing to rounding) and a distance of exactly 0
+// (meet_2d). (Two segments reach linear_linear only when segment_pair_fast declines them, i.e.
+// nearly parallel or with the interior minimiser at a small angle; crossing segments that it
+// accepts get a distance of a few eps * scale, not necessarily 0.)
+//
 // Error: the squared distance is within a few eps * (scale)^2 of the true one, scale being the
 // magnitude of the closest points (tested against exact rationals); for nearly parallel unbounded
 // components they lie far away, and so does the answer: the true distance itself jumps at exact
@@ -54,6 +55,7 @@
 // pair is numerically undetermined) and the parameter ranges overlap in more than one point
 // (parallel_unique; also when 2D components that nearly parallel meet at one exact crossing).
 
+#include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/branchless.hpp>
@@ -232,51 +234,10 @@ template <class T, int N>
   }
 }
 
-/// hi + lo = a + b exactly (Knuth's TwoSum; no multiplication, so FMA contraction cannot alter
-/// it).
-[[nodiscard]] inline double sum_and_error(double a, double b, double& lo) noexcept {
-  const double hi = a + b;
-  const double bv = hi - a, av = hi - bv;
-  lo = (a - av) + (b - bv);
-  return hi;
-}
-
-/// Exact sign (-1, 0, 1) of (p1 - p0) x (q1 - q0) = perp_dot(p1 - p0, q1 - q0) for double
-/// coordinates: a floating-point filter with orient2d's error bound (two rounded differences,
-/// two products, one subtraction: Shewchuk's stage A), else the eight products of the expanded
-/// determinant, each split exactly into two doubles (product_error), summed exactly as a
-/// nonoverlapping expansion (Shewchuk's Grow-Expansion with zero elimination) whose largest
-/// component carries the sign. Exact under the conditions of orient2d (core/predicates.hpp:
-/// nonzero coordinates between 2^-480 and 2^500; float input always).
-[[nodiscard]] inline int exact_cross_sign(const Vec2<double>& p0, const Vec2<double>& p1,
-                                          const Vec2<double>& q0, const Vec2<double>& q1) noexcept {
-  const double l = (p1[0] - p0[0]) * (q1[1] - q0[1]), r = (p1[1] - p0[1]) * (q1[0] - q0[0]);
-  const double det = l - r;
-  // (3 + 16 eps) eps, eps = 2^-53: orient2d's stage-A bound (core/predicates.hpp).
-  const double bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * (std::abs(l) + std::abs(r));
-  if (det > bound) return 1;
-  if (-det > bound) return -1;
-  const double f[8][2] = {{p1[0], q1[1]},  {-p1[0], q0[1]}, {-p0[0], q1[1]}, {p0[0], q0[1]},
-                          {-p1[1], q1[0]}, {p1[1], q0[0]},  {p0[1], q1[0]},  {-p0[1], q0[0]}};
-  double e[17];
-  int n = 0;
-  const auto grow = [&](double x) {
-    double q = x;
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-      double lo;
-      q = sum_and_error(q, e[i], lo);
-      if (lo != 0.0) e[m++] = lo;
-    }
-    if (q != 0.0) e[m++] = q;
-    n = m;
-  };
-  for (const auto& pq : f) {
-    const double hi = pq[0] * pq[1];
-    grow(product_error(pq[0], pq[1], hi));
-    grow(hi);
-  }
-  return n == 0 ? 0 : (e[n - 1] > 0.0 ? 1 : -1);
+/// Exact sign (-1, 0, 1) of (p1 - p0) x (q1 - q0): core's turn2d predicate.
+[[nodiscard]] inline int cross_sign(const Vec2<double>& p0, const Vec2<double>& p1,
+                                    const Vec2<double>& q0, const Vec2<double>& q1) noexcept {
+  return to_int(turn2d(p0, p1, q0, q1));
 }
 
 /// 2D: whether the components meet, decided exactly, and if so the meeting point (see
@@ -299,15 +260,15 @@ template <class T>
   const Vec2<double> a0 = A.bounded_hi ? ao : zero, a1 = A.bounded_hi ? dbl(A.end) : dbl(A.dir);
   const Vec2<double> b0 = B.bounded_hi ? bo : zero, b1 = B.bounded_hi ? dbl(B.end) : dbl(B.dir);
   LinLinParams<T> no{T(0), T(0), true};
-  const int sg = exact_cross_sign(a0, a1, b0, b1);
+  const int sg = cross_sign(a0, a1, b0, b1);
   if (sg == 0) return no;
-  const int s_lo = sg * exact_cross_sign(b0, b1, bo, ao);  // sign of s
+  const int s_lo = sg * cross_sign(b0, b1, bo, ao);  // sign of s
   if (A.bounded_lo && s_lo < 0) return no;
-  const int s_hi = A.bounded_hi ? sg * exact_cross_sign(b0, b1, bo, dbl(A.end)) : -1;  // of s - 1
+  const int s_hi = A.bounded_hi ? sg * cross_sign(b0, b1, bo, dbl(A.end)) : -1;  // of s - 1
   if (s_hi > 0) return no;
-  const int t_lo = sg * exact_cross_sign(a0, a1, bo, ao);  // sign of t
+  const int t_lo = sg * cross_sign(a0, a1, bo, ao);  // sign of t
   if (B.bounded_lo && t_lo < 0) return no;
-  const int t_hi = B.bounded_hi ? sg * exact_cross_sign(a0, a1, dbl(B.end), ao) : -1;  // of t - 1
+  const int t_hi = B.bounded_hi ? sg * cross_sign(a0, a1, dbl(B.end), ao) : -1;  // of t - 1
   if (t_hi > 0) return no;
   if (s_lo == 0 || s_hi == 0) {  // A's end point lies on B
     const T s = s_lo == 0 ? T(0) : T(1);
