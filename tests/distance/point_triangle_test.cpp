@@ -92,23 +92,15 @@ void exact_oracle() {
 template <class T, int N>
 void harness() {
   const T S = 10;
-  dist::Options<T> opt;
-  // The harness's compass oracle cannot follow the valley of a needle (v2 1e-3 off the midpoint
-  // of a 22-long edge: the distance depends on s + t / 2 alone, a direction the compass does not
-  // step along, and it ran out of its budget 1.6e-4 above the exact 2.8222 at
-  // LOCUS_TEST_SEED=27 case 35, double). Every harness case is checked against the exact oracle
-  // above instead of the compass's agreement (the compass keeps its one-sided check: it never
-  // finds a closer pair).
-  opt.check_agreement = false;
+  // Every harness case is also checked against the exact oracle above (check_pairs's compass
+  // oracle checks agreement to opt.agree; this pins the distance to k eps).
   int n = 0;
-  dist::check_pairs<T, N, Vec<T, N>, Triangle<T, N>>(
-      [&](Rng& rng) {
-        const Vec<T, N> p = rng.vec<T, N>(-T(1.5) * S, T(1.5) * S);
-        const Triangle<T, N> tri = random_triangle<T, N>(rng, S);
-        check_exact(p, tri, S, n++);
-        return std::pair{p, tri};
-      },
-      opt);
+  dist::check_pairs<T, N, Vec<T, N>, Triangle<T, N>>([&](Rng& rng) {
+    const Vec<T, N> p = rng.vec<T, N>(-T(1.5) * S, T(1.5) * S);
+    const Triangle<T, N> tri = random_triangle<T, N>(rng, S);
+    check_exact(p, tri, S, n++);
+    return std::pair{p, tri};
+  });
 }
 
 }  // namespace
