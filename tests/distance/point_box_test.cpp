@@ -285,12 +285,16 @@ TYPED_TEST(PointBoxTest, NonFiniteAndEmptyInputGiveNaNResult) {
       EXPECT_TRUE(std::isnan(sqr_distance(b, p))) << k;
     }
   }
-  for (int k = 0; k < 18; ++k) {
+  // The point outside, inside, and at the centre (where p - center = 0 meets an infinite axis).
+  const OrientedBox3<T> base = oriented_box(box);
+  for (int k = 0; k < 54; ++k) {
     for (const T x : {nan, inf, -inf}) {
-      Vec3<T> p{T(0.5), T(3), T(0.5)};
-      OrientedBox3<T> o = oriented_box(box);
+      const Vec3<T> points[3] = {{T(0.5), T(3), T(0.5)}, base.center + T(0.25) * base.extent,
+                                 base.center};
+      Vec3<T> p = points[k / 18];
+      OrientedBox3<T> o = base;
       Vec3<T>* v[6] = {&p, &o.center, &o.extent, &o.axis[0], &o.axis[1], &o.axis[2]};
-      (*v[k / 3])[k % 3] = x;
+      (*v[k % 18 / 3])[k % 3] = x;
       EXPECT_TRUE(std::isnan(sqr_distance(p, o))) << k;
       EXPECT_TRUE(std::isnan(sqr_distance(o, p))) << k;
       EXPECT_TRUE(dist::is_nan_result(distance(p, o))) << k;
