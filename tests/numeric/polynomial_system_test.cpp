@@ -337,6 +337,27 @@ TYPED_TEST(PolySysTest, TangentCurvesGiveOnePointOfMultiplityTwo) {
                           {{-1, -1}, {1, 1}}, 1e-3, {2, 2}));
 }
 
+// Regression (seed 17 of TangentCurvesGiveOnePointOfMultiplityTwo, double, trial 36): circles
+// about (-8, 6) radius 13/2 and (-333/26, -72/13) radius 6, externally tangent at (-21/2, 0),
+// with the second circle's coefficients rounded to double. The tangent point has y = 0, where
+// the resultant's constant term came out exactly 0 and its linear term as rounding noise
+// (5e-20, below its error bound): the root finder split off y = 0 as an exact simple root and
+// reported the tangency with multiplicity 1.
+TEST(PolynomialSystem, TangencyAtZeroOfTheKeptVariableHasMultiplicityTwo) {
+  const QuadraticCurveCoefficients<double> q1{1, 0, 1, 0x1p+4, -0x1.8p+3, 0x1.cep+5};
+  const QuadraticCurveCoefficients<double> q2{
+      1, 0, 1, 0x1.99d89d89d89d8p+4, 0x1.6276276276276p+3, 0x1.3d6c4ec4ec4ecp+7};
+  for (int swapped = 0; swapped < 2; ++swapped) {
+    const auto r =
+        swapped ? intersect_quadratic_curves(q2, q1) : intersect_quadratic_curves(q1, q2);
+    ASSERT_EQ(r.status, Status::ok);
+    ASSERT_EQ(r.count, 1) << "swapped " << swapped;
+    EXPECT_EQ(r.multiplicity[0], 2) << "swapped " << swapped;
+    EXPECT_NEAR(r.point[0].x, -10.5, 1e-6);
+    EXPECT_NEAR(r.point[0].y, 0.0, 1e-6);
+  }
+}
+
 TYPED_TEST(PolySysTest, CoincidentSharedComponentAndEmpty) {
   using T = TypeParam;
   Rng rng;
