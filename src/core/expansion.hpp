@@ -16,6 +16,8 @@
 // Output arrays must not alias inputs. Capacities are the caller's duty: grow gives at most
 // elen + 1 components, sum elen + flen, scale 2 * elen.
 
+#include <locus/core/error_free.hpp>
+
 #include <cmath>
 
 namespace locus::detail::expansion {
@@ -32,15 +34,8 @@ inline void fast_two_sum(double a, double b, double& x, double& y) noexcept {
   y = b - b_virtual;
 }
 
-/// x + y = a + b exactly, x = fl(a + b), with no precondition (Theorem 7, Knuth).
-inline void two_sum(double a, double b, double& x, double& y) noexcept {
-  x = a + b;
-  const double b_virtual = x - a;
-  const double a_virtual = x - b_virtual;
-  const double b_round = b - b_virtual;
-  const double a_round = a - a_virtual;
-  y = a_round + b_round;
-}
+/// x + y = a + b exactly, x = fl(a + b), with no precondition (Theorem 7, Knuth): core's.
+using locus::two_sum;
 
 /// The roundoff of x = fl(a - b): returns y with x + y = a - b exactly.
 inline double two_diff_tail(double a, double b, double x) noexcept {
@@ -71,12 +66,9 @@ inline void two_product_presplit(double a, double b, double bhi, double blo, dou
   y = alo * blo - err3;
 }
 
-/// x + y = a * b exactly, x = fl(a * b) (Theorem 18, Dekker).
-inline void two_product(double a, double b, double& x, double& y) noexcept {
-  double bhi = 0.0, blo = 0.0;
-  split(b, bhi, blo);
-  two_product_presplit(a, b, bhi, blo, x, y);
-}
+/// x + y = a * b exactly, x = fl(a * b) (Theorem 18, Dekker; a fused multiply-add where the
+/// target has one): core's.
+using locus::two_product;
 
 /// h = e + b (Grow-Expansion, Theorem 10), zero components removed. Returns the length.
 inline int grow_zeroelim(int elen, const double* e, double b, double* h) noexcept {

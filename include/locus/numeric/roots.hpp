@@ -48,6 +48,7 @@
 // Degree n is O(n^2) Newton steps of O(n) flops in the worst case; real_roots() allocates
 // O(n^2) doubles of workspace.
 
+#include <locus/core/error_free.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/numeric/polynomial.hpp>
@@ -124,26 +125,8 @@ inline constexpr double gamma(int k) noexcept {
   return k * unit_roundoff / (1.0 - k * unit_roundoff);
 }
 
-inline void two_sum(double a, double b, double& s, double& e) noexcept {
-  s = a + b;
-  const double z = s - a;
-  e = (a - (s - z)) + (b - z);
-}
-
-inline void two_prod(double a, double b, double& p, double& e) noexcept {
-#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
-  p = a * b;
-  e = std::fma(a, b, -p);
-#else
-  // Dekker's product with Veltkamp splitting (operands are small: the engine scales to |x| < 2).
-  constexpr double split = 134217729.0;  // 2^27 + 1
-  const double ta = split * a, tb = split * b;
-  const double ah = ta - (ta - a), al = a - ah;
-  const double bh = tb - (tb - b), bl = b - bh;
-  p = a * b;
-  e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-#endif
-}
+using locus::two_product;
+using locus::two_sum;
 
 /// Horner value, derivative, and sum |a_i| |x|^i.
 struct Eval {
@@ -168,7 +151,7 @@ inline int compensated_sign(const double* a, int n, double x, double* value) noe
   const double ax = std::abs(x);
   for (int i = n - 1; i >= 0; --i) {
     double p, pe, se;
-    two_prod(s, x, p, pe);
+    two_product(s, x, p, pe);
     two_sum(p, a[i], s, se);
     c = c * x + (pe + se);
     abs_sum = abs_sum * ax + std::abs(a[i]);

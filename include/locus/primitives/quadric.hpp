@@ -22,10 +22,9 @@
 // signs of the coefficients of the characteristic polynomials of A and M (sums of principal
 // minors; Descartes' rule of signs is exact for the real-rooted characteristic polynomial of a
 // symmetric matrix), evaluated exactly with floating-point expansion arithmetic (error-free
-// two-sum and fma two-product, written after Shewchuk's paper; fma keeps it immune to
-// -ffp-contract, but like all error-free transformations it is invalid under -ffast-math). The
-// coefficients are first scaled by a power of two (sign-preserving, since every invariant is
-// homogeneous). The result is exact whenever every nonzero coefficient has its unit in the last
+// two-sum and two-product of core/error_free.hpp, written after Shewchuk's paper; like all
+// error-free transformations it is invalid under -ffast-math). The coefficients are first scaled
+// by a power of two (sign-preserving, since every invariant is homogeneous). The result is exact whenever every nonzero coefficient has its unit in the last
 // place >= 2^-268 times the largest coefficient's scale (about 2^-215 relative magnitude) - always
 // for float input; otherwise some product may underflow and `exact` is false (the answer is still
 // computed the same way).
@@ -60,6 +59,7 @@
 // flops, no allocation; the expansions live on the stack, about 2 KB each).
 
 #include <locus/config.hpp>
+#include <locus/core/error_free.hpp>
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -225,12 +225,6 @@ struct Expansion {
   int n = 0;
 };
 
-inline void two_sum(double a, double b, double& x, double& y) noexcept {
-  x = a + b;
-  const double bv = x - a, av = x - bv;
-  y = (a - av) + (b - bv);
-}
-
 /// e += b exactly (Shewchuk's Grow-Expansion with zero elimination).
 inline void grow(Expansion& e, double b) noexcept {
   double q = b;
@@ -251,7 +245,7 @@ inline void grow(Expansion& e, double b) noexcept {
 inline void add_scaled(Expansion& e, const Expansion& f, double s) noexcept {
   for (int i = 0; i < f.n; ++i) {
     const double p = f.c[i] * s;
-    grow(e, std::fma(f.c[i], s, -p));
+    grow(e, product_error(f.c[i], s, p));
     grow(e, p);
   }
 }
@@ -259,7 +253,7 @@ inline void add_scaled(Expansion& e, const Expansion& f, double s) noexcept {
 /// e += a * b exactly.
 inline void add_product(Expansion& e, double a, double b) noexcept {
   const double p = a * b;
-  grow(e, std::fma(a, b, -p));
+  grow(e, product_error(a, b, p));
   grow(e, p);
 }
 

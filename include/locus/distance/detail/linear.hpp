@@ -55,6 +55,7 @@
 // pair is numerically undetermined) and the parameter ranges overlap in more than one point
 // (parallel_unique; also when 2D components that nearly parallel meet at one exact crossing).
 
+#include <locus/core/error_free.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -165,43 +166,6 @@ struct LinLinParams {
   /// to rounding, and the distance is exactly 0.
   bool meet = false;
 };
-
-/// The rounding error of p = fl(a b): a b - p exactly (a fused multiply-add where the target has
-/// one; elsewhere Dekker's product with Veltkamp's split, which no FMA contraction can alter
-/// because the target has none). Exact when |a b| is above 2^-969 and |a|, |b| below 2^995.
-[[nodiscard]] inline double product_error(double a, double b, double p) noexcept {
-#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
-  return std::fma(a, b, -p);
-#else
-  constexpr double split = 134217729.0;  // 2^27 + 1
-  const double ta = split * a, tb = split * b;
-  const double ah = ta - (ta - a), al = a - ah;
-  const double bh = tb - (tb - b), bl = b - bh;
-  return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-#endif
-}
-
-/// a b - c d accurately: relative error a few eps (not the absolute eps |a b| of the naive
-/// formula), and exactly 0 when a b == c d (barring underflow). Float: the products are exact in
-/// double. Double: Kahan's algorithm with fused multiply-adds where the target has them (error
-/// <= 2 eps, Jeannerod, Louvet and Muller 2013); elsewhere both products split exactly into
-/// p + pe, where p - w is exact when it cancels (Sterbenz), so only the last two additions round.
-template <class T>
-[[nodiscard]] inline T diff_of_products(T a, T b, T c, T d) noexcept {
-  if constexpr (std::is_same_v<T, float>) {
-    return static_cast<float>(double(a) * double(b) - double(c) * double(d));
-  } else if constexpr (std::is_same_v<T, double>) {
-#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
-    const double w = c * d;
-    return std::fma(a, b, -w) - std::fma(c, d, -w);
-#else
-    const double p = a * b, w = c * d;
-    return (p - w) + (product_error(a, b, p) - product_error(c, d, w));
-#endif
-  } else {
-    return a * b - c * d;
-  }
-}
 
 /// The unconstrained minimiser (s, t) of |A(s) - B(t)|^2 from accurately rounded 2x2 minors:
 /// D = |u x v|^2, s = (v x r) . (u x v) / D, t = (u x r) . (u x v) / D with u, v the
