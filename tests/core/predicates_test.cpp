@@ -380,7 +380,12 @@ PointsOf<Pred, T> generate(Rng& rng, int kind) {
               vec_cast<T>(base + Vec<double, 3>{double(l[0]), double(l[1]), double(l[2])});
         }
       }
-      perturb_last(2);
+      // A quarter of these cases are left exactly degenerate. Bumping each coordinate of the
+      // last point by -2..2 ulps alone leaves only 1 case in 5^D on the zero set (1/125 in 3D),
+      // and then the exactly degenerate cases come mostly from the small-integer kind:
+      // insphere<float> met check_oracle's 1% requirement only narrowly (about 1.05% on
+      // average; seeds 6, 9, 17 gave 498, 472, 495 of the 501 needed).
+      if (rng.uniform_int(0, 3) != 0) perturb_last(2);
       break;
     }
     case 3: {                      // huge and tiny magnitudes, random signs and exponents
