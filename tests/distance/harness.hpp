@@ -423,8 +423,15 @@ OracleValue<T> joint_sqr(const A& a, const B& b, const T* u, T w) {
 /// search restarts once more in the coordinate axes from step 1e-2, so that minima on the faces
 /// of the parameter box (clamped coordinates) are approached along the faces (a restart from
 /// 1e-5 left 20% of starts 1.4e-3 high at LOCUS_TEST_SEED=38 PointTriangleTest.Harness2D
-/// case 62, a minimum at a vertex). Fully
-/// deterministic; draws nothing from rng beyond the starting samples.
+/// case 62, a minimum at a vertex). The step size follows full moves only: a trial point is
+/// clamped to the box, and a clamped move that kept less than half of its step still counts as
+/// an improvement but not as a reason to keep the step. Otherwise a direction that points mostly
+/// out of the box creeps along its small in-box component forever: on a flat box (a zero extent
+/// makes one parameter flat, and the first rotation took the basis along it), with the other
+/// parameters at 0 or 1, every pass at h = 1/4 found such a move 4e-8 long and the search spent
+/// its whole budget 2.4e-3 above the minimum (LOCUS_TEST_SEED=3 PointBoxTest.Harness3D case 23,
+/// oriented box; LOCUS_TEST_SEED=34 case 62, aligned box). Fully deterministic; draws nothing
+/// from rng beyond the starting samples.
 template <class A, class B, class T, int N>
 OracleValue<T> oracle_sqr(const A& a, const B& b, Rng& rng, int samples, T w) {
   constexpr int K = Side<A>::k + Side<B>::k;
@@ -507,8 +514,10 @@ OracleValue<T> oracle_sqr(const A& a, const B& b, Rng& rng, int samples, T w) {
         h = T(1e-2);
         moves_at_h = 0;
       }
-      bool moved = false;
+      bool moved = false;  // a move that kept at least half of its step (see above)
       for (const auto& d : dirs) {
+        T step = 0;  // squared length of the unclamped step
+        for (int i = 0; i < K; ++i) step += h * d[sz(i)] * h * d[sz(i)];
         for (T sg : {T(1), T(-1)}) {
           P c = best;
           for (int i = 0; i < K; ++i) {
@@ -516,7 +525,12 @@ OracleValue<T> oracle_sqr(const A& a, const B& b, Rng& rng, int samples, T w) {
             if (!((periodic >> i) & 1u)) c[sz(i)] = std::clamp(c[sz(i)], T(0), T(1));
           }
           const auto f = joint_sqr<A, B, T, N>(a, b, c.data(), w);
-          if (f.sqr < fbest.sqr) fbest = f, best = c, moved = true;
+          if (f.sqr < fbest.sqr) {
+            T kept = 0;
+            for (int i = 0; i < K; ++i) kept += (c[sz(i)] - best[sz(i)]) * (c[sz(i)] - best[sz(i)]);
+            if (T(4) * kept >= step) moved = true;
+            fbest = f, best = c;
+          }
         }
       }
       // Long flat valleys (nearly parallel lines) would take ~1/h moves: expand the step while
