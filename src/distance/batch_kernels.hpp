@@ -53,11 +53,12 @@ struct PointTriangleLanes {
 template <class T>
 LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, const V3<T>& v0,
                                                              const V3<T>& v1, const V3<T>& v2) {
-  // The origin at the vertex opposite the longest edge (rotation r1: (v1, v2, v0), r2: (v2, v0,
-  // v1)).
+  // The origin at v0 when the angle there is well-shaped, else at the vertex opposite the longest
+  // edge (rotation r1: (v1, v2, v0), r2: (v2, v0, v1)).
   const V3<T> d01 = v1 - v0, d02 = v2 - v0, d12 = v2 - v1;
   const V<T> l01 = dot(d01, d01), l02 = dot(d02, d02), l12 = dot(d12, d12);
-  const M<T> keep = (l12 >= l01) & (l12 >= l02);
+  const V<T> b0 = dot(d01, d02), ac0 = l01 * l02;
+  const M<T> keep = (T(16) * (ac0 - b0 * b0) >= ac0) | ((l12 >= l01) & (l12 >= l02));
   const M<T> r1 = ~keep & (l02 >= l01), r2 = ~keep & ~(l02 >= l01);
   const V3<T> o = lanes::sel<T>(r1, v1, lanes::sel<T>(r2, v2, v0));
   const V3<T> x = lanes::sel<T>(r1, v2, lanes::sel<T>(r2, v0, v1));
@@ -66,24 +67,26 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, con
   const V<T> a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
   const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
   const V<T> ac = a * c, det = ac - b * b;
-  const M<T> fast =
-      (T(16) * det >= ac) & (a >= kMin<T>)&(c >= kMin<T>)&(f >= kMin<T>)&(ac <= kMax<T>)&(
-                                f <= kMax<T>)&(((d - d) + (e - e)) + (g - g) == T(0));
   const V<T> sn = c * d - b * e, tn = a * e - b * d;
+  const M<T> fast = (T(16) * det >= ac) &
+                    (a >= kMin<T>)&(c >= kMin<T>)&(f >= kMin<T>)&(ac <= kMax<T>)&(f <= kMax<T>)&(
+                        ((((d - d) + (e - e)) + (g - g)) + (sn - sn)) + (tn - tn) == T(0));
   const M<T> inside = (sn >= T(0)) & (tn >= T(0)) & (sn + tn <= det);
   const V<T> s = sn / det, t = tn / det;
-  // Outside: the nearest of the three edges' clamped projections.
+  // Outside: the nearest of the edges whose constraints the plane solution violates (all three
+  // evaluated, the others masked out; ties keep the first in the order o x, o y, x y).
+  const M<T> v01 = tn < T(0), v02 = sn<T(0), v12 = sn + tn> det;
   const V<T> zero = a - a, one = zero + T(1);
   const V<T> l0 = lanes::clamp_minmax<T>(d / a, zero, one);
   const V<T> l1 = lanes::clamp_minmax<T>(e / c, zero, one);
   const V<T> l2 = lanes::clamp_minmax<T>(g / f, zero, one);
   const V3<T> q0v = w0 - l0 * e0, q1v = w0 - l1 * e1, q2v = w1 - l2 * e2;
   const V<T> q0 = dot(q0v, q0v), q1 = dot(q1v, q1v), q2 = dot(q2v, q2v);
-  const M<T> m1 = q1 < q0;
+  const M<T> m1 = v02 & (~v01 | (q1 < q0));
   const V<T> q01 = sel<T>(m1, q1, q0);
   const V<T> u = sel<T>(m1, T(1) - l1, T(1) - l0), v = sel<T>(m1, zero, l0);
   const V<T> w = sel<T>(m1, l1, zero);
-  const M<T> m2 = q2 < q01;
+  const M<T> m2 = v12 & (~(v01 | v02) | (q2 < q01));
   V3<T> rb{sel<T>(m2, zero, u), sel<T>(m2, T(1) - l2, v), sel<T>(m2, l2, w)};
   rb = lanes::sel<T>(inside, V3<T>{T(1) - s - t, s, t}, rb);
   const V3<T> bary{sel<T>(r1, rb.z, sel<T>(r2, rb.y, rb.x)),

@@ -274,3 +274,37 @@ TYPED_TEST(PointTriangleTest, NeedleTriangleIn3DProjectsAccurately) {
     EXPECT_NEAR(d.distance, T(0.3), tol<T>(8) / thin);
   }
 }
+
+// A point so far away that the plane solution's numerators overflow (c d and b e both infinite,
+// their difference NaN) while the squared distance is still finite: the NaN violates no
+// constraint, and the general code used to try no edge and return 0 (the fast path, taking the
+// same test, left v1 v2 unvisited and read an unset result). Every edge is a candidate now; the
+// nearest point is the vertex v1 exactly.
+TYPED_TEST(PointTriangleTest, FarPointWhosePlaneSolutionOverflows) {
+  using T = TypeParam;
+  const T big = std::is_same_v<T, float> ? T(1e15) : T(1e100);
+  const T far = std::is_same_v<T, float> ? T(1e19) : T(3e150);
+  for (const bool needle : {false, true}) {
+    const Triangle3<T> tri{
+        {T(0), T(0), T(0)}, {big, T(0), T(0)}, {T(0.5) * big, needle ? big * T(1e-4) : big, T(0)}};
+    const Vec3<T> p{far, T(0), T(0)};
+    const auto d = distance(p, tri);
+    EXPECT_EQ(d.closest[1], tri.v1) << "needle " << needle;
+    EXPECT_EQ(d.sqr_distance, sqr_length(p - tri.v1)) << "needle " << needle;
+    EXPECT_EQ(sqr_distance(p, tri), d.sqr_distance);
+    EXPECT_TRUE(std::isfinite(d.sqr_distance));
+  }
+  // The numerators overflow for a unit triangle and a point near the end of the range: the
+  // squared distance overflows to infinity (not NaN), and the closest point is a point of the
+  // triangle.
+  const T m = std::numeric_limits<T>::max() / T(8);
+  const Triangle3<T> unit{
+      {T(0.84), T(0.66), T(0.31)}, {T(-0.35), T(-0.59), T(-0.55)}, {T(-0.57), T(-0.68), T(0.77)}};
+  const Vec3<T> p{T(0.83) * m, T(0.92) * m, T(0.8) * m};
+  const auto d = distance(p, unit);
+  EXPECT_EQ(d.sqr_distance, std::numeric_limits<T>::infinity());
+  EXPECT_EQ(sqr_distance(p, unit), d.sqr_distance);
+  const Vec3<T> bary = d.param_b;
+  EXPECT_TRUE(bary.x >= T(0) && bary.y >= T(0) && bary.z >= T(0));
+  EXPECT_NEAR(bary.x + bary.y + bary.z, T(1), tol<T>(4));
+}
