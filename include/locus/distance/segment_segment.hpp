@@ -11,8 +11,8 @@
 // parameter domain; when the directions are well separated and the unconstrained minimiser lies
 // in the domain it is the answer. When it lies outside and the directions are not nearly
 // parallel, the answer is ONE exact clamped point-segment projection on an edge of the domain
-// (chosen by the violated constraints and, at a corner, by the sign of the derivative; computed
-// with selects, no data-dependent branch: segment_pair_fast). Otherwise (nearly parallel, or
+// (chosen by the violated constraints and, at a corner, by the sign of the derivative:
+// segment_pair_fast). Otherwise (nearly parallel, or
 // degenerate) the minimum over the in-domain interior point and the exact point-to-component
 // solutions on the domain's finite edges is taken; in 2D, whether nearly parallel segments meet
 // is decided exactly (orientation signs) first, and if they do the closest points are the crossing

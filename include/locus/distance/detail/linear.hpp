@@ -454,9 +454,10 @@ struct LinearPairCore {
 /// domain whose constraint the minimiser violates: the one edge when it violates one; at a corner
 /// region (two violated) the edge along which moving away from the corner descends (both cannot
 /// descend when |dA x dB| > 0, as in point_triangle.hpp; when neither does, or rounding says both,
-/// the corner itself). So every case is ONE exact clamped 1D projection, chosen with selects: the
-/// region is unpredictable on mixed input, and a mispredicted branch costs more than the whole
-/// query. Each operation is mirrored exactly under swapping the arguments ((a, b, c, d, e) ->
+/// the corner itself). So every case is ONE exact clamped 1D projection, chosen by branches: on
+/// mixed input they cost less than computing both divisions and selecting (1.2x per query,
+/// measured); the batch kernels compute both and select, with the same bits. Each operation is
+/// mirrored exactly under swapping the arguments ((a, b, c, d, e) ->
 /// (c, b, a, -e, -d) and the two Cramer numerators trade places without rounding differences),
 /// so the result is bit for bit the swap without a canonical argument order.
 template <class T, int N>
@@ -473,20 +474,29 @@ template <class T, int N>
   if (!(a >= lo && c >= lo && ac <= hi && (d - d) + (e - e) == T(0) && D > T(64) * eps_v<T> * ac &&
         (s_out | t_out | (T(16) * D >= ac)))) [[unlikely]]
     return false;
-  const T sc = select(sh, T(1), T(0)), tc = select(th, T(1), T(0));  // the violated bounds
-  // Derivatives of R / 2 along s and t at (sc, tc), and whether moving into the domain along
-  // each descends.
-  const T gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
-  const bool ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
-  const bool dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
-  const bool move_t = s_out & ((!t_out) | (dt & (!ds)));  // s = sc, t projected
-  const bool move_s = t_out & ((!s_out) | (ds & (!dt)));  // t = tc, s projected
-  const bool pin_s = s_out & (!move_s), pin_t = t_out & (!move_t);
-  const T qs = select(move_s, b * tc - d, sn) / select(move_s, a, D);  // in [0, 1] if inside
-  const T qt = select(move_t, b * sc + e, tn) / select(move_t, c, D);
   const T zero = a - a, one = zero + T(1);  // computed bounds: the clamps become max/min
-  const T s = select(pin_s, sc, clamp_minmax(qs, zero, one));
-  const T t = select(pin_t, tc, clamp_minmax(qt, zero, one));
+  T s, t;
+  if (!(s_out | t_out)) {
+    s = clamp_minmax(sn / D, zero, one);
+    t = clamp_minmax(tn / D, zero, one);
+  } else {
+    const T sc = sh ? T(1) : T(0), tc = th ? T(1) : T(0);  // the violated bounds
+    // Derivatives of R / 2 along s and t at (sc, tc), and whether moving into the domain along
+    // each descends.
+    const T gs = (a * sc - b * tc) + d, gt = (c * tc - b * sc) - e;
+    const bool ds = (sl & (gs < T(0))) | (sh & (gs > T(0)));
+    const bool dt = (tl & (gt < T(0))) | (th & (gt > T(0)));
+    if (s_out & ((!t_out) | (dt & (!ds)))) {  // s = sc, t projected
+      s = sc;
+      t = clamp_minmax((b * sc + e) / c, zero, one);
+    } else if (t_out & ((!s_out) | (ds & (!dt)))) {  // t = tc, s projected
+      s = clamp_minmax((b * tc - d) / a, zero, one);
+      t = tc;
+    } else {  // the corner
+      s = sc;
+      t = tc;
+    }
+  }
   const Vec<T, N> pa = lerp(x.p0, x.p1, s), pb = lerp(y.p0, y.p1, t);
   out = {s, t, {pa, pb}, sqr_length(pa - pb), true, true};
   return true;
