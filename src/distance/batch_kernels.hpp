@@ -68,14 +68,16 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, con
   const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
   const V<T> ac = a * c, det = ac - b * b;
   const V<T> sn = c * d - b * e, tn = a * e - b * d;
+  // The edge x y's range test counts only where that edge is a candidate (as in the scalar code).
+  const M<T> v01 = (tn < T(0)), v02 = (sn < T(0)), v12 = (sn + tn > det);
   const M<T> fast = (T(16) * det >= ac) &
-                    (a >= kMin<T>)&(c >= kMin<T>)&(f >= kMin<T>)&(ac <= kMax<T>)&(f <= kMax<T>)&(
-                        ((((d - d) + (e - e)) + (g - g)) + (sn - sn)) + (tn - tn) == T(0));
+                    (a >= kMin<T>)&(c >= kMin<T>)&(ac <= kMax<T>)&(
+                        (((d - d) + (e - e)) + (sn - sn)) + (tn - tn) == T(0)) &
+                    (~v12 | ((f >= kMin<T>)&(f <= kMax<T>)&(g - g == T(0))));
   const M<T> inside = (sn >= T(0)) & (tn >= T(0)) & (sn + tn <= det);
   const V<T> s = sn / det, t = tn / det;
   // Outside: the nearest of the edges whose constraints the plane solution violates (all three
   // evaluated, the others masked out; ties keep the first in the order o x, o y, x y).
-  const M<T> v01 = tn < T(0), v02 = sn<T(0), v12 = sn + tn> det;
   const V<T> zero = a - a, one = zero + T(1);
   const V<T> l0 = lanes::clamp_minmax<T>(d / a, zero, one);
   const V<T> l1 = lanes::clamp_minmax<T>(e / c, zero, one);

@@ -152,22 +152,22 @@ template <class T, int N>
                                                                   const Vec<T, N>& x,
                                                                   const Vec<T, N>& y, Vec3<T>& rb,
                                                                   Vec<T, N>& cp, T& sqr) noexcept {
-  const Vec<T, N> e0 = x - o, e1 = y - o, e2 = y - x;
-  const Vec<T, N> w0 = p - o, w1 = p - x;
-  const T a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
-  const T d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
+  const Vec<T, N> e0 = x - o, e1 = y - o, w0 = p - o;
+  const T a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1);
+  const T d = dot(e0, w0), e = dot(e1, w0);
   const T ac = a * c, det = ac - b * b;  // no harmful cancellation when well-shaped
   constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
   // Well-shaped (16 |e0 x e1|^2 >= |e0|^2 |e1|^2: Cramer's rule is accurate to a few ulps),
-  // no squares out of range, and finite input: e0, e1, e2 are finite when a, c, f are, and
-  // then d, e, g are finite exactly when p is (a NaN or an infinity in w0 reaches every
-  // product). [[likely]]: GCC predicts a floating-point == to be false, took this path for
-  // cold and left its callees out of line.
-  // The plane solution's numerators must be finite too: they overflow for a point far away
-  // (beyond ~sqrt(max) / |e| from a large triangle), and a NaN there would violate no constraint.
+  // no squares out of range, and finite input: e0, e1 are finite when a, c are (and so are the
+  // vertices), and then d, e are finite exactly when p is (a NaN or an infinity in w0 reaches
+  // every product). The plane solution's numerators must be finite too: they overflow for a point
+  // far away (beyond ~sqrt(max) / |e| from a large triangle), and a NaN there would violate no
+  // constraint. The edge x y has its own range test, where it is needed. [[unlikely]]: GCC
+  // predicts a floating-point == to be false, took the fast path for cold and left its callees
+  // out of line.
   const T sn = c * d - b * e, tn = a * e - b * d;  // det * (s, t) of the plane solution
-  if (!(T(16) * det >= ac && a >= lo && c >= lo && f >= lo && ac <= hi && f <= hi &&
-        (d - d) + (e - e) + (g - g) + (sn - sn) + (tn - tn) == T(0))) [[unlikely]]
+  if (!(T(16) * det >= ac && a >= lo && c >= lo && ac <= hi &&
+        (d - d) + (e - e) + (sn - sn) + (tn - tn) == T(0))) [[unlikely]]
     return false;
   if (sn >= T(0) && tn >= T(0) && sn + tn <= det) {
     const T s = sn / det, t = tn / det;
@@ -197,6 +197,10 @@ template <class T, int N>
       }
     }
     if (sn + tn > det) {
+      const Vec<T, N> e2 = y - x, w1 = p - x;
+      const T f = dot(e2, e2), g = dot(e2, w1);
+      if (!(f >= lo && f <= hi && g - g == T(0))) [[unlikely]]
+        return false;
       const T l = clamp_minmax(g / f, zero, one);
       const T q = sqr_length(w1 - l * e2);
       if (!have || q < best) rb = {zero, T(1) - l, l};
@@ -208,47 +212,56 @@ template <class T, int N>
   return true;
 }
 
+/// point_triangle for a triangle that is not well-shaped at v0: the origin at the vertex opposite
+/// the longest edge, whose angle is the triangle's largest (>= 60 degrees), so that the
+/// well-shaped test fails only for needles (largest angle above ~165 degrees), whatever the vertex
+/// order. Rotation r: (o, x, y) = (v1, v2, v0) or (v2, v0, v1) (v0 again when v1 v2 is the
+/// longest edge), chosen with selects. Out of line: it keeps point_triangle small enough to inline.
+template <class T, int N>
+[[nodiscard]] PointTriangleCore<T, N> point_triangle_rotated(const Vec<T, N>& p,
+                                                             const Triangle<T, N>& tri) noexcept {
+  const T l01 = sqr_length(tri.v1 - tri.v0), l02 = sqr_length(tri.v2 - tri.v0);
+  const T l12 = sqr_length(tri.v2 - tri.v1);
+  const bool keep = l12 >= l01 && l12 >= l02;
+  const bool r1 = !keep && l02 >= l01, r2 = !keep && !(l02 >= l01);
+  Vec<T, N> o, x, y;
+  for (int i = 0; i < N; ++i) {
+    o[i] = select(r1, tri.v1[i], select(r2, tri.v2[i], tri.v0[i]));
+    x[i] = select(r1, tri.v2[i], select(r2, tri.v0[i], tri.v1[i]));
+    y[i] = select(r1, tri.v0[i], select(r2, tri.v1[i], tri.v2[i]));
+  }
+  Vec3<T> rb{};
+  Vec<T, N> cp{};
+  T sqr{};
+  if (point_triangle_fast(p, o, x, y, rb, cp, sqr)) {
+    // The barycentric coordinates back in the triangle's own vertex order.
+    const Vec3<T> bary{select(r1, rb.z, select(r2, rb.y, rb.x)),
+                       select(r1, rb.x, select(r2, rb.z, rb.y)),
+                       select(r1, rb.y, select(r2, rb.x, rb.z))};
+    return {bary, cp, sqr, true};
+  }
+  return point_triangle_general(p, tri);
+}
+
 /// The point-triangle query behind distance() and sqr_distance(): the fast path for finite input
 /// and a well-shaped triangle in 3D (see the header comment), the general code for everything
 /// else.
 template <class T, int N>
-[[nodiscard]] inline PointTriangleCore<T, N> point_triangle(const Vec<T, N>& p,
-                                                            const Triangle<T, N>& tri) noexcept {
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline PointTriangleCore<T, N> point_triangle(
+    const Vec<T, N>& p, const Triangle<T, N>& tri) noexcept {
   if constexpr (N != 2) {
-    Vec3<T> rb;
-    Vec<T, N> cp;
-    T sqr;
-    // The origin at v0 when the angle there is well-shaped (the fast path's own test, on the same
-    // values), which holds for most triangles and needs no rotation.
+    // The origin at v0 when the angle there is well-shaped (the fast path's own test), which
+    // holds for most triangles and needs no rotation; otherwise the rotation.
+    Vec3<T> rb{};
+    Vec<T, N> cp{};
+    T sqr{};
+    if (point_triangle_fast(p, tri.v0, tri.v1, tri.v2, rb, cp, sqr)) [[likely]]
+      return {rb, cp, sqr, true};
     const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v0;
-    const T l01 = dot(e0, e0), l02 = dot(e1, e1), b0 = dot(e0, e1), ac0 = l01 * l02;
-    if (T(16) * (ac0 - b0 * b0) >= ac0) [[likely]] {
-      if (point_triangle_fast(p, tri.v0, tri.v1, tri.v2, rb, cp, sqr)) [[likely]]
-        return {rb, cp, sqr, true};
-      return detail::point_triangle_general(p, tri);
-    }
-    // Otherwise the origin at the vertex opposite the longest edge: its angle is the triangle's
-    // largest (>= 60 degrees), so the well-shaped test fails only for needles (largest angle
-    // above ~165 degrees), whatever the vertex order. Rotation r: (o, x, y) = (v1, v2, v0) or
-    // (v2, v0, v1) (v0 again when v1 v2 is the longest edge), chosen with selects.
-    const T l12 = sqr_length(tri.v2 - tri.v1);
-    const bool keep = l12 >= l01 && l12 >= l02;
-    const bool r1 = !keep && l02 >= l01, r2 = !keep && !(l02 >= l01);
-    Vec<T, N> o, x, y;
-    for (int i = 0; i < N; ++i) {
-      o[i] = select(r1, tri.v1[i], select(r2, tri.v2[i], tri.v0[i]));
-      x[i] = select(r1, tri.v2[i], select(r2, tri.v0[i], tri.v1[i]));
-      y[i] = select(r1, tri.v0[i], select(r2, tri.v1[i], tri.v2[i]));
-    }
-    if (point_triangle_fast(p, o, x, y, rb, cp, sqr)) {
-      // The barycentric coordinates back in the triangle's own vertex order.
-      const Vec3<T> bary{select(r1, rb.z, select(r2, rb.y, rb.x)),
-                         select(r1, rb.x, select(r2, rb.z, rb.y)),
-                         select(r1, rb.y, select(r2, rb.x, rb.z))};
-      return {bary, cp, sqr, true};
-    }
+    const T ac0 = dot(e0, e0) * dot(e1, e1), b0 = dot(e0, e1);
+    if (!(T(16) * (ac0 - b0 * b0) >= ac0)) return point_triangle_rotated(p, tri);
   }
-  return detail::point_triangle_general(p, tri);
+  return point_triangle_general(p, tri);
 }
 
 }  // namespace detail
