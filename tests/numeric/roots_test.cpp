@@ -505,3 +505,78 @@ TYPED_TEST(RootsTest, ToleranceOptionsTurnNearTangenciesIntoDoubleRoots) {
   ob.coefficient_error = bad;
   EXPECT_EQ(solve_quadratic(T(1), T(-2), T(1), ob).status, Status::non_finite_input);
 }
+
+// Regression (PolySysTest.TangentCurvesGiveOnePointOfMultiplityTwo, double, seed 17, fixed first
+// in polynomial_system.hpp by 250d8df): an exactly zero constant term made the root finder split
+// off x = 0 as an exact root and deflate, so a linear coefficient that was only noise (5e-20,
+// within its error bound 6e-18) became a second simple root beside 0: the double root at 0 came
+// out as two simple roots. With error bounds, low coefficients within them after an exact zero
+// constant term now raise the multiplicity of 0; above their bounds they stay data.
+TYPED_TEST(RootsTest,
+           LowCoefficientsWithinTheirBoundsAfterAZeroConstantRaiseTheMultiplicityOfZero) {
+  using T = TypeParam;
+  const T noise = T(5e-20), above = T(1e-16);  // 1e-16 > 2 * 6e-18: a root, by any criterion
+  const double e2[3] = {0, 6e-18, 0};
+  RootOptions o2;
+  o2.coefficient_error = e2;
+  // Without bounds the coefficients are exact: x (x + 5e-20) has the simple roots -5e-20 and 0
+  // (what the bounds gave as well before the fix).
+  const auto exact = solve_quadratic(T(0), noise, T(1));
+  ASSERT_EQ(exact.count, 2);
+  EXPECT_EQ(exact.roots[0].value, -noise);
+  EXPECT_EQ(exact.roots[1].value, T(0));
+  EXPECT_EQ(exact.roots[0].multiplicity, 1);
+  EXPECT_EQ(exact.roots[1].multiplicity, 1);
+  for (const T c1 : {noise, -noise}) {
+    const auto r = solve_quadratic(T(0), c1, T(1), o2);
+    ASSERT_EQ(r.count, 1) << c1;
+    EXPECT_EQ(r.roots[0].value, T(0));
+    EXPECT_EQ(r.roots[0].multiplicity, 2);
+  }
+  for (const T c1 : {above, -above}) {
+    const auto r = solve_quadratic(T(0), c1, T(1), o2);
+    ASSERT_EQ(r.count, 2) << c1;
+    const int zi = c1 > 0 ? 1 : 0;  // the other root is -c1
+    EXPECT_EQ(r.roots[zi].value, T(0));
+    EXPECT_NEAR(r.roots[1 - zi].value, -c1, tol<T>(4) * above);
+    EXPECT_EQ(r.roots[0].multiplicity, 1);
+    EXPECT_EQ(r.roots[1].multiplicity, 1);
+  }
+  // Beside other roots: x^2 (x - 1)(x + 2) with its linear coefficient perturbed.
+  const double e4[5] = {0, 6e-18, 0, 0, 0};
+  RootOptions o4;
+  o4.coefficient_error = e4;
+  const auto q = solve_quartic(T(0), noise, T(-2), T(1), T(1), o4);
+  ASSERT_EQ(q.count, 3);
+  const T want[3] = {T(-2), T(0), T(1)};
+  const int mult[3] = {1, 2, 1};
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(q.roots[i].value, want[i], tol<T>(4)) << i;
+    EXPECT_EQ(q.roots[i].multiplicity, mult[i]) << i;
+  }
+  EXPECT_EQ(q.roots[1].value, T(0));
+  // Above the bound: the roots 0 and about above / 2 (above - 2x + x^2 + x^3 = 0) stay apart.
+  const auto qa = solve_quartic(T(0), above, T(-2), T(1), T(1), o4);
+  ASSERT_EQ(qa.count, 4);
+  EXPECT_EQ(qa.roots[1].value, T(0));
+  EXPECT_NEAR(qa.roots[2].value, above / 2, tol<T>(4) * above);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(qa.roots[i].multiplicity, 1) << i;
+  // Two noise coefficients in a row through real_roots: x (5e-20 - 5e-20 x + x^2) is x^3 within
+  // the bounds, a triple root at 0; with the quadratic coefficient exact, 0 is only double and
+  // 5e-20 (the root of -5e-20 + x) a simple root.
+  const double e3[4] = {0, 6e-18, 6e-18, 0};
+  RootOptions o3;
+  o3.coefficient_error = e3;
+  const Polynomial<T> p{T(0), noise, -noise, T(1)};
+  const T inf = std::numeric_limits<T>::infinity();
+  const auto t = real_roots(p, -inf, inf, o3);
+  ASSERT_EQ(t.count(), 1);
+  EXPECT_EQ(t.roots[0].value, T(0));
+  EXPECT_EQ(t.roots[0].multiplicity, 3);
+  const auto d = real_roots(p, -inf, inf, o4);
+  ASSERT_EQ(d.count(), 2);
+  EXPECT_EQ(d.roots[0].value, T(0));
+  EXPECT_EQ(d.roots[0].multiplicity, 2);
+  EXPECT_NEAR(d.roots[1].value, noise, tol<T>(4) * noise);
+  EXPECT_EQ(d.roots[1].multiplicity, 1);
+}

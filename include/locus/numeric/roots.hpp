@@ -12,9 +12,14 @@
 //  1. Exact preparation: trailing zero coefficients drop the degree (only EXACT zeros do: a tiny
 //     leading coefficient is data and yields correspondingly large roots; pass an interval to
 //     real_roots() or filter if you do not want them). Zero low coefficients give the root 0 of
-//     the right multiplicity exactly. The variable and the polynomial are scaled by powers of two
-//     (exact) so that every root lies in (-1, 1) and the largest coefficient is in [1, 2): no
-//     overflow for huge or tiny coefficients.
+//     the right multiplicity exactly. When the constant term is exactly 0 and the caller gives
+//     coefficient error bounds (RootOptions::coefficient_error), the following low coefficients
+//     with |a_i| <= error_i count as zero too: 0 is then a root of the multiplicity a polynomial
+//     within the bounds can have there (c0 = 0, |c1| <= e1, c2 = 1 is a double root at 0, not
+//     0 and -c1), as multiple roots elsewhere are (step 4). Without bounds only exact zeros count;
+//     a non-zero constant term is never dropped (roots near 0 then go through step 4). The variable
+//     and the polynomial are scaled by powers of two (exact) so that every root lies in (-1, 1) and
+//     the largest coefficient is in [1, 2): no overflow for huge or tiny coefficients.
 //  2. Derivative recursion: the real roots of p' split the line into intervals on which p is
 //     monotone, so each holds at most one root, found when p changes sign between the ends.
 //     Starting points: the cancellation-free closed form for the quadratic level; above it the
@@ -76,6 +81,8 @@ struct Root {
 ///  * multiplicity_tolerance * sum |a_i| |x|^i (relative; default 0);
 ///  * sum coefficient_error[i] |x|^i, when the caller knows absolute error bounds of the
 ///    coefficients (e.g. coefficients computed from other data; entries beyond the span are 0).
+///    With these bounds and an exactly zero constant term, low coefficients within their bounds
+///    also count as zero: they raise the multiplicity of the root 0 (see the header comment).
 /// Raise them for coefficients that carry their own errors, so that a tangency computed from
 /// rounded data is reported as a double root rather than as two close roots or none.
 struct RootOptions {
@@ -367,6 +374,14 @@ inline int real_roots_engine(const double* a_in, const double* err_in, int n, do
   if (n <= 0) return 0;
   int z = 0;  // multiplicity of the root 0
   while (a_in[z] == 0.0) ++z;
+  // An exactly zero constant term makes 0 an exact root that is split off below, so the roots of
+  // the rest are never compared with it. Low coefficients that are within the caller's error
+  // bounds would then give simple roots within noise of 0 instead of raising its multiplicity (a
+  // double root at 0 came out as 0 and -1.5e-15); they are taken as zero, which is exactly the
+  // condition for 0 being a root of that multiplicity of a polynomial within the bounds. The
+  // leading coefficient (non-zero) is never dropped.
+  if (err_in && z > 0)
+    while (z < n && std::abs(a_in[z]) <= std::abs(err_in[z])) ++z;
   const double* a = a_in + z;
   const int m = n - z;
   if (m == 0) {
