@@ -31,8 +31,8 @@
 //    coefficient errors of R (RootOptions::coefficient_error = tangency_tolerance, default
 //    16 eps(double), times the resultant formula evaluated on absolute values), so a tangency
 //    is reported as ONE point with multiplicity 2 instead of being lost to the rounding of the
-//    computation (also at y = 0: when R's constant term is exactly 0, the following coefficients
-//    within their errors are set to zero, since the root finder trusts exact zeros). The input
+//    computation (also at y = 0, where R's constant term may be exactly 0: the root finder then
+//    counts the following coefficients within their errors as zero). The input
 //    coefficients are taken as exact: a tangency that rounding the DATA already destroyed (float
 //    input, coefficients computed from other numbers) is a near miss or two close points unless the
 //    caller passes a tangency_tolerance of the data's relative precision (e.g. 16 eps(float));
@@ -347,17 +347,10 @@ template <Real T>
   // as precise as T: the root finder treats R's coefficients as known to tangency_tol * Rabs_i.
   std::array<double, 5> r_err{};
   for (std::size_t i = 0; i < 5; ++i) r_err[i] = tangency_tol * Rabs[i];
-  // The root finder trusts an exactly zero constant coefficient: it splits off the root y = 0
-  // and deflates, so low coefficients that are only rounding noise would then become simple
-  // roots beside 0 instead of raising its multiplicity (circles tangent at y = 0: R[0] = 0 and
-  // |R[1]| = 5e-20 below its error 6e-18 gave the simple roots 0 and -1.5e-15, multiplicity 1).
-  // Those coefficients are zeroed, so that y = 0 gets the multiplicity the coefficient errors
-  // allow, as every other y does.
-  if (R[0] == 0.0) {
-    std::size_t deg = 4;
-    while (deg > 0 && R[deg] == 0.0) --deg;
-    for (std::size_t i = 1; i < deg && std::abs(R[i]) <= r_err[i]; ++i) R[i] = 0.0;
-  }
+  // y = 0 gets the multiplicity these errors allow as every other y does: when R[0] is exactly 0
+  // the root finder counts the following coefficients within their errors as zero (circles
+  // tangent at y = 0: |R[1]| = 5e-20 below its error 6e-18 would otherwise give the simple roots
+  // 0 and -1.5e-15).
   RootOptions ro;
   ro.coefficient_error = r_err;
   const auto ry = solve_quartic(R[0], R[1], R[2], R[3], R[4], ro);
