@@ -32,12 +32,12 @@
 //    16 eps(double), times the resultant formula evaluated on absolute values), so a tangency
 //    is reported as ONE point with multiplicity 2 instead of being lost to the rounding of the
 //    computation (also at y = 0, where R's constant term may be exactly 0: the root finder then
-//    counts the following coefficients within their errors as zero). The input
-//    coefficients are taken as exact: a tangency that rounding the DATA already destroyed (float
-//    input, coefficients computed from other numbers) is a near miss or two close points unless the
+//    counts the following coefficients within their errors as zero). The input coefficients are
+//    taken as exact: a tangency that rounding the DATA already destroyed (float input,
+//    coefficients computed from other numbers) is a near miss or two close points unless the
 //    caller passes a tangency_tolerance of the data's relative precision (e.g. 16 eps(float));
-//    curves whose intersections are closer than about the square root of that tolerance (relative)
-//    are then reported as a tangency.
+//    curves whose intersections are closer than about the square root of that tolerance
+//    (relative) are then reported as a tangency.
 //  * Common component: coincident curves are detected by the coefficient vectors being parallel
 //    (every 2x2 minor <= coincidence_tolerance, default 16 eps(T), times the norms), so a
 //    multiple rounded to T still counts; other shared components (degenerate conics sharing a
