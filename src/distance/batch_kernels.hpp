@@ -50,19 +50,11 @@ struct PointTriangleLanes {
   M<T> scalar;  // lanes outside the fast path
 };
 
+/// detail::point_triangle_fast with the origin o and the other vertices x, y: barycentrics in
+/// that order.
 template <class T>
-LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, const V3<T>& v0,
-                                                             const V3<T>& v1, const V3<T>& v2) {
-  // The origin at v0 when the angle there is well-shaped, else at the vertex opposite the longest
-  // edge (rotation r1: (v1, v2, v0), r2: (v2, v0, v1)).
-  const V3<T> d01 = v1 - v0, d02 = v2 - v0, d12 = v2 - v1;
-  const V<T> l01 = dot(d01, d01), l02 = dot(d02, d02), l12 = dot(d12, d12);
-  const V<T> b0 = dot(d01, d02), ac0 = l01 * l02;
-  const M<T> keep = (T(16) * (ac0 - b0 * b0) >= ac0) | ((l12 >= l01) & (l12 >= l02));
-  const M<T> r1 = ~keep & (l02 >= l01), r2 = ~keep & ~(l02 >= l01);
-  const V3<T> o = lanes::sel<T>(r1, v1, lanes::sel<T>(r2, v2, v0));
-  const V3<T> x = lanes::sel<T>(r1, v2, lanes::sel<T>(r2, v0, v1));
-  const V3<T> y = lanes::sel<T>(r1, v0, lanes::sel<T>(r2, v1, v2));
+LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_at(const V3<T>& p, const V3<T>& o,
+                                                          const V3<T>& x, const V3<T>& y) {
   const V3<T> e0 = x - o, e1 = y - o, e2 = y - x, w0 = p - o, w1 = p - x;
   const V<T> a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
   const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
@@ -91,12 +83,40 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, con
   const M<T> m2 = v12 & (~(v01 | v02) | (q2 < q01));
   V3<T> rb{sel<T>(m2, zero, u), sel<T>(m2, T(1) - l2, v), sel<T>(m2, l2, w)};
   rb = lanes::sel<T>(inside, V3<T>{T(1) - s - t, s, t}, rb);
-  const V3<T> bary{sel<T>(r1, rb.z, sel<T>(r2, rb.y, rb.x)),
-                   sel<T>(r1, rb.x, sel<T>(r2, rb.z, rb.y)),
-                   sel<T>(r1, rb.y, sel<T>(r2, rb.x, rb.z))};
   const V3<T> cp = rb.x * o + rb.y * x + rb.z * y;
   const V3<T> dx = cp - p;
-  return {bary, cp, dot(dx, dx), ~fast};
+  return {rb, cp, dot(dx, dx), ~fast};
+}
+
+/// detail::point_triangle's fast path: the origin at v0 when the angle there is well-shaped (or
+/// v1 v2 is the longest edge), else at the vertex opposite the longest edge (rotation r1:
+/// (v1, v2, v0), r2: (v2, v0, v1)). kBroadcast: the triangle is the same in every lane and every
+/// group (Group::kBroadcast).
+template <class T, bool kBroadcast = false>
+LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, const V3<T>& v0,
+                                                             const V3<T>& v1, const V3<T>& v2) {
+  const V3<T> d01 = v1 - v0, d02 = v2 - v0, d12 = v2 - v1;
+  const V<T> l01 = dot(d01, d01), l02 = dot(d02, d02), l12 = dot(d12, d12);
+  const V<T> b0 = dot(d01, d02), ac0 = l01 * l02;
+  const M<T> keep = (T(16) * (ac0 - b0 * b0) >= ac0) | ((l12 >= l01) & (l12 >= l02));
+  // A group that needs no rotation (most of them: 95% of random triangles are well-shaped at v0)
+  // skips the selects: 18 blends on the way in and 9 on the way out cost every lane a quarter of
+  // its time (86 against 115 M queries/s, double, x86-64-v4, bench/distance
+  // point_triangle/sqr_distances<double>). The dot products above are the kernel's own a, b, c,
+  // f, so the test costs three comparisons. A broadcast triangle instead takes the selects
+  // unconditionally: they are then loop-invariant and hoisted out of the driver's loop with the
+  // rest of the triangle's work, which a branch would prevent (GCC does not move floating-point
+  // operations that may trap out of a conditional block).
+  if (!kBroadcast && lanes::all<T>(keep)) return point_triangle_at<T>(p, v0, v1, v2);
+  const M<T> r1 = ~keep & (l02 >= l01), r2 = ~keep & ~(l02 >= l01);
+  const V3<T> o = lanes::sel<T>(r1, v1, lanes::sel<T>(r2, v2, v0));
+  const V3<T> x = lanes::sel<T>(r1, v2, lanes::sel<T>(r2, v0, v1));
+  const V3<T> y = lanes::sel<T>(r1, v0, lanes::sel<T>(r2, v1, v2));
+  PointTriangleLanes<T> r = point_triangle_at<T>(p, o, x, y);
+  const V3<T> rb = r.bary;
+  r.bary = {sel<T>(r1, rb.z, sel<T>(r2, rb.y, rb.x)), sel<T>(r1, rb.x, sel<T>(r2, rb.z, rb.y)),
+            sel<T>(r1, rb.y, sel<T>(r2, rb.x, rb.z))};
+  return r;
 }
 
 // ---- segment - segment (detail::segment_pair) ------------------------------------------------

@@ -3,6 +3,8 @@
 
 #include "batch_kernels.hpp"
 
+#include <type_traits>
+
 namespace locus {
 namespace {
 
@@ -12,7 +14,7 @@ LOCUS_LANE_INLINE void point_triangle_run(const Source<A>& a, const Source<B>& b
   lanes::run<T, 2>(
       a, b, out, n,
       [](const auto& p, const auto& t) LOCUS_LANE_LAMBDA {
-        const auto pl = point_triangle_lanes<T>(
+        const auto pl = point_triangle_lanes<T, std::decay_t<decltype(t)>::kBroadcast>(
             gather3<T>(p, std::identity{}), gather3<T>(t, &Triangle3<T>::v0),
             gather3<T>(t, &Triangle3<T>::v1), gather3<T>(t, &Triangle3<T>::v2));
         return Result<T>{pl.sqr, pl.scalar};

@@ -203,6 +203,7 @@ struct Source {
 /// The step is a compile-time constant so that every lane's fields are loaded at fixed offsets.
 template <class Obj, bool kStep>
 struct Group {
+  static constexpr bool kBroadcast = !kStep;  // one object in every lane
   const Obj* p;
   [[nodiscard]] LOCUS_LANE_INLINE const Obj& operator[](std::size_t k) const {
     return kStep ? p[k] : *p;
