@@ -2,6 +2,7 @@
 // Tests for distance/point_rectangle.hpp, point_aligned_box.hpp, point_oriented_box.hpp (rows
 // dist2.pt-rectangle, dist3.pt-rectangle, dist3.pt-obb; book figures 6.10, 10.11-10.13, 10.21,
 // 10.22).
+#include <locus/distance/batch.hpp>
 #include <locus/distance/detail/branchless.hpp>
 #include <locus/distance/point_aligned_box.hpp>
 #include <locus/distance/point_oriented_box.hpp>
@@ -15,6 +16,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <type_traits>
 #include <utility>
 
@@ -299,6 +301,32 @@ TYPED_TEST(PointBoxTest, NonFiniteAndEmptyInputGiveNaNResult) {
       EXPECT_TRUE(std::isnan(sqr_distance(o, p))) << k;
       EXPECT_TRUE(dist::is_nan_result(distance(p, o))) << k;
     }
+  }
+}
+
+// Finite input whose coordinates in the box frame overflow (p - center beyond the largest finite
+// value): the whole result is NaN, as for non-finite input, in both the axis-aligned frame (where
+// the old code's zero axis components gave a NaN squared distance presented as a valid result)
+// and a rotated one (where it gave an infinite one); sqr_distance and the batch agree.
+TYPED_TEST(PointBoxTest, OverflowingFrameCoordinatesGiveNaNResult) {
+  using T = TypeParam;
+  const T big = std::numeric_limits<T>::max();
+  // Every rotated axis has a nonzero x component, so no infinite x times 0 makes a NaN.
+  const T r3 = T(1) / std::sqrt(T(3)), r2 = T(1) / std::sqrt(T(2)), r6 = T(1) / std::sqrt(T(6));
+  const Vec3<T> rotated[3] = {{r3, r3, r3}, {r2, -r2, T(0)}, {r6, r6, T(-2) * r6}};
+  for (const bool rotate : {false, true}) {
+    OrientedBox3<T> o{{-big, T(0), T(0)},
+                      {Vec3<T>{T(1), T(0), T(0)}, Vec3<T>{T(0), T(1), T(0)},
+                       Vec3<T>{T(0), T(0), T(1)}},
+                      {T(1), T(1), T(1)}};
+    if (rotate)
+      for (int i = 0; i < 3; ++i) o.axis[i] = rotated[i];
+    const Vec3<T> p{big, T(0), T(0)};
+    EXPECT_TRUE(dist::is_nan_result(distance(p, o))) << rotate;
+    EXPECT_TRUE(std::isnan(sqr_distance(p, o))) << rotate;
+    T out[1] = {T(0)};
+    sqr_distances(std::span<const Vec3<T>>(&p, 1), o, std::span<T>(out));
+    EXPECT_TRUE(std::isnan(out[0])) << rotate;
   }
 }
 
