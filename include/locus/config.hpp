@@ -28,6 +28,15 @@
 #define LOCUS_ALWAYS_INLINE
 #endif
 
+// LOCUS_FLATTEN: every call in the function's body is inlined (recursively), for a function that
+// calls a general routine with arguments that make most of its branches constant (the compiler
+// can only fold them in an inlined copy).
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCUS_FLATTEN __attribute__((flatten))
+#else
+#define LOCUS_FLATTEN
+#endif
+
 namespace locus {
 
 /// Signature of an assertion handler: the failed condition, a message, the source location.

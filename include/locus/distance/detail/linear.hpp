@@ -503,9 +503,10 @@ template <class T, int N>
 }
 
 /// Two segments outside segment_pair_fast: linear_linear in the canonical argument order. Out of
-/// line, so that segment_pair stays small enough to inline.
+/// line, so that segment_pair stays small enough to inline; flattened, so that linear_linear's
+/// branches on the kinds of its components fold away.
 template <class T, int N>
-[[nodiscard]] LinearPairCore<T, N> segment_pair_general(const Segment<T, N>& x,
+[[nodiscard]] LOCUS_FLATTEN LinearPairCore<T, N> segment_pair_general(const Segment<T, N>& x,
                                                        const Segment<T, N>& y) noexcept {
   if (!(finite_input(x) && finite_input(y))) {
     constexpr T nan = std::numeric_limits<T>::quiet_NaN();
