@@ -119,24 +119,30 @@ LOCUS_LANE_INLINE Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg, c
     M<T> found = has_end;
     V<T> best_t = sel<T>(before, zero, one);
     V3<T> best_bary = pt.bary;
-    // The edges whose constraints the crossing violates, in the scalar order.
-    const auto edge = [&](M<T> wanted, const V3<T>& vi, const V3<T>& vj, int i,
-                          int j) LOCUS_LANE_LAMBDA {
+    // The edges whose constraints the crossing violates, offered in the scalar order (v0 v2 when
+    // ss < 0, v0 v1 when us < 0, v1 v2 when ss + us > 1). At most two are violated (ss < 0 and
+    // us < 0 give ss + us < 1), so each lane's first and second violated edge take one
+    // segment-segment evaluation each, with the edge's vertices selected per lane: two
+    // evaluations per group instead of one per edge that some lane wants (three in most groups).
+    // An edge (i, j) is told by i0 (i = 0, else 1) and j2 (j = 2, else 1).
+    const auto edge = [&](M<T> wanted, M<T> i0, M<T> j2) LOCUS_LANE_LAMBDA {
       if (!lanes::any<T>(wanted & ok & ~end_wins)) return;
+      const V3<T> vi = lanes::sel<T>(i0, v0, v1), vj = lanes::sel<T>(j2, v2, v1);
       const SegmentPairLanes<T> st = segment_pair_lanes<T>(seg, SegmentLanes<T>{vi, vj});
       scalar |= wanted & ~end_wins & st.scalar;
       const M<T> take = wanted & (~found | (st.sqr < best_sqr));
       best_sqr = sel<T>(take, st.sqr, best_sqr);
       best_t = sel<T>(take, st.s, best_t);
-      V<T> b[3] = {zero, zero, zero};
-      b[i] = T(1) - st.t;
-      b[j] = st.t;
-      best_bary = lanes::sel<T>(take, V3<T>{b[0], b[1], b[2]}, best_bary);
+      const V<T> u = T(1) - st.t;
+      const V3<T> b{sel<T>(i0, u, zero), sel<T>(i0, sel<T>(j2, zero, st.t), u),
+                    sel<T>(j2, st.t, zero)};
+      best_bary = lanes::sel<T>(take, b, best_bary);
       found |= wanted;
     };
-    edge(ss < T(0), v0, v2, 0, 2);
-    edge(us < T(0), v0, v1, 0, 1);
-    edge(ss + us > T(1), v1, v2, 1, 2);
+    const M<T> w02 = ss < T(0), w01 = us < T(0), w12 = ss + us > T(1);
+    edge(w02 | w01 | w12, w02 | w01, w02 | ~w01);  // the first: (0 2), else (0 1), else (1 2)
+    const M<T> both = w02 & w01;
+    edge(both | ((w02 | w01) & w12), both, ~both);  // the second: (0 1), else (1 2)
     // end_wins lanes keep the end's pair (it was offered first and the edges were skipped).
     best_t = sel<T>(end_wins, sel<T>(before, zero, one), best_t);
     best_bary = lanes::sel<T>(end_wins, pt.bary, best_bary);
