@@ -27,8 +27,8 @@
 // flattens the box along that axis (s[i] = 0); a negative extent is treated as 0. NaN or
 // infinite values give non_finite_distance() (result.hpp), and so does finite input so large that
 // a coordinate in the box frame overflows (|p - center| near the largest finite value). unique is
-// always true. Cost: O(N^2),
-// no branch on the data; distance() takes two square roots and N + 1 divisions.
+// always true. Cost: O(N^2), no branch on the data; distance() takes two square roots and N + 1
+// divisions.
 //
 // sqr_distance(p, box) (either order) returns distance(p, box).sqr_distance, bit for bit, without
 // the closest point, the parameters or the square root: N dot products, N min/max pairs, no
