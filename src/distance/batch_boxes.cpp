@@ -58,18 +58,17 @@ LOCUS_LANE_INLINE void point_oriented_box_run(const Source<Vec3<T>>& a,
         // over the slab (a negative extent acts as 0), squared and summed onto 0.
         const V3<T> d = p - c;
         const V<T> extents[3] = {ext.x, ext.y, ext.z};
-        V<T> sqr{}, x[3];
-        for (int k = 0; k < 3; ++k) x[k] = dot(d, axis[k]);
+        V<T> sqr{}, fz{};
         for (int k = 0; k < 3; ++k) {
+          const V<T> x = dot(d, axis[k]);
           const V<T> e = sel<T>(extents[k] > T(0), extents[k], V<T>{});
           const V<T> ne = -e;
-          const V<T> above = sel<T>(x[k] < ne, ne, x[k]);
-          const V<T> excess = x[k] - sel<T>(e < above, e, above);
+          const V<T> above = sel<T>(x < ne, ne, x);
+          const V<T> excess = x - sel<T>(e < above, e, above);
           sqr = sqr + excess * excess;
+          fz = fz + x * T(0);  // PointOrientedBoxCore::finite_zero
         }
-        // PointOrientedBoxCore::finite_zero (the sum's order does not matter: every term is
-        // +-0 or NaN).
-        const V<T> fz = ((x[0] * T(0) + x[1] * T(0)) + x[2] * T(0)) + lanes::finite_zero<T>(ext);
+        fz = fz + lanes::finite_zero<T>(ext);
         return Result<T>{sqr + fz, M<T>{}};
       },
       [](const Vec3<T>& p, const OrientedBox3<T>& box)

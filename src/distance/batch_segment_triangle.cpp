@@ -139,7 +139,7 @@ LOCUS_LANE_INLINE Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg, c
       best_bary = lanes::sel<T>(take, b, best_bary);
       found |= wanted;
     };
-    const M<T> w02 = ss < T(0), w01 = us < T(0), w12 = ss + us > T(1);
+    const M<T> w02 = (ss < T(0)), w01 = (us < T(0)), w12 = (ss + us > T(1));
     edge(w02 | w01 | w12, w02 | w01, w02 | ~w01);  // the first: (0 2), else (0 1), else (1 2)
     const M<T> both = w02 & w01;
     edge(both | ((w02 | w01) & w12), both, ~both);  // the second: (0 1), else (1 2)

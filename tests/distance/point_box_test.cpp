@@ -315,10 +315,10 @@ TYPED_TEST(PointBoxTest, OverflowingFrameCoordinatesGiveNaNResult) {
   const T r3 = T(1) / std::sqrt(T(3)), r2 = T(1) / std::sqrt(T(2)), r6 = T(1) / std::sqrt(T(6));
   const Vec3<T> rotated[3] = {{r3, r3, r3}, {r2, -r2, T(0)}, {r6, r6, T(-2) * r6}};
   for (const bool rotate : {false, true}) {
-    OrientedBox3<T> o{{-big, T(0), T(0)},
-                      {Vec3<T>{T(1), T(0), T(0)}, Vec3<T>{T(0), T(1), T(0)},
-                       Vec3<T>{T(0), T(0), T(1)}},
-                      {T(1), T(1), T(1)}};
+    OrientedBox3<T> o{
+        {-big, T(0), T(0)},
+        {Vec3<T>{T(1), T(0), T(0)}, Vec3<T>{T(0), T(1), T(0)}, Vec3<T>{T(0), T(0), T(1)}},
+        {T(1), T(1), T(1)}};
     if (rotate)
       for (int i = 0; i < 3; ++i) o.axis[i] = rotated[i];
     const Vec3<T> p{big, T(0), T(0)};

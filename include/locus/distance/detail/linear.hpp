@@ -506,8 +506,8 @@ template <class T, int N>
 /// line, so that segment_pair stays small enough to inline; flattened, so that linear_linear's
 /// branches on the kinds of its components fold away.
 template <class T, int N>
-[[nodiscard]] LOCUS_FLATTEN LinearPairCore<T, N> segment_pair_general(const Segment<T, N>& x,
-                                                       const Segment<T, N>& y) noexcept {
+[[nodiscard]] LOCUS_FLATTEN LinearPairCore<T, N> segment_pair_general(
+    const Segment<T, N>& x, const Segment<T, N>& y) noexcept {
   if (!(finite_input(x) && finite_input(y))) {
     constexpr T nan = std::numeric_limits<T>::quiet_NaN();
     return {nan, nan, {splat<T, N>(nan), splat<T, N>(nan)}, nan, false, false};
