@@ -14,6 +14,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <random>
@@ -152,37 +154,61 @@ struct SqrQuery {  // sqr_distance(a, b): the squared distance only
   }
 };
 
-// Runs query(a[i], b[i]) over the cycled inputs; items per second = queries per second.
+// The exact squared distances of a pair's inputs after conversion to float (single) or as
+// they are (double), rounded to double: CGAL's queries over exact rationals (Gmpq), computed once
+// on first use in distance_peers_bench.cpp. Empty when CGAL is absent.
+enum ExactPair { kExactPointTriangle, kExactSegmentSegment, kExactSegmentTriangle };
+const std::vector<double>& exact_sqr_distances(ExactPair pair, bool near_parallel, bool single);
+
+template <class R>
+double sqr_value(const R& r) {
+  if constexpr (requires { r.sqr_distance; })
+    return static_cast<double>(r.sqr_distance);
+  else
+    return static_cast<double>(r);  // locus's sqr_distance, CGAL's FT (double or float)
+}
+
+// Runs query(a[i], b[i]) over the cycled inputs; items per second = queries per second. With
+// exact values (exact_sqr_distances), the counter max_err is the largest absolute error of the
+// squared distance over the inputs, so that a peer's speed is read beside its accuracy.
 template <class A, class B, class Query>
-void cycle(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b, Query query) {
+void cycle(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b, Query query,
+           const std::vector<double>& exact = {}) {
   std::size_t i = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(query(a[i], b[i]));
     i = (i + 1) & (kCount - 1);
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  if (exact.size() == a.size()) {
+    double err = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      err = std::max(err, std::fabs(sqr_value(query(a[k], b[k])) - exact[k]));
+    }
+    state.counters["max_err"] = err;
+  }
 }
 
-template <class T>
-locus::Vec3<T> cast(const locus::Vec3d& v) {
+template <class T, class S>
+locus::Vec3<T> cast(const locus::Vec3<S>& v) {
   return {static_cast<T>(v.x), static_cast<T>(v.y), static_cast<T>(v.z)};
 }
-template <class T>
-locus::Segment3<T> cast(const locus::Segment3<double>& s) {
+template <class T, class S>
+locus::Segment3<T> cast(const locus::Segment3<S>& s) {
   return {cast<T>(s.p0), cast<T>(s.p1)};
 }
-template <class T>
-locus::Triangle3<T> cast(const locus::Triangle3<double>& t) {
+template <class T, class S>
+locus::Triangle3<T> cast(const locus::Triangle3<S>& t) {
   return {cast<T>(t.v0), cast<T>(t.v1), cast<T>(t.v2)};
 }
-template <class T>
-locus::OrientedBox3<T> cast(const locus::OrientedBox3<double>& b) {
+template <class T, class S>
+locus::OrientedBox3<T> cast(const locus::OrientedBox3<S>& b) {
   return {cast<T>(b.center),
           {cast<T>(b.axis[0]), cast<T>(b.axis[1]), cast<T>(b.axis[2])},
           cast<T>(b.extent)};
 }
-template <class T>
-locus::AlignedBox3<T> cast(const locus::AlignedBox3<double>& b) {
+template <class T, class S>
+locus::AlignedBox3<T> cast(const locus::AlignedBox3<S>& b) {
   return {cast<T>(b.min), cast<T>(b.max)};
 }
 template <class T, class X>
@@ -193,10 +219,15 @@ auto cast_all(const std::vector<X>& v) {
 }
 
 // The pairs: the double inputs (arg: segment-segment nearly parallel when 1).
+// exact(state, single): exact_sqr_distances of the inputs (none for the boxes: CGAL has no
+// oriented box, and both box queries are one clamp per axis).
 struct PointTriangle {
   static auto input(const benchmark::State&) {
     const auto& in = point_triangle_input();
     return std::pair{in.p, in.t};
+  }
+  static const std::vector<double>& exact(const benchmark::State&, bool single) {
+    return exact_sqr_distances(kExactPointTriangle, false, single);
   }
 };
 struct SegmentSegment {
@@ -204,11 +235,18 @@ struct SegmentSegment {
     const auto& in = segment_pair_input(state.range(0) != 0);
     return std::pair{in.a, in.b};
   }
+  static const std::vector<double>& exact(const benchmark::State& state, bool single) {
+    return exact_sqr_distances(kExactSegmentSegment, state.range(0) != 0, single);
+  }
 };
 struct PointObb {
   static auto input(const benchmark::State&) {
     const auto& in = point_obb_input();
     return std::pair{in.p, in.box};
+  }
+  static const std::vector<double>& exact(const benchmark::State&, bool) {
+    static const std::vector<double> none;
+    return none;
   }
 };
 struct PointAabb {
@@ -216,11 +254,18 @@ struct PointAabb {
     const auto& in = point_aabb_input();
     return std::pair{in.p, in.box};
   }
+  static const std::vector<double>& exact(const benchmark::State&, bool) {
+    static const std::vector<double> none;
+    return none;
+  }
 };
 struct SegmentTriangle {
   static auto input(const benchmark::State&) {
     const auto& in = segment_triangle_input();
     return std::pair{in.s, in.t};
+  }
+  static const std::vector<double>& exact(const benchmark::State&, bool single) {
+    return exact_sqr_distances(kExactSegmentTriangle, false, single);
   }
 };
 
