@@ -157,10 +157,12 @@ LOCUS_LANE_INLINE M<T> lex_less(const SegmentLanes<T>& a, const SegmentLanes<T>&
 
 /// The lanes segment_pair_fast declines (nearly parallel, or an interior minimiser at a small
 /// angle): the parameters in the caller's order, and the lanes left to the scalar code. regular:
-/// segment_pair_fast's range and finiteness test.
+/// segment_pair_fast's range and finiteness test; fast: the lanes whose result the caller takes
+/// from the fast path instead.
 template <class T>
 LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x,
-                                                        const SegmentLanes<T>& y, M<T> regular) {
+                                                        const SegmentLanes<T>& y, M<T> regular,
+                                                        M<T> fast) {
   constexpr T tiny = T(64) * eps_v<T>;
   // The rest (nearly parallel, or an interior minimiser at a small angle): detail::linear_linear
   // in the canonical argument order, for input in range (a, c normal, finite projections; other
@@ -194,6 +196,16 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
     return dot(dq, dq);
   };
   const V<T> q_interior = sqr_gap(lanes::lerp<T>(A.p0, A.p1, si), lanes::lerp<T>(B.p0, B.p1, ti));
+  const M<T> refined = interior & inside & (DD > tiny * acc);
+  // The end points' candidates only for lanes that take them: on generic input most groups
+  // reach this function for one lane whose minimiser is interior at a small angle (refined),
+  // and the candidates would double the group's cost. (linear_linear returns the refined point
+  // before its candidates' projections, so a refined lane's projections never reach the scalar
+  // code's rescaling either.)
+  if (!lanes::any<T>(~refined & ~fast & ~scalar)) {
+    scalar |= bad;
+    return {sel<T>(swap, ti, si), sel<T>(swap, si, ti), q_interior, scalar};
+  }
   V<T> best = sel<T>(interior, q_interior, lanes::splat<T>(std::numeric_limits<T>::infinity()));
   const auto consider = [&](V<T> s, V<T> t, V<T> q) LOCUS_LANE_LAMBDA {
     const M<T> take = q < best;
@@ -209,7 +221,6 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
   consider(s_b0, zz, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b0), B.p0));
   const V<T> s_b1 = closest_param_lanes<T>(A, dA, aa, B.p1, bad);
   consider(s_b1, oo, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b1), B.p1));
-  const M<T> refined = interior & inside & (DD > tiny * acc);
   bs = sel<T>(refined, si, bs);
   bt = sel<T>(refined, ti, bt);
   scalar |= bad | ~lanes::finite<T>(best);
@@ -254,7 +265,7 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
   if (lanes::all<T>(fast)) return fast_pair();
   // Some lanes need the rest (all of them, for nearly parallel input); the fast lanes' work is
   // skipped when there are none.
-  SegmentPairLanes<T> rest = segment_pair_rest<T>(x, y, regular);
+  SegmentPairLanes<T> rest = segment_pair_rest<T>(x, y, regular, fast);
   if (!lanes::any<T>(fast)) return rest;
   const SegmentPairLanes<T> f = fast_pair();
   return {sel<T>(fast, f.s, rest.s), sel<T>(fast, f.t, rest.t), sel<T>(fast, f.sqr, rest.sqr),
