@@ -21,9 +21,11 @@
 #include <locus/core/vec.hpp>
 #include <locus/distance/batch.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstring>
 #include <functional>
+#include <type_traits>
 #include <utility>
 
 // Everything a kernel calls is inlined into the driver, so that it is compiled for the driver's
@@ -219,10 +221,64 @@ LOCUS_LANE_INLINE V<T> gather(const G& g, Field field) {
   (std::make_index_sequence<Lanes<T>::W>{});
 }
 
+/// Scalars start .. start + 3 of each of W consecutive objects made of scalars T, transposed:
+/// element j of the result holds scalar start + j of every object. One 4-scalar load per object
+/// and two rounds of shuffles, instead of W scalar loads and inserts per result.
+template <class T, class Obj>
+LOCUS_LANE_INLINE std::array<V<T>, 4> load_columns4(const Obj* objs, int start) {
+  const auto at = [&](int k) LOCUS_LANE_LAMBDA {
+    return reinterpret_cast<const unsigned char*>(objs + k) + start * sizeof(T);
+  };
+  if constexpr (Lanes<T>::W == 4) {
+    V<T> r[4];
+    for (int k = 0; k < 4; ++k) std::memcpy(&r[k], at(k), sizeof(V<T>));
+    const V<T> t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 2, 6);  // c0 c0 c2 c2
+    const V<T> t1 = __builtin_shufflevector(r[0], r[1], 1, 5, 3, 7);  // c1 c1 c3 c3
+    const V<T> t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 2, 6);
+    const V<T> t3 = __builtin_shufflevector(r[2], r[3], 1, 5, 3, 7);
+    return {
+        __builtin_shufflevector(t0, t2, 0, 1, 4, 5), __builtin_shufflevector(t1, t3, 0, 1, 4, 5),
+        __builtin_shufflevector(t0, t2, 2, 3, 6, 7), __builtin_shufflevector(t1, t3, 2, 3, 6, 7)};
+  } else {
+    static_assert(Lanes<T>::W == 8);
+    typedef T Q __attribute__((vector_size(4 * sizeof(T))));
+    Q q[8];
+    for (int k = 0; k < 8; ++k) std::memcpy(&q[k], at(k), sizeof(Q));
+    V<T> r[4];  // objects k and k + 4, one per half
+    for (int k = 0; k < 4; ++k)
+      r[k] = __builtin_shufflevector(q[k], q[k + 4], 0, 1, 2, 3, 4, 5, 6, 7);
+    const V<T> t0 = __builtin_shufflevector(r[0], r[1], 0, 8, 1, 9, 4, 12, 5, 13);    // c0 c0 c1 c1
+    const V<T> t1 = __builtin_shufflevector(r[0], r[1], 2, 10, 3, 11, 6, 14, 7, 15);  // c2 c2 c3 c3
+    const V<T> t2 = __builtin_shufflevector(r[2], r[3], 0, 8, 1, 9, 4, 12, 5, 13);
+    const V<T> t3 = __builtin_shufflevector(r[2], r[3], 2, 10, 3, 11, 6, 14, 7, 15);
+    return {__builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13),
+            __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15),
+            __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13),
+            __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15)};
+  }
+}
+
 /// Lanes of a Vec3 of the objects: std::invoke(member, obj) is that Vec3 (a pointer to a data
 /// member such as &Triangle3<T>::v0, std::identity{} for the objects themselves, or a lambda).
+/// A Vec3 inside consecutive objects made of at least 4 scalars (member returns a reference into
+/// the object) is loaded by load_columns4, from its first scalar on, or from the object's last 4
+/// scalars when it ends the object, so that no load reads past the group's last object; anything
+/// else lane by lane.
 template <class T, class G, class Member>
 LOCUS_LANE_INLINE V3<T> gather3(const G& g, Member member) {
+  using Obj = std::remove_cvref_t<decltype(g[0])>;
+  constexpr int K = static_cast<int>(sizeof(Obj) / sizeof(T));
+  if constexpr (!G::kBroadcast &&
+                std::is_lvalue_reference_v<std::invoke_result_t<Member, const Obj&>> &&
+                std::is_trivially_copyable_v<Obj> && sizeof(Obj) == K * sizeof(T) && K >= 4) {
+    const int off =
+        static_cast<int>((reinterpret_cast<const unsigned char*>(&std::invoke(member, *g.p)) -
+                          reinterpret_cast<const unsigned char*>(g.p)) /
+                         sizeof(T));
+    const int start = off + 4 <= K ? off : K - 4;
+    const std::array<V<T>, 4> c = load_columns4<T>(g.p, start);
+    return {c[off - start], c[off - start + 1], c[off - start + 2]};
+  }
   return {gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).x; }),
           gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).y; }),
           gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).z; })};
