@@ -221,36 +221,47 @@ LOCUS_LANE_INLINE V<T> gather(const G& g, Field field) {
   (std::make_index_sequence<Lanes<T>::W>{});
 }
 
+/// An unaligned load of n scalars T (a whole vector by default) from any object's bytes, as one
+/// instruction. (A memcpy into a vector was split by GCC, for AVX2, into two 16-byte moves through
+/// the stack, and the 32-byte reload stalled on store forwarding: 2x-3x slower kernels.)
+template <class T, int n = Lanes<T>::W>
+LOCUS_LANE_INLINE auto load_unaligned(const void* p) {
+  typedef T U __attribute__((vector_size(n * sizeof(T)), aligned(alignof(T)), may_alias));
+  typedef T R __attribute__((vector_size(n * sizeof(T))));
+  return R(*static_cast<const U*>(p));
+}
+
 /// Scalars start .. start + 3 of each of W consecutive objects made of scalars T, transposed:
 /// element j of the result holds scalar start + j of every object. One 4-scalar load per object
-/// and two rounds of shuffles, instead of W scalar loads and inserts per result.
+/// and two rounds of in-lane or half-swapping shuffles, instead of W scalar loads and inserts per
+/// result.
 template <class T, class Obj>
 LOCUS_LANE_INLINE std::array<V<T>, 4> load_columns4(const Obj* objs, int start) {
   const auto at = [&](int k) LOCUS_LANE_LAMBDA {
     return reinterpret_cast<const unsigned char*>(objs + k) + start * sizeof(T);
   };
   if constexpr (Lanes<T>::W == 4) {
-    V<T> r[4];
-    for (int k = 0; k < 4; ++k) std::memcpy(&r[k], at(k), sizeof(V<T>));
-    const V<T> t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 2, 6);  // c0 c0 c2 c2
-    const V<T> t1 = __builtin_shufflevector(r[0], r[1], 1, 5, 3, 7);  // c1 c1 c3 c3
-    const V<T> t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 2, 6);
-    const V<T> t3 = __builtin_shufflevector(r[2], r[3], 1, 5, 3, 7);
+    const V<T> r0 = load_unaligned<T>(at(0)), r1 = load_unaligned<T>(at(1));
+    const V<T> r2 = load_unaligned<T>(at(2)), r3 = load_unaligned<T>(at(3));
+    const V<T> t0 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);  // c0 c0 c2 c2
+    const V<T> t1 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);  // c1 c1 c3 c3
+    const V<T> t2 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
+    const V<T> t3 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
     return {
         __builtin_shufflevector(t0, t2, 0, 1, 4, 5), __builtin_shufflevector(t1, t3, 0, 1, 4, 5),
         __builtin_shufflevector(t0, t2, 2, 3, 6, 7), __builtin_shufflevector(t1, t3, 2, 3, 6, 7)};
   } else {
     static_assert(Lanes<T>::W == 8);
-    typedef T Q __attribute__((vector_size(4 * sizeof(T))));
-    Q q[8];
-    for (int k = 0; k < 8; ++k) std::memcpy(&q[k], at(k), sizeof(Q));
-    V<T> r[4];  // objects k and k + 4, one per half
-    for (int k = 0; k < 4; ++k)
-      r[k] = __builtin_shufflevector(q[k], q[k + 4], 0, 1, 2, 3, 4, 5, 6, 7);
-    const V<T> t0 = __builtin_shufflevector(r[0], r[1], 0, 8, 1, 9, 4, 12, 5, 13);    // c0 c0 c1 c1
-    const V<T> t1 = __builtin_shufflevector(r[0], r[1], 2, 10, 3, 11, 6, 14, 7, 15);  // c2 c2 c3 c3
-    const V<T> t2 = __builtin_shufflevector(r[2], r[3], 0, 8, 1, 9, 4, 12, 5, 13);
-    const V<T> t3 = __builtin_shufflevector(r[2], r[3], 2, 10, 3, 11, 6, 14, 7, 15);
+    // Objects k and k + 4, one per half.
+    const auto pair = [&](int k) LOCUS_LANE_LAMBDA {
+      return __builtin_shufflevector(load_unaligned<T, 4>(at(k)), load_unaligned<T, 4>(at(k + 4)),
+                                     0, 1, 2, 3, 4, 5, 6, 7);
+    };
+    const V<T> r0 = pair(0), r1 = pair(1), r2 = pair(2), r3 = pair(3);
+    const V<T> t0 = __builtin_shufflevector(r0, r1, 0, 8, 1, 9, 4, 12, 5, 13);    // c0 c0 c1 c1
+    const V<T> t1 = __builtin_shufflevector(r0, r1, 2, 10, 3, 11, 6, 14, 7, 15);  // c2 c2 c3 c3
+    const V<T> t2 = __builtin_shufflevector(r2, r3, 0, 8, 1, 9, 4, 12, 5, 13);
+    const V<T> t3 = __builtin_shufflevector(r2, r3, 2, 10, 3, 11, 6, 14, 7, 15);
     return {__builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13),
             __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15),
             __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13),
