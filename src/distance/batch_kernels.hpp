@@ -155,14 +155,23 @@ LOCUS_LANE_INLINE M<T> lex_less(const SegmentLanes<T>& a, const SegmentLanes<T>&
   return (same & lex_less<T>(a.p1, b.p1)) | (~same & lex_less<T>(a.p0, b.p0));
 }
 
+/// The quantities of segment_pair_fast for segments x, y (caller's order): directions, offset
+/// r = x.p0 - y.p0, a = |da|^2, b = da.db, c = |db|^2, d = da.r, e = db.r, D = |da x db|^2.
+template <class T>
+struct SegmentPairTerms {
+  V3<T> da, db;
+  V<T> a, b, c, d, e, D, ac;
+};
+
 /// The lanes segment_pair_fast declines (nearly parallel, or an interior minimiser at a small
 /// angle): the parameters in the caller's order, and the lanes left to the scalar code. regular:
 /// segment_pair_fast's range and finiteness test; fast: the lanes whose result the caller takes
 /// from the fast path instead.
 template <class T>
 LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x,
-                                                        const SegmentLanes<T>& y, M<T> regular,
-                                                        M<T> fast) {
+                                                        const SegmentLanes<T>& y,
+                                                        const SegmentPairTerms<T>& terms,
+                                                        M<T> regular, M<T> fast) {
   constexpr T tiny = T(64) * eps_v<T>;
   // The rest (nearly parallel, or an interior minimiser at a small angle): detail::linear_linear
   // in the canonical argument order, for input in range (a, c normal, finite projections; other
@@ -171,10 +180,15 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
   const M<T> swap = lex_less<T>(y, x);
   const SegmentLanes<T> A{lanes::sel<T>(swap, y.p0, x.p0), lanes::sel<T>(swap, y.p1, x.p1)};
   const SegmentLanes<T> B{lanes::sel<T>(swap, x.p0, y.p0), lanes::sel<T>(swap, x.p1, y.p1)};
-  const V3<T> dA = A.p1 - A.p0, dB = B.p1 - B.p0, rr = A.p0 - B.p0;
-  const V<T> aa = dot(dA, dA), cc = dot(dB, dB);
-  const V<T> bb = dot(dA, dB), dd = dot(dA, rr), ee = dot(dB, rr);
-  const V<T> DD = lanes::sqr_cross_norm<T>(dA, dB), acc = aa * cc;
+  // linear_linear's terms in that order are the caller's, exchanged and negated where swapped:
+  // dA = db, dB = da, A.p0 - B.p0 = -r (IEEE negation and subtraction are exactly antisymmetric,
+  // products commute), so aa = c, cc = a, bb = b, dd = -e, ee = -d, and the squared minors of
+  // |dA x dB|^2 are those of D; bit for bit, up to the sign of a zero, which no square sees.
+  const V3<T> dA = lanes::sel<T>(swap, terms.db, terms.da),
+              dB = lanes::sel<T>(swap, terms.da, terms.db);
+  const V<T> aa = sel<T>(swap, terms.c, terms.a), cc = sel<T>(swap, terms.a, terms.c), bb = terms.b;
+  const V<T> dd = sel<T>(swap, -terms.e, terms.d), ee = sel<T>(swap, -terms.d, terms.e);
+  const V<T> DD = terms.D, acc = terms.ac;
   // Lanes linear_linear would take elsewhere: input out of range (it may then reach its KKT
   // branch, or rescale a projection), or a projection that overflows.
   M<T> scalar = ~(regular & (aa <= kMax<T>)&(cc <= kMax<T>)&(acc >= kMin<T>));
@@ -213,11 +227,17 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
     bs = sel<T>(take, s, bs);
     bt = sel<T>(take, t, bt);
   };
-  const V<T> t_a0 = closest_param_lanes<T>(B, dB, cc, A.p0, bad);
+  // A.p0 - B.p0 is the offset in dd and ee: the projections of A.p0 onto B and of B.p0 onto A
+  // are their quotients (as above, up to the sign of a zero).
+  const auto clamped = [&](V<T> t) LOCUS_LANE_LAMBDA {
+    bad |= ~lanes::finite<T>(t);
+    return lanes::clamp_minmax<T>(t, V<T>{}, oo);
+  };
+  const V<T> t_a0 = clamped(ee / cc);
   consider(zz, t_a0, sqr_gap(A.p0, lanes::lerp<T>(B.p0, B.p1, t_a0)));
   const V<T> t_a1 = closest_param_lanes<T>(B, dB, cc, A.p1, bad);
   consider(oo, t_a1, sqr_gap(A.p1, lanes::lerp<T>(B.p0, B.p1, t_a1)));
-  const V<T> s_b0 = closest_param_lanes<T>(A, dA, aa, B.p0, bad);
+  const V<T> s_b0 = clamped(-dd / aa);
   consider(s_b0, zz, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b0), B.p0));
   const V<T> s_b1 = closest_param_lanes<T>(A, dA, aa, B.p1, bad);
   consider(s_b1, oo, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b1), B.p1));
@@ -265,7 +285,8 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
   if (lanes::all<T>(fast)) return fast_pair();
   // Some lanes need the rest (all of them, for nearly parallel input); the fast lanes' work is
   // skipped when there are none.
-  SegmentPairLanes<T> rest = segment_pair_rest<T>(x, y, regular, fast);
+  SegmentPairLanes<T> rest =
+      segment_pair_rest<T>(x, y, {da, db, a, b, c, d, e, D, ac}, regular, fast);
   if (!lanes::any<T>(fast)) return rest;
   const SegmentPairLanes<T> f = fast_pair();
   return {sel<T>(fast, f.s, rest.s), sel<T>(fast, f.t, rest.t), sel<T>(fast, f.sqr, rest.sqr),
