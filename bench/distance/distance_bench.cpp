@@ -25,11 +25,12 @@
 // separate translation unit: CGAL's CMake target adds -frounding-math to every source that links
 // it, and bench/CMakeLists.txt takes it back (-fno-rounding-math) for this file, which holds only
 // locus and the textbook loops, so that locus is timed as compiled in a user's program.
-// Accuracy beside speed: the per-query and peer benchmarks of the pairs CGAL has report max_err,
-// the largest absolute error of the squared distance over the 4096 inputs against CGAL's own
-// query over exact rationals (Gmpq; for float, on the inputs rounded to float). On nearly
-// parallel segment pairs (squared distances 0.1-1) it shows what the robust path buys:
-// CGAL double 1.9e-8 against locus 6.7e-16, CGAL float 2.9e-6 against locus 4.1e-7.
+// Accuracy beside speed: <pair>/max_err/sqr_distance<T> and <pair>/max_err/cgal<Kernel>, for the
+// pairs CGAL has, run once and report max_err, the largest absolute error of the squared
+// distance over the 4096 inputs against CGAL's own query over exact rationals (Gmpq; for float,
+// on the inputs rounded to float). On nearly parallel segment pairs (squared distances 0.1-1) it
+// shows what the robust path buys: CGAL double 1.9e-8 against locus 6.7e-16, CGAL float 2.9e-6
+// against locus 4.1e-7.
 //
 // Run: locus_bench_distance --benchmark_min_time=0.2 --benchmark_filter='^(point|segment|seg)'
 
@@ -54,8 +55,15 @@ using namespace locus_bench_distance;
 template <class Pair, class T, class Query>
 void locus_bench(benchmark::State& state) {
   const auto in = Pair::input(state);
-  cycle(state, cast_all<T>(in.first), cast_all<T>(in.second), Query{},
-        Pair::exact(state, std::is_same_v<T, float>));
+  cycle(state, cast_all<T>(in.first), cast_all<T>(in.second), Query{});
+}
+
+// The accuracy of locus's sqr_distance on the same inputs (report_error).
+template <class Pair, class T>
+void locus_accuracy(benchmark::State& state) {
+  const auto in = Pair::input(state);
+  report_error(state, cast_all<T>(in.first), cast_all<T>(in.second), SqrQuery{},
+               Pair::exact(state, std::is_same_v<T, float>));
 }
 
 // locus's batch form over all the inputs at once; items per second = queries per second.
@@ -132,7 +140,7 @@ struct TextbookQuery {
 template <class Pair>
 void textbook_bench(benchmark::State& state) {
   const auto in = Pair::input(state);
-  cycle(state, in.first, in.second, TextbookQuery{}, Pair::exact(state, false));
+  cycle(state, in.first, in.second, TextbookQuery{});
 }
 
 }  // namespace
@@ -155,6 +163,17 @@ BENCHMARK(point_cloud_triangle_bench<double>)
     ->Name("point_triangle/sqr_distances_one_triangle<double>");
 LOCUS_BENCH_LOCUS(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
 LOCUS_BENCH_LOCUS(SegmentTriangle, "segment_triangle");
+// <pair>/max_err/sqr_distance<T>: the accuracy runs (report_error), once each.
+#define LOCUS_ACCURACY_LOCUS(Pair, name, ...)      \
+  BENCHMARK(locus_accuracy<Pair, float>)           \
+      ->Name(name "/max_err/sqr_distance<float>")  \
+      ->Iterations(1) __VA_ARGS__;                 \
+  BENCHMARK(locus_accuracy<Pair, double>)          \
+      ->Name(name "/max_err/sqr_distance<double>") \
+      ->Iterations(1) __VA_ARGS__
+LOCUS_ACCURACY_LOCUS(PointTriangle, "point_triangle");
+LOCUS_ACCURACY_LOCUS(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
+LOCUS_ACCURACY_LOCUS(SegmentTriangle, "segment_triangle");
 LOCUS_BENCH_LOCUS(PointObb, "point_obb");
 BENCHMARK(textbook_bench<PointObb>)->Name("point_obb/textbook<double>");
 LOCUS_BENCH_LOCUS(PointAabb, "point_aabb");
