@@ -15,6 +15,8 @@
 // Objects are read in groups of W consecutive queries (Group, gather()): lane k holds query i + k;
 // the last, partial group is copied to a local array with the last query repeated (its lanes are
 // computed and discarded), so a kernel never reads out of bounds and needs no scalar tail loop.
+// The W objects of a group are consecutive, so gather3() reads a Vec3 inside them with one vector
+// load per object and transposes in registers (load_columns4).
 // A source with stride 0 is one object broadcast to every query (the "one against many"
 // overloads).
 
