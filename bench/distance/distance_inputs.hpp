@@ -156,7 +156,7 @@ struct SqrQuery {  // sqr_distance(a, b): the squared distance only
 
 // The exact squared distances of a pair's inputs after conversion to float (single) or as
 // they are (double), rounded to double: CGAL's queries over exact rationals (Gmpq), computed once
-// on first use in distance_peers_bench.cpp. Empty when CGAL is absent.
+// on first use in distance_accuracy_bench.cpp. Empty when CGAL is absent.
 enum ExactPair { kExactPointTriangle, kExactSegmentSegment, kExactSegmentTriangle };
 const std::vector<double>& exact_sqr_distances(ExactPair pair, bool near_parallel, bool single);
 
@@ -229,8 +229,7 @@ auto cast_all(const std::vector<X>& v) {
 }
 
 // The pairs: the double inputs (arg: segment-segment nearly parallel when 1).
-// exact(state, single): exact_sqr_distances of the inputs (none for the boxes: CGAL has no
-// oriented box, and both box queries are one clamp per axis).
+// exact(state, single): exact_sqr_distances of the inputs, for the pairs CGAL has.
 struct PointTriangle {
   static auto input(const benchmark::State&) {
     const auto& in = point_triangle_input();
@@ -254,19 +253,11 @@ struct PointObb {
     const auto& in = point_obb_input();
     return std::pair{in.p, in.box};
   }
-  static const std::vector<double>& exact(const benchmark::State&, bool) {
-    static const std::vector<double> none;
-    return none;
-  }
 };
 struct PointAabb {
   static auto input(const benchmark::State&) {
     const auto& in = point_aabb_input();
     return std::pair{in.p, in.box};
-  }
-  static const std::vector<double>& exact(const benchmark::State&, bool) {
-    static const std::vector<double> none;
-    return none;
   }
 };
 struct SegmentTriangle {
