@@ -160,14 +160,6 @@ struct SqrQuery {  // sqr_distance(a, b): the squared distance only
 enum ExactPair { kExactPointTriangle, kExactSegmentSegment, kExactSegmentTriangle };
 const std::vector<double>& exact_sqr_distances(ExactPair pair, bool near_parallel, bool single);
 
-template <class R>
-double sqr_value(const R& r) {
-  if constexpr (requires { r.sqr_distance; })
-    return static_cast<double>(r.sqr_distance);
-  else
-    return static_cast<double>(r);  // locus's sqr_distance, CGAL's FT (double or float)
-}
-
 // Runs query(a[i], b[i]) over the cycled inputs; items per second = queries per second.
 template <class A, class B, class Query>
 void cycle(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b, Query query) {
@@ -184,6 +176,8 @@ void cycle(benchmark::State& state, const std::vector<A>& a, const std::vector<B
 // error of the squared distance against exact_sqr_distances. Kept out of the timed benchmarks:
 // the exact values take GMP's allocations and a second call of the query in the same function
 // changes how it is inlined into the timed loop.
+// query returns the squared distance as a floating-point type (locus's sqr_distance, the
+// Simple_cartesian kernels' FT).
 template <class A, class B, class Query>
 void report_error(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b,
                   Query query, const std::vector<double>& exact) {
@@ -194,7 +188,7 @@ void report_error(benchmark::State& state, const std::vector<A>& a, const std::v
     }
     double err = 0;
     for (std::size_t k = 0; k < a.size(); ++k)
-      err = std::max(err, std::fabs(sqr_value(query(a[k], b[k])) - exact[k]));
+      err = std::max(err, std::fabs(static_cast<double>(query(a[k], b[k])) - exact[k]));
     state.counters["max_err"] = err;
   }
 }

@@ -133,15 +133,21 @@ struct SegmentPairLanes {
   M<T> scalar;
 };
 
+/// A segment parameter t clamped to [0, 1] as detail::LinearView::clamp_param does, and whether
+/// it was finite (otherwise the scalar code takes a rescaling path).
+template <class T>
+LOCUS_LANE_INLINE V<T> clamp_param_lanes(V<T> t, M<T>& not_finite) {
+  not_finite |= ~lanes::finite<T>(t);
+  const V<T> lo = sel<T>(t < T(0), V<T>{}, t);
+  return sel<T>(lo > T(1), lanes::splat<T>(T(1)), lo);
+}
+
 /// detail::closest_param for a segment whose |dir|^2 = a is a normal number: the clamped
 /// projection, and whether it was finite (otherwise the scalar code takes a rescaling path).
 template <class T>
 LOCUS_LANE_INLINE V<T> closest_param_lanes(const SegmentLanes<T>& l, const V3<T>& dir, V<T> a,
                                            const V3<T>& p, M<T>& not_finite) {
-  const V<T> t = dot(p - l.p0, dir) / a;
-  not_finite |= ~lanes::finite<T>(t);
-  const V<T> lo = sel<T>(t < T(0), V<T>{}, t);
-  return sel<T>(lo > T(1), lanes::splat<T>(T(1)), lo);
+  return clamp_param_lanes<T>(dot(p - l.p0, dir) / a, not_finite);
 }
 
 /// detail::lex_less of two segments (p0 lexicographically, then p1).
@@ -229,15 +235,11 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
   };
   // A.p0 - B.p0 is the offset in dd and ee: the projections of A.p0 onto B and of B.p0 onto A
   // are their quotients (as above, up to the sign of a zero).
-  const auto clamped = [&](V<T> t) LOCUS_LANE_LAMBDA {
-    bad |= ~lanes::finite<T>(t);
-    return lanes::clamp_minmax<T>(t, V<T>{}, oo);
-  };
-  const V<T> t_a0 = clamped(ee / cc);
+  const V<T> t_a0 = clamp_param_lanes<T>(ee / cc, bad);
   consider(zz, t_a0, sqr_gap(A.p0, lanes::lerp<T>(B.p0, B.p1, t_a0)));
   const V<T> t_a1 = closest_param_lanes<T>(B, dB, cc, A.p1, bad);
   consider(oo, t_a1, sqr_gap(A.p1, lanes::lerp<T>(B.p0, B.p1, t_a1)));
-  const V<T> s_b0 = clamped(-dd / aa);
+  const V<T> s_b0 = clamp_param_lanes<T>(-dd / aa, bad);
   consider(s_b0, zz, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b0), B.p0));
   const V<T> s_b1 = closest_param_lanes<T>(A, dA, aa, B.p1, bad);
   consider(s_b1, oo, sqr_gap(lanes::lerp<T>(A.p0, A.p1, s_b1), B.p1));
