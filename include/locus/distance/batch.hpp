@@ -28,10 +28,15 @@
 // bit. On x86-64 the library carries an x86-64-v4 (AVX-512), an AVX2 and a baseline version and
 // picks the best one the processor runs at each call (detail::set_batch_isa caps it, for tests
 // and benchmarks; build locus with -DLOCUS_NO_MULTIVERSION to compile the kernels once, for the
-// compiler's own target). Every version gives the same bits. Throughput
-// (bench/distance/distance_bench.cpp, M queries per second, double, x86-64-v4 version, one run):
-// point-triangle 94 (per query 23; CGAL 50), segment-segment 109 (23; CGAL 57),
-// segment-triangle 18 (5.5; CGAL 7.6), point-AABB 431 (154; textbook loop 250).
+// compiler's own target). Every version gives the same bits. Throughput (bench/distance,
+// scripts/bench_rounds, 8 rounds; M queries per second, x86-64-v4 version, double / float; the
+// ratio is to the peer measured in the same run): point-triangle 103 / 169 (CGAL 2.2x / 3.6x;
+// per query 46 / 47), segment-segment 123 / 225 (1.9x / 3.2x; per query 47 / 46),
+// segment-triangle 21 / 36 (2.4x / 3.8x; per query 8.0 / 8.6), point-OBB 293 / 448 and
+// point-AABB 507 / 701 (against a textbook loop: 1.5x and 2.2x in double). Nearly parallel
+// segment pairs (1e-6 apart in direction) leave the fast path for the robust branch in every
+// float lane and in 1 double group in 10: 103 / 93 (1.5x / 1.25x CGAL, whose double answer
+// there is off by up to 1e8 ulps); per query 47 in double but 7.8 in float.
 // No allocation; noexcept.
 
 #include <locus/core/vec.hpp>
