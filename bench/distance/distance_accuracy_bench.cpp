@@ -71,17 +71,10 @@ const std::vector<double>& exact_sqr_distances(ExactPair pair, bool near_paralle
 }
 }  // namespace locus_bench_distance
 
-#define LOCUS_ACCURACY_CGAL(Pair, name, ...)                \
-  BENCHMARK(cgal_accuracy<Pair, Simple>)                    \
-      ->Name(name "/max_err/cgal<Simple_cartesian>")        \
-      ->Iterations(1) __VA_ARGS__;                          \
-  BENCHMARK(cgal_accuracy<Pair, SimpleFloat>)               \
-      ->Name(name "/max_err/cgal<Simple_cartesian<float>>") \
-      ->Iterations(1) __VA_ARGS__
-
-LOCUS_ACCURACY_CGAL(PointTriangle, "point_triangle");
-LOCUS_ACCURACY_CGAL(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
-LOCUS_ACCURACY_CGAL(SegmentTriangle, "segment_triangle");
+#define LOCUS_ACCURACY_CGAL(Pair, name, args)                                            \
+  LOCUS_ACCURACY_RUN(name, "cgal<Simple_cartesian>", args, cgal_accuracy<Pair, Simple>); \
+  LOCUS_ACCURACY_RUN(name, "cgal<Simple_cartesian<float>>", args, cgal_accuracy<Pair, SimpleFloat>)
+LOCUS_FOR_CGAL_PAIRS(LOCUS_ACCURACY_CGAL);
 #else
 namespace locus_bench_distance {
 const std::vector<double>& exact_sqr_distances(ExactPair, bool, bool) {

@@ -164,16 +164,10 @@ BENCHMARK(point_cloud_triangle_bench<double>)
 LOCUS_BENCH_LOCUS(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
 LOCUS_BENCH_LOCUS(SegmentTriangle, "segment_triangle");
 // <pair>/max_err/sqr_distance<T>: the accuracy runs (report_error), once each.
-#define LOCUS_ACCURACY_LOCUS(Pair, name, ...)      \
-  BENCHMARK(locus_accuracy<Pair, float>)           \
-      ->Name(name "/max_err/sqr_distance<float>")  \
-      ->Iterations(1) __VA_ARGS__;                 \
-  BENCHMARK(locus_accuracy<Pair, double>)          \
-      ->Name(name "/max_err/sqr_distance<double>") \
-      ->Iterations(1) __VA_ARGS__
-LOCUS_ACCURACY_LOCUS(PointTriangle, "point_triangle");
-LOCUS_ACCURACY_LOCUS(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
-LOCUS_ACCURACY_LOCUS(SegmentTriangle, "segment_triangle");
+#define LOCUS_ACCURACY_LOCUS(Pair, name, args)                                        \
+  LOCUS_ACCURACY_RUN(name, "sqr_distance<float>", args, locus_accuracy<Pair, float>); \
+  LOCUS_ACCURACY_RUN(name, "sqr_distance<double>", args, locus_accuracy<Pair, double>)
+LOCUS_FOR_CGAL_PAIRS(LOCUS_ACCURACY_LOCUS);
 LOCUS_BENCH_LOCUS(PointObb, "point_obb");
 BENCHMARK(textbook_bench<PointObb>)->Name("point_obb/textbook<double>");
 LOCUS_BENCH_LOCUS(PointAabb, "point_aabb");

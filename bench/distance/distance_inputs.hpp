@@ -160,6 +160,18 @@ struct SqrQuery {  // sqr_distance(a, b): the squared distance only
 enum ExactPair { kExactPointTriangle, kExactSegmentSegment, kExactSegmentTriangle };
 const std::vector<double>& exact_sqr_distances(ExactPair pair, bool near_parallel, bool single);
 
+// The pairs CGAL has (and so an exact oracle), as benchmarks: M(Pair, name, args) for each, with
+// args the registration's extra arguments (segment-segment: near_parallel 0 and 1).
+#define LOCUS_FOR_CGAL_PAIRS(M)                                                     \
+  M(PointTriangle, "point_triangle", );                                             \
+  M(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1)); \
+  M(SegmentTriangle, "segment_triangle", )
+
+// Registers the function (the variadic part: a template-id may hold commas) as the accuracy run
+// <name>/max_err/<label>, run once (report_error).
+#define LOCUS_ACCURACY_RUN(name, label, args, ...) \
+  BENCHMARK(__VA_ARGS__)->Name(name "/max_err/" label)->Iterations(1) args
+
 // Runs query(a[i], b[i]) over the cycled inputs; items per second = queries per second.
 template <class A, class B, class Query>
 void cycle(benchmark::State& state, const std::vector<A>& a, const std::vector<B>& b, Query query) {

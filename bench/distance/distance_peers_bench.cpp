@@ -23,12 +23,10 @@ void cgal_bench(benchmark::State& state) {
 
 }  // namespace
 
-#define LOCUS_BENCH_CGAL(Pair, name, ...)                                                \
-  BENCHMARK(cgal_bench<Pair, Simple>)->Name(name "/cgal<Simple_cartesian>") __VA_ARGS__; \
-  BENCHMARK(cgal_bench<Pair, Epick>)->Name(name "/cgal<Epick>") __VA_ARGS__;             \
-  BENCHMARK(cgal_bench<Pair, SimpleFloat>)->Name(name "/cgal<Simple_cartesian<float>>") __VA_ARGS__
+#define LOCUS_BENCH_CGAL(Pair, name, args)                                        \
+  BENCHMARK(cgal_bench<Pair, Simple>)->Name(name "/cgal<Simple_cartesian>") args; \
+  BENCHMARK(cgal_bench<Pair, Epick>)->Name(name "/cgal<Epick>") args;             \
+  BENCHMARK(cgal_bench<Pair, SimpleFloat>)->Name(name "/cgal<Simple_cartesian<float>>") args
 
-LOCUS_BENCH_CGAL(PointTriangle, "point_triangle");
-LOCUS_BENCH_CGAL(SegmentSegment, "segment_segment", ->ArgName("near_parallel")->Arg(0)->Arg(1));
-LOCUS_BENCH_CGAL(SegmentTriangle, "segment_triangle");
+LOCUS_FOR_CGAL_PAIRS(LOCUS_BENCH_CGAL);
 #endif
