@@ -63,7 +63,7 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_at(const V3<T>& p, const 
   // The edge x y's range test counts only where that edge is a candidate (as in the scalar code).
   const M<T> v01 = (tn < T(0)), v02 = (sn < T(0)), v12 = (sn + tn > det);
   const M<T> fast = (T(16) * det >= ac) &
-                    (a >= kMin<T>)&(c >= kMin<T>)&(ac <= kMax<T>)&(
+                    (a >= kMin<T>)&(c >= kMin<T>)&(ac >= kMin<T>)&(ac <= kMax<T>)&(
                         (((d - d) + (e - e)) + (sn - sn)) + (tn - tn) == T(0)) &
                     (~v12 | ((f >= kMin<T>)&(f <= kMax<T>)&(g - g == T(0))));
   const M<T> inside = (sn >= T(0)) & (tn >= T(0)) & (sn + tn <= det);

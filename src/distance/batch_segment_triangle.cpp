@@ -11,13 +11,15 @@ namespace {
 // ---- segment - triangle (detail::linear_triangle_core for a segment) ---------------------------
 
 /// Coordinates for which the orient3d filter below is valid: 0, or a magnitude in [2^-L, 2^H]
-/// (double: L = H = 250; float: L = 16, H = 39). Then every nonzero difference of two such
+/// (double: L = H = 250; float: L = 16, H = 30). Then every nonzero difference of two such
 /// coordinates is at least ulp(2^-L), so no product of three differences underflows (the
-/// filter's relative error bound holds) and none overflows.
+/// filter's relative error bound holds) and none overflows. The range lies inside the one where
+/// detail::linear_triangle solves without rescaling (detail/rescale.hpp,
+/// outside_product_range), so that the lanes accepted here are solved as the scalar code does.
 template <class T>
 LOCUS_LANE_INLINE M<T> filter_range(const V3<T>& v) {
   constexpr T lo = sizeof(T) == 8 ? T(0x1p-250) : T(0x1p-16);
-  constexpr T hi = sizeof(T) == 8 ? T(0x1p250) : T(0x1p39);
+  constexpr T hi = sizeof(T) == 8 ? T(0x1p250) : T(0x1p30);
   const auto one = [](V<T> x) LOCUS_LANE_LAMBDA {
     const V<T> m = lanes::abs<T>(x);
     return (m == T(0)) | ((m >= lo) & (m <= hi));

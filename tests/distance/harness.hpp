@@ -17,7 +17,13 @@
 //   6. a random rigid motion (rotation + translation; translation only for axis-aligned boxes)
 //      applied to both objects leaves the squared distance unchanged to k eps scale^2;
 //   7. where the pair has sqr_distance(a, b): it equals r.sqr_distance exactly, in both argument
-//      orders (the lean query shares the full query's computation).
+//      orders (the lean query shares the full query's computation);
+//   8. scaling both objects about the origin by 2^k scales the squared distance by 2^(2k), to the
+//      tolerance of check 6: double k = +-140, float +-20 (products of four coordinates still in
+//      range), and double +-400, float +-50 (squares in range, but products of four, such as
+//      |da x db|^2 or a c, overflow or underflow). The input scales exactly, so a difference is
+//      the query's: an absolute tolerance hidden in it, or an intermediate that leaves the
+//      exponent range without a rescaled fallback (Side<P>::scaled).
 // Side<P> describes how the harness sees a primitive: its parameter map from [0, 1]^k (the
 // oracle's search space), point_at, the parameter-domain test, and the rigid motion.
 
@@ -69,6 +75,8 @@ struct Side<Vec<T, N>> {
   static Vec<T, N> moved(const Vec<T, N>& p, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     return r * p + t;
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static Vec<T, N> scaled(const Vec<T, N>& p, T f) { return f * p; }
 };
 
 // ---- linear components --------------------------------------------------------------------
@@ -85,6 +93,8 @@ struct Side<locus::Line<T, N>> {
   static P moved(const P& l, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     return {r * l.origin + t, r * l.direction};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& l, T f) { return {f * l.origin, f * l.direction}; }
 };
 
 template <class T, int N>
@@ -100,6 +110,8 @@ struct Side<locus::Ray<T, N>> {
   static P moved(const P& l, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     return {r * l.origin + t, r * l.direction};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& l, T f) { return {f * l.origin, f * l.direction}; }
 };
 
 template <class T, int N>
@@ -115,6 +127,8 @@ struct Side<locus::Segment<T, N>> {
   static P moved(const P& s, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     return {r * s.p0 + t, r * s.p1 + t};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& s, T f) { return {f * s.p0, f * s.p1}; }
 };
 
 template <class T, int N>
@@ -134,6 +148,12 @@ struct Side<locus::Polyline<T, N>> {
   static P moved(const P& p, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     P q = p;
     for (auto& v : q.vertices) v = r * v + t;
+    return q;
+  }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& p, T f) {
+    P q = p;
+    for (auto& v : q.vertices) v = f * v;
     return q;
   }
 };
@@ -158,6 +178,8 @@ struct Side<locus::Triangle<T, N>> {
   static P moved(const P& tri, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     return {r * tri.v0 + t, r * tri.v1 + t, r * tri.v2 + t};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& tri, T f) { return {f * tri.v0, f * tri.v1, f * tri.v2}; }
 };
 
 template <class T, int N>
@@ -177,6 +199,10 @@ struct Side<locus::Rectangle<T, N>> {
   static bool in_window(const P&, const Param&, T) { return true; }
   static P moved(const P& x, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     return {r * x.center + t, {r * x.axis[0], r * x.axis[1]}, {x.extent[0], x.extent[1]}};
+  }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& x, T f) {
+    return {f * x.center, {x.axis[0], x.axis[1]}, {f * x.extent[0], f * x.extent[1]}};
   }
 };
 
@@ -201,6 +227,8 @@ struct Side<locus::AlignedBox<T, N>> {
   static P moved(const P& b, const locus::Mat<T, N, N>&, const Vec<T, N>& t) {
     return {b.min + t, b.max + t};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& b, T f) { return {f * b.min, f * b.max}; }
 };
 
 template <class T, int N>
@@ -227,6 +255,13 @@ struct Side<locus::OrientedBox<T, N>> {
     for (int i = 0; i < N; ++i) o.axis[i] = r * b.axis[i];
     return o;
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& b, T f) {
+    P o = b;
+    o.center = f * b.center;
+    o.extent = f * b.extent;
+    return o;
+  }
 };
 
 // ---- planes, circles, disks, spheres ------------------------------------------------------
@@ -248,6 +283,8 @@ struct Side<locus::Plane3<T>> {
     const Vec<T, 3> n = r * pl.normal;
     return {n, pl.constant + locus::dot(n, t)};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& pl, T f) { return {pl.normal, f * pl.constant}; }
 };
 
 template <class T>
@@ -266,6 +303,8 @@ struct Side<locus::Circle2<T>> {
   static P moved(const P& c, const locus::Mat<T, 2, 2>& r, const Vec<T, 2>& t) {
     return {r * c.center + t, c.radius};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& c, T f) { return {f * c.center, f * c.radius}; }
 };
 
 template <class T>
@@ -284,6 +323,8 @@ struct Side<locus::Circle3<T>> {
   static P moved(const P& c, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
     return {r * c.center + t, r * c.normal, c.radius};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& c, T f) { return {f * c.center, c.normal, f * c.radius}; }
 };
 
 template <class T>
@@ -305,6 +346,8 @@ struct Side<locus::Disk3<T>> {
   static P moved(const P& d, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
     return {r * d.center + t, r * d.normal, d.radius};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& d, T f) { return {f * d.center, d.normal, f * d.radius}; }
 };
 
 template <class T>
@@ -325,6 +368,8 @@ struct Side<locus::Sphere<T, 3>> {
   static P moved(const P& s, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
     return {r * s.center + t, s.radius};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& s, T f) { return {f * s.center, f * s.radius}; }
 };
 
 // ---- helpers ------------------------------------------------------------------------------
@@ -558,7 +603,16 @@ OracleValue<T> oracle_sqr(const A& a, const B& b, Rng& rng, int samples, T w) {
 
 }  // namespace detail
 
-/// The generic checks 1-6 of the header comment on opt.cases pairs from gen(rng).
+/// Check 8's exponents (see the header comment).
+template <class T>
+constexpr std::array<int, 4> scale_exponents() {
+  if constexpr (std::is_same_v<T, float>)
+    return {-50, -20, 20, 50};
+  else
+    return {-400, -140, 140, 400};
+}
+
+/// The generic checks 1-8 of the header comment on opt.cases pairs from gen(rng).
 template <class T, int N, class A, class B, class Gen>
 void check_pairs(Gen&& gen, const Options<T>& opt = {}) {
   Rng rng;
@@ -624,6 +678,13 @@ void check_pairs(Gen&& gen, const Options<T>& opt = {}) {
       const auto t = rng.vec<T, N>(-opt.scale, opt.scale);
       const auto m = distance(SA::moved(a, rot, t), SB::moved(b, rot, t));
       EXPECT_NEAR(m.sqr_distance, r.sqr_distance, T(4) * sq_tol);
+    }
+    // 8. scaling both objects by a power of two scales the squared distance by its square
+    for (const int k : scale_exponents<T>()) {
+      SCOPED_TRACE("scaled by 2^" + std::to_string(k));
+      const T f = std::ldexp(T(1), k);
+      const auto m = distance(SA::scaled(a, f), SB::scaled(b, f));
+      EXPECT_NEAR(std::ldexp(m.sqr_distance, -2 * k), r.sqr_distance, T(4) * sq_tol);
     }
   }
 }

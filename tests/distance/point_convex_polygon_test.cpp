@@ -63,6 +63,12 @@ struct Side<ConvexPoly<T>> {
     for (auto& x : o.v) x = r * x + t;
     return o;
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& c, T f) {
+    P o = c;
+    for (auto& x : o.v) x = f * x;
+    return o;
+  }
 };
 
 }  // namespace locus_test::dist

@@ -58,6 +58,12 @@ struct TensorSurfaceSide {
     for (auto& q : m.control) q = r * q + t;
     return m;
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static S scaled(const S& s, T f) {
+    S m = s;
+    for (auto& q : m.control) q = f * q;
+    return m;
+  }
 };
 template <class T, int N>
 struct Side<locus::BezierPatch<T, N>> : TensorSurfaceSide<locus::BezierPatch<T, N>, T, N> {};
@@ -85,6 +91,12 @@ struct Side<locus::BezierTriangle<T, N>> {
   static P moved(const P& s, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     P m = s;
     for (auto& q : m.control) q = r * q + t;
+    return m;
+  }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& s, T f) {
+    P m = s;
+    for (auto& q : m.control) q = f * q;
     return m;
   }
 };

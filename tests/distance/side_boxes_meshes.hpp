@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: BSL-1.0
 // Side<> descriptions (see distance/harness.hpp) of the primitives the shared harness does not
-// know: orthogonal frusta (3D and 2D) and solid tetrahedra.
+// know: orthogonal frusta (3D and 2D); solid tetrahedra come from side_solids.hpp.
 #pragma once
 
 #include <locus/core/mat.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/primitives/frustum.hpp>
-#include <locus/primitives/tetrahedron.hpp>
 
 #include "distance/harness.hpp"
+#include "distance/side_solids.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -40,6 +39,16 @@ struct Side<locus::Frustum3<T>> {
     o.right = r * f.right;
     return o;
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& f, T k) {
+    P o = f;
+    o.origin = k * f.origin;
+    o.d_min = k * f.d_min;
+    o.d_max = k * f.d_max;
+    o.u_bound = k * f.u_bound;
+    o.r_bound = k * f.r_bound;
+    return o;
+  }
 };
 
 template <class T>
@@ -63,29 +72,14 @@ struct Side<locus::Frustum2<T>> {
     o.left = r * f.left;
     return o;
   }
-};
-
-template <class T>
-struct Side<locus::Tetrahedron3<T>> {
-  using P = locus::Tetrahedron3<T>;
-  using Param = locus::Vec4<T>;  // barycentric
-  static constexpr int k = 3;
-  static constexpr bool rotatable = true;
-  // The unit cube onto the simplex: sorted coordinates s0 <= s1 <= s2 give the barycentric
-  // (s0, s1 - s0, s2 - s1, 1 - s2) (continuous and onto).
-  static Vec<T, 3> map(const P& t, const T* u, T) {
-    T s[3] = {u[0], u[1], u[2]};
-    std::sort(s, s + 3);
-    return point_at_barycentric(t, Param{s[0], s[1] - s[0], s[2] - s[1], T(1) - s[2]});
-  }
-  static Vec<T, 3> at(const P& t, const Param& b) { return point_at_barycentric(t, b); }
-  static bool param_ok(const P&, const Param& b, T tol) {
-    return b.x >= -tol && b.y >= -tol && b.z >= -tol && b.w >= -tol &&
-           std::abs(b.x + b.y + b.z + b.w - T(1)) <= tol;
-  }
-  static bool in_window(const P&, const Param&, T) { return true; }
-  static P moved(const P& t, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& x) {
-    return {{r * t.v[0] + x, r * t.v[1] + x, r * t.v[2] + x, r * t.v[3] + x}};
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& f, T k) {
+    P o = f;
+    o.origin = k * f.origin;
+    o.d_min = k * f.d_min;
+    o.d_max = k * f.d_max;
+    o.l_bound = k * f.l_bound;
+    return o;
   }
 };
 

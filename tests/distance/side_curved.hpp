@@ -36,6 +36,10 @@ struct Side<locus::Ellipse2<T>> {
   static P moved(const P& e, const locus::Mat<T, 2, 2>& r, const Vec<T, 2>& t) {
     return {r * e.center + t, {r * e.axis[0], r * e.axis[1]}, {e.extent[0], e.extent[1]}};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& e, T f) {
+    return {f * e.center, {e.axis[0], e.axis[1]}, {f * e.extent[0], f * e.extent[1]}};
+  }
 };
 
 template <class T>
@@ -55,6 +59,10 @@ struct Side<locus::Ellipsoid3<T>> {
   static bool in_window(const P&, const Param&, T) { return true; }
   static P moved(const P& e, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
     return {r * e.center + t, {r * e.axis[0], r * e.axis[1], r * e.axis[2]}, e.extent};
+  }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& e, T f) {
+    return {f * e.center, {e.axis[0], e.axis[1], e.axis[2]}, f * e.extent};
   }
 };
 
@@ -83,6 +91,12 @@ struct CurveSide {
   static Curve moved(const Curve& c, const locus::Mat<T, N, N>& r, const Vec<T, N>& t) {
     Curve m = c;
     for (auto& q : m.control) q = r * q + t;
+    return m;
+  }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static Curve scaled(const Curve& c, T f) {
+    Curve m = c;
+    for (auto& q : m.control) q = f * q;
     return m;
   }
 };

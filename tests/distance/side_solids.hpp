@@ -37,6 +37,10 @@ struct Side<locus::Tetrahedron3<T>> {
   static P moved(const P& tet, const locus::Mat<T, 3, 3>& r, const Vec<T, 3>& t) {
     return {{r * tet.v[0] + t, r * tet.v[1] + t, r * tet.v[2] + t, r * tet.v[3] + t}};
   }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& tet, T f) {
+    return {{f * tet.v[0], f * tet.v[1], f * tet.v[2], f * tet.v[3]}};
+  }
 };
 
 // Planar polygon in 3D, parameter = plane coordinates (s, t) in its frame. The oracle's map
@@ -73,6 +77,13 @@ struct Side<locus::PlanarPolygon3<T>> {
     q.frame.u = r * poly.frame.u;
     q.frame.v = r * poly.frame.v;
     q.frame.normal = r * poly.frame.normal;
+    return q;
+  }
+  /// The object scaled by f about the origin (a power of two: exact).
+  static P scaled(const P& poly, T f) {
+    P q = poly;
+    q.frame.origin = f * poly.frame.origin;
+    for (auto& v : q.polygon.vertices) v = f * v;
     return q;
   }
 };

@@ -46,10 +46,12 @@
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/branchless.hpp>
 #include <locus/distance/detail/linear.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/primitives/segment.hpp>
 #include <locus/primitives/triangle.hpp>
 
+#include <algorithm>
 #include <limits>
 
 namespace locus {
@@ -73,6 +75,18 @@ template <class T, int N>
   if (!all_finite(p, tri.v0, tri.v1, tri.v2)) {
     constexpr T nan = std::numeric_limits<T>::quiet_NaN();
     return {splat<T, 3>(nan), splat<T, N>(nan), nan, false};
+  }
+  // Coordinates so large or small that products of four leave the range (det would overflow or
+  // underflow to 0): solve on a copy scaled by a power of two, and evaluate the closest point
+  // from its barycentric coordinates on the input (rescale.hpp).
+  const T m = std::max({max_abs(p), max_abs(tri.v0), max_abs(tri.v1), max_abs(tri.v2)});
+  if (outside_product_range(m)) {
+    const T f = normalising_scale(m);
+    const PointTriangleCore<T, N> r =
+        point_triangle_general(f * p, Triangle<T, N>{f * tri.v0, f * tri.v1, f * tri.v2});
+    if (N == 2 && r.sqr == T(0)) return {r.bary, p, T(0), true};  // inside: p itself
+    const Vec<T, N> x = point_at_barycentric(tri, r.bary);
+    return {r.bary, x, sqr_length(x - p), true};
   }
   const Vec<T, N> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v0, w = tri.v0 - p;
   const T a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), d = dot(e0, w), e = dot(e1, w);
@@ -158,7 +172,8 @@ template <class T, int N>
   const T ac = a * c, det = ac - b * b;  // no harmful cancellation when well-shaped
   constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
   // Well-shaped (16 |e0 x e1|^2 >= |e0|^2 |e1|^2: Cramer's rule is accurate to a few ulps),
-  // no squares out of range, and finite input: e0, e1 are finite when a, c are (and so are the
+  // no squares or products of squares out of range (a tiny triangle, edges below ~1e-77 in
+  // double, has a c = 0 and det = 0: the test above would pass and s = 0 / 0), and finite input: e0, e1 are finite when a, c are (and so are the
   // vertices), and then d, e are finite exactly when p is (a NaN or an infinity in w0 reaches
   // every product). The plane solution's numerators must be finite too: they overflow for a point
   // far away (beyond ~sqrt(max) / |e| from a large triangle), and a NaN there would violate no
@@ -166,7 +181,7 @@ template <class T, int N>
   // predicts a floating-point == to be false, took the fast path for cold and left its callees
   // out of line.
   const T sn = c * d - b * e, tn = a * e - b * d;  // det * (s, t) of the plane solution
-  if (!(T(16) * det >= ac && a >= lo && c >= lo && ac <= hi &&
+  if (!(T(16) * det >= ac && a >= lo && c >= lo && ac >= lo && ac <= hi &&
         (d - d) + (e - e) + (sn - sn) + (tn - tn) == T(0))) [[unlikely]]
     return false;
   if (sn >= T(0) && tn >= T(0) && sn + tn <= det) {

@@ -60,11 +60,13 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/branchless.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/primitives/line.hpp>
 #include <locus/primitives/ray.hpp>
 #include <locus/primitives/segment.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -289,10 +291,19 @@ template <class T, int N>
   return !overlaps(A.bounded_lo ? T(0) : -inf, A.bounded_hi ? T(1) : inf, lo1, hi1);
 }
 
-/// Parameters (s on A, t on B) of a closest pair of two linear components; see the header.
+/// The view of the component scaled by f about the origin (a segment's direction recomputed
+/// from its scaled end points, so that one that overflowed becomes finite).
 template <class T, int N>
-[[nodiscard]] inline LinLinParams<T> linear_linear(const LinearView<T, N>& A,
-                                                   const LinearView<T, N>& B) noexcept {
+[[nodiscard]] inline LinearView<T, N> scaled_view(const LinearView<T, N>& l, T f) noexcept {
+  const Vec<T, N> o = f * l.origin, e = f * l.end;
+  return {o, e, l.bounded_hi ? e - o : f * l.dir, l.bounded_lo, l.bounded_hi};
+}
+
+/// linear_linear for components whose squared directions and their product are in range (the
+/// caller rescales the others).
+template <class T, int N>
+[[nodiscard]] inline LinLinParams<T> linear_linear_solve(const LinearView<T, N>& A,
+                                                         const LinearView<T, N>& B) noexcept {
   const T a = sqr_length(A.dir), c = sqr_length(B.dir);
   const bool a_point = !(max_abs(A.dir) > T(0)), b_point = !(max_abs(B.dir) > T(0));
   if (a_point && b_point) return {T(0), T(0), true};
@@ -388,6 +399,25 @@ template <class T, int N>
   if (!A.bounded_lo && !B.bounded_lo) consider(T(0), closest_param(B, A.origin));
 
   return {bs, bt, parallel_unique(A, B, a, b, d, D, ac)};
+}
+
+/// Parameters (s on A, t on B) of a closest pair of two linear components; see the header. When
+/// a squared direction or their product leaves the normal range (coordinates beyond ~1e77 or
+/// below ~1e-77 in double), the solver runs on the components scaled by a power of two
+/// (rescale.hpp): the parameters are scale-free. The batch kernels hand exactly those pairs to
+/// this code (their range test is the same), so their lanes keep the unscaled solver's bits.
+template <class T, int N>
+[[nodiscard]] inline LinLinParams<T> linear_linear(const LinearView<T, N>& A,
+                                                   const LinearView<T, N>& B) noexcept {
+  constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
+  const T a = sqr_length(A.dir), c = sqr_length(B.dir), ac = a * c;
+  if (!(a >= lo && a <= hi && c >= lo && c <= hi && ac >= lo && ac <= hi)) {
+    const T m = std::max({max_abs(A.origin), max_abs(A.end), max_abs(A.dir), max_abs(B.origin),
+                          max_abs(B.end), max_abs(B.dir)});
+    const T f = normalising_scale(m);
+    if (f != T(1)) return linear_linear_solve(scaled_view(A, f), scaled_view(B, f));
+  }
+  return linear_linear_solve(A, B);
 }
 
 /// What a point-linear query finds; distance() and sqr_distance() both read it. finite is false

@@ -44,12 +44,14 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/distance/point_triangle.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/primitives/rectangle.hpp>
 #include <locus/primitives/segment.hpp>
 #include <locus/primitives/triangle.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -135,13 +137,10 @@ template <class T>
   return (pos && neg) ? 0 : 1;
 }
 
-/// Parameters (t on A, barycentric (u, v, w) on tri) of a closest pair of a linear component and
-/// a solid triangle. meets: 1 / 0 when the caller knows exactly that they meet / do not meet,
-/// -1 when unknown.
+/// linear_triangle for coordinates whose products of four are in range.
 template <class T>
-[[nodiscard]] inline LinearPlanarParams<T, Vec3<T>> linear_triangle(const LinearView<T, 3>& A,
-                                                                    const Triangle3<T>& tri,
-                                                                    int meets) noexcept {
+[[nodiscard]] inline LinearPlanarParams<T, Vec3<T>> linear_triangle_solve(
+    const LinearView<T, 3>& A, const Triangle3<T>& tri, int meets) noexcept {
   using P = Vec3<T>;
   BestCandidate<T, P> best;
   const auto point_candidate = [&](T t, const Vec3<T>& x) {
@@ -249,6 +248,26 @@ template <class T>
     }
   }
   return {best.t, best.param, unique};
+}
+
+/// Parameters (t on A, barycentric (u, v, w) on tri) of a closest pair of a linear component and
+/// a solid triangle. meets: 1 / 0 when the caller knows exactly that they meet / do not meet,
+/// -1 when unknown. Coordinates so large or small that products of four leave the range (the
+/// plane's |n|^2 overflows or underflows to 0) are solved on a copy scaled by a power of two:
+/// the parameters are scale-free (rescale.hpp). (The batch kernel accepts a smaller range and
+/// leaves these to this code.)
+template <class T>
+[[nodiscard]] inline LinearPlanarParams<T, Vec3<T>> linear_triangle(const LinearView<T, 3>& A,
+                                                                    const Triangle3<T>& tri,
+                                                                    int meets) noexcept {
+  const T m = std::max({max_abs(A.origin), max_abs(A.end), max_abs(A.dir), max_abs(tri.v0),
+                        max_abs(tri.v1), max_abs(tri.v2)});
+  if (m > T(0) && outside_product_range(m)) {
+    const T f = normalising_scale(m);
+    return linear_triangle_solve(scaled_view(A, f),
+                                 Triangle3<T>{f * tri.v0, f * tri.v1, f * tri.v2}, meets);
+  }
+  return linear_triangle_solve(A, tri, meets);
 }
 
 /// What a linear-triangle query finds; distance() and sqr_distance() both read it. finite is
