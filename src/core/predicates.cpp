@@ -39,7 +39,9 @@
 
 #include "expansion.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -129,6 +131,20 @@ Sign decide(double det, double bound) noexcept {
   if (det > bound) return Sign::positive;
   if (-det > bound) return Sign::negative;
   return Sign::zero;
+}
+
+// Scale-free exactness (predicates.hpp): when the largest coordinate magnitude of a predicate's
+// points lies outside [2^-32, 2^H], the power of two that brings it into [1, 2) (the sign is
+// invariant under the scaling, which rounds nothing while the coordinates stay normal); 1
+// otherwise. After the scaling the largest lies in [1, 2) (or near it at the ends of the double
+// range), so a second call returns 1: no recursion beyond one level.
+template <int H>
+double range_scale(std::initializer_list<double> magnitudes) noexcept {
+  const double m = std::max(magnitudes);
+  int e = 0;
+  static_cast<void>(std::frexp(m, &e));  // m = x 2^e, x in [0.5, 1); e = 0 for m = 0
+  if (m == 0.0 || (e >= -31 && e <= H)) return 1.0;
+  return normalising_scale(m);
 }
 
 bool finite(const Vec2<double>& p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
@@ -295,6 +311,8 @@ LOCUS_NOINLINE Sign insphere_exact_shewchuk(const Vec3<double>& a, const Vec3<do
 Sign orient2d_adaptive(const Vec2<double>& a, const Vec2<double>& b,
                        const Vec2<double>& c) noexcept {
   if (!finite(a) || !finite(b) || !finite(c)) return Sign::zero;
+  if (const double f = range_scale<500>({max_abs(a), max_abs(b), max_abs(c)}); f != 1.0)
+    return orient2d_adaptive(f * a, f * b, f * c);
   const double acx = a.x - c.x, bcx = b.x - c.x;
   const double acy = a.y - c.y, bcy = b.y - c.y;
   // Stage B.
@@ -320,6 +338,9 @@ Sign orient2d_adaptive(const Vec2<double>& a, const Vec2<double>& b,
 Sign turn2d_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
                   const Vec2<double>& d) noexcept {
   if (!finite(a) || !finite(b) || !finite(c) || !finite(d)) return Sign::zero;
+  if (const double f = range_scale<500>({max_abs(a), max_abs(b), max_abs(c), max_abs(d)});
+      f != 1.0)
+    return turn2d_exact(f * a, f * b, f * c, f * d);
   return sign((minor2(b, d) - minor2(b, c)) + (minor2(a, c) - minor2(a, d)));
 }
 
@@ -328,6 +349,9 @@ Sign turn2d_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<doubl
 Sign orient3d_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
                        const Vec3<double>& d) noexcept {
   if (!finite(a) || !finite(b) || !finite(c) || !finite(d)) return Sign::zero;
+  if (const double f = range_scale<330>({max_abs(a), max_abs(b), max_abs(c), max_abs(d)});
+      f != 1.0)
+    return orient3d_adaptive(f * a, f * b, f * c, f * d);
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   const double adz = a.z - d.z, bdz = b.z - d.z, cdz = c.z - d.z;
@@ -367,6 +391,9 @@ Sign orient3d_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<
 Sign incircle_adaptive(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
                        const Vec2<double>& d) noexcept {
   if (!finite(a) || !finite(b) || !finite(c) || !finite(d)) return Sign::zero;
+  if (const double f = range_scale<245>({max_abs(a), max_abs(b), max_abs(c), max_abs(d)});
+      f != 1.0)
+    return incircle_adaptive(f * a, f * b, f * c, f * d);
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   // Stage B.
@@ -507,6 +534,10 @@ LOCUS_NOINLINE std::optional<Sign> insphere_stages_bc(const Vec3<double>& a, con
 Sign insphere_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
                        const Vec3<double>& d, const Vec3<double>& e) noexcept {
   if (!finite(a) || !finite(b) || !finite(c) || !finite(d) || !finite(e)) return Sign::zero;
+  if (const double f =
+          range_scale<195>({max_abs(a), max_abs(b), max_abs(c), max_abs(d), max_abs(e)});
+      f != 1.0)
+    return insphere_adaptive(f * a, f * b, f * c, f * d, f * e);
   if (const std::optional<Sign> s = insphere_stages_bc(a, b, c, d, e)) return *s;
   return -insphere_exact_shewchuk(a, b, c, d, e);
 }
@@ -518,6 +549,14 @@ Sign compare_sqr_distance_exact(const double* p, const double* q, const double* 
   Exp<24> acc;
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(p[i]) || !std::isfinite(q[i]) || !std::isfinite(r[i])) return Sign::zero;
+  }
+  double m = 0.0;
+  for (int i = 0; i < n && i < 3; ++i)
+    m = std::max({m, std::abs(p[i]), std::abs(q[i]), std::abs(r[i])});
+  if (const double f = range_scale<500>({m}); f != 1.0) {
+    double ps[3], qs[3], rs[3];
+    for (int i = 0; i < n && i < 3; ++i) ps[i] = f * p[i], qs[i] = f * q[i], rs[i] = f * r[i];
+    return compare_sqr_distance_exact(ps, qs, rs, n < 3 ? n : 3);
   }
   for (int i = 0; i < n && i < 3; ++i) {
     const Exp<4> sq = cross(q[i], q[i], r[i], r[i]);

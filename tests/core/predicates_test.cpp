@@ -760,6 +760,47 @@ void check_translation_and_scaling(int count) {
   EXPECT_GT(translated, count / 4) << "too few exactly translatable cases";
 }
 
+// Scale-free exactness (predicates.hpp): nearly degenerate configurations (exactly degenerate
+// lattices and their 1-ulp neighbours, small integers) scaled by 2^k far outside the absolute
+// range [2^-L, 2^H] of the stages, up to the ends of the double range, against the exact oracle
+// of the scaled points (the scaling is exact: every coordinate stays normal). Before the
+// adaptive stages rescaled and the filter had its underflow floor, products of such coordinates
+// overflowed to infinity or underflowed to zero and the signs came out wrong.
+template <class Pred>
+void check_far_scales(int count) {
+  constexpr int D = Pred::dim;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  int zeros = 0;
+  for (int i = 0; i < count; ++i) {
+    const auto p = generate<Pred, double>(rng, (i % 2 == 0) ? 2 : 5);
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    for (const auto& x : p)
+      for (int k = 0; k < D; ++k)
+        if (x[k] != 0.0) lo = std::min(lo, std::abs(x[k])), hi = std::max(hi, std::abs(x[k]));
+    if (!(hi > 0.0)) continue;
+    // k from the bottom of the normal range (the smallest coordinate just above 2^-1022) to the
+    // top (the largest just below 2^1023), skipping the middle, where the stages were exact.
+    const int kmin = -1021 - std::ilogb(lo), kmax = 1022 - std::ilogb(hi);
+    const int k = (i % 4 < 2) ? rng.uniform_int(kmin, std::min(kmin + 400, -400))
+                              : rng.uniform_int(std::max(kmax - 400, 400), kmax);
+    PointsOf<Pred, double> q = p;
+    for (auto& x : q)
+      for (int j = 0; j < D; ++j) x[j] = std::ldexp(x[j], k);
+    const int want = oracle<Pred, double>(q);
+    zeros += want == 0;
+    ASSERT_EQ(to_int(Pred::eval(q)), want) << describe<Pred, double>(p) << " scaled by 2^" << k;
+  }
+  EXPECT_GT(zeros, count / 20) << "too few degenerate cases";
+}
+
+TEST(PredicateRange, ExactAtAnyScale) {
+  check_far_scales<Orient2dP>(4000);
+  check_far_scales<Orient3dP>(4000);
+  check_far_scales<IncircleP>(2000);
+  check_far_scales<InsphereP>(1000);
+}
+
 TYPED_TEST(PredicateTest, ExactTranslationAndPowerOfTwoScalingKeepTheSign) {
   using T = TypeParam;
   check_translation_and_scaling<Orient2dP, T>(2000);

@@ -37,17 +37,26 @@
 // (the filter can never accept a non-finite determinant or bound, and the fallback checks).
 //
 // Exactness range. Float input: every finite float is handled exactly (differences and products
-// of promoted floats stay far inside double range). Double input: the result is exact whenever
-// no intermediate product overflows or underflows, which holds when every nonzero coordinate c
-// satisfies 2^-L <= |c| <= 2^H with
-//     orient2d   L = 480, H = 500   (about 3e-145 .. 3e150; also turn2d, compare_sqr_distance)
-//     orient3d   L = 300, H = 330   (about 5e-91  .. 2e99)
-//     incircle   L = 210, H = 245   (about 6e-64  .. 6e73)
-//     insphere   L = 160, H = 195   (about 7e-49  .. 5e58)
-// (a degree-n predicate needs n*(L+52) <= 1074, so every difference, product and expansion
-// component is a multiple of the smallest subnormal and no rounding is ever absolute; and
-// n*(H+2) + 9 < 1024, so no sum of the at most 2^9 monomials overflows, which also keeps every
-// Veltkamp-Dekker split, applied to values of degree <= n-1, 2^27 below overflow.)
+// of promoted floats stay far inside double range). Double input: the result is exact, at any
+// scale, whenever every nonzero coordinate is at least 2^-(L - 32) times the largest coordinate
+// magnitude, with
+//     orient2d   L = 480, H = 500   (also turn2d, compare_sqr_distance)
+//     orient3d   L = 300, H = 330
+//     incircle   L = 210, H = 245
+//     insphere   L = 160, H = 195
+// (e.g. orient3d: coordinates within a factor 2^268, about 5e80, of the largest). Why: the
+// stages are exact when every nonzero coordinate lies in [2^-L, 2^H] (a degree-n predicate
+// needs n*(L+52) <= 1074, so every difference, product and expansion component is a multiple of
+// the smallest subnormal and no rounding is ever absolute; and n*(H+2) + 9 < 1024, so no sum of
+// the at most 2^9 monomials overflows, which also keeps every Veltkamp-Dekker split, applied to
+// values of degree <= n-1, 2^27 below overflow). The sign is invariant under scaling by a power
+// of two, which rounds nothing while the coordinates stay normal, so the adaptive stages first
+// scale the input to bring its largest magnitude into [1, 2) when that magnitude lies outside
+// [2^-32, 2^H] (normalising_scale, core/scalar.hpp). The filter needs no scaling: above 2^H an
+// overflowing product makes its bound infinite or NaN, so it declines; below 2^-32 a product
+// that underflows has an absolute error below 2^-1060, which the filter's bound covers with an
+// added 2^-960 (predicate_underflow_floor: it only sends determinants below that to the
+// adaptive stages).
 // Outside that range the result is still a deterministic Sign with no UB and no hang, but may be
 // wrong. Compiling the *calling* code with -ffast-math (-ffinite-math-only) voids the NaN rule;
 // FMA contraction in the caller does not invalidate the filter (a fused operation only drops
@@ -117,6 +126,10 @@ inline constexpr double orient2d_bound_a = (3.0 + 16.0 * predicate_eps) * predic
 inline constexpr double orient3d_bound_a = (7.0 + 56.0 * predicate_eps) * predicate_eps;
 inline constexpr double incircle_bound_a = (10.0 + 96.0 * predicate_eps) * predicate_eps;
 inline constexpr double insphere_bound_a = (16.0 + 224.0 * predicate_eps) * predicate_eps;
+// Added to every stage-A bound: it covers the absolute error of products that underflow when
+// every coordinate is below 2^-32 (at most a few hundred roundings of at most 2^-1075 each,
+// multiplied by factors below 1), far below it; see the header comment.
+inline constexpr double predicate_underflow_floor = 0x1p-960;
 // |sum_i (q_i - p_i)^2 - (r_i - p_i)^2| in up to 3 dimensions: each square carries 3 roundings,
 // each difference of squares 1, the sum N-1 <= 2; 8 eps leaves room for second-order terms.
 inline constexpr double sqr_distance_bound_a = (8.0 + 64.0 * predicate_eps) * predicate_eps;
@@ -189,7 +202,7 @@ template <class T, int N>
   // The paper's bound is c (|left| + |right|). When left and right share a sign that equals
   // c |left + right| (rounding is symmetric); when they differ, det cannot change sign and any
   // bound >= 0 decides correctly. One absolute value fewer on the hot path.
-  const double bound = orient2d_bound_a * std::abs(left + right);
+  const double bound = orient2d_bound_a * std::abs(left + right) + predicate_underflow_floor;
   if (std::abs(det) > bound) [[likely]]
     return nonzero_sign(det);
   return orient2d_adaptive(a, b, c);
@@ -208,7 +221,7 @@ template <class T, int N>
   const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * std::abs(adz) +
                            (std::abs(cdxady) + std::abs(adxcdy)) * std::abs(bdz) +
                            (std::abs(adxbdy) + std::abs(bdxady)) * std::abs(cdz);
-  const double bound = orient3d_bound_a * permanent;
+  const double bound = orient3d_bound_a * permanent + predicate_underflow_floor;
   if (std::abs(det) > bound) [[likely]]
     return -nonzero_sign(det);
   return orient3d_adaptive(a, b, c, d);
@@ -230,7 +243,7 @@ template <class T, int N>
   const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
                            (std::abs(cdxady) + std::abs(adxcdy)) * blift +
                            (std::abs(adxbdy) + std::abs(bdxady)) * clift;
-  const double bound = incircle_bound_a * permanent;
+  const double bound = incircle_bound_a * permanent + predicate_underflow_floor;
   if (std::abs(det) > bound) [[likely]]
     return nonzero_sign(det);
   return incircle_adaptive(a, b, c, d);
@@ -281,7 +294,7 @@ struct InsphereTerms {
                                             const Vec3<double>& c, const Vec3<double>& d,
                                             const Vec3<double>& e) noexcept {
   const InsphereTerms t = insphere_terms(a, b, c, d, e);
-  const double bound = insphere_bound_a * t.permanent;
+  const double bound = insphere_bound_a * t.permanent + predicate_underflow_floor;
   if (std::abs(t.det) > bound) [[likely]]
     return -nonzero_sign(t.det);
   return insphere_adaptive(a, b, c, d, e);
@@ -418,7 +431,8 @@ template <Real T>
   const double l = (double(b.x) - double(a.x)) * (double(d.y) - double(c.y));
   const double r = (double(b.y) - double(a.y)) * (double(d.x) - double(c.x));
   const double det = l - r;
-  const double bound = detail::orient2d_bound_a * (std::abs(l) + std::abs(r));
+  const double bound =
+      detail::orient2d_bound_a * (std::abs(l) + std::abs(r)) + detail::predicate_underflow_floor;
   if (std::abs(det) > bound) [[likely]]
     return detail::nonzero_sign(det);
   return detail::turn2d_exact(detail::to_double(a), detail::to_double(b), detail::to_double(c),
@@ -438,7 +452,8 @@ requires(N == 2 || N == 3) [[nodiscard]] inline Sign
     value += q2 - r2;
     permanent += q2 + r2;
   }
-  const double bound = detail::sqr_distance_bound_a * permanent;
+  const double bound =
+      detail::sqr_distance_bound_a * permanent + detail::predicate_underflow_floor;
   if (value > bound) return Sign::positive;
   if (-value > bound) return Sign::negative;
   double pd[N], qd[N], rd[N];

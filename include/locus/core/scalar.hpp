@@ -43,4 +43,19 @@ template <class T>
   return x < lo ? lo : (hi < x ? hi : x);
 }
 
+/// The power of two f with m f in [1, 2), for a finite m > 0 (f stays within the range of T, so
+/// at the ends of the range m f may fall short of 1 or reach 4); 1 for m = 0 or a non-finite m.
+/// Scaling by f is exact while the scaled values stay normal: algorithms whose answer is
+/// invariant under scaling use it to bring extreme input to magnitudes near 1.
+template <class T>
+[[nodiscard]] inline T normalising_scale(T m) noexcept {
+  if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return T(1);
+  int e = 0;
+  static_cast<void>(std::frexp(m, &e));  // m = x 2^e, x in [0.5, 1)
+  constexpr int lo = std::numeric_limits<T>::min_exponent - 1;  // 2^lo: the smallest normal
+  constexpr int hi = std::numeric_limits<T>::max_exponent - 1;  // 2^hi: the largest power of 2
+  const int k = 1 - e;
+  return std::ldexp(T(1), k < lo ? lo : (k > hi ? hi : k));
+}
+
 }  // namespace locus
