@@ -19,7 +19,9 @@
 // is evaluated in the cancellation-free form (n1.(P - C1))^2 + (rho - r1)^2 and the smallest wins
 // (the global minimum; never below the true distance by more than rounding); its closest point on
 // circle 1 is the point-circle answer (point_circle.hpp). Set-up and roots run in compute_t<T>
-// (double for float). The pair is solved in a canonical argument order, so distance(b, a) is bit
+// (double for float), on the input scaled by a power of two when the polynomial's coefficients
+// (products of up to eight coordinates) would leave the range (beyond ~1e38 or below ~1e-38 in
+// double: detail/rescale.hpp); the pair comes from the input itself. The pair is solved in a canonical argument order, so distance(b, a) is bit
 // for bit the swap of distance(a, b).
 //
 // unique = false for coaxial circles (parallel normals, centers on a common axis, including
@@ -39,6 +41,7 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/distance/line_circle.hpp>  // detail::sqr_distance_to_circle
 #include <locus/distance/point_circle.hpp>
 #include <locus/distance/result.hpp>
@@ -95,6 +98,16 @@ template <class T>
 }
 
 template <class T>
+struct CircleCircleAngle {
+  compute_t<T> angle;
+  bool coaxial;
+};
+template <class T>
+[[nodiscard]] inline CircleCircleAngle<T> circle_circle3_angle(
+    const Circle3<T>& c0, const Circle3<T>& c1, const CircleAxes<compute_t<T>>& ax,
+    const Vec3<compute_t<T>>& n1) noexcept;
+
+template <class T>
 [[nodiscard]] inline Distance<T, 3, T, T> circle_circle3(const Circle3<T>& c0,
                                                          const Circle3<T>& c1) noexcept {
   using C = compute_t<T>;
@@ -110,6 +123,29 @@ template <class T>
   const CircleAxes<C> ax = circle_axes_of_normal(vec_cast<C>(c0.normal));
   const Vec3<C> n1 = normalize(vec_cast<C>(c1.normal));
   if (ax.u == Vec3<C>{} || n1 == Vec3<C>{}) return non_finite_distance<T, 3, T, T>();
+  // The angle is scale-free: coordinates whose products of up to eight (the polynomial's
+  // coefficients) leave the range are first scaled by a power of two (detail/rescale.hpp); the
+  // pair comes from the input itself.
+  const T mag = std::max({max_abs(c0.center), max_abs(c1.center), c0.radius, c1.radius});
+  const T f = outside_product_range<T, 8>(mag) ? normalising_scale(mag) : T(1);
+  const CircleCircleAngle<T> sol =
+      f == T(1) ? circle_circle3_angle(c0, c1, ax, n1)
+                : circle_circle3_angle(Circle3<T>{f * c0.center, c0.normal, f * c0.radius},
+                                       Circle3<T>{f * c1.center, c1.normal, f * c1.radius}, ax, n1);
+  const T angle0 = static_cast<T>(sol.angle);
+  const Vec3<T> p = point_at(c0, angle0);
+  const Distance<T, 3, NoParam, T> pc = distance(p, c1);
+  if (std::isnan(pc.distance)) return non_finite_distance<T, 3, T, T>();
+  return make_distance(p, pc.closest[1], angle0, pc.param_b, pc.unique && !sol.coaxial);
+}
+
+/// The angle on c0 of the closest pair of two circles of positive radii (see the header), and
+/// whether they are coaxial; ax are c0's plane axes, n1 c1's unit normal.
+template <class T>
+[[nodiscard]] inline CircleCircleAngle<T> circle_circle3_angle(
+    const Circle3<T>& c0, const Circle3<T>& c1, const CircleAxes<compute_t<T>>& ax,
+    const Vec3<compute_t<T>>& n1) noexcept {
+  using C = compute_t<T>;
   const C r0 = static_cast<C>(c0.radius), r1 = static_cast<C>(c1.radius);
   const Vec3<C> d = vec_cast<C>(c0.center) - vec_cast<C>(c1.center);
   const auto perp = [&](const Vec3<C>& w) { return w - dot(w, n1) * n1; };
@@ -186,11 +222,7 @@ template <class T>
       }
     }
   }
-  const T angle0 = static_cast<T>(best_a);
-  const Vec3<T> p = point_at(c0, angle0);
-  const Distance<T, 3, NoParam, T> pc = distance(p, c1);
-  if (std::isnan(pc.distance)) return non_finite_distance<T, 3, T, T>();
-  return make_distance(p, pc.closest[1], angle0, pc.param_b, pc.unique && !coaxial);
+  return {best_a, coaxial};
 }
 
 }  // namespace detail

@@ -21,7 +21,10 @@
 // the smallest wins, so the minimum is global (every candidate is a realisable pair of points, so
 // the answer is never below the true distance by more than rounding). The closest circle point
 // of the winner is then the point-circle answer (point_circle.hpp). Polynomial set-up, roots
-// and candidate evaluation run in compute_t<T> (double for float).
+// and candidate evaluation run in compute_t<T> (double for float), on the input scaled by a
+// power of two when the quartic's coefficients (products of up to six coordinates) would leave
+// the range (beyond ~1e50 or below ~1e-50 in double: detail/rescale.hpp); the winner's point and
+// its point-circle answer come from the input itself.
 //
 // unique = false when the closest point of the linear component lies on the circle's axis with
 // a positive radius (every circle point is then equidistant): the line IS the axis, or a ray /
@@ -40,6 +43,7 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/distance/point_circle.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/numeric/roots.hpp>
@@ -48,6 +52,7 @@
 #include <locus/primitives/ray.hpp>
 #include <locus/primitives/segment.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -65,15 +70,18 @@ template <class C>
   return z * z + sqr(rho - r);
 }
 
-template <class T, class Lin>
-[[nodiscard]] inline Distance<T, 3, T, T> linear_circle3(const Lin& lin,
-                                                         const Circle3<T>& c) noexcept {
-  if (!finite_input(lin) || !circle3_ok(c.center, c.center, c.normal, c.radius))
-    return non_finite_distance<T, 3, T, T>();
+/// The parameter t of the closest pair on the component (unclamped above 1 by rounding) and
+/// whether that point is on the circle's axis (every circle point equally close); n is the unit
+/// normal.
+template <class T>
+struct LinearCircleParam {
+  compute_t<T> t;
+  bool on_axis;
+};
+template <class T>
+[[nodiscard]] inline LinearCircleParam<T> linear_circle3_param(
+    const LinearView<T, 3>& v, const Circle3<T>& c, const Vec3<compute_t<T>>& n) noexcept {
   using C = compute_t<T>;
-  const LinearView<T, 3> v = view(lin);
-  const Vec3<C> n = normalize(vec_cast<C>(c.normal));
-  if (n == Vec3<C>{}) return non_finite_distance<T, 3, T, T>();
   const Vec3<C> d = vec_cast<C>(v.origin) - vec_cast<C>(c.center);
   const Vec3<C> m = vec_cast<C>(v.dir);
   const C r = static_cast<C>(c.radius);
@@ -126,11 +134,6 @@ template <class T, class Lin>
     if (f < best_f) best_f = f, best_t = t;
   }
 
-  T t = static_cast<T>(best_t);
-  if (v.bounded_hi && t > T(1)) t = T(1);
-  const Vec3<T> p = v.at(t);
-  const Distance<T, 3, NoParam, T> pc = distance(p, c);
-  if (std::isnan(pc.distance)) return non_finite_distance<T, 3, T, T>();
   // On the axis every circle point is equally close. point_circle.hpp only sees an EXACT axis
   // point, which the rounded minimiser of a tilted axis never is: accept distances from the axis
   // within the rounding of the input (64 eps of its scale).
@@ -138,8 +141,33 @@ template <class T, class Lin>
   const C rho = length(w - dot(w, n) * n);
   const C scale = static_cast<C>(max_abs(v.origin)) + static_cast<C>(max_abs(c.center)) +
                   std::fabs(best_t) * static_cast<C>(max_abs(v.dir)) + r;
-  const bool on_axis = r > C(0) && rho <= C(64) * static_cast<C>(eps_v<T>) * scale;
-  return make_distance(p, pc.closest[1], t, pc.param_b, pc.unique && !on_axis);
+  return {best_t, r > C(0) && rho <= C(64) * static_cast<C>(eps_v<T>) * scale};
+}
+
+template <class T, class Lin>
+[[nodiscard]] inline Distance<T, 3, T, T> linear_circle3(const Lin& lin,
+                                                         const Circle3<T>& c) noexcept {
+  if (!finite_input(lin) || !circle3_ok(c.center, c.center, c.normal, c.radius))
+    return non_finite_distance<T, 3, T, T>();
+  using C = compute_t<T>;
+  const LinearView<T, 3> v = view(lin);
+  const Vec3<C> n = normalize(vec_cast<C>(c.normal));
+  if (n == Vec3<C>{}) return non_finite_distance<T, 3, T, T>();
+  // The parameter is scale-free: coordinates whose products of six (the quartic's coefficients)
+  // leave the range are first scaled by a power of two (detail/rescale.hpp).
+  const T mag = std::max({max_abs(v.origin), max_abs(v.end), max_abs(v.dir), max_abs(c.center),
+                          std::abs(c.radius)});
+  const T f = outside_product_range<T, 6>(mag) ? normalising_scale(mag) : T(1);
+  const LinearCircleParam<T> sol =
+      f == T(1) ? linear_circle3_param(v, c, n)
+                : linear_circle3_param(scaled_view(v, f),
+                                       Circle3<T>{f * c.center, c.normal, f * c.radius}, n);
+  T t = static_cast<T>(sol.t);
+  if (v.bounded_hi && t > T(1)) t = T(1);
+  const Vec3<T> p = v.at(t);
+  const Distance<T, 3, NoParam, T> pc = distance(p, c);
+  if (std::isnan(pc.distance)) return non_finite_distance<T, 3, T, T>();
+  return make_distance(p, pc.closest[1], t, pc.param_b, pc.unique && !sol.on_axis);
 }
 
 }  // namespace detail

@@ -23,7 +23,9 @@
 // is a realisable pair of points, so the result is never below the true distance by more than
 // rounding, and the candidate set contains the global minimiser. An intersection gives distance
 // 0 up to the rounding of the root. The quadratic and the tangent points are computed in
-// compute_t<T> (double for float).
+// compute_t<T> (double for float), on the input scaled by a power of two when the quadratic's
+// coefficients (fourth powers of the coordinates) would leave the range (beyond ~1e76 or below
+// ~1e-76 in double: detail/rescale.hpp); the candidates are scored on the input itself.
 //
 // unique = false only when the point-ellipse answer at the winning point is not unique (the
 // winner is the centre of a circle, or an inside point of the major axis equidistant from two
@@ -39,6 +41,7 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/distance/point_ellipse.hpp>
 #include <locus/distance/result.hpp>
 #include <locus/numeric/roots.hpp>
@@ -47,6 +50,7 @@
 #include <locus/primitives/ray.hpp>
 #include <locus/primitives/segment.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -55,20 +59,27 @@ namespace locus {
 
 namespace detail {
 
-template <class T, class Lin>
-[[nodiscard]] inline Distance<T, 2, T, T> linear_ellipse2(const Lin& lin,
-                                                          const Ellipse2<T>& e) noexcept {
-  if (!finite_input(lin) || !ellipse_ok(e)) return non_finite_distance<T, 2, T, T>();
+/// The candidate parameters on the linear component (before clamping to its domain): its ends,
+/// the projection of the center, the crossings of the curve and the projections of the two
+/// points whose tangent is parallel to the direction.
+template <class T>
+struct LinearEllipseCandidates {
+  std::array<compute_t<T>, 8> t{};
+  int count = 0;
+};
+template <class T>
+[[nodiscard]] inline LinearEllipseCandidates<T> linear_ellipse2_candidates(
+    const LinearView<T, 2>& v, const Ellipse2<T>& e) noexcept {
   using C = compute_t<T>;
-  const LinearView<T, 2> v = view(lin);
   const Vec2<C> a0 = vec_cast<C>(e.axis[0]), a1 = vec_cast<C>(e.axis[1]);
   const Vec2<C> d = vec_cast<C>(v.origin) - vec_cast<C>(e.center);
   const Vec2<C> m = vec_cast<C>(v.dir);
   const C e0 = static_cast<C>(e.extent[0]), e1 = static_cast<C>(e.extent[1]);
   const C x0 = dot(d, a0), x1 = dot(d, a1), u0 = dot(m, a0), u1 = dot(m, a1);
 
-  std::array<C, 8> cand{};
-  int nc = 0;
+  LinearEllipseCandidates<T> out;
+  auto& cand = out.t;
+  int& nc = out.count;
   cand[nc++] = C(0);
   if (v.bounded_hi) cand[nc++] = C(1);
   const C mm = dot(m, m);
@@ -90,6 +101,28 @@ template <class T, class Lin>
       cand[nc++] = dot(-off - d, m) / mm;
     }
   }
+  return out;
+}
+
+template <class T, class Lin>
+[[nodiscard]] inline Distance<T, 2, T, T> linear_ellipse2(const Lin& lin,
+                                                          const Ellipse2<T>& e) noexcept {
+  if (!finite_input(lin) || !ellipse_ok(e)) return non_finite_distance<T, 2, T, T>();
+  const LinearView<T, 2> v = view(lin);
+  // The candidates' parameters are scale-free: coordinates whose fourth powers (the quadratic's
+  // coefficients) leave the range are first scaled by a power of two (detail/rescale.hpp); the
+  // candidates are evaluated on the input.
+  const T mag = std::max({max_abs(v.origin), max_abs(v.end), max_abs(v.dir), max_abs(e.center),
+                          std::abs(e.extent[0]), std::abs(e.extent[1])});
+  const T f = outside_product_range(mag) ? normalising_scale(mag) : T(1);
+  const LinearEllipseCandidates<T> cands =
+      f == T(1) ? linear_ellipse2_candidates(v, e)
+                : linear_ellipse2_candidates(
+                      scaled_view(v, f),
+                      Ellipse2<T>{f * e.center, {e.axis[0], e.axis[1]}, {f * e.extent[0], f * e.extent[1]}});
+  const auto& cand = cands.t;
+  const int nc = cands.count;
+  using C = compute_t<T>;
 
   Distance<T, 2, T, T> best = non_finite_distance<T, 2, T, T>();
   for (int i = 0; i < nc; ++i) {

@@ -49,7 +49,9 @@
 // no point of the surface is closer than distance - tau. Only near-ties within tau between
 // distinct minima that Newton did not reach could be resolved to the wrong one; the work budget
 // (below) ends the search early only for pathological input, still returning a surface point.
-// Computations run in compute_t<T> (double for float input).
+// Computations run in compute_t<T> (double for float input), on the control net and the point
+// scaled by a power of two when products of four coordinates would leave the range (beyond
+// ~1e76 or below ~1e-76: detail/rescale.hpp); the parameters found are evaluated on the input.
 //
 // unique = false when two critical candidates (Newton-converged points, edge-curve minima that
 // Q does not decrease from inward, see 1.) more than 16 sqrt(eps of compute_t<T>) size apart are
@@ -78,6 +80,7 @@
 #include <locus/curves/bspline_surface.hpp>
 #include <locus/curves/nurbs_surface.hpp>
 #include <locus/distance/detail/rational_span.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/distance/point_curve.hpp>
 #include <locus/distance/result.hpp>
 
@@ -968,6 +971,23 @@ inline void tensor_pieces(std::span<const T> ku, int du, int rows, std::span<con
   }
 }
 
+/// The search is scale-free (its tolerances are relative to the control net's size), but its
+/// Newton steps form products of four coordinates: when those would leave the range, the
+/// spatial parts of the homogeneous control points and the query point are first scaled by a
+/// power of two (detail/rescale.hpp); the parameters found are evaluated on the surface itself
+/// (point_surface_result).
+template <class C, int N>
+inline void rescale_search(std::vector<Vec<C, N + 1>>& net, Vec<C, N>& p) noexcept {
+  C m = max_abs(p);
+  for (const auto& h : net)
+    for (int i = 0; i < N; ++i) m = std::max(m, std::abs(h[i]));
+  if (!outside_product_range(m)) return;
+  const C f = normalising_scale(m);
+  for (auto& h : net)
+    for (int i = 0; i < N; ++i) h[i] *= f;
+  p = f * p;
+}
+
 template <class T, int N, class Surface>
 [[nodiscard]] inline Distance<T, N, NoParam, Vec2<T>> point_surface_result(
     const Vec<T, N>& p, const Surface& s, const SurfaceNearest<compute_t<T>, N>& tr) noexcept {
@@ -989,8 +1009,10 @@ template <class T, int N, class Surface, class Get>
                          std::span<const T>(s.knots_v), s.degree_v, s.cols, get, pool, pieces);
   SurfaceNearest<C, N> tr;
   tr.tie_rel = tie_tolerance<T>;
+  Vec<C, N> q = vec_cast<C>(p);
+  rescale_search<C, N>(pool, q);
   if (!pieces.empty())
-    rect_search<C, N>(pool, pieces, s.degree_u, s.degree_v, vec_cast<C>(p), tau_rounding<T>, tr);
+    rect_search<C, N>(pool, pieces, s.degree_u, s.degree_v, q, tau_rounding<T>, tr);
   return point_surface_result<T, N>(p, s, tr);
 }
 
@@ -1008,8 +1030,9 @@ template <Real T, int N>
   const std::vector<detail::SurfacePiece<C>> pieces{{0, C(0), C(1), C(0), C(1)}};
   detail::SurfaceNearest<C, N> tr;
   tr.tie_rel = detail::tie_tolerance<T>;
-  detail::rect_search<C, N>(pool, pieces, s.rows - 1, s.cols - 1, vec_cast<C>(p),
-                            detail::tau_rounding<T>, tr);
+  Vec<C, N> q = vec_cast<C>(p);
+  detail::rescale_search<C, N>(pool, q);
+  detail::rect_search<C, N>(pool, pieces, s.rows - 1, s.cols - 1, q, detail::tau_rounding<T>, tr);
   return detail::point_surface_result<T, N>(p, s, tr);
 }
 
@@ -1024,7 +1047,9 @@ template <Real T, int N>
   for (const auto& q : s.control) net.push_back(detail::homogeneous<C, N>(vec_cast<C>(q), C(1)));
   detail::SurfaceNearest<C, N> tr;
   tr.tie_rel = detail::tie_tolerance<T>;
-  detail::triangle_search<C, N>(net, s.degree, vec_cast<C>(p), detail::tau_rounding<T>, tr);
+  Vec<C, N> q = vec_cast<C>(p);
+  detail::rescale_search<C, N>(net, q);
+  detail::triangle_search<C, N>(net, s.degree, q, detail::tau_rounding<T>, tr);
   return detail::point_surface_result<T, N>(p, s, tr);
 }
 
