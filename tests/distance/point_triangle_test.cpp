@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Tests for distance/point_triangle.hpp (rows dist2.pt-triangle, dist3.pt-triangle; book figures
 // 6.5-6.9 and 10.8-10.10).
+#include <locus/distance/batch.hpp>
 #include <locus/distance/point_triangle.hpp>
 
 #include "distance/exact.hpp"
@@ -9,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
 #include <type_traits>
 #include <utility>
 
@@ -307,4 +309,32 @@ TYPED_TEST(PointTriangleTest, FarPointWhosePlaneSolutionOverflows) {
   const Vec3<T> bary = d.param_b;
   EXPECT_TRUE(bary.x >= T(0) && bary.y >= T(0) && bary.z >= T(0));
   EXPECT_NEAR(bary.x + bary.y + bary.z, T(1), tol<T>(4));
+}
+
+// A small triangle (edges ~1e-100 in double, ~1e-12 in float) whose a c = |e0|^2 |e1|^2
+// underflows to 0 while a and c are normal: the fast path's range test let it through, det
+// came out 0, the plane solution 0 / 0, and the answer was NaN for finite input. Now the
+// triangle goes to the general code, which solves on a copy scaled by a power of two: the
+// answer is the unit triangle's, scaled (the scaling is exact), in both the per-query and the
+// batch forms.
+TYPED_TEST(PointTriangleTest, SmallTriangleWhoseDeterminantUnderflows) {
+  using T = TypeParam;
+  const int k = std::is_same_v<T, float> ? -40 : -330;
+  const T f = std::ldexp(T(1), k);
+  const Triangle3<T> unit{{T(1), T(-9), T(8)}, {T(-0.5), T(-6), T(9)}, {T(9), T(8), T(-8)}};
+  const Triangle3<T> small{f * unit.v0, f * unit.v1, f * unit.v2};
+  const Vec3<T> points[] = {{T(12), T(-3), T(-6)}, {T(2), T(-1), T(3)}, {T(0), T(0), T(0)}};
+  for (const Vec3<T>& p : points) {
+    const auto want = distance(p, unit);
+    const auto got = distance(f * p, small);
+    ASSERT_TRUE(std::isfinite(got.sqr_distance));
+    EXPECT_NEAR(std::ldexp(got.sqr_distance, -2 * k), want.sqr_distance,
+                tol<T>(64) * (T(1) + want.sqr_distance));
+    EXPECT_EQ(sqr_distance(f * p, small), got.sqr_distance);
+    const Vec3<T> q = f * p;
+    T batch = T(-1);
+    locus::sqr_distances(std::span<const Vec3<T>>(&q, 1), std::span<const Triangle3<T>>(&small, 1),
+                         std::span<T>(&batch, 1));
+    EXPECT_EQ(batch, got.sqr_distance);
+  }
 }

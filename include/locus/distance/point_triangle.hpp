@@ -34,7 +34,10 @@
 // Degenerate input: when the triangle is (nearly) flat, |e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2 (the
 // plane solve is ill-conditioned), the answer is the nearest of the three edges, each handled as a
 // point-segment query (plus the plane solution when it still lands inside), so collinear and
-// coincident vertices give the distance to the segment or point they span. NaN or infinite
+// coincident vertices give the distance to the segment or point they span. Coordinates beyond
+// ~1e76 or below ~1e-76 (double; ~1e9 and ~1e-9 for float), where the products of four in det
+// overflow or underflow, take the general code on a copy scaled by a power of two, whose
+// barycentric coordinates are evaluated on the input (detail/rescale.hpp). NaN or infinite
 // coordinates give non_finite_distance() (result.hpp). unique is always true. Cost: O(N), one 2x2
 // solve, one to three point-segment projections.
 //

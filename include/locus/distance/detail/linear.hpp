@@ -49,6 +49,11 @@
 // or an origin's projection) is returned for exactly parallel directions, or when the minimiser
 // lies beyond the floating-point range (sin angle below ~|r| / max).
 //
+// Scale: squared directions or their product outside the normal range (coordinates beyond
+// ~1e77 or below ~1e-77 in double) are solved on the components scaled by a power of two
+// (detail/rescale.hpp: the parameters are scale-free), so the answer does not depend on the
+// units.
+//
 // Same-type pairs are solved in a canonical (lexicographic) argument order, so distance(b, a) is
 // bit for bit the swap of distance(a, b).
 // unique = false when the directions are parallel within sin^2(angle) <= (8 eps)^2 (the closest

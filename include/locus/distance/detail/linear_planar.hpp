@@ -28,6 +28,10 @@
 // rounding, is the minimum of continuous functions of the input, and no division can blow up
 // (a non-finite crossing is simply not a candidate).
 //
+// Scale: coordinates beyond ~1e76 or below ~1e-76 (double; ~1e9 and ~1e-9 for float), where the
+// plane's |n|^2 and the products of four overflow or underflow, are solved on a copy scaled by a
+// power of two (detail/rescale.hpp: the parameters are scale-free).
+//
 // unique = false when the direction is parallel to the plane (sin^2 angle <= 64 eps^2) and the
 // closest pair can slide along the direction while both points stay on their objects (a
 // segment parallel to and above the triangle's interior, or parallel to its nearest edge), or
