@@ -133,17 +133,29 @@ Sign decide(double det, double bound) noexcept {
   return Sign::zero;
 }
 
-// Scale-free exactness (predicates.hpp): when the largest coordinate magnitude of a predicate's
-// points lies outside [2^-32, 2^H], the power of two that brings it into [1, 2) (the sign is
-// invariant under the scaling, which rounds nothing while the coordinates stay normal); 1
-// otherwise. After the scaling the largest lies in [1, 2) (or near it at the ends of the double
-// range), so a second call returns 1: no recursion beyond one level.
-template <int H>
-double range_scale(std::initializer_list<double> magnitudes) noexcept {
-  const double m = std::max(magnitudes);
-  int e = 0;
-  static_cast<void>(std::frexp(m, &e));  // m = x 2^e, x in [0.5, 1); e = 0 for m = 0
-  if (m == 0.0 || (e >= -31 && e <= H)) return 1.0;
+// The exactness range (predicates.hpp): true when some coordinate's magnitude exceeds 2^H or
+// every coordinate is below 2^-32; the adaptive stages then run on the input scaled by
+// range_scale(). Independent comparisons combined with | and & (no chain of maxima, no
+// short-circuit branches), so that the common, in-range case costs the stages almost nothing.
+template <int H, class... D>
+bool outside_exact_range(D... x) noexcept {
+  constexpr double hi = [] {
+    double h = 1.0;
+    for (int i = 0; i < H; ++i) h *= 2.0;
+    return h;
+  }();
+  const bool huge = (... | (std::abs(x) > hi));
+  const bool tiny = (... & (std::abs(x) < 0x1p-32));
+  return huge | tiny;
+}
+
+// The power of two that brings the largest of the magnitudes into [1, 2) (normalising_scale):
+// the sign is invariant under the scaling, which rounds nothing while the coordinates stay
+// normal. 1 when every coordinate is zero.
+template <class... D>
+double range_scale(D... x) noexcept {
+  double m = 0.0;
+  ((m = std::max(m, std::abs(x))), ...);
   return normalising_scale(m);
 }
 
@@ -308,11 +320,22 @@ LOCUS_NOINLINE Sign insphere_exact_shewchuk(const Vec3<double>& a, const Vec3<do
 
 // ---- orient2d ---------------------------------------------------------------------------------
 
+// The adaptive stages on input outside their exact range (outside_exact_range), scaled into it:
+// out of line and cold, so that the common path carries only the range test. Every coordinate
+// zero: a zero determinant.
+namespace {
+[[gnu::cold]] LOCUS_NOINLINE Sign orient2d_rescaled(const Vec2<double>& a, const Vec2<double>& b,
+                                                    const Vec2<double>& c) noexcept {
+  const double f = range_scale(a.x, a.y, b.x, b.y, c.x, c.y);
+  return f == 1.0 ? Sign::zero : orient2d_adaptive(f * a, f * b, f * c);
+}
+}  // namespace
+
 Sign orient2d_adaptive(const Vec2<double>& a, const Vec2<double>& b,
                        const Vec2<double>& c) noexcept {
   if (!finite(a) || !finite(b) || !finite(c)) return Sign::zero;
-  if (const double f = range_scale<500>({max_abs(a), max_abs(b), max_abs(c)}); f != 1.0)
-    return orient2d_adaptive(f * a, f * b, f * c);
+  if (outside_exact_range<500>(a.x, a.y, b.x, b.y, c.x, c.y)) [[unlikely]]
+    return orient2d_rescaled(a, b, c);
   const double acx = a.x - c.x, bcx = b.x - c.x;
   const double acy = a.y - c.y, bcy = b.y - c.y;
   // Stage B.
@@ -338,20 +361,30 @@ Sign orient2d_adaptive(const Vec2<double>& a, const Vec2<double>& b,
 Sign turn2d_exact(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
                   const Vec2<double>& d) noexcept {
   if (!finite(a) || !finite(b) || !finite(c) || !finite(d)) return Sign::zero;
-  if (const double f = range_scale<500>({max_abs(a), max_abs(b), max_abs(c), max_abs(d)});
-      f != 1.0)
-    return turn2d_exact(f * a, f * b, f * c, f * d);
+  if (outside_exact_range<500>(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y)) [[unlikely]] {
+    const double f = range_scale(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
+    if (f != 1.0) return turn2d_exact(f * a, f * b, f * c, f * d);
+  }
   return sign((minor2(b, d) - minor2(b, c)) + (minor2(a, c) - minor2(a, d)));
 }
 
 // ---- orient3d (computed in Shewchuk's sign, returned in ours) ---------------------------------
 
+namespace {
+[[gnu::cold]] LOCUS_NOINLINE Sign orient3d_rescaled(const Vec3<double>& a, const Vec3<double>& b,
+                                                    const Vec3<double>& c,
+                                                    const Vec3<double>& d) noexcept {
+  const double f = range_scale(a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z);
+  return f == 1.0 ? Sign::zero : orient3d_adaptive(f * a, f * b, f * c, f * d);
+}
+}  // namespace
+
 Sign orient3d_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
                        const Vec3<double>& d) noexcept {
   if (!finite(a) || !finite(b) || !finite(c) || !finite(d)) return Sign::zero;
-  if (const double f = range_scale<330>({max_abs(a), max_abs(b), max_abs(c), max_abs(d)});
-      f != 1.0)
-    return orient3d_adaptive(f * a, f * b, f * c, f * d);
+  if (outside_exact_range<330>(a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z))
+      [[unlikely]]
+    return orient3d_rescaled(a, b, c, d);
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   const double adz = a.z - d.z, bdz = b.z - d.z, cdz = c.z - d.z;
@@ -388,12 +421,20 @@ Sign orient3d_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<
 
 // ---- incircle ---------------------------------------------------------------------------------
 
+namespace {
+[[gnu::cold]] LOCUS_NOINLINE Sign incircle_rescaled(const Vec2<double>& a, const Vec2<double>& b,
+                                                    const Vec2<double>& c,
+                                                    const Vec2<double>& d) noexcept {
+  const double f = range_scale(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
+  return f == 1.0 ? Sign::zero : incircle_adaptive(f * a, f * b, f * c, f * d);
+}
+}  // namespace
+
 Sign incircle_adaptive(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
                        const Vec2<double>& d) noexcept {
   if (!finite(a) || !finite(b) || !finite(c) || !finite(d)) return Sign::zero;
-  if (const double f = range_scale<245>({max_abs(a), max_abs(b), max_abs(c), max_abs(d)});
-      f != 1.0)
-    return incircle_adaptive(f * a, f * b, f * c, f * d);
+  if (outside_exact_range<245>(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y)) [[unlikely]]
+    return incircle_rescaled(a, b, c, d);
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   // Stage B.
@@ -534,10 +575,12 @@ LOCUS_NOINLINE std::optional<Sign> insphere_stages_bc(const Vec3<double>& a, con
 Sign insphere_adaptive(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
                        const Vec3<double>& d, const Vec3<double>& e) noexcept {
   if (!finite(a) || !finite(b) || !finite(c) || !finite(d) || !finite(e)) return Sign::zero;
-  if (const double f =
-          range_scale<195>({max_abs(a), max_abs(b), max_abs(c), max_abs(d), max_abs(e)});
-      f != 1.0)
-    return insphere_adaptive(f * a, f * b, f * c, f * d, f * e);
+  if (outside_exact_range<195>(a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z, e.x,
+                               e.y, e.z)) [[unlikely]] {
+    const double f =
+        range_scale(a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z, e.x, e.y, e.z);
+    if (f != 1.0) return insphere_adaptive(f * a, f * b, f * c, f * d, f * e);
+  }
   if (const std::optional<Sign> s = insphere_stages_bc(a, b, c, d, e)) return *s;
   return -insphere_exact_shewchuk(a, b, c, d, e);
 }
@@ -550,13 +593,13 @@ Sign compare_sqr_distance_exact(const double* p, const double* q, const double* 
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(p[i]) || !std::isfinite(q[i]) || !std::isfinite(r[i])) return Sign::zero;
   }
-  double m = 0.0;
-  for (int i = 0; i < n && i < 3; ++i)
-    m = std::max({m, std::abs(p[i]), std::abs(q[i]), std::abs(r[i])});
-  if (const double f = range_scale<500>({m}); f != 1.0) {
+  const int k = n < 3 ? n : 3;
+  if (outside_exact_range<500>(p[0], p[1], p[k - 1], q[0], q[1], q[k - 1], r[0], r[1],
+                               r[k - 1])) {
+    const double f = range_scale(p[0], p[1], p[k - 1], q[0], q[1], q[k - 1], r[0], r[1], r[k - 1]);
     double ps[3], qs[3], rs[3];
-    for (int i = 0; i < n && i < 3; ++i) ps[i] = f * p[i], qs[i] = f * q[i], rs[i] = f * r[i];
-    return compare_sqr_distance_exact(ps, qs, rs, n < 3 ? n : 3);
+    for (int i = 0; i < k; ++i) ps[i] = f * p[i], qs[i] = f * q[i], rs[i] = f * r[i];
+    if (f != 1.0) return compare_sqr_distance_exact(ps, qs, rs, k);
   }
   for (int i = 0; i < n && i < 3; ++i) {
     const Exp<4> sq = cross(q[i], q[i], r[i], r[i]);

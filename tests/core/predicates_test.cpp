@@ -732,6 +732,14 @@ bool translate_exactly(const PointsOf<Pred, T>& p, const Vec<T, Pred::dim>& t,
   return true;
 }
 
+/// The points scaled by 2^k (exact while the coordinates stay normal).
+template <class Pred, class T>
+PointsOf<Pred, T> scaled_points(PointsOf<Pred, T> p, int k) {
+  for (auto& x : p)
+    for (int j = 0; j < Pred::dim; ++j) x[j] = T(std::ldexp(x[j], k));
+  return p;
+}
+
 template <class Pred, class T>
 void check_translation_and_scaling(int count) {
   constexpr int D = Pred::dim;
@@ -751,21 +759,18 @@ void check_translation_and_scaling(int count) {
       EXPECT_EQ(Pred::eval(q), s) << describe<Pred, T>(p) << " translated";
     }
     // Scaling by a power of two is exact and multiplies the determinant by a positive factor.
-    PointsOf<Pred, T> r = p;
     const int f = rng.uniform_int(-20, 20);
-    for (auto& x : r)
-      for (int k = 0; k < D; ++k) x[k] = T(std::ldexp(x[k], f));
-    EXPECT_EQ(Pred::eval(r), s) << describe<Pred, T>(p) << " scaled by 2^" << f;
+    EXPECT_EQ(Pred::eval(scaled_points<Pred, T>(p, f)), s)
+        << describe<Pred, T>(p) << " scaled by 2^" << f;
   }
   EXPECT_GT(translated, count / 4) << "too few exactly translatable cases";
 }
 
-// Scale-free exactness (predicates.hpp): nearly degenerate configurations (exactly degenerate
-// lattices and their 1-ulp neighbours, small integers) scaled by 2^k far outside the absolute
-// range [2^-L, 2^H] of the stages, up to the ends of the double range, against the exact oracle
-// of the scaled points (the scaling is exact: every coordinate stays normal). Before the
-// adaptive stages rescaled and the filter had its underflow floor, products of such coordinates
-// overflowed to infinity or underflowed to zero and the signs came out wrong.
+// No upper limit on the exactness range (predicates.hpp): nearly degenerate configurations
+// (exactly degenerate lattices and their 1-ulp neighbours, small integers) scaled by 2^k from
+// above the stages' absolute range 2^H up to the top of the double range, against the exact
+// oracle of the scaled points (the scaling is exact). Before the adaptive stages scaled such
+// input down, their products overflowed and the signs came out wrong.
 template <class Pred>
 void check_far_scales(int count) {
   constexpr int D = Pred::dim;
@@ -779,14 +784,12 @@ void check_far_scales(int count) {
       for (int k = 0; k < D; ++k)
         if (x[k] != 0.0) lo = std::min(lo, std::abs(x[k])), hi = std::max(hi, std::abs(x[k]));
     if (!(hi > 0.0)) continue;
-    // k from the bottom of the normal range (the smallest coordinate just above 2^-1022) to the
-    // top (the largest just below 2^1023), skipping the middle, where the stages were exact.
-    const int kmin = -1021 - std::ilogb(lo), kmax = 1022 - std::ilogb(hi);
-    const int k = (i % 4 < 2) ? rng.uniform_int(kmin, std::min(kmin + 400, -400))
-                              : rng.uniform_int(std::max(kmax - 400, 400), kmax);
-    PointsOf<Pred, double> q = p;
-    for (auto& x : q)
-      for (int j = 0; j < D; ++j) x[j] = std::ldexp(x[j], k);
+    // k up to the top of the range (the largest coordinate just below 2^1023), from where the
+    // largest coordinate passes 2^H.
+    const int kmax = 1022 - std::ilogb(hi);
+    const int k = rng.uniform_int(std::min(Pred::max_exp - std::ilogb(hi), kmax), kmax);
+    ASSERT_GE(std::ilogb(lo) + k, -1022) << "a coordinate left the normal range";
+    const PointsOf<Pred, double> q = scaled_points<Pred, double>(p, k);
     const int want = oracle<Pred, double>(q);
     zeros += want == 0;
     ASSERT_EQ(to_int(Pred::eval(q)), want) << describe<Pred, double>(p) << " scaled by 2^" << k;
@@ -794,7 +797,7 @@ void check_far_scales(int count) {
   EXPECT_GT(zeros, count / 20) << "too few degenerate cases";
 }
 
-TEST(PredicateRange, ExactAtAnyScale) {
+TEST(PredicateRange, ExactAtAnyLargeScale) {
   check_far_scales<Orient2dP>(4000);
   check_far_scales<Orient3dP>(4000);
   check_far_scales<IncircleP>(2000);

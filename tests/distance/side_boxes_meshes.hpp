@@ -16,6 +16,22 @@
 
 namespace locus_test::dist {
 
+/// A frustum (3D or 2D) scaled by k about the origin (a power of two: exact): its origin, near
+/// and far distances and bounds; the axes are unit vectors.
+template <class F, class T>
+F scaled_frustum(F f, T k) {
+  f.origin = k * f.origin;
+  f.d_min *= k;
+  f.d_max *= k;
+  if constexpr (requires { f.l_bound; }) {
+    f.l_bound *= k;
+  } else {
+    f.u_bound *= k;
+    f.r_bound *= k;
+  }
+  return f;
+}
+
 template <class T>
 struct Side<locus::Frustum3<T>> {
   using P = locus::Frustum3<T>;
@@ -39,16 +55,7 @@ struct Side<locus::Frustum3<T>> {
     o.right = r * f.right;
     return o;
   }
-  /// The object scaled by f about the origin (a power of two: exact).
-  static P scaled(const P& f, T k) {
-    P o = f;
-    o.origin = k * f.origin;
-    o.d_min = k * f.d_min;
-    o.d_max = k * f.d_max;
-    o.u_bound = k * f.u_bound;
-    o.r_bound = k * f.r_bound;
-    return o;
-  }
+  static P scaled(const P& f, T k) { return scaled_frustum(f, k); }
 };
 
 template <class T>
@@ -72,15 +79,7 @@ struct Side<locus::Frustum2<T>> {
     o.left = r * f.left;
     return o;
   }
-  /// The object scaled by f about the origin (a power of two: exact).
-  static P scaled(const P& f, T k) {
-    P o = f;
-    o.origin = k * f.origin;
-    o.d_min = k * f.d_min;
-    o.d_max = k * f.d_max;
-    o.l_bound = k * f.l_bound;
-    return o;
-  }
+  static P scaled(const P& f, T k) { return scaled_frustum(f, k); }
 };
 
 }  // namespace locus_test::dist

@@ -37,26 +37,25 @@
 // (the filter can never accept a non-finite determinant or bound, and the fallback checks).
 //
 // Exactness range. Float input: every finite float is handled exactly (differences and products
-// of promoted floats stay far inside double range). Double input: the result is exact, at any
-// scale, whenever every nonzero coordinate is at least 2^-(L - 32) times the largest coordinate
-// magnitude, with
-//     orient2d   L = 480, H = 500   (also turn2d, compare_sqr_distance)
-//     orient3d   L = 300, H = 330
-//     incircle   L = 210, H = 245
-//     insphere   L = 160, H = 195
-// (e.g. orient3d: coordinates within a factor 2^268, about 5e80, of the largest). Why: the
-// stages are exact when every nonzero coordinate lies in [2^-L, 2^H] (a degree-n predicate
-// needs n*(L+52) <= 1074, so every difference, product and expansion component is a multiple of
-// the smallest subnormal and no rounding is ever absolute; and n*(H+2) + 9 < 1024, so no sum of
-// the at most 2^9 monomials overflows, which also keeps every Veltkamp-Dekker split, applied to
-// values of degree <= n-1, 2^27 below overflow). The sign is invariant under scaling by a power
-// of two, which rounds nothing while the coordinates stay normal, so the adaptive stages first
-// scale the input to bring its largest magnitude into [1, 2) when that magnitude lies outside
-// [2^-32, 2^H] (normalising_scale, core/scalar.hpp). The filter needs no scaling: above 2^H an
-// overflowing product makes its bound infinite or NaN, so it declines; below 2^-32 a product
-// that underflows has an absolute error below 2^-1060, which the filter's bound covers with an
-// added 2^-960 (predicate_underflow_floor: it only sends determinants below that to the
-// adaptive stages).
+// of promoted floats stay far inside double range). Double input: the result is exact whenever
+// every nonzero coordinate c satisfies |c| >= 2^-L and |c| >= 2^-(L - 32) M, M the largest
+// coordinate magnitude, with no upper limit on M:
+//     orient2d   L = 480, H = 500   (about 3e-145; also turn2d, compare_sqr_distance)
+//     orient3d   L = 300, H = 330   (about 5e-91)
+//     incircle   L = 210, H = 245   (about 6e-64)
+//     insphere   L = 160, H = 195   (about 7e-49)
+// Why: every stage is exact when every nonzero coordinate lies in [2^-L, 2^H] (a degree-n
+// predicate needs n*(L+52) <= 1074, so every difference, product and expansion component is a
+// multiple of the smallest subnormal and no rounding is ever absolute; and n*(H+2) + 9 < 1024, so
+// no sum of the at most 2^9 monomials overflows, which also keeps every Veltkamp-Dekker split,
+// applied to values of degree <= n-1, 2^27 below overflow). Above 2^H the filter cannot accept
+// (an overflowing product makes its bound infinite or NaN), and the adaptive stages first scale
+// the input by the power of two that brings M into [1, 2) (normalising_scale, core/scalar.hpp),
+// which leaves the sign unchanged and rounds nothing while the coordinates stay normal: hence
+// the relative lower limit. (They scale small input up too, when M < 2^-32, but the filter may
+// already have accepted a wrong sign there: products in the subnormal range carry absolute
+// errors its relative bound does not cover. Only when every product underflows to zero does the
+// filter decline for certain; exactness below 2^-L is therefore not promised.)
 // Outside that range the result is still a deterministic Sign with no UB and no hang, but may be
 // wrong. Compiling the *calling* code with -ffast-math (-ffinite-math-only) voids the NaN rule;
 // FMA contraction in the caller does not invalidate the filter (a fused operation only drops
@@ -66,7 +65,9 @@
 // well-predicted branch): on random input about 1.15x the naive determinant for orient2d and
 // 1.4-1.8x for the others (bench/core/predicates_bench.cpp). The fallback runs only for nearly
 // degenerate input: about 10 ns for orient2d, 0.1 us orient3d, 0.5 us incircle, 1.5-3 us
-// insphere. No allocation; stack use of the fallbacks is a few KB except insphere (about 40 KB
+// insphere; of that, the test for input outside the exact range (which is then scaled) takes
+// about 2 ns (orient2d's fallback 81.7 -> 70.1 M/s, BM_orient2d_exact_degenerate; within noise for
+// the others). No allocation; stack use of the fallbacks is a few KB except insphere (about 40 KB
 // in stages B/C, about 140 KB in its rarely reached exact stage).
 //
 // Book: chapter 13 uses these signs throughout; figure 13.35 (the five relations of a point and a
@@ -126,10 +127,6 @@ inline constexpr double orient2d_bound_a = (3.0 + 16.0 * predicate_eps) * predic
 inline constexpr double orient3d_bound_a = (7.0 + 56.0 * predicate_eps) * predicate_eps;
 inline constexpr double incircle_bound_a = (10.0 + 96.0 * predicate_eps) * predicate_eps;
 inline constexpr double insphere_bound_a = (16.0 + 224.0 * predicate_eps) * predicate_eps;
-// Added to every stage-A bound: it covers the absolute error of products that underflow when
-// every coordinate is below 2^-32 (at most a few hundred roundings of at most 2^-1075 each,
-// multiplied by factors below 1), far below it; see the header comment.
-inline constexpr double predicate_underflow_floor = 0x1p-960;
 // |sum_i (q_i - p_i)^2 - (r_i - p_i)^2| in up to 3 dimensions: each square carries 3 roundings,
 // each difference of squares 1, the sum N-1 <= 2; 8 eps leaves room for second-order terms.
 inline constexpr double sqr_distance_bound_a = (8.0 + 64.0 * predicate_eps) * predicate_eps;
@@ -202,7 +199,7 @@ template <class T, int N>
   // The paper's bound is c (|left| + |right|). When left and right share a sign that equals
   // c |left + right| (rounding is symmetric); when they differ, det cannot change sign and any
   // bound >= 0 decides correctly. One absolute value fewer on the hot path.
-  const double bound = orient2d_bound_a * std::abs(left + right) + predicate_underflow_floor;
+  const double bound = orient2d_bound_a * std::abs(left + right);
   if (std::abs(det) > bound) [[likely]]
     return nonzero_sign(det);
   return orient2d_adaptive(a, b, c);
@@ -221,7 +218,7 @@ template <class T, int N>
   const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * std::abs(adz) +
                            (std::abs(cdxady) + std::abs(adxcdy)) * std::abs(bdz) +
                            (std::abs(adxbdy) + std::abs(bdxady)) * std::abs(cdz);
-  const double bound = orient3d_bound_a * permanent + predicate_underflow_floor;
+  const double bound = orient3d_bound_a * permanent;
   if (std::abs(det) > bound) [[likely]]
     return -nonzero_sign(det);
   return orient3d_adaptive(a, b, c, d);
@@ -243,7 +240,7 @@ template <class T, int N>
   const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
                            (std::abs(cdxady) + std::abs(adxcdy)) * blift +
                            (std::abs(adxbdy) + std::abs(bdxady)) * clift;
-  const double bound = incircle_bound_a * permanent + predicate_underflow_floor;
+  const double bound = incircle_bound_a * permanent;
   if (std::abs(det) > bound) [[likely]]
     return nonzero_sign(det);
   return incircle_adaptive(a, b, c, d);
@@ -294,7 +291,7 @@ struct InsphereTerms {
                                             const Vec3<double>& c, const Vec3<double>& d,
                                             const Vec3<double>& e) noexcept {
   const InsphereTerms t = insphere_terms(a, b, c, d, e);
-  const double bound = insphere_bound_a * t.permanent + predicate_underflow_floor;
+  const double bound = insphere_bound_a * t.permanent;
   if (std::abs(t.det) > bound) [[likely]]
     return -nonzero_sign(t.det);
   return insphere_adaptive(a, b, c, d, e);
@@ -431,8 +428,7 @@ template <Real T>
   const double l = (double(b.x) - double(a.x)) * (double(d.y) - double(c.y));
   const double r = (double(b.y) - double(a.y)) * (double(d.x) - double(c.x));
   const double det = l - r;
-  const double bound =
-      detail::orient2d_bound_a * (std::abs(l) + std::abs(r)) + detail::predicate_underflow_floor;
+  const double bound = detail::orient2d_bound_a * (std::abs(l) + std::abs(r));
   if (std::abs(det) > bound) [[likely]]
     return detail::nonzero_sign(det);
   return detail::turn2d_exact(detail::to_double(a), detail::to_double(b), detail::to_double(c),
@@ -452,8 +448,7 @@ requires(N == 2 || N == 3) [[nodiscard]] inline Sign
     value += q2 - r2;
     permanent += q2 + r2;
   }
-  const double bound =
-      detail::sqr_distance_bound_a * permanent + detail::predicate_underflow_floor;
+  const double bound = detail::sqr_distance_bound_a * permanent;
   if (value > bound) return Sign::positive;
   if (-value > bound) return Sign::negative;
   double pd[N], qd[N], rd[N];
