@@ -569,9 +569,11 @@ Sign compare_sqr_distance_exact(const double* p, const double* q, const double* 
     Vec3<double> pv{}, qv{}, rv{};
     for (int i = 0; i < n; ++i) pv[i] = p[i], qv[i] = q[i], rv[i] = r[i];
     if (outside_exact_range<500>(pv, qv, rv)) [[unlikely]]
-      return rescaled(+[](const Vec3<double>& x, const Vec3<double>& y, const Vec3<double>& z) {
-        return compare_sqr_distance_exact(&x[0], &y[0], &z[0], 3);
-      }, pv, qv, rv);
+      return rescaled(
+          +[](const Vec3<double>& x, const Vec3<double>& y, const Vec3<double>& z) {
+            return compare_sqr_distance_exact(&x[0], &y[0], &z[0], 3);
+          },
+          pv, qv, rv);
   }
   for (int i = 0; i < n && i < 3; ++i) {
     const Exp<4> sq = cross(q[i], q[i], r[i], r[i]);

@@ -50,8 +50,8 @@ template <class T>
 template <class T>
 [[nodiscard]] inline T normalising_scale(T m) noexcept {
   if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return T(1);
-  int e = 0;
-  static_cast<void>(std::frexp(m, &e));  // m = x 2^e, x in [0.5, 1)
+  int e = 0;  // m = x 2^e with x in [0.5, 1)
+  static_cast<void>(std::frexp(m, &e));
   constexpr int lo = std::numeric_limits<T>::min_exponent - 1;  // 2^lo: the smallest normal
   constexpr int hi = std::numeric_limits<T>::max_exponent - 1;  // 2^hi: the largest power of 2
   const int k = 1 - e;

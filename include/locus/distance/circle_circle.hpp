@@ -21,8 +21,8 @@
 // circle 1 is the point-circle answer (point_circle.hpp). Set-up and roots run in compute_t<T>
 // (double for float), on the input scaled by a power of two when the polynomial's coefficients
 // (products of up to eight coordinates) would leave the range (beyond ~1e38 or below ~1e-38 in
-// double: detail/rescale.hpp); the pair comes from the input itself. The pair is solved in a canonical argument order, so distance(b, a) is bit
-// for bit the swap of distance(a, b).
+// double: detail/rescale.hpp); the pair comes from the input itself. The pair is solved in a
+// canonical argument order, so distance(b, a) is bit for bit the swap of distance(a, b).
 //
 // unique = false for coaxial circles (parallel normals, centers on a common axis, including
 // concentric coplanar circles): F is then constant, detected as the degree-8 polynomial

@@ -155,8 +155,8 @@ template <class T, class Lin>
   if (n == Vec3<C>{}) return non_finite_distance<T, 3, T, T>();
   // The parameter is scale-free: coordinates whose products of six (the quartic's coefficients)
   // leave the range are first scaled by a power of two (detail/rescale.hpp).
-  const T mag = std::max({max_abs(v.origin), max_abs(v.end), max_abs(v.dir), max_abs(c.center),
-                          std::abs(c.radius)});
+  const T mag = std::max(
+      {max_abs(v.origin), max_abs(v.end), max_abs(v.dir), max_abs(c.center), std::abs(c.radius)});
   const T f = outside_product_range<T, 6>(mag) ? normalising_scale(mag) : T(1);
   const LinearCircleParam<T> sol =
       f == T(1) ? linear_circle3_param(v, c, n)

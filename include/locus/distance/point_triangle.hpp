@@ -176,13 +176,13 @@ template <class T, int N>
   constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
   // Well-shaped (16 |e0 x e1|^2 >= |e0|^2 |e1|^2: Cramer's rule is accurate to a few ulps),
   // no squares or products of squares out of range (a tiny triangle, edges below ~1e-77 in
-  // double, has a c = 0 and det = 0: the test above would pass and s = 0 / 0), and finite input: e0, e1 are finite when a, c are (and so are the
-  // vertices), and then d, e are finite exactly when p is (a NaN or an infinity in w0 reaches
-  // every product). The plane solution's numerators must be finite too: they overflow for a point
-  // far away (beyond ~sqrt(max) / |e| from a large triangle), and a NaN there would violate no
-  // constraint. The edge x y has its own range test, where it is needed. [[unlikely]]: GCC
-  // predicts a floating-point == to be false, took the fast path for cold and left its callees
-  // out of line.
+  // double, has a c = 0 and det = 0: the test above would pass and s = 0 / 0), and finite input:
+  // e0, e1 are finite when a, c are (and so are the vertices), and then d, e are finite exactly
+  // when p is (a NaN or an infinity in w0 reaches every product). The plane solution's numerators
+  // must be finite too: they overflow for a point far away (beyond ~sqrt(max) / |e| from a large
+  // triangle), and a NaN there would violate no constraint. The edge x y has its own range test,
+  // where it is needed. [[unlikely]]: GCC predicts a floating-point == to be false, took the fast
+  // path for cold and left its callees out of line.
   const T sn = c * d - b * e, tn = a * e - b * d;  // det * (s, t) of the plane solution
   if (!(T(16) * det >= ac && a >= lo && c >= lo && ac >= lo && ac <= hi &&
         (d - d) + (e - e) + (sn - sn) + (tn - tn) == T(0))) [[unlikely]]
