@@ -37,6 +37,14 @@
 #define LOCUS_FLATTEN
 #endif
 
+// LOCUS_COLD: a function reached only for rare input (e.g. a rescaled retry), kept out of line
+// and out of the hot code's layout.
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCUS_COLD __attribute__((cold, noinline))
+#else
+#define LOCUS_COLD
+#endif
+
 namespace locus {
 
 /// Signature of an assertion handler: the failed condition, a message, the source location.

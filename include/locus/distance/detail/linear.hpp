@@ -406,6 +406,17 @@ template <class T, int N>
   return {bs, bt, parallel_unique(A, B, a, b, d, D, ac)};
 }
 
+/// linear_linear_solve on the components scaled by the power of two that brings their largest
+/// coordinate into [1, 2) (out of line: rare input).
+template <class T, int N>
+LOCUS_COLD LinLinParams<T> linear_linear_rescaled(const LinearView<T, N>& A,
+                                                  const LinearView<T, N>& B) noexcept {
+  const T m = std::max({max_abs(A.origin), max_abs(A.end), max_abs(A.dir), max_abs(B.origin),
+                        max_abs(B.end), max_abs(B.dir)});
+  const T f = normalising_scale(m);
+  return linear_linear_solve(scaled_view(A, f), scaled_view(B, f));
+}
+
 /// Parameters (s on A, t on B) of a closest pair of two linear components; see the header. When
 /// a squared direction or their product leaves the normal range (coordinates beyond ~1e77 or
 /// below ~1e-77 in double), the solver runs on the components scaled by a power of two
@@ -416,12 +427,8 @@ template <class T, int N>
                                                    const LinearView<T, N>& B) noexcept {
   constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
   const T a = sqr_length(A.dir), c = sqr_length(B.dir), ac = a * c;
-  if (!(a >= lo && a <= hi && c >= lo && c <= hi && ac >= lo && ac <= hi)) {
-    const T m = std::max({max_abs(A.origin), max_abs(A.end), max_abs(A.dir), max_abs(B.origin),
-                          max_abs(B.end), max_abs(B.dir)});
-    const T f = normalising_scale(m);
-    if (f != T(1)) return linear_linear_solve(scaled_view(A, f), scaled_view(B, f));
-  }
+  if (!(a >= lo && a <= hi && c >= lo && c <= hi && ac >= lo && ac <= hi)) [[unlikely]]
+    return linear_linear_rescaled(A, B);
   return linear_linear_solve(A, B);
 }
 

@@ -44,6 +44,7 @@
 // the contact point on the triangle); a contact on a needle triangle or at a grazing angle, whose
 // rounded pair can be ~eps / angle apart, is reported as that pair.
 
+#include <locus/config.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -141,10 +142,19 @@ template <class T>
   return (pos && neg) ? 0 : 1;
 }
 
-/// linear_triangle for coordinates whose products of four are in range.
 template <class T>
-[[nodiscard]] inline LinearPlanarParams<T, Vec3<T>> linear_triangle_solve(
-    const LinearView<T, 3>& A, const Triangle3<T>& tri, int meets) noexcept {
+LOCUS_COLD LinearPlanarParams<T, Vec3<T>> linear_triangle_rescaled(const LinearView<T, 3>& A,
+                                                                   const Triangle3<T>& tri,
+                                                                   int meets) noexcept;
+
+/// Parameters (t on A, barycentric (u, v, w) on tri) of a closest pair of a linear component and
+/// a solid triangle. meets: 1 / 0 when the caller knows exactly that they meet / do not meet,
+/// -1 when unknown. range_checked: set by linear_triangle_rescaled (below), which handles the
+/// squares out of range.
+template <class T>
+[[nodiscard]] inline LinearPlanarParams<T, Vec3<T>> linear_triangle(
+    const LinearView<T, 3>& A, const Triangle3<T>& tri, int meets,
+    bool range_checked = false) noexcept {
   using P = Vec3<T>;
   BestCandidate<T, P> best;
   const auto point_candidate = [&](T t, const Vec3<T>& x) {
@@ -178,6 +188,13 @@ template <class T>
   const Vec3<T> n = cross(e0, e1);
   const T a = sqr_length(e0), c = sqr_length(e1), nn = sqr_length(n), dd = sqr_length(A.dir);
   const T dn = dot(n, A.dir);
+  // Products of four coordinates out of range (|n|^2 and a c overflow, or underflow to 0 and
+  // make the triangle look flat): the cold path rescales when the coordinates themselves are
+  // beyond the range (see the header comment), from values at hand, so the common case pays two
+  // comparisons.
+  constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
+  if (!range_checked && !(a * c >= lo && a * c <= hi && dd >= lo && dd <= hi)) [[unlikely]]
+    return linear_triangle_rescaled(A, tri, meets);
   constexpr T eps = eps_v<T>;
   const bool flat = !(nn > T(64) * eps * a * c);
   bool have_crossing = false;
@@ -254,24 +271,19 @@ template <class T>
   return {best.t, best.param, unique};
 }
 
-/// Parameters (t on A, barycentric (u, v, w) on tri) of a closest pair of a linear component and
-/// a solid triangle. meets: 1 / 0 when the caller knows exactly that they meet / do not meet,
-/// -1 when unknown. Coordinates so large or small that products of four leave the range (the
-/// plane's |n|^2 overflows or underflows to 0) are solved on a copy scaled by a power of two:
-/// the parameters are scale-free (rescale.hpp). (The batch kernel accepts a smaller range and
-/// leaves these to this code.)
+/// linear_triangle on the input scaled by the power of two that brings its largest coordinate
+/// into [1, 2), when that coordinate lies beyond the product range (detail/rescale.hpp: the
+/// parameters are scale-free); otherwise on the input itself. (The batch kernel accepts a smaller
+/// range and leaves these to this code.)
 template <class T>
-[[nodiscard]] inline LinearPlanarParams<T, Vec3<T>> linear_triangle(const LinearView<T, 3>& A,
-                                                                    const Triangle3<T>& tri,
-                                                                    int meets) noexcept {
+LOCUS_COLD LinearPlanarParams<T, Vec3<T>> linear_triangle_rescaled(const LinearView<T, 3>& A,
+                                                                   const Triangle3<T>& tri,
+                                                                   int meets) noexcept {
   const T m = std::max({max_abs(A.origin), max_abs(A.end), max_abs(A.dir), max_abs(tri.v0),
                         max_abs(tri.v1), max_abs(tri.v2)});
-  if (m > T(0) && outside_product_range(m)) {
-    const T f = normalising_scale(m);
-    return linear_triangle_solve(scaled_view(A, f),
-                                 Triangle3<T>{f * tri.v0, f * tri.v1, f * tri.v2}, meets);
-  }
-  return linear_triangle_solve(A, tri, meets);
+  const T f = m > T(0) && outside_product_range(m) ? normalising_scale(m) : T(1);
+  return linear_triangle(scaled_view(A, f), Triangle3<T>{f * tri.v0, f * tri.v1, f * tri.v2},
+                         meets, true);
 }
 
 /// What a linear-triangle query finds; distance() and sqr_distance() both read it. finite is
