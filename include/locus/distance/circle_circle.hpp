@@ -129,9 +129,8 @@ template <class T>
   const T mag = std::max({max_abs(c0.center), max_abs(c1.center), c0.radius, c1.radius});
   const T f = outside_product_range<T, 8>(mag) ? normalising_scale(mag) : T(1);
   const CircleCircleAngle<T> sol =
-      f == T(1) ? circle_circle3_angle(c0, c1, ax, n1)
-                : circle_circle3_angle(Circle3<T>{f * c0.center, c0.normal, f * c0.radius},
-                                       Circle3<T>{f * c1.center, c1.normal, f * c1.radius}, ax, n1);
+      circle_circle3_angle(Circle3<T>{f * c0.center, c0.normal, f * c0.radius},
+                           Circle3<T>{f * c1.center, c1.normal, f * c1.radius}, ax, n1);
   const T angle0 = static_cast<T>(sol.angle);
   const Vec3<T> p = point_at(c0, angle0);
   const Distance<T, 3, NoParam, T> pc = distance(p, c1);

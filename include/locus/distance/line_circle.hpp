@@ -159,9 +159,7 @@ template <class T, class Lin>
       {max_abs(v.origin), max_abs(v.end), max_abs(v.dir), max_abs(c.center), std::abs(c.radius)});
   const T f = outside_product_range<T, 6>(mag) ? normalising_scale(mag) : T(1);
   const LinearCircleParam<T> sol =
-      f == T(1) ? linear_circle3_param(v, c, n)
-                : linear_circle3_param(scaled_view(v, f),
-                                       Circle3<T>{f * c.center, c.normal, f * c.radius}, n);
+      linear_circle3_param(scaled_view(v, f), Circle3<T>{f * c.center, c.normal, f * c.radius}, n);
   T t = static_cast<T>(sol.t);
   if (v.bounded_hi && t > T(1)) t = T(1);
   const Vec3<T> p = v.at(t);

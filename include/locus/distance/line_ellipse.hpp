@@ -115,12 +115,9 @@ template <class T, class Lin>
   const T mag = std::max({max_abs(v.origin), max_abs(v.end), max_abs(v.dir), max_abs(e.center),
                           std::abs(e.extent[0]), std::abs(e.extent[1])});
   const T f = outside_product_range(mag) ? normalising_scale(mag) : T(1);
-  const LinearEllipseCandidates<T> cands =
-      f == T(1) ? linear_ellipse2_candidates(v, e)
-                : linear_ellipse2_candidates(scaled_view(v, f),
-                                             Ellipse2<T>{f * e.center,
-                                                         {e.axis[0], e.axis[1]},
-                                                         {f * e.extent[0], f * e.extent[1]}});
+  const LinearEllipseCandidates<T> cands = linear_ellipse2_candidates(
+      scaled_view(v, f),
+      Ellipse2<T>{f * e.center, {e.axis[0], e.axis[1]}, {f * e.extent[0], f * e.extent[1]}});
   const auto& cand = cands.t;
   const int nc = cands.count;
   using C = compute_t<T>;
