@@ -22,6 +22,7 @@
 #include <locus/distance/detail/planar_pairs.hpp>
 #include <locus/distance/detail/quadric_lagrange.hpp>
 #include <locus/distance/detail/rational_span.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/distance/detail/tetrahedron.hpp>
 
 #include "support/typed.hpp"
@@ -33,6 +34,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <type_traits>
 #include <vector>
 
 using namespace locus;
@@ -771,4 +773,55 @@ TEST(DetailPiecesSpan, NearestTrackerSemantics) {
   EXPECT_TRUE(tr.tied(0.0));
   const detail::NearestTracker<double, 3> empty;
   EXPECT_FALSE(empty.found);
+}
+
+// detail/rescale.hpp and core's normalising_scale: the range test for each degree against its
+// documented bounds (2^+-k, k = (E - 8) / degree), and the scale bringing any positive finite
+// magnitude into [1, 2) (within the range of T at its ends), exactly a power of two.
+TYPED_TEST(DetailPiecesTest, RescaleRangeAndNormalisingScale) {
+  using T = TypeParam;
+  constexpr int E = std::numeric_limits<T>::max_exponent;
+  const auto check_degree = [](auto degree_tag) {
+    constexpr int degree = decltype(degree_tag)::value;
+    constexpr int k = (E - 8) / degree;
+    using detail::outside_product_range;
+    EXPECT_FALSE((outside_product_range<T, degree>(T(1))));
+    EXPECT_FALSE((outside_product_range<T, degree>(std::ldexp(T(1), k))));
+    EXPECT_FALSE((outside_product_range<T, degree>(std::ldexp(T(1), -k))));
+    EXPECT_TRUE((outside_product_range<T, degree>(std::ldexp(T(1), k + 1))));
+    EXPECT_TRUE((outside_product_range<T, degree>(std::ldexp(T(1), -k - 1))));
+    EXPECT_TRUE((outside_product_range<T, degree>(T(0))));
+    // At the edges the product of `degree` such magnitudes is in range with at least 2^7 to spare
+    // (degree k <= E - 8, and the largest finite value is just below 2^E).
+    T prod = T(128);
+    for (int i = 0; i < degree; ++i) prod *= std::ldexp(T(1), k);
+    EXPECT_TRUE(std::isfinite(prod));
+  };
+  check_degree(std::integral_constant<int, 4>{});
+  check_degree(std::integral_constant<int, 6>{});
+  check_degree(std::integral_constant<int, 8>{});
+
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  constexpr int lo = std::numeric_limits<T>::min_exponent - 1, hi = E - 1;
+  for (int i = 0; i < 2000; ++i) {
+    const int e = rng.uniform_int(std::numeric_limits<T>::min_exponent - 1, E - 1);
+    const T m = std::ldexp(rng.uniform<T>(T(1), T(2)), e);
+    if (!(m > T(0)) || !std::isfinite(m)) continue;
+    const T f = normalising_scale(m);
+    int fe = 0;
+    EXPECT_EQ(std::frexp(f, &fe), T(0.5)) << "not a power of two: " << f;  // f = 0.5 2^fe
+    EXPECT_TRUE(fe - 1 >= lo && fe - 1 <= hi) << f;
+    const T s = m * f;
+    if (fe - 1 > lo && fe - 1 < hi) {
+      EXPECT_TRUE(s >= T(1) && s < T(2)) << m << " * " << f << " = " << s;
+    }
+  }
+  // The ends of the range: f is clamped to a representable power of two.
+  const T big = std::numeric_limits<T>::max(), tiny = std::numeric_limits<T>::denorm_min();
+  EXPECT_TRUE(big * normalising_scale(big) >= T(1) && big * normalising_scale(big) < T(4));
+  EXPECT_TRUE(std::isfinite(normalising_scale(tiny)) && tiny * normalising_scale(tiny) > T(0));
+  EXPECT_EQ(normalising_scale(T(0)), T(1));
+  EXPECT_EQ(normalising_scale(std::numeric_limits<T>::infinity()), T(1));
+  EXPECT_EQ(normalising_scale(std::numeric_limits<T>::quiet_NaN()), T(1));
 }
