@@ -338,3 +338,17 @@ TYPED_TEST(PointTriangleTest, SmallTriangleWhoseDeterminantUnderflows) {
     EXPECT_EQ(batch, got.sqr_distance);
   }
 }
+
+// Every coordinate zero (a triangle collapsed to the origin, the point at the origin, and other
+// points): the general code's rescaling must not retry on the same input (its scale is 1 for
+// an all-zero input), which once recursed without end.
+TYPED_TEST(PointTriangleTest, TriangleCollapsedToTheOrigin) {
+  using T = TypeParam;
+  const Triangle3<T> zero3{};
+  const Triangle2<T> zero2{};
+  EXPECT_EQ(distance(Vec3<T>{}, zero3).sqr_distance, T(0));
+  EXPECT_EQ(distance(Vec2<T>{}, zero2).sqr_distance, T(0));
+  EXPECT_EQ(distance(Vec3<T>{T(3), T(0), T(4)}, zero3).distance, T(5));
+  EXPECT_EQ(distance(Vec2<T>{T(3), T(4)}, zero2).distance, T(5));
+  EXPECT_EQ(sqr_distance(Vec3<T>{}, zero3), T(0));
+}

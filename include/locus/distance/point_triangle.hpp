@@ -83,7 +83,7 @@ template <class T, int N>
   // underflow to 0): solve on a copy scaled by a power of two, and evaluate the closest point
   // from its barycentric coordinates on the input (rescale.hpp).
   const T m = std::max({max_abs(p), max_abs(tri.v0), max_abs(tri.v1), max_abs(tri.v2)});
-  if (outside_product_range(m)) {
+  if (m > T(0) && outside_product_range(m)) {  // (all zero: f would be 1, no progress)
     const T f = normalising_scale(m);
     const PointTriangleCore<T, N> r =
         point_triangle_general(f * p, Triangle<T, N>{f * tri.v0, f * tri.v1, f * tri.v2});
