@@ -5,6 +5,7 @@
 #include <locus/core/angle.hpp>
 #include <locus/core/products.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -106,10 +107,43 @@ std::string html_escape(std::string_view s) {
   }
   return o;
 }
+// "N of the book's M figures, from chapters 2, 3, ... and appendix A": counted from the figures
+// the gallery draws and the embedded figure list, so the page never claims more than it shows.
+std::string coverage_sentence(const std::vector<Figure>& figures) {
+  std::vector<std::string_view> book_ids;  // the list repeats a few ids (continued captions)
+  std::string_view text = figures_txt();
+  while (!text.empty()) {
+    const std::size_t eol = text.find('\n');
+    const std::string_view line = text.substr(0, eol);
+    text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
+    if (!line.empty() && line[0] != '#') book_ids.push_back(line.substr(0, line.find('\t')));
+  }
+  std::sort(book_ids.begin(), book_ids.end());
+  const auto book_total = static_cast<std::size_t>(
+      std::unique(book_ids.begin(), book_ids.end()) - book_ids.begin());
+  std::vector<int> chapters;
+  for (const Figure& f : figures) {
+    const int c = figure_order(f.id).first;
+    if (c >= 0 && std::find(chapters.begin(), chapters.end(), c) == chapters.end())
+      chapters.push_back(c);
+  }
+  std::sort(chapters.begin(), chapters.end());
+  std::string numbered, appendices;
+  for (const int c : chapters) {
+    std::string& list = c >= 100 ? appendices : numbered;
+    if (!list.empty()) list += ", ";
+    list += c >= 100 ? std::string(1, static_cast<char>('A' + (c - 100))) : std::to_string(c);
+  }
+  std::string s = std::to_string(figures.size()) + " of the book's " + std::to_string(book_total) +
+                  " figures, from chapters " + numbered;
+  if (!appendices.empty()) s += " and appendix " + appendices;
+  return s;
+}
 }  // namespace
 
 RunResult run(const std::string& out_dir) {
   RunResult r{locus::Status::ok, 0, {}};
+  const std::vector<Figure> figures = all_figures();
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   const std::filesystem::path dir(out_dir);
@@ -120,10 +154,10 @@ RunResult run(const std::string& out_dir) {
        << "figure{display:inline-block;vertical-align:top;width:520px;margin:10px;padding:8px;"
        << "background:white;border:1px solid #ddd}img{max-width:100%}"
        << "figcaption{font-size:14px}code{font-size:12px;color:#555}</style>\n</head>\n<body>\n"
-       << "<h1>locus gallery</h1>\n<p>Figures of chapters 2&ndash;5 of <i>Geometric Tools for "
-       << "Computer Graphics</i> (Schneider &amp; Eberly), redrawn from live locus computations "
-       << "by <code>locus_gallery</code>.</p>\n";
-  for (const Figure& f : all_figures()) {
+       << "<h1>locus gallery</h1>\n<p>" << coverage_sentence(figures)
+       << " of <i>Geometric Tools for Computer Graphics</i> (Schneider &amp; Eberly), redrawn "
+       << "from live locus computations by <code>locus_gallery</code>.</p>\n";
+  for (const Figure& f : figures) {
     const Rendered rd = render(f);
     if (!rd.ok) {
       r.status = locus::Status::degenerate_input;

@@ -111,6 +111,11 @@ TEST(Gallery, RunWritesEveryFileAndTheIndex) {
     EXPECT_GT(std::filesystem::file_size(dir / name), 200u) << name;
     EXPECT_NE(html.find("src=\"" + name + "\""), std::string::npos) << name;
   }
+  // The index states how many of the book's figures it shows, counted from the figures drawn, and
+  // lists the chapters they come from (chapter 13 is among them today).
+  EXPECT_NE(html.find("<p>" + std::to_string(figs.size()) + " of the book's "), std::string::npos);
+  EXPECT_NE(html.find("figures, from chapters 2, 3"), std::string::npos);
+  EXPECT_NE(html.find(", 13"), std::string::npos);
   std::filesystem::remove_all(dir);
 
   // An output directory that cannot be created is an io_error, not a crash.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// SvgWriter: a small SVG writer for 2D geometry and 3D wireframes (the gallery's drawing
-// surface; no CAPABILITIES row, it serves the figure gallery and the command-line tool).
+// SvgWriter: a small SVG writer for 2D geometry and 3D wireframes (the figure gallery's drawing
+// surface; no capabilities row of its own).
 //
 // Coordinates. Everything is given in WORLD coordinates with the y axis pointing UP. When the
 // document is emitted, world coordinates are mapped to pixels by one uniform scale and a y flip,
