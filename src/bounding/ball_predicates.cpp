@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Exact fallbacks of the side-of-ball tests (include/locus/bounding/detail/ball_predicates.hpp).
 //
-// Every finite double is an integer times 2^e with e >= -1126 (core's low_exponent); shifting
+// Every finite double is an integer times 2^e with e >= -1074 (core's low_exponent); shifting
 // all inputs of one test by their smallest exponent makes them integers, and the test polynomial
 // is then evaluated exactly on core's fixed-capacity big integer (src/core/big_int.hpp). The
 // capacity covers degree 6 in values spanning the whole double range: inputs below 2^2150,

@@ -16,7 +16,7 @@
 //                locus::detail::assert_failed (checked in every build, never an overflow).
 //   DynBigInt    limbs in a std::vector, unbounded; operations may throw std::bad_alloc.
 // Doubles enter exactly: from_double(x, shift) is x * 2^shift, which must be an integer;
-// low_exponent(x) is the e with x = m 2^e, m an integer below 2^53, so that
+// low_exponent(x) is an e with x = m 2^e, m an integer below 2^53, so that
 // from_double(x, -e_min) is exact for every x of a set whose least low_exponent is e_min.
 // Cost: schoolbook, O(n m) limb operations for products and divisions; no global state.
 
@@ -286,12 +286,22 @@ struct VectorLimbs {
   void take(VectorLimbs& o, std::size_t) noexcept { limb.swap(o.limb); }
 };
 
-/// The e with x = m 2^e, m an integer, |m| < 2^53 (frexp's exponent - 53); x finite, nonzero.
-[[nodiscard]] inline int low_exponent(double x) noexcept {
-  int k = 0;
-  (void)std::frexp(x, &k);
-  return k - 53;
+/// |x| = mantissa 2^exponent exactly, mantissa an integer below 2^53 (x finite; read from the
+/// bits: exponent in [-1074, 971], -1074 for subnormals and zero).
+struct DoubleParts {
+  std::uint64_t mantissa;
+  int exponent;
+};
+[[nodiscard]] constexpr DoubleParts decompose(double x) noexcept {
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ffu);
+  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
+  if (biased == 0) return {fraction, -1074};
+  return {fraction | (std::uint64_t{1} << 52), biased - 1075};
 }
+
+/// An e with x = m 2^e, m an integer, |m| < 2^53 (decompose(x).exponent); x finite.
+[[nodiscard]] constexpr int low_exponent(double x) noexcept { return decompose(x).exponent; }
 
 /// A signed integer in sign-magnitude form over the limb routines; see the header comment.
 template <class Store>
@@ -337,10 +347,9 @@ class BasicBigInt {
     BasicBigInt r;
     LOCUS_ASSERT(std::isfinite(x), "BigInt::from_double: non-finite input");
     if (x == 0.0 || !std::isfinite(x)) return r;
-    int k = 0;
-    const double f = std::frexp(std::abs(x), &k);                  // |x| = f 2^k, f in [0.5, 1)
-    const auto m = static_cast<std::uint64_t>(std::ldexp(f, 53));  // exact: a 53-bit integer
-    const int e = k - 53 + shift;
+    const DoubleParts parts = decompose(x);
+    const std::uint64_t m = parts.mantissa;
+    const int e = parts.exponent + shift;
     if (e >= 0) {
       const Limb ml[2] = {static_cast<Limb>(m), static_cast<Limb>(m >> limb_bits)};
       const auto ue = static_cast<std::size_t>(e);

@@ -24,7 +24,7 @@ struct Entries {
 // Sign of the sum of the k x k principal minors of the leading dim x dim block of 2M: the sum,
 // over every k-subset S and every permutation s of S, of sgn(s) prod_{i in S} m[i][s(i)].
 int principal_minor_sum_sign(const Entries& m, int dim, int k) noexcept {
-  std::array<ExactMonomial, 24> terms{};  // at most C(4, 3) * 3! = 4! = 24 products
+  std::array<ExactMonomial, 24> terms;  // at most C(4, 3) * 3! = 4! = 24 products; n are set
   std::size_t n = 0;
   for (unsigned mask = 0; mask < (1u << dim); ++mask) {
     if (std::popcount(mask) != k) continue;

@@ -73,7 +73,7 @@ TYPED_TEST(BigIntTest, ArithmeticMatchesGmp) {
   const std::uint64_t seed = 20261203;
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 6000; ++trial) {
-    const std::size_t na = rng() % 31, nb = rng() % 31;
+    const std::size_t na = rng() % 31, nb = rng() % 31;  // 0..30 limbs
     const mpz_class za = random_operand(rng, na), zb = random_operand(rng, nb);
     const B a = from_mpz<B>(za), b = from_mpz<B>(zb);
     ASSERT_EQ(to_mpz(a), za) << "seed " << seed << " trial " << trial;
