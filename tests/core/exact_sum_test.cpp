@@ -202,6 +202,28 @@ TEST(ExactSignOfSum, HugeAndTinyInOneSum) {
   EXPECT_EQ(locus_sign(sub), -1);
 }
 
+// Sums whose value is a few units of roundoff of their magnitude, on both sides of the
+// floating-point filter's bound 2 (n + 4) u sum|p|: sum_k a_k b_k - fl(sum_k a_k b_k) + r s 2^-52,
+// r from -64 to 64, so the filter must either decide right or hand over to the exact path.
+TEST(ExactSignOfSum, NearTheFilterBoundVsGmp) {
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 6000; ++trial) {
+    const int n = rng.uniform_int(1, 10);
+    std::vector<ExactMonomial> m;
+    double s = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const double a = random_double(rng, -30, 30), b = random_double(rng, -30, 30);
+      m.push_back(mono(1, 0, {a, b}));
+      s += a * b;
+    }
+    m.push_back(mono(-1, 0, {s}));
+    const int r = rng.uniform_int(-64, 64);
+    if (s != 0.0 && r != 0) m.push_back(mono(r > 0 ? 1 : -1, 0, {s, std::ldexp(std::abs(r), -52)}));
+    ASSERT_EQ(locus_sign(m), sgn(exact_sum(m))) << "trial " << trial;
+  }
+}
+
 TEST(ExactSignOfSum, ZerosAndEmpty) {
   EXPECT_EQ(exact_sign_of_sum({}), 0);
   // Sign-0 terms and terms with a zero (or negative zero) factor contribute nothing.
