@@ -449,10 +449,10 @@ TYPED_TEST(PointConicTest, QuadricOracle) {
     const Vec3<T> p = rng.vec<T, 3>(T(-5), T(5));
     const auto r = distance(p, q);
     const LD o = oracle3(p, q);
-    ASSERT_TRUE(std::isfinite(static_cast<double>(r.distance))) << to_string(classify(q).type);
+    ASSERT_TRUE(std::isfinite(static_cast<double>(r.distance))) << to_string(quadric_type(q).type);
     // The compass-search oracle converges to about 1e-12 relative, a looser check for double.
     const LD tl = std::max(static_cast<LD>(tol<T>(64, T(10))), 1e-11L);
-    EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), o, tl)) << to_string(classify(q).type);
+    EXPECT_TRUE(near_ld(static_cast<LD>(r.distance), o, tl)) << to_string(quadric_type(q).type);
     EXPECT_LE(std::abs(signed_value(q, r.closest[1])), T(1024) * eps_v<T> * T(100));
     worst = std::max(worst, std::fabs(static_cast<LD>(r.distance) - o) / (LD(eps_v<T>) * 10));
   }

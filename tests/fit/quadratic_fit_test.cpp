@@ -355,7 +355,7 @@ TYPED_TEST(QuadraticFitTest, ExactQuadrics) {
         canonical<10>({m(0, 0), m(1, 1), m(2, 2), 2 * m(0, 1), 2 * m(0, 2), 2 * m(1, 2), -2 * mc.x,
                        -2 * mc.y, -2 * mc.z, dot(c, mc) - 1});
     EXPECT_LT(max_diff<10>(coeffs(f.quadric), want), e) << trial;
-    EXPECT_EQ(classify(f.quadric).type, QuadricType::ellipsoid);
+    EXPECT_EQ(quadric_type(f.quadric).type, QuadricType::ellipsoid);
   }
   {  // hyperboloid of one sheet x^2 + y^2 - z^2 = 1
     std::vector<Vec3<T>> pts;

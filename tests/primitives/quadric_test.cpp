@@ -160,15 +160,15 @@ TYPED_TEST(QuadricTest, Figures9_18To9_20StandardFormsClassify) {
   using T = TypeParam;
   for (const auto& c : all_cases()) {
     SCOPED_TRACE(c.name);
-    const auto r = classify(to_real<T>(c.q));
+    const auto r = quadric_type(to_real<T>(c.q));
     EXPECT_EQ(r.status, Status::ok);
     EXPECT_TRUE(r.exact);
     EXPECT_EQ(to_string(r.type), to_string(c.type));
   }
   // Fig 9.18 (three nonzero eigenvalues) / 9.19 (two) / 9.20 (one): the rank of A.
-  EXPECT_EQ(classify(to_real<T>(diag(1, 2, -3, 0, 0, 0, -6))).rank_a, 3);
-  EXPECT_EQ(classify(to_real<T>(diag(1, -2, 0, 0, 4, 3, 1))).rank_a, 2);
-  EXPECT_EQ(classify(to_real<T>(diag(3, 0, 0, 6, 2, -1, 7))).rank_a, 1);
+  EXPECT_EQ(quadric_type(to_real<T>(diag(1, 2, -3, 0, 0, 0, -6))).rank_a, 3);
+  EXPECT_EQ(quadric_type(to_real<T>(diag(1, -2, 0, 0, 4, 3, 1))).rank_a, 2);
+  EXPECT_EQ(quadric_type(to_real<T>(diag(3, 0, 0, 6, 2, -1, 7))).rank_a, 1);
 }
 
 TYPED_TEST(QuadricTest, ExactClassificationIsInvariantUnderRationalRotationsAndTranslations) {
@@ -180,7 +180,7 @@ TYPED_TEST(QuadricTest, ExactClassificationIsInvariantUnderRationalRotationsAndT
     for (int trial = 0; trial < 25; ++trial) {
       const IntQuadric iq = transform(c.q, rng);
       for (const I sign : {I(1), I(-1)}) {  // q = 0 and -q = 0 are the same surface
-        const auto r = classify(to_real<T>(iq, sign));
+        const auto r = quadric_type(to_real<T>(iq, sign));
         ASSERT_EQ(r.status, Status::ok);
         EXPECT_TRUE(r.exact);
         ASSERT_EQ(to_string(r.type), to_string(c.type));
@@ -208,7 +208,7 @@ TYPED_TEST(QuadricTest, StandardFormRoundTripAndDefinition) {
         for (int j = 0; j < 3; ++j) EXPECT_NEAR(rtr.a[i][j], i == j ? T(1) : T(0), tol<T>(16));
       EXPECT_NEAR(determinant(f.rotation), T(1), tol<T>(16));
       // Shape of the form: nonzero diagonal entries first; linear term only along axis 2.
-      const auto cls = classify(q);
+      const auto cls = quadric_type(q);
       for (int i = 0; i < 3; ++i) EXPECT_EQ(f.diagonal[i] != T(0), i < cls.rank_a);
       EXPECT_EQ(f.linear.x, T(0));
       EXPECT_EQ(f.linear.y, T(0));
@@ -266,12 +266,12 @@ TYPED_TEST(QuadricTest, ToleranceClassificationRecoversRoundedDegenerateClasses)
       f.constant = q0.c;
       const Quadric3<T> q = to_quadric(f);
       const T rel_tol = tol<T>(1024);  // a few hundred roundings of the coefficients
-      const auto rt = classify(q, rel_tol);
+      const auto rt = quadric_type(q, rel_tol);
       ASSERT_EQ(rt.status, Status::ok);
       EXPECT_FALSE(rt.exact);
       EXPECT_EQ(to_string(rt.type), to_string(c.type));
       EXPECT_EQ(to_string(standard_form(q, rel_tol).type), to_string(c.type));
-      exact_differs += classify(q).type != c.type;
+      exact_differs += quadric_type(q).type != c.type;
     }
   }
   // The rounded inputs really are perturbed: exact classification sees other classes sometimes.
@@ -283,27 +283,33 @@ TYPED_TEST(QuadricTest, NonFiniteAndExactnessRange) {
   const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
   Quadric3<T> q = to_real<T>(diag(1, 2, 3, 0, 0, 0, -1));
   q.b.y = nan;
-  EXPECT_EQ(classify(q).status, Status::non_finite_input);
-  EXPECT_EQ(classify(q).type, QuadricType::invalid);
+  EXPECT_EQ(quadric_type(q).status, Status::non_finite_input);
+  EXPECT_EQ(quadric_type(q).type, QuadricType::invalid);
   EXPECT_EQ(standard_form(q).status, Status::non_finite_input);
-  EXPECT_EQ(classify(q, T(1e-3)).status, Status::non_finite_input);
+  EXPECT_EQ(quadric_type(q, T(1e-3)).status, Status::non_finite_input);
   q.b.y = 0;
   q.a.a[0][0] = inf;
-  EXPECT_EQ(classify(q).type, QuadricType::invalid);
+  EXPECT_EQ(quadric_type(q).type, QuadricType::invalid);
   // Tiny but in-range coefficients are classified exactly: x^2 + 2^-100 (y^2 + z^2) - 2^-120 is
   // an ellipsoid, x^2 + 2^-100 y^2 - 2^-100 z^2 + 2^-120 a hyperboloid of two sheets.
   const T t100 = std::ldexp(T(1), -100), t120 = std::ldexp(T(1), -120);
   const Quadric3<T> e{Mat3<T>::diagonal({1, t100, t100}), {}, -t120};
-  EXPECT_EQ(classify(e).type, QuadricType::ellipsoid);
-  EXPECT_TRUE(classify(e).exact);
+  EXPECT_EQ(quadric_type(e).type, QuadricType::ellipsoid);
+  EXPECT_TRUE(quadric_type(e).exact);
   const Quadric3<T> h{Mat3<T>::diagonal({1, t100, -t100}), {}, t120};
-  EXPECT_EQ(classify(h).type, QuadricType::hyperboloid_two_sheets);
-  EXPECT_TRUE(classify(h).exact);
+  EXPECT_EQ(quadric_type(h).type, QuadricType::hyperboloid_two_sheets);
+  EXPECT_TRUE(quadric_type(h).exact);
   if constexpr (std::is_same_v<T, double>) {
-    // Beyond the documented range the flag says so.
+    // Far beyond any fixed working precision: products of four coefficients span 2^-1280 to 1,
+    // still exact (the classification has no range limit for finite input).
     const Quadric3<T> far{Mat3<T>::diagonal({1, 1e-80, 1}), {}, -1};
-    EXPECT_FALSE(classify(far).exact);
-    EXPECT_EQ(classify(far).type, QuadricType::ellipsoid);  // still computed the same way
+    EXPECT_TRUE(quadric_type(far).exact);
+    EXPECT_EQ(quadric_type(far).type, QuadricType::ellipsoid);
+    const double t = 0x1p-320;  // x^2 + t y^2 - t z^2 + t^3 = 0: two sheets (t^3 subnormal-free)
+    const Quadric3<T> two{Mat3<T>::diagonal({1, t, -t}), {}, t * t * t};
+    EXPECT_EQ(quadric_type(two).type, QuadricType::hyperboloid_two_sheets);
+    const Quadric3<T> one{Mat3<T>::diagonal({1, t, -t}), {}, -t * t * t};
+    EXPECT_EQ(quadric_type(one).type, QuadricType::hyperboloid_one_sheet);
   }
 }
 
@@ -334,10 +340,10 @@ TYPED_TEST(QuadricTest, QuadricSolidsConvertToTheirClass) {
         c, {}, {rng.uniform<T>(T(0.5), 2), rng.uniform<T>(T(0.5), 2), rng.uniform<T>(T(0.5), 2)}};
     const auto pb = perpendicular_basis(d);
     e.axis[0] = d, e.axis[1] = pb.u, e.axis[2] = pb.v;
-    EXPECT_EQ(classify(to_quadric(s), rel_tol).type, QuadricType::ellipsoid);
-    EXPECT_EQ(classify(to_quadric(e), rel_tol).type, QuadricType::ellipsoid);
-    EXPECT_EQ(classify(to_quadric(cy), rel_tol).type, QuadricType::elliptic_cylinder);
-    EXPECT_EQ(classify(to_quadric(co), rel_tol).type, QuadricType::elliptic_cone);
+    EXPECT_EQ(quadric_type(to_quadric(s), rel_tol).type, QuadricType::ellipsoid);
+    EXPECT_EQ(quadric_type(to_quadric(e), rel_tol).type, QuadricType::ellipsoid);
+    EXPECT_EQ(quadric_type(to_quadric(cy), rel_tol).type, QuadricType::elliptic_cylinder);
+    EXPECT_EQ(quadric_type(to_quadric(co), rel_tol).type, QuadricType::elliptic_cone);
     // The general form evaluates to the solid's own implicit function.
     const Vec3<T> x = rng.vec<T, 3>(-4, 4);
     const T scale = T(100);  // |x - c|^2 <= 7^2 * 3 plus radii: terms of size ~100
@@ -347,18 +353,18 @@ TYPED_TEST(QuadricTest, QuadricSolidsConvertToTheirClass) {
     EXPECT_NEAR(signed_value(to_quadric(co), x), signed_value(co, x), tol<T>(64, scale));
   }
   // Exactly representable solids classify exactly.
-  EXPECT_EQ(classify(to_quadric(Sphere3<T>{{1, -2, 3}, 2})).type, QuadricType::ellipsoid);
-  EXPECT_EQ(classify(to_quadric(Sphere3<T>{{1, -2, 3}, 0})).type, QuadricType::point);
-  EXPECT_EQ(classify(to_quadric(Cylinder3<T>{{{1, 2, 3}, {0, 1, 0}}, 3, 1})).type,
+  EXPECT_EQ(quadric_type(to_quadric(Sphere3<T>{{1, -2, 3}, 2})).type, QuadricType::ellipsoid);
+  EXPECT_EQ(quadric_type(to_quadric(Sphere3<T>{{1, -2, 3}, 0})).type, QuadricType::point);
+  EXPECT_EQ(quadric_type(to_quadric(Cylinder3<T>{{{1, 2, 3}, {0, 1, 0}}, 3, 1})).type,
             QuadricType::elliptic_cylinder);
-  EXPECT_EQ(classify(to_quadric(Cylinder3<T>{{{1, 2, 3}, {0, 1, 0}}, 0, 1})).type,
+  EXPECT_EQ(quadric_type(to_quadric(Cylinder3<T>{{{1, 2, 3}, {0, 1, 0}}, 0, 1})).type,
             QuadricType::line);
 }
 
 namespace {
 // Inertia (positive, negative) of a symmetric rational matrix by congruence (symmetric Gaussian
 // elimination with 1x1 or 2x2 pivots; Sylvester's law of inertia): an algorithm independent of
-// the principal-minor signs that classify() uses.
+// the principal-minor signs that quadric_type() uses.
 std::pair<int, int> exact_inertia(std::vector<std::vector<mpq_class>> m) {
   int pos = 0, neg = 0;
   while (!m.empty()) {
@@ -407,6 +413,51 @@ std::pair<int, int> exact_inertia(std::vector<std::vector<mpq_class>> m) {
 }
 }  // namespace
 
+// Congruence by D = diag(2^k0, 2^k1, 2^k2, 2^k3) keeps the inertia of A and of M (Sylvester):
+// a_ij 2^(ki + kj), b_i 2^(ki + k3), c 2^(2 k3) has the type of the integer quadric, with the
+// coefficients spread over most of the exponent range of T (subnormals included for double).
+TYPED_TEST(QuadricTest, ExtremeCongruentScalingsKeepTheExactType) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  constexpr bool dbl = std::is_same_v<T, double>;
+  const int lo = dbl ? -530 : -45, hi = dbl ? 470 : 40;
+  const std::vector<Case> cases = all_cases();
+  int tested = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    const Case& c = cases[std::size_t(trial) % cases.size()];
+    const IntQuadric iq = trial % 2 ? transform(c.q, rng) : c.q;
+    const Quadric3<T> base = to_real<T>(iq);
+    const QuadricClass expect = quadric_type(base);
+    const int k[4] = {rng.uniform_int(lo, hi), rng.uniform_int(lo, hi), rng.uniform_int(lo, hi),
+                      rng.uniform_int(lo, hi)};
+    Quadric3<T> q = base;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) q.a.a[i][j] = std::ldexp(base.a.a[i][j], k[i] + k[j]);
+      q.b[i] = std::ldexp(base.b[i], k[i] + k[3]);
+    }
+    q.c = std::ldexp(base.c, 2 * k[3]);
+    // The scaling must be exact for the oracle to hold: undo it and compare.
+    bool exact = true;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j)
+        exact = exact && std::ldexp(q.a.a[i][j], -k[i] - k[j]) == base.a.a[i][j];
+      exact = exact && std::ldexp(q.b[i], -k[i] - k[3]) == base.b[i];
+    }
+    exact = exact && std::ldexp(q.c, -2 * k[3]) == base.c;
+    if (!exact) continue;
+    const QuadricClass r = quadric_type(q);
+    ++tested;
+    ASSERT_EQ(expect.type, c.type) << c.name;
+    ASSERT_TRUE(r.exact);
+    ASSERT_EQ(r.type, c.type) << c.name << " trial " << trial;
+    ASSERT_EQ(r.positive_m, expect.positive_m) << c.name << " trial " << trial;
+    ASSERT_EQ(r.negative_m, expect.negative_m) << c.name << " trial " << trial;
+    ASSERT_EQ(r.positive_a, expect.positive_a) << c.name << " trial " << trial;
+  }
+  EXPECT_GT(tested, 1000);
+}
+
 TYPED_TEST(QuadricTest, RandomIntegerQuadricsMatchRationalCongruenceOracle) {
   using T = TypeParam;
   Rng rng;
@@ -443,13 +494,13 @@ TYPED_TEST(QuadricTest, RandomIntegerQuadricsMatchRationalCongruenceOracle) {
     m[3][3] = mpq_class(q.c);
     const auto [pa, na] = exact_inertia(a);
     const auto [pm, nm] = exact_inertia(m);
-    const auto r = classify(qt);
+    const auto r = quadric_type(qt);
     ASSERT_TRUE(r.exact);
     EXPECT_EQ(r.positive_a, pa);
     EXPECT_EQ(r.negative_a, na);
     EXPECT_EQ(r.positive_m, pm);
     EXPECT_EQ(r.negative_m, nm);
-    EXPECT_EQ(r.type, detail::quadric_type(pa + na, pa, na, pm + nm, pm, nm));
+    EXPECT_EQ(r.type, detail::quadric_type_of_inertia(pa + na, pa, na, pm + nm, pm, nm));
     // Spot check of the set itself: a point on the surface found by the standard form is a
     // root of q (up to rounding), for every type with real points.
     const auto f = standard_form(qt);

@@ -17,7 +17,7 @@
 //    constant} bounds the half-space dot(normal, X) <= constant (normals point OUT). Outside if
 //    any dot(normal, p) - constant > 0, boundary if none is positive and one is zero, inside
 //    otherwise. No planes: the whole space (inside). A plane with a non-finite coefficient gives
-//    outside. Exact via a floating-point filter and, near zero, detail::exact_sign_of_sum.
+//    outside. Exact via a floating-point filter and, near zero, exact_sign_of_sum.
 //  * Triangle mesh: (vertices, triangles) spans; triangle {i, j, k} has normal (vj - vi) x
 //    (vk - vi). classify_convex(p, vertices, triangles) needs a closed convex mesh with outward
 //    normals (not checked): outside iff p is strictly above some face's plane (orient3d > 0),
@@ -51,7 +51,7 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
-#include <locus/primitives/detail/exact_sign.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/plane.hpp>
 #include <locus/primitives/tetrahedron.hpp>
 
@@ -128,7 +128,7 @@ template <class T>
                               {1, 0, 2, {double(n.y), double(p.y), 0.0}},
                               {1, 0, 2, {double(n.z), double(p.z), 0.0}},
                               {-1, 0, 1, {cd, 0.0, 0.0}}};
-  return exact_sign_of_sum(m, 4);
+  return exact_sign_of_sum(m);
 }
 
 template <class T>

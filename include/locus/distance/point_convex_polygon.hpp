@@ -13,7 +13,7 @@
 //
 // Method (written for this library from the book's idea of a binary search over the vertex fan;
 // every combinatorial decision is exact: orient2d of core/predicates.hpp and the exact sign of
-// dot(p - b, b - a) by detail/exact_sign.hpp):
+// dot(p - b, b - a) by core/exact_sum.hpp):
 //  1. Fan search: the rays v0 -> v[j] turn monotonically (by less than 180 degrees), so the sign
 //     of orient2d(v0, v[j], p) changes once along j and a binary search finds the fan wedge
 //     holding p. Inside that wedge p is inside iff it is left of (or on) the wedge's outer edge.
@@ -50,7 +50,7 @@
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear.hpp>
 #include <locus/distance/result.hpp>
-#include <locus/primitives/detail/exact_sign.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/polygon.hpp>
 #include <locus/primitives/segment.hpp>
 
@@ -81,7 +81,7 @@ template <class T>
                               {-1, 0, 2, {px, ax, 0.0}}, {-1, 0, 2, {py, ay, 0.0}},
                               {-1, 0, 2, {bx, bx, 0.0}}, {-1, 0, 2, {by, by, 0.0}},
                               {1, 0, 2, {bx, ax, 0.0}},  {1, 0, 2, {by, ay, 0.0}}};
-  return exact_sign_of_sum(m, 8);
+  return exact_sign_of_sum(m);
 }
 
 }  // namespace detail

@@ -8,7 +8,7 @@
 // parametrisation in locus (primitives/quadric.hpp), so closest[1] itself is the answer (it
 // satisfies the equation to rounding). distance(quadric, p) is the swapped result.
 //
-// Method, by the EXACT type of classify(q) (primitives/quadric.hpp):
+// Method, by the EXACT type of quadric_type(q) (primitives/quadric.hpp):
 //   ellipsoid             standard_form() (in compute_t<T>) gives centre, axes and extents
 //                         sqrt(-k / d_i); the robust bisection of point_ellipsoid.hpp gives a
 //                         point (exact on symmetry planes), Newton-projected onto the quadric,
@@ -54,7 +54,7 @@ template <Real T>
                                                                const Quadric3<T>& q) noexcept {
   using R = Distance<T, 3, NoParam, NoParam>;
   if (!is_finite(p)) return non_finite_distance<T, 3, NoParam, NoParam>();
-  const QuadricClass cls = classify(q);
+  const QuadricClass cls = quadric_type(q);
   if (cls.status != Status::ok) return non_finite_distance<T, 3, NoParam, NoParam>();
   if (cls.type == QuadricType::empty) return detail::empty_set_distance<T, 3, NoParam, NoParam>(p);
   if (cls.type == QuadricType::entire_space) return R{T(0), T(0), {p, p}, {}, {}, true};

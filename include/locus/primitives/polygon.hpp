@@ -14,7 +14,7 @@
 //
 // Robustness. Combinatorial answers are EXACT for every finite input (orient2d of
 // core/predicates.hpp and exact coordinate comparisons; projections onto a direction by
-// detail/exact_sign.hpp): orientation, is_convex, is_simple/self_intersection, monotone tests.
+// core/exact_sum.hpp): orientation, is_convex, is_simple/self_intersection, monotone tests.
 // Measures are rounded: signed_area accumulates perp_dot(v[i] - v[0], v[i+1] - v[0]) (the
 // shoelace formula relative to the first vertex, which removes the translation-induced
 // cancellation) in compute_t<T>; centroid uses the same triangle fan.
@@ -56,7 +56,7 @@
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
-#include <locus/primitives/detail/exact_sign.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/segment.hpp>
 

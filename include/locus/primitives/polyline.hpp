@@ -20,7 +20,7 @@
 // dot(v[i], d) are all non-decreasing or all non-increasing along the open chain (strict: all
 // strictly increasing or all strictly decreasing, so every line perpendicular to d meets the
 // chain at most once). The comparisons are EXACT (exact sign of dot(v[i+1] - v[i], d), see
-// detail/exact_sign.hpp), so axis directions and integer data are decided correctly.
+// core/exact_sum.hpp), so axis directions and integer data are decided correctly.
 //
 // Degenerate input: an empty polyline has length 0 and point_at returns the zero vector; a
 // single vertex is returned for every parameter; zero-length segments are skipped by arc-length
@@ -31,7 +31,7 @@
 #include <locus/config.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
-#include <locus/primitives/detail/exact_sign.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/segment.hpp>
 
 #include <algorithm>

@@ -21,12 +21,9 @@
 //   disc > 0:  D = 0 -> two intersecting lines;  else hyperbola (fig 5.13, d0 d1 < 0);
 //   disc = 0:  D != 0 -> parabola (fig 5.14, e1 != 0); else K < 0 -> two parallel lines,
 //              K = 0 -> one double line, K > 0 -> empty (two imaginary lines) (fig 5.14, e1 = 0).
-// Exactness: every coefficient is converted to double exactly (float input too) and split into
-// a 53-bit integer mantissa and a power of two; each monomial (a product of up to three
-// coefficients times a small power of two) is then an integer of at most 159 bits shifted by an
-// exponent, and the signed sum is accumulated in two fixed 6656-bit unsigned integers (positive
-// and negative parts) and compared. The result is the exact sign for ALL finite coefficients,
-// with no allocation and no dependence on GMP (cost: a few microseconds at worst).
+// Exactness: every coefficient is converted to double exactly (float input too) and each
+// invariant's sign is core's exact_sign_of_sum (core/exact_sum.hpp): the exact sign for ALL
+// finite coefficients, with no allocation (cost: a few microseconds at worst).
 // So the class is exactly right for the coefficients as given; a conic computed with rounding
 // (e.g. by rotating an integer conic by a non-exact angle) may change class, which is correct
 // for the rounded coefficients. Non-finite coefficients give ConicKind::non_finite.
@@ -40,7 +37,7 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/primitives/circle.hpp>
-#include <locus/primitives/detail/exact_sign.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/ellipse.hpp>
 
 #include <algorithm>
@@ -126,7 +123,7 @@ struct ConicSigns {
                                 {-1, 1, 3, {c, d, d}}};
   const ExactMonomial kk[4] = {
       {1, 2, 2, {a, f, 0}}, {-1, 0, 2, {d, d, 0}}, {1, 2, 2, {c, f, 0}}, {-1, 0, 2, {e, e, 0}}};
-  return {exact_sign_of_sum(disc, 2), exact_sign_of_sum(det, 5), exact_sign_of_sum(kk, 4)};
+  return {exact_sign_of_sum(disc), exact_sign_of_sum(det), exact_sign_of_sum(kk)};
 }
 
 }  // namespace detail

@@ -18,22 +18,17 @@
 // diag(D) extended by the block of the remaining linear term and constant). Only real points
 // count: an "imaginary ellipsoid" x^2 + y^2 + z^2 + 1 = 0 is empty.
 //
-// classify(q) is EXACT for the given floating-point coefficients: the inertia comes from the
-// signs of the coefficients of the characteristic polynomials of A and M (sums of principal
-// minors; Descartes' rule of signs is exact for the real-rooted characteristic polynomial of a
-// symmetric matrix), evaluated exactly with floating-point expansion arithmetic (error-free
-// two-sum and two-product of core/error_free.hpp, written after Shewchuk's paper; like all
-// error-free transformations it is invalid under -ffast-math). The coefficients are first scaled
-// by a power of two (sign-preserving, since every invariant is homogeneous). The result is exact whenever every nonzero coefficient has its unit in the last
-// place >= 2^-268 times the largest coefficient's scale (about 2^-215 relative magnitude) - always
-// for float input; otherwise some product may underflow and `exact` is false (the answer is still
-// computed the same way).
+// quadric_type(q) is EXACT for the given coefficients, for every finite float or double input:
+// the inertia comes from the signs of the coefficients of the characteristic polynomials of A
+// and M (sums of principal minors; Descartes' rule of signs is exact for the real-rooted
+// characteristic polynomial of a symmetric matrix), each evaluated by core's exact_sign_of_sum
+// (core/exact_sum.hpp). `exact` is then always true. Compiled once (src/primitives/quadric.cpp).
 //
-// classify(q, rel_tol) is the tolerance-based alternative for coefficients that carry rounding
-// error (e.g. a cone transformed in floating point is exactly a hyperboloid): after scaling
-// every coefficient by 1 / max|coefficient|, eigenvalues, the remaining linear term and the
-// constant of the standard form with magnitude <= rel_tol are treated as zero. The threshold is
-// relative to the largest coefficient, so rescale coordinates first when A, b and c have very
+// quadric_type(q, rel_tol) is the tolerance-based alternative for coefficients that carry
+// rounding error (e.g. a cone transformed in floating point is exactly a hyperboloid): after
+// scaling every coefficient by 1 / max|coefficient|, eigenvalues, the remaining linear term and
+// the constant of the standard form with magnitude <= rel_tol are treated as zero. The threshold
+// is relative to the largest coefficient, so rescale coordinates first when A, b and c have very
 // different magnitudes. A typical value is 1e3 * eps for data with a few rounding errors.
 //
 // Standard form: QuadricStandardForm {rotation R (right-handed, columns = new axes), center P,
@@ -43,7 +38,7 @@
 // with e2 > 0 only for paraboloids, the parabolic cylinder and the plane of rank A = 0 (then
 // k = 0: the origin of y lies on the surface's vertex/plane); otherwise e = 0 and k = 0 exactly
 // for cones, points, lines and intersecting/double planes. standard_form(q) takes the ranks
-// from the exact classification, so the form always agrees with classify(q); its numbers (R, P,
+// from the exact classification, so the form always agrees with quadric_type(q); its numbers (R, P,
 // d, k) are rounded and computed in compute_t<T> (double for float). The eigenvectors come from
 // numeric/eigen_sym.hpp's eigen_symmetric. to_quadric(form) converts back.
 //
@@ -52,14 +47,13 @@
 // infinite double cone cos^2(a) |X - V|^2 - dot(D, X - V)^2; signed_value() of the result equals
 // signed_value() of the solid (up to rounding), so "negative inside" carries over. The height
 // range of a finite cylinder or cone is not part of a quadric. The coefficients are rounded, so
-// classify the result with the tolerance overload (a rounded cone is exactly a hyperboloid).
+// classify the result with quadric_type(q, rel_tol) (a rounded cone is exactly a hyperboloid).
 //
 // Degenerate input: NaN or infinite coefficients give status non_finite_input and type
-// QuadricType::invalid. Cost: classify(q) evaluates 13 exact principal minors (a few thousand
-// flops, no allocation; the expansions live on the stack, about 2 KB each).
+// QuadricType::invalid. Cost: quadric_type(q) evaluates 7 exact principal-minor sums (at most
+// 24 products of 4 coefficients each; microseconds, no allocation).
 
 #include <locus/config.hpp>
-#include <locus/core/error_free.hpp>
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -188,8 +182,8 @@ template <class T>
 namespace detail {
 
 /// The affine type from the ranks and inertia of A and M (header comment).
-[[nodiscard]] constexpr QuadricType quadric_type(int ra, int pa, int na, int rm, int pm,
-                                                 int nm) noexcept {
+[[nodiscard]] constexpr QuadricType quadric_type_of_inertia(int ra, int pa, int na, int rm, int pm,
+                                                            int nm) noexcept {
   const bool a_definite = (pa == ra || na == ra);
   const bool m_definite = (pm == rm || nm == rm);
   switch (ra) {
@@ -217,120 +211,6 @@ namespace detail {
   }
 }
 
-/// Exact floating-point expansions (nonoverlapping components, increasing magnitude, zeros
-/// removed), enough for the 4x4 determinant of single doubles (at most 192 components).
-struct Expansion {
-  static constexpr int capacity = 256;
-  double c[capacity];
-  int n = 0;
-};
-
-/// e += b exactly (Shewchuk's Grow-Expansion with zero elimination).
-inline void grow(Expansion& e, double b) noexcept {
-  double q = b;
-  int k = 0;
-  for (int i = 0; i < e.n; ++i) {
-    double h;
-    two_sum(q, e.c[i], q, h);
-    if (h != 0.0) e.c[k++] = h;
-  }
-  if (q != 0.0) {
-    LOCUS_ASSERT(k < Expansion::capacity, "quadric expansion capacity exceeded");
-    e.c[k++] = q;
-  }
-  e.n = k;
-}
-
-/// e += f * s exactly.
-inline void add_scaled(Expansion& e, const Expansion& f, double s) noexcept {
-  for (int i = 0; i < f.n; ++i) {
-    const double p = f.c[i] * s;
-    grow(e, product_error(f.c[i], s, p));
-    grow(e, p);
-  }
-}
-
-/// e += a * b exactly.
-inline void add_product(Expansion& e, double a, double b) noexcept {
-  const double p = a * b;
-  grow(e, product_error(a, b, p));
-  grow(e, p);
-}
-
-[[nodiscard]] inline int sign(const Expansion& e) noexcept {
-  return e.n == 0 ? 0 : (e.c[e.n - 1] > 0.0 ? 1 : -1);
-}
-
-/// Exact signs of the principal-minor sums of a symmetric 4x4 matrix m (double entries).
-struct QuadricInvariants {
-  int a[4];  // a[k] = sign of the k-th principal minor sum of the top-left 3x3 block (a[0] = 1)
-  int m[5];  // m[k] = the same for the whole 4x4 matrix
-};
-
-[[nodiscard]] inline Expansion minor2(const double (&m)[4][4], int r0, int r1, int c0,
-                                      int c1) noexcept {
-  Expansion e;
-  add_product(e, m[r0][c0], m[r1][c1]);
-  add_product(e, -m[r0][c1], m[r1][c0]);
-  return e;
-}
-
-/// out += sgn * det of rows r, columns c (sgn = +-1, so the scaling stays exact).
-inline void add_det3(Expansion& out, const double (&m)[4][4], const int (&r)[3], const int (&c)[3],
-                     double sgn) noexcept {
-  add_scaled(out, minor2(m, r[1], r[2], c[1], c[2]), sgn * m[r[0]][c[0]]);
-  add_scaled(out, minor2(m, r[1], r[2], c[0], c[2]), -sgn * m[r[0]][c[1]]);
-  add_scaled(out, minor2(m, r[1], r[2], c[0], c[1]), sgn * m[r[0]][c[2]]);
-}
-
-[[nodiscard]] inline QuadricInvariants quadric_invariants(const double (&m)[4][4]) noexcept {
-  QuadricInvariants inv{{1, 0, 0, 0}, {1, 0, 0, 0, 0}};
-  Expansion e1, e2, e3, e4;
-  for (int i = 0; i < 3; ++i) grow(e1, m[i][i]);
-  inv.a[1] = sign(e1);
-  grow(e1, m[3][3]);
-  inv.m[1] = sign(e1);
-  for (int i = 0; i < 3; ++i)
-    for (int j = i + 1; j < 3; ++j) {
-      const Expansion x = minor2(m, i, j, i, j);
-      add_scaled(e2, x, 1.0);
-    }
-  inv.a[2] = sign(e2);
-  for (int i = 0; i < 3; ++i) add_scaled(e2, minor2(m, i, 3, i, 3), 1.0);
-  inv.m[2] = sign(e2);
-  add_det3(e3, m, {0, 1, 2}, {0, 1, 2}, 1.0);
-  inv.a[3] = sign(e3);
-  for (int i = 0; i < 3; ++i)
-    for (int j = i + 1; j < 3; ++j) add_det3(e3, m, {i, j, 3}, {i, j, 3}, 1.0);
-  inv.m[3] = sign(e3);
-  // det M by cofactors along row 0.
-  constexpr int cols[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-  for (int j = 0; j < 4; ++j) {
-    Expansion d3;
-    add_det3(d3, m, {1, 2, 3}, cols[j], 1.0);
-    add_scaled(e4, d3, (j % 2 == 0) ? m[0][j] : -m[0][j]);
-  }
-  inv.m[4] = sign(e4);
-  return inv;
-}
-
-/// Rank and number of positive eigenvalues from the signs s[0..n] of the characteristic
-/// coefficients e_k (s[0] = 1): rank = last nonzero, positives = sign changes of (-1)^k s[k].
-inline void inertia(const int* s, int n, int& rank, int& pos, int& neg) noexcept {
-  rank = 0;
-  for (int k = 1; k <= n; ++k)
-    if (s[k] != 0) rank = k;
-  pos = 0;
-  int prev = 1;
-  for (int k = 1; k <= rank; ++k) {
-    if (s[k] == 0) continue;
-    const int cur = (k % 2 == 0) ? s[k] : -s[k];
-    if (cur != prev) ++pos;
-    prev = cur;
-  }
-  neg = rank - pos;
-}
-
 template <class T>
 [[nodiscard]] constexpr bool quadric_is_finite(const Quadric3<T>& q) noexcept {
   return is_finite(q.a) && is_finite(q.b) && is_finite(q.c);
@@ -338,46 +218,12 @@ template <class T>
 
 }  // namespace detail
 
-/// Exact classification of the quadric with the given coefficients (header comment).
+/// Exact classification of the quadric with the given coefficients (header comment); compiled
+/// in src/primitives/quadric.cpp for float and double.
 template <class T>
-[[nodiscard]] inline QuadricClass classify(const Quadric3<T>& q) noexcept {
-  QuadricClass r{Status::ok, QuadricType::invalid, 0, 0, 0, 0, 0, 0, true};
-  if (!detail::quadric_is_finite(q)) {
-    r.status = Status::non_finite_input;
-    r.exact = false;
-    return r;
-  }
-  double m[4][4];
-  for (int i = 0; i < 3; ++i) {
-    for (int j = i; j < 3; ++j) m[i][j] = m[j][i] = static_cast<double>(q.a.a[i][j]);
-    m[i][3] = m[3][i] = 0.5 * static_cast<double>(q.b[i]);
-  }
-  m[3][3] = static_cast<double>(q.c);
-  double big = 0.0;
-  for (const auto& rw : m)
-    for (double x : rw) big = std::fmax(big, std::fabs(x));
-  if (big > 0.0) {
-    int e = 0;
-    (void)std::frexp(big, &e);
-    for (auto& rw : m)
-      for (double& x : rw) {
-        x = std::ldexp(x, -e);
-        // Exactness: every entry's ulp 2^(ex - 53) >= 2^-268, so products of four stay on the
-        // subnormal grid 2^-1074 and no error term is lost.
-        if (x != 0.0) {
-          int ex = 0;
-          (void)std::frexp(x, &ex);
-          if (ex - 53 < -268) r.exact = false;
-        }
-      }
-  }
-  const auto inv = detail::quadric_invariants(m);
-  detail::inertia(inv.a, 3, r.rank_a, r.positive_a, r.negative_a);
-  detail::inertia(inv.m, 4, r.rank_m, r.positive_m, r.negative_m);
-  r.type = detail::quadric_type(r.rank_a, r.positive_a, r.negative_a, r.rank_m, r.positive_m,
-                                r.negative_m);
-  return r;
-}
+[[nodiscard]] QuadricClass quadric_type(const Quadric3<T>& q) noexcept;
+extern template QuadricClass quadric_type<float>(const Quadric3<float>&) noexcept;
+extern template QuadricClass quadric_type<double>(const Quadric3<double>&) noexcept;
 
 namespace detail {
 
@@ -459,11 +305,12 @@ inline void quadric_to_compute(const Quadric3<T>& q, Mat3<C>& a, Vec3<C>& b, C& 
 
 }  // namespace detail
 
-/// Standard form with the ranks of the exact classification (so its type is classify(q).type).
+/// Standard form with the ranks of the exact classification (so its type is
+/// quadric_type(q).type).
 template <class T>
 [[nodiscard]] inline QuadricStandardForm<T> standard_form(const Quadric3<T>& q) noexcept {
   using C = compute_t<T>;
-  const QuadricClass cls = classify(q);
+  const QuadricClass cls = quadric_type(q);
   if (cls.status != Status::ok)
     return {cls.status, QuadricType::invalid, Mat3<T>::identity(), {}, {}, {}, T(0)};
   Mat3<C> a{};
@@ -522,13 +369,13 @@ template <class T>
     ++rm;
     (k > C(0) ? pm : nm) += 1;
   }
-  f.type = detail::quadric_type(rank, pos, neg, rm, pm, nm);
+  f.type = detail::quadric_type_of_inertia(rank, pos, neg, rm, pm, nm);
   return f;
 }
 
 /// Tolerance-based classification (see standard_form(q, rel_tol)); exact = false.
 template <class T>
-[[nodiscard]] inline QuadricClass classify(const Quadric3<T>& q, T rel_tol) noexcept {
+[[nodiscard]] inline QuadricClass quadric_type(const Quadric3<T>& q, T rel_tol) noexcept {
   const auto f = standard_form(q, rel_tol);
   QuadricClass r{f.status, f.type, 0, 0, 0, 0, 0, 0, false};
   if (f.status != Status::ok) return r;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
-// Direct tests of primitives/detail/exact_sign.hpp: exact_sign_of_sum (exact sign of a sum of at
-// most 8 monomials sign * 2^pow2 * f0 * f1 * f2 of finite doubles) and sign_dot_diff (exact sign
+// Direct tests of core/exact_sum.hpp: exact_sign_of_sum (exact sign of a sum of monomials
+// sign * 2^pow2 * f0 * ... * f3 of finite doubles) and sign_dot_diff (exact sign
 // of dot(b - a, d), float and double). Oracle: the same sums evaluated exactly in GMP rationals
 // (mpq_class, exact for every finite double). Inputs: seeded random monomials over the whole
 // double exponent range (subnormals included), and adversarial cancellations built by error-free
@@ -9,7 +9,7 @@
 // factors, sign-0 terms. The header's precondition is finite factors (callers check), so NaN and
 // Inf are not inputs of these functions and are not tested here.
 
-#include <locus/primitives/detail/exact_sign.hpp>
+#include <locus/core/exact_sum.hpp>
 
 #include <gmpxx.h>
 
@@ -22,8 +22,8 @@
 
 namespace {
 
-using locus::detail::exact_sign_of_sum;
-using locus::detail::ExactMonomial;
+using locus::exact_sign_of_sum;
+using locus::ExactMonomial;
 using locus::detail::sign_dot_diff;
 using locus_test::Rng;
 
@@ -43,12 +43,10 @@ mpq_class exact_sum(const std::vector<ExactMonomial>& m) {
   return s;
 }
 
-int locus_sign(const std::vector<ExactMonomial>& m) {
-  return exact_sign_of_sum(m.data(), static_cast<int>(m.size()));
-}
+int locus_sign(const std::vector<ExactMonomial>& m) { return exact_sign_of_sum(m); }
 
 ExactMonomial mono(int sign, int pow2, std::vector<double> f) {
-  ExactMonomial t{sign, pow2, static_cast<int>(f.size()), {0.0, 0.0, 0.0}};
+  ExactMonomial t{sign, pow2, static_cast<int>(f.size()), {0.0, 0.0, 0.0, 0.0}};
   for (std::size_t j = 0; j < f.size(); ++j) t.f[j] = f[j];
   return t;
 }
@@ -73,11 +71,13 @@ TEST(ExactSignOfSum, RandomMonomialsVsGmp) {
     const int kind = trial % 3;
     const int emin = kind == 0 ? -2 : (kind == 1 ? -60 : -1074);
     const int emax = kind == 0 ? 2 : (kind == 1 ? 60 : 1024);
-    const int n = rng.uniform_int(0, 8);
+    const int n = rng.uniform_int(0, 12);
     std::vector<ExactMonomial> m;
     for (int k = 0; k < n; ++k) {
-      ExactMonomial t{
-          rng.uniform_int(-1, 1), rng.uniform_int(0, 3), rng.uniform_int(0, 3), {0.0, 0.0, 0.0}};
+      ExactMonomial t{rng.uniform_int(-1, 1),
+                      rng.uniform_int(0, trial % 2 == 0 ? 3 : 64),
+                      rng.uniform_int(0, 4),
+                      {0.0, 0.0, 0.0, 0.0}};
       for (int j = 0; j < t.count; ++j) {
         t.f[j] = random_double(rng, emin, emax);
         if (kind == 0) t.f[j] = std::round(t.f[j] * 4) / 4;  // small dyadics: many exact ties
@@ -173,6 +173,24 @@ TEST(ExactSignOfSum, HugeAndTinyInOneSum) {
   // 8 equal huge positive terms (the largest possible accumulated value) against nothing.
   std::vector<ExactMonomial> full(8, mono(-1, 3, {big, big, big}));
   EXPECT_EQ(locus_sign(full), -1);
+  // The widest span with four factors and the largest power of two: 2^64 DBL_MAX^4 twice
+  // (carries at the top) against denorm_min^4, and thousands of terms in one sum.
+  for (int s : {-1, 1}) {
+    std::vector<ExactMonomial> w{
+        mono(1, 64, {big, big, big, big}), mono(1, 64, {big, big, big, big}),
+        mono(s, 0, {dmin_sub, dmin_sub, dmin_sub, dmin_sub}),
+        mono(-1, 64, {big, big, big, near_big}), mono(-1, 64, {big, big, big, big})};
+    EXPECT_EQ(sgn(exact_sum(w)), 1);
+    EXPECT_EQ(locus_sign(w), 1);
+    w[1] = mono(-1, 64, {big, big, big, near_big});  // now the huge terms cancel exactly
+    w[3] = mono(1, 64, {big, big, big, near_big});
+    EXPECT_EQ(sgn(exact_sum(w)), s);
+    EXPECT_EQ(locus_sign(w), s);
+  }
+  std::vector<ExactMonomial> many(5000, mono(1, 64, {big, big, big, big}));
+  many.push_back(mono(-1, 0, {dmin_sub}));
+  for (int k = 0; k < 5000; ++k) many.push_back(mono(-1, 64, {big, big, big, big}));
+  EXPECT_EQ(locus_sign(many), -1);
   // Subnormals only: 3 denorm_min - denorm_min * 3 - (min_normal * 2^-52 = denorm_min) * 2.
   std::vector<ExactMonomial> sub{
       mono(1, 0, {dmin_sub}), mono(1, 1, {dmin_sub}), mono(-1, 0, {dmin_sub, 3.0}),
@@ -184,8 +202,30 @@ TEST(ExactSignOfSum, HugeAndTinyInOneSum) {
   EXPECT_EQ(locus_sign(sub), -1);
 }
 
+// Sums whose value is a few units of roundoff of their magnitude, on both sides of the
+// floating-point filter's bound 2 (n + 4) u sum|p|: sum_k a_k b_k - fl(sum_k a_k b_k) + r s 2^-52,
+// r from -64 to 64, so the filter must either decide right or hand over to the exact path.
+TEST(ExactSignOfSum, NearTheFilterBoundVsGmp) {
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 6000; ++trial) {
+    const int n = rng.uniform_int(1, 10);
+    std::vector<ExactMonomial> m;
+    double s = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const double a = random_double(rng, -30, 30), b = random_double(rng, -30, 30);
+      m.push_back(mono(1, 0, {a, b}));
+      s += a * b;
+    }
+    m.push_back(mono(-1, 0, {s}));
+    const int r = rng.uniform_int(-64, 64);
+    if (s != 0.0 && r != 0) m.push_back(mono(r > 0 ? 1 : -1, 0, {s, std::ldexp(std::abs(r), -52)}));
+    ASSERT_EQ(locus_sign(m), sgn(exact_sum(m))) << "trial " << trial;
+  }
+}
+
 TEST(ExactSignOfSum, ZerosAndEmpty) {
-  EXPECT_EQ(exact_sign_of_sum(nullptr, 0), 0);
+  EXPECT_EQ(exact_sign_of_sum({}), 0);
   // Sign-0 terms and terms with a zero (or negative zero) factor contribute nothing.
   std::vector<ExactMonomial> m{mono(0, 3, {dmax, dmax, dmax}), mono(1, 0, {0.0, dmax, 5.0}),
                                mono(-1, 2, {3.0, -0.0})};
@@ -200,6 +240,49 @@ TEST(ExactSignOfSum, ZerosAndEmpty) {
   // Negative factors flip the sign: (-a)(-b)(-c) = -abc.
   std::vector<ExactMonomial> neg{mono(1, 0, {-1.5, -2.0, -3.0}), mono(1, 0, {1.5, 2.0, 3.0})};
   EXPECT_EQ(locus_sign(neg), 0);
+}
+
+// exact_sign_of_sum against GMP (moved from the quadratic-curve tests) on random monomials spanning
+// the whole double range, including exact cancellations that leave a tiny residue.
+TEST(ExactSignOfSum, MatchesGmpOnWideRangeSums) {
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  auto rnd = [&] {
+    const int kind = rng.uniform_int(0, 9);
+    if (kind == 0) return 0.0;
+    if (kind == 1) return std::numeric_limits<double>::denorm_min() * rng.uniform_int(1, 1000);
+    const double m = rng.uniform<double>(-1, 1);
+    return std::ldexp(m, rng.uniform_int(-1070, 340));
+  };
+  int zero_results = 0;
+  for (int it = 0; it < 10000; ++it) {
+    ExactMonomial m[8];
+    const int n = rng.uniform_int(1, 8);
+    for (int k = 0; k < n; ++k) {
+      m[k].sign = rng.uniform_int(0, 1) ? 1 : -1;
+      m[k].pow2 = rng.uniform_int(0, 3);
+      m[k].count = rng.uniform_int(1, 4);
+      for (int j = 0; j < 4; ++j) m[k].f[j] = rnd();
+    }
+    // Half of the cases: make monomial 1 cancel monomial 0 exactly (permuted factors).
+    if (n >= 2 && it % 2 == 0) {
+      m[1] = m[0];
+      m[1].sign = -m[0].sign;
+      if (m[1].count >= 3) std::swap(m[1].f[0], m[1].f[2]);
+    }
+    mpq_class sum = 0;
+    for (int k = 0; k < n; ++k) {
+      mpq_class term = m[k].sign;
+      for (int j = 0; j < m[k].count; ++j) term *= mpq_class(m[k].f[j]);
+      term *= mpq_class(1 << m[k].pow2);
+      sum += term;
+    }
+    const int got =
+        exact_sign_of_sum(std::span<const ExactMonomial>(m, static_cast<std::size_t>(n)));
+    ASSERT_EQ(got, sgn(sum)) << "case " << it;
+    zero_results += got == 0;
+  }
+  EXPECT_GT(zero_results, 100);
 }
 
 // sign_dot_diff vs GMP for T = float and double.
