@@ -318,7 +318,7 @@ class Engine {
     if (s_mid == 0)
       emit((lo % 2 == 0) ? lo : hi, m);  // a tie: to the even significand
     else
-      emit(s_mid == s_hi ? hi : lo, m);
+      emit(s_mid == s_hi ? lo : hi, m);  // same sign as hi: the root is below mid
   }
 
   /// Distinct roots strictly between adjacent values lo < hi: rounded by the side of the
