@@ -119,7 +119,38 @@ struct Pt {
   int inf = 0;  // -1, 0, +1
   Z m;
   int e = 0;
+  double xd = std::numeric_limits<double>::quiet_NaN();  // the value, when a double holds it
 };
+
+/// The coefficients rounded to double (empty when one would overflow): a filter for sign_at.
+std::vector<double> to_doubles(const ZPoly& p) {
+  std::vector<double> d;
+  for (const Z& c : p) {
+    if (c.bit_length() > 1000) return {};
+    d.push_back(c.to_double());
+  }
+  return d;
+}
+
+/// The sign of p(x) from the rounded coefficients when Horner's error bound decides it, else 2.
+/// Bound: each coefficient is rounded (relative u) and Horner adds gamma_{2n}; so
+/// |computed - exact| <= gamma_{2n+2} sum |c_i| |x|^i, plus underflow (denormal) absolute errors.
+int filtered_sign(const std::vector<double>& d, double x) {
+  const int n = static_cast<int>(d.size()) - 1;
+  double v = d.back(), s = std::abs(d.back());
+  const double ax = std::abs(x);
+  for (int i = n - 1; i >= 0; --i) {
+    v = v * x + d[static_cast<std::size_t>(i)];
+    s = s * ax + std::abs(d[static_cast<std::size_t>(i)]);
+  }
+  if (!std::isfinite(s) || !std::isfinite(v)) return 2;
+  constexpr double u = 0.5 * std::numeric_limits<double>::epsilon();
+  const double k = 2.0 * n + 4.0;
+  const double bound = (k * u / (1.0 - k * u)) * s * (1.0 + 4.0 * u) +
+                       4.0 * (n + 1) * std::numeric_limits<double>::denorm_min();
+  if (std::abs(v) > bound) return v > 0 ? 1 : -1;
+  return 2;
+}
 
 /// Sign of p at x, exactly.
 int sign_at(const ZPoly& p, const Pt& x) {
@@ -142,17 +173,6 @@ int sign_at(const ZPoly& p, const Pt& x) {
     if (!c.is_zero()) r += c << (s * static_cast<std::size_t>(d - i));
   }
   return r.sign();
-}
-
-int variations(const std::vector<ZPoly>& seq, const Pt& x) {
-  int v = 0, last = 0;
-  for (const ZPoly& q : seq) {
-    const int s = sign_at(q, x);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++v;
-    last = s;
-  }
-  return v;
 }
 
 /// The exact midpoint of two finite points.
@@ -196,6 +216,7 @@ struct Grid {
         p.m = Z::from_double(x, -e);
         p.e = e;
       }
+      p.xd = x;
     }
     return p;
   }
@@ -212,7 +233,12 @@ class Engine {
       : chain_(std::move(chain)),
         budget_(opt.max_exact_bisections),
         first_inner_(first_inner),
-        out_(out) {}
+        out_(out) {
+    for (const auto& seq : chain_) {
+      dchain_.emplace_back();
+      for (const ZPoly& q : seq) dchain_.back().push_back(to_doubles(q));
+    }
+  }
 
   /// Appends the roots in (x(klo), x(khi)], increasing; of the cell below first_inner only
   /// its right end.
@@ -244,8 +270,25 @@ class Engine {
   bool budget_hit() const { return budget_hit_; }
 
  private:
-  int V(std::size_t k, const Pt& x) const { return variations(chain_[k], x); }
-  int p_sign(std::size_t k, const Pt& x) const { return sign_at(chain_[k][0], x); }
+  int sign(std::size_t k, std::size_t j, const Pt& x) const {
+    const std::vector<double>& d = dchain_[k][j];
+    if (x.inf == 0 && !d.empty() && !std::isnan(x.xd)) {
+      const int s = filtered_sign(d, x.xd);
+      if (s != 2) return s;
+    }
+    return sign_at(chain_[k][j], x);
+  }
+  int V(std::size_t k, const Pt& x) const {
+    int v = 0, last = 0;
+    for (std::size_t j = 0; j < chain_[k].size(); ++j) {
+      const int s = sign(k, j, x);
+      if (s == 0) continue;
+      if (last != 0 && s != last) ++v;
+      last = s;
+    }
+    return v;
+  }
+  int p_sign(std::size_t k, const Pt& x) const { return sign(k, 0, x); }
 
   /// Multiplicity of the one root of p in (a, b] (b is not a root).
   int multiplicity(const Pt& a, const Pt& b) const {
@@ -357,6 +400,7 @@ class Engine {
   }
 
   std::vector<std::vector<ZPoly>> chain_;
+  std::vector<std::vector<std::vector<double>>> dchain_;  // chain_ rounded, for the filter
   int budget_;
   bool budget_hit_ = false;
   Key first_inner_;
