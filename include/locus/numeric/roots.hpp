@@ -15,7 +15,7 @@
 //  * RootMode::near, the default of solve_*: floating point (in double), derivative recursion
 //    with compensated evaluation; simple roots to about one ulp. A turning point within the
 //    evaluation noise of zero (plus the caller's tolerances) is reported as a multiple root,
-//    which is what coefficients carrying error need (tangencies); it is ~10-100x faster.
+//    which is what coefficients carrying error need (tangencies); it is 80-190x faster.
 //    Clusters closer than about sqrt(noise) come out as one root with their total multiplicity.
 // Bad input: a NaN or infinite coefficient gives Status::non_finite_input; the zero polynomial
 // Status::degenerate_input; a non-zero constant ok with no roots. Roots beyond the range of T
