@@ -281,7 +281,8 @@ TYPED_TEST(RootsTest, FixedCasesFromTheBookAndTextbook) {
   EXPECT_EQ(w.roots[0].value, solve_cubic(T(19), T(-7), T(6), T(1), exact).roots[0].value);
   EXPECT_EQ(static_cast<int>(real_roots(fp, T(-7), T(3)).roots.size()), 0);
   // Closed interval: roots at both ends of [1, 2] of (x - 1)(x - 2) are included.
-  EXPECT_EQ(static_cast<int>(real_roots(Polynomial<T>{T(2), T(-3), T(1)}, T(1), T(2)).roots.size()), 2);
+  EXPECT_EQ(static_cast<int>(real_roots(Polynomial<T>{T(2), T(-3), T(1)}, T(1), T(2)).roots.size()),
+            2);
   // Figure A.10: f'(x) = 3x^2 + 12x - 7: roots -2 -+ sqrt(228)/6 (both in [-8, 3]).
   const auto d = solve_quadratic(T(-7), T(12), T(3));
   ASSERT_EQ(d.count, 2);
