@@ -494,7 +494,7 @@ bool fig_A_10(SvgWriter& w) {
   const Polynomial<double> df = derivative(a9_f());
   const double a = -8, b = 3;
   const RealRootsResult<double> r = real_roots(df, a, b);
-  if (r.status != Status::ok || r.count() != 2) return false;
+  if (r.status != Status::ok || r.roots.size() != 2) return false;
   const Plot p{a - 0.5, b + 0.8, -25, 95, 1, 0.075};
   plot_axes(w, p, 2, 20);
   plot_curve(w, p, [&](double x) { return df(x); }, a, b, pen(c::green, 2.2));

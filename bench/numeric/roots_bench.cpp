@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: BSL-1.0
 // Quartic roots per second (row num.roots): random quartics with 0, 2 and 4 real roots, solved by
-// locus::solve_quartic, and by Eigen's PolynomialSolver (companion-matrix eigenvalues, then the
-// real ones) when Eigen's headers are found. Items per second = quartics per second.
+// locus::solve_quartic in near mode (its default) and in exact mode, and by Eigen's
+// PolynomialSolver (companion-matrix eigenvalues, then the real ones) when Eigen's headers are
+// found; and real_roots of degree 8 and 16 in both modes. Items per second = polynomials per
+// second.
 #include <locus/numeric/roots.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -46,7 +49,7 @@ std::vector<std::array<double, 5>> make_quartics(int real_roots, int count) {
   return out;
 }
 
-template <class T>
+template <class T, bool Exact = false>
 void BM_locus_solve_quartic(benchmark::State& state) {
   const auto qs = make_quartics(static_cast<int>(state.range(0)), 1024);
   std::vector<std::array<T, 5>> q;
@@ -55,7 +58,9 @@ void BM_locus_solve_quartic(benchmark::State& state) {
   long roots = 0;
   for (auto _ : state) {
     const auto& c = q[i++ & 1023];
-    const auto r = locus::solve_quartic(c[0], c[1], c[2], c[3], c[4]);
+    locus::RootOptions opt;
+    opt.mode = Exact ? locus::RootMode::exact : locus::RootMode::near;
+    const auto r = locus::solve_quartic(c[0], c[1], c[2], c[3], c[4], opt);
     roots += r.count;
     benchmark::DoNotOptimize(r);
   }
@@ -65,6 +70,52 @@ void BM_locus_solve_quartic(benchmark::State& state) {
 }
 BENCHMARK_TEMPLATE(BM_locus_solve_quartic, double)->Arg(0)->Arg(2)->Arg(4);
 BENCHMARK_TEMPLATE(BM_locus_solve_quartic, float)->Arg(0)->Arg(2)->Arg(4);
+BENCHMARK_TEMPLATE(BM_locus_solve_quartic, double, true)->Arg(0)->Arg(2)->Arg(4);
+BENCHMARK_TEMPLATE(BM_locus_solve_quartic, float, true)->Arg(0)->Arg(2)->Arg(4);
+
+// Degree n (8 or 16) with n / 2 real roots in [-10, 10] and n / 4 complex pairs, expanded in
+// double: real_roots in near and exact mode.
+template <bool Exact>
+void BM_locus_real_roots(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  std::mt19937_64 rng(777 + static_cast<unsigned>(n));
+  std::uniform_real_distribution<double> u(-10.0, 10.0), pos(0.1, 10.0);
+  std::vector<std::vector<double>> polys;
+  for (int k = 0; k < 64; ++k) {
+    std::vector<double> c{1.0};
+    const auto mul = [&](double c0, double c1, double c2) {
+      std::vector<double> r(c.size() + 2, 0.0);
+      for (std::size_t i = 0; i < c.size(); ++i) {
+        r[i] += c0 * c[i];
+        r[i + 1] += c1 * c[i];
+        r[i + 2] += c2 * c[i];
+      }
+      while (r.back() == 0.0) r.pop_back();
+      c = r;
+    };
+    for (int i = 0; i < n / 2; ++i) mul(-u(rng), 1, 0);
+    for (int i = 0; i < n / 4; ++i) {
+      const double re = u(rng), im = pos(rng);
+      mul(re * re + im * im, -2 * re, 1);
+    }
+    polys.push_back(c);
+  }
+  locus::RootOptions opt;
+  opt.mode = Exact ? locus::RootMode::exact : locus::RootMode::near;
+  std::size_t i = 0;
+  long roots = 0;
+  for (auto _ : state) {
+    const auto r = locus::real_roots(polys[i++ & 63], -std::numeric_limits<double>::infinity(),
+                                     std::numeric_limits<double>::infinity(), opt);
+    roots += static_cast<long>(r.roots.size());
+    benchmark::DoNotOptimize(r.roots.data());
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+  state.counters["real_roots"] =
+      benchmark::Counter(static_cast<double>(roots) / static_cast<double>(state.iterations()));
+}
+BENCHMARK_TEMPLATE(BM_locus_real_roots, false)->Arg(8)->Arg(16);
+BENCHMARK_TEMPLATE(BM_locus_real_roots, true)->Arg(8)->Arg(16);
 
 #ifdef LOCUS_BENCH_HAVE_EIGEN
 void BM_eigen_polynomial_solver(benchmark::State& state) {

@@ -102,9 +102,9 @@ template <class T>
     const C r2 = r * r;
     const C q0 = md * md, q1 = C(2) * mm * md, q2 = mm * mm;
     const C g0 = dd, g1 = C(2) * pd, g2 = pp;
-    const RootsResult<C> roots =
-        solve_quartic<C>(q0 * g0 - r2 * pd * pd, q0 * g1 + q1 * g0 - r2 * C(2) * pp * pd,
-                         q0 * g2 + q1 * g1 + q2 * g0 - r2 * pp * pp, q1 * g2 + q2 * g1, q2 * g2);
+    const RootsResult<C> roots = solve_quartic<C>(
+        q0 * g0 - r2 * pd * pd, q0 * g1 + q1 * g0 - r2 * C(2) * pp * pd,
+        q0 * g2 + q1 * g1 + q2 * g0 - r2 * pp * pp, q1 * g2 + q2 * g1, q2 * g2, near_roots());
     for (const Root<C>& root : roots) cand[nc++] = root.value;
     // Where the line meets the cylinder rho = r: g(t) = r^2, solved as a quadratic without
     // cancellation (dd - r^2 = (rho0 - r)(rho0 + r); the discriminant pd^2 - pp (dd - r^2) =

@@ -87,9 +87,9 @@ template <class T>
     cand[nc++] = -dot(d, m) / mm;  // projection of the center
     // Intersections with the curve.
     const C p0 = e0 * e0, p1 = e1 * e1;
-    const RootsResult<C> roots =
-        solve_quadratic<C>(p1 * x0 * x0 + p0 * x1 * x1 - p0 * p1,
-                           C(2) * (p1 * x0 * u0 + p0 * x1 * u1), p1 * u0 * u0 + p0 * u1 * u1);
+    const RootsResult<C> roots = solve_quadratic<C>(p1 * x0 * x0 + p0 * x1 * x1 - p0 * p1,
+                                                    C(2) * (p1 * x0 * u0 + p0 * x1 * u1),
+                                                    p1 * u0 * u0 + p0 * u1 * u1, near_roots());
     for (const Root<C>& root : roots) cand[nc++] = root.value;
     // The two points whose tangent is parallel to the direction, projected onto the line.
     const C w0 = e0 * u1, w1 = e1 * u0;

@@ -125,7 +125,7 @@ template <class C>
   const C mid = -beta / (C(2) * lambda);
   int k = 0;
   if (kind == ConicKind::parallel_lines) {
-    const RootsResult<C> roots = solve_quadratic<C>(q.c, beta, lambda);
+    const RootsResult<C> roots = solve_quadratic<C>(q.c, beta, lambda, near_roots());
     for (const Root<C>& r : roots)
       if (k < 2) point[static_cast<std::size_t>(k++)] = r.value * n;
   }
@@ -201,7 +201,8 @@ template <class T, class Lin>
   const Vec2<C> am = qc.a * m;
   const C mam = dot(m, am);
   // (1) Intersections with the curve.
-  for (const Root<C>& root : solve_quadratic<C>(qc.value(o), dot(qc.gradient(o), m), mam)) {
+  for (const Root<C>& root :
+       solve_quadratic<C>(qc.value(o), dot(qc.gradient(o), m), mam, near_roots())) {
     const C t = root.value;
     if (!is_finite(t) || v.clamp_param(t) != t) continue;
     const Vec2<C> y = v.at(t);
@@ -214,8 +215,8 @@ template <class T, class Lin>
   if (gg > C(0) && is_finite(gg)) {
     const Vec2<C> x0 = (-dot(qc.b, m) / gg) * g;
     const Vec2<C> w = perp(g);
-    for (const Root<C>& root :
-         solve_quadratic<C>(qc.value(x0), dot(qc.gradient(x0), w), dot(w, qc.a * w))) {
+    for (const Root<C>& root : solve_quadratic<C>(qc.value(x0), dot(qc.gradient(x0), w),
+                                                  dot(w, qc.a * w), near_roots())) {
       const Vec2<C> x = project_onto(qc, x0 + root.value * w);
       if (is_finite(x)) offer_point(x, true);
     }

@@ -664,7 +664,9 @@ template <Real T>
   if (dp.degree() < 0) {
     r.status = Status::degenerate_input;
   } else {
-    const auto roots = real_roots(dp, a, b);
+    // Near mode: p' is rounded data (and a turning point of p' within noise of zero is a
+    // degenerate critical point of p for every purpose here); it also keeps this fast.
+    const auto roots = real_roots(dp, a, b, near_roots());
     if (roots.status == Status::limit_exceeded) r.status = Status::limit_exceeded;
     for (const auto& rt : roots.roots) {
       CriticalPoint1<T> c{rt.value, p(rt.value), CriticalKind::inflection, rt.multiplicity};

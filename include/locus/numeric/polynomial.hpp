@@ -18,8 +18,8 @@
 // algorithms. With floating-point T they are the same algorithms in rounded arithmetic: divide
 // removes the leading term exactly (it is set to zero, not computed); gcd treats a remainder
 // whose coefficients are all <= rel_tol * (largest coefficient of the divisor) as zero; the
-// Sturm sequence is only as reliable as the remainders (real_roots() in roots.hpp does not use it
-// and is robust instead).
+// Sturm sequence is only as reliable as the remainders (real_roots() in roots.hpp builds its own
+// in exact integers).
 //
 // Degenerate input: division by the zero polynomial returns Status::degenerate_input (quotient 0,
 // remainder = dividend). gcd(0, 0) = 0. NaN/Inf coefficients propagate through arithmetic by IEEE

@@ -351,7 +351,7 @@ template <Real T>
   // the root finder counts the following coefficients within their errors as zero (circles
   // tangent at y = 0: |R[1]| = 5e-20 below its error 6e-18 would otherwise give the simple roots
   // 0 and -1.5e-15).
-  RootOptions ro;
+  RootOptions ro = near_roots();  // R's coefficients carry error: near mode
   ro.coefficient_error = r_err;
   const auto ry = solve_quartic(R[0], R[1], R[2], R[3], R[4], ro);
 
