@@ -4,6 +4,7 @@
 
 #include <locus/bounding/min_box3.hpp>
 #include <locus/core/basis.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
 
@@ -392,13 +393,14 @@ void refine(const Evaluator& ev, const Mesh& m, Frame& best, std::uint64_t& work
   if (f.volume < best.volume) best = f;
 }
 
+// The box of a frame of the vertices scaled by `scale` (a power of two), scaled back.
 template <class T>
-OrientedBox<T, 3> to_box(const Frame& f, const V3& ref) {
+OrientedBox<T, 3> to_box(const Frame& f, const V3& ref, double scale) {
   OrientedBox<T, 3> b;
-  b.center = vec_cast<T>(ref + f.center);
+  b.center = vec_cast<T>(ref + f.center / scale);
   for (int k = 0; k < 3; ++k) b.axis[k] = vec_cast<T>(f.axis[k]);
-  b.extent = {static_cast<T>(f.extent[0]), static_cast<T>(f.extent[1]),
-              static_cast<T>(f.extent[2])};
+  b.extent = {static_cast<T>(f.extent[0] / scale), static_cast<T>(f.extent[1] / scale),
+              static_cast<T>(f.extent[2] / scale)};
   return b;
 }
 
@@ -410,12 +412,22 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
   const Hull3Result hull = convex_hull(points);
   r.status = hull.status;
   if (hull.status != Status::ok) return r;
-  // Hull vertices relative to the first one (keeps far-from-origin sets precise).
+  // Hull vertices relative to the first one (keeps far-from-origin sets precise), scaled by a
+  // power of two when products of their coordinates (volumes, the calipers' areas over squared
+  // lengths) could leave the range (distance/detail/rescale.hpp); the box is scaled back
+  // exactly, so it scales exactly with the input.
   const V3 ref = vec_cast<double>(points[hull.vertices[0]]);
   Mesh m;
   m.verts.resize(hull.vertices.size());
-  for (std::size_t i = 0; i < m.verts.size(); ++i)
+  double largest = 0.0;
+  for (std::size_t i = 0; i < m.verts.size(); ++i) {
     m.verts[i] = vec_cast<double>(points[hull.vertices[i]]) - ref;
+    largest = std::max(largest, max_abs(m.verts[i]));
+  }
+  const double scale =
+      detail::outside_product_range<double, 6>(largest) ? normalising_scale(largest) : 1.0;
+  if (scale != 1.0)
+    for (V3& v : m.verts) v = scale * v;
 
   if (hull.dimension == 0) {
     r.box.center = points[hull.vertices[0]];
@@ -428,20 +440,20 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
     Evaluator ev(m);  // no facets: candidates project every vertex
     Frame f;
     if (hull.dimension == 1) {
-      const V3 d =
-          vec_cast<double>(points[hull.polygon[1]]) - vec_cast<double>(points[hull.polygon[0]]);
+      const V3 d = scale * (vec_cast<double>(points[hull.polygon[1]]) -
+                            vec_cast<double>(points[hull.polygon[0]]));
       ev.fit(complete_basis(d).axis.data(), f);
     } else {
       const V3 a = vec_cast<double>(points[hull.polygon[0]]),
                b = vec_cast<double>(points[hull.polygon[1]]),
                c = vec_cast<double>(points[hull.polygon[2]]);
       // The flat direction is axis[2].
-      if (!ev.candidate(normalize(cross(b - a, c - a)), f)) {
+      if (!ev.candidate(normalize(cross(scale * (b - a), scale * (c - a))), f)) {
         r.status = Status::degenerate_input;
         return r;
       }
     }
-    r.box = to_box<T>(f, ref);
+    r.box = to_box<T>(f, ref, scale);
     r.volume = T(0);
     r.candidates = 1;
     r.certified = true;  // a flat box is a minimum
@@ -1002,8 +1014,8 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
         refine(ev, m, best, work, options.max_work);
     }
   }
-  r.box = to_box<T>(best, ref);
-  r.volume = static_cast<T>(best.volume);
+  r.box = to_box<T>(best, ref, scale);
+  r.volume = static_cast<T>(best.volume / scale / scale / scale);
   if (exhausted) r.status = Status::limit_exceeded;
   return r;
 }
