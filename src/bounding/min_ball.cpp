@@ -113,7 +113,8 @@ class Engine {
       if constexpr (D == 3) center = detail::circumcenter(s[0], s[1], s[2], s[3]);
     }
     radius = 0.0;
-    for (int i = 0; i < cur_k_; ++i) radius = std::max(radius, length(s[i] - center));
+    for (int i = 0; i < cur_k_; ++i)
+      radius = std::max(radius, detail::scaled_length(s[i] - center));
   }
 
  private:
@@ -176,10 +177,19 @@ class Engine {
   void update_shortcut() noexcept {
     use_shortcut_ = false;
     if (cur_k_ < 2) return;
+    // kappa is a ratio of products of up to six edge coordinates: computed on the edges scaled
+    // by a power of two, so it is the same at every scale of the input.
     double kappa = 1.0;
-    const P u = s_[1] - s_[0];
+    P e[D] = {};
+    double m = 0.0;
+    for (int i = 1; i < cur_k_; ++i) {
+      e[i - 1] = s_[i] - s_[0];
+      m = std::max(m, max_abs(e[i - 1]));
+    }
+    const double f = detail::product_scale<6>(m);
+    const P u = f * e[0];
     if (cur_k_ == 3) {
-      const P v = s_[2] - s_[0];
+      const P v = f * e[1];
       double area2 = 0.0;
       if constexpr (D == 2) {
         area2 = std::abs(perp_dot(u, v));
@@ -189,7 +199,7 @@ class Engine {
       kappa = (sqr_length(u) + sqr_length(v)) / area2;
     } else if (cur_k_ == 4) {
       if constexpr (D == 3) {
-        const P v = s_[2] - s_[0], w = s_[3] - s_[0];
+        const P v = f * e[1], w = f * e[2];
         const double det = std::abs(dot(u, cross(v, w)));
         const double adj =
             std::sqrt(sqr_length(cross(v, w)) + sqr_length(cross(w, u)) + sqr_length(cross(u, v)));

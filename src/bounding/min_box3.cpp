@@ -4,6 +4,7 @@
 
 #include <locus/bounding/min_box3.hpp>
 #include <locus/core/basis.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
 
@@ -392,63 +393,23 @@ void refine(const Evaluator& ev, const Mesh& m, Frame& best, std::uint64_t& work
   if (f.volume < best.volume) best = f;
 }
 
+// The box of a frame of the vertices scaled by `scale` (a power of two), scaled back.
 template <class T>
-OrientedBox<T, 3> to_box(const Frame& f, const V3& ref) {
+OrientedBox<T, 3> to_box(const Frame& f, const V3& ref, double scale) {
   OrientedBox<T, 3> b;
-  b.center = vec_cast<T>(ref + f.center);
+  b.center = vec_cast<T>(ref + f.center / scale);
   for (int k = 0; k < 3; ++k) b.axis[k] = vec_cast<T>(f.axis[k]);
-  b.extent = {static_cast<T>(f.extent[0]), static_cast<T>(f.extent[1]),
-              static_cast<T>(f.extent[2])};
+  b.extent = {static_cast<T>(f.extent[0] / scale), static_cast<T>(f.extent[1] / scale),
+              static_cast<T>(f.extent[2] / scale)};
   return b;
 }
 
-}  // namespace
+// ---- min_box, step by step ----
 
-template <Real T>
-MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& options) {
-  MinBoxResult<T> r;
-  const Hull3Result hull = convex_hull(points);
-  r.status = hull.status;
-  if (hull.status != Status::ok) return r;
-  // Hull vertices relative to the first one (keeps far-from-origin sets precise).
-  const V3 ref = vec_cast<double>(points[hull.vertices[0]]);
-  Mesh m;
-  m.verts.resize(hull.vertices.size());
-  for (std::size_t i = 0; i < m.verts.size(); ++i)
-    m.verts[i] = vec_cast<double>(points[hull.vertices[i]]) - ref;
-
-  if (hull.dimension == 0) {
-    r.box.center = points[hull.vertices[0]];
-    for (int k = 0; k < 3; ++k) r.box.axis[k] = unit_vec<T, 3>(k);
-    r.box.extent = Vec3<T>{};
-    r.certified = true;
-    return r;
-  }
-  if (hull.dimension < 3) {
-    Evaluator ev(m);  // no facets: candidates project every vertex
-    Frame f;
-    if (hull.dimension == 1) {
-      const V3 d =
-          vec_cast<double>(points[hull.polygon[1]]) - vec_cast<double>(points[hull.polygon[0]]);
-      ev.fit(complete_basis(d).axis.data(), f);
-    } else {
-      const V3 a = vec_cast<double>(points[hull.polygon[0]]),
-               b = vec_cast<double>(points[hull.polygon[1]]),
-               c = vec_cast<double>(points[hull.polygon[2]]);
-      // The flat direction is axis[2].
-      if (!ev.candidate(normalize(cross(b - a, c - a)), f)) {
-        r.status = Status::degenerate_input;
-        return r;
-      }
-    }
-    r.box = to_box<T>(f, ref);
-    r.volume = T(0);
-    r.candidates = 1;
-    r.certified = true;  // a flat box is a minimum
-    return r;
-  }
-
-  // The mesh over local indices (hull.vertices is sorted).
+// Step 1: the hull as a mesh over local vertex indices (hull.vertices is sorted): triangles in
+// a canonical order, rounded facet normals with their error bounds, and edges with their two
+// triangles.
+void build_mesh(const Hull3Result& hull, Mesh& m) {
   const auto local = [&](std::uint32_t i) {
     return static_cast<std::uint32_t>(
         std::lower_bound(hull.vertices.begin(), hull.vertices.end(), i) - hull.vertices.begin());
@@ -497,7 +458,11 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       if (u < t) continue;  // each edge once
       m.edges.push_back({m.tris[t][e], m.tris[t][(e + 1) % 3], static_cast<std::uint32_t>(t), u});
     }
+}
 
+// Step 2: the edges grouped in cube-map cells and blocks with bounding cones, the vertices
+// renumbered in the order the cells reach them, and the silhouette test data.
+void build_cells(Mesh& m) {
   {
     // Cube-map cells of about 2 edges (16 above 16384 edges, where the blocks' tests would
     // cost more than the edges' saved), keyed by the mean normal of each edge's facets, in
@@ -603,6 +568,10 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       s.b = e.b;
     }
   }
+}
+
+// Step 3: the vertex graph (the neighbours of each vertex), for the support ascents.
+void build_vertex_graph(Mesh& m) {
   m.first.assign(m.verts.size() + 1, 0);
   for (const Mesh::Edge& e : m.edges) {
     ++m.first[e.a + 1];
@@ -617,75 +586,90 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       m.neighbours[fill[e.b]++] = e.a;
     }
   }
+}
 
-  Evaluator ev(m);
-  const std::size_t h = m.verts.size();
-  std::uint64_t work = 0;
-  bool exhausted = false;
-  Frame best{};
-  best.volume = inf;
+// f at n with the end data of the bounds: value (f), width along n, chord cosines.
+struct Sample {
+  double value = inf, width = 0.0, sec_width = inf, tan_width = inf, sec_rect = inf, tan_rect = inf;
+};
+
+// Steps 4-6: the search over normals for the smallest f (facet normals, edge pairs, the branch
+// and bound over arcs or regions, descents), with the budget and the best frame found.
+class BoxSearch {
+ public:
+  BoxSearch(const Mesh& m, const MinBoxOptions& options)
+      : m_(m), options_(options), ev_(m), h_(m.verts.size()), nt_(m.tris.size()) {
+    best_.volume = inf;
+    bound_widths();
+  }
+
+  void run();
+
+  const Frame& best() const { return best_; }
+  bool exhausted() const { return exhausted_; }
+  std::size_t candidates() const { return candidates_; }
+  std::size_t arcs() const { return arcs_; }
+  bool certified() const { return certified_; }
+
+ private:
   // A candidate's volume is trusted only after the box of all vertices in its frame confirms it.
-  const auto consider = [&](const Frame& f) {
-    if (!(f.volume < best.volume)) return;
+  void consider(const Frame& f) {
+    if (!(f.volume < best_.volume)) return;
     Frame g;
-    ev.fit(f.axis, g);
-    if (g.volume < best.volume) best = g;
-  };
-  // f at n with the end data of the bounds: value (f), width along n, chord cosines.
-  struct Sample {
-    double value = inf, width = 0.0, sec_width = inf, tan_width = inf, sec_rect = inf,
-           tan_rect = inf;
-  };
-  Frame last{};  // the frame of the last evaluation
-  const auto evaluate = [&](const V3& n, Sample& out) {
-    if (work > options.max_work) {
-      exhausted = true;
+    ev_.fit(f.axis, g);
+    if (g.volume < best_.volume) best_ = g;
+  }
+  bool evaluate(const V3& n, Sample& out) {
+    if (work_ > options_.max_work) {
+      exhausted_ = true;
       return false;
     }
-    ++r.candidates;
+    ++candidates_;
     Frame f;
     out = Sample{};
-    bool ok = ev.candidate(n, f);
-    work += ev.last_work();
+    bool ok = ev_.candidate(n, f);
+    work_ += ev_.last_work();
     if (!ok) return true;
-    if (f.volume < best.volume) {
+    if (f.volume < best_.volume) {
       // A new best must be confirmed by the box of all vertices in its frame; if that box is
       // larger, the silhouette culling missed a vertex (rounding): evaluate again without it.
       Frame g;
-      ev.fit(f.axis, g);
-      work += h;
+      ev_.fit(f.axis, g);
+      work_ += h_;
       if (g.volume > f.volume * (1.0 + 1e-9)) {
-        ok = ev.candidate(n, f, true);
-        work += ev.last_work();
+        ok = ev_.candidate(n, f, true);
+        work_ += ev_.last_work();
         if (!ok) return true;
       }
     }
     out = {f.volume, 2.0 * f.extent[2], f.sec_width, f.tan_width, f.sec_rect, f.tan_rect};
-    last = f;
+    last_ = f;
     consider(f);
     return true;
-  };
-
-  // The centre of the vertices is inside the hull; diam bounds its diameter and min_width every
-  // width of it (0 when the hull is flat to rounding: then no bound is usable).
-  V3 centre{};
-  for (const V3& p : m.verts) centre += p;
-  centre = (1.0 / static_cast<double>(h)) * centre;
-  double radius = 0.0;
-  for (const V3& p : m.verts) radius = std::max(radius, length(p - centre));
-  const double diam = 2.0 * radius * (1.0 + 1e-12);
-  double inradius = inf;
-  bool all_trusted = true;
-  for (std::size_t t = 0; t < nt; ++t) {
-    if (!std::isfinite(m.normal_err[t])) {
-      all_trusted = false;
-      continue;
-    }
-    const double dist = dot(m.normal[t], m.verts[m.tris[t][0]] - centre);
-    inradius = std::min(inradius, dist - (m.normal_err[t] + 8.0 * eps) * diam);
   }
-  const double min_width = 2.0 * std::max(0.0, inradius);
-  const double tol = options.certify_tol > 0.0 ? options.certify_tol : 1e-3;
+
+  void bound_widths() {
+    // The centre of the vertices is inside the hull; diam bounds its diameter and min_width every
+    // width of it (0 when the hull is flat to rounding: then no bound is usable).
+    centre_ = V3{};
+    for (const V3& p : m_.verts) centre_ += p;
+    centre_ = (1.0 / static_cast<double>(h_)) * centre_;
+    double radius = 0.0;
+    for (const V3& p : m_.verts) radius = std::max(radius, length(p - centre_));
+    diam_ = 2.0 * radius * (1.0 + 1e-12);
+    double inradius = inf;
+    all_trusted_ = true;
+    for (std::size_t t = 0; t < nt_; ++t) {
+      if (!std::isfinite(m_.normal_err[t])) {
+        all_trusted_ = false;
+        continue;
+      }
+      const double dist = dot(m_.normal[t], m_.verts[m_.tris[t][0]] - centre_);
+      inradius = std::min(inradius, dist - (m_.normal_err[t] + 8.0 * eps) * diam_);
+    }
+    min_width_ = 2.0 * std::max(0.0, inradius);
+    tol_ = options_.certify_tol > 0.0 ? options_.certify_tol : 1e-3;
+  }
 
   // Branch and bound over regions of normals (for hulls with very many facets, where
   // evaluating every facet normal would be the main cost). Since f(-n) = f(n), the normals are
@@ -695,7 +679,7 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
   // corners are the farthest points). Every frame with a normal in the region is a frame at
   // n0 rotated by at most r, so f >= f(n0) times the chord factor of the width along n0 and
   // the squared chord factor of the rectangle (or the Lipschitz factors, whichever is larger).
-  const auto search_regions = [&] {
+  void search_regions() {
     struct Region {
       double bound;
       int face;
@@ -721,11 +705,11 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
         return;
       if (starts.size() == starts.capacity()) starts.pop_back();
       starts.insert(
-          std::upper_bound(starts.begin(), starts.end(), last,
+          std::upper_bound(starts.begin(), starts.end(), last_,
                            [](const Frame& x, const Frame& y) { return x.volume < y.volume; }),
-          last);
+          last_);
     };
-    // Evaluate the centre, bound the region, keep it when the bound is below the threshold.
+    // Evaluate the centre_, bound the region, keep it when the bound is below the threshold.
     const auto visit = [&](int face, double u0, double u1, double v0, double v1) {
       const V3 n0 = normal_at(face, 0.5 * (u0 + u1), 0.5 * (v0 + v1));
       double angle = 0.0;
@@ -742,15 +726,15 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
       if (std::isfinite(s.value) && s.width > 0.0) {
         const double rect = s.value / s.width;
         const double kw =
-            std::max(chord_factor(s.sec_width, s.tan_width, angle), 1.0 - angle * diam / s.width);
+            std::max(chord_factor(s.sec_width, s.tan_width, angle), 1.0 - angle * diam_ / s.width);
         // (min_width bounds every width only when every facet normal is trusted.)
-        const double g = all_trusted ? 1.0 + angle * diam / min_width : inf;
+        const double g = all_trusted_ ? 1.0 + angle * diam_ / min_width_ : inf;
         const double ka = std::max(chord_factor(s.sec_rect, s.tan_rect, angle), 1.0 / g);
         bound = s.width * kw * rect * ka * ka * (1.0 - 8.0 * eps);
         slope =
-            std::min(s.tan_width, diam / s.width) + 2.0 * std::min(s.tan_rect, diam / min_width);
+            std::min(s.tan_width, diam_ / s.width) + 2.0 * std::min(s.tan_rect, diam_ / min_width_);
       }
-      if (bound < (1.0 - tol) * best.volume) {
+      if (bound < (1.0 - tol_) * best_.volume) {
         if (angle < 1e-10) {
           proved = false;  // splitting cannot help further
         } else {
@@ -764,35 +748,35 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
     // as if the budget had run out (after a sixteenth of it, for the quality of the box).
     // Each needs about (r / r') ^ 2 evaluations, r' the radius at which the first-order loss
     // of its bound would leave it above the threshold, at most 1024 (five levels of splits:
-    // near the minimum f grows away from the centre, so the estimate is far too high there).
-    const std::size_t evaluations_before = r.candidates;
+    // near the minimum f grows away from the centre_, so the estimate is far too high there).
+    const std::size_t evaluations_before = candidates_;
     const auto hopeless = [&] {
-      if (work < options.max_work / 16) return false;
+      if (work_ < options_.max_work / 16) return false;
       double need = 0.0;
       for (const Region& q : heap) {
-        const double gap = 1.0 - (1.0 - tol) * best.volume / q.value;
+        const double gap = 1.0 - (1.0 - tol_) * best_.volume / q.value;
         const double r1 = gap / q.slope;
         need += r1 * 32.0 > q.angle ? sqr(q.angle / r1) : 1024.0;
       }
       const double per_evaluation =
-          static_cast<double>(work) /
-          static_cast<double>(std::max<std::size_t>(1, r.candidates - evaluations_before));
+          static_cast<double>(work_) /
+          static_cast<double>(std::max<std::size_t>(1, candidates_ - evaluations_before));
       return need * per_evaluation >
-             static_cast<double>(options.max_work - std::min(work, options.max_work));
+             static_cast<double>(options_.max_work - std::min(work_, options_.max_work));
     };
     constexpr int grid = 4;
-    for (int face = 0; face < 3 && !exhausted; ++face)
-      for (int i = 0; i < grid && !exhausted; ++i)
-        for (int j = 0; j < grid && !exhausted; ++j)
+    for (int face = 0; face < 3 && !exhausted_; ++face)
+      for (int i = 0; i < grid && !exhausted_; ++i)
+        for (int j = 0; j < grid && !exhausted_; ++j)
           visit(face, -1.0 + 2.0 * i / grid, -1.0 + 2.0 * (i + 1) / grid, -1.0 + 2.0 * j / grid,
                 -1.0 + 2.0 * (j + 1) / grid);
     std::size_t splits = 0;
     bool given_up = false;
-    while (!heap.empty() && !exhausted) {
+    while (!heap.empty() && !exhausted_) {
       std::pop_heap(heap.begin(), heap.end(), later);
       const Region q = heap.back();
       heap.pop_back();
-      if (q.bound >= (1.0 - tol) * best.volume) {
+      if (q.bound >= (1.0 - tol_) * best_.volume) {
         heap.clear();
         break;
       }
@@ -801,210 +785,308 @@ MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& op
           !visit(q.face, q.u0, um, vm, q.v1) || !visit(q.face, um, q.u1, vm, q.v1))
         break;
       if (++splits % 128 == 0 && hopeless()) {
-        exhausted = given_up = true;
+        exhausted_ = given_up = true;
         break;
       }
     }
-    r.certified = proved && heap.empty() && !exhausted && options.certify_tol > 0.0;
+    certified_ = proved && heap.empty() && !exhausted_ && options_.certify_tol > 0.0;
     if (given_up) {
       // Facet normals (where f has its local minima more often than at region centres), in a
       // stride order spreading them over the hull, with up to an eighth of the budget.
       std::size_t stride = 7919;  // coprime with nt: j -> j * stride mod nt is a permutation
-      while (std::gcd(stride, nt) != 1) stride += 2;
-      const std::uint64_t stop = work + options.max_work / 8;
+      while (std::gcd(stride, nt_) != 1) stride += 2;
+      const std::uint64_t stop = work_ + options_.max_work / 8;
       Sample s;
-      for (std::size_t j = 0; j < nt && work < stop; ++j) {
-        const std::size_t t = (j * stride) % nt;
-        if (!std::isfinite(m.normal_err[t])) continue;
-        if (!evaluate(m.normal[t], s)) break;
+      for (std::size_t j = 0; j < nt_ && work_ < stop; ++j) {
+        const std::size_t t = (j * stride) % nt_;
+        if (!std::isfinite(m_.normal_err[t])) continue;
+        if (!evaluate(m_.normal[t], s)) break;
         keep_start(s);
       }
     }
-    if (options.refine) {
-      refine(ev, m, best, work, options.max_work + options.max_work / 16);
+    if (options_.refine) {
+      refine(ev_, m_, best_, work_, options_.max_work + options_.max_work / 16);
       // Unproved: f is flat or the budget small, descend from the other best frames too (the
       // minimum may be in another basin).
-      if (!r.certified)
+      if (!certified_)
         for (Frame& f : starts) {
-          refine(ev, m, f, work, options.max_work + options.max_work / 8);
-          if (f.volume < best.volume) best = f;
+          refine(ev_, m_, f, work_, options_.max_work + options_.max_work / 8);
+          if (f.volume < best_.volume) best_ = f;
         }
     }
-  };
+  }
 
+  // The facet normals after the first `head` (every one, or in a stride order that spreads
+  // the ones the budget reaches over the hull).
+  void facet_pass(std::size_t head, double predicted) {
+    std::size_t stride = 1;
+    if (predicted > static_cast<double>(options_.max_work)) {
+      stride = 7919;  // a prime, made coprime with nt: j -> j * stride mod nt is a permutation
+      while (std::gcd(stride, nt_) != 1) stride += 2;
+    }
+    for (std::size_t j = 0; j < nt_ && !exhausted_; ++j) {
+      const std::size_t t = (j * stride) % nt_;
+      if (t >= head && std::isfinite(m_.normal_err[t])) evaluate(m_.normal[t], fsample_[t]);
+    }
+  }
+
+  // The cross products of edge pairs of small hulls; the coordinate axes when the budget
+  // allowed no candidate at all.
+  void edge_pairs() {
+    if (m_.edges.size() <= options_.max_pair_edges)
+      for (std::size_t i = 0; i < m_.edges.size() && !exhausted_; ++i)
+        for (std::size_t j = i + 1; j < m_.edges.size() && !exhausted_; ++j) {
+          const V3 n = cross(m_.verts[m_.edges[i].b] - m_.verts[m_.edges[i].a],
+                             m_.verts[m_.edges[j].b] - m_.verts[m_.edges[j].a]);
+          Sample pair;
+          if (sqr_length(n) > 0.0) evaluate(normalize(n), pair);
+        }
+    if (!(best_.volume < inf)) {
+      // Budget too small for a single candidate: the box of the coordinate axes.
+      const V3 axes[3] = {V3{1, 0, 0}, V3{0, 1, 0}, V3{0, 0, 1}};
+      ev_.fit(axes, best_);
+    }
+  }
+
+  // Branch and bound over the arcs (the bound: docs/notes/bounding.md).
+  void search_arcs() {
+    // Branch and bound over the arcs (see the header comment for the bound).
+
+    struct Arc {
+      V3 a, b;        // n(t) = cos(t) a + sin(t) b
+      double margin;  // angular error of the arc's ends
+      double diam;    // diameter bound of the hull's projection along the arc's pole a x b
+      bool coarse;    // diam is the hull's (the projection's is computed when first needed)
+    };
+    struct Piece {
+      double bound;
+      std::uint32_t arc;
+      double lo, hi;    // angle interval
+      Sample slo, shi;  // f, width along n and chord cosines at its ends
+      bool operator<(const Piece& o) const { return bound > o.bound; }  // min-heap
+    };
+    std::vector<Arc> arcs;
+    std::priority_queue<Piece> heap;
+    // Lower bound of f over the piece (and within the arc's margin of it). The width along n
+    // is concave on the arc: at least its chord between the ends. The rectangle area at t is
+    // at least the area at an end t' shrunk by the rotation by |t - t'| (plus the margin) that
+    // maps the frames at t' to those at t: the larger of the chord factor (chord_factor, per
+    // side) and the Lipschitz factor of the header comment. On each of K sub-intervals the
+    // bound is the smaller chord width times the larger of the two ends' area bounds at the
+    // sub-interval's far points.
+    const auto lower_bound = [&](const Piece& p) {
+      if (!(std::isfinite(p.slo.value) && std::isfinite(p.shi.value) && min_width_ > 0.0))
+        return 0.0;
+      if (!(p.slo.width > 0.0 && p.shi.width > 0.0)) return 0.0;
+      const Arc& arc = arcs[p.arc];
+      const double wm = 4.0 * arc.margin * diam_;
+      const double alo = p.slo.value / p.slo.width, ahi = p.shi.value / p.shi.width;
+      const auto area = [&](double a, const Sample& e, double d) {
+        const double g =
+            1.0 + (0.7071067811865476 * d * arc.diam + arc.margin * diam_) / min_width_;
+        const double k = chord_factor(e.sec_rect, e.tan_rect, d + arc.margin);
+        return a * std::max(1.0 / (g * g), k * k);
+      };
+      constexpr int K = 8;
+      const double len = p.hi - p.lo;
+      double bound = inf;
+      for (int j = 0; j < K; ++j) {
+        const double x0 = len * j / K, x1 = len * (j + 1) / K;
+        const double w0 = p.slo.width + (p.shi.width - p.slo.width) * (j / double(K));
+        const double w1 = p.slo.width + (p.shi.width - p.slo.width) * ((j + 1) / double(K));
+        const double w = std::min(w0, w1) * (1.0 - 4.0 * eps) - wm;
+        if (!(w > 0.0)) return 0.0;
+        const double rect = std::max(area(alo, p.slo, x1), area(ahi, p.shi, len - x0));
+        bound = std::min(bound, w * rect);
+      }
+      return bound;
+    };
+    // Projection diameters per arc cost O(h) each; above this the global one is used.
+    const bool per_arc_diam = m_.edges.size() * h_ <= 50000000u;
+    bool proved = all_trusted_ && min_width_ > 0.0;
+    // (A hull flat to rounding has no usable width bound: its arcs are left unsearched.)
+    for (const Mesh::Edge& e : (min_width_ > 0.0 ? std::span<const Mesh::Edge>(m_.edges)
+                                                 : std::span<const Mesh::Edge>())) {
+      if (!std::isfinite(m_.normal_err[e.f]) || !std::isfinite(m_.normal_err[e.g])) continue;
+      const V3 a = m_.normal[e.f];
+      const double c = dot(a, m_.normal[e.g]);
+      const V3 s = m_.normal[e.g] - c * a;
+      const double sn = length(s);
+      const V3 b = sn > 0.0 ? (1.0 / sn) * s : complete_basis(a).axis[1];
+      arcs.push_back(
+          {a, b, m_.normal_err[e.f] + m_.normal_err[e.g] + 8.0 * eps, diam_, per_arc_diam});
+      Piece p{0.0,           static_cast<std::uint32_t>(arcs.size() - 1),
+              0.0,           std::atan2(sn, c),
+              fsample_[e.f], fsample_[e.g]};
+      p.bound = lower_bound(p);
+      if (p.bound < (1.0 - tol_) * best_.volume) heap.push(p);
+    }
+    arcs_ = arcs.size();
+    const double best_before = best_.volume;
+    while (!heap.empty()) {
+      const double threshold = (1.0 - tol_) * best_.volume;
+      if (heap.top().bound >= threshold) break;  // every piece left is proved
+      Piece p = heap.top();
+      heap.pop();
+      if (arcs[p.arc].coarse) {
+        // The diameter of the projection along the pole (O(h)) before the first split.
+        Arc& arc = arcs[p.arc];
+        const V3 pole = normalize(cross(arc.a, arc.b));
+        double r2 = 0.0;
+        for (const V3& q : m_.verts) {
+          const V3 d = q - centre_;
+          const double z = dot(d, pole);
+          r2 = std::max(r2, sqr_length(d) - z * z);
+        }
+        arc.diam = std::min(diam_, 2.0 * std::sqrt(r2) * (1.0 + 1e-12) + 8.0 * eps * diam_);
+        arc.coarse = false;
+        p.bound = std::max(p.bound, lower_bound(p));
+        if (p.bound < threshold) heap.push(p);
+        continue;
+      }
+      // Splitting cannot help a piece below 1e-12 rad, nor one with an end whose own bound
+      // at zero distance fails (the arc ends' normal errors alone exceed the tolerance).
+      Piece at_lo = p, at_hi = p;
+      at_lo.hi = at_lo.lo;
+      at_lo.shi = at_lo.slo;
+      at_hi.lo = at_hi.hi;
+      at_hi.slo = at_hi.shi;
+      if (p.hi - p.lo < 1e-12 || lower_bound(at_lo) < threshold || lower_bound(at_hi) < threshold) {
+        proved = false;
+        continue;
+      }
+      const Arc& arc = arcs[p.arc];
+      const double mid = 0.5 * (p.lo + p.hi);
+      Sample sm;
+      if (!evaluate(normalize(std::cos(mid) * arc.a + std::sin(mid) * arc.b), sm)) break;
+      Piece left{0.0, p.arc, p.lo, mid, p.slo, sm};
+      Piece right{0.0, p.arc, mid, p.hi, sm, p.shi};
+      left.bound = lower_bound(left);
+      right.bound = lower_bound(right);
+      const double t2 = (1.0 - tol_) * best_.volume;
+      if (left.bound < t2) heap.push(left);
+      if (right.bound < t2) heap.push(right);
+    }
+    certified_ = proved && !exhausted_ && options_.certify_tol > 0.0;
+    if (best_.volume < best_before && options_.refine && !exhausted_)
+      refine(ev_, m_, best_, work_, options_.max_work);
+  }
+
+  const Mesh& m_;
+  const MinBoxOptions& options_;
+  Evaluator ev_;
+  const std::size_t h_, nt_;
+  std::uint64_t work_ = 0;
+  bool exhausted_ = false;
+  Frame best_{};
+  Frame last_{};  // the frame of the last evaluation
+  std::size_t candidates_ = 0, arcs_ = 0;
+  bool certified_ = false;
+  std::vector<Sample> fsample_;  // f at each facet normal (the ends of the arcs)
+  // The centre of the vertices (inside the hull), a bound on its diameter and one on every
+  // width of it (0 when the hull is flat to rounding: then no bound is usable).
+  V3 centre_{};
+  double diam_ = 0.0, min_width_ = 0.0, tol_ = 0.0;
+  bool all_trusted_ = true;
+};
+
+void BoxSearch::run() {
   // Every facet normal (the ends of the arcs; the facet-flush boxes). When the first ones
   // show that the facet pass alone would take half the budget (a hull with very many
   // vertices, e.g. points on a sphere), the arcs are replaced by the branch and bound over
   // regions (with edge_arcs), or the facets are visited in a stride order that spreads the
   // ones the budget reaches over the hull (without it, or when the regions cannot be bounded).
-  std::vector<Sample> fsample(nt);
-  const std::size_t head = std::min<std::size_t>(64, nt);
+  fsample_.assign(nt_, Sample{});
+  const std::size_t head = std::min<std::size_t>(64, nt_);
   std::uint64_t head_work = 0;  // (without the confirmations of new best boxes)
-  for (std::size_t t = 0; t < head && !exhausted; ++t)
-    if (std::isfinite(m.normal_err[t])) {
-      evaluate(m.normal[t], fsample[t]);
-      head_work += ev.last_work();
+  for (std::size_t t = 0; t < head && !exhausted_; ++t)
+    if (std::isfinite(m_.normal_err[t])) {
+      evaluate(m_.normal[t], fsample_[t]);
+      head_work += ev_.last_work();
     }
   const double predicted =
-      static_cast<double>(head_work) / static_cast<double>(head) * static_cast<double>(nt);
-  if (options.edge_arcs && min_width > 0.0 && !exhausted &&
-      (options.search == MinBoxSearch::regions ||
-       (options.search == MinBoxSearch::automatic &&
-        predicted > 0.5 * static_cast<double>(options.max_work)))) {
+      static_cast<double>(head_work) / static_cast<double>(head) * static_cast<double>(nt_);
+  if (options_.edge_arcs && min_width_ > 0.0 && !exhausted_ &&
+      (options_.search == MinBoxSearch::regions ||
+       (options_.search == MinBoxSearch::automatic &&
+        predicted > 0.5 * static_cast<double>(options_.max_work)))) {
     search_regions();
   } else {
-    std::size_t stride = 1;
-    if (predicted > static_cast<double>(options.max_work)) {
-      stride = 7919;  // a prime, made coprime with nt: j -> j * stride mod nt is a permutation
-      while (std::gcd(stride, nt) != 1) stride += 2;
-    }
-    for (std::size_t j = 0; j < nt && !exhausted; ++j) {
-      const std::size_t t = (j * stride) % nt;
-      if (t >= head && std::isfinite(m.normal_err[t])) evaluate(m.normal[t], fsample[t]);
-    }
-    // The cross products of edge pairs of small hulls.
-    if (m.edges.size() <= options.max_pair_edges)
-      for (std::size_t i = 0; i < m.edges.size() && !exhausted; ++i)
-        for (std::size_t j = i + 1; j < m.edges.size() && !exhausted; ++j) {
-          const V3 n = cross(m.verts[m.edges[i].b] - m.verts[m.edges[i].a],
-                             m.verts[m.edges[j].b] - m.verts[m.edges[j].a]);
-          Sample pair;
-          if (sqr_length(n) > 0.0) evaluate(normalize(n), pair);
-        }
-    if (!(best.volume < inf)) {
-      // Budget too small for a single candidate: the box of the coordinate axes.
-      const V3 axes[3] = {V3{1, 0, 0}, V3{0, 1, 0}, V3{0, 0, 1}};
-      ev.fit(axes, best);
-    }
-    if (options.refine) refine(ev, m, best, work, options.max_work + options.max_work / 16);
-
-    if (options.edge_arcs && !exhausted) {
-      // Branch and bound over the arcs (see the header comment for the bound).
-
-      struct Arc {
-        V3 a, b;        // n(t) = cos(t) a + sin(t) b
-        double margin;  // angular error of the arc's ends
-        double diam;    // diameter bound of the hull's projection along the arc's pole a x b
-        bool coarse;    // diam is the hull's (the projection's is computed when first needed)
-      };
-      struct Piece {
-        double bound;
-        std::uint32_t arc;
-        double lo, hi;    // angle interval
-        Sample slo, shi;  // f, width along n and chord cosines at its ends
-        bool operator<(const Piece& o) const { return bound > o.bound; }  // min-heap
-      };
-      std::vector<Arc> arcs;
-      std::priority_queue<Piece> heap;
-      // Lower bound of f over the piece (and within the arc's margin of it). The width along n
-      // is concave on the arc: at least its chord between the ends. The rectangle area at t is
-      // at least the area at an end t' shrunk by the rotation by |t - t'| (plus the margin) that
-      // maps the frames at t' to those at t: the larger of the chord factor (chord_factor, per
-      // side) and the Lipschitz factor of the header comment. On each of K sub-intervals the
-      // bound is the smaller chord width times the larger of the two ends' area bounds at the
-      // sub-interval's far points.
-      const auto lower_bound = [&](const Piece& p) {
-        if (!(std::isfinite(p.slo.value) && std::isfinite(p.shi.value) && min_width > 0.0))
-          return 0.0;
-        if (!(p.slo.width > 0.0 && p.shi.width > 0.0)) return 0.0;
-        const Arc& arc = arcs[p.arc];
-        const double wm = 4.0 * arc.margin * diam;
-        const double alo = p.slo.value / p.slo.width, ahi = p.shi.value / p.shi.width;
-        const auto area = [&](double a, const Sample& e, double d) {
-          const double g =
-              1.0 + (0.7071067811865476 * d * arc.diam + arc.margin * diam) / min_width;
-          const double k = chord_factor(e.sec_rect, e.tan_rect, d + arc.margin);
-          return a * std::max(1.0 / (g * g), k * k);
-        };
-        constexpr int K = 8;
-        const double len = p.hi - p.lo;
-        double bound = inf;
-        for (int j = 0; j < K; ++j) {
-          const double x0 = len * j / K, x1 = len * (j + 1) / K;
-          const double w0 = p.slo.width + (p.shi.width - p.slo.width) * (j / double(K));
-          const double w1 = p.slo.width + (p.shi.width - p.slo.width) * ((j + 1) / double(K));
-          const double w = std::min(w0, w1) * (1.0 - 4.0 * eps) - wm;
-          if (!(w > 0.0)) return 0.0;
-          const double rect = std::max(area(alo, p.slo, x1), area(ahi, p.shi, len - x0));
-          bound = std::min(bound, w * rect);
-        }
-        return bound;
-      };
-      // Projection diameters per arc cost O(h) each; above this the global one is used.
-      const bool per_arc_diam = m.edges.size() * h <= 50000000u;
-      bool proved = all_trusted && min_width > 0.0;
-      // (A hull flat to rounding has no usable width bound: its arcs are left unsearched.)
-      for (const Mesh::Edge& e : (min_width > 0.0 ? std::span<const Mesh::Edge>(m.edges)
-                                                  : std::span<const Mesh::Edge>())) {
-        if (!std::isfinite(m.normal_err[e.f]) || !std::isfinite(m.normal_err[e.g])) continue;
-        const V3 a = m.normal[e.f];
-        const double c = dot(a, m.normal[e.g]);
-        const V3 s = m.normal[e.g] - c * a;
-        const double sn = length(s);
-        const V3 b = sn > 0.0 ? (1.0 / sn) * s : complete_basis(a).axis[1];
-        arcs.push_back(
-            {a, b, m.normal_err[e.f] + m.normal_err[e.g] + 8.0 * eps, diam, per_arc_diam});
-        Piece p{0.0,          static_cast<std::uint32_t>(arcs.size() - 1),
-                0.0,          std::atan2(sn, c),
-                fsample[e.f], fsample[e.g]};
-        p.bound = lower_bound(p);
-        if (p.bound < (1.0 - tol) * best.volume) heap.push(p);
-      }
-      r.arcs = arcs.size();
-      const double best_before = best.volume;
-      while (!heap.empty()) {
-        const double threshold = (1.0 - tol) * best.volume;
-        if (heap.top().bound >= threshold) break;  // every piece left is proved
-        Piece p = heap.top();
-        heap.pop();
-        if (arcs[p.arc].coarse) {
-          // The diameter of the projection along the pole (O(h)) before the first split.
-          Arc& arc = arcs[p.arc];
-          const V3 pole = normalize(cross(arc.a, arc.b));
-          double r2 = 0.0;
-          for (const V3& q : m.verts) {
-            const V3 d = q - centre;
-            const double z = dot(d, pole);
-            r2 = std::max(r2, sqr_length(d) - z * z);
-          }
-          arc.diam = std::min(diam, 2.0 * std::sqrt(r2) * (1.0 + 1e-12) + 8.0 * eps * diam);
-          arc.coarse = false;
-          p.bound = std::max(p.bound, lower_bound(p));
-          if (p.bound < threshold) heap.push(p);
-          continue;
-        }
-        // Splitting cannot help a piece below 1e-12 rad, nor one with an end whose own bound
-        // at zero distance fails (the arc ends' normal errors alone exceed the tolerance).
-        Piece at_lo = p, at_hi = p;
-        at_lo.hi = at_lo.lo;
-        at_lo.shi = at_lo.slo;
-        at_hi.lo = at_hi.hi;
-        at_hi.slo = at_hi.shi;
-        if (p.hi - p.lo < 1e-12 || lower_bound(at_lo) < threshold ||
-            lower_bound(at_hi) < threshold) {
-          proved = false;
-          continue;
-        }
-        const Arc& arc = arcs[p.arc];
-        const double mid = 0.5 * (p.lo + p.hi);
-        Sample sm;
-        if (!evaluate(normalize(std::cos(mid) * arc.a + std::sin(mid) * arc.b), sm)) break;
-        Piece left{0.0, p.arc, p.lo, mid, p.slo, sm};
-        Piece right{0.0, p.arc, mid, p.hi, sm, p.shi};
-        left.bound = lower_bound(left);
-        right.bound = lower_bound(right);
-        const double t2 = (1.0 - tol) * best.volume;
-        if (left.bound < t2) heap.push(left);
-        if (right.bound < t2) heap.push(right);
-      }
-      r.certified = proved && !exhausted && options.certify_tol > 0.0;
-      if (best.volume < best_before && options.refine && !exhausted)
-        refine(ev, m, best, work, options.max_work);
-    }
+    facet_pass(head, predicted);
+    edge_pairs();
+    if (options_.refine) refine(ev_, m_, best_, work_, options_.max_work + options_.max_work / 16);
+    if (options_.edge_arcs && !exhausted_) search_arcs();
   }
-  r.box = to_box<T>(best, ref);
-  r.volume = static_cast<T>(best.volume);
-  if (exhausted) r.status = Status::limit_exceeded;
+}
+
+}  // namespace
+
+template <Real T>
+MinBoxResult<T> min_box(std::span<const Vec3<T>> points, const MinBoxOptions& options) {
+  MinBoxResult<T> r;
+  const Hull3Result hull = convex_hull(points);
+  r.status = hull.status;
+  if (hull.status != Status::ok) return r;
+  // Hull vertices relative to the first one (keeps far-from-origin sets precise), scaled by a
+  // power of two when products of their coordinates (volumes, the calipers' areas over squared
+  // lengths) could leave the range (distance/detail/rescale.hpp); the box is scaled back
+  // exactly, so it scales exactly with the input.
+  const V3 ref = vec_cast<double>(points[hull.vertices[0]]);
+  Mesh m;
+  m.verts.resize(hull.vertices.size());
+  double largest = 0.0;
+  for (std::size_t i = 0; i < m.verts.size(); ++i) {
+    m.verts[i] = vec_cast<double>(points[hull.vertices[i]]) - ref;
+    largest = std::max(largest, max_abs(m.verts[i]));
+  }
+  const double scale =
+      detail::outside_product_range<double, 6>(largest) ? normalising_scale(largest) : 1.0;
+  if (scale != 1.0)
+    for (V3& v : m.verts) v = scale * v;
+
+  if (hull.dimension == 0) {
+    r.box.center = points[hull.vertices[0]];
+    for (int k = 0; k < 3; ++k) r.box.axis[k] = unit_vec<T, 3>(k);
+    r.box.extent = Vec3<T>{};
+    r.certified = true;
+    return r;
+  }
+  if (hull.dimension < 3) {
+    Evaluator ev(m);  // no facets: candidates project every vertex
+    Frame f;
+    if (hull.dimension == 1) {
+      const V3 d = scale * (vec_cast<double>(points[hull.polygon[1]]) -
+                            vec_cast<double>(points[hull.polygon[0]]));
+      ev.fit(complete_basis(d).axis.data(), f);
+    } else {
+      const V3 a = vec_cast<double>(points[hull.polygon[0]]),
+               b = vec_cast<double>(points[hull.polygon[1]]),
+               c = vec_cast<double>(points[hull.polygon[2]]);
+      // The flat direction is axis[2].
+      if (!ev.candidate(normalize(cross(scale * (b - a), scale * (c - a))), f)) {
+        r.status = Status::degenerate_input;
+        return r;
+      }
+    }
+    r.box = to_box<T>(f, ref, scale);
+    r.volume = T(0);
+    r.candidates = 1;
+    r.certified = true;  // a flat box is a minimum
+    return r;
+  }
+
+  build_mesh(hull, m);
+  build_cells(m);
+  build_vertex_graph(m);
+
+  BoxSearch search(m, options);
+  search.run();
+  r.candidates = search.candidates();
+  r.arcs = search.arcs();
+  r.certified = search.certified();
+  r.box = to_box<T>(search.best(), ref, scale);
+  r.volume = static_cast<T>(search.best().volume / scale / scale / scale);
+  if (search.exhausted()) r.status = Status::limit_exceeded;
   return r;
 }
 

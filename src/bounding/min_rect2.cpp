@@ -3,8 +3,10 @@
 
 #include <locus/bounding/detail/ball_predicates.hpp>
 #include <locus/bounding/min_rect2.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/hull/hull2.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -78,19 +80,28 @@ MinRectResult<T> min_rect(std::span<const Vec2<T>> points, RectCriterion criteri
     r.edge = {hull.indices[0], hull.indices[0]};
     return r;
   }
+  // The calipers' areas are products of four coordinates: they run on the hull scaled by a
+  // power of two f when those could leave the range (distance/detail/rescale.hpp), and the
+  // rectangle is scaled back by 1/f (exact), so it scales exactly with the input.
+  double m = 0.0;
+  for (std::size_t k = 0; k < hull.indices.size(); ++k) m = std::max(m, max_abs(p(k)));
+  const double f = detail::outside_product_range<double, 4>(m) ? normalising_scale(m) : 1.0;
   if (hull.dimension == 1) {
     const Vec2<double> a = p(0), b = p(1);
-    const Normalized<double, 2> d = normalize_with_length(b - a);
+    const Normalized<double, 2> d = normalize_with_length(f * (b - a));
     r.rectangle = {vec_cast<T>(0.5 * a + 0.5 * b),
                    {vec_cast<T>(d.dir), vec_cast<T>(perp(d.dir))},
-                   {static_cast<T>(0.5 * d.length), T(0)}};
-    r.perimeter = static_cast<T>(2.0 * d.length);
+                   {static_cast<T>(0.5 * d.length / f), T(0)}};
+    r.perimeter = static_cast<T>(2.0 * d.length / f);
     r.edge = {hull.indices[0], hull.indices[1]};
     return r;
   }
   std::vector<Vec2<double>> poly(hull.indices.size());
-  for (std::size_t k = 0; k < poly.size(); ++k) poly[k] = p(k);
-  const detail::PolygonRect best = detail::min_rect_of_convex_polygon(poly, criterion);
+  for (std::size_t k = 0; k < poly.size(); ++k) poly[k] = f * p(k);
+  detail::PolygonRect best = detail::min_rect_of_convex_polygon(poly, criterion);
+  best.center = best.center / f;
+  best.extent[0] /= f;
+  best.extent[1] /= f;
   r.rectangle = {vec_cast<T>(best.center),
                  {vec_cast<T>(best.axis0), vec_cast<T>(perp(best.axis0))},
                  {static_cast<T>(best.extent[0]), static_cast<T>(best.extent[1])}};

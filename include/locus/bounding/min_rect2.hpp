@@ -1,31 +1,24 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Minimum-area (or minimum-perimeter) enclosing rectangle of a 2D point set; CAPABILITIES row
-// cg.minbox (2D part); book section 13.10.1, figure 13.79 (a purported minimum rectangle with no
-// side on a polygon edge, which cannot be minimal).
+// cg.minbox (2D part); book section 13.10.1, figure 13.79 (a purported minimum rectangle with
+// no side on a polygon edge, which cannot be minimal).
 //
-// Algorithm: the exact convex hull (hull/hull2.hpp; extreme points only, counter-clockwise),
-// then rotating calipers (G. Toussaint, "Solving geometric problems with the rotating calipers",
-// 1983): the minimum-area rectangle has a side flush with a hull edge (H. Freeman and
-// R. Shapira, 1975; figure 13.79's argument), and so does a minimum-perimeter one. For each hull
-// edge u = p[i+1] - p[i] three calipers track the vertices of maximum and minimum projection on
-// u and of maximum height above the edge; each only moves forward, so all edges cost O(h)
-// after the O(n log n) (expected O(n)) hull.
-//
-// Exactness: the hull and every caliper step (the sign of (p[i+1] - p[i]) . (p[k+1] - p[k]) and
-// of the matching cross product, decided exactly: floating-point filter plus big-integer
-// fallback) are exact, so the extreme vertices found for each edge are exact. The areas are
-// computed in double from unnormalised edge vectors (area = (s_max - s_min) t_max / |u|^2) and
-// compared as rounded values: among edges whose areas agree to rounding either may win. The
-// rectangle's centre, axes and extents are rounded constructions (double, then T).
-//
-// Result: status, rectangle (axis[0] along the chosen hull edge, axis[1] = perp(axis[0]) pointing
-// into the hull, so the axes are right-handed), area (= 4 extent[0] extent[1] rounded),
-// perimeter, and edge: the input indices of the flush hull edge (equal for a point).
+// Algorithm: the exact convex hull (hull/hull2.hpp), then rotating calipers over its edges (a
+// minimal rectangle, by area or by perimeter, has a side flush with a hull edge); see
+// docs/notes/bounding.md.
+// Exactness: the hull and every caliper step are exact, so the extreme vertices found for each
+// edge are exact; the areas are computed in double and compared rounded (among edges whose
+// areas agree to rounding either may win). Centre, axes and extents are rounded constructions
+// (double, then T). Scale-covariant: input scaled by 2^k gives the rectangle scaled by 2^k
+// exactly (the calipers' products run on the hull scaled by a power of two when needed).
+// Result: status, rectangle (axis[0] along the chosen hull edge, axis[1] = perp(axis[0])
+// pointing into the hull: right-handed), area (= 4 extent[0] extent[1] rounded), perimeter,
+// edge: the input indices of the flush hull edge (equal for a point).
 // Degenerate input: all points equal -> ok, a zero rectangle at the point with the coordinate
 // axes; all points collinear -> ok, a rectangle of width 0 along the segment (area 0).
 // Empty input -> Status::empty_input; NaN/Inf -> Status::non_finite_input.
-// Cost: the hull plus O(h); O(n) scratch (the hull's).
+// Cost: the hull (O(n log n), expected O(n)) plus O(h); O(n) scratch.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>

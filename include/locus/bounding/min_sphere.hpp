@@ -4,26 +4,18 @@
 // ("Minimum-volume sphere", the 3D form of figure 13.80; figure 13.81 belongs to the same
 // section's growth argument).
 //
-// Algorithm: Welzl's move-to-front algorithm as in bounding/min_circle.hpp, with up to 4 nested
-// levels (recursion depth bounded by 4), expected O(n) tests over a seeded random permutation.
-//
-// Exactness (certified combinatorics): the sphere is defined by 1 to 4 support points on its
-// boundary; "is p strictly outside?" is decided exactly: 2 supports by the sign of
-// (p - a).(p - b); 3 supports by the sign of a degree-6 polynomial (the power of p with respect
-// to the smallest sphere through a, b, c, whose centre lies in their plane; floating-point
-// filter + exact big-integer fallback); 4 supports by exact insphere and orient3d. The support
-// set is therefore the exact smallest enclosing sphere of the given floating-point points. The
-// centre and radius are computed in double and rounded to T (radius = max over the supports of
-// the distance to the rounded centre); a point may be outside the reported sphere by a few ulps
-// of its scale.
-//
+// Algorithm: as bounding/min_circle.hpp (Welzl's move-to-front algorithm, core-set search
+// first), with up to 4 nested levels. Derivation: docs/notes/bounding.md.
+// Exactness: the sphere is defined by 1 to 4 support points on its boundary; "is p strictly
+// outside?" is decided exactly (2 supports: sign of (p - a).(p - b); 3: the power of p with
+// respect to the smallest sphere through them, bounding/detail/ball_predicates.hpp; 4: exact
+// insphere and orient3d), so the support set is the exact smallest enclosing sphere of the
+// given points. Centre and radius are constructions (double, rounded to T): a point may lie
+// outside the reported sphere by a few ulps of its scale. Scale-covariant: input scaled by 2^k
+// gives the sphere scaled by 2^k exactly, for every k that keeps the input finite and normal.
 // Result: status, sphere, support_count (1..4), support (input indices), tests.
 // Bad input: empty -> empty_input; NaN/Inf -> non_finite_input; more than 2^32 - 2 points ->
 // invalid_input; all points equal -> ok, radius 0; spent budget -> limit_exceeded.
-// Speed: as min_circle (core-set rounds seeded by the extreme points along 7 directions, then
-// the plain algorithm if they do not settle; shuffled contiguous copies), and a point deep
-// inside a well-conditioned rounded sphere (|p - c|^2 <= r^2 (1 - 2^-20), condition estimate
-// <= 2^20) skips the exact test.
 // Cost: expected O(n); up to 36 bytes of scratch per point (reused by MinSphere3).
 
 #include <locus/bounding/detail/min_ball_common.hpp>

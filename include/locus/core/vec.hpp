@@ -256,7 +256,9 @@ template <class T, int N>
   if (s > std::numeric_limits<T>::min() && s < std::numeric_limits<T>::max()) return std::sqrt(s);
   T m = max_abs(a);
   if (m == T(0) || !is_finite(m)) return s == s ? m : s;  // 0, inf, or NaN
-  return m * std::sqrt(sqr_length(a / m));
+  // By a power of two (exact): the length of 2^k a is exactly 2^k times that of a.
+  const T f = normalising_scale(m);
+  return std::sqrt(sqr_length(f * a)) / f;
 }
 
 /// A vector and its length, returned by normalize_with_length.
@@ -279,8 +281,7 @@ template <class T, int N>
   // Huge, tiny (subnormal), zero or non-finite: rescale by the largest component first.
   T len = length(a);
   if (!(len > T(0)) || !is_finite(len)) return {Vec<T, N>{}, T(0)};
-  T m = max_abs(a);
-  Vec<T, N> scaled = a / m;
+  const Vec<T, N> scaled = normalising_scale(max_abs(a)) * a;
   return {scaled / length(scaled), len};
 }
 

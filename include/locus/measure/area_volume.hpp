@@ -25,7 +25,9 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/distance/detail/rescale.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -58,17 +60,25 @@ template <class T>
 [[nodiscard]] inline Vec3<T> polygon_centroid(std::span<const Vec3<T>> p) noexcept {
   using C = compute_t<T>;
   if (p.empty()) return Vec3<T>{};
-  const Vec3<C> n = vec_cast<C>(polygon_vector_area(p));
   const Vec3<C> o = vec_cast<C>(p[0]);
+  // The weights w * (a + b) are products of five coordinates: they are formed on the vertices
+  // relative to o scaled by a power of two f when those could leave the range
+  // (distance/detail/rescale.hpp), and the centroid is scaled back exactly.
+  C m = C(0);
+  for (const Vec3<T>& q : p) m = std::max(m, max_abs(vec_cast<C>(q) - o));
+  const C f = detail::outside_product_range<C, 6>(m) ? normalising_scale(m) : C(1);
+  Vec3<C> n{};
+  for (std::size_t i = 1; i + 1 < p.size(); ++i)
+    n += cross(f * (vec_cast<C>(p[i]) - o), f * (vec_cast<C>(p[i + 1]) - o));
   C total = C(0);
   Vec3<C> acc{};
   for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-    const Vec3<C> a = vec_cast<C>(p[i]) - o, b = vec_cast<C>(p[i + 1]) - o;
+    const Vec3<C> a = f * (vec_cast<C>(p[i]) - o), b = f * (vec_cast<C>(p[i + 1]) - o);
     const C w = dot(cross(a, b), n);  // 2 |n| times the signed area of triangle (0, a, b)
     total += w;
     acc += w * (a + b);
   }
-  if (total != C(0) && is_finite(total)) return vec_cast<T>(o + acc / (C(3) * total));
+  if (total != C(0) && is_finite(total)) return vec_cast<T>(o + acc / (C(3) * total) / f);
   Vec3<C> mean{};
   for (const Vec3<T>& q : p) mean += vec_cast<C>(q);
   return vec_cast<T>(mean / static_cast<C>(p.size()));

@@ -38,6 +38,7 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/distance/detail/rescale.hpp>
 #include <locus/primitives/polygon.hpp>
 
 #include <algorithm>
@@ -52,27 +53,47 @@ namespace locus {
 
 /// Heron's area from the side lengths, in Kahan's stable form; NaN if they violate the
 /// triangle inequality (or are negative / NaN).
+namespace detail {
+/// The power of two by which lengths up to m are scaled before products of four of them are
+/// formed (1 when those stay in range; distance/detail/rescale.hpp): the formulas below run on
+/// the scaled lengths and scale their result back exactly, so they are scale-covariant.
 template <class T>
-[[nodiscard]] inline T triangle_area_from_sides(T a, T b, T c) noexcept {
-  // Sort a >= b >= c; then sqrt((a+(b+c)) (c-(a-b)) (c+(a-b)) (a+(b-c))) / 4 loses nothing.
+[[nodiscard]] inline T formula_scale(T m) noexcept {
+  return outside_product_range<T, 4>(m) ? normalising_scale(m) : T(1);
+}
+/// Heron's formula on sides sorted a >= b >= c (no scaling).
+template <class T>
+[[nodiscard]] inline T heron(T a, T b, T c) noexcept {
   if (a < b) std::swap(a, b);
   if (b < c) std::swap(b, c);
   if (a < b) std::swap(a, b);
+  // Sorted, sqrt((a+(b+c)) (c-(a-b)) (c+(a-b)) (a+(b-c))) / 4 loses nothing.
   const T f = (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c));
   if (!(f >= T(0)) || !(c >= T(0))) return std::numeric_limits<T>::quiet_NaN();
   return T(0.25) * std::sqrt(f);
+}
+}  // namespace detail
+
+template <class T>
+[[nodiscard]] inline T triangle_area_from_sides(T a, T b, T c) noexcept {
+  const T s = detail::formula_scale(std::max({std::abs(a), std::abs(b), std::abs(c)}));
+  return detail::heron(s * a, s * b, s * c) / s / s;
 }
 
 /// Inradius K / s from the side lengths.
 template <class T>
 [[nodiscard]] inline T triangle_inradius(T a, T b, T c) noexcept {
-  return triangle_area_from_sides(a, b, c) / (T(0.5) * (a + b + c));
+  const T s = detail::formula_scale(std::max({std::abs(a), std::abs(b), std::abs(c)}));
+  a *= s, b *= s, c *= s;
+  return detail::heron(a, b, c) / (T(0.5) * (a + b + c)) / s;
 }
 
 /// Circumradius a b c / (4 K) from the side lengths (inf for a degenerate triangle).
 template <class T>
 [[nodiscard]] inline T triangle_circumradius(T a, T b, T c) noexcept {
-  return a * b * c / (T(4) * triangle_area_from_sides(a, b, c));
+  const T s = detail::formula_scale(std::max({std::abs(a), std::abs(b), std::abs(c)}));
+  a *= s, b *= s, c *= s;
+  return a * b * c / (T(4) * detail::heron(a, b, c)) / s;
 }
 
 // ---- quadrilaterals ----------------------------------------------------------------------------
@@ -110,8 +131,12 @@ template <class T, int N>
 template <class T>
 [[nodiscard]] inline Vec2<T> quadrilateral_centroid(const Vec2<T>& p0, const Vec2<T>& p1,
                                                     const Vec2<T>& p2, const Vec2<T>& p3) noexcept {
-  const Vec2<T> v[4] = {p0, p1, p2, p3};
-  return polygon_centroid(std::span<const Vec2<T>>(v, 4));
+  // polygon_centroid forms products of three coordinates: on the vertices relative to p0,
+  // scaled by a power of two when those could leave the range.
+  const T s =
+      detail::formula_scale(std::max({max_abs(p1 - p0), max_abs(p2 - p0), max_abs(p3 - p0)}));
+  const Vec2<T> v[4] = {Vec2<T>{}, s * (p1 - p0), s * (p2 - p0), s * (p3 - p0)};
+  return p0 + polygon_centroid(std::span<const Vec2<T>>(v, 4)) / s;
 }
 
 /// Trapezoid with parallel sides a, b and height h: (a + b) h / 2.
@@ -136,12 +161,15 @@ template <class T>
 template <class T>
 [[nodiscard]] inline T quadrilateral_area_bretschneider(T a, T b, T c, T d, T alpha,
                                                         T gamma) noexcept {
+  // Products of four sides: on the sides scaled by a power of two q, scaled back by 1/q^2.
+  const T q = detail::formula_scale(std::max({std::abs(a), std::abs(b), std::abs(c), std::abs(d)}));
+  a *= q, b *= q, c *= q, d *= q;
   const T s = T(0.5) * (a + b + c + d);
   const T k = std::cos(T(0.5) * (alpha + gamma));
   const T f = (s - a) * (s - b) * (s - c) * (s - d) - a * b * c * d * k * k;
   if (!(f >= T(0)))
     return f > -eps_v<T> * s * s * s * s ? T(0) : std::numeric_limits<T>::quiet_NaN();
-  return std::sqrt(f);
+  return std::sqrt(f) / q / q;
 }
 
 // ---- regular polygons
@@ -265,7 +293,9 @@ template <class T>
 /// / 3.
 template <class T>
 [[nodiscard]] inline T pyramid_frustum_volume(T b1, T b2, T h) noexcept {
-  return h * (b1 + b2 + std::sqrt(b1 * b2)) / T(3);
+  // sqrt(B1) sqrt(B2), not sqrt(B1 B2): the product of two areas overflows long before the
+  // volume does.
+  return h * (b1 + b2 + std::sqrt(b1) * std::sqrt(b2)) / T(3);
 }
 
 // ---- Platonic solids
