@@ -5,9 +5,9 @@
 // locus::least_squares.
 #include "gallery.hpp"
 
-#include <locus/core/least_squares.hpp>
 #include <locus/core/linear_system.hpp>
 #include <locus/io/svg_primitives.hpp>
+#include <locus/numeric/least_squares.hpp>
 #include <locus/primitives/line.hpp>
 
 #include <cmath>

@@ -479,7 +479,7 @@ LOCUS_NOINLINE std::optional<Sign> insphere_stages_bc(const Vec3<double>& a, con
   const Exp<1152> B =
       (lift3_times(de, abc) - lift3_times(ce, abd)) + (lift3_times(be, acd) - lift3_times(ae, bcd));
   if (exact_differences) return -sign(B);
-  const double permanent = insphere_terms(a, b, c, d, e).permanent;
+  const double permanent = insphere_permanent(insphere_terms(a, b, c, d, e));
   if (const Sign s = decide(estimate(B), insphere_bound_b * permanent); s != Sign::zero) return -s;
   // Stage C. The paper gives no stage C for insphere that we reuse; this one follows its idea
   // with a running error bound. With exact differences P = u + t (u rounded, |t| <= eps |u|),

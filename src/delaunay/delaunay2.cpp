@@ -10,6 +10,8 @@
 
 #include <locus/delaunay/delaunay2.hpp>
 
+#include <locus/core/detail/spatial_sort.hpp>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -43,213 +45,11 @@ template <class T>
   return to_int(lexicographic_compare(a, p)) * to_int(lexicographic_compare(p, b)) > 0;
 }
 
-// One level of the Hilbert curve: the frame of each sub-square is the parent's composed with
-// "flip both axes if rx" and "swap", and flips commute with the swap, so the accumulated frame
-// is two bits (flip, swap). Returns the quadrant's 2-bit position and updates the frame.
-constexpr std::uint32_t hilbert_level(std::uint32_t xbit, std::uint32_t ybit, std::uint32_t& flip,
-                                      std::uint32_t& swap) noexcept {
-  std::uint32_t rx = xbit ^ flip;
-  std::uint32_t ry = ybit ^ flip;
-  const std::uint32_t t = (rx ^ ry) & swap;
-  rx ^= t;
-  ry ^= t;
-  const std::uint32_t turn = ry ^ 1u;
-  flip ^= rx & turn;
-  swap ^= turn;
-  return (3u * rx) ^ ry;
-}
-
-// Two levels at a time: entry [frame << 4 | x2 << 2 | y2] holds the 4 digit bits and the new
-// frame (bits 4-5), frame = flip << 1 | swap.
-constexpr std::array<std::uint8_t, 64> hilbert_table2 = [] {
-  std::array<std::uint8_t, 64> table{};
-  for (std::uint32_t k = 0; k < 64; ++k) {
-    std::uint32_t flip = (k >> 5) & 1u, swap = (k >> 4) & 1u;
-    const std::uint32_t x2 = (k >> 2) & 3u, y2 = k & 3u;
-    std::uint32_t d = hilbert_level(x2 >> 1, y2 >> 1, flip, swap);
-    d = (d << 2) | hilbert_level(x2 & 1u, y2 & 1u, flip, swap);
-    table[k] = static_cast<std::uint8_t>(d | (flip << 5) | (swap << 4));
-  }
-  return table;
-}();
-
-// Position along the Hilbert curve of the given order of the cell (x, y), 0 <= x, y < 2^levels.
-[[nodiscard]] std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int levels) noexcept {
-  std::uint32_t d = 0, flip = 0, swap = 0;
-  int l = levels;
-  if (l % 2 != 0) {
-    --l;
-    d = hilbert_level((x >> l) & 1u, (y >> l) & 1u, flip, swap);
-  }
-  std::uint32_t frame = flip << 1 | swap;
-  while (l > 0) {
-    l -= 2;
-    const std::uint32_t e =
-        hilbert_table2[frame << 4 | ((x >> l) & 3u) << 2 | ((y >> l) & 3u)];
-    d = (d << 4) | (e & 15u);
-    frame = e >> 4;
-  }
-  return d;
-}
-
-// Maps v in [lo, hi] to 0 .. 65535 without overflow for any finite lo <= v <= hi.
-template <class T>
-[[nodiscard]] std::uint32_t quantize(T v, T lo, T hi) noexcept {
-  const double half_span = 0.5 * double(hi) - 0.5 * double(lo);
-  if (!(half_span > 0.0)) return 0;
-  const double u = (0.5 * double(v) - 0.5 * double(lo)) / half_span;  // in [0, 1]
-  const double q = u * 65535.0;
-  if (!(q > 0.0)) return 0;
-  if (q >= 65535.0) return 65535;
-  return static_cast<std::uint32_t>(q);
-}
-
-// Sorts keys[0, n) ((key << 32 | index) values, key < 2^bits) ascending: LSD radix passes of at
-// most 12 bits on the key (stable, so ties stay in index order; 4096 buckets keep every
-// pass's write streams in cache), or std::sort for short ranges.
-void radix_sort_keys(std::uint64_t* keys, std::size_t n, unsigned bits,
-                     std::vector<std::uint64_t>& tmp_buf, std::vector<std::uint32_t>& count) {
-  if (n < (1u << 14)) {
-    std::sort(keys, keys + n);
-    return;
-  }
-  const unsigned passes = std::max(1u, (bits + 11) / 12);
-  const unsigned digit = (bits + passes - 1) / passes;
-  const std::uint64_t mask = (std::uint64_t{1} << digit) - 1;
-  tmp_buf.resize(n);
-  count.resize(std::size_t{1} << digit);
-  std::uint64_t* src = keys;
-  std::uint64_t* dst = tmp_buf.data();
-  for (unsigned pass = 0; pass < passes; ++pass) {
-    const unsigned shift = 32 + digit * pass;
-    std::fill(count.begin(), count.end(), 0u);
-    for (std::size_t i = 0; i < n; ++i) ++count[(src[i] >> shift) & mask];
-    std::uint32_t sum = 0;
-    for (auto& c : count) {
-      const std::uint32_t c0 = c;
-      c = sum;
-      sum += c0;
-    }
-    for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & mask]++] = src[i];
-    std::swap(src, dst);
-  }
-  if (src != keys) std::copy(src, src + n, keys);
-}
-
-// A fixed pseudo-random 64-bit value per index (splitmix64's output function).
-[[nodiscard]] inline std::uint64_t index_hash(std::uint64_t i) noexcept {
-  std::uint64_t z = (i + 1) * 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-// Biased randomized insertion order (Amenta, Choi, Rote 2003) with Hilbert-sorted rounds. Point
-// i joins round j (j = 0 is inserted last) with probability 7/8 * 8^-j, decided by a fixed hash
-// of i (at least 3j leading zero bits); the rounds stop where about 256 points remain, which
-// form the first round. So the last round holds about 7/8 of the points, the one before 7/64,
-// and so on. Each round is sorted along the Hilbert curve (ties in index order). Early rounds
-// spread over the whole domain, so later points mostly fall inside the current hull (few flips,
-// no long hull fans) and each round is walked in curve order (short walks). Deterministic, and
-// unlike a shuffle of the whole array, it touches memory in order. On entry keys[i] = (Hilbert
-// key << 32 | i); on exit keys is the insertion order.
-void brio_order(std::vector<std::uint64_t>& keys, unsigned key_bits,
-                std::vector<std::uint64_t>& tmp, std::vector<std::uint32_t>& count) {
-  const std::size_t n = keys.size();
-  unsigned rounds = 1;
-  while (rounds < 21 && (n >> (3 * rounds)) > 256) ++rounds;
-  const auto rank = [&](std::size_t i) {  // 0 for the first round inserted
-    const unsigned j = static_cast<unsigned>(std::countl_zero(index_hash(i))) / 3;
-    return rounds - 1 - std::min(j, rounds - 1);
-  };
-  std::size_t start[22] = {};
-  for (std::size_t i = 0; i < n; ++i) ++start[rank(i) + 1];
-  for (unsigned r = 0; r < rounds; ++r) start[r + 1] += start[r];
-  std::size_t cursor[22];
-  std::copy(start, start + rounds, cursor);
-  tmp.resize(n);
-  for (std::size_t i = 0; i < n; ++i) tmp[cursor[rank(i)]++] = keys[i];
-  keys.swap(tmp);
-  for (unsigned r = 0; r < rounds; ++r)
-    radix_sort_keys(keys.data() + start[r], start[r + 1] - start[r], key_bits, tmp, count);
-}
-
 #if defined(__GNUC__) || defined(__clang__)
 #define LOCUS_D2_INLINE [[gnu::always_inline]] inline
 #else
 #define LOCUS_D2_INLINE inline
 #endif
-
-// True when x - y is computed exactly (Knuth's two-difference has a zero tail).
-[[nodiscard]] inline bool exact_difference(double x, double y, double diff) noexcept {
-  const double bvirt = x - diff;
-  const double avirt = diff + bvirt;
-  return (x - avirt) + (bvirt - y) == 0.0;
-}
-
-// The incircle filter fails on every exactly cocircular quadruple (grids!), and the adaptive
-// fallback costs ~0.5 us. When the six differences are exact and are all integer multiples of a
-// power of two q with |difference| < 2^12 q, every product and sum of the double evaluation is
-// an integer multiple of q^4 below 2^53 q^4, so the double determinant is exact and so is its
-// sign. Otherwise defer to the exact predicate.
-[[gnu::noinline]] Sign incircle_slow(const Vec2<double>& a, const Vec2<double>& b,
-                                     const Vec2<double>& c, const Vec2<double>& d) noexcept {
-  const double dx[3] = {a.x - d.x, b.x - d.x, c.x - d.x};
-  const double dy[3] = {a.y - d.y, b.y - d.y, c.y - d.y};
-  const double xs[3] = {a.x, b.x, c.x};
-  const double ys[3] = {a.y, b.y, c.y};
-  double m = 0.0;
-  bool exact = true;
-  for (int i = 0; i < 3; ++i) {
-    exact = exact && exact_difference(xs[i], d.x, dx[i]) && exact_difference(ys[i], d.y, dy[i]);
-    m = std::max(m, std::max(std::abs(dx[i]), std::abs(dy[i])));
-  }
-  if (exact && m > 0.0 && std::isfinite(m)) {
-    int e = 0;
-    std::frexp(m, &e);                             // m < 2^e
-    const double inv_q = std::ldexp(1.0, 12 - e);  // 1 / q with q = 2^(e - 12)
-    // q^4 must not underflow (4 (e - 12) >= -1074) nor 2^52 q^4 overflow.
-    bool on_lattice = e > -250 && e < 250;
-    for (int i = 0; i < 3 && on_lattice; ++i) {
-      const double u = dx[i] * inv_q, w = dy[i] * inv_q;
-      on_lattice = u == std::nearbyint(u) && w == std::nearbyint(w);
-    }
-    if (on_lattice) {
-      const double alift = dx[0] * dx[0] + dy[0] * dy[0];
-      const double blift = dx[1] * dx[1] + dy[1] * dy[1];
-      const double clift = dx[2] * dx[2] + dy[2] * dy[2];
-      const double det = alift * (dx[1] * dy[2] - dx[2] * dy[1]) +
-                         blift * (dx[2] * dy[0] - dx[0] * dy[2]) +
-                         clift * (dx[0] * dy[1] - dx[1] * dy[0]);
-      return sign_of(det);
-    }
-  }
-  return incircle(a, b, c, d);
-}
-
-template <class T>
-LOCUS_D2_INLINE Sign incircle_fast(const Vec2<T>& pa, const Vec2<T>& pb, const Vec2<T>& pc,
-                                   const Vec2<T>& pd) noexcept {
-  const Vec2<double> a = detail::to_double(pa), b = detail::to_double(pb),
-                     c = detail::to_double(pc), d = detail::to_double(pd);
-  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double alift = adx * adx + ady * ady;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double clift = cdx * cdx + cdy * cdy;
-  const double det =
-      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
-                           (std::abs(cdxady) + std::abs(adxcdy)) * blift +
-                           (std::abs(adxbdy) + std::abs(bdxady)) * clift;
-  // The same stage-A bound as core/predicates.hpp.
-  if (std::abs(det) > detail::incircle_bound_a * permanent) [[likely]]
-    return detail::nonzero_sign(det);
-  return incircle_slow(a, b, c, d);
-}
 
 // The general case of Delaunay2::set_triangle: a ghost vertex at corner 0 or 1 is rotated to
 // corner 2.
@@ -408,7 +208,7 @@ bool Delaunay2<T>::in_conflict(std::uint32_t v, std::uint32_t e) const noexcept 
     const Sign s = orient2d(u, w, p);
     return s == Sign::positive || (s == Sign::zero && strictly_between(u, w, p));
   }
-  return incircle_fast(pts[tri_[o]], pts[tri_[nxt(o)]], pts[tri_[prv(o)]], p) == Sign::positive;
+  return incircle(pts[tri_[o]], pts[tri_[nxt(o)]], pts[tri_[prv(o)]], p) == Sign::positive;
 }
 
 template <Real T>
@@ -537,7 +337,7 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
     // The opposite triangle is (y, x, z); a ghost one (z or x or y at infinity) is rare.
     if (tri_[ob + 2] == kGhost) [[unlikely]] {
       if (!in_conflict(v, e)) continue;
-    } else if (incircle_fast(pts[y], pts[x], pts[z], pv) != Sign::positive) {
+    } else if (incircle(pts[y], pts[x], pts[z], pv) != Sign::positive) {
       continue;
     }
     const std::uint32_t a1 = adj()[nxt(e)], a2 = adj()[prv(e)];
@@ -596,44 +396,24 @@ void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
     status_ = Status::invalid_input;
     return;
   }
-  T lo_x = in[0].x, hi_x = lo_x, lo_y = in[0].y, hi_y = lo_y;
   bool finite = true;
-  for (const auto& q : in) {
-    finite = finite && is_finite(q.x) && is_finite(q.y);
-    lo_x = std::min(lo_x, q.x);
-    hi_x = std::max(hi_x, q.x);
-    lo_y = std::min(lo_y, q.y);
-    hi_y = std::max(hi_y, q.y);
-  }
+  for (const auto& q : in) finite = finite && is_finite(q.x) && is_finite(q.y);
   if (!finite) {
     status_ = Status::non_finite_input;
     return;
   }
 
-  // Hilbert order (ties in input order), on a grid of about 16 cells per point: finer levels
-  // cost time without improving locality.
-  int levels = 4;
-  while (levels < 16 && (std::size_t(1) << (2 * levels)) < 16 * n) ++levels;
-  const auto key_bits = static_cast<unsigned>(2 * levels);
-  keys_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t h =
-        hilbert_index(quantize(in[i].x, lo_x, hi_x) >> (16 - levels),
-                      quantize(in[i].y, lo_y, hi_y) >> (16 - levels), levels);
-    keys_[i] = (std::uint64_t(h) << 32) | std::uint64_t(i);
-  }
-  brio_order(keys_, key_bits, keys_tmp_, counts_);
+  // BRIO rounds in Hilbert order (core/detail/spatial_sort.hpp).
+  detail::brio_order(in, orig_, keys_, keys_tmp_);
   // The triangulation works on a copy of the points in Hilbert order (vertex k is input point
   // orig_[k]), so the coordinates a walk or an incircle test reads are close in memory.
-  orig_.resize(n);
   sorted_.resize(n);
   // The reads of `in` are in random order: prefetching a few iterations ahead overlaps them.
   constexpr std::size_t ahead = 16;
   for (std::size_t k = 0; k < n; ++k) {
 #if defined(__GNUC__) || defined(__clang__)
-    if (k + ahead < n) __builtin_prefetch(&in[static_cast<std::uint32_t>(keys_[k + ahead])]);
+    if (k + ahead < n) __builtin_prefetch(&in[orig_[k + ahead]]);
 #endif
-    orig_[k] = static_cast<std::uint32_t>(keys_[k]);
     sorted_[k] = in[orig_[k]];
   }
 

@@ -9,12 +9,15 @@
 
 #include <locus/delaunay/delaunay3.hpp>
 
+#include <locus/core/detail/spatial_sort.hpp>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 namespace locus {
@@ -73,183 +76,6 @@ template <class T>
   return r;
 }
 
-// Position along the 3D Hilbert curve of the cell x[0..2] < 2^bits (Skilling, "Programming the
-// Hilbert curve", 2004: the coordinates are transformed in place into the "transposed" index,
-// whose bits interleaved most significant first are the curve position).
-[[nodiscard]] std::uint32_t hilbert_index3(std::uint32_t x0, std::uint32_t x1, std::uint32_t x2,
-                                           int bits) noexcept {
-  std::uint32_t x[3] = {x0, x1, x2};
-  const std::uint32_t top = 1u << (bits - 1);
-  for (std::uint32_t q = top; q > 1; q >>= 1) {
-    const std::uint32_t p = q - 1;
-    for (int i = 0; i < 3; ++i) {
-      if (x[i] & q) {
-        x[0] ^= p;
-      } else {
-        const std::uint32_t t = (x[0] ^ x[i]) & p;
-        x[0] ^= t;
-        x[i] ^= t;
-      }
-    }
-  }
-  x[1] ^= x[0];
-  x[2] ^= x[1];
-  std::uint32_t t = 0;
-  for (std::uint32_t q = top; q > 1; q >>= 1)
-    if (x[2] & q) t ^= q - 1;
-  for (auto& xi : x) xi ^= t;
-  std::uint32_t d = 0;
-  for (int b = bits - 1; b >= 0; --b)
-    for (int i = 0; i < 3; ++i) d = (d << 1) | ((x[i] >> b) & 1u);
-  return d;
-}
-
-// Maps v in [lo, hi] to 0 .. 1023 without overflow for any finite lo <= v <= hi.
-template <class T>
-[[nodiscard]] std::uint32_t quantize10(T v, T lo, T hi) noexcept {
-  const double half_span = 0.5 * double(hi) - 0.5 * double(lo);
-  if (!(half_span > 0.0)) return 0;
-  const double q = (0.5 * double(v) - 0.5 * double(lo)) / half_span * 1023.0;
-  if (!(q > 0.0)) return 0;
-  if (q >= 1023.0) return 1023;
-  return static_cast<std::uint32_t>(q);
-}
-
-// Sorts (key << 32 | index) values ascending: two 16-bit LSD radix passes on the key (stable),
-// or std::sort for short ranges.
-void radix_sort_keys(std::uint64_t* keys, std::size_t n, std::vector<std::uint64_t>& tmp_buf) {
-  if (n < (1u << 14)) {
-    std::sort(keys, keys + n);
-    return;
-  }
-  tmp_buf.resize(n);
-  std::uint64_t* src = keys;
-  std::uint64_t* dst = tmp_buf.data();
-  std::vector<std::uint32_t> count(1u << 16);
-  for (int pass = 0; pass < 2; ++pass) {
-    const int shift = 32 + 16 * pass;
-    std::fill(count.begin(), count.end(), 0u);
-    for (std::size_t i = 0; i < n; ++i) ++count[(src[i] >> shift) & 0xFFFFu];
-    std::uint32_t sum = 0;
-    for (auto& c : count) {
-      const std::uint32_t c0 = c;
-      c = sum;
-      sum += c0;
-    }
-    for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & 0xFFFFu]++] = src[i];
-    std::swap(src, dst);
-  }
-}
-
-// Keys (Hilbert position << 32 | base + i) of points[i] on a grid over their bounding box with
-// about 8 cells per point.
-template <class T>
-void hilbert_keys(std::span<const Vec3<T>> points, std::uint32_t base,
-                  std::vector<std::uint64_t>& keys) {
-  const std::size_t n = points.size();
-  keys.resize(n);
-  if (n == 0) return;
-  Vec3<T> lo = points[0], hi = lo;
-  for (const auto& q : points)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], q[i]);
-      hi[i] = std::max(hi[i], q[i]);
-    }
-  int bits = 2;
-  while (bits < 10 && (std::size_t(1) << (3 * bits)) < 8 * n) ++bits;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3<T>& q = points[i];
-    const std::uint32_t h = hilbert_index3(quantize10(q.x, lo.x, hi.x) >> (10 - bits),
-                                           quantize10(q.y, lo.y, hi.y) >> (10 - bits),
-                                           quantize10(q.z, lo.z, hi.z) >> (10 - bits), bits);
-    keys[i] = (std::uint64_t(h) << 32) | std::uint64_t(base + i);
-  }
-}
-
-// Biased randomized insertion order (Amenta, Choi, Rote 2003): a fixed-seed shuffle, then the
-// last 7/8 of every prefix sorted along the curve and the first 1/8 recursively.
-void brio_order(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& tmp) {
-  const std::size_t n = keys.size();
-  std::uint64_t state = 0x9E3779B97F4A7C15ull;
-  for (std::size_t i = n; i > 1; --i) {
-    state += 0x9E3779B97F4A7C15ull;  // splitmix64
-    std::uint64_t z = state;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    std::swap(keys[i - 1], keys[static_cast<std::size_t>(z % i)]);
-  }
-  std::size_t end = n;
-  while (end > 256) {
-    const std::size_t mid = end / 8;
-    radix_sort_keys(keys.data() + mid, end - mid, tmp);
-    end = mid;
-  }
-  radix_sort_keys(keys.data(), end, tmp);
-}
-
-// True when x - y is computed exactly (Knuth's two-difference has a zero tail).
-[[nodiscard]] inline bool exact_difference(double x, double y, double diff) noexcept {
-  const double bvirt = x - diff;
-  const double avirt = diff + bvirt;
-  return (x - avirt) + (bvirt - y) == 0.0;
-}
-
-// u is an integer, for |u| < 2^52 (adding 2^52 rounds to an integer; no libm call).
-[[nodiscard]] inline bool is_small_integer(double u) noexcept {
-  const double a = std::abs(u);
-  return (a + 0x1p52) - 0x1p52 == a;
-}
-
-// The exponent ex with 2^(ex-1) <= m < 2^ex (frexp's) for a normal m > 0, without a libm call;
-// 0 for subnormal m, which the callers' range checks reject.
-[[nodiscard]] inline int binary_exponent(double m) noexcept {
-  const int biased = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7FFu);
-  return biased == 0 ? 0 : biased - 1022;
-}
-
-// 2^k for -1022 <= k <= 1023.
-[[nodiscard]] inline double power_of_two(int k) noexcept {
-  return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
-}
-
-// orient3d for the zero-heavy perturbation: when the nine differences to d are exact integer
-// multiples of a power of two q with |difference| < 2^16 q, the double determinant (products
-// below 2^32 q^2, the sum below 2^51 q^3) is exact; otherwise the exact predicate decides.
-template <class T>
-[[nodiscard]] Sign orient3d_lattice(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
-                                    const Vec3<T>& pd) noexcept {
-  const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
-                     c = detail::to_double(pc), d = detail::to_double(pd);
-  const Vec3<double>* p[3] = {&a, &b, &c};
-  double dv[3][3];
-  double m = 0.0;
-  bool exact = true;
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) {
-      dv[i][k] = (*p[i])[k] - d[k];
-      exact = exact && exact_difference((*p[i])[k], d[k], dv[i][k]);
-      m = std::max(m, std::abs(dv[i][k]));
-    }
-  if (exact && m > 0.0 && std::isfinite(m)) {
-    const int ex = binary_exponent(m);
-    bool on_lattice = ex > -300 && ex < 300;
-    const double inv_q = on_lattice ? power_of_two(16 - ex) : 0.0;
-    for (int i = 0; i < 3 && on_lattice; ++i)
-      for (int k = 0; k < 3 && on_lattice; ++k) on_lattice = is_small_integer(dv[i][k] * inv_q);
-    if (on_lattice) {
-      const double* u = dv[0];
-      const double* v = dv[1];
-      const double* w = dv[2];
-      // det[a - d; b - d; c - d] is Shewchuk's orient3d, the negation of ours.
-      const double det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                         u[2] * (v[0] * w[1] - v[1] * w[0]);
-      return -sign_of(det);
-    }
-  }
-  return orient3d(pa, pb, pc, pd);
-}
-
 // The zero case of insphere_perturbed: point q's lift |q|^2 is raised by eps_q, larger for
 // lexicographically larger q. The perturbed determinant is insphere + sum eps_q * C_q with
 // C_e = -orient3d(a, b, c, d) (raising e moves it outside) and, by antisymmetry, C_q for a
@@ -280,11 +106,11 @@ LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, c
   for (const int k : order) {
     Sign s;
     if (k == 4) {
-      s = -orient3d_lattice(a, b, c, d);
+      s = -orient3d(a, b, c, d);
     } else {
       const Vec3<T>* q[4] = {&a, &b, &c, &d};
       q[k] = &e;
-      s = orient3d_lattice(*q[0], *q[1], *q[2], *q[3]);
+      s = orient3d(*q[0], *q[1], *q[2], *q[3]);
     }
     if (s != Sign::zero) return s;
   }
@@ -299,9 +125,13 @@ LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, c
   return p.z > q.z;
 }
 
-// The perturbed sign of an exactly cospherical a, b, c, d, e from the exact minors of the
-// differences p - e (see insphere_perturbed_slow): the lexicographically largest point with a
-// nonzero cofactor decides.
+// The perturbed sign of an exactly cospherical a, b, c, d, e from the exact minors
+// {bcd, cda, dab, abc} of the differences p - e (detail::InsphereTerms): with e at the origin,
+// the cofactors of perturbed_zero_case are orient3d(e, b, c, d) = minor[0], orient3d(a, e, c, d)
+// = -minor[1], orient3d(a, b, e, d) = minor[2], orient3d(a, b, c, e) = -minor[3] and
+// orient3d(a, b, c, d) = minor[0] - minor[1] + minor[2] - minor[3] (row operations), all exact
+// in double on the insphere lattice (below 4 * 6 * 2^27 q^3). The lexicographically largest
+// point with a nonzero cofactor decides.
 LOCUS_D3_NOINLINE Sign perturbed_from_minors(const Vec3<double>& a, const Vec3<double>& b,
                                              const Vec3<double>& c, const Vec3<double>& d,
                                              const Vec3<double>& e,
@@ -316,137 +146,43 @@ LOCUS_D3_NOINLINE Sign perturbed_from_minors(const Vec3<double>& a, const Vec3<d
                  : detail::nonzero_sign(cofactor[top]);
 }
 
-// The insphere filter fails on every exactly cospherical quintuple (grids!) and the adaptive
-// predicate costs 1.5-3 us there. When the twelve differences p - e are exact and are integer
-// multiples of a power of two q with |difference| < 2^9 q, every product and sum of the double
-// evaluation below is an integer multiple of q^k (k its degree) below 2^53 q^k (the largest,
-// the final sum, is below 4 * 3 * 2^18 * 3 * 2^28 < 2^52), so the double determinant is exact
-// and so is its sign. An exact zero is then perturbed with the same minors: with e at the
-// origin, the cofactors of perturbed_zero_case are orient3d(e, b, c, d) = minor[0],
-// orient3d(a, e, c, d) = -minor[1], orient3d(a, b, e, d) = minor[2], orient3d(a, b, c, e) =
-// -minor[3] and orient3d(a, b, c, d) = minor[0] - minor[1] + minor[2] - minor[3] (row
-// operations), all exact in double (below 4 * 6 * 2^27 q^3). Off the lattice: the exact
-// predicate, then perturbed_zero_case.
+// After the semi-static filter failed: the insphere lattice shortcut of core (exact terms, and
+// an exact zero perturbed from their minors), else core's full stage A and adaptive stages, and
+// perturbed_zero_case for an exact zero.
 LOCUS_D3_NOINLINE Sign insphere_perturbed_slow(const Vec3<double>& a, const Vec3<double>& b,
                                                const Vec3<double>& c, const Vec3<double>& d,
                                                const Vec3<double>& e) noexcept {
-  const Vec3<double>* p[4] = {&a, &b, &c, &d};
-  double dv[4][3];
-  double m = 0.0;
-  bool exact = true;
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 3; ++k) {
-      dv[i][k] = (*p[i])[k] - e[k];
-      exact = exact && exact_difference((*p[i])[k], e[k], dv[i][k]);
-      m = std::max(m, std::abs(dv[i][k]));
-    }
-  if (exact && m > 0.0 && std::isfinite(m)) {
-    const int ex = binary_exponent(m);  // m < 2^ex
-    // q^5 must not underflow (5 (ex - 9) >= -1074) nor 2^53 q^5 overflow.
-    bool on_lattice = ex > -200 && ex < 190;
-    const double inv_q = on_lattice ? power_of_two(9 - ex) : 0.0;  // 1 / q, q = 2^(ex - 9)
-    for (int i = 0; i < 4 && on_lattice; ++i)
-      for (int k = 0; k < 3 && on_lattice; ++k) on_lattice = is_small_integer(dv[i][k] * inv_q);
-    if (on_lattice) {
-      double lift[4], minor[4];
-      for (int i = 0; i < 4; ++i)
-        lift[i] = dv[i][0] * dv[i][0] + dv[i][1] * dv[i][1] + dv[i][2] * dv[i][2];
-      // minor[i] = det of the 3x3 (x, y, z) rows other than i, in increasing row order.
-      for (int i = 0; i < 4; ++i) {
-        int r[3], k = 0;
-        for (int j = 0; j < 4; ++j)
-          if (j != i) r[k++] = j;
-        const double* u = dv[r[0]];
-        const double* v = dv[r[1]];
-        const double* w = dv[r[2]];
-        minor[i] = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                   u[2] * (v[0] * w[1] - v[1] * w[0]);
-      }
-      // det[p - e, lift] expanded along the lift column: sum (-1)^(i+3) lift_i minor_i; our
-      // insphere is its negation.
-      const double det =
-          (lift[1] * minor[1] + lift[3] * minor[3]) - (lift[0] * minor[0] + lift[2] * minor[2]);
-      if (det != 0.0) return -detail::nonzero_sign(det);
-      return perturbed_from_minors(a, b, c, d, e, minor);
-    }
+  if (const std::optional<detail::InsphereTerms> t = detail::insphere_lattice(a, b, c, d, e)) {
+    if (t->det != 0.0) return -detail::nonzero_sign(t->det);
+    return perturbed_from_minors(a, b, c, d, e, t->minor);
   }
-  const Sign s = insphere(a, b, c, d, e);
+  const detail::StageA<double> f = detail::insphere_stage_a(a, b, c, d, e);
+  const Sign s =
+      detail::certain(f) ? detail::nonzero_sign(f.det) : detail::insphere_adaptive(a, b, c, d, e);
   if (s != Sign::zero) return s;
   return perturbed_zero_case(a, b, c, d, e);
 }
 
-// The insphere determinant of core/predicates.hpp (Shewchuk's sign), evaluated in the same order
-// (so the same bits), with the pieces the callers below reuse: the differences to e per axis, the
-// 3x3 minors {bcd, cda, dab, abc} and the lifts |x - e|^2.
-struct InsphereDet {
-  double x[4], y[4], z[4];  // a - e, b - e, c - e, d - e per axis
-  double minor[4];          // bcd, cda, dab, abc
-  double lift[4];           // alift, blift, clift, dlift
-  double det;
-};
-LOCUS_D3_INLINE InsphereDet insphere_det(const Vec3<double>& a, const Vec3<double>& b,
-                                         const Vec3<double>& c, const Vec3<double>& d,
-                                         const Vec3<double>& e) noexcept {
-  const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
-  const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;
-  const double aez = a.z - e.z, bez = b.z - e.z, cez = c.z - e.z, dez = d.z - e.z;
-  const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
-  const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
-  const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-  const double abc = aez * bc - bez * ac + cez * ab;
-  const double bcd = bez * cd - cez * bd + dez * bc;
-  const double cda = cez * da + dez * ac + aez * cd;
-  const double dab = dez * ab + aez * bd + bez * da;
-  const double alift = aex * aex + aey * aey + aez * aez;
-  const double blift = bex * bex + bey * bey + bez * bez;
-  const double clift = cex * cex + cey * cey + cez * cez;
-  const double dlift = dex * dex + dey * dey + dez * dez;
-  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-  return {{aex, bex, cex, dex}, {aey, bey, cey, dey},         {aez, bez, cez, dez},
-          {bcd, cda, dab, abc}, {alift, blift, clift, dlift}, det};
-}
-
-// Stage-A bound of core/predicates.hpp with a cheaper permanent. That bound is
-// insphere_bound_a * P, P the permanent evaluated in floating point. With mx, my, mz the
-// largest |differences| per axis, every 2x2 permanent term is at most 2 mx my, every 3x3 one at
-// most 6 mx my mz, so P <= 6 mx my mz (alift + blift + clift + dlift) up to the few roundings
-// of the two evaluation orders (under 16 units of 2^-53 relative), which the factor
-// 1 + 2^-40 covers. The determinant is evaluated exactly as in core/predicates.hpp.
-constexpr double kInsphereSemiStatic = detail::insphere_bound_a * (1.0 + 0x1p-40);
-
+// The perturbed insphere (float input is promoted exactly; the perturbation only compares and
+// takes orientations, so deciding it on the doubles is the same): core's semi-static filter
+// (the cavity's cells have similar spreads in BRIO order), then the slow path.
 template <class T>
-LOCUS_D3_INLINE Sign insphere_fast(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
-                                   const Vec3<T>& pd, const Vec3<T>& pe) noexcept {
+LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& pa, const Vec3<T>& pb,
+                                               const Vec3<T>& pc, const Vec3<T>& pd,
+                                               const Vec3<T>& pe) noexcept {
   const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
                      c = detail::to_double(pc), d = detail::to_double(pd),
                      e = detail::to_double(pe);
-  const InsphereDet q = insphere_det(a, b, c, d, e);
-  const auto max4 = [](const double* v) {
-    return std::max(std::max(std::abs(v[0]), std::abs(v[1])),
-                    std::max(std::abs(v[2]), std::abs(v[3])));
-  };
-  const double k = 6.0 * ((max4(q.x) * max4(q.y)) * max4(q.z));
-  const double bound =
-      kInsphereSemiStatic * (k * ((q.lift[0] + q.lift[1]) + (q.lift[2] + q.lift[3])));
-  // Shewchuk's sign convention: ours is the negation.
-  if (std::abs(q.det) > bound) [[likely]]
-    return -detail::nonzero_sign(q.det);
+  const detail::StageA<double> f =
+      detail::insphere_stage_a_semi_static(detail::insphere_terms(a, b, c, d, e));
+  if (detail::certain(f)) [[likely]]
+    return detail::nonzero_sign(f.det);
   return insphere_perturbed_slow(a, b, c, d, e);
 }
 
-// The perturbed insphere (float input is promoted exactly; the perturbation only compares and
-// takes orientations, so deciding it on the doubles is the same).
-template <class T>
-LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
-                                               const Vec3<T>& d, const Vec3<T>& e) noexcept {
-  return insphere_fast(a, b, c, d, e);
-}
-
-// Input on a small lattice: every coordinate an integer multiple of one power of two q and
-// every coordinate difference below 2^9 q (integer grids, voxels). Then the double evaluation of
-// insphere_fast is exact (every product and sum an integer multiple of q^k below 2^53 q^k, as in
-// insphere_perturbed_slow, whose minors are abc, bcd, cda, dab here), so no filter is needed,
-// and an exact zero is perturbed from the same minors.
+// Every point on core's insphere lattice (detail::points_on_insphere_lattice: integer grids,
+// voxels): the double evaluation of the determinants is exact, so no filter is needed, and an
+// exact zero is perturbed from the same minors.
 template <class T>
 LOCUS_D3_INLINE Sign insphere_perturbed_lattice(const Vec3<T>& pa, const Vec3<T>& pb,
                                                 const Vec3<T>& pc, const Vec3<T>& pd,
@@ -454,52 +190,19 @@ LOCUS_D3_INLINE Sign insphere_perturbed_lattice(const Vec3<T>& pa, const Vec3<T>
   const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
                      c = detail::to_double(pc), d = detail::to_double(pd),
                      e = detail::to_double(pe);
-  const InsphereDet q = insphere_det(a, b, c, d, e);
+  const detail::InsphereTerms q = detail::insphere_terms(a, b, c, d, e);
   if (q.det != 0.0) [[likely]]
     return -detail::nonzero_sign(q.det);
   return perturbed_from_minors(a, b, c, d, e, q.minor);
 }
 
-// orient3d on a small lattice: the double determinant is exact (products below 6 * 2^27 q^3).
+// orient3d on the insphere lattice: the double determinant is exact.
 template <class T>
 LOCUS_D3_INLINE Sign orient3d_on_lattice(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
                                          const Vec3<T>& pd) noexcept {
-  const double ux = double(pb.x) - double(pa.x), uy = double(pb.y) - double(pa.y),
-               uz = double(pb.z) - double(pa.z);
-  const double vx = double(pc.x) - double(pa.x), vy = double(pc.y) - double(pa.y),
-               vz = double(pc.z) - double(pa.z);
-  const double wx = double(pd.x) - double(pa.x), wy = double(pd.y) - double(pa.y),
-               wz = double(pd.z) - double(pa.z);
-  return sign_of(ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx));
-}
-
-// True when `points` lie on a small lattice (above): q = 2^(ex - 9) from the largest extent,
-// every coordinate k q with |k| < 2^52 and every extent below 2^9 q, checked on the integers k.
-template <class T>
-[[nodiscard]] bool on_small_lattice(std::span<const Vec3<T>> points) noexcept {
-  if (points.empty()) return false;
-  Vec3<double> lo = detail::to_double(points[0]), hi = lo;
-  for (const auto& p : points)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], double(p[i]));
-      hi[i] = std::max(hi[i], double(p[i]));
-    }
-  const double m = std::max(std::max(hi.x - lo.x, hi.y - lo.y), hi.z - lo.z);
-  if (!(m > 0.0) || !std::isfinite(m)) return false;
-  const int ex = binary_exponent(m);
-  if (!(ex > -200 && ex < 190)) return false;
-  const double inv_q = power_of_two(9 - ex);
-  for (int i = 0; i < 3; ++i) {
-    const double klo = lo[i] * inv_q, khi = hi[i] * inv_q;
-    if (!is_small_integer(klo) || !is_small_integer(khi) || !(khi - klo < 512.0)) return false;
-  }
-  const double q = power_of_two(ex - 9);
-  for (const auto& p : points)
-    for (int i = 0; i < 3; ++i) {
-      const double k = double(p[i]) * inv_q;
-      if (!is_small_integer(k) || k * q != double(p[i])) return false;  // (no underflow)
-    }
-  return true;
+  return sign_of(detail::orient3d_stage_a(detail::to_double(pa), detail::to_double(pb),
+                                          detail::to_double(pc), detail::to_double(pd))
+                     .det);
 }
 
 }  // namespace
@@ -577,10 +280,10 @@ Status Delaunay3<T>::insert(std::span<const Vec3<T>> points) {
   result_.duplicate_of.resize(points_.size());
   std::iota(result_.duplicate_of.begin() + std::ptrdiff_t(n0), result_.duplicate_of.end(),
             static_cast<std::uint32_t>(n0));
-  hilbert_keys(points, static_cast<std::uint32_t>(n0), keys_);
-  brio_order(keys_, keys_tmp_);
-  for (const std::uint64_t key : keys_) {
-    const std::uint32_t i = static_cast<std::uint32_t>(key);
+  std::vector<std::uint32_t> order;
+  detail::brio_order(points, order, keys_, keys_tmp_);
+  for (const std::uint32_t k : order) {
+    const std::uint32_t i = static_cast<std::uint32_t>(n0) + k;
     const std::uint32_t v = static_cast<std::uint32_t>(sorted_.size());
     sorted_.push_back(points_[i]);
     orig_.push_back(i);
@@ -932,15 +635,10 @@ void Delaunay3<T>::run() {
     return;
   }
 
-  // Hilbert order on a grid of about 8 cells per point.
-  hilbert_keys(std::span<const Vec3<T>>(points_), 0, keys_);
-  brio_order(keys_, keys_tmp_);
-  orig_.resize(n);
+  // BRIO rounds in Hilbert order (core/detail/spatial_sort.hpp).
+  detail::brio_order(std::span<const Vec3<T>>(points_), orig_, keys_, keys_tmp_);
   sorted_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    orig_[k] = static_cast<std::uint32_t>(keys_[k]);
-    sorted_[k] = points_[orig_[k]];
-  }
+  for (std::size_t k = 0; k < n; ++k) sorted_[k] = points_[orig_[k]];
   keys_.clear();
   keys_.shrink_to_fit();
   keys_tmp_.clear();
@@ -975,7 +673,7 @@ void Delaunay3<T>::run() {
     apex_flip_ = apex.flip;
     dimension_ = 2;
   }
-  lattice_ = on_small_lattice(std::span<const Vec3<T>>(sorted_));
+  lattice_ = detail::points_on_insphere_lattice(std::span<const Vec3<T>>(sorted_));
   std::uint32_t a = 0, b = static_cast<std::uint32_t>(k1), c = static_cast<std::uint32_t>(k2),
                 d = static_cast<std::uint32_t>(k3);
   if (orient3d(pts[a], pts[b], pts[c], pts[d]) == Sign::negative) std::swap(c, d);

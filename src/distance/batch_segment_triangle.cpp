@@ -3,6 +3,7 @@
 
 #include "batch_kernels.hpp"
 
+#include <locus/core/detail/predicate_filters.hpp>
 #include <locus/distance/segment_triangle.hpp>
 
 namespace locus {
@@ -28,7 +29,8 @@ LOCUS_LANE_INLINE M<T> filter_range(const V3<T>& v) {
 }
 
 /// orient3d(a, b, c, d) (core/predicates.hpp's convention: the sign of det[b - a; c - a; d - a])
-/// by Shewchuk's stage-A filter: `certain` lanes have the exact sign of det (input in
+/// by core's stage-A filter on lanes (detail::det3_stage_a, the scalar predicate's expression and
+/// bound for T's unit roundoff): `certain` lanes have the exact sign of det (input in
 /// filter_range); the others are left to the exact predicate.
 template <class T>
 struct Orient {
@@ -38,16 +40,9 @@ struct Orient {
 template <class T>
 LOCUS_LANE_INLINE Orient<T> orient3d_filter(const V3<T>& a, const V3<T>& b, const V3<T>& c,
                                             const V3<T>& d) {
-  const V3<T> u = b - a, v = c - a, w = d - a;
-  const V<T> m0 = v.y * w.z, m1 = v.z * w.y, m2 = v.z * w.x, m3 = v.x * w.z;
-  const V<T> m4 = v.x * w.y, m5 = v.y * w.x;
-  const V<T> det = u.x * (m0 - m1) + u.y * (m2 - m3) + u.z * (m4 - m5);
-  const auto abs = [](V<T> x) LOCUS_LANE_LAMBDA { return lanes::abs<T>(x); };
-  const V<T> permanent = abs(u.x) * (abs(m0) + abs(m1)) + abs(u.y) * (abs(m2) + abs(m3)) +
-                         abs(u.z) * (abs(m4) + abs(m5));
-  // Shewchuk's bound is (7 + 56 u) u permanent with u = eps / 2; 4 eps is a little larger.
-  const V<T> bound = T(4) * eps_v<T> * permanent;
-  return {det, (det > bound) | (-det > bound)};
+  const detail::StageA<V<T>> f = detail::det3_stage_a<T>(
+      b - a, c - a, d - a, [](V<T> x) LOCUS_LANE_LAMBDA { return lanes::abs<T>(x); });
+  return {f.det, (f.det > f.bound) | (-f.det > f.bound)};
 }
 
 template <class T>

@@ -5,10 +5,12 @@
 // core.predicates.
 //
 // Each predicate returns the *exact* sign of a polynomial in the input coordinates. A fast
-// filter, inline here, evaluates the determinant in double and accepts its sign when it exceeds
-// a static error bound times the permanent (the same determinant with absolute values), as in
-// J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric
-// Predicates" (1997), stage A. Otherwise it calls detail::*_adaptive (src/core/predicates.cpp,
+// inline filter (core/detail/predicate_filters.hpp, shared with the algorithms) evaluates the
+// determinant in double and accepts its sign when it exceeds a static error bound times the
+// permanent (the same determinant with absolute values), as in J. R. Shewchuk, "Adaptive
+// Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates" (1997), stage A.
+// Otherwise, after an exact lattice shortcut for grid input (orient3d, incircle, insphere), it
+// calls detail::*_adaptive (src/core/predicates.cpp,
 // built with -ffp-contract=off), which runs the paper's adaptive stages B, C and an exact stage
 // in expansion arithmetic. No global initialisation: every error bound is a constexpr computed
 // from eps = 2^-53. Float input is promoted to double, which is exact.
@@ -73,11 +75,14 @@
 // Book: chapter 13 uses these signs throughout; figure 13.35 (the five relations of a point and a
 // segment) is decided exactly by orient2d plus lexicographic_compare (see the tests).
 
+#include <locus/config.hpp>
+#include <locus/core/detail/predicate_filters.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 
 // orient2d's filter packs its two products into one SSE2 register where available (always on
@@ -97,9 +102,6 @@
 
 namespace locus {
 
-/// The sign of a predicate's determinant.
-enum class Sign : std::int8_t { negative = -1, zero = 0, positive = 1 };
-
 /// The opposite sign (a swap of two arguments of a predicate).
 [[nodiscard]] constexpr Sign operator-(Sign s) noexcept {
   return static_cast<Sign>(-static_cast<int>(s));
@@ -113,72 +115,52 @@ enum class Sign : std::int8_t { negative = -1, zero = 0, positive = 1 };
 /// -1, 0 or +1.
 [[nodiscard]] constexpr int to_int(Sign s) noexcept { return static_cast<int>(s); }
 
-/// The sign of x; NaN gives zero.
-template <Real T>
-[[nodiscard]] constexpr Sign sign_of(T x) noexcept {
-  return static_cast<Sign>(static_cast<int>(x > T(0)) - static_cast<int>(x < T(0)));
-}
-
 namespace detail {
-
-// Unit roundoff of binary64 and the stage-A error bounds of the paper (section 6).
-inline constexpr double predicate_eps = 0x1p-53;
-inline constexpr double orient2d_bound_a = (3.0 + 16.0 * predicate_eps) * predicate_eps;
-inline constexpr double orient3d_bound_a = (7.0 + 56.0 * predicate_eps) * predicate_eps;
-inline constexpr double incircle_bound_a = (10.0 + 96.0 * predicate_eps) * predicate_eps;
-inline constexpr double insphere_bound_a = (16.0 + 224.0 * predicate_eps) * predicate_eps;
-// |sum_i (q_i - p_i)^2 - (r_i - p_i)^2| in up to 3 dimensions: each square carries 3 roundings,
-// each difference of squares 1, the sum N-1 <= 2; 8 eps leaves room for second-order terms.
-inline constexpr double sqr_distance_bound_a = (8.0 + 64.0 * predicate_eps) * predicate_eps;
-
-#if defined(__GNUC__) || defined(__clang__)
-#define LOCUS_PREDICATE_COLD [[gnu::cold]]
-#else
-#define LOCUS_PREDICATE_COLD
-#endif
 
 // The slow paths, called only when the filter cannot decide (cold: kept out of hot loops). They
 // take double arguments, return the exact sign in OUR conventions, and return Sign::zero for
 // non-finite input.
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign orient2d_adaptive(const Vec2<double>& a,
-                                                          const Vec2<double>& b,
-                                                          const Vec2<double>& c) noexcept;
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign orient3d_adaptive(const Vec3<double>& a,
-                                                          const Vec3<double>& b,
-                                                          const Vec3<double>& c,
-                                                          const Vec3<double>& d) noexcept;
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign incircle_adaptive(const Vec2<double>& a,
-                                                          const Vec2<double>& b,
-                                                          const Vec2<double>& c,
-                                                          const Vec2<double>& d) noexcept;
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign insphere_adaptive(const Vec3<double>& a,
-                                                          const Vec3<double>& b,
-                                                          const Vec3<double>& c,
-                                                          const Vec3<double>& d,
-                                                          const Vec3<double>& e) noexcept;
+[[nodiscard]] LOCUS_COLD Sign orient2d_adaptive(const Vec2<double>& a, const Vec2<double>& b,
+                                                const Vec2<double>& c) noexcept;
+[[nodiscard]] LOCUS_COLD Sign orient3d_adaptive(const Vec3<double>& a, const Vec3<double>& b,
+                                                const Vec3<double>& c,
+                                                const Vec3<double>& d) noexcept;
+[[nodiscard]] LOCUS_COLD Sign incircle_adaptive(const Vec2<double>& a, const Vec2<double>& b,
+                                                const Vec2<double>& c,
+                                                const Vec2<double>& d) noexcept;
+[[nodiscard]] LOCUS_COLD Sign insphere_adaptive(const Vec3<double>& a, const Vec3<double>& b,
+                                                const Vec3<double>& c, const Vec3<double>& d,
+                                                const Vec3<double>& e) noexcept;
 /// Exact sign of det[b - a; d - c] (turn2d), expanded into the four 2x2 minors of the points.
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign turn2d_exact(const Vec2<double>& a, const Vec2<double>& b,
-                                                     const Vec2<double>& c,
-                                                     const Vec2<double>& d) noexcept;
+[[nodiscard]] LOCUS_COLD Sign turn2d_exact(const Vec2<double>& a, const Vec2<double>& b,
+                                           const Vec2<double>& c, const Vec2<double>& d) noexcept;
 /// Exact sign of |q - p|^2 - |r - p|^2 for n = 2 or 3 coordinates per point.
-LOCUS_PREDICATE_COLD [[nodiscard]] Sign compare_sqr_distance_exact(const double* p, const double* q,
-                                                                   const double* r, int n) noexcept;
+[[nodiscard]] LOCUS_COLD Sign compare_sqr_distance_exact(const double* p, const double* q,
+                                                         const double* r, int n) noexcept;
 
-template <class T, int N>
-[[nodiscard]] constexpr Vec<double, N> to_double(const Vec<T, N>& v) noexcept {
-  Vec<double, N> r{};
-  for (int i = 0; i < N; ++i) r[i] = static_cast<double>(v[i]);
-  return r;
+// After a failed filter: the lattice shortcut (exactly degenerate grids decide in a few ns
+// instead of the adaptive stages' 0.1-3 us), then the adaptive stages. Cold and out of line.
+[[nodiscard]] LOCUS_COLD inline Sign orient3d_slow(const Vec3<double>& a, const Vec3<double>& b,
+                                                   const Vec3<double>& c,
+                                                   const Vec3<double>& d) noexcept {
+  if (const std::optional<Sign> s = orient3d_lattice(a, b, c, d)) return *s;
+  return orient3d_adaptive(a, b, c, d);
+}
+[[nodiscard]] LOCUS_COLD inline Sign incircle_slow(const Vec2<double>& a, const Vec2<double>& b,
+                                                   const Vec2<double>& c,
+                                                   const Vec2<double>& d) noexcept {
+  if (const std::optional<Sign> s = incircle_lattice(a, b, c, d)) return *s;
+  return incircle_adaptive(a, b, c, d);
+}
+[[nodiscard]] LOCUS_COLD inline Sign insphere_slow(const Vec3<double>& a, const Vec3<double>& b,
+                                                   const Vec3<double>& c, const Vec3<double>& d,
+                                                   const Vec3<double>& e) noexcept {
+  if (const std::optional<InsphereTerms> t = insphere_lattice(a, b, c, d, e))
+    return -sign_of(t->det);
+  return insphere_adaptive(a, b, c, d, e);
 }
 
-/// The sign of a nonzero, non-NaN x, branch-free (a data-dependent branch on random input
-/// costs more than the whole filter): one compare and 2 b - 1.
-[[nodiscard]] inline Sign nonzero_sign(double x) noexcept {
-  return static_cast<Sign>(2 * static_cast<int>(x > 0.0) - 1);
-}
-
-// The filters. Strict comparisons: with a non-finite input the bound is +inf or NaN, so no
-// determinant can pass and the fallback reports zero.
+// The filtered predicates: stage A (core/detail/predicate_filters.hpp), else the slow path.
 [[nodiscard]] inline Sign orient2d_filtered(const Vec2<double>& a, const Vec2<double>& b,
                                             const Vec2<double>& c) noexcept {
 #if LOCUS_PREDICATES_SSE2
@@ -187,114 +169,38 @@ template <class T, int N>
   const __m128d bc = _mm_sub_pd(_mm_loadu_pd(&b.x), _mm_loadu_pd(&c.x));  // (bcx, bcy)
   const __m128d products = _mm_mul_pd(ac, _mm_shuffle_pd(bc, bc, 1));     // (acx bcy, acy bcx)
   const __m128d high = _mm_unpackhi_pd(products, products);
-  const double left = _mm_cvtsd_f64(products);
-  const double right = _mm_cvtsd_f64(high);
+  const StageA<double> f = det2_stage_a(_mm_cvtsd_f64(products), _mm_cvtsd_f64(high));
 #else
-  const double acx = a.x - c.x, bcx = b.x - c.x;
-  const double acy = a.y - c.y, bcy = b.y - c.y;
-  const double left = acx * bcy;
-  const double right = acy * bcx;
+  const StageA<double> f = orient2d_stage_a(a, b, c);
 #endif
-  const double det = left - right;
-  // The paper's bound is c (|left| + |right|). When left and right share a sign that equals
-  // c |left + right| (rounding is symmetric); when they differ, det cannot change sign and any
-  // bound >= 0 decides correctly. One absolute value fewer on the hot path.
-  const double bound = orient2d_bound_a * std::abs(left + right);
-  if (std::abs(det) > bound) [[likely]]
-    return nonzero_sign(det);
+  if (certain(f)) [[likely]]
+    return nonzero_sign(f.det);
   return orient2d_adaptive(a, b, c);
 }
 
-// Shewchuk's orient3d, det[a - d; b - d; c - d], and its permanent; our sign is its opposite.
 [[nodiscard]] inline Sign orient3d_filtered(const Vec3<double>& a, const Vec3<double>& b,
                                             const Vec3<double>& c, const Vec3<double>& d) noexcept {
-  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-  const double adz = a.z - d.z, bdz = b.z - d.z, cdz = c.z - d.z;
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
-  const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * std::abs(adz) +
-                           (std::abs(cdxady) + std::abs(adxcdy)) * std::abs(bdz) +
-                           (std::abs(adxbdy) + std::abs(bdxady)) * std::abs(cdz);
-  const double bound = orient3d_bound_a * permanent;
-  if (std::abs(det) > bound) [[likely]]
-    return -nonzero_sign(det);
-  return orient3d_adaptive(a, b, c, d);
+  const StageA<double> f = orient3d_stage_a(a, b, c, d);
+  if (certain(f)) [[likely]]
+    return nonzero_sign(f.det);
+  return orient3d_slow(a, b, c, d);
 }
 
-// Shewchuk's incircle (the same sign as ours).
 [[nodiscard]] inline Sign incircle_filtered(const Vec2<double>& a, const Vec2<double>& b,
                                             const Vec2<double>& c, const Vec2<double>& d) noexcept {
-  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double alift = adx * adx + ady * ady;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double clift = cdx * cdx + cdy * cdy;
-  const double det =
-      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
-                           (std::abs(cdxady) + std::abs(adxcdy)) * blift +
-                           (std::abs(adxbdy) + std::abs(bdxady)) * clift;
-  const double bound = incircle_bound_a * permanent;
-  if (std::abs(det) > bound) [[likely]]
-    return nonzero_sign(det);
-  return incircle_adaptive(a, b, c, d);
-}
-
-// Shewchuk's insphere, det[p - e, |p - e|^2] over p = a, b, c, d; our sign is its opposite.
-struct InsphereTerms {
-  double det, permanent;
-};
-[[nodiscard]] inline InsphereTerms insphere_terms(const Vec3<double>& a, const Vec3<double>& b,
-                                                  const Vec3<double>& c, const Vec3<double>& d,
-                                                  const Vec3<double>& e) noexcept {
-  const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
-  const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;
-  const double aez = a.z - e.z, bez = b.z - e.z, cez = c.z - e.z, dez = d.z - e.z;
-  const double aexbey = aex * bey, bexaey = bex * aey;
-  const double bexcey = bex * cey, cexbey = cex * bey;
-  const double cexdey = cex * dey, dexcey = dex * cey;
-  const double dexaey = dex * aey, aexdey = aex * dey;
-  const double aexcey = aex * cey, cexaey = cex * aey;
-  const double bexdey = bex * dey, dexbey = dex * bey;
-  const double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey;
-  const double da = dexaey - aexdey, ac = aexcey - cexaey, bd = bexdey - dexbey;
-  const double abc = aez * bc - bez * ac + cez * ab;
-  const double bcd = bez * cd - cez * bd + dez * bc;
-  const double cda = cez * da + dez * ac + aez * cd;
-  const double dab = dez * ab + aez * bd + bez * da;
-  const double alift = aex * aex + aey * aey + aez * aez;
-  const double blift = bex * bex + bey * bey + bez * bez;
-  const double clift = cex * cex + cey * cey + cez * cez;
-  const double dlift = dex * dex + dey * dey + dez * dez;
-  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-  const double azp = std::abs(aez), bzp = std::abs(bez), czp = std::abs(cez), dzp = std::abs(dez);
-  const double ab_p = std::abs(aexbey) + std::abs(bexaey);
-  const double bc_p = std::abs(bexcey) + std::abs(cexbey);
-  const double cd_p = std::abs(cexdey) + std::abs(dexcey);
-  const double da_p = std::abs(dexaey) + std::abs(aexdey);
-  const double ac_p = std::abs(aexcey) + std::abs(cexaey);
-  const double bd_p = std::abs(bexdey) + std::abs(dexbey);
-  const double permanent = (cd_p * bzp + bd_p * czp + bc_p * dzp) * alift +
-                           (da_p * czp + ac_p * dzp + cd_p * azp) * blift +
-                           (ab_p * dzp + bd_p * azp + da_p * bzp) * clift +
-                           (bc_p * azp + ac_p * bzp + ab_p * czp) * dlift;
-  return {det, permanent};
+  const StageA<double> f = incircle_stage_a(a, b, c, d);
+  if (certain(f)) [[likely]]
+    return nonzero_sign(f.det);
+  return incircle_slow(a, b, c, d);
 }
 
 [[nodiscard]] inline Sign insphere_filtered(const Vec3<double>& a, const Vec3<double>& b,
                                             const Vec3<double>& c, const Vec3<double>& d,
                                             const Vec3<double>& e) noexcept {
-  const InsphereTerms t = insphere_terms(a, b, c, d, e);
-  const double bound = insphere_bound_a * t.permanent;
-  if (std::abs(t.det) > bound) [[likely]]
-    return -nonzero_sign(t.det);
-  return insphere_adaptive(a, b, c, d, e);
+  const StageA<double> f = insphere_stage_a(a, b, c, d, e);
+  if (certain(f)) [[likely]]
+    return nonzero_sign(f.det);
+  return insphere_slow(a, b, c, d, e);
 }
 
 }  // namespace detail
@@ -355,9 +261,8 @@ template <Real T>
 template <Real T>
 [[nodiscard]] inline double orient2d_value(const Vec2<T>& a, const Vec2<T>& b,
                                            const Vec2<T>& c) noexcept {
-  const double acx = double(a.x) - double(c.x), bcx = double(b.x) - double(c.x);
-  const double acy = double(a.y) - double(c.y), bcy = double(b.y) - double(c.y);
-  return acx * bcy - acy * bcx;
+  return detail::orient2d_stage_a(detail::to_double(a), detail::to_double(b), detail::to_double(c))
+      .det;
 }
 
 /// The orient3d determinant in double (rounded, our convention): six times the signed volume
@@ -365,27 +270,18 @@ template <Real T>
 template <Real T>
 [[nodiscard]] inline double orient3d_value(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
                                            const Vec3<T>& d) noexcept {
-  const double adx = double(a.x) - double(d.x), bdx = double(b.x) - double(d.x),
-               cdx = double(c.x) - double(d.x);
-  const double ady = double(a.y) - double(d.y), bdy = double(b.y) - double(d.y),
-               cdy = double(c.y) - double(d.y);
-  const double adz = double(a.z) - double(d.z), bdz = double(b.z) - double(d.z),
-               cdz = double(c.z) - double(d.z);
-  return -(adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy) +
-           cdz * (adx * bdy - bdx * ady));
+  return detail::orient3d_stage_a(detail::to_double(a), detail::to_double(b), detail::to_double(c),
+                                  detail::to_double(d))
+      .det;
 }
 
 /// The incircle determinant in double (rounded, same sign convention).
 template <Real T>
 [[nodiscard]] inline double incircle_value(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c,
                                            const Vec2<T>& d) noexcept {
-  const double adx = double(a.x) - double(d.x), bdx = double(b.x) - double(d.x),
-               cdx = double(c.x) - double(d.x);
-  const double ady = double(a.y) - double(d.y), bdy = double(b.y) - double(d.y),
-               cdy = double(c.y) - double(d.y);
-  return (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-         (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
-         (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  return detail::incircle_stage_a(detail::to_double(a), detail::to_double(b), detail::to_double(c),
+                                  detail::to_double(d))
+      .det;
 }
 
 /// The insphere determinant in double (rounded, our convention).
@@ -425,12 +321,11 @@ template <Real T, int N>
 template <Real T>
 [[nodiscard]] inline Sign turn2d(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c,
                                  const Vec2<T>& d) noexcept {
-  const double l = (double(b.x) - double(a.x)) * (double(d.y) - double(c.y));
-  const double r = (double(b.y) - double(a.y)) * (double(d.x) - double(c.x));
-  const double det = l - r;
-  const double bound = detail::orient2d_bound_a * (std::abs(l) + std::abs(r));
-  if (std::abs(det) > bound) [[likely]]
-    return detail::nonzero_sign(det);
+  const detail::StageA<double> f =
+      detail::det2_stage_a((double(b.x) - double(a.x)) * (double(d.y) - double(c.y)),
+                           (double(b.y) - double(a.y)) * (double(d.x) - double(c.x)));
+  if (detail::certain(f)) [[likely]]
+    return detail::nonzero_sign(f.det);
   return detail::turn2d_exact(detail::to_double(a), detail::to_double(b), detail::to_double(c),
                               detail::to_double(d));
 }

@@ -15,12 +15,12 @@
 // Cost: O(n N^2) for the covariance; no allocation beyond the fits' own.
 
 #include <locus/config.hpp>
-#include <locus/core/least_squares.hpp>
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/numeric/eigen_sym.hpp>
+#include <locus/numeric/least_squares.hpp>
 #include <locus/numeric/matrix.hpp>
 
 #include <algorithm>
@@ -146,7 +146,7 @@ template <int K, class C, int N>
 }
 
 /// Least squares with vertical residuals: x_{N-1} ~ sum_{j<N-1} coef_j x_j + constant, solved
-/// on centred columns by core/least_squares.hpp (QR with column pivoting) in the compute type.
+/// on centred columns by numeric/least_squares.hpp (QR with column pivoting) in the compute type.
 template <class T, int N>
 struct VerticalSolution {
   Status status = Status::ok;

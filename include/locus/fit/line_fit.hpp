@@ -4,7 +4,7 @@
 //
 //   fit_line_vertical(points2)  the line y = slope x + intercept minimising the sum of squared
 //                               VERTICAL distances (figure 2.9): linear least squares on the
-//                               centred x (QR with column pivoting, core/least_squares.hpp).
+//                               centred x (QR with column pivoting, numeric/least_squares.hpp).
 //                               line = {(mean x, y at mean x), (1, slope)}: the parameter t is the
 //                               x offset from the mean. rms = RMS vertical residual.
 //   fit_line(points)            the line minimising the sum of squared ORTHOGONAL distances, in

@@ -11,7 +11,7 @@
 //   fit_hyperplane_vertical(pts)  x_{N-1} = sum_{j < N-1} coefficients[j] x_j + constant with
 //                                 VERTICAL residuals (the book's z = a x + b y + c for N = 3):
 //                                 linear least squares on centred columns (QR with column
-//                                 pivoting, core/least_squares.hpp).
+//                                 pivoting, numeric/least_squares.hpp).
 // Normal signs are arbitrary for a least-squares fit; the returned normal has its
 // largest-magnitude component positive. rms is the RMS orthogonal distance (vertical residual
 // for the vertical fit) of the points.

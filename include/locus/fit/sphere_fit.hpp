@@ -5,7 +5,7 @@
 //
 //   fit_sphere_algebraic(points)  minimises sum_i (|p_i|^2 + D . p_i + F)^2, the ALGEBRAIC
 //                                 distance of x^2 + D . x + F = 0: a linear least-squares problem
-//                                 in (D, F) (core/least_squares.hpp, QR with column pivoting),
+//                                 in (D, F) (numeric/least_squares.hpp, QR with column pivoting),
 //                                 solved after centring the points at their mean and scaling them
 //                                 to unit RMS radius (that conditioning keeps the columns
 //                                 |p|^2, p, 1 comparable). center = -D/2, radius^2 = |D|^2/4 - F.

@@ -4,6 +4,7 @@
 //
 //   (LU with partial pivoting for run-time sizes is core/linear_system.hpp's lu_factor.)
 //   qr(A)        A = Q R by Householder reflections (m >= n); Q is m x m orthogonal, R m x n upper.
+//                (numeric/least_squares.hpp solves with the same reflections, column-pivoted.)
 //   cholesky(A)  A = L L^T for symmetric positive definite A; L lower triangular.
 //   svd(A)       A = U diag(s) V^T by one-sided Jacobi (Hestenes); s descending, >= 0;
 //                U m x k, V n x k with k = min(m, n) (the thin SVD).
@@ -70,6 +71,43 @@ MatX<T> from_compute(const MatX<C>& a) {
   for (std::size_t i = 0; i < a.data.size(); ++i) t.data[i] = T(a.data[i]);
   return t;
 }
+
+/// Euclidean norm of v[0], v[stride], ... (count entries), scaled against overflow/underflow.
+template <class T>
+[[nodiscard]] inline T scaled_norm(const T* v, int count, int stride) noexcept {
+  T mx = T(0);
+  for (int i = 0; i < count; ++i) mx = std::fmax(mx, std::fabs(v[i * stride]));
+  if (!(mx > T(0))) return T(0);
+  T s = T(0);
+  for (int i = 0; i < count; ++i) s += sqr(v[i * stride] / mx);
+  return mx * std::sqrt(s);
+}
+
+// The Householder step of every QR in the library (qr() here, least_squares()): the reflector
+// H = I - tau u u^T (u_0 = 1) with H x = beta e_0, beta = -sign(x_0) |x|, so that x_0 - beta
+// never cancels. x = x[0], x[stride], ... (len entries) with norm = |x| > 0; x[0] becomes beta and
+// x[i stride] (i >= 1) u_i. Returns tau.
+template <class T>
+[[nodiscard]] inline T make_householder(T* x, int len, int stride, T norm) noexcept {
+  const T xk = x[0];
+  const T beta = xk < T(0) ? norm : -norm;
+  const T tau = (beta - xk) / beta;
+  const T inv = T(1) / (xk - beta);
+  for (int i = 1; i < len; ++i) x[i * stride] *= inv;
+  x[0] = beta;
+  return tau;
+}
+
+/// y <- H y for the reflector stored by make_householder at u (stride ustride, u_0 = 1 implied);
+/// y = y[0], y[ystride], ... (len entries). H is symmetric, so this also applies y^T H.
+template <class T>
+inline void apply_householder(const T* u, int ustride, int len, T tau, T* y, int ystride) noexcept {
+  T w = y[0];
+  for (int i = 1; i < len; ++i) w += u[i * ustride] * y[i * ystride];
+  w *= tau;
+  y[0] -= w;
+  for (int i = 1; i < len; ++i) y[i * ystride] -= w * u[i * ustride];
+}
 }  // namespace detail
 
 /// Householder QR, A = Q R (any shape; Q is rows x rows).
@@ -86,32 +124,13 @@ template <class T>
   }
   MatX<C> r = detail::to_compute<C>(a_in);
   MatX<C> q = MatX<C>::identity(m);
-  std::vector<C> v(static_cast<std::size_t>(m));
   for (int k = 0; k < std::min(m - 1, n); ++k) {
-    // Reflect column k below the diagonal onto -sign(x0) |x| e_k (no cancellation in v0).
-    C norm = C(0), big = C(0);
-    for (int i = k; i < m; ++i) big = std::max(big, std::abs(r(i, k)));
-    if (big == C(0)) continue;
-    for (int i = k; i < m; ++i) norm += sqr(r(i, k) / big);
-    norm = big * std::sqrt(norm);
-    const C alpha = r(k, k) >= C(0) ? -norm : norm;
-    for (int i = k; i < m; ++i) v[std::size_t(i)] = r(i, k);
-    v[std::size_t(k)] -= alpha;
-    C vv = C(0);
-    for (int i = k; i < m; ++i) vv += v[std::size_t(i)] * v[std::size_t(i)];
-    if (vv == C(0)) continue;
-    for (int c = k; c < n; ++c) {  // R <- H R
-      C s = C(0);
-      for (int i = k; i < m; ++i) s += v[std::size_t(i)] * r(i, c);
-      s = C(2) * s / vv;
-      for (int i = k; i < m; ++i) r(i, c) -= s * v[std::size_t(i)];
-    }
-    for (int row_i = 0; row_i < m; ++row_i) {  // Q <- Q H
-      C s = C(0);
-      for (int i = k; i < m; ++i) s += q(row_i, i) * v[std::size_t(i)];
-      s = C(2) * s / vv;
-      for (int i = k; i < m; ++i) q(row_i, i) -= s * v[std::size_t(i)];
-    }
+    const C norm = detail::scaled_norm(&r(k, k), m - k, n);
+    if (norm == C(0)) continue;
+    const C tau = detail::make_householder(&r(k, k), m - k, n, norm);
+    for (int c = k + 1; c < n; ++c) detail::apply_householder(&r(k, k), n, m - k, tau, &r(k, c), n);
+    for (int row = 0; row < m; ++row)  // Q <- Q H
+      detail::apply_householder(&r(k, k), n, m - k, tau, &q(row, k), 1);
     for (int i = k + 1; i < m; ++i) r(i, k) = C(0);
   }
   out.q = detail::from_compute<T>(q);

@@ -5,8 +5,9 @@
 //
 // Minimises ||A x - b||_2 for a row-major m x n matrix A (element (r, c) at a[r * n + c]) and
 // b of length m, m >= n expected. Two methods:
-//   * LstsqMethod::qr (default) - Householder QR with column pivoting (Businger-Golub):
-//     backward stable, error ~ eps * cond(A), and rank-revealing in practice;
+//   * LstsqMethod::qr (default) - Householder QR with column pivoting (Businger-Golub; the
+//     reflections of numeric/decompose.hpp's qr): backward stable, error ~ eps * cond(A), and
+//     rank-revealing in practice;
 //   * LstsqMethod::normal_equations - Cholesky of A^T A x = A^T b: cheaper (n^2 m / 2 instead of
 //     n^2 m) but squares the condition number, so it loses twice as many digits; use it only
 //     for well-conditioned A (e.g. a line fit through points that are not clustered).
@@ -31,6 +32,7 @@
 #include <locus/config.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
+#include <locus/numeric/decompose.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -57,17 +59,6 @@ struct LeastSquares {
 };
 
 namespace detail {
-
-/// Euclidean norm of v[0], v[stride], ... (count entries), scaled against overflow/underflow.
-template <class T>
-[[nodiscard]] inline T scaled_norm(const T* v, int count, int stride) noexcept {
-  T mx = T(0);
-  for (int i = 0; i < count; ++i) mx = std::fmax(mx, std::fabs(v[i * stride]));
-  if (!(mx > T(0))) return T(0);
-  T s = T(0);
-  for (int i = 0; i < count; ++i) s += sqr(v[i * stride] / mx);
-  return mx * std::sqrt(s);
-}
 
 template <class T>
 inline void lstsq_qr(std::vector<T>& a, int m, int n, std::vector<T>& b, T tol,
@@ -97,23 +88,9 @@ inline void lstsq_qr(std::vector<T>& a, int m, int n, std::vector<T>& b, T tol,
       for (int r = 0; r < m; ++r) std::swap(at(r, k), at(r, best));
       std::swap(perm[static_cast<std::size_t>(k)], perm[static_cast<std::size_t>(best)]);
     }
-    // Householder reflector H = I - tau v v^T (v_k = 1) with H x = beta e_k, beta = -sign(x_k)|x|
-    // so that x_k - beta never cancels.
-    const T xk = at(k, k);
-    const T beta = xk < T(0) ? best_norm : -best_norm;
-    const T tau = (beta - xk) / beta;
-    const T inv = T(1) / (xk - beta);
-    for (int r = k + 1; r < m; ++r) at(r, k) *= inv;
-    at(k, k) = beta;
-    auto reflect = [&](auto&& elem) {
-      T w = elem(k);
-      for (int r = k + 1; r < m; ++r) w += at(r, k) * elem(r);
-      w *= tau;
-      elem(k) -= w;
-      for (int r = k + 1; r < m; ++r) elem(r) -= w * at(r, k);
-    };
-    for (int c = k + 1; c < n; ++c) reflect([&](int r) -> T& { return at(r, c); });
-    reflect([&](int r) -> T& { return b[static_cast<std::size_t>(r)]; });
+    const T tau = make_householder(&at(k, k), m - k, n, best_norm);
+    for (int c = k + 1; c < n; ++c) apply_householder(&at(k, k), n, m - k, tau, &at(k, c), n);
+    apply_householder(&at(k, k), n, m - k, tau, b.data() + k, 1);
     rank = k + 1;
   }
   // Back substitution on the leading rank x rank triangle; dependent unknowns are zero.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
-// Tests for core/least_squares.hpp (row core.lstsq; figure 2.9): Householder QR with column
+// Tests for numeric/least_squares.hpp (row core.lstsq; figure 2.9): Householder QR with column
 // pivoting and normal equations against the exact rational solution of the normal equations.
-#include <locus/core/least_squares.hpp>
+#include <locus/numeric/least_squares.hpp>
 
 #include "support/typed.hpp"
 
