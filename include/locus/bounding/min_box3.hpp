@@ -97,6 +97,7 @@
 // stopped as hopeless, then ~5000 facet normals (2 10^4 points on a sphere: arcs, ~6 10^4
 // evaluations, certified).
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -140,6 +141,13 @@ struct MinBoxResult {
 template <Real T>
 [[nodiscard]] MinBoxResult<T> min_box(std::span<const Vec3<T>> points,
                                       const MinBoxOptions& options = {});
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] MinBoxResult<range_scalar_t<R>> min_box(const R& points,
+                                                      const MinBoxOptions& options = {}) {
+  return min_box(point_span(points), options);
+}
 
 extern template MinBoxResult<float> min_box<float>(std::span<const Vec3<float>>,
                                                    const MinBoxOptions&);
