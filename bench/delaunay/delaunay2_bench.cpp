@@ -88,7 +88,7 @@ void locus_reuse_case(benchmark::State& state, int which) {
   locus::Delaunay2<double> d;
   locus::bench::HeapPeak peak;  // the first call allocates; later calls reuse the buffers
   for (auto _ : state) {
-    const auto& r = d.triangulate(std::span<const locus::Vec2d>(p));
+    const auto& r = d.compute(std::span<const locus::Vec2d>(p));
     benchmark::DoNotOptimize(r.triangles.data());
   }
   set_counters(state, p.size(), peak);

@@ -91,7 +91,7 @@ void locus_reuse_case3(benchmark::State& state, int which) {
   locus::Delaunay3<double> d;
   locus::bench::HeapPeak peak;  // the first call allocates; later calls reuse the buffers
   for (auto _ : state) {
-    const auto& r = d.triangulate(std::span<const locus::Vec3d>(p));
+    const auto& r = d.compute(std::span<const locus::Vec3d>(p));
     benchmark::DoNotOptimize(r.tetrahedra.data());
   }
   set_counters3(state, p.size(), peak);

@@ -29,10 +29,10 @@ struct BoundaryEdge {
 }  // namespace
 
 template <Real T>
-const ConstrainedDelaunay2Result& ConstrainedDelaunay2<T>::triangulate(
+const ConstrainedDelaunay2Result& ConstrainedDelaunay2<T>::compute(
     std::span<const Vec2<T>> points, std::span<const std::array<std::uint32_t, 2>> constraints) {
   points_ = points;
-  const Delaunay2Result& d = delaunay_.triangulate(points);
+  const Delaunay2Result& d = delaunay_.compute(points);
   ConstrainedDelaunay2Result& r = result_;
   r.status = d.status;
   r.dimension = d.dimension;
@@ -309,7 +309,7 @@ void ConstrainedDelaunay2<T>::mark_inside() {
 }
 
 template <Real T>
-const ConstrainedDelaunay2Result& ConstrainedDelaunay2<T>::triangulate_polygon(
+const ConstrainedDelaunay2Result& ConstrainedDelaunay2<T>::compute_polygon(
     std::span<const Vec2<T>> points, std::span<const std::uint32_t> ring_ends) {
   std::vector<std::array<std::uint32_t, 2>> edges;
   std::uint32_t begin = 0;
@@ -322,7 +322,7 @@ const ConstrainedDelaunay2Result& ConstrainedDelaunay2<T>::triangulate_polygon(
     for (std::uint32_t i = begin; i < end; ++i) edges.push_back({i, i + 1 == end ? begin : i + 1});
     begin = end;
   }
-  triangulate(points, edges);
+  compute(points, edges);
   if (bad && result_.status == Status::ok) result_.status = Status::invalid_input;
   if (result_.dimension == 2) mark_inside();
   return result_;
@@ -332,14 +332,14 @@ template <Real T>
 ConstrainedDelaunay2Result constrained_delaunay(
     std::span<const Vec2<T>> points, std::span<const std::array<std::uint32_t, 2>> constraints) {
   ConstrainedDelaunay2<T> c;
-  return c.triangulate(points, constraints);
+  return c.compute(points, constraints);
 }
 
 template <Real T>
 ConstrainedDelaunay2Result triangulate_polygon(std::span<const Vec2<T>> points,
                                                std::span<const std::uint32_t> ring_ends) {
   ConstrainedDelaunay2<T> c;
-  return c.triangulate_polygon(points, ring_ends);
+  return c.compute_polygon(points, ring_ends);
 }
 
 template class ConstrainedDelaunay2<float>;

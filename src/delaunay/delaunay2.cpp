@@ -76,6 +76,7 @@ template <Real T>
 LocateResult locate(const Delaunay2Result& dt, std::span<const Vec2<T>> points, const Vec2<T>& p,
                     std::int32_t start, std::size_t max_steps) noexcept {
   LocateResult r;
+  r.status = Status::ok;
   const std::size_t nt = dt.triangles.size() / 3;
   if (nt == 0 || dt.halfedges.size() != dt.triangles.size()) {
     r.status = Status::empty_input;
@@ -156,14 +157,14 @@ void Delaunay2<T>::reset() {
 }
 
 template <Real T>
-const Delaunay2Result& Delaunay2<T>::triangulate(std::span<const Vec2<T>> points) {
+const Delaunay2Result& Delaunay2<T>::compute(std::span<const Vec2<T>> points) {
   points_.assign(points.begin(), points.end());
   run(points_);
   return result();
 }
 
 template <Real T>
-const Delaunay2Result& Delaunay2<T>::triangulate(const T* xy, std::size_t n) {
+const Delaunay2Result& Delaunay2<T>::compute(const T* xy, std::size_t n) {
   points_.resize(n);
   for (std::size_t i = 0; i < n; ++i) points_[i] = Vec2<T>{xy[2 * i], xy[2 * i + 1]};
   run(points_);

@@ -216,7 +216,7 @@ Sign insphere_perturbed(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, co
 // ---- Delaunay3 ----------------------------------------------------------------------------
 
 template <Real T>
-const Delaunay3Result& Delaunay3<T>::triangulate(std::span<const Vec3<T>> points) {
+const Delaunay3Result& Delaunay3<T>::compute(std::span<const Vec3<T>> points) {
   points_.assign(points.begin(), points.end());
   run();
   compact(false);
@@ -224,7 +224,7 @@ const Delaunay3Result& Delaunay3<T>::triangulate(std::span<const Vec3<T>> points
 }
 
 template <Real T>
-const Delaunay3Result& Delaunay3<T>::triangulate(const T* xyz, std::size_t n) {
+const Delaunay3Result& Delaunay3<T>::compute(const T* xyz, std::size_t n) {
   points_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     points_[i] = Vec3<T>{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
@@ -1186,6 +1186,7 @@ template <Real T>
 Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points, const Vec3<T>& p,
                      std::int32_t start, std::size_t max_steps) noexcept {
   Locate3Result r;
+  r.status = Status::ok;
   const std::size_t nt = dt.tetrahedra.size();
   if (nt == 0) {
     r.status = Status::empty_input;
@@ -1270,6 +1271,7 @@ template <Real T>
 NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
                                     const Vec3<T>& p, std::int32_t start) noexcept {
   NearestVertex3Result r;
+  r.status = Status::ok;
   if (!is_finite(p.x) || !is_finite(p.y) || !is_finite(p.z)) {
     r.status = Status::non_finite_input;
     return r;

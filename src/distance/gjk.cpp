@@ -966,6 +966,7 @@ template <Real T, int N>
 GjkDistance<T, N> gjk_distance(const SupportMap<T, N>& a, const SupportMap<T, N>& b,
                                const GjkOptions<T, N>& opt) noexcept {
   GjkDistance<T, N> r;
+  r.status = Status::ok;
   constexpr T nan = std::numeric_limits<T>::quiet_NaN();
   const auto non_finite = [&r, nan](Status s) {
     r.status = s;
@@ -1025,6 +1026,7 @@ template <Real T, int N>
 Penetration<T, N> penetration(const SupportMap<T, N>& a, const SupportMap<T, N>& b,
                               const GjkOptions<T, N>& opt) noexcept {
   Penetration<T, N> r;
+  r.status = Status::ok;
   constexpr T nan = std::numeric_limits<T>::quiet_NaN();
   const auto non_finite = [&r, nan](Status s) {
     r.status = s;

@@ -2,6 +2,7 @@
 // Tests for core/status.hpp: every Status has its own lower-case name (the messages of results
 // and the CLI print them), out-of-range values are named "unknown" rather than read past the
 // switch, and Side orders outside < boundary < inside (callers compare sides by sign).
+#include <locus/core/side.hpp>
 #include <locus/core/status.hpp>
 
 #include <gtest/gtest.h>

@@ -129,7 +129,7 @@ TYPED_TEST(Delaunay2Test, NonFiniteInput) {
   }
   locus::Delaunay2<T> d;
   std::vector<Vec2<T>> p = {{T(0), T(0)}, {T(1), T(0)}, {T(0), T(1)}};
-  d.triangulate(std::span<const Vec2<T>>(p));
+  d.compute(std::span<const Vec2<T>>(p));
   EXPECT_EQ(d.insert({bad[0], T(0)}), Status::non_finite_input);
   EXPECT_EQ(d.points().size(), 3u);
   EXPECT_EQ(d.locate({bad[1], T(0)}).status, Status::non_finite_input);
@@ -339,7 +339,7 @@ TYPED_TEST(Delaunay2Test, LocateMatchesBruteForce) {
     for (int j = 0; j < 15; ++j) p.push_back({T(i), T(j)});
   for (int i = 0; i < 100; ++i) p.push_back({rng.uniform<T>(0, 14), rng.uniform<T>(0, 14)});
   locus::Delaunay2<T> d;
-  const auto& r = d.triangulate(std::span<const Vec2<T>>(p));
+  const auto& r = d.compute(std::span<const Vec2<T>>(p));
   ASSERT_TRUE(check_delaunay(p, r));
   for (int k = 0; k < 300; ++k) {
     // Half of the queries on grid nodes / grid lines (exact on vertices or edges).
@@ -395,7 +395,7 @@ TYPED_TEST(Delaunay2Test, IncrementalInsertMatchesBatch) {
   locus::Delaunay2<T> d;
   // Starting collinear (dimension 1), then 2D.
   std::vector<Vec2<T>> first = {{T(0), T(0)}, {T(1), T(1)}};
-  d.triangulate(std::span<const Vec2<T>>(first));
+  d.compute(std::span<const Vec2<T>>(first));
   EXPECT_EQ(d.result().dimension, 1);
   for (const auto& q : p) EXPECT_EQ(d.insert(q), Status::ok);
   EXPECT_EQ(d.insert(p[3]), Status::ok);  // a duplicate

@@ -849,11 +849,11 @@ TYPED_TEST(Delaunay3Test, RandomMedium) {
   ASSERT_TRUE(check_delaunay3(p, r, false));
   // Reuse: the class gives the same result twice and the same as the one-call function.
   locus::Delaunay3<T> d;
-  const auto& a = d.triangulate(std::span<const Vec3<T>>(p));
+  const auto& a = d.compute(std::span<const Vec3<T>>(p));
   EXPECT_EQ(tet_set(a), tet_set(r));
   std::vector<T> flat;
   for (const auto& q : p) flat.insert(flat.end(), {q.x, q.y, q.z});
-  const auto& b = d.triangulate(flat.data(), p.size());
+  const auto& b = d.compute(flat.data(), p.size());
   EXPECT_EQ(tet_set(b), tet_set(r));
 }
 
@@ -1143,7 +1143,7 @@ TYPED_TEST(Delaunay3Test, InsertAfterConstruction) {
   p.push_back({T(3), T(3), T(3)});  // far outside the first points' hull
   const std::size_t n1 = p.size() / 3, n2 = 2 * p.size() / 3;
   locus::Delaunay3<T> d;
-  ASSERT_EQ(d.triangulate(std::span<const Vec3<T>>(p.data(), n1)).status, Status::ok);
+  ASSERT_EQ(d.compute(std::span<const Vec3<T>>(p.data(), n1)).status, Status::ok);
   for (std::size_t i = n1; i < n2; ++i) ASSERT_EQ(d.insert(p[i]), Status::ok);
   ASSERT_EQ(d.insert(std::span<const Vec3<T>>(p.data() + n2, p.size() - n2)), Status::ok);
   // A non-finite point is refused and changes nothing.
@@ -1185,7 +1185,7 @@ TYPED_TEST(Delaunay3Test, InsertAfterConstruction) {
   // Coplanar, then a point off the plane.
   Points<T> plane = plane_grid<T>(6, 6, {T(0), T(0), T(0)}, {T(1), T(0), T(0)}, {T(0), T(1), T(0)});
   locus::Delaunay3<T> f;
-  EXPECT_EQ(f.triangulate(std::span<const Vec3<T>>(plane)).dimension, 2);
+  EXPECT_EQ(f.compute(std::span<const Vec3<T>>(plane)).dimension, 2);
   ASSERT_EQ(f.insert(Vec3<T>{T(2), T(2), T(1)}), Status::ok);
   plane.push_back({T(2), T(2), T(1)});
   ASSERT_TRUE(check_delaunay3(plane, f.result(), true));
@@ -1270,7 +1270,7 @@ TYPED_TEST(Delaunay3Test, LocateAgainstBruteForce) {
   SCOPED_TRACE(rng.trace());
   const auto p = random_points<T>(rng, std::size_t(400 / kScale));
   locus::Delaunay3<T> d;
-  const auto& r = d.triangulate(std::span<const Vec3<T>>(p));
+  const auto& r = d.compute(std::span<const Vec3<T>>(p));
   ASSERT_EQ(r.dimension, 3);
   std::map<Location3, int> seen;
   std::size_t scanned = 0;
@@ -1355,7 +1355,7 @@ TYPED_TEST(Delaunay3Test, NearestVertexAgainstBruteForce) {
   };
   const auto p = random_points<T>(rng, std::size_t(500 / kScale));
   locus::Delaunay3<T> d;
-  const auto& r = d.triangulate(std::span<const Vec3<T>>(p));
+  const auto& r = d.compute(std::span<const Vec3<T>>(p));
   for (int k = 0; k < 200 / kScale; ++k) {
     const Vec3<T> q = rng.vec<T, 3>(T(-2), T(2));
     ASSERT_TRUE(check(p, r, q, d.nearest_vertex(q))) << k;

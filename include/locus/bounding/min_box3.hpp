@@ -25,6 +25,7 @@
 // (it still encloses every point).
 // Cost: hull + (F + evaluations) * (visited cells and edges + silhouette log silhouette).
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -68,6 +69,13 @@ struct MinBoxResult {
 template <Real T>
 [[nodiscard]] MinBoxResult<T> min_box(std::span<const Vec3<T>> points,
                                       const MinBoxOptions& options = {});
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] MinBoxResult<range_scalar_t<R>> min_box(const R& points,
+                                                      const MinBoxOptions& options = {}) {
+  return min_box(point_span(points), options);
+}
 
 extern template MinBoxResult<float> min_box<float>(std::span<const Vec3<float>>,
                                                    const MinBoxOptions&);

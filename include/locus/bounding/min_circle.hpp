@@ -24,6 +24,7 @@
 // scratch per point, reused by MinCircle2 across calls.
 
 #include <locus/bounding/detail/min_ball_common.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -64,6 +65,13 @@ template <Real T>
                                             const MinBallOptions& options = {}) {
   MinCircle2<T> solver;
   return solver.compute(points, options);
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange2 R>
+[[nodiscard]] MinCircleResult<range_scalar_t<R>> min_circle(const R& points,
+                                                            const MinBallOptions& options = {}) {
+  return min_circle(point_span(points), options);
 }
 
 extern template class MinCircle2<float>;

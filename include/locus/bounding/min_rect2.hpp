@@ -20,6 +20,7 @@
 // Empty input -> Status::empty_input; NaN/Inf -> Status::non_finite_input.
 // Cost: the hull (O(n log n), expected O(n)) plus O(h); O(n) scratch.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -50,6 +51,13 @@ struct MinRectResult {
 template <Real T>
 [[nodiscard]] MinRectResult<T> min_rect(std::span<const Vec2<T>> points,
                                         RectCriterion criterion = RectCriterion::area);
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange2 R>
+[[nodiscard]] MinRectResult<range_scalar_t<R>> min_rect(
+    const R& points, RectCriterion criterion = RectCriterion::area) {
+  return min_rect(point_span(points), criterion);
+}
 
 namespace detail {
 

@@ -19,6 +19,7 @@
 // Cost: expected O(n); up to 36 bytes of scratch per point (reused by MinSphere3).
 
 #include <locus/bounding/detail/min_ball_common.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -59,6 +60,13 @@ template <Real T>
                                             const MinBallOptions& options = {}) {
   MinSphere3<T> solver;
   return solver.compute(points, options);
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] MinSphereResult<range_scalar_t<R>> min_sphere(const R& points,
+                                                            const MinBallOptions& options = {}) {
+  return min_sphere(point_span(points), options);
 }
 
 extern template class MinSphere3<float>;

@@ -51,14 +51,17 @@
 // No function allocates except PolygonLocator2's construction.
 
 #include <locus/config.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
+#include <locus/core/side.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/primitives/polygon.hpp>
 #include <locus/primitives/triangle.hpp>
 
 #include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -225,6 +228,24 @@ template <class T>
   return winding;
 }
 
+// The same for any point range (core/point_range.hpp).
+template <PointRange2 R>
+[[nodiscard]] inline Side classify_convex(const range_point_t<R>& p, const R& v) noexcept {
+  return classify_convex(p, point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline bool contains_convex(const R& v, const range_point_t<R>& p) noexcept {
+  return contains_convex(point_span(v), p);
+}
+template <PointRange2 R>
+[[nodiscard]] inline Side classify_polygon(const range_point_t<R>& p, const R& v) noexcept {
+  return classify_polygon(p, point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline int winding_number(const range_point_t<R>& p, const R& v) noexcept {
+  return winding_number(p, point_span(v));
+}
+
 template <class T>
 [[nodiscard]] inline Side classify(const Vec2<T>& p, const Polygon2<T>& poly) noexcept {
   return classify_polygon(p, std::span<const Vec2<T>>(poly.vertices));
@@ -274,6 +295,13 @@ class PolygonLocator2 {
     build(std::span<const std::span<const Vec2<T>>>(rings));
   }
   explicit PolygonLocator2(std::span<const std::span<const Vec2<T>>> rings) { build(rings); }
+  /// One ring given as any point range (core/point_range.hpp).
+  template <PointRange2 R>
+  requires std::same_as<range_scalar_t<R>, T>
+  explicit PolygonLocator2(const R& ring) {
+    const std::span<const Vec2<T>> r = point_span(ring);
+    build(std::span<const std::span<const Vec2<T>>>(&r, 1));
+  }
 
   /// ok, empty_input (no edge) or non_finite_input (then every query is outside).
   [[nodiscard]] Status status() const noexcept { return status_; }
@@ -398,5 +426,12 @@ class PolygonLocator2 {
   std::size_t slabs_ = 0;
   T ylo_ = T(0), yhi_ = T(0), inv_height_ = T(0);
 };
+
+template <PointRange2 R>
+PolygonLocator2(const R&) -> PolygonLocator2<range_scalar_t<R>>;
+template <class T>
+PolygonLocator2(const Polygon2<T>&) -> PolygonLocator2<T>;
+template <class T>
+PolygonLocator2(const PolygonWithHoles2<T>&) -> PolygonLocator2<T>;
 
 }  // namespace locus

@@ -47,8 +47,10 @@
 // non-finite vertex are skipped. Empty meshes contain nothing (outside).
 
 #include <locus/config.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
+#include <locus/core/side.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/core/exact_sum.hpp>
@@ -245,6 +247,26 @@ template <class T>
                                    std::span<const std::array<std::uint32_t, 3>> triangles,
                                    const Vec3<T>& p) noexcept {
   return classify(p, vertices, triangles) != Side::outside;
+}
+
+// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] inline Side classify_convex(
+    const range_point_t<R>& p, const R& vertices,
+    std::span<const std::array<std::uint32_t, 3>> triangles) noexcept {
+  return classify_convex(p, point_span(vertices), triangles);
+}
+template <PointRange3 R>
+[[nodiscard]] inline Side classify(
+    const range_point_t<R>& p, const R& vertices,
+    std::span<const std::array<std::uint32_t, 3>> triangles) noexcept {
+  return classify(p, point_span(vertices), triangles);
+}
+template <PointRange3 R>
+[[nodiscard]] inline bool contains(const R& vertices,
+                                   std::span<const std::array<std::uint32_t, 3>> triangles,
+                                   const range_point_t<R>& p) noexcept {
+  return contains(point_span(vertices), triangles, p);
 }
 
 /// True when every undirected edge {i, j} (i != j) is used by an even number of triangles, the

@@ -74,7 +74,7 @@ inline constexpr T affine_weight_tol_v = T(16) * eps_v<T>;
 /// The result of affine_combination.
 template <class T, int N>
 struct AffineCombination {
-  Status status;
+  Status status = Status::empty_input;
   Vec<T, N> point;
 };
 

@@ -66,7 +66,7 @@ inline constexpr T independence_tol_v = T(64) * eps_v<T>;
 /// non_finite_input.
 template <class T, int N, std::size_t K>
 struct Orthonormalization {
-  Status status;
+  Status status = Status::empty_input;
   int rank;
   std::array<Vec<T, N>, K> basis;
 };
@@ -74,7 +74,7 @@ struct Orthonormalization {
 /// A complete orthonormal right-handed basis; see the header comment for the axis order.
 template <class T, int N>
 struct OrthonormalBasis {
-  Status status;
+  Status status = Status::empty_input;
   std::array<Vec<T, N>, N> axis;
 };
 

@@ -67,7 +67,7 @@ template <class T>
 /// Result of a linear solve. X is Vec<T, N>, Mat<T, N, K> or std::vector<T>.
 template <class T, class X>
 struct LinearSolution {
-  Status status;       ///< ok, degenerate_input (singular), non_finite_input
+  Status status = Status::empty_input;  ///< ok, degenerate_input (singular), non_finite_input
   X x;                 ///< the solution; zero when singular
   T determinant;       ///< det(A) (0 when exactly singular, NaN for non-finite input)
   T rcond;             ///< reciprocal condition number estimate in [0, 1]
@@ -80,7 +80,8 @@ struct LinearSolution {
 /// perm[i] of A.
 template <class T, int N>
 struct Lu {
-  Status status;  ///< ok, degenerate_input (exactly singular), non_finite_input
+  Status status =
+      Status::empty_input;  ///< ok, degenerate_input (exactly singular), non_finite_input
   Mat<T, N, N> lu;
   int perm[N];
   T determinant;
@@ -92,7 +93,7 @@ struct Lu {
 /// A partial-pivoting factorisation of a run-time n x n matrix; layout as in Lu, row-major.
 template <class T>
 struct LuDynamic {
-  Status status;
+  Status status = Status::empty_input;
   int n;
   std::vector<T> lu;
   std::vector<int> perm;

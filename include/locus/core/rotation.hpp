@@ -285,7 +285,8 @@ template <class T>
 /// Result of nearest_rotation / orthonormalize_rotation.
 template <class T>
 struct RotationFix {
-  Status status;     ///< ok, degenerate_input (det <= 0 or rank < 3), non_finite_input
+  Status status =
+      Status::empty_input;  ///< ok, degenerate_input (det <= 0 or rank < 3), non_finite_input
   Mat3<T> rotation;  ///< the rotation (identity unless status is ok)
   int iterations;    ///< Newton steps taken (0 for Gram-Schmidt)
 };

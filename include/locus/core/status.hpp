@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Status: the outcome of an algorithm or IO call, and Side: a three-way classification.
+// Status: the outcome of an algorithm or IO call (Side, the result of classify, is in
+// core/side.hpp).
 //
 // Queries (distance, intersection, construction) never fail and do not use Status. Algorithms
 // over sets (hulls, triangulations, fits, booleans) and readers/writers return a result struct
@@ -40,8 +41,5 @@ enum class Status : std::uint8_t {
   }
   return "unknown";
 }
-
-/// Where a point lies relative to a region (polygon, polyhedron, circle, half-space).
-enum class Side : std::int8_t { outside = -1, boundary = 0, inside = 1 };
 
 }  // namespace locus

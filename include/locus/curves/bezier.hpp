@@ -30,6 +30,7 @@
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/numeric/subdivide.hpp>
 #include <locus/primitives/aligned_box.hpp>
 
 #include <algorithm>
@@ -219,13 +220,6 @@ template <class T, int N>
   return bounding_box(c.control.data(), c.control.size());
 }
 
-/// The result of a length computation.
-template <class T>
-struct ArcLength {
-  Status status;  ///< ok, non_finite_input, empty_input, or limit_exceeded (best estimate kept)
-  T length;
-};
-
 namespace detail {
 
 // 5-point Gauss-Legendre rule on [a, b] (exact for polynomials of degree <= 9).
@@ -254,13 +248,13 @@ template <class T, int N>
 [[nodiscard]] ArcLength<T> arc_length(const BezierCurve<T, N>& c, T t0 = T(0), T t1 = T(1),
                                       T rel_tol = T(64) * eps_v<T>, int max_intervals = 4096) {
   using C = compute_t<T>;
-  if (c.control.empty()) return {Status::empty_input, T(0)};
+  if (c.control.empty()) return {Status::empty_input, T(0), 0};
   if (!is_finite(c) || !is_finite(t0) || !is_finite(t1) || !(rel_tol >= T(0)))
-    return {Status::non_finite_input, std::numeric_limits<T>::quiet_NaN()};
+    return {Status::non_finite_input, std::numeric_limits<T>::quiet_NaN(), 0};
   C a = static_cast<C>(detail::curve_clamp(t0, T(0), T(1)));
   C b = static_cast<C>(detail::curve_clamp(t1, T(0), T(1)));
   if (b < a) std::swap(a, b);
-  if (c.control.size() == 1 || a == b) return {Status::ok, T(0)};
+  if (c.control.size() == 1 || a == b) return {Status::ok, T(0), 0};
   BezierCurve<C, N> cc;
   cc.control.reserve(c.control.size());
   for (const auto& p : c.control) cc.control.push_back(vec_cast<C>(p));
@@ -278,10 +272,12 @@ template <class T, int N>
   std::vector<Item> stack{{a, b, whole}};
   C total = C(0);
   int examined = 0;
+  int evaluations = 5;  // five nodes per Gauss-Legendre rule
   Status st = Status::ok;
   while (!stack.empty()) {
     const Item it = stack.back();
     stack.pop_back();
+    evaluations += 10;
     const C m = (it.a + it.b) / C(2);
     const C l = detail::gauss_legendre5<C>(speed, it.a, m);
     const C r = detail::gauss_legendre5<C>(speed, m, it.b);
@@ -298,7 +294,7 @@ template <class T, int N>
     stack.push_back({m, it.b, r});
     stack.push_back({it.a, m, l});
   }
-  return {st, static_cast<T>(total)};
+  return {st, static_cast<T>(total), evaluations};
 }
 
 }  // namespace locus

@@ -358,7 +358,7 @@ template <class T, int N>
 /// A curve as consecutive Bézier pieces; segment i covers [breaks[i], breaks[i+1]].
 template <class T, int N>
 struct BezierSegments {
-  Status status;
+  Status status = Status::empty_input;
   std::vector<BezierCurve<T, N>> segments;
   std::vector<T> breaks;
 };

@@ -230,7 +230,7 @@ template <class T, int N>
 /// [breaks_v[b], breaks_v[b+1]] and is stored at patches[a * count_v + b].
 template <class T, int N>
 struct BezierPatchGrid {
-  Status status;
+  Status status = Status::empty_input;
   int count_u;
   int count_v;
   std::vector<BezierPatch<T, N>> patches;

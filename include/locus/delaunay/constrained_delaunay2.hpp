@@ -39,6 +39,7 @@
 // Cost: the Delaunay triangulation, plus for each constraint O(k^2) in the number k of edges it
 // crosses (the re-triangulation and the re-linking of the cavity).
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -72,12 +73,12 @@ template <Real T>
 class ConstrainedDelaunay2 {
  public:
   /// The CDT of `points` with the segments `constraints` (pairs of point indices).
-  const ConstrainedDelaunay2Result& triangulate(
+  const ConstrainedDelaunay2Result& compute(
       std::span<const Vec2<T>> points, std::span<const std::array<std::uint32_t, 2>> constraints);
 
   /// The CDT of the rings of a polygon with holes, with inside[] marked by the even-odd rule.
-  const ConstrainedDelaunay2Result& triangulate_polygon(std::span<const Vec2<T>> points,
-                                                        std::span<const std::uint32_t> ring_ends);
+  const ConstrainedDelaunay2Result& compute_polygon(std::span<const Vec2<T>> points,
+                                                    std::span<const std::uint32_t> ring_ends);
 
   [[nodiscard]] const ConstrainedDelaunay2Result& result() const noexcept { return result_; }
 
@@ -103,6 +104,18 @@ template <Real T>
 template <Real T>
 [[nodiscard]] ConstrainedDelaunay2Result triangulate_polygon(
     std::span<const Vec2<T>> points, std::span<const std::uint32_t> ring_ends);
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange2 R>
+[[nodiscard]] ConstrainedDelaunay2Result constrained_delaunay(
+    const R& points, std::span<const std::array<std::uint32_t, 2>> constraints) {
+  return constrained_delaunay(point_span(points), constraints);
+}
+template <PointRange2 R>
+[[nodiscard]] ConstrainedDelaunay2Result triangulate_polygon(
+    const R& points, std::span<const std::uint32_t> ring_ends) {
+  return triangulate_polygon(point_span(points), ring_ends);
+}
 
 extern template class ConstrainedDelaunay2<float>;
 extern template class ConstrainedDelaunay2<double>;

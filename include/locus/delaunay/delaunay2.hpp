@@ -53,6 +53,7 @@
 // points, index arrays with ghosts that become the result in place); 10^6 points: 84 MB vs
 // CGAL's 145 MB. A reused Delaunay2 keeps its own copy of the points and of the result (145 MB).
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -88,8 +89,9 @@ enum class Location : std::uint8_t {
 
 /// The result of locate().
 struct LocateResult {
-  Status status = Status::ok;  ///< ok; empty_input (no triangles); non_finite_input;
-                               ///< limit_exceeded (the walk ran out of steps; fields unset)
+  Status status =
+      Status::empty_input;  ///< ok; empty_input (no triangles); non_finite_input;
+                            ///< limit_exceeded (the walk ran out of steps; fields unset)
   Location location = Location::outside;
   std::int32_t triangle = -1;  ///< a triangle of the result, -1 when not found
   int corner = -1;             ///< edge or vertex index within the triangle (0..2)
@@ -118,9 +120,9 @@ template <Real T>
 class Delaunay2 {
  public:
   /// Triangulates `points` (copied), replacing any previous state.
-  const Delaunay2Result& triangulate(std::span<const Vec2<T>> points);
+  const Delaunay2Result& compute(std::span<const Vec2<T>> points);
   /// The same for a flat array x0, y0, x1, y1, ... of n points.
-  const Delaunay2Result& triangulate(const T* xy, std::size_t n);
+  const Delaunay2Result& compute(const T* xy, std::size_t n);
 
   /// Adds one point (index = points().size() before the call) and restores the Delaunay
   /// property. O(1) expected near the previous point in 2D; when the current triangulation has
@@ -190,6 +192,18 @@ template <Real T>
 /// Delaunay triangulation of n points given as x0, y0, x1, y1, ...
 template <Real T>
 [[nodiscard]] Delaunay2Result delaunay(const T* xy, std::size_t n);
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange2 R>
+[[nodiscard]] Delaunay2Result delaunay(const R& points) {
+  return delaunay(point_span(points));
+}
+template <PointRange2 R>
+[[nodiscard]] LocateResult locate(const Delaunay2Result& dt, const R& points,
+                                  const range_point_t<R>& p, std::int32_t start = 0,
+                                  std::size_t max_steps = 0) noexcept {
+  return locate(dt, point_span(points), p, start, max_steps);
+}
 
 extern template class Delaunay2<float>;
 extern template class Delaunay2<double>;

@@ -118,6 +118,7 @@
 // 0.69 s vs 1.27 s (same cell counts as CGAL in all three). Peak heap growth (every malloc
 // counted): 10^6 points 294 MB vs CGAL's 526 MB; grid 37 MB vs 58 MB.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -167,8 +168,8 @@ enum class Location3 : std::uint8_t {
 
 /// The result of locate (3D).
 struct Locate3Result {
-  Status status = Status::ok;  ///< ok; empty_input (no tetrahedra); non_finite_input;
-                               ///< invalid_input (an index of the result is out of range)
+  Status status = Status::empty_input;  ///< ok; empty_input (no tetrahedra); non_finite_input;
+                                        ///< invalid_input (an index of the result is out of range)
   Location3 location = Location3::outside;
   std::int32_t tetrahedron = -1;       ///< a tetrahedron of the result, -1 when not found
   int face = -1;                       ///< on_face, outside: face index (opposite vertices[face])
@@ -180,7 +181,7 @@ struct Locate3Result {
 
 /// The result of nearest_vertex (3D).
 struct NearestVertex3Result {
-  Status status = Status::ok;     ///< ok; empty_input; non_finite_input; invalid_input
+  Status status = Status::empty_input;  ///< ok; empty_input; non_finite_input; invalid_input
   std::uint32_t vertex = 0;       ///< input index of a nearest vertex (a kept point)
   std::int32_t tetrahedron = -1;  ///< a tetrahedron with that vertex (-1 for dimension < 3)
 };
@@ -231,9 +232,9 @@ template <Real T>
 class Delaunay3 {
  public:
   /// Tetrahedralizes `points` (copied), replacing any previous state.
-  const Delaunay3Result& triangulate(std::span<const Vec3<T>> points);
+  const Delaunay3Result& compute(std::span<const Vec3<T>> points);
   /// The same for a flat array x0, y0, z0, x1, ... of n points.
-  const Delaunay3Result& triangulate(const T* xyz, std::size_t n);
+  const Delaunay3Result& compute(const T* xyz, std::size_t n);
 
   /// Adds one point (index = points().size() before the call) and restores the Delaunay
   /// property: O(1) expected near the previously inserted point. When the current result has
@@ -308,10 +309,22 @@ class Delaunay3 {
 };
 
 /// The same for a vector of points.
-template <Real T>
-[[nodiscard]] inline Delaunay3Result delaunay(const std::vector<Vec3<T>>& points,
-                                              const Delaunay3Options& options = {}) {
-  return delaunay(std::span<const Vec3<T>>(points), options);
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] Delaunay3Result delaunay(const R& points, const Delaunay3Options& options = {}) {
+  return delaunay(point_span(points), options);
+}
+template <PointRange3 R>
+[[nodiscard]] Locate3Result locate(const Delaunay3Result& dt, const R& points,
+                                   const range_point_t<R>& p, std::int32_t start = 0,
+                                   std::size_t max_steps = 0) noexcept {
+  return locate(dt, point_span(points), p, start, max_steps);
+}
+template <PointRange3 R>
+[[nodiscard]] NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, const R& points,
+                                                  const range_point_t<R>& p,
+                                                  std::int32_t start = 0) noexcept {
+  return nearest_vertex(dt, point_span(points), p, start);
 }
 
 extern template class Delaunay3<float>;

@@ -134,7 +134,7 @@ struct GjkOptions {
 /// Result of gjk_distance (see the header comment).
 template <class T, int N>
 struct GjkDistance {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   Contact contact = Contact::separated;
   T distance{};
   T sqr_distance{};
@@ -147,7 +147,7 @@ struct GjkDistance {
 /// Result of penetration (see the header comment).
 template <class T, int N>
 struct Penetration {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   Contact contact = Contact::separated;
   T depth{};
   Vec<T, N> normal{};

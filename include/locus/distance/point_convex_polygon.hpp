@@ -45,6 +45,7 @@
 // O(log n) only the vertices the search reads are checked for NaN/inf (a non-finite one among
 // them gives non_finite_distance(); others are not seen). unique is always true (convex).
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -229,6 +230,13 @@ template <Real T>
 [[nodiscard]] inline Distance<T, 2, NoParam, Vec2<T>> distance_to_convex_polygon(
     const Vec2<T>& p, const Polygon2<T>& poly) noexcept {
   return distance_to_convex_polygon(p, std::span<const Vec2<T>>(poly.vertices));
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange2 R>
+[[nodiscard]] inline Distance<range_scalar_t<R>, 2, NoParam, range_point_t<R>>
+distance_to_convex_polygon(const range_point_t<R>& p, const R& v) noexcept {
+  return distance_to_convex_polygon(p, point_span(v));
 }
 
 }  // namespace locus

@@ -45,7 +45,9 @@
 // never crossed by the perturbed ray. unique is true unless two triangles not sharing the chosen
 // point tie exactly (not detected; one is returned).
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
+#include <locus/core/side.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/point_triangle.hpp>
@@ -53,6 +55,7 @@
 #include <locus/primitives/triangle.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -84,6 +87,11 @@ class MeshDistanceTree {
   /// Builds the tree (see the header comment for the status values).
   MeshDistanceTree(std::span<const Vec3<T>> vertices,
                    std::span<const std::array<std::uint32_t, 3>> triangles);
+  /// The same for any point range (core/point_range.hpp).
+  template <PointRange3 R>
+  requires std::same_as<range_scalar_t<R>, T> MeshDistanceTree(
+      const R& vertices, std::span<const std::array<std::uint32_t, 3>> triangles)
+      : MeshDistanceTree(point_span(vertices), triangles) {}
 
   [[nodiscard]] Status status() const noexcept { return status_; }
   /// Every undirected edge is used by an even number of triangles (classify() is meaningful).
@@ -185,6 +193,18 @@ template <Real T>
     }
   }
   return detail::make_distance(p, q, NoParam{}, mp, true);
+}
+
+template <PointRange3 R>
+MeshDistanceTree(const R&, std::span<const std::array<std::uint32_t, 3>>)
+    -> MeshDistanceTree<range_scalar_t<R>>;
+
+/// distance_to_mesh for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] inline Distance<range_scalar_t<R>, 3, NoParam, MeshPoint<range_scalar_t<R>>>
+distance_to_mesh(const range_point_t<R>& p, const R& vertices,
+                 std::span<const std::array<std::uint32_t, 3>> triangles) noexcept {
+  return distance_to_mesh(p, point_span(vertices), triangles);
 }
 
 }  // namespace locus

@@ -25,6 +25,7 @@
 // preconditions gives an unspecified finite answer (inward normals make every outside point look
 // inside; a flat mesh reports the points of its plane as inside). unique is always true.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -59,6 +60,14 @@ template <Real T>
     if (r.sqr_distance < best) best = r.sqr_distance, q = r.closest[1];
   }
   return detail::make_distance(p, q, NoParam{}, q, true);
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] inline Distance<range_scalar_t<R>, 3, NoParam, range_point_t<R>>
+distance_to_convex_polyhedron(const range_point_t<R>& p, const R& vertices,
+                              std::span<const std::array<std::uint32_t, 3>> triangles) noexcept {
+  return distance_to_convex_polyhedron(p, point_span(vertices), triangles);
 }
 
 }  // namespace locus

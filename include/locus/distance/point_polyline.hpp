@@ -23,6 +23,7 @@
 // sharing the chosen point tie exactly (not detected; one pair is returned).
 // Cost: O(n) with an early rejection of distant segments (a few comparisons each); no allocation.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear.hpp>
@@ -83,6 +84,13 @@ template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, T, NoParam> distance(const Polyline<T, N>& poly,
                                                          const Vec<T, N>& p) noexcept {
   return swapped(distance(p, poly));
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange R>
+[[nodiscard]] inline Distance<range_scalar_t<R>, range_dimension_v<R>, NoParam, range_scalar_t<R>>
+distance_to_polyline(const range_point_t<R>& p, const R& v, bool closed) noexcept {
+  return distance_to_polyline(p, point_span(v), closed);
 }
 
 }  // namespace locus

@@ -25,6 +25,7 @@
 // infinite coordinates have no meaning: both give non_finite_distance() (result.hpp). Cost: O(n)
 // with a few comparisons per rejected edge; no allocation.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear_polyline.hpp>
@@ -58,6 +59,15 @@ template <Real T, int N>
 [[nodiscard]] inline Distance<T, N, T, T> distance(const Polyline<T, N>& poly,
                                                    const Segment<T, N>& x) noexcept {
   return swapped(distance(x, poly));
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange R>
+[[nodiscard]] inline Distance<range_scalar_t<R>, range_dimension_v<R>, range_scalar_t<R>,
+                              range_scalar_t<R>>
+distance_to_polyline(const Segment<range_scalar_t<R>, range_dimension_v<R>>& x, const R& v,
+                     bool closed) noexcept {
+  return distance_to_polyline(x, point_span(v), closed);
 }
 
 }  // namespace locus

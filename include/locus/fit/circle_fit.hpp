@@ -25,8 +25,9 @@ namespace locus {
 /// Result of the circle fits.
 template <class T>
 struct CircleFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input,
-                               ///< limit_exceeded (geometric fit budget; best circle so far)
+  Status status =
+      Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input,
+                            ///< limit_exceeded (geometric fit budget; best circle so far)
   Circle2<T> circle{};
   T rms{};             ///< RMS geometric distance of the points to the circle
   int iterations = 0;  ///< Levenberg-Marquardt iterations (0 for the algebraic fit)
@@ -45,10 +46,10 @@ template <class T>
                                                 const FitOptions<T>& opt = {}) {
   return detail::to_circle_fit(fit_sphere_algebraic(pts, opt));
 }
-template <class T>
-[[nodiscard]] CircleFit<T> fit_circle_algebraic(const std::vector<Vec2<T>>& pts,
-                                                const FitOptions<T>& opt = {}) {
-  return fit_circle_algebraic(std::span<const Vec2<T>>(pts), opt);
+template <PointRange2 R>
+[[nodiscard]] CircleFit<range_scalar_t<R>> fit_circle_algebraic(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_circle_algebraic(point_span(pts), opt);
 }
 
 /// Geometric least-squares circle (Levenberg-Marquardt from the algebraic fit).
@@ -56,10 +57,10 @@ template <class T>
 [[nodiscard]] CircleFit<T> fit_circle(std::span<const Vec2<T>> pts, const FitOptions<T>& opt = {}) {
   return detail::to_circle_fit(fit_sphere(pts, opt));
 }
-template <class T>
-[[nodiscard]] CircleFit<T> fit_circle(const std::vector<Vec2<T>>& pts,
-                                      const FitOptions<T>& opt = {}) {
-  return fit_circle(std::span<const Vec2<T>>(pts), opt);
+template <PointRange2 R>
+[[nodiscard]] CircleFit<range_scalar_t<R>> fit_circle(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_circle(point_span(pts), opt);
 }
 
 }  // namespace locus

@@ -16,6 +16,7 @@
 
 #include <locus/config.hpp>
 #include <locus/core/mat.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -104,6 +105,7 @@ template <class C, int N>
   } else {
     const SymmetricEigenX<C> e = eigen_symmetric(MatX<C>(a));
     SymmetricEigen<C, N> out;
+    out.status = Status::ok;
     out.status = e.status;
     for (int i = 0; i < N; ++i) {
       out.values[i] = e.values[static_cast<std::size_t>(i)];
@@ -149,7 +151,7 @@ template <int K, class C, int N>
 /// on centred columns by numeric/least_squares.hpp (QR with column pivoting) in the compute type.
 template <class T, int N>
 struct VerticalSolution {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   Vec<compute_t<T>, N - 1> coef{};
   compute_t<T> constant{};
   compute_t<T> rms{};
@@ -160,6 +162,7 @@ template <class T, int N>
   using C = compute_t<T>;
   constexpr int K = N - 1;
   VerticalSolution<T, N> out;
+  out.status = Status::ok;
   out.rms = std::numeric_limits<C>::quiet_NaN();
   out.status = check_points(pts, static_cast<std::size_t>(N));
   if (out.status != Status::ok) return out;

@@ -38,7 +38,8 @@ enum class GaussianExtent : std::uint8_t {
 /// Result of fit_gaussian().
 template <class T, int N>
 struct GaussianFit {
-  Status status = Status::ok;  ///< ok, empty_input, non_finite_input, limit_exceeded (Jacobi)
+  Status status =
+      Status::empty_input;     ///< ok, empty_input, non_finite_input, limit_exceeded (Jacobi)
   OrientedBox<T, N> box{};     ///< axes = eigenvectors of the covariance, ascending eigenvalue
   Vec<T, N> mean{};
   Mat<T, N, N> covariance{};  ///< normalised by n
@@ -51,6 +52,7 @@ template <class T, int N>
                                              GaussianExtent extent = GaussianExtent::std_dev) {
   using C = compute_t<T>;
   GaussianFit<T, N> out;
+  out.status = Status::ok;
   out.status = detail::check_points(pts, 1);
   if (out.status != Status::ok) return out;
   const detail::Moments<C, N> m = detail::moments<C>(pts);
@@ -85,10 +87,10 @@ template <class T, int N>
   return out;
 }
 
-template <class T, int N>
-[[nodiscard]] GaussianFit<T, N> fit_gaussian(const std::vector<Vec<T, N>>& pts,
-                                             GaussianExtent extent = GaussianExtent::std_dev) {
-  return fit_gaussian(std::span<const Vec<T, N>>(pts), extent);
+template <PointRange R>
+[[nodiscard]] GaussianFit<range_scalar_t<R>, range_dimension_v<R>> fit_gaussian(
+    const R& pts, GaussianExtent extent = GaussianExtent::std_dev) {
+  return fit_gaussian(point_span(pts), extent);
 }
 
 }  // namespace locus

@@ -33,7 +33,7 @@ namespace locus {
 /// Result of fit_line().
 template <class T, int N>
 struct LineFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input
+  Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
   Line<T, N> line{};           ///< origin = mean, unit direction
   T rms{};                     ///< RMS orthogonal distance
 };
@@ -41,7 +41,7 @@ struct LineFit {
 /// Result of fit_line_vertical().
 template <class T>
 struct VerticalLineFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input
+  Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
   T slope{};
   T intercept{};    ///< y = slope x + intercept
   Line2<T> line{};  ///< {(mean x, slope mean x + intercept), (1, slope)}
@@ -55,6 +55,7 @@ template <class T, int N>
   static_assert(N >= 2, "fit_line needs N >= 2");
   using C = compute_t<T>;
   LineFit<T, N> out;
+  out.status = Status::ok;
   out.rms = std::numeric_limits<T>::quiet_NaN();
   out.status = detail::check_points(pts, 2);
   if (out.status != Status::ok) return out;
@@ -78,10 +79,10 @@ template <class T, int N>
   return out;
 }
 
-template <class T, int N>
-[[nodiscard]] LineFit<T, N> fit_line(const std::vector<Vec<T, N>>& pts,
-                                     const FitOptions<T>& opt = {}) {
-  return fit_line(std::span<const Vec<T, N>>(pts), opt);
+template <PointRange R>
+[[nodiscard]] LineFit<range_scalar_t<R>, range_dimension_v<R>> fit_line(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_line(point_span(pts), opt);
 }
 
 /// Least-squares line y = slope x + intercept with vertical residuals (figure 2.9).
@@ -89,6 +90,7 @@ template <class T>
 [[nodiscard]] VerticalLineFit<T> fit_line_vertical(std::span<const Vec2<T>> pts,
                                                    const FitOptions<T>& opt = {}) {
   VerticalLineFit<T> out;
+  out.status = Status::ok;
   const detail::VerticalSolution<T, 2> v =
       detail::vertical_fit(pts, detail::fit_rank_tolerance(opt));
   out.status = v.status;
@@ -104,10 +106,10 @@ template <class T>
   return out;
 }
 
-template <class T>
-[[nodiscard]] VerticalLineFit<T> fit_line_vertical(const std::vector<Vec2<T>>& pts,
-                                                   const FitOptions<T>& opt = {}) {
-  return fit_line_vertical(std::span<const Vec2<T>>(pts), opt);
+template <PointRange2 R>
+[[nodiscard]] VerticalLineFit<range_scalar_t<R>> fit_line_vertical(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_line_vertical(point_span(pts), opt);
 }
 
 }  // namespace locus

@@ -37,7 +37,7 @@ namespace locus {
 /// Result of fit_hyperplane(): the set { X : dot(normal, X) = constant }, normal unit length.
 template <class T, int N>
 struct HyperplaneFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input
+  Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
   Vec<T, N> normal{};
   T constant{};
   T rms{};  ///< RMS orthogonal distance
@@ -46,7 +46,7 @@ struct HyperplaneFit {
 /// Result of fit_plane().
 template <class T>
 struct PlaneFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input
+  Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
   Plane3<T> plane{};           ///< unit normal
   T rms{};                     ///< RMS orthogonal distance
 };
@@ -54,7 +54,7 @@ struct PlaneFit {
 /// Result of fit_hyperplane_vertical(): x_{N-1} = dot(coefficients, x_{0..N-2}) + constant.
 template <class T, int N>
 struct VerticalHyperplaneFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input
+  Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
   Vec<T, N - 1> coefficients{};
   T constant{};
   T rms{};  ///< RMS vertical residual
@@ -67,6 +67,7 @@ template <class T, int N>
   static_assert(N >= 2, "fit_hyperplane needs N >= 2");
   using C = compute_t<T>;
   HyperplaneFit<T, N> out;
+  out.status = Status::ok;
   out.rms = std::numeric_limits<T>::quiet_NaN();
   out.status = detail::check_points(pts, static_cast<std::size_t>(N));
   if (out.status != Status::ok) return out;
@@ -88,10 +89,10 @@ template <class T, int N>
   return out;
 }
 
-template <class T, int N>
-[[nodiscard]] HyperplaneFit<T, N> fit_hyperplane(const std::vector<Vec<T, N>>& pts,
-                                                 const FitOptions<T>& opt = {}) {
-  return fit_hyperplane(std::span<const Vec<T, N>>(pts), opt);
+template <PointRange R>
+[[nodiscard]] HyperplaneFit<range_scalar_t<R>, range_dimension_v<R>> fit_hyperplane(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_hyperplane(point_span(pts), opt);
 }
 
 /// Orthogonal least-squares plane through points in 3D.
@@ -101,10 +102,10 @@ template <class T>
   return {h.status, Plane3<T>{h.normal, h.constant}, h.rms};
 }
 
-template <class T>
-[[nodiscard]] PlaneFit<T> fit_plane(const std::vector<Vec3<T>>& pts,
-                                    const FitOptions<T>& opt = {}) {
-  return fit_plane(std::span<const Vec3<T>>(pts), opt);
+template <PointRange3 R>
+[[nodiscard]] PlaneFit<range_scalar_t<R>> fit_plane(const R& pts,
+                                                    const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_plane(point_span(pts), opt);
 }
 
 /// Least-squares hyperplane x_{N-1} = f(x_0..x_{N-2}) with vertical residuals.
@@ -113,6 +114,7 @@ template <class T, int N>
                                                                   const FitOptions<T>& opt = {}) {
   static_assert(N >= 2, "fit_hyperplane_vertical needs N >= 2");
   VerticalHyperplaneFit<T, N> out;
+  out.status = Status::ok;
   const detail::VerticalSolution<T, N> v =
       detail::vertical_fit(pts, detail::fit_rank_tolerance(opt));
   out.status = v.status;
@@ -123,10 +125,10 @@ template <class T, int N>
   return out;
 }
 
-template <class T, int N>
-[[nodiscard]] VerticalHyperplaneFit<T, N> fit_hyperplane_vertical(const std::vector<Vec<T, N>>& pts,
-                                                                  const FitOptions<T>& opt = {}) {
-  return fit_hyperplane_vertical(std::span<const Vec<T, N>>(pts), opt);
+template <PointRange R>
+[[nodiscard]] VerticalHyperplaneFit<range_scalar_t<R>, range_dimension_v<R>>
+fit_hyperplane_vertical(const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_hyperplane_vertical(point_span(pts), opt);
 }
 
 }  // namespace locus

@@ -48,7 +48,7 @@ namespace locus {
 /// Result of fit_quadratic_curve().
 template <class T>
 struct QuadraticCurveFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input
+  Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
   QuadraticCurve2<T> curve{};  ///< unit coefficient vector (see the top comment)
   T rms{};                     ///< RMS algebraic residual
 };
@@ -56,7 +56,7 @@ struct QuadraticCurveFit {
 /// Result of fit_quadric().
 template <class T>
 struct QuadricFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input
+  Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
   Quadric3<T> quadric{};       ///< unit coefficient vector (see the top comment)
   T rms{};                     ///< RMS algebraic residual
 };
@@ -84,7 +84,7 @@ struct QuadraticForm {
 
 template <class C, int N>
 struct NullVectorResult {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   QuadraticForm<C, N> form;  ///< in the ORIGINAL coordinates, not yet normalised
 };
 
@@ -95,6 +95,7 @@ template <class C, class T, int N, int K, class Monomials, class ToForm>
                                                          std::size_t needed, T rank_tol,
                                                          Monomials monomials, ToForm to_form) {
   NullVectorResult<C, N> out;
+  out.status = Status::ok;
   out.status = check_points(pts, needed);
   if (out.status != Status::ok) return out;
   const Moments<C, N> m = moments<C>(pts);
@@ -151,6 +152,7 @@ template <class T>
                                                        const FitOptions<T>& opt = {}) {
   using C = compute_t<T>;
   QuadraticCurveFit<T> out;
+  out.status = Status::ok;
   out.rms = std::numeric_limits<T>::quiet_NaN();
   const auto res = detail::algebraic_quadratic<C, T, 2, 6>(
       pts, 5, detail::fit_rank_tolerance(opt),
@@ -179,10 +181,10 @@ template <class T>
   return out;
 }
 
-template <class T>
-[[nodiscard]] QuadraticCurveFit<T> fit_quadratic_curve(const std::vector<Vec2<T>>& pts,
-                                                       const FitOptions<T>& opt = {}) {
-  return fit_quadratic_curve(std::span<const Vec2<T>>(pts), opt);
+template <PointRange2 R>
+[[nodiscard]] QuadraticCurveFit<range_scalar_t<R>> fit_quadratic_curve(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_quadratic_curve(point_span(pts), opt);
 }
 
 /// Algebraic least-squares quadric surface through points (see the top comment).
@@ -191,6 +193,7 @@ template <class T>
                                         const FitOptions<T>& opt = {}) {
   using C = compute_t<T>;
   QuadricFit<T> out;
+  out.status = Status::ok;
   out.rms = std::numeric_limits<T>::quiet_NaN();
   const auto res = detail::algebraic_quadratic<C, T, 3, 10>(
       pts, 9, detail::fit_rank_tolerance(opt),
@@ -227,10 +230,10 @@ template <class T>
   return out;
 }
 
-template <class T>
-[[nodiscard]] QuadricFit<T> fit_quadric(const std::vector<Vec3<T>>& pts,
-                                        const FitOptions<T>& opt = {}) {
-  return fit_quadric(std::span<const Vec3<T>>(pts), opt);
+template <PointRange3 R>
+[[nodiscard]] QuadricFit<range_scalar_t<R>> fit_quadric(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_quadric(point_span(pts), opt);
 }
 
 }  // namespace locus

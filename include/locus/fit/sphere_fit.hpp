@@ -32,6 +32,7 @@
 // Cost: O(n N^2) per Levenberg-Marquardt iteration; allocates n normalised points.
 
 #include <locus/core/linear_system.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/fit/fit_common.hpp>
 #include <locus/primitives/sphere.hpp>
 
@@ -46,8 +47,9 @@ namespace locus {
 /// Result of the sphere fits.
 template <class T, int N>
 struct SphereFit {
-  Status status = Status::ok;  ///< ok, empty_input, degenerate_input, non_finite_input,
-                               ///< limit_exceeded (geometric fit budget; best sphere so far)
+  Status status =
+      Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input,
+                            ///< limit_exceeded (geometric fit budget; best sphere so far)
   Sphere<T, N> sphere{};
   T rms{};             ///< RMS geometric distance of the points to the sphere
   int iterations = 0;  ///< Levenberg-Marquardt iterations (0 for the algebraic fit)
@@ -57,7 +59,7 @@ namespace detail {
 
 template <class C, int N>
 struct NormalizedSphereProblem {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   std::vector<Vec<C, N>> q;  ///< (p - mean) / scale
   Vec<C, N> mean{};
   C scale{};
@@ -69,6 +71,7 @@ template <class C, class T, int N>
 [[nodiscard]] NormalizedSphereProblem<C, N> algebraic_sphere(std::span<const Vec<T, N>> pts,
                                                              T rank_tol) {
   NormalizedSphereProblem<C, N> out;
+  out.status = Status::ok;
   out.status = check_points(pts, static_cast<std::size_t>(N + 1));
   if (out.status != Status::ok) return out;
   const Moments<C, N> m = moments<C>(pts);
@@ -145,6 +148,7 @@ template <class T, class C, int N>
                                             const Vec<C, N>& c, C r, C cost, Status st,
                                             int iterations) {
   SphereFit<T, N> out;
+  out.status = Status::ok;
   out.status = st;
   out.sphere = {vec_cast<T>(pr.mean + pr.scale * c), T(pr.scale * r)};
   out.rms = T(pr.scale * std::sqrt(cost / C(pr.q.size())));
@@ -163,6 +167,7 @@ template <class T, int N>
       detail::algebraic_sphere<C>(pts, detail::fit_rank_tolerance(opt));
   if (pr.status != Status::ok) {
     SphereFit<T, N> out;
+    out.status = Status::ok;
     out.status = pr.status;
     out.rms = std::numeric_limits<T>::quiet_NaN();
     return out;
@@ -171,10 +176,10 @@ template <class T, int N>
                                   detail::sphere_cost(pr.q, pr.center, pr.radius), Status::ok, 0);
 }
 
-template <class T, int N>
-[[nodiscard]] SphereFit<T, N> fit_sphere_algebraic(const std::vector<Vec<T, N>>& pts,
-                                                   const FitOptions<T>& opt = {}) {
-  return fit_sphere_algebraic(std::span<const Vec<T, N>>(pts), opt);
+template <PointRange R>
+[[nodiscard]] SphereFit<range_scalar_t<R>, range_dimension_v<R>> fit_sphere_algebraic(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_sphere_algebraic(point_span(pts), opt);
 }
 
 /// Geometric least-squares sphere by Levenberg-Marquardt (see the top comment).
@@ -187,6 +192,7 @@ template <class T, int N>
       detail::algebraic_sphere<C>(pts, detail::fit_rank_tolerance(opt));
   if (pr.status != Status::ok) {
     SphereFit<T, N> out;
+    out.status = Status::ok;
     out.status = pr.status;
     out.rms = std::numeric_limits<T>::quiet_NaN();
     return out;
@@ -246,10 +252,10 @@ template <class T, int N>
                                   it);
 }
 
-template <class T, int N>
-[[nodiscard]] SphereFit<T, N> fit_sphere(const std::vector<Vec<T, N>>& pts,
-                                         const FitOptions<T>& opt = {}) {
-  return fit_sphere(std::span<const Vec<T, N>>(pts), opt);
+template <PointRange R>
+[[nodiscard]] SphereFit<range_scalar_t<R>, range_dimension_v<R>> fit_sphere(
+    const R& pts, const FitOptions<range_scalar_t<R>>& opt = {}) {
+  return fit_sphere(point_span(pts), opt);
 }
 
 }  // namespace locus

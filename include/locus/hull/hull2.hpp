@@ -43,6 +43,7 @@
 //
 // Cost: see the methods; memory O(n) scratch, reused across calls by ConvexHull2.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -124,11 +125,10 @@ template <Real T>
   return builder.compute(points, options);
 }
 
-/// The same for a vector of points.
-template <Real T>
-[[nodiscard]] Hull2Result convex_hull(const std::vector<Vec2<T>>& points,
-                                      const Hull2Options& options = {}) {
-  return convex_hull(std::span<const Vec2<T>>(points), options);
+/// The same for any point range (core/point_range.hpp).
+template <PointRange2 R>
+[[nodiscard]] Hull2Result convex_hull(const R& points, const Hull2Options& options = {}) {
+  return convex_hull(point_span(points), options);
 }
 
 extern template class ConvexHull2<float>;

@@ -41,6 +41,7 @@
 //
 // Cost: O(n) memory; ConvexHull3 keeps its buffers across calls.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -125,11 +126,10 @@ template <Real T>
   return builder.compute(points, options);
 }
 
-/// The same for a vector of points.
-template <Real T>
-[[nodiscard]] Hull3Result convex_hull(const std::vector<Vec3<T>>& points,
-                                      const Hull3Options& options = {}) {
-  return convex_hull(std::span<const Vec3<T>>(points), options);
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] Hull3Result convex_hull(const R& points, const Hull3Options& options = {}) {
+  return convex_hull(point_span(points), options);
 }
 
 extern template class ConvexHull3<float>;

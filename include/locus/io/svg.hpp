@@ -51,6 +51,7 @@
 // Book: the figures of chapters 2-5 (gallery/); the 3D camera is the pipeline of section 4.8.
 
 #include <locus/core/mat.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -111,26 +112,6 @@ struct SvgCamera {
   double near = 1e-3;
 };
 
-namespace detail {
-template <class V>
-struct is_vec2 : std::false_type {};
-template <Real T>
-struct is_vec2<Vec2<T>> : std::true_type {};
-template <class V>
-struct is_vec3 : std::false_type {};
-template <Real T>
-struct is_vec3<Vec3<T>> : std::true_type {};
-}  // namespace detail
-
-/// A contiguous range of Vec2<float> or Vec2<double> (std::vector, std::array, std::span, ...).
-template <class R>
-concept SvgPoints2 = std::ranges::contiguous_range<R> && std::ranges::sized_range<R> &&
-    detail::is_vec2<std::remove_cv_t<std::ranges::range_value_t<R>>>::value;
-/// A contiguous range of Vec3<float> or Vec3<double>.
-template <class R>
-concept SvgPoints3 = std::ranges::contiguous_range<R> && std::ranges::sized_range<R> &&
-    detail::is_vec3<std::remove_cv_t<std::ranges::range_value_t<R>>>::value;
-
 /// Collects 2D (and projected 3D) geometry and emits it as an SVG document.
 class SvgWriter {
  public:
@@ -179,18 +160,18 @@ class SvgWriter {
     add_arrow(d2(from), d2(to), s);
   }
   /// An open polyline (closed = true joins the last vertex to the first; it is filled then).
-  template <SvgPoints2 R>
+  template <PointRange2 R>
   void polyline(const R& pts, const SvgStyle& s = {}, bool closed = false) {
     add_polyline(to_d2(pts), closed, s);
   }
   /// A polygon, filled with the even-odd rule; `rings` are its outer boundary and holes.
-  template <SvgPoints2 R>
+  template <PointRange2 R>
   void polygon(const R& outer, const SvgStyle& s = {}) {
     std::vector<std::vector<Vec2d>> rings;
     rings.push_back(to_d2(outer));
     add_polygon(std::move(rings), s);
   }
-  template <SvgPoints2 R, class H>
+  template <PointRange2 R, class H>
   void polygon(const R& outer, const H& holes, const SvgStyle& s) {
     std::vector<std::vector<Vec2d>> rings;
     rings.push_back(to_d2(outer));
@@ -236,7 +217,7 @@ class SvgWriter {
   void arrow(const Vec3<T>& from, const Vec3<T>& to, const SvgStyle& s = {}) {
     add_segment3(d3(from), d3(to), true, s);
   }
-  template <SvgPoints3 R>
+  template <PointRange3 R>
   void polyline(const R& pts, const SvgStyle& s = {}, bool closed = false) {
     add_polyline3(to_d3(pts), closed, s);
   }

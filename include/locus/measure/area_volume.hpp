@@ -23,6 +23,7 @@
 // or inf as IEEE arithmetic does; empty input gives 0 (centroid: the zero vector). Cost O(n),
 // no allocation. Book: appendix C (areas of polygons, volumes of polyhedra); no figure.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/rescale.hpp>
@@ -153,6 +154,35 @@ template <class T>
     sum += length(cross(vec_cast<C>(v[t[1]]) - a, vec_cast<C>(v[t[2]]) - a));
   }
   return static_cast<T>(C(0.5) * sum);
+}
+
+// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] inline Vec3<range_scalar_t<R>> polygon_vector_area(const R& p) noexcept {
+  return polygon_vector_area(point_span(p));
+}
+template <PointRange3 R>
+[[nodiscard]] inline range_scalar_t<R> polygon_area(const R& p) noexcept {
+  return polygon_area(point_span(p));
+}
+template <PointRange3 R>
+[[nodiscard]] inline Vec3<range_scalar_t<R>> polygon_centroid(const R& p) noexcept {
+  return polygon_centroid(point_span(p));
+}
+template <PointRange3 R>
+[[nodiscard]] inline range_scalar_t<R> mesh_signed_volume(
+    const R& v, std::span<const std::array<std::uint32_t, 3>> tris) noexcept {
+  return mesh_signed_volume(point_span(v), tris);
+}
+template <PointRange3 R>
+[[nodiscard]] inline range_scalar_t<R> mesh_volume(
+    const R& v, std::span<const std::array<std::uint32_t, 3>> tris) noexcept {
+  return mesh_volume(point_span(v), tris);
+}
+template <PointRange3 R>
+[[nodiscard]] inline range_scalar_t<R> mesh_surface_area(
+    const R& v, std::span<const std::array<std::uint32_t, 3>> tris) noexcept {
+  return mesh_surface_area(point_span(v), tris);
 }
 
 }  // namespace locus

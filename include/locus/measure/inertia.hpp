@@ -34,6 +34,7 @@
 // open mesh gives values that depend on r. Cost O(n), no allocation.
 
 #include <locus/core/mat.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -50,22 +51,23 @@ namespace locus {
 /// Mass properties of a solid: mass = density * volume, inertia about the centroid.
 template <class T>
 struct MassProperties3 {
-  Status status;
-  T volume;
-  T mass;
-  Vec3<T> centroid;
-  Mat3<T> inertia;
+  Status status = Status::empty_input;
+  T volume{};
+  T mass{};
+  Vec3<T> centroid{};
+  Mat3<T> inertia{};
 };
 
 /// Area properties of a polygon: second moments about the centroid, polar = trace.
 template <class T>
 struct MassProperties2 {
-  Status status;
-  T area;
-  T mass;
-  Vec2<T> centroid;
-  Mat2<T> second_moment;  ///< [int x^2, int xy; int xy, int y^2] about the centroid, times density
-  T polar_moment;         ///< int (x^2 + y^2) about the centroid, times density
+  Status status = Status::empty_input;
+  T area{};
+  T mass{};
+  Vec2<T> centroid{};
+  Mat2<T>
+      second_moment{};  ///< [int x^2, int xy; int xy, int y^2] about the centroid, times density
+  T polar_moment{};     ///< int (x^2 + y^2) about the centroid, times density
 };
 
 /// Mass properties of the solid bounded by a closed triangle mesh with outward normals.
@@ -134,6 +136,14 @@ template <class T>
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) out.inertia(i, j) = static_cast<T>(inertia(i, j));
   return out;
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] inline MassProperties3<range_scalar_t<R>> mass_properties(
+    const R& v, std::span<const std::array<std::uint32_t, 3>> tris,
+    range_scalar_t<R> density = range_scalar_t<R>(1)) noexcept {
+  return mass_properties(point_span(v), tris, density);
 }
 
 /// Area, centroid and second moments of a polygon (either orientation) with density rho.

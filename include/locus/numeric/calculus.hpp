@@ -157,7 +157,7 @@ struct Contour {
 
 template <class T>
 struct LevelSet {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   std::vector<Contour<T>> contours;
 
   [[nodiscard]] int closed_count() const noexcept {
@@ -198,6 +198,7 @@ template <Real T>
                                     const LevelSetOptions& opt = {}) {
   using C = compute_t<T>;
   LevelSet<T> out;
+  out.status = Status::ok;
   const int nx = grid.nx, ny = grid.ny;
   if (nx < 2 || ny < 2) {
     out.status = Status::empty_input;
@@ -369,7 +370,7 @@ struct CriticalPoint2 {
 
 template <class T>
 struct CriticalPoints2 {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   std::vector<CriticalPoint2<T>> points;  ///< sorted by x, then y
 };
 
@@ -394,6 +395,7 @@ requires std::is_invocable_r_v<T, F&, Vec2<T>> && std::is_invocable_r_v<Vec2<T>,
                        const CriticalPointOptions<T>& opt = {}) {
   using C = compute_t<T>;
   CriticalPoints2<T> out;
+  out.status = Status::ok;
   if (!is_finite(lo) || !is_finite(hi)) {
     out.status = Status::non_finite_input;
     return out;
@@ -527,6 +529,7 @@ template <Real T>
                                                     const CriticalPointOptions<T>& opt = {}) {
   using C = compute_t<T>;
   CriticalPoints2<T> out;
+  out.status = Status::ok;
   const int nx = grid.nx, ny = grid.ny;
   if (nx < 3 || ny < 3) {
     out.status = Status::empty_input;
@@ -615,7 +618,7 @@ struct CriticalPoint1 {
 
 template <class T>
 struct CriticalPoints1 {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   std::vector<CriticalPoint1<T>> points;  ///< increasing x, interior and endpoints alike
   T min_x = T(0), min_value = T(0);       ///< absolute minimum on [a, b] (endpoints included)
   T max_x = T(0), max_value = T(0);       ///< absolute maximum on [a, b]
@@ -650,6 +653,7 @@ template <Real T>
 [[nodiscard]] CriticalPoints1<T> critical_points(const Polynomial<T>& p, T a,
                                                  std::type_identity_t<T> b) {
   CriticalPoints1<T> r;
+  r.status = Status::ok;
   if (!locus::is_finite(a) || !locus::is_finite(b) || !is_finite(p)) {
     r.status = Status::non_finite_input;
     r.min_value = r.max_value = std::numeric_limits<T>::quiet_NaN();
@@ -697,6 +701,7 @@ requires std::is_invocable_r_v<T, F&, T> && std::is_invocable_r_v<T, DF&, T>
                                                     const CriticalPoints1Options& opt = {}) {
   using C = compute_t<T>;
   CriticalPoints1<T> r;
+  r.status = Status::ok;
   r.min_value = r.max_value = std::numeric_limits<T>::quiet_NaN();
   if (!locus::is_finite(a) || !locus::is_finite(b)) {
     r.status = Status::non_finite_input;

@@ -31,20 +31,20 @@ namespace locus {
 
 template <class T>
 struct QR {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   MatX<T> q;  ///< m x m orthogonal
   MatX<T> r;  ///< m x n upper triangular
 };
 
 template <class T>
 struct Cholesky {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   MatX<T> l;  ///< lower triangular, A = L L^T
 };
 
 template <class T>
 struct SVD {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   MatX<T> u;             ///< m x k, orthonormal columns
   std::vector<T> s;      ///< k singular values, descending
   MatX<T> v;             ///< n x k, orthonormal columns
@@ -53,7 +53,7 @@ struct SVD {
 
 template <class T>
 struct Polar {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   MatX<T> q;  ///< orthogonal
   MatX<T> s;  ///< symmetric positive semidefinite
 };
@@ -115,6 +115,7 @@ template <class T>
 [[nodiscard]] QR<T> qr(const MatX<T>& a_in) {
   using C = compute_t<T>;
   QR<T> out;
+  out.status = Status::ok;
   const int m = a_in.rows, n = a_in.cols;
   if (!is_finite(a_in)) {
     out.status = Status::non_finite_input;
@@ -143,6 +144,7 @@ template <class T>
 [[nodiscard]] Cholesky<T> cholesky(const MatX<T>& a_in, T symmetry_tolerance = T(64) * eps_v<T>) {
   using C = compute_t<T>;
   Cholesky<T> out;
+  out.status = Status::ok;
   const int n = a_in.rows;
   out.l = MatX<T>(n, n);
   if (a_in.rows != a_in.cols) {
@@ -186,6 +188,7 @@ template <class T>
 [[nodiscard]] SVD<T> svd(const MatX<T>& a_in, int max_sweeps = 64) {
   using C = compute_t<T>;
   SVD<T> out;
+  out.status = Status::ok;
   if (a_in.rows < a_in.cols) {  // A^T = V S U^T: factor the tall transpose
     SVD<T> t = svd(transpose(a_in), max_sweeps);
     std::swap(t.u, t.v);
@@ -309,6 +312,7 @@ template <class T>
 template <class T>
 [[nodiscard]] Polar<T> polar(const MatX<T>& a) {
   Polar<T> out;
+  out.status = Status::ok;
   if (a.rows != a.cols) {
     out.status = Status::invalid_input;
     return out;

@@ -33,14 +33,14 @@ namespace locus {
 
 template <class T, int N>
 struct SymmetricEigen {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   Vec<T, N> values{};       ///< ascending
   Mat<T, N, N> vectors{};   ///< column i is the unit eigenvector of values[i]
 };
 
 template <class T>
 struct SymmetricEigenX {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   std::vector<T> values;    ///< ascending
   MatX<T> vectors;          ///< column i is the unit eigenvector of values[i]
   int sweeps = 0;           ///< Jacobi sweeps used
@@ -123,6 +123,7 @@ template <class T>
                                                    const SymmetricEigenOptions<T>& opt = {}) noexcept {
   using C = compute_t<T>;
   SymmetricEigen<T, 2> out;
+  out.status = Status::ok;
   out.status = detail::check_symmetric(a, opt.symmetry_tolerance);
   if (out.status == Status::non_finite_input) {
     out.values = splat<T, 2>(std::numeric_limits<T>::quiet_NaN());
@@ -158,6 +159,7 @@ template <class T>
                                                    const SymmetricEigenOptions<T>& opt = {}) noexcept {
   using C = compute_t<T>;
   SymmetricEigen<T, 3> out;
+  out.status = Status::ok;
   out.status = detail::check_symmetric(a_in, opt.symmetry_tolerance);
   if (out.status == Status::non_finite_input) {
     out.values = splat<T, 3>(std::numeric_limits<T>::quiet_NaN());
@@ -243,6 +245,7 @@ template <class T>
                                                  const SymmetricEigenOptions<T>& opt = {}) {
   using C = compute_t<T>;
   SymmetricEigenX<T> out;
+  out.status = Status::ok;
   const int n = a_in.rows;
   if (a_in.rows != a_in.cols) {
     out.status = Status::invalid_input;

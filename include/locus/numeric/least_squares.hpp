@@ -52,7 +52,8 @@ enum class LstsqMethod : std::uint8_t {
 /// Result of least_squares().
 template <class T>
 struct LeastSquares {
-  Status status;     ///< ok; degenerate_input (rank < n); empty_input; non_finite_input
+  Status status =
+      Status::empty_input;  ///< ok; degenerate_input (rank < n); empty_input; non_finite_input
   std::vector<T> x;  ///< n unknowns
   T residual_norm;   ///< ||b - A x||_2
   int rank;          ///< numerical rank of A

@@ -83,7 +83,7 @@ namespace locus {
 /// Three abscissae bracketing a minimum: f(b) < f(a) and f(b) <= f(c), b between a and c.
 template <class T>
 struct Bracket {
-  Status status = Status::ok;  ///< ok, non_finite_input, limit_exceeded (no bracket found)
+  Status status = Status::empty_input;  ///< ok, non_finite_input, limit_exceeded (no bracket found)
   T a{}, b{}, c{};
   T fa{}, fb{}, fc{};
   int evaluations = 0;
@@ -92,7 +92,7 @@ struct Bracket {
 /// Result of a one-dimensional minimisation.
 template <class T>
 struct Minimum1 {
-  Status status = Status::ok;  ///< ok, non_finite_input, limit_exceeded
+  Status status = Status::empty_input;  ///< ok, non_finite_input, limit_exceeded
   T x{};                       ///< the best abscissa found
   T value{};                   ///< f(x)
   int iterations = 0;
@@ -123,6 +123,7 @@ inline constexpr double golden_section = 0.381966011250105151795413165634362;  /
 template <class T, class F>
 Minimum1<T> brent_core(F& f, T a, T b, T x, T fx, const BrentOptions<T>& opt, int evals) {
   Minimum1<T> out;
+  out.status = Status::ok;
   if (a > b) std::swap(a, b);
   T w = x, v = x, fw = fx, fv = fx;
   T d = T(0), e = T(0);  // the last step and the one before it
@@ -212,6 +213,7 @@ Minimum1<T> brent_core(F& f, T a, T b, T x, T fx, const BrentOptions<T>& opt, in
 template <class T, class F>
 [[nodiscard]] Bracket<T> bracket_minimum(F&& f, T a, T b, int max_evaluations = 64) noexcept {
   Bracket<T> out;
+  out.status = Status::ok;
   if (!is_finite(a) || !is_finite(b)) {
     out.status = Status::non_finite_input;
     return out;
@@ -259,6 +261,7 @@ template <class T, class F>
                                          const BrentOptions<T>& opt = {}) noexcept {
   if (!is_finite(lo) || !is_finite(hi)) {
     Minimum1<T> out;
+    out.status = Status::ok;
     out.status = Status::non_finite_input;
     out.x = out.value = std::numeric_limits<T>::quiet_NaN();
     return out;
@@ -275,6 +278,7 @@ template <class T, class F>
                                          const BrentOptions<T>& opt = {}) noexcept {
   if (br.status == Status::non_finite_input || !is_finite(br.a) || !is_finite(br.c)) {
     Minimum1<T> out;
+    out.status = Status::ok;
     out.status = Status::non_finite_input;
     out.x = out.value = std::numeric_limits<T>::quiet_NaN();
     return out;
@@ -288,7 +292,7 @@ template <class T, class F>
 /// Result of an N-dimensional minimisation.
 template <class T, int N>
 struct MinimumN {
-  Status status = Status::ok;  ///< ok, non_finite_input, limit_exceeded
+  Status status = Status::empty_input;  ///< ok, non_finite_input, limit_exceeded
   Vec<T, N> x{};               ///< the best point found
   T value{};                   ///< f(x)
   int iterations = 0;          ///< direction-set sweeps
@@ -313,6 +317,7 @@ template <class T, int N, class F>
 [[nodiscard]] MinimumN<T, N> minimize_powell(F&& f, const Vec<T, N>& x0,
                                              const PowellOptions<T>& opt = {}) noexcept {
   MinimumN<T, N> out;
+  out.status = Status::ok;
   out.x = x0;
   if (!is_finite(x0) || !is_finite(opt.initial_step)) {
     out.status = Status::non_finite_input;
@@ -415,7 +420,7 @@ struct QuadraticOptions {
 /// constraints; then `multipliers` has one entry per constraint row).
 template <class T, int N, int M = 1>
 struct QuadraticMinimum {
-  Status status = Status::ok;  ///< ok, degenerate_input, invalid_input, non_finite_input
+  Status status = Status::empty_input;  ///< ok, degenerate_input, invalid_input, non_finite_input
   Vec<T, N> x{};
   T value{};                ///< f(x)
   Vec<T, M> multipliers{};  ///< constrained form: grad f(x) + C^T multipliers = 0 (zero for
@@ -425,7 +430,7 @@ struct QuadraticMinimum {
 /// Minimiser of a quadratic form on a sphere.
 template <class T, int N>
 struct SphereQuadraticExtremum {
-  Status status = Status::ok;  ///< ok, invalid_input, non_finite_input, limit_exceeded
+  Status status = Status::empty_input;  ///< ok, invalid_input, non_finite_input, limit_exceeded
   Vec<T, N> x{};
   T value{};           ///< f(x)
   T multiplier{};      ///< mu with grad f(x) = 2 mu (x - center)
@@ -508,6 +513,7 @@ template <class T, int N>
                                                         const QuadraticOptions<T>& opt = {}) {
   using C = compute_t<T>;
   QuadraticMinimum<T, N> out;
+  out.status = Status::ok;
   out.status = detail::check_quadratic(a, b, c);
   if (out.status != Status::ok) {
     out.value = std::numeric_limits<T>::quiet_NaN();
@@ -535,6 +541,7 @@ template <class T, int N, int M>
   static_assert(M <= N, "minimize_quadratic: more constraints than unknowns");
   using C = compute_t<T>;
   QuadraticMinimum<T, N, M> out;
+  out.status = Status::ok;
   out.status = detail::check_quadratic(a, b, c);
   if (out.status == Status::ok && (!is_finite(constraint) || !is_finite(rhs)))
     out.status = Status::non_finite_input;
@@ -627,6 +634,7 @@ template <class T, int N>
     const QuadraticOptions<T>& opt = {}) {
   using C = compute_t<T>;
   SphereQuadraticExtremum<T, N> out;
+  out.status = Status::ok;
   out.status = detail::check_quadratic(a, b, c);
   if (out.status == Status::ok && (!is_finite(center) || !is_finite(radius)))
     out.status = Status::non_finite_input;

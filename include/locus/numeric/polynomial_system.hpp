@@ -184,7 +184,7 @@ struct QuadraticIntersectionOptions {
 
 template <class T>
 struct QuadraticCurvesIntersection {
-  Status status = Status::ok;  ///< ok, non_finite_input, degenerate_input (a zero curve)
+  Status status = Status::empty_input;  ///< ok, non_finite_input, degenerate_input (a zero curve)
   int count = 0;               ///< number of distinct intersection points listed
   std::array<Vec2<T>, 4> point{};
   std::array<int, 4> multiplicity{};  ///< 2 at a tangency (intersection multiplicity)
@@ -248,6 +248,7 @@ template <Real T>
     const QuadraticIntersectionOptions& opt = {}) noexcept {
   using namespace detail::polysys;
   QuadraticCurvesIntersection<T> res;
+  res.status = Status::ok;
   const T in[12] = {q1.a, q1.b, q1.c, q1.d, q1.e, q1.f, q2.a, q2.b, q2.c, q2.d, q2.e, q2.f};
   for (const T& v : in)
     if (!locus::is_finite(v)) {

@@ -80,7 +80,7 @@ namespace locus {
 /// Parameters and points sampled along a curve, with the outcome of the scheme.
 template <class T, int N>
 struct CurveSamples {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   std::vector<T> params;          ///< from t0 to t1 (monotone), both ends included exactly
   std::vector<Vec<T, N>> points;  ///< points[i] = curve(params[i])
 };
@@ -88,7 +88,7 @@ struct CurveSamples {
 /// Length of a curve, with the outcome of the quadrature.
 template <class T>
 struct ArcLength {
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   T length = T(0);
   int evaluations = 0;  ///< derivative evaluations used
 };
@@ -215,7 +215,7 @@ struct Leaf {
 template <class T>
 struct LengthTable {
   using C = compute_t<T>;
-  Status status = Status::ok;
+  Status status = Status::empty_input;
   std::vector<Leaf<C>> leaves;  // ordered from u = 0 to u = 1
   C total = C(0);
   int evaluations = 0;
@@ -240,6 +240,7 @@ template <class T, class Speed>
 LengthTable<T> length_table(Speed& speed, T t0, T t1, const ArcLengthOptions<T>& opt) {
   using C = compute_t<T>;
   LengthTable<T> tab;
+  tab.status = Status::ok;
   struct Item {
     C ua, ub, whole;
     int depth;
@@ -318,6 +319,7 @@ template <class T, int N, class F>
 CurveSamples<T, N> uniform(F& curve, T t0, T t1, int count, Status status) {
   using C = compute_t<T>;
   CurveSamples<T, N> out;
+  out.status = Status::ok;
   out.status = status;
   out.params.reserve(static_cast<std::size_t>(count));
   out.points.reserve(static_cast<std::size_t>(count));
@@ -335,6 +337,7 @@ CurveSamples<T, N> arc_length_samples(F& curve, Speed& speed, T t0, T t1, int co
                                       const ArcLengthOptions<T>& opt) {
   using C = compute_t<T>;
   CurveSamples<T, N> out;
+  out.status = Status::ok;
   if (count < 2 || !(opt.relative_tolerance >= T(0))) {
     out.status = Status::invalid_input;
     return out;
@@ -422,6 +425,7 @@ CurveSamples<T, N> adaptive(F& curve, T t0, T t1, T tol, const SubdivisionOption
                             Accept&& accept) {
   using C = compute_t<T>;
   CurveSamples<T, N> out;
+  out.status = Status::ok;
   if (!(tol >= T(0)) || opt.max_points < 2 || opt.min_depth < 0 || opt.max_depth < 0) {
     out.status = Status::invalid_input;
     return out;

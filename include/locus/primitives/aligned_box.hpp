@@ -22,6 +22,7 @@
 // Everything is O(N) (corners O(N 2^N)); no allocation.
 
 #include <locus/config.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 
@@ -91,6 +92,13 @@ template <class T, int N>
   AlignedBox<T, N> b = empty_box<T, N>();
   for (const auto& p : pts) b = expand(b, p);
   return b;
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange R>
+[[nodiscard]] constexpr AlignedBox<range_scalar_t<R>, range_dimension_v<R>> bounding_box(
+    const R& pts) noexcept {
+  return bounding_box(point_span(pts));
 }
 
 /// The bounding box of n points starting at pts.

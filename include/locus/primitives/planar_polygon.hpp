@@ -18,6 +18,7 @@
 // three vertices, a non-finite coordinate, or a zero Newell normal (collinear or coincident
 // vertices, or a polygon whose signed areas cancel). Cost O(n); the result owns a vector.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/primitives/plane.hpp>
@@ -70,6 +71,13 @@ template <class T>
   poly.polygon.vertices.reserve(vertices.size());
   for (const Vec3<T>& v : vertices) poly.polygon.vertices.push_back(to_plane(*frame, v));
   return poly;
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] inline std::optional<PlanarPolygon3<range_scalar_t<R>>> planar_polygon(
+    const R& vertices) {
+  return planar_polygon(point_span(vertices));
 }
 
 }  // namespace locus

@@ -39,8 +39,9 @@
 // functions, which are O(n); no allocation.
 
 #include <locus/config.hpp>
-#include <locus/core/scalar.hpp>
 #include <locus/core/basis.hpp>
+#include <locus/core/point_range.hpp>
+#include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/primitives/triangle.hpp>
 
@@ -239,6 +240,17 @@ template <class T>
 [[nodiscard]] inline std::optional<Plane3<T>> best_fit_plane_newell(const Vec3<T>* p,
                                                                     std::size_t n) noexcept {
   return best_fit_plane_newell(std::span<const Vec3<T>>(p, n));
+}
+
+// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] constexpr Vec3<range_scalar_t<R>> newell_normal(const R& p) noexcept {
+  return newell_normal(point_span(p));
+}
+template <PointRange3 R>
+[[nodiscard]] inline std::optional<Plane3<range_scalar_t<R>>> best_fit_plane_newell(
+    const R& p) noexcept {
+  return best_fit_plane_newell(point_span(p));
 }
 
 }  // namespace locus

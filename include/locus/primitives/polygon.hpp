@@ -9,8 +9,8 @@
 // vertex is not repeated). PolygonWithHoles2<T> {outer, holes}: a region bounded by `outer`
 // minus the regions bounded by the holes (the usual convention, not enforced here: outer
 // counter-clockwise, holes clockwise, holes strictly inside outer and pairwise disjoint).
-// Every function also exists for bulk data as polygon_*(std::span<const Vec2<T>>); call it as
-// polygon_area<double>(vec) or with an explicit span.
+// Every function also exists for bulk data as polygon_*(points), points any point range
+// (std::vector, std::array, std::span, point_span<2>(xy, n); core/point_range.hpp).
 //
 // Robustness. Combinatorial answers are EXACT for every finite input (orient2d of
 // core/predicates.hpp and exact coordinate comparisons; projections onto a direction by
@@ -53,6 +53,7 @@
 // gives. Empty, 1- and 2-vertex polygons: area 0, not simple, not convex, orientation zero.
 
 #include <locus/config.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -525,6 +526,50 @@ template <class T>
   }
   if (!(total != C(0)) || !is_finite(total)) return centroid(p.outer);
   return vec_cast<T>(acc / total);
+}
+
+// The polygon_* functions for any point range (core/point_range.hpp).
+template <PointRange2 R>
+[[nodiscard]] inline range_scalar_t<R> polygon_signed_area(const R& v) noexcept {
+  return polygon_signed_area(point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline range_scalar_t<R> polygon_area(const R& v) noexcept {
+  return polygon_area(point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline range_scalar_t<R> polygon_perimeter(const R& v) noexcept {
+  return polygon_perimeter(point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline range_point_t<R> polygon_centroid(const R& v) noexcept {
+  return polygon_centroid(point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline Sign polygon_orientation(const R& v) noexcept {
+  return polygon_orientation(point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline bool polygon_is_convex(const R& v) noexcept {
+  return polygon_is_convex(point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline std::optional<std::pair<std::size_t, std::size_t>> polygon_self_intersection(
+    const R& v) {
+  return polygon_self_intersection(point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline bool polygon_is_simple(const R& v) {
+  return polygon_is_simple(point_span(v));
+}
+template <PointRange2 R>
+[[nodiscard]] inline MonotoneSplit polygon_monotone_split(const R& v,
+                                                          const range_point_t<R>& d) noexcept {
+  return polygon_monotone_split(point_span(v), d);
+}
+template <PointRange2 R>
+[[nodiscard]] inline bool polygon_is_monotone(const R& v, const range_point_t<R>& d) noexcept {
+  return polygon_is_monotone(point_span(v), d);
 }
 
 }  // namespace locus

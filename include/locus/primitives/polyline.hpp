@@ -29,6 +29,7 @@
 // except cumulative_lengths (which returns a vector).
 
 #include <locus/config.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/core/exact_sum.hpp>
@@ -183,6 +184,36 @@ template <class T>
       return false;
   }
   return true;
+}
+
+// The same for any point range (core/point_range.hpp).
+template <PointRange R>
+[[nodiscard]] constexpr Segment<range_scalar_t<R>, range_dimension_v<R>> edge(
+    const R& v, std::size_t i) noexcept {
+  return edge(point_span(v), i);
+}
+template <PointRange R>
+[[nodiscard]] inline range_scalar_t<R> polyline_length(const R& v, bool closed) noexcept {
+  return polyline_length(point_span(v), closed);
+}
+template <PointRange R>
+[[nodiscard]] inline range_point_t<R> polyline_point_at(const R& v, bool closed,
+                                                        range_scalar_t<R> t) noexcept {
+  return polyline_point_at(point_span(v), closed, t);
+}
+template <PointRange R>
+[[nodiscard]] inline std::vector<range_scalar_t<R>> cumulative_lengths(const R& v, bool closed) {
+  return cumulative_lengths(point_span(v), closed);
+}
+template <PointRange R>
+[[nodiscard]] inline range_point_t<R> polyline_point_at_arc_length(
+    const R& v, bool closed, std::span<const range_scalar_t<R>> cum, range_scalar_t<R> s) noexcept {
+  return polyline_point_at_arc_length(point_span(v), closed, cum, s);
+}
+template <PointRange2 R>
+[[nodiscard]] inline bool is_monotone_chain(const R& v, const range_point_t<R>& d,
+                                            bool strict = false) noexcept {
+  return is_monotone_chain(point_span(v), d, strict);
 }
 
 }  // namespace locus

@@ -37,7 +37,7 @@ struct Rectangle {
   static_assert(N == 2 || N == 3, "locus: Rectangle is defined in 2D and 3D");
   Vec<T, N> center;
   Vec<T, N> axis[2];
-  T extent[2];
+  Vec2<T> extent;  ///< half side lengths along axis[0], axis[1] (a Vec, as in OrientedBox)
 };
 
 /// Parametric form: a corner and two orthogonal edge vectors (book fig 5.6).

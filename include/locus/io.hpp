@@ -1,0 +1,8 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Umbrella header of locus's io area: SVG output.
+// Every public header of include/locus/io/ (not detail/). For users: nothing inside the library
+// includes an umbrella (cmake/check_layering.cmake checks it, and that the list is complete).
+
+#include <locus/io/svg.hpp>
+#include <locus/io/svg_primitives.hpp>
