@@ -23,8 +23,8 @@
 //
 // Degenerate input: NaN/infinite frames propagate NaN through to_world_*; inverse() returns
 // std::nullopt; to_frame() returns std::nullopt when the bottom row of the matrix is not
-// (0, ..., 0, 1) (a projective, not affine, matrix). Cost: to_world O(N^2); to_local O(N^3) for the inverse, O(N^2) with a precomputed inverse
-// frame; compose O(N^3).
+// (0, ..., 0, 1) (a projective, not affine, matrix). Cost: to_world O(N^2); to_local O(N^3) for the
+// inverse, O(N^2) with a precomputed inverse frame; compose O(N^3).
 
 #include <locus/core/basis.hpp>
 #include <locus/core/mat.hpp>
