@@ -12,11 +12,9 @@
 // Intervals use the rounded constant pi_v<T>: "(-pi, pi]" means [-pi_v, pi_v] with the exact
 // negative axis (y = +-0, x < 0) mapped to +pi_v.
 //
-// Robustness: the law of cosines is evaluated in the forms that avoid cancellation,
-// a^2 = (b - c)^2 + 4 b c sin^2(alpha / 2) for a side and Kahan's arctangent formula for an
-// angle ("Miscalculating Area and Angles of a Needle-like Triangle", 2014), so needle-shaped
-// triangles keep full relative accuracy; every solved angle comes from atan2 or Kahan's formula,
-// never from acos of a rounded cosine.
+// Robustness: the law of cosines is evaluated in cancellation-free forms (Kahan, "Miscalculating
+// Area and Angles of a Needle-like Triangle", 2014; docs/notes/core.md), so needle-shaped
+// triangles keep full relative accuracy; no solved angle comes from acos of a rounded cosine.
 //
 // Degenerate input: acos_clamped/asin_clamped clamp the argument to [-1, 1] (a cosine computed
 // as 1 + 1e-16 gives 0, not NaN); NaN stays NaN. Wrapping and atan2 helpers return NaN for NaN

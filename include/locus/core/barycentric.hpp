@@ -1,34 +1,27 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Barycentric coordinates (row core.affine; book section 3.3, figures 3.41, 3.42).
+// Barycentric coordinates (row core.affine; book section 3.3, figures 3.41, 3.42). Method (signed
+// sub-volumes relative to p; rank-revealing QR for a general simplex): docs/notes/core.md.
 //
 // Computes: the barycentric coordinates w of a point p with respect to a segment (a, b), a
 // triangle (a, b, c) in 2D and 3D, a tetrahedron (a, b, c, d), and a general simplex of K <= N + 1
 // vertices in N-D; and the inverse, the point sum w_i v_i (from_barycentric).
 //
-// Parametrisation: w[i] belongs to the i-th vertex argument and sum w = 1 (up to rounding).
-// When p is not in the affine hull of the simplex (a point off the segment's line, off the 3D
-// triangle's plane, a general simplex of lower dimension), the coordinates are those of its
-// orthogonal projection onto the hull: for a segment w = (1 - t, t) with t the projected
-// parameter; for a 3D triangle the signed sub-areas measured along the normal.
-//
-// Method: every coordinate is a ratio of signed sub-volumes taken relative to p (2D: perp_dot
-// of (v_j - p, v_k - p); 3D triangle: n . ((v_j - p) x (v_k - p)) / n . n; tetrahedron: triple
-// products), so each coordinate is computed independently and is exactly 1 at its own vertex;
-// the general simplex uses a rank-revealing modified Gram-Schmidt QR of the edges from v_0.
+// Parametrisation: w[i] belongs to the i-th vertex argument and sum w = 1 (up to rounding); each
+// coordinate is exactly 1 at its own vertex. When p is not in the affine hull of the simplex, the
+// coordinates are those of its orthogonal projection onto the hull (a segment: w = (1 - t, t),
+// t the projected parameter; a 3D triangle: signed sub-areas measured along the normal).
 //
 // Degenerate input: a simplex is flat when its volume is tiny relative to its longest edge:
 // |b - a| = 0 for a segment; |2 * area| <= tol * (longest edge)^2 for a triangle;
 // |6 * volume| <= tol * (longest edge)^3 for a tetrahedron; for a general simplex a vertex at
-// distance <= tol * (longest edge from v_0) from the hull of the previous ones. The default
-// tol = simplex_flat_tol_v<T> = 16 eps is the rounding level of these determinants. A flat
-// simplex returns valid = false and the coordinates w.r.t. a non-flat sub-simplex (the longest
-// edge of a flat triangle, the largest face of a flat tetrahedron, the greedily independent
-// vertices of a general simplex); the other weights are 0, and the weights still reproduce p's
-// projection onto the (lower-dimensional) hull. All vertices coincident: w = (1, 0, ...). NaN or
-// infinite input, or coordinates that overflow, give valid = false and w = (1, 0, ...). The
-// coordinates are never NaN.
-//
+// distance <= tol * (longest edge from v_0) from the hull of the previous ones (default
+// tol = simplex_flat_tol_v<T> = 16 eps). A flat simplex returns valid = false and the coordinates
+// w.r.t. a non-flat sub-simplex (the longest edge of a flat triangle, the largest face of a flat
+// tetrahedron, the greedily independent vertices of a general simplex), the other weights 0, so
+// they still reproduce p's projection onto the hull. All vertices coincident: w = (1, 0, ...).
+// NaN or infinite input, or coordinates that overflow, give valid = false and w = (1, 0, ...).
+// The coordinates are never NaN.
 // Cost: segment O(N); triangle 2D ~15 flops + 3 divisions; 3D ~60 flops; tetrahedron ~80;
 // simplex O(N K^2).
 

@@ -1,46 +1,30 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Spans and bases (row core.basis; book sections 3.1-3.2, figures 3.13, 3.14, 3.16, 3.17).
+// Method notes (Gram-Schmidt twice, the revised Frisvad completion): docs/notes/core.md.
 //
 // Computes: linear independence of K vectors in N-D, Gram-Schmidt orthonormalisation (with the
 // rank when the input is dependent), completion of an orthonormal right-handed basis from one or
 // two vectors, handedness and orthonormality tests, projection onto / rejection from the span of
 // K vectors, and the coordinates of a vector in a (possibly non-orthogonal) basis (figure 3.17).
+// Gram-Schmidt output is orthonormal to a few eps whatever the conditioning of the input, and the
+// span of the first k outputs equals the span of the independent inputs among the first k.
 //
-// Method: modified Gram-Schmidt with one re-orthogonalisation pass ("twice is enough"), applied
-// to the *normalised* inputs so that vectors of any magnitude are treated alike. The output is
-// orthonormal to a few eps regardless of the conditioning of the input, and the span of the
-// first k outputs equals the span of the independent inputs among the first k (order kept).
-//
-// Tolerance: a vector counts as dependent on the preceding ones when the length of its unit
-// vector's component orthogonal to their span is <= tol (the sine of its angle to that span).
-// The default independence_tol_v<T> = 64 eps is a rounding-level threshold: it separates
-// exactly dependent sets (whose computed residual is rounding noise, a few eps) from independent
-// ones; pass a larger tol (e.g. 1e-6) to treat nearly parallel vectors as dependent. The test is
-// greedy in input order: for two vectors it is |sin angle| <= tol, symmetric in the arguments.
-//
-// Orthonormal completion in 3D uses the branch-free method of Frisvad (2012) as revised by Duff,
-// Burgess, Christensen, Hery, Kensler, Liani and Villemin ("Building an Orthonormal Basis,
-// Revisited", JCGT 2017): the sign of z picks the stable form, so it is accurate for every unit
-// vector, including those near -z where Frisvad's original fails.
-//
-// Conventions: complete_basis keeps the given vector(s) first: axis[0] is along the first input,
-// axis[1] in the plane of the first two (towards the second), and the result is right-handed
-// (cross(axis[0], axis[1]) = axis[2] in 3D; axis[1] = perp(axis[0]) in 2D). A tangent frame
-// (t, b, n) for a normal n is (axis[1], axis[2], axis[0]), a cyclic and so still right-handed
-// reordering.
-//
-// Degenerate input: Gram-Schmidt reports status = degenerate_input and the rank (dependent
-// inputs, including zero vectors, are skipped; basis[rank..K) are zero vectors) or
-// non_finite_input (rank 0, all zero). complete_basis always returns an orthonormal right-handed
-// basis: from a zero or non-finite vector the standard basis with status degenerate_input /
-// non_finite_input; from two dependent vectors the completion of the first non-zero one with
-// status degenerate_input. basis_coordinates returns std::nullopt for a dependent or non-finite
-// basis. is_right_handed is the exact sign of the determinant (core/predicates.hpp): false for
-// dependent, NaN or infinite vectors.
-//
-// Cost: Gram-Schmidt O(N K^2) flops, about 2K square roots; complete_basis(Vec3) one square root
-// and two divisions.
+// Tolerance: a vector is dependent on the preceding ones when its unit vector's component
+// orthogonal to their span has length <= tol (the sine of its angle to that span); the default
+// independence_tol_v<T> = 64 eps separates exactly dependent sets from independent ones; pass a
+// larger tol (e.g. 1e-6) to treat nearly parallel vectors as dependent. Greedy in input order.
+// Conventions: complete_basis keeps the given vector(s) first: axis[0] along the first input,
+// axis[1] in the plane of the first two, right-handed (cross(axis[0], axis[1]) = axis[2] in 3D;
+// axis[1] = perp(axis[0]) in 2D). A tangent frame (t, b, n) for a normal n is (axis[1], axis[2],
+// axis[0]).
+// Degenerate input: Gram-Schmidt reports degenerate_input and the rank (dependent and zero
+// inputs skipped; basis[rank..K) zero) or non_finite_input (rank 0, all zero). complete_basis
+// always returns an orthonormal right-handed basis: the standard basis for a zero / non-finite
+// vector (degenerate_input / non_finite_input), the completion of the first non-zero one for two
+// dependent vectors (degenerate_input). basis_coordinates: std::nullopt for a dependent or
+// non-finite basis. is_right_handed is the exact sign of the determinant: false for dependent or
+// non-finite vectors. Cost: Gram-Schmidt O(N K^2), about 2K square roots.
 
 #include <locus/core/predicates.hpp>
 #include <locus/core/products.hpp>

@@ -14,7 +14,6 @@
 // frame g given in f's local coordinates, re-expressed in world coordinates:
 // to_matrix(compose(f, g)) = to_matrix(f) * to_matrix(g), so compose(inverse(B), A) converts
 // A-coordinates to B-coordinates (figures 4.6-4.8).
-//
 // Inverses: inverse(f) inverts a general basis (the closed-form adjugate inverse of mat.hpp,
 // N <= 4) and returns std::nullopt for a singular or non-finite basis; rigid_inverse(f) assumes
 // orthonormal axes and uses the transpose (cheap, exact up to the orthonormality of the input;
@@ -24,10 +23,8 @@
 //
 // Degenerate input: NaN/infinite frames propagate NaN through to_world_*; inverse() returns
 // std::nullopt; to_frame() returns std::nullopt when the bottom row of the matrix is not
-// (0, ..., 0, 1) (a projective, not affine, matrix).
-//
-// Cost: to_world O(N^2); to_local O(N^3) for the inverse, O(N^2) with a precomputed inverse
-// frame; compose O(N^3).
+// (0, ..., 0, 1) (a projective, not affine, matrix). Cost: to_world O(N^2); to_local O(N^3) for the
+// inverse, O(N^2) with a precomputed inverse frame; compose O(N^3).
 
 #include <locus/core/basis.hpp>
 #include <locus/core/mat.hpp>

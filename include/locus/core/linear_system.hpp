@@ -1,39 +1,28 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Square linear systems A x = b (row core.linsys; book chapter 2, figures 2.2 and 2.3).
+// Square linear systems A x = b (row core.linsys; book chapter 2, figures 2.2 and 2.3). The
+// condition-number reasoning: docs/notes/core.md.
 //
-// What is here:
 //   * solve_cramer(Mat2/Mat3, Vec) - closed form by Cramer's rule (det and adjugate of mat.hpp);
 //   * lu_factor / solve / determinant / inverse - Gaussian elimination with partial (row)
 //     pivoting, PA = LU, for compile-time N (Mat<T, N, N>, Vec<T, N>, Mat<T, N, K> for several
 //     right-hand sides) and run-time n (row-major std::span<const T> or std::vector<T>);
 //   * rank - Gaussian elimination with complete pivoting (rows and columns), any R x C.
+// Run-time matrices are row-major, element (r, c) at a[r * cols + c]; several right-hand sides
+// are an n x k row-major block (column j is one right-hand side).
 //
-// Layout of run-time matrices: row-major, element (r, c) at a[r * cols + c]; several right-hand
-// sides b are an n x k row-major block (column j of it is one right-hand side).
-//
-// Singular and near-singular systems (figure 2.3: one solution, none, or infinitely many). A
-// system is `singular` when elimination meets an exactly zero pivot (det == 0) or the computed
-// solution is not finite; x is then the zero vector and status is degenerate_input. Figure 2.3's
-// "none" and "infinitely many" cases are both singular; the solvers do not try to tell them
-// apart (rank() of A and of [A | b] does: equal ranks < n means infinitely many solutions).
-// `near_singular` also flags systems whose reciprocal condition number
-//     rcond = 1 / (||A|| ||A^-1||)
-// is <= rcond_tolerance: the computed x may then have no correct digits, since its relative
-// error is bounded by about n * eps * cond. rcond is scale-invariant (A and s A have the same),
-// so the tolerance is relative; the default n * eps (default_rcond_tolerance) flags exactly the
-// systems where that bound reaches 1. Cramer's rule uses the infinity norm and the exact adjugate;
-// the elimination solvers use the 1-norm with Hager's estimate of ||A^-1||_1 (Higham's variant,
-// O(n^2) after the factorisation; an underestimate by a small factor at worst).
-//
-// rank() counts pivots larger than rank_tolerance * max|a_ij| (default max(R, C) * eps):
-// complete pivoting makes the pivots track the singular values closely in practice.
+// `singular`: an exactly zero pivot (det == 0) or a non-finite solution; x is then zero and the
+// status degenerate_input (figure 2.3's "none" and "infinitely many" alike; rank() of A and
+// [A | b] tells them apart). `near_singular` also flags rcond = 1 / (||A|| ||A^-1||) <=
+// rcond_tolerance (default n * eps: where the error bound n * eps * cond reaches 1, so x may
+// have no correct digits); rcond is scale-invariant. Cramer uses the infinity norm, elimination
+// the 1-norm with Hager's estimate (at worst a small-factor underestimate).
+// rank() counts pivots larger than rank_tolerance * max|a_ij| (default max(R, C) * eps).
 //
 // Degenerate input: a NaN or infinite entry in A or b gives status non_finite_input, singular,
 // zero x, determinant NaN, rcond 0, and rank() returns -1. An empty system (n == 0) is ok with
 // an empty solution and determinant 1. Queries never throw; the run-time solvers allocate their
 // results (std::vector). Arithmetic is in T (no promotion of float).
-//
 // Cost: Cramer 2x2/3x3 O(1); factorisation n^3 / 3 multiply-adds; each extra right-hand side
 // n^2; condition estimate about 4 to 10 solves (n^2 each); inverse n^3; rank R C min(R, C).
 

@@ -2,51 +2,29 @@
 #pragma once
 // Projections as homogeneous matrices (row core.projection; book section 4.8, figures
 // 4.26-4.31), the standard camera matrices of a rendering pipeline, and the cross-ratio.
-//
-// Projection onto a plane. The target plane (a line when N = 2) passes through `point` with
-// normal `normal` (any nonzero length; it is normalised). Each function returns the
-// (N+1) x (N+1) homogeneous matrix acting on column vectors (x, 1) (the transpose of the book's
-// row-vector matrix):
+// Projection onto the plane (a line when N = 2) through `point` with normal `normal` (any
+// nonzero length), as (N+1) x (N+1) matrices on column vectors (x, 1) (the book's transpose):
 //   orthographic_projection(point, normal)       x -> x - ((x - point) . n) n          (4.26)
-//   oblique_projection(point, normal, dir)       x -> x - ((x - point) . n)/(dir . n) dir
-//                                                (parallel projection along dir; 4.27, 4.28)
-//   perspective_projection(eye, point, normal)   x -> the point where the line eye-x meets
-//                                                the plane (4.29); homogeneous, last row
-//                                                (n, -n . eye), so w = (x - eye) . n
-// Orthographic and oblique projections are affine (last row 0 ... 0 1); all three are singular
-// (rank N), so they have no inverse. std::nullopt: zero or non-finite normal; a direction
-// parallel to the plane (dir . n = 0 exactly) or zero; an eye on the plane; any non-finite
-// entry. Points x with (x - eye) . n = 0 (on the plane through the eye parallel to the target)
-// have no image: w = 0, and apply_projective() returns std::nullopt for them.
-//
-// Camera matrices (3D only; OpenGL conventions, right-handed):
-//   look_at(eye, target, up)     view matrix: the camera at eye looks down its -z axis towards
-//                                target, +y is the part of `up` orthogonal to the view direction,
-//                                +x = right. std::nullopt for eye == target, zero up, up parallel
-//                                to the view direction, non-finite input.
-//   perspective_frustum(l, r, b, t, n, f, depth)   (n = z_near, f = z_far) view-space frustum
-//                                with apex at the origin, near rectangle [l, r] x [b, t] at
-//                                z = -n, far plane z = -f, 0 < n < f; to clip space with
-//                                w = -z_view.
-//   perspective_fov(fovy, aspect, n, f, depth)     symmetric frustum; 0 < fovy < pi, aspect > 0.
-//   orthographic_box(l, r, b, t, n, f, depth)      the box [l, r] x [b, t] x [-f, -n], n != f.
-// After the homogeneous divide, the frustum/box maps to [-1, 1]^2 x depth range, where
-// DepthRange::minus_one_to_one maps the near plane to -1 and the far plane to +1 (OpenGL) and
-// DepthRange::zero_to_one maps them to 0 and 1 (Direct3D, Vulkan). std::nullopt for l = r,
-// b = t, invalid near/far or non-finite input.
-// project_point(m, p) applies m to (p, 1) and divides by w; it reports w <= 0 (the point is on
-// or behind the eye plane, where the divide would mirror it) with in_front = false.
-//
-// Cross-ratio (figure 4.30): of four collinear points A, B, C, D with signed positions a, b, c, d
-// along their line, (A, B; C, D) = ((c - a)(d - b)) / ((c - b)(d - a)). It is invariant under
-// perspective projection (figure 4.31) and every projective map of the line. std::nullopt when
-// C = B or D = A (the ratio is infinite or undefined) or any input is not finite. The point
-// version measures positions along the longest of B - A, C - A, D - A; points off that line are
-// projected onto it orthogonally (the points are assumed collinear; that is not checked).
-//
-// Accuracy: entries are rounded products of the inputs; nothing divides by an exact zero.
-// Near-parallel oblique directions, eyes close to the plane, and extreme near/far ratios give
-// large but finite (or std::nullopt, never Inf) entries. Cost: O(N^2), no allocation.
+//   oblique_projection(point, normal, dir)       parallel projection along dir   (4.27, 4.28)
+//   perspective_projection(eye, point, normal)   where the line eye-x meets the plane (4.29);
+//                                                last row (n, -n . eye), w = (x - eye) . n
+// All are singular (rank N). std::nullopt: zero or non-finite normal; dir zero or parallel to the
+// plane (dir . n = 0 exactly); an eye on the plane; any non-finite entry. apply_projective()
+// returns std::nullopt for points with w = 0 (on the plane through the eye parallel to the target).
+// Camera matrices (3D, OpenGL conventions, right-handed, column vectors):
+//   look_at(eye, target, up)   the camera at eye looks down its -z axis; +y the part of up
+//                              orthogonal to the view direction. nullopt for eye == target, zero
+//                              up, up parallel to the view, non-finite input.
+//   perspective_frustum(l, r, b, t, n, f, depth), perspective_fov(fovy, aspect, n, f, depth)
+//   (0 < n < f, 0 < fovy < pi, aspect > 0), orthographic_box(l, r, b, t, n, f, depth) (n != f):
+//   the frustum/box maps to [-1, 1]^2 x the depth range: DepthRange::minus_one_to_one (near -1,
+//   far +1, OpenGL) or zero_to_one (Direct3D, Vulkan). nullopt for l = r, b = t, invalid
+//   near/far or non-finite input. project_point(m, p) divides by w; w <= 0 gives in_front = false.
+// Cross-ratio (figures 4.30, 4.31) of collinear A, B, C, D at signed positions a, b, c, d:
+// ((c - a)(d - b)) / ((c - b)(d - a)), invariant under projective maps of the line; nullopt
+// when C = B, D = A or input is not finite. The point version measures along the longest of
+// B - A, C - A, D - A (collinearity assumed, not checked).
+// Near-degenerate set-ups give large but finite entries (or nullopt, never Inf). Cost: O(N^2).
 
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>

@@ -1,31 +1,22 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // 3D rotation representations and conversions between them (row core.rotation; book appendix A,
-// figure A.1 for the rotation/scale split of a general linear map).
+// figure A.1 for the rotation/scale split of a general linear map). The gimbal-lock accuracy
+// argument: docs/notes/core.md.
 //
-// Representations:
 //   * rotation matrix  Mat3<T> R, column vectors: y = R * x, R^T R = I, det R = +1;
 //   * axis-angle       AxisAngle<T>{axis, angle}: right-handed rotation by `angle` radians about
 //                      the unit vector `axis` (counter-clockwise when the axis points at the eye);
 //   * quaternion       Quat<T>{w, x, y, z} of core/quat.hpp, q = (cos(t/2), sin(t/2) axis);
 //   * Euler angles     EulerAngles<T>{order, angles, unique}, the six Tait-Bryan orders.
-//
-// Euler angle convention. For order "ABC" with angles (a0, a1, a2):
-//     R = R_A(a0) * R_B(a1) * R_C(a2)        (matrix product, column vectors)
-// e.g. EulerOrder::xyz is R = Rx(a0) Ry(a1) Rz(a2), where Rx(t) = [[1,0,0],[0,c,-s],[0,s,c]],
-// Ry(t) = [[c,0,s],[0,1,0],[-s,0,c]], Rz(t) = [[c,-s,0],[s,c,0],[0,0,1]]. Read as motions of a
-// vector this is EXTRINSIC C, then B, then A (about the fixed world axes: a2 about C first), or
-// equivalently INTRINSIC A, then B', then C'' (about the body axes, which move with the body:
-// a0 about A first). Ranges of the output: a0, a2 in [-pi, pi], a1 in [-pi/2, pi/2].
-//
-// Gimbal lock: when cos(a1) is (near) zero only a0 + a2 (or a0 - a2) is determined. to_euler
-// reports unique = false when cos(a1) <= lock_tolerance (a named parameter; the default 16 eps
-// is a few roundings of the unit-size matrix entries), and returns the canonical solution
-// a2 = 0 with a1 = +-pi/2 (to rounding) and a0 carrying the whole sum. That solution reproduces
-// the matrix to about pi * lock_tolerance (the entries it drops are of size cos(a1) |a2|). Away
-// from the lock the first angle is recovered from the residual rotation R * R_C(-a2) * R_B(-a1), so
-// the round trip matrix -> angles -> matrix stays at rounding level even when cos(a1) is tiny (the
-// individual a0, a2 are then ill-conditioned, their combination is not).
+// Euler convention: order "ABC" with angles (a0, a1, a2) is R = R_A(a0) * R_B(a1) * R_C(a2)
+// (e.g. EulerOrder::xyz: Rx(a0) Ry(a1) Rz(a2), Rx(t) = [[1,0,0],[0,c,-s],[0,s,c]]): EXTRINSIC C,
+// B, A about the world axes, or INTRINSIC A, B', C'' about the body axes. Output ranges: a0, a2
+// in [-pi, pi], a1 in [-pi/2, pi/2].
+// Gimbal lock: to_euler reports unique = false when cos(a1) <= lock_tolerance (default 16 eps)
+// and returns a2 = 0, a1 = +-pi/2, a0 carrying the whole sum (reproducing the matrix to about
+// pi * lock_tolerance); elsewhere the round trip matrix -> angles -> matrix stays at rounding
+// level even when cos(a1) is tiny.
 //
 // Degenerate input: a zero or non-finite axis, a non-finite angle, a zero or non-finite
 // quaternion and a non-finite matrix all convert to the identity rotation (to_axis_angle gives

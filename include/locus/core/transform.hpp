@@ -1,64 +1,30 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Affine transformations of chapter 4 as matrices with inverses (rows core.xform, core.normals;
-// book sections 4.2-4.7 and 4.9, figures 3.19-3.22, 4.9-4.25, 4.32-4.34).
+// book sections 4.2-4.7 and 4.9, figures 3.19-3.22, 4.9-4.25, 4.32-4.34). The shear and normal
+// derivations: docs/notes/core.md.
 //
-// Affine<T, N> (N = 2 or 3) is the map x -> linear * x + translation. It converts to and from
-// the homogeneous (N+1) x (N+1) matrix [linear translation; 0 1], which acts on column vectors
-// (x, 1): y = M * x, and compositions read right to left (compose(a, b) applies b first). The
-// book writes row vectors, x M; every matrix here is the transpose of the book's.
-//
-// Factories (every one returns the exact homogeneous form of the book's transformation):
-//   translation(t)                           x -> x + t
-//   rotation_2d(angle), rotation(center, angle)          2D, counter-clockwise for angle > 0
-//   rotation_about_x/y/z(angle)              3D about a coordinate axis through the origin
-//   rotation(point, axis, angle)             3D about the line point + s*axis (Rodrigues);
-//                                            counter-clockwise when the axis points at the viewer
-//   scaling(center, s)                       uniform, fixing center
-//   scaling_axes(center, factors)            factor i along coordinate axis i, fixing center
-//   scaling_along(center, dir, s)            factor s along dir, 1 in the orthogonal complement
-//   scaling_along(center, D, factors)        factor i along column i of D (any independent set)
-//   reflection(point, normal)                mirror in the line (2D) / plane (3D) through point
-//   reflection_about_line(point, dir)        x -> 2 * foot(x) - x: a mirror in 2D, the half-turn
-//                                            about the line in 3D (reflection in a line)
-//   reflection_through_point(center)         x -> 2 * center - x
-//   shear(point, normal, dir, angle)         book's general shear (section 4.7, fig. 4.25), below
-//   shear_by_factor(point, normal, dir, k)   the same with k = tan(angle)
-//   shear(point, dir, angle)                 2D convenience: fixed line point + s*dir
-//
-// Shear parametrisation: the fixed (shear) hyperplane passes through `point` with unit normal
-// n = normal/|normal|; the shear direction w is `dir` projected into that hyperplane and
-// normalised. A point x moves along w by k * ((x - point) . n), k = tan(angle): the image of the
-// normal line through `point` makes the angle `angle` with n, tilted towards +w. The linear part
-// is I + k w n^T, whose determinant is 1 (areas/volumes are preserved); its inverse is the shear
-// with -angle. In 2D, shear(point, dir, angle) uses n = perp(dir) (counter-clockwise), so
-// shear({0, 0}, {1, 0}, a) is (x, y) -> (x + tan(a) y, y) (figure 4.23).
-//
-// Inverses: inverse(Affine) inverts any map; std::nullopt for a numerically singular linear part
-// (a zero scale factor, also when rounding leaves a tiny nonzero determinant: the criterion is
-// 1 / cond_F(L) <= affine_singular_tol_v = 32 eps, adjustable per call) and for non-finite maps.
-// The closed forms are: translation(-t); rotation with -angle; scaling with 1/s; reflections are
-// involutions; shear with -angle. The tests check every factory against both.
-//
-// Normals (core.normals, section 4.9): a normal n of a surface whose tangents t satisfy n.t = 0
-// must map so that n'.(L t) = 0 for every transformed tangent L t. normal_matrix() is
-// sign(det L) * cof(L), cof = the cofactor matrix = transpose(adjugate) = det(L) * L^{-T}, so it
-// equals |det L| * L^{-T}: the book's inverse transpose up to a positive factor, with the same
-// orientation (an outward normal stays outward, also under reflections). Because it is built
-// from cofactors it stays defined for singular L; then n' is still orthogonal to every
-// transformed tangent (cof(L)^T L = det(L) I = 0) but may be the zero vector when the surface is
-// collapsed to a lower dimension. apply_normal() does not normalise. normal_from_tangents(a, t0,
-// t1) = cross(L t0, L t1) follows the orientation of the tangent pair instead, so under a
-// reflection it points the opposite way from apply_normal (figure 4.34 versus 4.33).
-//
-// Degenerate input: a zero axis, normal or direction specifies no transformation and gives the
-// identity (documented per factory); a non-finite axis/normal/direction gives an all-NaN map
-// so that the error is visible downstream (inverse() of it is std::nullopt). A NaN or infinite
-// angle or factor propagates into the entries through IEEE arithmetic. Nothing divides by zero:
-// factories normalise with locus::normalize, which is safe on zero vectors.
-//
-// Cost: every factory and query is O(N^2) or O(N^3) flops with N <= 3, no allocation. All
-// functions are noexcept; those without sqrt/trig are constexpr.
+// Affine<T, N> (N = 2 or 3) is the map x -> linear * x + translation; its homogeneous
+// (N+1) x (N+1) matrix [linear translation; 0 1] acts on column vectors (x, 1), so compositions
+// read right to left (compose(a, b) applies b first) and every matrix is the transpose of the
+// book's row-vector form.
+// Factories: translation(t); rotation_2d(angle), rotation(center, angle) (counter-clockwise for
+// angle > 0); rotation_about_x/y/z(angle); rotation(point, axis, angle) (Rodrigues, about the
+// line point + s axis, counter-clockwise seen from the axis tip); scaling(center, s),
+// scaling_axes(center, factors), scaling_along(center, dir or D, s or factors); reflection(point,
+// normal) (mirror in a line/plane); reflection_about_line(point, dir) (x -> 2 foot(x) - x);
+// reflection_through_point(center); shear(point, normal, dir, angle) and shear_by_factor(...,
+// k = tan(angle)): x moves along dir (projected into the fixed hyperplane) by
+// k ((x - point) . n); 2D shear(point, dir, angle) uses n = perp(dir) (figure 4.23).
+// inverse(Affine): std::nullopt for a numerically singular linear part (1 / cond_F(L) <=
+// affine_singular_tol_v = 32 eps, adjustable) or a non-finite map.
+// normal_matrix() = sign(det L) cof(L) = |det L| L^{-T}: keeps outward normals outward (also
+// under reflections) and stays defined for singular L (n' may then be zero); apply_normal() does
+// not normalise. normal_from_tangents(a, t0, t1) = cross(L t0, L t1) follows the tangents'
+// orientation instead (figure 4.34 versus 4.33).
+// Degenerate input: a zero axis, normal or direction gives the identity; a non-finite one an
+// all-NaN map (inverse(): std::nullopt); NaN angles or factors propagate. Nothing divides by
+// zero. Cost: O(N^2) or O(N^3), N <= 3; noexcept, constexpr where no sqrt/trig.
 
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>

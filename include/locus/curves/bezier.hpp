@@ -23,9 +23,8 @@
 // hodograph vanishes). NaN/Inf control points propagate to every point that depends on them;
 // is_finite(curve) checks the input, and arc_length reports non_finite_input.
 //
-// Cost: point_at O(n^2), derivative_at O(n^2), subdivide O(n^2), elevate_degree O(n). Evaluation
-// does not allocate for degree < 16 (a fixed scratch buffer; larger degrees use the heap).
-// Curve-producing operations return new curves (they allocate).
+// Cost: point_at, derivative_at, subdivide O(n^2), elevate_degree O(n). Evaluation allocates
+// only for degree >= 16; curve-producing operations return new curves (they allocate).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>

@@ -1,46 +1,30 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Bézier surface patches: rectangular (tensor-product) and triangular; row prim3.surfaces; book
-// section 9.4 (Bézier rectangle and triangle patches), figures 9.24 (bicubic rectangle patch)
-// and 9.25 (cubic triangle patch).
+// section 9.4, figures 9.24 (bicubic rectangle patch) and 9.25 (cubic triangle patch). The
+// limit normal and the triangle split's pyramid: docs/notes/curves.md.
 //
 // BezierPatch<T, N> {rows, cols, control}: control net P_ij, i = 0..rows-1 along u, j =
 // 0..cols-1 along v, stored row-major control[i * cols + j]; degrees m = rows - 1 in u and
-// n = cols - 1 in v;  S(u, v) = sum_ij B_i^m(u) B_j^n(v) P_ij on [0, 1]^2. Corners are
-// S(0,0) = P_00, S(0,1) = P_0n, S(1,0) = P_m0, S(1,1) = P_mn exactly.
-//
-// BezierTriangle<T, N> {degree, control}: control points P_ijk, i + j + k = n = degree, stored at
-// triangle_index(n, i, j) = j (n + 1) - j (j - 1) / 2 + i (rows of constant j, i increasing; k =
-// n - i - j implied), (n + 1)(n + 2) / 2 points. With barycentric (u, v, w = 1 - u - v),
-//   S(u, v) = sum n! / (i! j! k!) u^i v^j w^k P_ijk,
-// so S(1, 0) = P_n00, S(0, 1) = P_0n0, S(0, 0) = P_00n. Partials are with respect to u and v
-// with w = 1 - u - v eliminated.
-//
-// Derivatives: partials() returns {point, du, dv, duv} (duv the mixed second partial), from the
-// last levels of de Casteljau. normal_at() (N = 3) is normalize(du x dv), so (u, v, normal) is
-// right-handed. Degenerate normals: where du x dv vanishes (relative to the partials' lengths,
-// 64 eps) at an edge collapsed to a point (e.g. all P_0j equal, so dv = 0 along u = 0), the
-// rectangle patch returns the limit normal from the interior, +-normalize(du x duv) (or
-// +-normalize(duv x dv) when du vanishes), signed toward the interior; when that vanishes too, or
-// for a triangle patch, the zero vector. Never NaN for finite input.
-//
-// Parameters: (u, v) clamped to [0, 1]^2 for rectangles; for triangles u, v clamped to >= 0 and
-// (u, v) scaled onto u + v = 1 when u + v > 1. NaN parameters give NaN points (a zero normal). Bad
-// input: a shape whose control count does not match (rows * cols, (n+1)(n+2)/2) or has rows/cols <
-// 1 (degree < 0) evaluates to NaN; NaN/Inf control points propagate (is_finite() checks). A 1 x 1
-// net is the constant patch.
-//
-// Subdivision: subdivide_u / subdivide_v split a rectangle patch at a parameter into two
-// patches, each reparametrised to [0, 1] (curve subdivision on every column / row).
-// subdivide(triangle, u, v) splits a triangle patch at the point with barycentrics
-// s = (u, v, w) into three patches whose corners are (s, e2, e3), (e1, s, e3), (e1, e2, s)
-// (e1 = (1,0,0) the corner P_n00, ...): sub-patch 0 at local (a, b) is the parent at
-// a s + b e2 + c e3, and likewise; their nets are the faces of the de Casteljau pyramid
-// (control point ijk of sub-patch 0 is level i's point (0, j, k)). A split point on an edge or
-// corner gives degenerate (zero-area) sub-patches, which is valid data. O(n^3) time and memory.
-// bounding_box() is the control-net box, which contains the patch (convex-hull property).
-// Cost: point_at O(m n (m + n)); partials the same; triangle evaluation O(n^3). Evaluation
-// allocates only for rectangle degrees >= 16 and triangle degrees >= 7 (fixed scratch buffers).
+// n = cols - 1 in v; S(u, v) = sum_ij B_i^m(u) B_j^n(v) P_ij on [0, 1]^2; corners exact.
+// BezierTriangle<T, N> {degree, control}: P_ijk, i + j + k = n, stored at triangle_index(n, i, j)
+// = j (n + 1) - j (j - 1) / 2 + i ((n + 1)(n + 2) / 2 points); with barycentric (u, v,
+// w = 1 - u - v), S(u, v) = sum n! / (i! j! k!) u^i v^j w^k P_ijk, so S(1, 0) = P_n00,
+// S(0, 1) = P_0n0, S(0, 0) = P_00n. Partials are with respect to u and v (w eliminated).
+// partials() returns {point, du, dv, duv}; normal_at() (N = 3) is normalize(du x dv). Where
+// du x dv vanishes (64 eps relative) at a collapsed edge the rectangle patch returns the limit
+// normal from the interior; when that vanishes too, or for a triangle patch, the zero vector.
+// Never NaN for finite input.
+// Parameters: clamped to [0, 1]^2 for rectangles; for triangles u, v >= 0 and (u, v) scaled onto
+// u + v = 1 when u + v > 1. NaN parameters give NaN points (a zero normal). A control count that
+// does not match the shape, or rows/cols < 1 (degree < 0), evaluates to NaN; NaN/Inf control
+// points propagate (is_finite() checks). A 1 x 1 net is the constant patch.
+// subdivide_u / subdivide_v split a rectangle patch at a parameter (both halves reparametrised
+// to [0, 1]); subdivide(triangle, u, v) splits a triangle patch at s = (u, v, w) into three with
+// corners (s, e2, e3), (e1, s, e3), (e1, e2, s) (O(n^3); a split point on an edge gives valid
+// zero-area patches). bounding_box() is the control-net box (convex-hull property).
+// Cost: point_at and partials O(m n (m + n)); triangle evaluation O(n^3). Evaluation allocates
+// only for rectangle degrees >= 16 and triangle degrees >= 7 (fixed scratch buffers).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

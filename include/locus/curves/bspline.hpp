@@ -16,7 +16,6 @@
 // Knot vectors: uniform_knots(n, d) = (i - d)/(n - d), i = 0..n+d (domain [0, 1], the curve does
 // not reach P_0, P_{n-1}); open_uniform_knots(n, d) = d + 1 zeros, equally spaced interior knots,
 // d + 1 ones (clamped: C(0) = P_0, C(1) = P_{n-1}). Any non-decreasing vector is accepted.
-//
 // Bad input: validate_knots()/validate() return a Status: empty_input (no control points),
 // invalid_input (degree < 0, degree >= n, knot count != n + d + 1, decreasing knots, a knot of
 // multiplicity > d + 1), non_finite_input (NaN/Inf knot or control coordinate), degenerate_input
@@ -24,7 +23,6 @@
 // curve (wrong knot count, degree out of range) evaluates to a NaN point; with decreasing knots
 // the result is meaningless but nothing crashes, hangs or divides by zero (0/0 fractions are 0).
 // Parameters outside the domain are clamped to [t_d, t_n]; a NaN parameter gives a NaN point.
-//
 // Cost: find_span O(log n); point_at (de Boor) O(d^2); basis_function O(d^2); derivative O(n);
 // insert_knot O(n) per insertion; to_bezier O(n d). Evaluation allocates only for d >= 16.
 

@@ -7,10 +7,9 @@
 // NurbsCurve<T, N> {degree, control, weights, knots}: as BSplineCurve (bspline.hpp) plus one
 // weight per control point,
 //   C(t) = sum_i N_{i,d}(t) w_i P_i / W(t),  W(t) = sum_i N_{i,d}(t) w_i,  t in [t_d, t_n].
-// Evaluation runs de Boor on the homogeneous (N+1)-D points (w_i P_i, w_i) and divides;
-// to_homogeneous() returns that B-spline. Derivatives come from the homogeneous derivatives A^(k),
-// W^(k) by the quotient rule C^(k) = (A^(k) - sum_{j=1..k} binom(k, j) W^(j) C^(k-j)) / W.
-// With all weights 1 the curve is the B-spline with the same control points and knots.
+// Evaluation runs de Boor on the homogeneous (N+1)-D points (w_i P_i, w_i) (to_homogeneous())
+// and divides; derivatives by the quotient rule (docs/notes/curves.md). With all weights 1 the
+// curve is the B-spline with the same control points and knots.
 //
 // Weights: validate() requires every weight > 0 (the convex-hull property, and W(t) > 0
 // everywhere, hold only then); zero or negative weights give invalid_input. Evaluation still
@@ -18,7 +17,6 @@
 // NaN point, never a finite but meaningless one; weight_at() exposes W(t) so a caller can test it.
 // Other bad input, domain clamping and NaN handling are those of bspline.hpp (a weights vector
 // whose size differs from control's is structurally invalid: NaN points).
-//
 // Circles: nurbs_arc(center, u, v, radius, start, sweep) is the arc center + radius (cos a u +
 // sin a v), a from start to start + sweep (|sweep| <= 2 pi, clamped), as m = ceil(|sweep| /
 // (pi/2)) quadratic rational pieces of angle theta = sweep / m with weights 1, cos(theta/2), 1
@@ -26,7 +24,6 @@
 // parametrisation is not by arc length. to_nurbs(Circle2) and to_nurbs(Arc2) wrap it in 2D.
 //
 // insert_knot() refines a NURBS curve without changing it (Boehm on the homogeneous curve).
-//
 // Cost: point_at O(d^2); derivatives O(k n) (derivative curves are built, allocating).
 
 #include <locus/core/scalar.hpp>

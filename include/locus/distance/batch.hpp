@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Batched squared distances: many queries of one pair type in one call, several per SIMD
-// instruction (rows dist3.pt-triangle, dist3.linear-linear, dist3.linear-triangle, dist3.pt-aabb,
-// dist3.pt-obb; the per-query functions are in the pair headers).
+// instruction (rows dist3.pt-triangle, dist3.linear-linear, dist3.linear-triangle, dist3.pt-obb;
+// the per-query functions are in the pair headers).
 //
 // sqr_distances(a, b, out) sets out[i] = sqr_distance(a[i], b[i]) for every i, for the pairs
 //   point - triangle, segment - segment, segment - triangle, point - aligned box and
@@ -16,27 +16,13 @@
 // for bit, for every input (NaN for non-finite input; exactly 0 for a segment meeting a triangle,
 // under the contact rule of segment_triangle.hpp), when the caller's code is compiled without
 // floating-point contraction (the default on x86-64 unless FMA is enabled, e.g. by -march=native);
-// with contraction the per-query functions may differ from these by rounding. The combinatorial
-// decisions are the per-query functions' own (exact predicates where they use them).
-//
-// Method: each pair's per-query computation (its branch-free fast path, and for segment pairs
-// also the nearly parallel branch; for segment-triangle the exact meeting test through a
-// floating-point filter, the crossing and the KKT candidates) is evaluated for 4 doubles or 8
-// floats at once (src/distance/lanes.hpp), operation for operation; the lanes it does not cover
-// (non-finite or extreme input, needle triangles, meeting tests the filter cannot decide, rare
-// branches) are recomputed by the per-query function, which is why the results agree bit for
-// bit. On x86-64 the library carries an x86-64-v4 (AVX-512), an AVX2 and a baseline version and
+// with contraction the per-query functions may differ from these by rounding. The lanes the SIMD
+// kernels (src/distance/lanes.hpp) do not cover (non-finite or extreme input, needle triangles,
+// undecided meeting tests, rare branches) are recomputed by the per-query function.
+// On x86-64 the library carries an x86-64-v4 (AVX-512), an AVX2 and a baseline version and
 // picks the best one the processor runs at each call (detail::set_batch_isa caps it, for tests
-// and benchmarks; build locus with -DLOCUS_NO_MULTIVERSION to compile the kernels once, for the
-// compiler's own target). Every version gives the same bits. Throughput (bench/distance,
-// scripts/bench_rounds, 8 rounds; M queries per second, x86-64-v4 version, double / float; the
-// ratio is to the peer measured in the same run): point-triangle 103 / 169 (CGAL 2.2x / 3.6x;
-// per query 46 / 47), segment-segment 123 / 225 (1.9x / 3.2x; per query 47 / 46),
-// segment-triangle 21 / 36 (2.4x / 3.8x; per query 8.0 / 8.6), point-OBB 293 / 448 and
-// point-AABB 507 / 701 (against a textbook loop: 1.5x and 2.2x in double). Nearly parallel
-// segment pairs (1e-6 apart in direction) leave the fast path for the robust branch in every
-// float lane and in 1 double group in 10: 103 / 93 (1.5x / 1.25x CGAL, whose double answer
-// there is off by up to 1e8 ulps); per query 47 in double but 7.8 in float.
+// and benchmarks; -DLOCUS_NO_MULTIVERSION compiles the kernels once, for the compiler's own
+// target). Every version gives the same bits. Throughput: bench/results/distance.md.
 // No allocation; noexcept.
 
 #include <locus/core/vec.hpp>
@@ -53,17 +39,18 @@ namespace detail {
 /// The instruction sets the batched kernels are compiled for (x86-64; elsewhere, or built with
 /// LOCUS_NO_MULTIVERSION, every level runs the one compiled version).
 enum class BatchIsa { baseline = 0, avx2 = 1, x86_64_v4 = 2 };
-/// The version the batched queries use now: the best the processor supports, capped by
+/// The version the batched queries use: the best the processor supports, capped by
 /// set_batch_isa.
 [[nodiscard]] BatchIsa batch_isa() noexcept;
 /// Caps the version the batched queries use (for tests and benchmarks that compare the
-/// versions; default: no cap). Returns the level now in use (limit, or less where the processor
-/// lacks it). Thread-safe; affects later calls in every thread.
+/// versions; default: no cap). Returns the level in use after the call (limit, or less where the
+/// processor lacks it). Thread-safe; affects later calls in every thread.
 BatchIsa set_batch_isa(BatchIsa limit) noexcept;
 }  // namespace detail
 
 // The pairs and their "one against many" forms, declared for float and double (compiled in
-// src/distance/batch.cpp).
+// src/distance/batch_point_triangle.cpp, batch_segment_segment.cpp, batch_segment_triangle.cpp
+// and batch_boxes.cpp).
 #define LOCUS_BATCH_PAIR(A, B)                                                   \
   void sqr_distances(std::span<const A<float>> a, std::span<const B<float>> b,   \
                      std::span<float> out) noexcept;                             \

@@ -1,43 +1,28 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Distance between two circles in 3D; row dist3.misc (circle-circle part); book section 10.3.4
-// (the point-circle building block), method of Eberly, "Distance to Circles in 3D".
+// (the point-circle building block), method of Eberly, "Distance to Circles in 3D" (the
+// degree-8 polynomial in tan(a / 2) and its candidates: docs/notes/distance.md).
 //
 // distance(Circle3, Circle3) returns Distance<T, 3, T, T>: param_a / param_b are the angles of
 // closest[0] / closest[1] on the first / second circle (point_at(circle, angle),
-// primitives/circle.hpp), in (-pi, pi]. Both circles are CURVES.
-//
-// Method: circle 0 is P(a) = C0 + r0 (cos a U0 + sin a V0). With D = C0 - C1 and n1 the unit
-// normal of circle 1, the squared distance from P(a) to circle 1 is F(a) = h(a) + r1^2 -
-// 2 r1 sqrt(g(a)), h = |P - C1|^2 and g = |P - C1|^2 - (n1.(P - C1))^2, trigonometric
-// polynomials of degree 1 and 2. F' = 0 reads h' sqrt(g) = r1 g'; squaring and substituting
-// x = tan(a / 2) (cos a = (1 - x^2) / (1 + x^2), sin a = 2x / (1 + x^2)) and clearing (1 + x^2)^4
-// gives a polynomial of degree 8 whose real roots, with a = pi (x = infinity), include every
-// minimiser of F. Squaring makes double roots where h' and g' vanish together (always at a zero
-// of h'; e.g. every time the center of circle 0 is on the axis of circle 1); rounding can turn
-// them into complex pairs, so the two zeros of h' (closed form) are candidates too. Each candidate
-// is evaluated in the cancellation-free form (n1.(P - C1))^2 + (rho - r1)^2 and the smallest wins
-// (the global minimum; never below the true distance by more than rounding); its closest point on
-// circle 1 is the point-circle answer (point_circle.hpp). Set-up and roots run in compute_t<T>
-// (double for float), on the input scaled by a power of two when the polynomial's coefficients
-// (products of up to eight coordinates) would leave the range (beyond ~1e38 or below ~1e-38 in
-// double: detail/rescale.hpp); the pair comes from the input itself. The pair is solved in a
-// canonical argument order, so distance(b, a) is bit for bit the swap of distance(a, b).
+// primitives/circle.hpp), in (-pi, pi]. Both circles are CURVES. The minimum is global (never
+// below the true distance by more than rounding). Computed in compute_t<T> (double for float),
+// rescaled by a power of two when the polynomial's coefficients would leave the range
+// (detail/rescale.hpp). The pair is solved in a canonical argument order, so distance(b, a) is
+// bit for bit the swap of distance(a, b).
 //
 // unique = false for coaxial circles (parallel normals, centers on a common axis, including
-// concentric coplanar circles): F is then constant, detected as the degree-8 polynomial
-// cancelling to rounding level (h'^2 g and r1^2 g'^2 agree coefficient-wise within 1024 eps of
-// their size); angle 0 of the first circle is returned. unique = false also when the chosen
-// point lies on the other circle's axis (the other circle is then equidistant). Other finite
-// ties (symmetric configurations, two intersection points) return one pair with unique = true.
-// Coplanar, touching and intersecting circles need no special case (intersecting: distance 0
-// up to rounding of the root).
+// concentric coplanar circles: angle 0 of the first circle is returned) and when the chosen
+// point lies on the other circle's axis. Other finite ties (symmetric configurations, two
+// intersection points) return one pair with unique = true. Coplanar, touching and intersecting
+// circles need no special case (intersecting: distance 0 up to rounding of the root).
 //
 // Degenerate input: a zero radius makes that circle the point center (point_circle.hpp; its
 // angle is 0); two zero radii give the two centers. A negative radius, a zero normal, and NaN
 // or infinite values give non_finite_distance() (result.hpp). Cost: O(1) but heavier than most
-// pairs: building the degree-8 polynomial (fixed arrays) and its real roots (numeric/roots.hpp's
-// engine on a fixed stack workspace: no allocation), at most 11 candidate evaluations, three atan2.
+// pairs: a degree-8 polynomial and its real roots (fixed stack workspace, no allocation), at
+// most 11 candidate evaluations, three atan2.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

@@ -2,43 +2,27 @@
 #pragma once
 // Distance between a line, ray or segment and a circle in 3D; row dist3.misc (linear-circle
 // part); book section 10.3.4 (the point-circle building block, figures 10.16-10.19), method of
-// Eberly, "Distance between a line and a circle in 3D".
+// Eberly, "Distance between a line and a circle in 3D" (the quartic and its candidates:
+// docs/notes/distance.md).
 //
 // distance(linear, Circle3) returns Distance<T, 3, T, T>: param_a is the linear parameter of
 // closest[0] (Line: t in R, Ray: t >= 0, Segment: t in [0, 1], as point_at), param_b the circle's
 // angle of closest[1] (point_at(circle, angle), primitives/circle.hpp), in (-pi, pi]. The circle
-// is the CURVE. distance(Circle3, linear) is the swapped result.
-//
-// Method: with the line P(t) = B + t M, D = B - C and the unit normal n, the squared distance
-// from P(t) to the circle is F(t) = (n.(D + tM))^2 + (|Q(t)| - r)^2 = h(t) + r^2 - 2 r sqrt(g(t)),
-// Q the part of D + tM perpendicular to n, h = |D + tM|^2 and g = |Q|^2 both quadratics in t.
-// F'(t) = 0 reads h' sqrt(g) = r g'; squaring gives the quartic h'^2 g - r^2 g'^2 = 0, whose
-// real roots include every interior minimiser (also the non-smooth points g = 0, where g' = 0).
-// The candidates are those roots, the minimisers of h and of g, the roots of g = r^2 (where the
-// line meets the cylinder through the circle, solved as a quadratic: every crossing of the
-// circle, accurate to rounding, which the squared quartic's roots are not) and the domain's
-// endpoints, each clamped to the domain; F is evaluated cancellation-free in the form above and
-// the smallest wins, so the minimum is global (every candidate is a realisable pair of points, so
-// the answer is never below the true distance by more than rounding). The closest circle point
-// of the winner is then the point-circle answer (point_circle.hpp). Polynomial set-up, roots
-// and candidate evaluation run in compute_t<T> (double for float), on the input scaled by a
-// power of two when the quartic's coefficients (products of up to six coordinates) would leave
-// the range (beyond ~1e50 or below ~1e-50 in double: detail/rescale.hpp); the winner's point and
-// its point-circle answer come from the input itself.
+// is the CURVE. distance(Circle3, linear) is the swapped result. The minimum is global (never
+// below the true distance by more than rounding); crossings of the circle are accurate to
+// rounding. Computed in compute_t<T> (double for float), rescaled by a power of two when the
+// quartic's coefficients would leave the range (detail/rescale.hpp).
 //
 // unique = false when the closest point of the linear component lies on the circle's axis with
 // a positive radius (every circle point is then equidistant): the line IS the axis, or a ray /
-// segment ends on the axis nearer than any other point. "On the axis" allows the rounding of the
-// input: a distance from the axis up to 64 eps times the coordinates' scale (a tilted axis given
-// in floating point is never hit exactly). An interior crossing of the axis by a line that is not
-// the axis is never a minimum. Finitely many tied pairs (a line in the circle's
-// plane crossing it twice, symmetric configurations) return one of them with unique = true.
+// segment ends on the axis nearer than any other point ("on the axis" within 64 eps times the
+// coordinates' scale). Finitely many tied pairs (a line in the circle's plane crossing it twice,
+// symmetric configurations) return one of them with unique = true.
 //
 // Degenerate input: a zero direction (zero-length segment) acts as its point (t = 0); a zero
-// radius is the point center; a line in the circle's plane is handled by the same quartic (an
-// intersection gives distance 0). A negative radius, a zero normal, and NaN or infinite values
-// give non_finite_distance() (result.hpp). Cost: O(1): one quartic (solve_quartic, no
-// allocation), at most 10 candidate evaluations, one atan2.
+// radius is the point center; a line in the circle's plane needs no special case. A negative
+// radius, a zero normal, and NaN or infinite values give non_finite_distance() (result.hpp).
+// Cost: O(1): one quartic (solve_quartic, no allocation), at most 10 candidates, one atan2.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

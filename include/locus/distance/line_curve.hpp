@@ -1,56 +1,30 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Distance between a line, ray or segment and a Bézier, B-spline or NURBS curve, in any
-// dimension N >= 2 (2D and 3D included); row dist2.linear-curve (polynomial-curve part; the 3D
-// pairs come along); book section 6.4 (linear component to polynomial curve, figure 6.23: the
-// segment connecting the closest points is perpendicular to both objects).
+// dimension N >= 2; row dist2.linear-curve (polynomial-curve part; the 3D pairs come along);
+// book section 6.4, figure 6.23. Method (global minimum over a candidate set that contains
+// every minimiser, all real roots of per-span polynomials): docs/notes/distance.md.
 //
 // distance(linear, curve) returns Distance<T, N, T, T>: param_a is the linear parameter of
 // closest[0] (Line: t in R, Ray: t >= 0, Segment: t in [0, 1], as point_at), param_b the curve's
 // own parameter of closest[1] (Bézier: [0, 1]; B-spline and NURBS: the domain [t_d, t_n],
 // curves/bspline.hpp); closest[0] = point_at(linear, param_a), closest[1] = point_at(curve,
 // param_b). distance(curve, linear) is the swapped result.
-//
-// Method: the GLOBAL minimum over a finite candidate set that contains every minimiser. Each
-// curve span is a rational Bézier piece C = A / W (detail/rational_span.hpp). A minimum pairs a
-// linear parameter t and a curve parameter s where
-//  (1) t is interior and s is interior to a span: the connecting segment is perpendicular to the
-//      line and to the curve (figure 6.23). With u the unit direction, o the origin and e_k an
-//      orthonormal basis of u's complement, the curve PROJECTED along u, P(s) = (e_k . (C(s) -
-//      o))_k (N - 1 coordinates), measures the distance from C(s) to the line, and the condition is
-//      P . P' = 0: the roots of G = P~ . (P~' W - P~ W') with P~ = W P, a polynomial of degree
-//      3d - 2 (2d - 1 for W = 1). In 2D P is the signed distance p = e . (C - o) and G = p~ r with
-//      r = p~' W - p~ W', so the roots of p~ (INTERSECTIONS, distance 0) and of r (the TANGENT
-//      parallel to the line) are found separately, each well conditioned;
-//  (2) t is a ray / segment end: the point-curve critical points of that end (point_curve.hpp's
-//      polynomial, in the same machinery);
-//  (3) s is a span end (curve ends and knots, where the curve may have a corner).
-// For every candidate s the curve point X is paired with its exact clamped projection onto the
-// linear component and scored (detail/pair_candidates.hpp), so each candidate is a realisable pair
-// and the smallest wins. Polynomials are built in power form of the centred span variable with an
-// a-priori bound of their coefficients' rounding errors and ALL real roots in the span are found
-// by numeric/roots.hpp's engine (tangencies are double roots and are not lost). The error of a
-// root enters the squared distance only to second order (first order at distance 0, where the
-// roots of p~ are simple). Everything runs in compute_t<T> (double for float); the returned points
-// are point_at of the returned parameters, in T: param_b is the winning curve parameter rounded to
-// T and param_a the clamped projection of point_at(curve, param_b) onto the linear component (so in
-// float the distance is that of the best representable curve parameter, which on a very short knot
-// span can sit measurably off a crossing).
+// Computed in compute_t<T> (double for float); the returned points are evaluated in T at the
+// returned parameters (param_b the winning curve parameter rounded to T, param_a the clamped
+// projection of its point), so in float a very short knot span can sit measurably off a crossing.
 //
 // unique = false when infinitely many closest pairs exist: the distance is constant along a piece
-// of the curve inside the linear component's reach (a straight span parallel to the line, a span
-// lying on it, in 3D an arc of a circle around the line). Detected as two distinct candidates
-// tying (to 64 eps of the scale) whose curve-parameter midpoint ties too; finitely many tied pairs
-// (two crossings, symmetric configurations) return one pair with unique = true.
+// of the curve (a straight span parallel to the line or lying on it, in 3D an arc of a circle
+// around the line). Finitely many tied pairs return one pair with unique = true.
 //
 // Degenerate input: a zero direction (zero-length segment) acts as its point: the point-curve
 // query (point_curve.hpp), param_a = 0. Repeated control points, cusps and zero-length spans are
-// fine. Degree 0 (piecewise constant) gives the nearest control point of the domain. Invalid
-// curves (an empty Bézier curve, validate() != ok: bad knots, non-positive weights, NaN/Inf) and
-// NaN or infinite linear input give non_finite_distance() (result.hpp). Cost: per span the
-// blossoms (B-splines, O(d^3)), O(N d^2) to build one polynomial for the line and one per
-// ray/segment end, and their roots (O(d^2) Newton steps each); no allocation for degree <= 12
-// (B-spline/NURBS validation aside).
+// fine. Degree 0 gives the nearest control point of the domain. Invalid curves (an empty Bézier
+// curve, validate() != ok: bad knots, non-positive weights, NaN/Inf) and NaN or infinite linear
+// input give non_finite_distance() (result.hpp).
+// Cost: per span the blossoms (B-splines, O(d^3)), O(N d^2) per polynomial and their roots
+// (O(d^2) Newton steps each); no allocation for degree <= 12 (B-spline/NURBS validation aside).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

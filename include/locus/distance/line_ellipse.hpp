@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Distance between a line, ray or segment and an ellipse in the plane; row dist2.linear-curve
-// (ellipse part); book section 6.4 (linear component to quadratic curve, figure 6.23).
+// (ellipse part); book section 6.4 (linear component to quadratic curve, figure 6.23). The
+// candidate set (intersections, the two tangent points parallel to the line, the domain's ends,
+// the projected centre): docs/notes/distance.md.
 //
 // distance(linear, Ellipse2) returns Distance<T, 2, T, T>: param_a is the linear parameter of
 // closest[0] (Line: t in R, Ray: t >= 0, Segment: t in [0, 1], as point_at), param_b the
@@ -9,34 +11,19 @@
 // axis[0] + extent[1] sin(a) axis[1], primitives/ellipse.hpp), in (-pi, pi]. The ellipse is the
 // CURVE (a segment inside it is at a positive distance). distance(Ellipse2, linear) is the
 // swapped result. The axes must be orthonormal (the primitive's precondition).
-//
-// Method (figure 6.23): if the linear component meets the curve, the distance is 0 at an
-// intersection point: in the ellipse's frame, with local origin x and direction u,
-// e1^2 (x0 + t u0)^2 + e0^2 (x1 + t u1)^2 = e0^2 e1^2 is a quadratic in t whose roots in the
-// parameter domain are candidates. Otherwise an interior minimum pairs a point of the line with
-// a point of the ellipse whose tangent is parallel to the line (the normal there is the
-// connecting direction): the two such points are center +- (e0^2 u1 axis[0] - e1^2 u0 axis[1]) /
-// |(e0 u1, e1 u0)|, and their projections onto the line (clamped to the domain) are
-// candidates; so are the domain's endpoints (a point-ellipse query) and the projection of the
-// center (which covers a collapsed ellipse). Every candidate t is scored by the exact
-// point-ellipse distance of its point (point_ellipse.hpp) and the smallest wins: every candidate
-// is a realisable pair of points, so the result is never below the true distance by more than
-// rounding, and the candidate set contains the global minimiser. An intersection gives distance
-// 0 up to the rounding of the root. The quadratic and the tangent points are computed in
-// compute_t<T> (double for float), on the input scaled by a power of two when the quadratic's
-// coefficients (fourth powers of the coordinates) would leave the range (beyond ~1e76 or below
-// ~1e-76 in double: detail/rescale.hpp); the candidates are scored on the input itself.
+// Every candidate is scored by the point-ellipse distance (point_ellipse.hpp), so the result is
+// the global minimum, never below the true distance by more than rounding; an intersection gives
+// 0 up to the rounding of the root. Computed in compute_t<T> (double for float), rescaled by a
+// power of two when the quadratic's coefficients would leave the range (detail/rescale.hpp).
 //
 // unique = false only when the point-ellipse answer at the winning point is not unique (the
-// winner is the centre of a circle, or an inside point of the major axis equidistant from two
-// points, which happens when a ray or segment ends there); other finite ties (a line crossing
-// the ellipse twice) return one pair with unique = true.
+// centre of a circle, or an inside point of the major axis where a ray or segment ends); other
+// finite ties (a line crossing the ellipse twice) return one pair with unique = true.
 //
 // Degenerate input: a zero direction (zero-length segment) acts as its point (t = 0); a zero
 // extent collapses the ellipse to a segment traversed twice, both zero to its center (as in
 // point_ellipse.hpp). A negative extent and NaN or infinite values give non_finite_distance()
-// (result.hpp). Cost: O(1): one quadratic and at most 7 point-ellipse evaluations (each about
-// 60 bisection steps and an atan2).
+// (result.hpp). Cost: O(1): one quadratic and at most 7 point-ellipse evaluations.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

@@ -2,60 +2,29 @@
 #pragma once
 // Distance between a line, ray or segment and a general quadratic curve (conic) a x^2 + b xy +
 // c y^2 + d x + e y + f = 0 in the plane; row dist2.linear-curve (quadratic-curve part); book
-// section 6.4 (linear component to quadratic curve, figure 6.23: the segment connecting the
-// closest points is perpendicular to both objects).
+// section 6.4, figure 6.23. Method by conic class: docs/notes/distance.md.
 //
 // distance(linear, QuadraticCurve2) returns Distance<T, 2, T, NoParam>: param_a is the linear
 // parameter of closest[0] (Line: t in R, Ray: t >= 0, Segment: t in [0, 1], as point_at); a
-// general conic has no parametrisation in locus (primitives/quadratic_curve.hpp), so closest[1]
-// itself is the answer (on the curve to rounding). The conic is the CURVE (a segment inside an
-// ellipse is at a positive distance). distance(QuadraticCurve2, linear) is the swapped result.
-// For an Ellipse2 in axis form, line_ellipse.hpp gives the angle as well.
+// general conic has no parametrisation in locus, so closest[1] itself is the answer (on the
+// curve to rounding). The conic is the CURVE (a segment inside an ellipse is at a positive
+// distance). distance(QuadraticCurve2, linear) is the swapped result. For an Ellipse2 in axis
+// form, line_ellipse.hpp gives the angle as well. Computed in compute_t<T> (double for float).
 //
-// Method, by the EXACT class of classify_conic():
-//   ellipse, circle, hyperbola, parabola   candidates (figure 6.23), with the line o + t m and
-//       Q(X) = X^T A X + B . X + f:
-//       (1) intersections: Q(o + t m) = (m^T A m) t^2 + (grad Q(o) . m) t + Q(o) is a quadratic
-//           in t; its roots in the domain give distance 0 (the point is Newton-projected onto
-//           the conic to be on it to rounding);
-//       (2) the points whose tangent is parallel to the line: grad Q(X) . m = 0 is the LINEAR
-//           condition 2 (A m) . X + B . m = 0 (the diameter conjugate to m); on that line Q is a
-//           quadratic, whose roots give at most two points; each is paired with its clamped
-//           projection onto the linear component;
-//       (3) each ray / segment end with its nearest conic point (point_quadratic_curve.hpp).
-//       Every candidate is a realisable pair (detail/pair_candidates.hpp) and the smallest wins;
-//       when the minimum is attained at all, it is at one of these (an interior minimum is an
-//       intersection or has the connecting segment perpendicular to the line and normal to the
-//       curve). Computed in compute_t<T> (double for float).
-//   intersecting / parallel lines, double line, line, point   the conic is factored into its
-//       lines (crossing point from grad Q = 0 and the two null directions of A; or the rank-one A
-//       = lambda n n^T, whose quadratic in n . X gives the parallel lines) and the linear-linear
-//       query of detail/linear.hpp is taken against each (for a point: the point-linear query).
-//   plane (all coefficients zero)   every point is on the "curve": distance 0 at the linear
-//       component's origin, unique = false.
-//   empty   no closest point: distance = sqr_distance = +infinity, closest[0] = point_at(linear,
-//   0),
-//       param_a = 0, closest[1] NaN, unique = false (as point_quadratic_curve.hpp).
-//
-// Infimum not attained: a hyperbola approaches its asymptotes at infinity, so a line or ray whose
-// direction is asymptotic (m^T A m = 0 to 64 eps of its terms) gets arbitrarily close to the curve
-// at distance h, the distance between its line and the parallel asymptote, without reaching it
-// (the line ON an asymptote: h = 0; a ray parallel to an asymptote on the side the branch
-// approaches from: h > 0). When h is below every attained candidate (by more than rounding) the
-// result is distance = h, sqr_distance = h^2, param_a = +infinity, closest points NaN (no pair
-// realises it) and unique = false. A parabola, ellipse or line pair always attains its minimum;
-// a line parallel to a parabola's axis crosses it once (distance 0).
-//
-// unique = false when infinitely many closest pairs exist: the linear component is parallel to a
-// line of a degenerate conic (within the linear-linear query's parallel test), the plane case, an
-// unattained infimum, or the winning pair is a ray / segment end whose point-conic answer is not
-// unique (the centre of a circle, as in line_ellipse.hpp). Finitely many tied pairs (a line
-// crossing twice) return one of them with unique = true.
+// Classes (exact classify_conic()): a plane (all coefficients zero) gives distance 0 at the
+// linear origin, unique = false; an empty conic gives distance = sqr_distance = +infinity,
+// closest[0] = point_at(linear, 0), param_a = 0, closest[1] NaN, unique = false.
+// Infimum not attained: a line or ray asymptotic to a hyperbola approaches it without reaching
+// it; when that limit h is below every attained candidate the result is distance = h,
+// sqr_distance = h^2, param_a = +infinity, closest points NaN, unique = false.
+// unique = false also when infinitely many closest pairs exist (the component parallel to a line
+// of a degenerate conic, or a winning ray / segment end whose point-conic answer is not unique);
+// finitely many tied pairs return one of them with unique = true.
 //
 // Degenerate input: a zero direction (zero-length segment) acts as its point (the point-conic
 // query, param_a = 0). NaN or infinite coefficients or linear input give non_finite_distance().
-// Cost: O(1): the exact classification, two quadratics, at most two point-conic queries (each a
-// quartic); the degenerate classes one or two linear-linear queries.
+// Cost: O(1): two quadratics and at most two point-conic queries (each a quartic); degenerate
+// classes one or two linear-linear queries.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

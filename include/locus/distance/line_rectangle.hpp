@@ -3,24 +3,17 @@
 // Distance between a line and a (solid) rectangle in 3D; row dist3.linear-rectangle; book section
 // 10.5.2 (figures 10.42, 10.43).
 //
-// distance(line, rect) returns Distance<T, 3, T, Vec2<T>>: closest[0] = point_at(line, param_a)
-// with
-//   t in R, point_at(line, t) = origin + t direction (direction need not be unit),
+// distance(line, rect) returns Distance<T, 3, T, Vec2<T>>: closest[0] = point_at(line, t) with
+//   t = param_a in R, point_at(line, t) = origin + t direction (direction need not be unit),
 // and closest[1] = point_at(rect, param_b) with param_b = (s, t) the rectangle's symmetric
 //   coordinates (|s| <= extent[0], |t| <= extent[1]; primitives/rectangle.hpp).
 // distance(rect, line) is the swapped result. The rectangle is filled: a line passing through it
 // has distance 0.
 //
-// Method (detail/linear_planar.hpp): in the rectangle's frame the rectangle is the box
-// [-e0, e0] x [-e1, e1] x {0}. When the direction is not nearly parallel to the plane, the
-// crossing of the line's line with the plane is the answer if it lies in the prism
-// "parameter interval x rectangle"; otherwise only the facets of the prism it violates are tried
-// (KKT): the the sides of the rectangle (exact linear-segment queries). These are the
-// regions of figure 10.43 (the nine regions of the rectangle's (s, t) plane) without
-// region-specific code. Nearly parallel directions and rounding-sensitive crossings evaluate
-// every candidate (the projected crossing, the four sides): each is a realisable pair,
-// so the answer is continuous through parallel configurations and never divides by a vanishing
-// determinant.
+// Method: detail/linear_planar.hpp (docs/notes/distance.md): the crossing with the plane when
+// it lies in the prism, else the facets its parameters violate (KKT, the regions of figure
+// 10.43); nearly parallel or rounding-sensitive cases evaluate every candidate, so the answer
+// is continuous through parallel configurations and never divides by a vanishing determinant.
 //
 // unique = false when the line is parallel to the rectangle's plane (sin^2 angle <= 64 eps^2) and
 // the closest pair can slide along it (above the interior, or along the nearest side).

@@ -2,35 +2,27 @@
 #pragma once
 // Distance between a point and a Bézier, B-spline or NURBS curve, in any dimension (2D and 3D
 // included); rows dist2.pt-polycurve and dist3.pt-paramcurve; book sections 6.2.3 (figure 6.15)
-// and 10.5.3 (figure 10.25).
+// and 10.5.3 (figure 10.25). Method (all real roots of a per-span polynomial):
+// docs/notes/distance.md.
 //
 // distance(p, curve) returns Distance<T, N, NoParam, T>: closest[1] = point_at(curve, param_b),
 // param_b the curve's own parameter (Bézier: t in [0, 1]; B-spline and NURBS: t in the domain
 // [t_d, t_n], curves/bspline.hpp). distance(curve, p) is the swapped result.
-//
-// Method: the GLOBAL minimum, not a local Newton iterate. Each span is a rational Bézier piece
-// C = A / W (detail/rational_span.hpp; W = 1 for Bézier and B-spline curves). An interior
-// minimiser of |C(t) - p|^2 satisfies (C - p) . C' = 0, i.e. with Q = A - p W the polynomial
-//   G = Q . (Q' W - Q W')            (degree 3d - 2; for W = 1 it is W^2 Q . Q', degree 2d - 1)
-// vanishes. G is formed in power form in the centred span variable u in [-1, 1] with an a-priori
-// bound of its coefficients' rounding errors, and ALL its real roots in (-1, 1) are found by
-// numeric/roots.hpp's robust engine (derivative recursion, bracketing, compensated evaluation;
-// tangencies and clusters are multiple roots, never lost). The candidates are those roots plus
-// every span's end points; the nearest candidate wins (evaluated by rational de Casteljau in
-// compute_t<T>). The error of a root only enters the distance to second order, so the distance
-// is accurate to a few ulps of the scale whatever the conditioning of the root.
+// The GLOBAL minimum, not a local Newton iterate: every interior critical point of every span
+// and every span end is a candidate, so the distance is accurate to a few ulps of the scale
+// whatever the conditioning of the root. Computed in compute_t<T> (double for float).
 //
 // unique = false when two distinct points of the curve are (to 64 eps relative in the squared
 // distance) equally close, e.g. a point on a symmetry axis, or a span at constant distance (a
-// NURBS circle arc seen from its centre, recognised by G vanishing within its error bound).
+// NURBS circle arc seen from its centre).
 //
 // Degenerate input: repeated control points, cusps and zero-length spans are fine (a constant
 // span is a point). Degree 0 (a piecewise-constant B-spline) gives the nearest control point of
 // the domain. Invalid curves (an empty Bézier curve, validate() != ok for B-splines and NURBS:
 // bad knots, non-positive weights, NaN/Inf) and a NaN/Inf point give non_finite_distance().
-// Cost: per span O(d^3) for the blossoms (B-splines) plus O(N d^2) for G and O(d^2) Newton steps
-// of the root engine; no allocation for degree <= 12 (B-spline/NURBS validation aside; larger
-// degrees use heap scratch, like the curves' own evaluation).
+// Cost: per span O(d^3) for the blossoms (B-splines) plus O(N d^2) for the polynomial and O(d^2)
+// Newton steps of the root engine; no allocation for degree <= 12 (B-spline/NURBS validation
+// aside; larger degrees use heap scratch, like the curves' own evaluation).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

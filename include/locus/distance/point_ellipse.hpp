@@ -1,39 +1,28 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Distance between a point and an ellipse in the plane; row dist2.pt-quadratic (ellipse part);
-// book section 6.2.2 (figure 6.14). The general conic is in point_quadratic_curve.hpp.
+// book section 6.2.2 (figure 6.14). The general conic is in point_quadratic_curve.hpp. Method
+// (Eberly's bracketed root of F(t), exact axis cases): docs/notes/distance.md.
 //
 // distance(p, ellipse) returns Distance<T, 2, NoParam, T>: closest[1] is the point of the ellipse
 // CURVE nearest to p (a point inside is at a positive distance from it), param_b its angle
 // parameter a, point_at(ellipse, a) = center + extent[0] cos(a) axis[0] + extent[1] sin(a) axis[1]
 // (primitives/ellipse.hpp), a in (-pi, pi]. distance(ellipse, p) is the swapped result. The axes
 // must be orthonormal (the primitive's precondition); they are used as given.
+// The root is found by bisection to the last bit (no Newton divergence, no quartic): points on
+// and near the axes keep full relative precision. Computed in compute_t<T> (double for float).
 //
-// Method (Eberly, "Distance from a Point to an Ellipse, an Ellipsoid, or a Hyperellipsoid"):
-// in the ellipse's frame, sorted so that e0 >= e1, p is reflected into the first quadrant
-// (y0, y1 >= 0; the answer is reflected back). The closest point is x_i = e_i^2 y_i / (t + e_i^2)
-// where t is the unique root of F(t) = sum_i (e_i y_i / (t + e_i^2))^2 - 1 on t > -e1^2, where F
-// is strictly decreasing. In the scaled, shifted variable sigma = t / e1^2 + 1 the root is
-// bracketed by [z1, |(r0 z0, z1)|] (z_i = y_i / e_i, r0 = (e0 / e1)^2; the upper end 1 when p is
-// inside) and found by bisection (geometric while the bracket spans more than a factor 4) until
-// the midpoint equals an end (budget 2200 steps), so the computed root is the correctly
-// bracketed double: no Newton divergence, no quartic, no cancellation, and a point a hair off
-// an axis (sigma tiny) keeps full relative precision in x1 = y1 / sigma. Points on the axes are handled EXACTLY as the limit cases, which is
-// where the textbook quartic fails: y1 = 0 with e0 y0 < e0^2 - e1^2 (inside, on the major axis,
-// near the centre: two symmetric closest points, x0 = e0^2 y0 / (e0^2 - e1^2)); y0 = 0 (the
-// point (0, e1)); otherwise the vertex (e0, 0). Computed in compute_t<T> (double for float).
-//
-// unique = false exactly when two or more points of the curve are closest: the y1 = 0 interior
-// case above (the one with positive x1 of the local frame is returned), the centre of a circle
-// (extent[0] == extent[1]: angle 0 is returned) and the centre of any ellipse. A point with y1
-// tiny but not zero has a unique answer and gets it, continuously.
+// unique = false exactly when two or more points of the curve are closest: p inside on the major
+// axis near the centre (the point with positive local x1 is returned), the centre of a circle
+// (angle 0 is returned) and the centre of any ellipse. A point with y1 tiny but not zero has a
+// unique answer and gets it, continuously.
 //
 // Degenerate input: a zero extent collapses the ellipse to the segment [-e, e] along the other
 // axis (the curve traversed twice): the closest point of that segment is returned (unique, angle
 // in [0, pi]); both extents zero give the point center (angle 0). A negative extent and NaN or
 // infinite values give non_finite_distance() (result.hpp). Near-degenerate ellipses (ratio 1e-6
-// and beyond) keep full accuracy: nothing divides by the small extent except in F, where the
-// bracket is exact. Cost: O(1): typically 55-70 bisection steps of a few flops, one atan2.
+// and beyond) keep full accuracy. Cost: O(1): typically 55-70 bisection steps (at most 2200),
+// one atan2.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

@@ -2,36 +2,27 @@
 #pragma once
 // Distance between a point and an ellipsoid in 3D; row dist3.pt-ellipsoid (ellipsoid part);
 // book section 10.5 (figure 10.24). Spheres are in point_sphere.hpp, general quadrics in
-// point_quadric.hpp.
+// point_quadric.hpp. Method (Eberly's bracketed root, exact limit cases on the symmetry planes):
+// docs/notes/distance.md.
 //
 // distance(p, ellipsoid) returns Distance<T, 3, NoParam, Vec2<T>>: closest[1] is the point of the
 // SURFACE nearest to p (a point inside is at a positive distance from it), param_b = (theta, phi)
 // with point_at(ellipsoid, (theta, phi)) = closest[1] (primitives/ellipsoid.hpp: theta in
 // (-pi, pi] the azimuth from axis 0 towards axis 1, phi in [0, pi] from axis 2). The axes must be
 // orthonormal (the primitive's precondition). distance(ellipsoid, p) is the swapped result.
+// Points on the axes, on the coordinate planes and at the centre are exact limit cases, not a
+// polynomial's weak spot. Computed in compute_t<T> (double for float).
 //
-// Method (Eberly, "Distance from a Point to an Ellipse, an Ellipsoid, or a Hyperellipsoid"; the
-// 2D routine of point_ellipse.hpp): in the frame sorted so that e0 >= e1 >= e2 and p reflected
-// into the first octant, the closest point is x_i = e_i^2 y_i / (t + e_i^2) with t the unique root
-// of the strictly decreasing F(t) = sum_i (e_i y_i / (t + e_i^2))^2 - 1 on t > -e2^2, bracketed
-// and bisected to the last bit in the shifted variable of point_ellipse.hpp (budget 2200 steps).
-// A zero coordinate y_i sends the query to
-// the exact limit case: y2 = 0 with (e0 y0 / (e0^2 - e2^2))^2 + (e1 y1 / (e1^2 - e2^2))^2 < 1
-// (inside, near the plane of the two longer axes: two symmetric closest points off that plane);
-// otherwise the 2D problem in the plane of the remaining axes (point_ellipse.hpp), including its
-// own axis cases. So points on the axes, on the coordinate planes and at the centre are exact,
-// not the quartic/sextic's weak spot. Computed in compute_t<T> (double for float).
-//
-// unique = false exactly when several surface points are closest (the symmetric cases above,
-// the centre, points on the axis of a spheroid inside it, the centre of a sphere); one is
-// returned (the one with non-negative local coordinates for the reflected axes).
+// unique = false exactly when several surface points are closest (p inside near the plane of
+// the two longer axes, the centre, points on the axis of a spheroid inside it, the centre of a
+// sphere); one is returned (the one with non-negative local coordinates).
 //
 // Degenerate input: zero extents flatten the ellipsoid: one zero extent gives the FILLED
-// ellipse in the plane of the other two axes (its parametrisation point_at covers it: u = (cos
-// theta sin phi, sin theta sin phi, cos phi) scaled by a zero extent), so a point above its
+// ellipse in the plane of the other two axes (point_at covers it), so a point above its
 // interior projects orthogonally (unique); two give the segment along the remaining axis; three
 // the point center. A negative extent and NaN or infinite values give non_finite_distance().
-// Cost: O(1), typically 60-100 bisection steps, one atan2 and one acos/atan2 for the parameter.
+// Cost: O(1), typically 60-100 bisection steps (at most 2200), one atan2 and one acos/atan2 for
+// the parameter.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

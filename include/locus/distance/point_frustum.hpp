@@ -2,7 +2,8 @@
 #pragma once
 // Distance between a point and a solid orthogonal frustum, in 3D (Frustum3) and 2D (Frustum2,
 // a trapezoid); rows dist2.pt-frustum and dist3.pt-frustum; book sections 6.1.5 (figures 6.11,
-// 6.12) and 10.4.3 (figure 10.23).
+// 6.12) and 10.4.3 (figure 10.23). Method (only the faces whose plane p is outside of, every
+// Voronoi region of figure 10.23 without region-specific code): docs/notes/distance.md.
 //
 // distance(p, fr) returns Distance<T, 3, NoParam, Vec3<T>> for Frustum3 and
 // Distance<T, 2, NoParam, Vec2<T>> for Frustum2: closest[1] = the frustum point nearest to p,
@@ -10,18 +11,6 @@
 // closest[1] ~ point_at(fr, param_b): s, t in [-1, 1] across the right/up (left) bounds, w in
 // [0, 1] from the near face to the far face. distance(fr, p) is the swapped result. The frustum
 // is solid: a point inside has distance 0 and is its own closest point.
-//
-// Method: p is expressed in the frustum's frame, (x, y, z) = ((p - E).R, (p - E).U, (p - E).D),
-// and reflected into x, y >= 0 (the frustum is symmetric in R and U, as in the book). Inside is
-// n <= z <= f, x n <= r z, y n <= u z. Otherwise the nearest point lies on a face whose plane p
-// is strictly outside of (at the nearest point q, p - q is a non-negative combination of the
-// normals of the faces through q, so one of them has a positive product with p - q), and among
-// the near, far, right (+R) and top (+U) faces only those are visited: the near and far faces are
-// rectangles (clamp), a side face is a trapezoid (two point-triangle queries of
-// point_triangle.hpp on its half y >= 0, which holds the nearest point by symmetry). The
-// nearest of the visited faces is the answer. This covers every Voronoi region of figure 10.23
-// (the interior, 6 faces, 12 edges and 8 vertices) without region-specific code; the 2D version
-// (figure 6.12: near and far edges, the +L side edge) is the same with segments.
 //
 // Degenerate input: d_max == d_min (a flat frustum: a rectangle/segment) and zero bounds (r, u
 // or l = 0: flat) are handled like any other frustum (the faces degenerate to segments or

@@ -7,43 +7,24 @@
 //
 // Input: vertices (Vec3) and triangles (std::array<std::uint32_t, 3> of vertex indices), the
 // layout of containment/point_in_polyhedron.hpp; triangle {i, j, k} has normal
-// (vj - vi) x (vk - vi).
-//
-// MeshDistanceTree<T> (the reusable class; T = float or double, compiled once in
-// src/distance/point_mesh.cpp) copies the triangles into an axis-aligned bounding-box tree built
-// by median splits of the triangle centroids along the longest axis (leaves of at most 4
-// triangles, depth <= log2(F) + 1). Build: O(F log F) time, O(F) memory (about 100 bytes per
-// triangle in double). Queries never allocate and are reentrant (the tree is immutable).
-//
-//  * distance(p, tree) returns Distance<T, 3, NoParam, MeshPoint<T>>: closest[1] = the nearest
-//    point of the surface (the union of the triangles; the mesh need not be closed or
-//    manifold), param_b = {triangle index into the input, barycentric (u, v, w) in it}, so
-//    closest[1] = point_at(tree, param_b). The search is best-first branch and bound: a node is
-//    opened only when its box is nearer than the best triangle so far, nearer child first; each
-//    triangle is the exact clamped query of point_triangle.hpp, so the answer is the brute-force
-//    minimum over the triangles (exact ties prefer the lower input index among the triangles
-//    visited). Cost: O(log F) nodes for a point near a well-shaped mesh, O(F) in the worst case (a
-//    point at the centre of a sphere mesh is equidistant from everything). distance(tree, p) is the
-//    swapped result. distance_to_mesh(p, vertices, triangles) is the one-call brute-force form
-//    (O(F), no tree).
-//  * classify(p, tree) is EXACT for finite input (orient2d/orient3d of core/predicates.hpp):
-//    Side::boundary on the surface, otherwise the parity of the crossings of the ray from p along
-//    +x, made generic by Simulation of Simplicity (the ray starts at p + (0, e, e^2), e -> 0+:
-//    it never meets an edge or vertex, triangles parallel to x are never crossed), the rule of
-//    containment/point_in_polyhedron.hpp, visiting only the tree nodes whose box meets the ray.
-//    Meaningful for closed meshes (every edge used an even number of times: tree.closed());
-//    orientation, convexity and manifoldness are not needed (self-intersections are read by the
-//    even-odd rule). signed_distance(p, tree) = -distance inside, 0 on the boundary, +distance
-//    outside.
-//
-// Bad input (tree.status()): no triangles -> Status::empty_input; a triangle index out of range
-// -> Status::invalid_input; a non-finite coordinate in a used vertex -> Status::non_finite_input.
-// A tree whose status is not ok answers every query with the NaN result of result.hpp
-// (distance NaN, triangle index MeshPoint::none, unique false), classify() with
-// Side::outside and signed_distance() with NaN; so does a non-finite query point. Degenerate
-// triangles (collinear or coincident vertices) are segments or points for the distance and are
-// never crossed by the perturbed ray. unique is true unless two triangles not sharing the chosen
-// point tie exactly (not detected; one is returned).
+// (vj - vi) x (vk - vi). MeshDistanceTree<T> (compiled in src/distance/point_mesh.cpp) copies
+// them into an AABB tree (median splits, leaves of at most 4 triangles). Build O(F log F) time,
+// O(F) memory; queries never allocate and are reentrant.
+//  * distance(p, tree) -> Distance<T, 3, NoParam, MeshPoint<T>>: closest[1] the nearest point of
+//    the surface (need not be closed or manifold), param_b = {input triangle index, barycentric
+//    (u, v, w)}, closest[1] = point_at(tree, param_b). The brute-force minimum over the
+//    triangles (exact ties prefer the lower index visited), by best-first branch and bound:
+//    O(log F) nodes near a well-shaped mesh, O(F) worst case. distance(tree, p) is swapped;
+//    distance_to_mesh(p, vertices, triangles) is the one-call O(F) form without a tree.
+//  * classify(p, tree): EXACT for finite input; Side::boundary on the surface, else the parity
+//    of a +x ray perturbed by Simulation of Simplicity (containment/point_in_polyhedron.hpp's
+//    rule). Meaningful for closed meshes (tree.closed(): every edge used an even number of
+//    times); self-intersections are read by the even-odd rule. signed_distance(p, tree) =
+//    -distance inside, 0 on the boundary, +distance outside.
+// Bad input (tree.status()): no triangles -> empty_input; an index out of range -> invalid_input;
+// a non-finite used vertex -> non_finite_input. Such a tree, or a non-finite query point, gives
+// the NaN result (triangle MeshPoint::none), Side::outside and NaN. Degenerate triangles act as
+// segments or points. unique is true (exact ties between triangles are not detected).
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>

@@ -2,33 +2,23 @@
 #pragma once
 // Distance between a point and a (solid) oriented box in N dimensions (2D oriented rectangle,
 // 3D OBB); rows dist2.pt-rectangle and dist3.pt-obb; book sections 6.1.4 (figure 6.10) and
-// 10.4.2 (figures 10.21, 10.22).
+// 10.4.2 (figures 10.21, 10.22). Error analysis for rounded axes: docs/notes/distance.md.
 //
 // distance(p, box) returns Distance<T, N, NoParam, Vec<T, N>>: param_b = s in [-1, 1]^N, the
 // box's symmetric coordinates (oriented_box.hpp), closest[1] ~ point_at(box, s) =
-// center + sum s[i] extent[i] axis[i] (see below). distance(box, p) is the swapped result. The
-// box is solid.
-//
-// Method: in the box's frame the query is the aligned one: x[i] = (p - center) . axis[i] is
-// clamped to [-extent[i], extent[i]]; s[i] = clamped / extent[i]. The squared distance is the sum
-// of the squared excesses x[i] - clamped[i], measured in the frame: a point inside has distance
-// exactly 0 and is its own closest point, and the error is a few ulps of |p - center| (not of
-// |center|). closest[1] = p - v maps the excess back: v = sum excess[i] axis[i], scaled to the
-// length distance. The scaling matters because stored axes are orthonormal only to rounding:
-// with Gram matrix I + G (|G| a few eps for a rounded rotation, tens of eps after a careless
-// Gram-Schmidt), |sum excess[i] axis[i]| = (1 + O(|G|)) distance, whereas the scaled v keeps
-// |closest[0] - closest[1]| = distance to a few ulps of the distance itself. closest[1] equals
-// point_at(box, s) up to the rounding of either (a few eps * (|center| + |extent|)) plus
-// O(|G| |p - center|), and the reported distance is the true distance to the parallelepiped
-// spanned by the rounded axes up to O(|G| |p - center|).
+// center + sum s[i] extent[i] axis[i]. distance(box, p) is the swapped result. The box is solid.
+// In the box's frame the query is the aligned one (x[i] = (p - center) . axis[i] clamped to
+// [-extent[i], extent[i]]): a point inside has distance exactly 0 and is its own closest point,
+// and the error is a few ulps of |p - center| (not of |center|); closest[1] = p minus the excess
+// mapped back and scaled to the length distance, so |closest[0] - closest[1]| = distance to a
+// few ulps even when the stored axes are orthonormal only to rounding.
 //
 // Preconditions and degenerate input: the axes are unit and mutually orthogonal up to rounding
-// (the box's contract, not checked; see above for what the rounding costs). A zero extent
-// flattens the box along that axis (s[i] = 0); a negative extent is treated as 0. NaN or
-// infinite values give non_finite_distance() (result.hpp), and so does finite input so large that
-// a coordinate in the box frame overflows (|p - center| near the largest finite value). unique is
-// always true. Cost: O(N^2), no branch on the data; distance() takes two square roots and N + 1
-// divisions.
+// (the box's contract, not checked). A zero extent flattens the box along that axis (s[i] = 0);
+// a negative extent is treated as 0. NaN or infinite values give non_finite_distance()
+// (result.hpp), and so does finite input so large that a coordinate in the box frame overflows.
+// unique is always true. Cost: O(N^2), no branch on the data; distance() takes two square roots
+// and N + 1 divisions.
 //
 // sqr_distance(p, box) (either order) returns distance(p, box).sqr_distance, bit for bit, without
 // the closest point, the parameters or the square root: N dot products, N min/max pairs, no
@@ -59,8 +49,8 @@ struct PointOrientedBoxCore {
   /// x[i] 0 and extent[i] 0 over i. The frame coordinates stand in for p, the center and the
   /// axes: a NaN or an infinity in any of them makes some x[i] NaN or infinite (an infinite
   /// coordinate of p - center times an axis component is infinite, or NaN for a zero one). That
-  /// is 2 N products instead of one per input value, N (N + 3): the test was half of
-  /// sqr_distance's work.
+  /// is 2 N products instead of one per input value, N (N + 3): a per-value test would be half
+  /// of sqr_distance's work.
   T finite_zero;
 };
 template <class T, int N>

@@ -11,15 +11,11 @@
 // the even-odd rule (so a self-intersecting polygon is filled as containment's point_in_polygon
 // fills it).
 //
-// Method (figure 10.15): project p into the plane, q = to_plane(frame, p) (height h above it).
-// If q is inside the polygon, q itself is the closest point (distance |h|); otherwise the closest
-// point is the nearest point of the boundary, found by exact-clamp point-segment projections in
-// the plane over every edge, and the distance is measured between p and that point in 3D (so
-// h^2 + d^2 up to rounding). Inside is decided EXACTLY for the rounded q: the even-odd crossing
-// count of the ray from q along +s, with each crossing side decided by orient2d
-// (core/predicates.hpp) and the half-open rule "exactly one endpoint strictly above q" (figures
-// 13.14-13.17's conventions; the containment layer is above this one, so the few lines are
-// repeated here). A q on the boundary may be counted either way: both give the same distance.
+// Method (figure 10.15): q = p projected into the plane; inside (decided EXACTLY for the rounded
+// q: even-odd crossings with orient2d and the half-open rule of figures 13.14-13.17, repeated
+// here because the containment layer is above this one) gives q itself; otherwise the nearest
+// boundary point by exact-clamp point-segment projections, measured from p in 3D. A q on the
+// boundary may be counted either way: both give the same distance.
 //
 // Degenerate input: one vertex is a point, two a segment (no interior); consecutive repeated
 // vertices add zero-length edges, harmlessly. An empty polygon has no points, and NaN or

@@ -2,40 +2,27 @@
 #pragma once
 // Distance between a point and a general quadratic curve (conic) a x^2 + b xy + c y^2 + d x +
 // e y + f = 0 in the plane; row dist2.pt-quadratic; book section 6.2.2 (figure 6.14, the
-// Lagrange condition P - X = t grad Q(X)).
+// Lagrange condition P - X = t grad Q(X)). Method per class: docs/notes/distance.md.
 //
 // distance(p, conic) returns Distance<T, 2, NoParam, NoParam>: a general conic has no
 // parametrisation in locus (primitives/quadratic_curve.hpp), so closest[1] itself is the answer
 // (it satisfies the equation to rounding). distance(conic, p) is the swapped result.
 //
-// Method, by the EXACT class of classify_conic() (so each branch is the right one for the
-// coefficients as given):
-//   ellipse, circle      to_ellipse() (in compute_t<T>) and the robust bisection of
-//                        point_ellipse.hpp (exact on the axes and at the centre), its point
-//                        Newton-projected onto the conic; if it then lies on the conic (the
-//                        Lagrange candidates' test) it competes with the Lagrange
-//                        candidates below (which stay accurate for nearly parabolic ellipses,
-//                        where the axis form's far-away centre costs digits).
-//   hyperbola, parabola, intersecting / parallel lines
-//                        Lagrange (detail/quadric_lagrange.hpp): in the eigenframe of the
-//                        quadratic part centred at p, the critical points are y_i = -t beta_i /
-//                        (1 + 2 l_i t) with t a root of a quartic, solved for all real roots with a
-//                        coefficient error bound; plus the critical points the quartic cannot see
-//                        (p on an axis of symmetry: t = -1/(2 l_i), two mirror candidates) and the
-//                        crossing point of a line pair; each candidate is Newton-projected onto
-//                        the curve and the nearest wins.
-//   double line, point   the orthogonal projection of p onto that line / the point.
-//   line (a = b = c = 0) the orthogonal projection onto d x + e y + f = 0.
-//   plane (all zero)     every point is on the "curve": closest[1] = p, distance 0.
-//   empty                no closest point: distance = sqr_distance = +infinity, closest[1] and
-//                        unique as in the NaN result (closest[0] = p).
+// By the EXACT class of classify_conic(): ellipses and circles use the bisection of
+// point_ellipse.hpp, competing with the Lagrange candidates; hyperbolas, parabolas and line
+// pairs use the Lagrange candidates (all real roots of a quartic, plus the points it cannot see)
+// of detail/quadric_lagrange.hpp, each Newton-projected onto the curve; a double line, a point
+// or a line (a = b = c = 0) give the orthogonal projection.
+//   plane (all zero)   every point is on the "curve": closest[1] = p, distance 0.
+//   empty              no closest point: distance = sqr_distance = +infinity, closest[1] and
+//                      unique as in the NaN result (closest[0] = p).
 // unique = false when two distinct points of the curve are equally close (to 64 eps relative in
 // the squared distance): p on an axis of symmetry inside the curve's "evolute", the centre of a
 // circle/ellipse, the crossing of two lines' bisectors.
 //
 // Bad input: a NaN or infinite coefficient or point gives non_finite_distance(). Cost: O(1):
-// the exact classification (a few hundred flops, see quadratic_curve.hpp), one 2x2 eigen-
-// decomposition and one quartic (or the ellipse bisection). Computed in compute_t<T>.
+// the exact classification (a few hundred flops), one 2x2 eigen-decomposition and one quartic
+// (or the ellipse bisection). Computed in compute_t<T> (double for float).
 
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>

@@ -2,30 +2,18 @@
 #pragma once
 // Distance between a point and a general quadric surface X^T A X + b . X + c = 0 in 3D; row
 // dist3.pt-ellipsoid (general quadric part); book section 10.5 (the Lagrange condition
-// P - X = t grad Q(X)). Ellipsoids in axis form are in point_ellipsoid.hpp.
+// P - X = t grad Q(X)). Ellipsoids in axis form are in point_ellipsoid.hpp. Method per type:
+// docs/notes/distance.md.
 //
 // distance(p, quadric) returns Distance<T, 3, NoParam, NoParam>: a general quadric has no
 // parametrisation in locus (primitives/quadric.hpp), so closest[1] itself is the answer (it
 // satisfies the equation to rounding). distance(quadric, p) is the swapped result.
 //
-// Method, by the EXACT type of quadric_type(q) (primitives/quadric.hpp):
-//   ellipsoid             standard_form() (in compute_t<T>) gives centre, axes and extents
-//                         sqrt(-k / d_i); the robust bisection of point_ellipsoid.hpp gives a
-//                         point (exact on symmetry planes), Newton-projected onto the quadric,
-//                         which competes with the Lagrange candidates below (accurate also for
-//                         nearly paraboloidal ellipsoids, whose far-away centre costs digits).
-//   hyperboloids, cones, paraboloids, cylinders, intersecting / parallel planes
-//                         Lagrange (detail/quadric_lagrange.hpp): in the eigenframe of A centred
-//                         at p the critical points are y_i = -t beta_i / (1 + 2 l_i t), t a real
-//                         root of a sextic (all found, with a coefficient error bound); plus the
-//                         critical points the sextic cannot see (p on a symmetry plane:
-//                         t = -1/(2 l_i), mirror candidates; a circle of them for a surface of
-//                         revolution), and the apex / singular line (pseudo-inverse stationary
-//                         point); every candidate is Newton-projected onto the surface and the
-//                         nearest wins.
-//   plane (rank A = 0)    the orthogonal projection onto b . X + c = 0.
-//   double plane, line, point   (rank A >= 1, the set is an affine subspace counted twice)
-//                         the orthogonal projection onto it.
+// By the EXACT type of quadric_type(q): an ellipsoid uses the bisection of point_ellipsoid.hpp,
+// competing with the Lagrange candidates; hyperboloids, cones, paraboloids, cylinders and plane
+// pairs use the Lagrange candidates of detail/quadric_lagrange.hpp (all real roots of a sextic,
+// plus symmetry-plane, apex and singular-line points), each Newton-projected onto the surface.
+//   plane, double plane, line, point   the orthogonal projection onto that affine subspace.
 //   entire space          closest[1] = p, distance 0.
 //   empty                 distance = sqr_distance = +infinity, closest[1] NaN, unique = false.
 // unique = false when two distinct surface points are equally close (64 eps relative in the
@@ -33,7 +21,7 @@
 //
 // Bad input: NaN or infinite coefficients or point give non_finite_distance(). Cost: O(1): the
 // exact classification (13 exact principal minors), one 3x3 eigen-decomposition, one sextic
-// (or the ellipsoid bisection). Computed in compute_t<T>.
+// (or the ellipsoid bisection). Computed in compute_t<T> (double for float).
 
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>

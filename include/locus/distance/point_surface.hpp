@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Distance between a point and a Bézier (rectangle or triangle), B-spline or NURBS surface, in
-// any dimension N (3D is the book's case); row dist3.pt-paramsurface; book section 10.5 (point
-// to parametric surface), figure 10.26.
+// any dimension N (3D is the book's case); row dist3.pt-paramsurface; book section 10.5, figure
+// 10.26. Method (global branch and bound) and accuracy: docs/notes/distance.md.
 //
 // distance(p, surface) returns Distance<T, N, NoParam, Vec2<T>>: closest[1] =
 // point_at(surface, u, v) with param_b = (u, v) in the surface's own parametrisation
@@ -10,69 +10,21 @@
 // u + v <= 1; BSplineSurface / NurbsSurface: domain_u x domain_v). distance(surface, p) is the
 // swapped result.
 //
-// Method: the book minimises Q(u, v) = |S(u, v) - P|^2 by Newton's method on its gradient from a
-// starting guess and treats the domain boundary with point-curve distances. locus makes that
-// GLOBAL by branch and bound. Every surface is seen as rational Bézier pieces (homogeneous
-// control points (w P, w), w = 1 for polynomial surfaces; B-spline / NURBS knot-span patches are
-// extracted by blossoming in compute_t<T>).
-//   1. Boundary: the edges of every piece are rational Bézier curves; their exact global minima
-//      come from point_curve.hpp's all-roots span machinery (distance/detail/rational_span.hpp).
-//      An edge minimum is a minimum of the surface only if Q does not decrease from it into the
-//      piece (nor into the neighbouring piece across a knot line): the sign of (S - P) . S_n,
-//      S_n the derivative along the inward parameter direction, beyond its rounding.
-//   2. Interior: a best-first work heap of sub-pieces (parameter boxes, or sub-triangles of a
-//      4-way midpoint split), each re-extracted from its piece by blossoming (no accumulated
-//      subdivision error). A sub-piece's lower bound is the largest of the distance from P to
-//      the box of its (projected) control points, min_k (X_k - P) . e over the directions e
-//      toward its control centroid and toward the best point so far (convex-hull property; it
-//      holds for NURBS because validate() requires positive weights), and the square root of the
-//      smallest ratio of the Bernstein coefficients of |A - P W|^2 and W^2 (A, W the homogeneous
-//      numerator and weight: exact where the distance is constant, e.g. a sphere patch seen from
-//      its centre, where hull bounds cannot converge). A sub-piece whose bound is not
-//      below best - tau is discarded; as the heap is ordered by bound, the search ends when the
-//      smallest bound reaches best - tau. Otherwise its corners are offered, and a bounded
-//      Newton descent (true Hessian when positive definite, else Gauss-Newton with Levenberg
-//      damping; projected onto the piece's rectangle / triangle, one-dimensional Newton along an
-//      edge whose constraint blocks descent; backtracking, every step decreases Q or the
-//      gradient) starts at its centre unless the best point already lies in it; then it is
-//      split (boxes along the physically longer direction).
-//   tau = 2^-26 size + (64 eps_C + 16 eps_T) (size + max |P_i|), size the diagonal of the box
-//   of the control points (the second term covers the rounding of the bounds themselves and
-//   the precision of T: a float surface is only defined to float accuracy).
-//   3. Polish: a best point that is neither Newton-converged nor an edge minimum of the surface
-//      (a sub-piece corner, an edge point that Q decreases from) is only within tau of the
-//      minimum (its parameters within ~sqrt(tau) of it): Newton starts from it on every piece
-//      holding it.
-// Accuracy: the result is a point of the surface whose distance is an upper bound of the true
-// one; it is a Newton-converged local minimum (or an exact edge minimum), so its distance is
-// accurate to a few ulps of the scale, and the branch and bound certifies (up to rounding) that
-// no point of the surface is closer than distance - tau. Only near-ties within tau between
-// distinct minima that Newton did not reach could be resolved to the wrong one; the work budget
-// (below) ends the search early only for pathological input, still returning a surface point.
-// Computations run in compute_t<T> (double for float input), on the control net and the point
-// scaled by a power of two when products of four coordinates would leave the range (beyond
-// ~1e76 or below ~1e-76: detail/rescale.hpp); the parameters found are evaluated on the input.
+// Accuracy: closest[1] is a surface point (the distance is an upper bound), a Newton-converged
+// local minimum or an exact edge minimum, certified up to rounding to be within tau (about
+// 2^-26 of the control box's size) of the global minimum. Computed in compute_t<T> (double for
+// float), rescaled by a power of two when products of four coordinates would leave the range.
+// unique = false when two critical candidates more than 16 sqrt(eps) size apart tie (to 64 eps
+// of T in the squared distance): a point on a symmetry plane, the centre of a spherical patch.
 //
-// unique = false when two critical candidates (Newton-converged points, edge-curve minima that
-// Q does not decrease from inward, see 1.) more than 16 sqrt(eps of compute_t<T>) size apart are
-// (to 64 eps of T relative in the squared distance) equally close: a point on a symmetry plane
-// of the patch, the centre of a spherical NURBS patch (every point is closest). A point that Q
-// decreases from into the domain (an edge point, a Newton descent blocked at a knot line) is no
-// such evidence, however close its distance: the surface gets closer beside it. The test is
-// one-sided derivatives at the candidate itself; along a collapsed edge (a pole) only the
-// candidate's own edge parameter is tried.
-//
-// Degenerate input: a degree 0 direction (a 1 x n net), a constant patch, collapsed edges
-// (a corner or edge where S_u or S_v vanishes), repeated knots and C0 knot lines are fine (the
-// Newton step falls back to damped Gauss-Newton and the boundary curves carry the edges).
-// Invalid surfaces (bad shape, NaN/Inf control points, validate() != ok for B-spline / NURBS
-// surfaces: bad knots, zero or negative weights, NaN/Inf weights) and a NaN/Inf point give
+// Degenerate input: a degree 0 direction, a constant patch, collapsed edges (poles), repeated
+// knots and C0 knot lines are fine. Invalid surfaces (bad shape, NaN/Inf control points,
+// validate() != ok: bad knots, non-positive or NaN weights) and a NaN/Inf point give
 // non_finite_distance().
-// Cost: per query O(pieces) setup (B-spline / NURBS extraction O(rows cols (du^3 + dv^3)))
-// plus O(d^4) per processed sub-piece; typically 50-200 sub-pieces for a bicubic patch (about
-// 0.1-0.3 ms in Release).
-// Work budget: 4096 + 16 pieces sub-pieces, 48 Newton iterations of at most 40 backtracking
-// halvings each. Allocates (the piece nets and the work heap).
+// Cost: O(pieces) setup (B-spline / NURBS extraction O(rows cols (du^3 + dv^3))) plus O(d^4) per
+// processed sub-piece, typically 50-200 for a bicubic patch. Work budget: 4096 + 16 pieces
+// sub-pieces, 48 Newton iterations of at most 40 halvings each (the result is still a surface
+// point when it runs out). Allocates (the piece nets and the work heap).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

@@ -2,44 +2,23 @@
 #pragma once
 // Distance between a point and a (solid) triangle in N dimensions (2D and 3D included); rows
 // dist2.pt-triangle and dist3.pt-triangle; book sections 6.1.3 (figures 6.5-6.9) and 10.3.2
-// (figures 10.8-10.10).
+// (figures 10.8-10.10). Method (KKT over the seven regions of figure 6.6, the 3D fast path):
+// docs/notes/distance.md.
 //
 // distance(p, tri) returns Distance<T, N, NoParam, Vec3<T>>: closest[1] = the point of the
 // triangle nearest to p, param_b = its barycentric coordinates (u, v, w) (u + v + w = 1, all
 // >= 0; closest[1] = point_at_barycentric(tri, param_b) up to the order of the sum, so a vertex
 // is reproduced exactly).
-// distance(tri, p) is the swapped result. The triangle is filled: a point inside has distance 0.
+// distance(tri, p) is the swapped result. The triangle is filled: a point inside has distance 0
+// (in 2D exactly p itself).
 //
-// Method: minimise |v0 + s (v1 - v0) + t (v2 - v0) - p|^2 over s, t >= 0, s + t <= 1 (the
-// parametric form of figure 5.4, (u, v, w) = (1 - s - t, s, t)). The unconstrained minimiser
-// (the projection onto the triangle's plane, solved by Cramer's rule, plus two steps of iterative
-// refinement when the angle at v0 is within ~14 degrees of 0 or 180) is the answer when it is
-// inside (region 0 of figure 6.6); in 2D "inside" is decided first from the sub-areas relative to
-// p, and then the answer is p itself (distance exactly 0). Otherwise the answer lies on an edge
-// whose constraint the minimiser violates (KKT: moving towards the minimiser along a feasible
-// direction would decrease the distance): s < 0 gives the edge v0 v2 (regions 2, 3, 4), t < 0 the
-// edge v0 v1 (regions 4, 5, 6), s + t > 1 the edge v1 v2 (regions 1, 2, 6); each is an exact
-// clamped point-segment projection, and the nearest of those edges wins. This covers the seven
-// regions of figure 6.6 without region-specific code, and the vertex regions come out of the clamps
-// exactly. In 3D the common case (finite input, well-shaped triangle: 16 |e0 x e1|^2 >= |e0|^2
-// |e1|^2 with the edges e0, e1 taken from v0, or else from the vertex opposite the longest edge,
-// so that only needles fail it; the plane solution is then accurate to a few ulps) runs as a fast
-// path: inside or not, then the violated edges' clamped projections (the nearer of two at a
-// vertex region; ties keep the first of the edges v0 v1, v0 v2, v1 v2 in the rotated order).
-// Branching on the region costs less than the branch-free evaluation of all three edges that an
-// earlier version used (1.5x per query on random input, measured), and the batch kernels evaluate
-// all three and mask the others out, with the same bits. Its finiteness test comes with its range
-// tests. Everything else goes through the general code.
-//
-// Degenerate input: when the triangle is (nearly) flat, |e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2 (the
-// plane solve is ill-conditioned), the answer is the nearest of the three edges, each handled as a
-// point-segment query (plus the plane solution when it still lands inside), so collinear and
-// coincident vertices give the distance to the segment or point they span. Coordinates beyond
-// ~1e76 or below ~1e-76 (double; ~1e9 and ~1e-9 for float), where the products of four in det
-// overflow or underflow, take the general code on a copy scaled by a power of two, whose
-// barycentric coordinates are evaluated on the input (detail/rescale.hpp). NaN or infinite
-// coordinates give non_finite_distance() (result.hpp). unique is always true. Cost: O(N), one 2x2
-// solve, one to three point-segment projections.
+// Degenerate input: when the triangle is (nearly) flat, |e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2, the
+// answer is the nearest of the three edges (point-segment queries), so collinear and coincident
+// vertices give the distance to the segment or point they span. Coordinates beyond ~1e76 or below
+// ~1e-76 (double; ~1e9 and ~1e-9 for float) are solved on a copy scaled by a power of two, with
+// the barycentric coordinates evaluated on the input (detail/rescale.hpp). NaN or infinite
+// coordinates give non_finite_distance() (result.hpp). unique is always true.
+// Cost: O(N), one 2x2 solve, one to three point-segment projections.
 //
 // sqr_distance(p, tri) (either order) returns distance(p, tri).sqr_distance, bit for bit (the
 // same core), without the result's closest points, the barycentric coordinates or the square

@@ -7,19 +7,12 @@
 // distance(x, y) returns Distance<T, N, T, T>: closest[0] = point_at(x, param_a), closest[1] =
 // point_at(y, param_b), with the parametrisations
 //   t >= 0, point_at(ray, t) = origin + t direction.
-// Method (detail/linear.hpp): the convex quadratic |x(s) - y(t)|^2 is minimised over the
-// parameter domain; when the directions are well separated and the unconstrained minimiser lies
-// in the domain it is the answer, otherwise the minimum over the in-domain interior point and
-// the exact point-to-component solutions on the domain's finite edges is taken. For nearly
-// parallel directions the interior point comes from accurately rounded 2x2 minors (the cross
-// product), so it is found even far away (s ~ |x.origin - y.origin| / sin angle). In 2D whether
-// the two meet is decided exactly first (orientation signs): if they do, the closest points are the
-// crossing point (to rounding) and the distance is exactly 0. The squared distance is within a few
-// eps * scale^2 of the exact one, scale being the magnitude of the closest points (far away for
-// nearly parallel input). Like the exact distance, the answer jumps at exact parallelism (in
-// the plane nearly parallel lines meet, parallel ones keep their distance); the parallel answer
-// is returned only for exactly parallel directions, or when the crossing lies beyond the
-// floating-point range.
+// Method: detail/linear.hpp (docs/notes/distance.md). In 2D whether the two meet is decided
+// exactly (orientation signs); if they do, the distance is exactly 0 at the crossing point (to
+// rounding). The squared distance is within a few eps * scale^2 of the exact one, scale the
+// magnitude of the closest points (far away for nearly parallel input). Like the exact distance,
+// the answer jumps at exact parallelism; the parallel answer is returned only for exactly
+// parallel directions, or when the crossing lies beyond the floating-point range.
 // unique = false when the directions are parallel (sin^2 angle <= 64 eps^2) and the parameter
 // ranges overlap in an interval (parallel lines, overlapping parallel segments): one pair of the
 // infinitely many is returned.

@@ -10,16 +10,10 @@
 // distance(rect, ray) is the swapped result. The rectangle is filled: a ray passing through it
 // has distance 0.
 //
-// Method (detail/linear_planar.hpp): in the rectangle's frame the rectangle is the box
-// [-e0, e0] x [-e1, e1] x {0}. When the direction is not nearly parallel to the plane, the
-// crossing of the ray's line with the plane is the answer if it lies in the prism
-// "parameter interval x rectangle"; otherwise only the facets of the prism it violates are tried
-// (KKT): the ray's origin (a clamp in the frame) and the sides of the rectangle (exact
-// linear-segment queries). These are the regions of figure 10.43 (the nine regions of the
-// rectangle's (s, t) plane, for t < 0 and t >= 0) without region-specific code. Nearly parallel
-// directions and rounding-sensitive crossings evaluate every candidate (the projected crossing, the
-// origin, the four sides): each is a realisable pair, so the answer is continuous through parallel
-// configurations and never divides by a vanishing determinant.
+// Method: detail/linear_planar.hpp (docs/notes/distance.md): the crossing with the plane when
+// it lies in the prism, else the facets its parameters violate (KKT, the regions of figure
+// 10.43); nearly parallel or rounding-sensitive cases evaluate every candidate, so the answer
+// is continuous through parallel configurations and never divides by a vanishing determinant.
 //
 // unique = false when the ray is parallel to the rectangle's plane (sin^2 angle <= 64 eps^2) and
 // the closest pair can slide along it (above the interior, or along the nearest side).

@@ -10,17 +10,10 @@
 // distance(tri, ray) is the swapped result. The triangle is filled: a ray passing through it
 // has distance 0.
 //
-// Method (detail/linear_planar.hpp): the convex quadratic |A(t) - T(s, u)|^2 over the prism
-// "parameter interval x triangle". When the direction is not nearly parallel to the plane, the
-// crossing of the ray's line with the plane (Cramer's rule on triple products) is the answer
-// if it lies in the prism; otherwise only the facets of the prism its parameters violate are
-// tried (KKT): the ray's origin (a point-triangle query) and the edges of the triangle (exact
-// linear-segment queries, detail/linear.hpp). These are the regions of figure 10.40 (the seven
-// regions of the triangle's (s, t) plane, for t < 0 and t >= 0) without region-specific code.
-// Nearly parallel directions, nearly flat triangles and rounding-sensitive crossings evaluate every
-// candidate (the projected crossing, the origin, the three edges): each is a realisable pair, so
-// the answer is continuous through parallel configurations and never divides by a vanishing
-// determinant.
+// Method: detail/linear_planar.hpp (docs/notes/distance.md): the crossing with the plane when
+// it lies in the prism, else the facets its parameters violate (KKT, the regions of figure
+// 10.40); nearly parallel or rounding-sensitive cases evaluate every candidate, so the answer
+// is continuous through parallel configurations and never divides by a vanishing determinant.
 //
 // unique = false when the ray is parallel to the triangle's plane (sin^2 angle <= 64 eps^2) and
 // the closest pair can slide along it (above the interior, or along the nearest edge), or when a

@@ -5,8 +5,7 @@
 //
 // Distance<T, N, ParamA, ParamB> holds
 //   distance      >= 0, the Euclidean distance between the two objects;
-//   sqr_distance  its square (queries compute it first; distance = sqrt(sqr_distance) up to
-//                 rounding, so callers comparing distances need no sqrt);
+//   sqr_distance  its square (computed first; distance = sqrt(sqr_distance) up to rounding);
 //   closest[0]    a point of the first argument, closest[1] a point of the second, with
 //                 |closest[0] - closest[1]| = distance (up to rounding);
 //   param_a       the first argument's parameter of closest[0], in the parametrisation of that
@@ -14,31 +13,18 @@
 //                 Triangle: barycentric (u, v, w); a point: NoParam), and param_b likewise;
 //   unique        false when infinitely many closest pairs exist (parallel lines, overlapping
 //                 parallel segments, ...); one of them is returned.
-// Index 0 always refers to the first argument: each pair header defines distance(b, a) as
-// swapped(distance(a, b)), so the two argument orders give bit-identical, swapped answers.
-// A pair's result type is named by the header, e.g. distance(Segment3d, Segment3d) returns
-// Distance<double, 3, double, double>; write `auto`.
+// Index 0 always refers to the first argument: distance(b, a) is swapped(distance(a, b)), bit
+// for bit. Solid objects (triangles, rectangles, boxes, disks) are filled: inside is distance 0.
 //
-// Solid objects (triangles, rectangles, boxes, disks) are filled: a point inside has distance 0.
-//
-// Bad input (policy for every pair): when any coordinate, direction or size of either argument
-// is NaN or infinite, the result is non_finite_distance(): distance = sqr_distance = NaN,
-// closest points and scalar/vector parameters NaN, unique = false. A NaN is never presented as a
-// finite-looking answer, and no query loops or divides by zero. Zero directions and zero sizes
-// are not errors: the object degenerates (a zero-length segment acts as its point), as each
-// header documents. Finite input large enough to overflow the squared distance gives inf.
-//
-// Squared distance only: sqr_distance(a, b) (both argument orders, float and double, noexcept,
-// [[nodiscard]]) returns just distance(a, b).sqr_distance, for the pairs that offer it (point-
-// segment, segment-segment, point-triangle in 2D and 3D, point-aligned box, point-oriented box,
-// segment-triangle; see each header). It runs the same computation as distance() (one shared
-// core, so the value is the same bits) but skips the closest points' result, the parameters and
-// the square root; non-finite input gives NaN (no other error value). Use it to compare or
-// threshold distances, as CGAL's squared_distance is used. Many queries of one of those 3D pairs
-// at once: sqr_distances(span_a, span_b, out) in batch.hpp (the same bits, several queries per
-// SIMD instruction).
-//
-// Cost: the result is an aggregate of at most 2 N + 8 scalars; no allocation.
+// Bad input (every pair): any NaN or infinite coordinate, direction or size gives
+// non_finite_distance(): distance = sqr_distance = NaN, closest points and parameters NaN,
+// unique = false; no query loops or divides by zero. Zero directions and sizes are not errors:
+// the object degenerates (a zero-length segment acts as its point). Finite input large enough to
+// overflow the squared distance gives inf.
+// sqr_distance(a, b) (both orders, where a pair header offers it) returns the same bits as
+// distance(a, b).sqr_distance without the points, parameters and root; NaN for non-finite input.
+// Many 3D queries at once: sqr_distances() in batch.hpp. Cost: an aggregate of at most 2 N + 8
+// scalars; no allocation.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

@@ -7,19 +7,12 @@
 // distance(x, y) returns Distance<T, N, T, T>: closest[0] = point_at(x, param_a), closest[1] =
 // point_at(y, param_b), with the parametrisations
 //   t in [0, 1], point_at(seg, t) = (1 - t) p0 + t p1.
-// Method (detail/linear.hpp): the convex quadratic |x(s) - y(t)|^2 is minimised over the
-// parameter domain; when the directions are well separated and the unconstrained minimiser lies
-// in the domain it is the answer. When it lies outside and the directions are not nearly
-// parallel, the answer is ONE exact clamped point-segment projection on an edge of the domain
-// (chosen by the violated constraints and, at a corner, by the sign of the derivative:
-// segment_pair_fast). Otherwise (nearly parallel, or
-// degenerate) the minimum over the in-domain interior point and the exact point-to-component
-// solutions on the domain's finite edges is taken; in 2D, whether nearly parallel segments meet
-// is decided exactly (orientation signs) first, and if they do the closest points are the crossing
-// point (to rounding) and the distance is exactly 0. The answer is therefore continuous as the
-// input passes through (nearly) parallel configurations and is never a "parallel" guess: its
-// squared distance is within a few eps * scale^2 of the exact one. distance(y, x) is bit for bit
-// the swap of distance(x, y).
+// Method: detail/linear.hpp (docs/notes/distance.md): the interior minimiser, or ONE exact
+// clamped point-segment projection chosen by the violated constraints (segment_pair_fast), or,
+// nearly parallel or degenerate, every candidate; in 2D nearly parallel segments that meet
+// (decided exactly) get distance exactly 0 at the crossing. The answer is continuous through
+// (nearly) parallel configurations: its squared distance is within a few eps * scale^2 of the
+// exact one. distance(y, x) is bit for bit the swap of distance(x, y).
 // unique = false when the directions are parallel (sin^2 angle <= 64 eps^2) and the parameter
 // ranges overlap in an interval (parallel lines, overlapping parallel segments): one pair of the
 // infinitely many is returned.

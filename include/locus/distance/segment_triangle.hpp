@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Distance between a segment and a (solid) triangle in 3D; row dist3.linear-triangle; book section
-// 10.5.1 (figures 10.38-10.41).
+// 10.5.1 (figures 10.38-10.41). Method: detail/linear_planar.hpp and docs/notes/distance.md.
 //
 // distance(seg, tri) returns Distance<T, 3, T, Vec3<T>>: closest[0] = point_at(seg, param_a) with
 //   t in [0, 1], point_at(seg, t) = (1 - t) p0 + t p1 (endpoints exact),
@@ -10,39 +10,21 @@
 // distance(tri, seg) is the swapped result. The triangle is filled: a segment passing through it
 // has distance 0.
 //
-// Method (detail/linear_planar.hpp): the convex quadratic |A(t) - T(s, u)|^2 over the prism
-// "parameter interval x triangle". When the direction is not nearly parallel to the plane, the
-// crossing of the segment's line with the plane (Cramer's rule on triple products) is the answer
-// if it lies in the prism; otherwise only the facets of the prism its parameters violate are
-// tried (KKT): the segment's ends (point-triangle queries) and the edges of the triangle (exact
-// linear-segment queries, detail/linear.hpp). These are the regions of figure 10.40 (the seven
-// regions of the triangle's (s, t) plane, times t < 0, 0 <= t <= 1, t > 1) without region-specific
-// code. Nearly parallel directions, nearly flat triangles and rounding-sensitive crossings evaluate
-// every candidate (the projected crossing, both ends, the three edges): each is a realisable pair,
-// so the answer is continuous through parallel configurations and never divides by a vanishing
-// determinant.
-//
 // unique = false when the segment is parallel to the triangle's plane (sin^2 angle <= 64 eps^2) and
 // the closest pair can slide along it (above the interior, or along the nearest edge), or when a
 // flat triangle's nearest edge is parallel to it.
 // Exact zero: whether the segment meets a non-degenerate triangle is decided EXACTLY (orient3d,
 // plus orient2d when coplanar; core/predicates.hpp). The distance is exactly 0 only when they
-// meet, and is exactly 0 whenever they meet except for ill-conditioned contacts (a needle
-// triangle, a grazing angle) whose rounded closest points differ by more than 32 ulps of the
-// largest input coordinate: those report the rounded pair (~eps / angle apart). When 0, both
-// closest points are the contact point on the triangle. For a degenerate triangle the answer is
-// the rounded edge distance.
+// meet, and whenever they meet except for ill-conditioned contacts (a needle triangle, a grazing
+// angle) whose rounded closest points differ by more than 32 ulps of the largest input coordinate:
+// those report the rounded pair (~eps / angle apart). When 0, both closest points are the contact
+// point on the triangle. For a degenerate triangle the answer is the rounded edge distance.
 // Degenerate input: a zero-length segment acts as the point p0 (t = 0; the point-triangle query); a
-// (nearly) flat triangle (|e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2: collinear or coincident vertices)
-// acts as the union of its three edges, so the answer is the distance to the segment or point
-// it spans, continuously. NaN or infinite coordinates give non_finite_distance() (result.hpp).
-// Cost: O(1): one 3x3 solve and one to three point-triangle / segment-segment queries in the
-// generic case plus two to five exact orient3d signs, at most 7 sub-queries in the nearly parallel
-// case.
-//
-// sqr_distance(seg, tri) (either order) returns distance(seg, tri).sqr_distance, bit for bit
-// (exactly 0 under the same contact rule), without the closest points, the parameters or the
-// square root; NaN for non-finite input.
+// (nearly) flat triangle (|e0 x e1|^2 <= 64 eps |e0|^2 |e1|^2) acts as the union of its three
+// edges. NaN or infinite coordinates give non_finite_distance() (result.hpp). Cost: O(1): one 3x3
+// solve, one to three sub-queries and two to five orient3d signs; at most 7 sub-queries when
+// nearly parallel. sqr_distance(seg, tri) (either order) returns distance(seg, tri).sqr_distance
+// bit for bit (exactly 0 under the same contact rule); NaN for non-finite input.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

@@ -1,46 +1,30 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Support mappings of convex shapes: the input of GJK and EPA (distance/gjk.hpp); rows dist2.gjk
-// and dist3.gjk; book section 6.10 (the support point of figure 6.25 is "the point of the set
-// that is farthest in direction -V_k").
+// and dist3.gjk; book section 6.10 (figure 6.25's support point).
 //
 // support(shape, d) returns a point X of the (solid) shape maximising dot(X, d). Any convex
 // shape with such a function can be given to gjk_distance() and penetration(): the concept
-// SupportMapped<S> asks for support(s, d) (found by argument-dependent lookup, so user types
-// add an overload in their own namespace) and for SupportSpace<S> (the scalar type and
-// dimension; user types define member aliases `scalar_type` and `static constexpr int
-// dimension`, or specialise locus::SupportSpace).
+// SupportMapped<S> asks for support(s, d) (found by argument-dependent lookup) and for
+// SupportSpace<S> (member aliases `scalar_type` and `static constexpr int dimension`, or a
+// specialisation of locus::SupportSpace).
 //
-// Shapes provided (T = float or double, N = 2 or 3 where it applies):
-//   Vec<T, N>                 a point
-//   Segment<T, N>             the closed segment
-//   Triangle<T, N>            the filled triangle
-//   ConvexPoints<T, N>        the convex hull of a span of points (a convex polygon's vertices
-//                             or a convex polyhedron's vertices; interior points and duplicates
-//                             are allowed and cost only time): a linear scan
-//   Sphere<T, N>, Circle2<T>  the ball / disk
-//   AlignedBox<T, N>, OrientedBox<T, N>
-//   Capsule<T, N>             segment swept by a ball
-//   Cylinder3<T>              finite right circular cylinder (height < infinity)
-//   Cone3<T>                  finite cone, also truncated (0 <= min_height); for a double cone
-//                             (min_height < 0) the support is that of its convex hull
-//   Transformed<S>            any of these under a rigid motion x -> rotation * x + translation,
-//                             grown by `margin` >= 0 (the Minkowski sum with a ball: a rounded
-//                             shape). rotation must be orthonormal (not checked).
-// Ties (a face or an edge facing d) are broken deterministically: the same input gives the same
-// point. For d = 0 the result is some point of the shape.
+// Shapes provided (T = float or double, N = 2 or 3 where it applies): Vec<T, N> (a point),
+// Segment<T, N>, Triangle<T, N> (filled), ConvexPoints<T, N> (the hull of a span of points;
+// interior points and duplicates cost only time), Sphere<T, N>, Circle2<T> (disk),
+// AlignedBox<T, N>, OrientedBox<T, N>, Capsule<T, N>, Cylinder3<T> (finite), Cone3<T> (finite,
+// also truncated; a double cone maps its convex hull), and Transformed<S>: any of these under
+// x -> rotation * x + translation (rotation orthonormal, not checked), grown by `margin` >= 0.
+// Ties (a face or an edge facing d) are broken deterministically. For d = 0 the result is some
+// point of the shape.
 //
-// Margins. Balls, capsules and Transformed margins are sums "core + ball of radius r"; GJK and
-// EPA run on the cores (a point, a segment, ...) and add the radii afterwards, which is exact
-// and converges in finitely many steps where GJK on the round surface would only converge
-// linearly (van den Bergen, "A fast and robust GJK implementation for collision detection of
-// convex objects", JGT 1999, section 5). detail::core_support / detail::core_margin implement
-// that split; support() itself always maps the whole shape.
-//
-// Degenerate input: zero radius, zero extent and zero-length segments are fine (lower-
-// dimensional shapes). An empty ConvexPoints, an infinite cylinder or cone, and NaN/infinite
-// coordinates make support() return non-finite coordinates, which GJK reports as
-// Status::non_finite_input. Cost: O(1) per call, O(n) for ConvexPoints; no allocation.
+// Margins: balls, capsules and Transformed margins are "core + ball of radius r"; GJK and EPA run
+// on the cores and add the radii afterwards (exact, finitely many steps; van den Bergen, JGT
+// 1999, section 5). detail::core_support / core_margin implement that split; support() itself
+// always maps the whole shape.
+// Degenerate input: zero radius, extent or length are fine (lower-dimensional shapes). An empty
+// ConvexPoints, an infinite cylinder or cone, and NaN/Inf coordinates make support() return
+// non-finite coordinates (GJK: Status::non_finite_input). Cost: O(1), O(n) for ConvexPoints.
 
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>

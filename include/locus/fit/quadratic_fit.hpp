@@ -1,35 +1,28 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Algebraic least-squares conics and quadrics (row num.fit; book appendix A.7, "fitting a
-// quadratic curve / quadric surface").
+// quadratic curve / quadric surface"). Method (streaming Givens QR, then the SVD of the K x K
+// triangle) and Hartley's normalisation: docs/notes/fit.md.
 //
 //   fit_quadratic_curve(points2)  QuadraticCurve2 {a, b, c, d, e, f}: a x^2 + b xy + c y^2 + d x
 //                                 + e y + f = 0 (6 coefficients; at least 5 points)
 //   fit_quadric(points3)          Quadric3 {A, b, c}: X^T A X + b . X + c = 0 with A symmetric,
 //                                 i.e. the 10 coefficients of x^2, y^2, z^2, xy, xz, yz (= 2 A_01,
 //                                 2 A_02, 2 A_12), x, y, z, 1 (at least 9 points)
-//
-// Method: minimise sum_i (w . v(p_i))^2 over coefficient vectors w with |w| = 1, where v(p) is the
-// vector of monomials; the minimiser is the right singular vector of the design matrix
-// V = [v(p_i)^T] for its smallest singular value (equivalently the eigenvector of the scatter
-// matrix V^T V for its smallest eigenvalue; computing the SVD avoids squaring the condition
-// number). V is reduced to a K x K triangle by Givens rotations as the points stream in (no n x K
-// matrix is stored), then numeric/decompose.hpp's svd() is applied to the triangle.
-//
-// NORMALISATION. The fit is done in the normalised coordinates u = (p - mean) / s, s = the RMS
-// distance of the points to their mean (Hartley's conditioning: all monomials become O(1), and
-// the fit is invariant under translating and scaling the points). In u the coefficient vector
-// has unit Euclidean norm; it is then mapped to the original coordinates and rescaled so that
-// the returned coefficient vector (a, b, c, d, e, f), resp. (A_00, A_11, A_22, 2 A_01, 2 A_02,
-// 2 A_12, b, c), has unit Euclidean norm, with its largest-magnitude entry positive. rms is the
-// RMS algebraic residual of that returned unit vector over the points (not a distance).
+// The coefficient vector w minimises sum_i (w . v(p_i))^2 over |w| = 1 (v(p) the monomials), in
+// coordinates normalised by the points' mean and RMS radius, so the fit is invariant under
+// translating and scaling the points. The returned coefficient vector (a, b, c, d, e, f), resp.
+// (A_00, A_11, A_22, 2 A_01, 2 A_02, 2 A_12, b, c), has unit Euclidean norm, with its
+// largest-magnitude entry positive. rms is the RMS algebraic residual of that returned unit
+// vector over the points (not a distance).
 //
 // Degenerate input: no points -> empty_input; NaN/Inf -> non_finite_input; fewer than 5 (9)
 // points, coincident points, or points through which the curve (surface) is not unique - the
 // second-smallest singular value s_{K-2} <= tol * s_0 with tol = max(64 sqrt(K) eps(C),
 // rank_tolerance * max|coordinate| / s) (e.g. 4 collinear points of 5, all points on a line, or
 // for a quadric, points on a conic) -> degenerate_input with zero coefficients and rms NaN.
-// Computed in compute_t<T>, rounded to T. Cost O(n K^2) with K = 6 or 10, plus a K x K SVD.
+// Computed in compute_t<T>, rounded to T. Cost O(n K^2) with K = 6 or 10, plus a K x K SVD; no
+// n x K matrix is stored.
 
 #include <locus/fit/fit_common.hpp>
 #include <locus/numeric/decompose.hpp>

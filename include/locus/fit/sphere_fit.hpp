@@ -1,27 +1,19 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Least-squares spheres (and hyperspheres; circles are in circle_fit.hpp) (row num.fit; book
-// section 2.9 and appendix A.7).
+// section 2.9 and appendix A.7). The Levenberg-Marquardt details: docs/notes/fit.md.
 //
 //   fit_sphere_algebraic(points)  minimises sum_i (|p_i|^2 + D . p_i + F)^2, the ALGEBRAIC
-//                                 distance of x^2 + D . x + F = 0: a linear least-squares problem
-//                                 in (D, F) (numeric/least_squares.hpp, QR with column pivoting),
-//                                 solved after centring the points at their mean and scaling them
-//                                 to unit RMS radius (that conditioning keeps the columns
-//                                 |p|^2, p, 1 comparable). center = -D/2, radius^2 = |D|^2/4 - F.
-//                                 One solve, no iteration; biased towards smaller spheres on short
-//                                 arcs but a good start for:
+//                                 distance of x^2 + D . x + F = 0: one linear least-squares
+//                                 solve in (D, F) on centred, unit-RMS points (QR with column
+//                                 pivoting). center = -D/2, radius^2 = |D|^2/4 - F. Biased
+//                                 towards smaller spheres on short arcs but a good start for:
 //   fit_sphere(points)            the GEOMETRIC fit, minimising sum_i (|p_i - c| - r)^2 over (c, r)
-//                                 by Levenberg-Marquardt from the algebraic solution (Jacobian rows
-//                                 (-(p_i - c)/|p_i - c|, -1); damping multiplied by 10 on a
-//                                 rejected step, divided by 10 on an accepted one; a step is
-//                                 accepted when it lowers the cost or, near the minimum where
-//                                 the decrease is below the cost's rounding, when it keeps the
-//                                 cost within rounding and shrinks the gradient). Stops when a
-//                                 step is below 16 eps(C) relative to the parameters, the cost is
-//                                 0, or the damping has grown past 1e16 (no decrease possible);
-//                                 FitOptions::max_iterations bounds the iterations
-//                                 (Status::limit_exceeded, the best sphere so far).
+//                                 by Levenberg-Marquardt from the algebraic solution. Stops when
+//                                 a step is below 16 eps(C) relative to the parameters, the cost
+//                                 is 0, or no decrease is possible; FitOptions::max_iterations
+//                                 bounds the iterations (Status::limit_exceeded, the best sphere
+//                                 so far).
 // Both work in any dimension N >= 2 and return Sphere<T, N>; rms is the RMS GEOMETRIC distance
 // | |p_i - c| - r | for both (so they are comparable).
 //

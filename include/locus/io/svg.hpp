@@ -1,54 +1,29 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // SvgWriter: a small SVG writer for 2D geometry and 3D wireframes (the figure gallery's drawing
-// surface; no capabilities row of its own).
+// surface, no capabilities row of its own; the 3D camera is the pipeline of book section 4.8). Details: docs/notes/io.md.
 //
-// Coordinates. Everything is given in WORLD coordinates with the y axis pointing UP. When the
-// document is emitted, world coordinates are mapped to pixels by one uniform scale and a y flip,
-// so the picture looks like the book's figure (counter-clockwise in the world is
-// counter-clockwise on screen). Styles (stroke width, dash lengths, marker size, font size) are
-// in PIXELS, independent of the world scale, so a figure of a unit circle and one of a city
-// map look alike.
-//
-// View. By default the view is fitted automatically: the world bounding box of every bounded
-// item (points, segments, polylines, polygons, circles, ellipses, arcs, arrows, text anchors,
-// ray origins and line base points) is scaled to fit within options.max_width x
-// options.max_height pixels, plus options.margin pixels on each side. set_view() fixes the world
-// window instead. Where a text label would stick out of the canvas (its extent is estimated at
-// 0.6 em per character, 1 em high), the canvas grows on that side; the scale stays. Lines and
-// rays are clipped to the final canvas rectangle (margin included), so they run from edge to
-// edge; a line that misses it is not emitted.
-//
-// Curves. Circles, ellipses (rotated: center, unit-ish direction of the first axis, two
-// extents) and circular arcs are emitted as exact SVG elements (<circle>, <ellipse> with a
-// rotate transform, path 'A' commands). An arc runs COUNTER-CLOCKWISE in the world from angle0
-// to angle1 (radians, from the +x axis); when angle1 < angle0 it ends at the first angle
-// equivalent to angle1 (mod 2 pi) after angle0; angle1 - angle0 >= 2 pi draws the full circle
-// and angle1 == angle0 draws nothing. Any other curve can be drawn by sampling it (curve()).
-//
-// 3D. set_camera() chooses a camera (eye, target, up; perspective with a vertical field of view,
-// or orthographic). The 3D overloads (point, segment, polyline, arrow, text taking Vec3) project
-// through locus's own camera matrices (core/projection.hpp: look_at, perspective / orthographic)
-// into the camera's image plane, whose coordinates become the world coordinates of the 2D
-// drawing (x to the right, y up on the image). Segments crossing the near plane are clipped
-// in camera space; points behind the near plane are not drawn. No hidden-line removal: style
-// hidden edges yourself (e.g. dashed). Without set_camera() the camera is orthographic looking
-// down the -z axis (x right, y up), i.e. the 3D items are drawn as their (x, y) shadow.
-//
-// Degenerate input. A non-finite coordinate never reaches the output: a point, circle, segment,
-// arrow, arc or text with a non-finite parameter is skipped; a polyline is split at non-finite
-// vertices; a polygon ring drops non-finite vertices. A negative radius or extent, a zero axis
-// direction for an ellipse, and a zero direction for a line or ray skip the item. Every number
-// is checked again after mapping to pixels, so extreme (overflowing) coordinates are skipped
-// rather than printed as "inf". An empty drawing emits a valid, empty SVG document.
-//
-// Output. to_string() returns the document (UTF-8, numbers with at most 3 decimals, formatted
-// locale-independently); write_file() writes it and returns Status::io_error when the file
-// cannot be opened or written. Text is XML-escaped; control characters are dropped.
-//
-// Cost. Items are stored until emission: O(total vertices) memory and time.
-//
-// Book: the figures of chapters 2-5 (gallery/); the 3D camera is the pipeline of section 4.8.
+// Coordinates: everything is given in WORLD coordinates with the y axis pointing UP, mapped to
+// pixels by one uniform scale and a y flip (counter-clockwise in the world is counter-clockwise
+// on screen). Styles (stroke width, dashes, marker and font size) are in PIXELS.
+// View: by default the bounding box of every bounded item is fitted into options.max_width x
+// options.max_height pixels plus options.margin; set_view() fixes the world window instead. The
+// canvas grows (the scale stays) where an estimated text label would stick out. Lines and rays
+// are clipped to the final canvas; a line that misses it is not emitted.
+// Curves: circles, rotated ellipses and circular arcs are exact SVG elements. An arc runs
+// COUNTER-CLOCKWISE from angle0 to angle1 (radians from +x; taken mod 2 pi after angle0);
+// angle1 - angle0 >= 2 pi draws the full circle, angle1 == angle0 nothing. Other curves: curve()
+// samples them.
+// 3D: set_camera() (eye, target, up; perspective or orthographic) projects the Vec3 overloads
+// through core/projection.hpp's matrices onto the image plane (x right, y up); segments are
+// clipped at the near plane, points behind it not drawn; no hidden-line removal. Without
+// set_camera() the view is orthographic down -z (the (x, y) shadow).
+// Degenerate input: a non-finite coordinate never reaches the output (items skipped, polylines
+// split, polygon rings drop the vertex); negative radii or extents and zero directions skip the
+// item; numbers overflowing after mapping are skipped, never printed as "inf". An empty drawing
+// is a valid, empty SVG document. to_string() returns the document (UTF-8, at most 3 decimals,
+// locale-independent); write_file() returns Status::io_error when the file cannot be written.
+// Text is XML-escaped; control characters are dropped. Cost: O(total vertices) memory and time.
 
 #include <locus/core/mat.hpp>
 #include <locus/core/point_range.hpp>

@@ -1,35 +1,25 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The perimeter, area, volume and surface-area formulas of the book's appendix C that are not
-// already functions of a primitive; row formulas.
+// already functions of a primitive; row formulas. The formulas themselves: docs/notes/measure.md.
 //
-// Already in primitives (use those): triangle area/perimeter/centroid (triangle.hpp), polygon
-// area/perimeter/centroid (polygon.hpp), rectangle and box (rectangle.hpp, aligned_box.hpp,
-// oriented_box.hpp), circle area/circumference (circle.hpp), ellipse (ellipse.hpp), sphere,
-// ellipsoid, cylinder, cone, frustum of a cone, capsule, torus volumes/areas/centroids (their
-// headers), tetrahedron volume/area/centroid (tetrahedron.hpp). Polygon areas in 3D and
-// polyhedron volumes/centroids/inertia: measure/area_volume.hpp and measure/inertia.hpp.
+// Already in primitives (use those): triangle, polygon, rectangle, box, circle, ellipse, sphere,
+// ellipsoid, cylinder, cone, frustum of a cone, capsule, torus and tetrahedron measures are in
+// their own headers; polygon areas in 3D and polyhedron volumes, centroids and inertia are in
+// measure/area_volume.hpp and measure/inertia.hpp.
 //
 // Here, from scalar measurements (lengths, angles in radians, heights):
-//  * triangles from side lengths: area (Heron, in Kahan's cancellation-free ordering), inradius
-//    r = K / s, circumradius R = a b c / (4 K);
-//  * quadrilaterals from vertices: signed area (p2 - p0) x (p3 - p1) / 2 in 2D, the vector area
-//    in 3D (valid for any simple quadrilateral, convex or not), perimeter, area centroid;
-//    trapezoid (a + b) h / 2, parallelogram |u x v|, and Bretschneider's formula from the sides
-//    and two opposite angles;
-//  * regular n-gon with side s: perimeter n s, area n s^2 / (4 tan(pi / n)), inradius
-//    s / (2 tan(pi / n)), circumradius s / (2 sin(pi / n));
-//  * circle pieces (radius r, central angle theta): arc length r theta, chord 2 r sin(theta/2),
-//    sector area r^2 theta / 2, segment area r^2 (theta - sin theta) / 2 (evaluated by a series
-//    for small theta, where the difference cancels), annulus pi (R^2 - r^2);
-//  * sphere pieces (radius r, height h): cap volume pi h^2 (3 r - h) / 3, cap (and zone)
-//    lateral area 2 pi r h, sector volume 2 pi r^2 h / 3, segment between parallel planes with
-//    base radii a, b and height h: pi h (3 a^2 + 3 b^2 + h^2) / 6;
-//  * prisms and pyramids: prism volume B h, pyramid volume B h / 3, frustum of a pyramid
-//    h (B1 + B2 + sqrt(B1 B2)) / 3;
-//  * Platonic solids of edge length a: volume and surface area of the tetrahedron, cube,
-//    octahedron, dodecahedron and icosahedron.
-//
+//  * triangles from side lengths: area (Heron, in Kahan's cancellation-free ordering), inradius,
+//    circumradius;
+//  * quadrilaterals from vertices: signed area in 2D, the vector area in 3D (any simple
+//    quadrilateral, convex or not), perimeter, area centroid; trapezoid, parallelogram, and
+//    Bretschneider's formula from the sides and two opposite angles;
+//  * regular n-gon with side s: perimeter, area, inradius, circumradius;
+//  * circle pieces (radius r, central angle theta): arc length, chord, sector and segment area
+//    (a series for small theta, where the difference cancels), annulus;
+//  * sphere pieces (radius r, height h): cap volume, cap / zone area, sector volume, segment
+//    between parallel planes;
+//  * prisms, pyramids and frusta of pyramids; Platonic solids of edge length a (volume, area).
 // Degenerate and bad input: formulas are evaluated as written; negative or NaN measurements give
 // NaN or a negative result as the arithmetic does, except where a square root or a division
 // could fail: triangle_area_from_sides returns NaN for side lengths violating the triangle

@@ -1,29 +1,21 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Mass properties (mass, volume, centroid, inertia tensor) of a solid bounded by a closed
-// triangle mesh, and of a 2D polygon; row cg.measure; book appendix C (centroids) and the
-// polyhedral mass properties of D. Eberly, "Polyhedral Mass Properties (Revisited)" (2002),
-// here in the equivalent tetrahedral form of the divergence theorem.
+// triangle mesh, and of a 2D polygon; row cg.measure; book appendix C (centroids) and D. Eberly,
+// "Polyhedral Mass Properties (Revisited)" (2002), in the equivalent tetrahedral form of the
+// divergence theorem (the integrals: docs/notes/measure.md).
 //
 // Solid: (vertices, triangles) spans, triangle {i, j, k} with normal (vj - vi) x (vk - vi)
 // pointing OUT (for an inward mesh all integrals flip sign together: the centroid is the same
-// and the reported volume, mass and inertia are those of the solid). Each triangle abc and the
-// reference point r (the
-// centre of the vertices' bounding box) span a signed tetrahedron; with a, b, c taken relative
-// to r and s = a + b + c,
-//     volume             V   = sum det[a, b, c] / 6
-//     first moment       M1  = sum V_t s / 4
-//     second moment      S   = sum V_t (a a^T + b b^T + c c^T + s s^T) / 20
-// (the exact integrals of 1, x and x x^T over the tetrahedron (0, a, b, c)). With density rho:
-// mass = rho V, centroid = r + M1 / V, and the inertia tensor about the centroid
-//     I = rho (trace(S_c) Id - S_c),   S_c = S - V d d^T,  d = M1 / V,
-// i.e. I_xx = rho int (y^2 + z^2), I_xy = -rho int x y (the standard, positive-definite tensor).
-// Everything is accumulated in compute_t<T>.
+// and the reported volume, mass and inertia are those of the solid). With density rho:
+// mass = rho V, the centroid, and the inertia tensor about the centroid
+// I = rho (trace(S_c) Id - S_c), S_c the second moment about the centroid, i.e.
+// I_xx = rho int (y^2 + z^2), I_xy = -rho int x y (the standard, positive-definite tensor).
+// Accumulated in compute_t<T> (double for float), relative to the centre of the bounding box.
 //
 // 2D: mass_properties(polygon) gives area (signed area's absolute value), centroid and the
 // second-moment tensor about the centroid [int x^2, int xy; int xy, int y^2] (x, y relative to
 // the centroid) and the polar moment int (x^2 + y^2), by the shoelace-style edge sums.
-//
 // Helpers: inertia_about(I, mass, centroid, q) moves the tensor to another point (parallel
 // axis theorem); rotate_inertia(I, R) = R I R^T is the tensor of the rotated solid.
 //
@@ -31,7 +23,7 @@
 // range: nothing is computed), non_finite_input (a non-finite coordinate or density),
 // degenerate_input (zero volume or area: mass 0, centroid = vertex average, inertia 0); ok
 // otherwise. Closedness is not checked (containment/point_in_polyhedron.hpp is_closed_mesh); an
-// open mesh gives values that depend on r. Cost O(n), no allocation.
+// open mesh gives values that depend on the reference point. Cost O(n), no allocation.
 
 #include <locus/core/mat.hpp>
 #include <locus/core/point_range.hpp>

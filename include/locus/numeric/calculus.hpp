@@ -1,78 +1,28 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Level sets and critical points (row num.calculus; book appendix A.7-A.8, figures A.2-A.17).
-//
-// Sampled functions: ScalarGrid<T> holds f on a regular grid, values[j * nx + i] = f at
-// origin + (i * spacing.x, j * spacing.y); sample_grid(f, lo, hi, nx, ny) builds one from a
-// callable T f(Vec2<T>).
-//
-// level_set(grid, level)  marching squares. A sample is ABOVE when f >= level, below when
-//   f < level (the level is perturbed symbolically to level - 0: a sample exactly at the level
-//   counts as above, so a contour through a grid vertex passes exactly through it and the
-//   output stays a set of simple polylines). Each grid edge whose ends differ holds one contour
-//   vertex, at the zero of the linear interpolant along the edge, computed once per edge so
-//   neighbouring cells agree. Ambiguous (saddle) cells, whose diagonal corners agree, are
-//   resolved by the asymptotic decider (Nielson-Hamann): the bilinear interpolant's saddle
-//   value (g00 g11 - g10 g01) / (g00 + g11 - g10 - g01), g = f - level, decides whether the
-//   centre is above (>= 0: the above corners are joined) -- this is the topology of the
-//   bilinear interpolant; SaddleRule::center_average uses the mean of the four corners instead.
-//   Output: polylines. Orientation: the above region (f >= level) is on the LEFT of the
-//   direction of travel, so with x right and y up a loop around a maximum is counter-clockwise
-//   and one around a minimum clockwise. A closed loop does not repeat its first point; an open
-//   polyline starts and ends on the grid boundary (or at a skipped cell, see below). Repeated
-//   consecutive points (two crossings on the same grid vertex, when samples equal the level)
-//   are removed; a loop that shrinks to one point (an extremum exactly at the level on a grid
-//   vertex, the limit of a tiny loop) is kept as a closed contour of one point.
-//   Accuracy: each vertex is the root of the linear interpolant along its edge; for f with
-//   |d^2 f / ds^2| <= M along edges of length h, |f(vertex) - level| <= M h^2 / 8.
-//
-// Critical points (grad f = 0), classified by the Hessian's eigenvalues (eigen_symmetric,
-// numeric/eigen_sym.hpp): both > tau: minimum; both < -tau: maximum; opposite signs beyond tau:
-// saddle; otherwise degenerate (the second-derivative test is inconclusive). tau =
-// degenerate_tolerance * (a Hessian scale: the largest |entry| over the seeds or the grid).
-//   critical_points_2d(f, grad, hess, lo, hi)   Newton's method on grad f = 0 from a seeds_x x
-//       seeds_y grid of seeds over the box [lo, hi] (cell centres). The step solves H d = -g
-//       through the eigendecomposition (eigenvalues below 1e-12 max|lambda| are dropped: a
-//       pseudo-inverse step), is capped at the box diagonal, and is halved (at most 30 times)
-//       while it increases |g| far from convergence. A seed converges when the step no longer
-//       changes the point in T or is below 4 eps_T (|x| + |box|); it is accepted when its last
-//       step was below sqrt(eps_T) |box| and the point lies in the box. Points closer than
-//       merge_tolerance * |box| are merged (the one with smaller |g| kept), so each critical
-//       point is listed once; they are sorted by x then y.
-//   critical_points_2d(grid)   sampled f: at each interior vertex the quadratic model from
-//       central differences (exact for cubic f) is solved for its stationary point; it is
-//       reported when it lies in the vertex's own cell (half a spacing around it, half-open),
-//       so an isolated critical point is found once, to O(h^2).
-//   critical_points(Polynomial p, a, b)   1D: the roots of p' in [a, b] (real_roots of
-//       numeric/roots.hpp, with multiplicities); a root of odd multiplicity m is a minimum or a
-//       maximum by the sign of p^(m+1) there, of even multiplicity a (stationary) inflection.
-//   critical_points_1d(f, df, a, b)   1D smooth f: f' sampled at `samples` + 1 points; every
-//       sign change is refined by bisection-safeguarded regula falsi (Illinois) and classified
-//       by the direction of the change (so cusps where f' changes sign through infinity, as in
-//       figure A.12, are found too: an infinite f' has a sign, and the safeguard bisects); a
-//       sample where f' is exactly 0 without a sign change is an inflection. Zeros of f' without
-//       a sign change between samples are not seen. A NaN f' met while refining is reported
-//       as the critical point with status non_finite_input.
-//   The 1D results also give the absolute extrema on [a, b] (book figure A.8): the least and
-//   greatest of f over the endpoints and the critical points.
-//
-// Bad input (documented results, every loop budgeted):
-//  * level_set: nx < 2 or ny < 2: empty_input; values.size() != nx ny or spacing <= 0:
-//    invalid_input; non-finite level, origin or spacing: non_finite_input, no contours. NaN or
-//    infinite samples: the cells touching them are skipped (holes: contours end at their
-//    edges) and the status is non_finite_input with the contours of the finite part.
-//  * critical_points_2d: a non-finite or empty box, seeds < 1: non_finite_input /
-//    invalid_input. Seeds whose evaluations become non-finite are abandoned; if no evaluation
-//    was finite the status is non_finite_input. More than max_points distinct points (e.g. a
-//    curve of degenerate critical points): limit_exceeded with the first max_points.
-//    Grid version: nx or ny < 3: empty_input; vertices whose 3x3 neighbourhood has a
-//    non-finite sample are skipped, status non_finite_input.
-//  * 1D: a > b: invalid_input; non-finite a, b or coefficients: non_finite_input; a constant
-//    polynomial (p' = 0 everywhere): degenerate_input with only the endpoints' extrema;
-//    non-finite f' samples: those intervals skipped, status non_finite_input.
-//
-// Precision: interpolation, deciders and Newton iterations run in compute_t<T> (double for
-// float input); callables are evaluated at points of type T.
+// Methods and accuracy: docs/notes/numeric.md.
+// ScalarGrid<T> holds f on a regular grid, values[j * nx + i] = f at origin + (i * spacing.x,
+// j * spacing.y); sample_grid(f, lo, hi, nx, ny) builds one from a callable T f(Vec2<T>).
+// level_set(grid, level)  marching squares -> polylines. A sample is ABOVE when f >= level (a
+//   contour through a grid vertex passes exactly through it); saddle cells follow the bilinear
+//   interpolant (asymptotic decider; SaddleRule::center_average uses the corners' mean). The
+//   above region is on the LEFT of travel (x right, y up: counter-clockwise around a maximum).
+//   Closed loops do not repeat their first point; open polylines end on the grid boundary or a
+//   skipped cell; an extremum exactly at the level on a vertex is a closed contour of one point.
+// Critical points (grad f = 0) are classified by the Hessian's eigenvalues against tau =
+//   degenerate_tolerance * (a Hessian scale): minimum, maximum, saddle or degenerate.
+//   critical_points_2d(f, grad, hess, lo, hi): damped Newton from a grid of seeds in the box,
+//   merged within merge_tolerance * |box|, sorted by x then y. critical_points_2d(grid): the
+//   central-difference quadratic model at each interior vertex, reported in its own cell.
+//   critical_points(Polynomial p, a, b): roots of p' in [a, b] with multiplicities (odd: min/max,
+//   even: inflection). critical_points_1d(f, df, a, b): sign changes of f' over `samples` + 1
+//   points, refined (cusps with infinite f' included); zeros without a sign change are not seen.
+// Bad input (every loop budgeted): bad sizes -> empty_input / invalid_input; non-finite level,
+// box, bounds or coefficients -> non_finite_input; NaN samples or evaluations are skipped (holes)
+// with status non_finite_input and the finite part's results; more than max_points points ->
+// limit_exceeded with the first ones; a constant polynomial -> degenerate_input.
+// Precision: computed in compute_t<T> (double for float); callables get points of type T.
 // Cost: level_set O(nx ny) time and memory; critical_points_2d O(seeds * max_iterations)
 // evaluations plus O(k^2) merging of k points; grid version O(nx ny).
 

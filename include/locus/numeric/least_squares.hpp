@@ -12,12 +12,10 @@
 //     n^2 m) but squares the condition number, so it loses twice as many digits; use it only
 //     for well-conditioned A (e.g. a line fit through points that are not clustered).
 //
-// Rank. QR: column k (after pivoting) is dependent when its remaining norm |R_kk| is
-// <= rank_tolerance * |R_00| (|R_00| is the largest column norm); default max(m, n) * eps.
-// Normal equations: a Cholesky pivot d_k <= rank_tolerance * max_j (A^T A)_jj marks a dependent
-// column; default 16 max(m, n) eps, since rounding in forming A^T A alone perturbs it by up to
-// m eps max_j (A^T A)_jj. In terms of A that is a remaining column norm below
-// sqrt(rank_tolerance) relative, the best resolution the squared system allows. Rank-deficient
+// Rank. QR: column k (after pivoting) is dependent when |R_kk| <= rank_tolerance * |R_00|
+// (default max(m, n) * eps). Normal equations: a Cholesky pivot d_k <= rank_tolerance *
+// max_j (A^T A)_jj (default 16 max(m, n) eps, the rounding of forming A^T A; why:
+// docs/notes/core.md). Rank-deficient
 // A (rank < n, which includes m < n): status degenerate_input, `rank` reports the numerical
 // rank and x is a basic solution with the dependent unknowns set to zero (it still minimises
 // the residual, but is not the minimum-norm solution).

@@ -1,64 +1,30 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Minimisation (row num.minimize; book appendix A.8-A.9, figures A.19-A.24).
-//
-//   bracket_minimum(f, a, b)         three points a, b, c with f(b) < f(a), f(b) <= f(c): a
-//                                    local minimum of a continuous f lies between a and c.
-//                                    Golden-ratio expansion from the downhill side.
-//   minimize_brent(f, lo, hi)        Brent's method on the interval [lo, hi]: golden-section
-//   minimize_brent(f, bracket)       steps safeguarding parabolic interpolation through the three
-//                                    best points; converges when the bracket is narrower than
-//                                    2 (rel_tolerance |x| + abs_tolerance).
-//   minimize_powell(f, x0)           Powell's direction-set method in N dimensions: successive
-//                                    Brent line searches along N directions; the direction of
-//                                    largest decrease is replaced by the net displacement of the
-//                                    sweep when the extrapolation test says it helps (Powell's
-//                                    safeguard against the directions becoming dependent).
-//   minimize_quadratic(A, b, c)      the minimiser of f(x) = x^T A x + b^T x + c, A symmetric:
-//                                    x = -A^-1 b / 2 when A is positive definite.
-//   minimize_quadratic(A, b, c, C, d)   the same subject to the linear equations C x = d (M of
-//                                    them, M <= N), by the null-space method: QR of C^T gives a
-//                                    particular solution and an orthonormal basis Z of ker C; the
-//                                    reduced form on x_p + Z y must be positive definite. Returns
-//                                    the Lagrange multipliers lambda with grad f + C^T lambda = 0.
-//   minimize_quadratic_on_sphere(A, b, c, center, r)   the global minimiser on |x - center| = r
-//   maximize_quadratic_on_sphere(...)                  (and maximiser): Lagrange's condition
-//                                    (A - mu I) y = -g / 2 (y = x - center) with A - mu I
-//                                    positive semidefinite, i.e. mu <= lambda_min(A). In the
-//                                    eigenbasis of A this is the secular equation
-//                                    sum_i gamma_i^2 / (lambda_i - mu)^2 = r^2, whose root below
-//                                    lambda_min is found by safeguarded Newton on
-//                                    1 / |y(mu)| - 1 / r (nearly linear in mu) inside a bracket
-//                                    with bisection fallback. The "hard case" (g orthogonal to the
-//                                    lowest eigenspace and |y(lambda_min)| < r) takes
-//                                    mu = lambda_min and adds the missing length along that
-//                                    eigenspace; the minimiser is then not unique (unique=false).
-//                                    The multiplier satisfies grad f(x) = 2 mu (x - center).
-//
-// Lagrange multipliers (book A.9): for f(x) = |x - p|^2 on the sphere |x| = r the closest point
-// is minimize_quadratic_on_sphere(I, -2p, |p|^2, 0, r) and the farthest the maximize form;
-// constrained extrema of a quadratic under one linear and one spherical constraint (figure
-// A.24) reduce to these after eliminating the linear constraint (see the tests).
-//
-// Conventions: A is read as a symmetric matrix (non-symmetric input gives invalid_input);
-// f(x) = x^T A x + b^T x + c, so grad f = 2 A x + b. Quadratic routines compute in compute_t<T>
-// (double for float input) with the Jacobi eigensolver of numeric/eigen_sym.hpp and the QR of
-// numeric/decompose.hpp; positive definiteness means lambda_min > definite_tolerance *
-// max|lambda| (default 16 N eps of the compute type, the accuracy of the computed eigenvalues).
-//
-// Bad input and budgets. A function value that is NaN is treated as +infinity (the search moves
-// away from it); if no finite value is ever seen the status is non_finite_input. Non-finite
-// start points or intervals: non_finite_input. Every loop has a budget (max_iterations,
-// max_evaluations); running out returns Status::limit_exceeded with the best point so far.
-// Quadratic forms: A not positive definite (on the constraint's null space) gives
-// degenerate_input with x the pseudo-inverse stationary point (no unique minimum: a valley of
-// minimisers or unbounded below); dependent or inconsistent constraint rows give
-// degenerate_input with x = 0; a negative radius gives invalid_input; NaN/Inf anywhere gives
-// non_finite_input with x = 0 and value NaN. Nothing returns NaN as if it were valid.
-//
-// Cost: Brent converges superlinearly on smooth functions (about 10-30 evaluations to sqrt(eps)
-// relative accuracy); Powell costs N line searches per sweep. Quadratic forms: O(N^3), with
-// allocation of small MatX temporaries.
+// Minimisation (row num.minimize; book appendix A.8-A.9, figures A.19-A.24). Methods (Brent,
+// Powell's safeguard, the null-space method, the secular equation and its hard case):
+// docs/notes/numeric.md.
+//   bracket_minimum(f, a, b)     a, b, c with f(b) < f(a), f(b) <= f(c): a local minimum of a
+//                                continuous f lies between a and c (golden-ratio expansion).
+//   minimize_brent(f, lo, hi) / minimize_brent(f, bracket)   Brent's method; converges when the
+//                                bracket is narrower than 2 (rel_tolerance |x| + abs_tolerance).
+//   minimize_powell(f, x0)       Powell's direction-set method in N dimensions.
+//   minimize_quadratic(A, b, c[, C, d])   the minimiser of f(x) = x^T A x + b^T x + c, optionally
+//                                subject to C x = d (M <= N rows; returns the Lagrange
+//                                multipliers lambda with grad f + C^T lambda = 0).
+//   minimize_quadratic_on_sphere(A, b, c, center, r), maximize_...: the global minimiser
+//                                (maximiser) on |x - center| = r, grad f(x) = 2 mu (x - center);
+//                                unique = false in the hard case.
+// Conventions: A is read as symmetric (non-symmetric input: invalid_input); grad f = 2 A x + b.
+// Quadratic routines compute in compute_t<T> (double for float); positive definite means
+// lambda_min > definite_tolerance * max|lambda| (default 16 N eps of the compute type).
+// Bad input and budgets: a NaN function value counts as +infinity (never seen a finite one:
+// non_finite_input); non-finite starts or intervals: non_finite_input; an exhausted budget
+// (max_iterations, max_evaluations): limit_exceeded with the best point so far. Quadratic forms:
+// not positive definite (on the null space) -> degenerate_input with the pseudo-inverse
+// stationary point; dependent or inconsistent constraints -> degenerate_input, x = 0; a negative
+// radius -> invalid_input; NaN/Inf -> non_finite_input, x = 0, value NaN.
+// Cost: Brent about 10-30 evaluations to sqrt(eps) relative accuracy on smooth functions; Powell
+// N line searches per sweep; quadratic forms O(N^3), allocating small MatX temporaries.
 
 #include <locus/config.hpp>
 #include <locus/core/mat.hpp>

@@ -2,49 +2,25 @@
 #pragma once
 // Systems of two polynomial equations in two unknowns (row num.polysys; book appendix A):
 // resultants (elimination of one variable) and all intersections of two quadratic curves.
+// Method and tolerances in detail: docs/notes/numeric.md.
 //
 // BivariatePolynomial<T> stores f(x, y) = sum_i coeff[i](y) x^i: a polynomial in x whose
 // coefficients are Polynomial<T> in y. resultant_x(f, g) is the determinant of the Sylvester
-// matrix of f and g as polynomials in x (using their actual x-degrees), a polynomial in y that
-// vanishes exactly at the y of common solutions (and of common roots at infinity in x). It is
-// computed division-free (Laplace expansion over row subsets, O(2^N N) ring operations for an
-// N x N Sylvester matrix, N = deg_x f + deg_x g, intended for N <= 12), so it is exact for
-// exact T (mpq_class) and a sum of rounded products for floating-point T.
-// resultant(f, g) is the same for univariate polynomials (a number).
+// matrix of f and g as polynomials in x (their actual x-degrees), a polynomial in y vanishing at
+// the y of common solutions (and of common roots at infinity in x); division-free, O(2^N N) for
+// N = deg_x f + deg_x g <= 12, so exact for exact T (mpq_class). resultant(f, g): univariate.
 //
 // intersect_quadratic_curves(q1, q2) finds every real point on both curves
-// a x^2 + b xy + c y^2 + d x + e y + f = 0. Method, in compute_t<T> (double for float):
-// each curve is normalised by its largest coefficient; the variable with the larger squared
-// coefficient is kept (x is eliminated when max(|a1|, |a2|) >= max(|c1|, |c2|), else y), the
-// quartic resultant R is formed by the Bezout formula (A1 C2 - A2 C1)^2 - (A1 B2 - A2 B1)(B1 C2 -
-// B2 C1) (B1 C2 - B2 C1 when neither curve has the kept square term), leading coefficients of R
-// within their rounding error are set to zero (a common point at infinity, i.e. a shared
-// asymptotic direction, must not become a huge spurious root), and R is solved by
-// solve_quartic. For a simple root y the point is the one common root of the two quadratics in x
-// (eliminating x^2); for a multiple root the roots of both curves on that line are tried first,
-// and two or more that Newton's method turns into well-conditioned intersections satisfied to
-// 64 eps are distinct transversal points with the same y; otherwise it is a tangency. Every
-// point is polished by Newton's method on the 2x2 system while the Jacobian is well conditioned
-// and kept when both residuals are within residual_tolerance (default 8 sqrt(eps(T))) of the
-// sum of the absolute terms. At most 4 points are returned, sorted by x then y.
-//  * Tangency: a tangent intersection is a double root of R; the root finder is told the
-//    coefficient errors of R (RootOptions::coefficient_error = tangency_tolerance, default
-//    16 eps(double), times the resultant formula evaluated on absolute values), so a tangency
-//    is reported as ONE point with multiplicity 2 instead of being lost to the rounding of the
-//    computation (also at y = 0, where R's constant term may be exactly 0: the root finder then
-//    counts the following coefficients within their errors as zero). The input coefficients are
-//    taken as exact: a tangency that rounding the DATA already destroyed (float input,
-//    coefficients computed from other numbers) is a near miss or two close points unless the
-//    caller passes a tangency_tolerance of the data's relative precision (e.g. 16 eps(float));
-//    curves whose intersections are closer than about the square root of that tolerance
-//    (relative) are then reported as a tangency.
-//  * Common component: coincident curves are detected by the coefficient vectors being parallel
-//    (every 2x2 minor <= coincidence_tolerance, default 16 eps(T), times the norms), so a
-//    multiple rounded to T still counts; other shared components (degenerate conics sharing a
-//    line) by R vanishing identically (every coefficient <= 64 eps times its absolute bound);
-//    the result has `infinite = true` and count = 0 (isolated extra points are not listed).
-//  * A curve with all coefficients zero is the whole plane: Status::degenerate_input and
-//    infinite = true. NaN/Inf coefficients: Status::non_finite_input, no points.
+// a x^2 + b xy + c y^2 + d x + e y + f = 0, in compute_t<T> (double for float), from the roots of
+// the quartic resultant polished by Newton; at most 4 points, sorted by x then y, each kept when
+// both residuals are within residual_tolerance (default 8 sqrt(eps(T))) of the absolute terms.
+//  * Tangency: reported as ONE point with multiplicity 2. The input coefficients are taken as
+//    exact; for data already rounded pass tangency_tolerance of the data's precision (e.g.
+//    16 eps(float)): intersections closer than about its square root then count as a tangency.
+//  * Common component (coincident curves within coincidence_tolerance, default 16 eps(T), or a
+//    shared line of degenerate conics): infinite = true, count = 0.
+//  * A curve with all coefficients zero: degenerate_input, infinite = true. NaN/Inf
+//    coefficients: non_finite_input, no points.
 // Points are rounded results (about 1e-15 relative for transversal intersections, about
 // sqrt(eps) along the common tangent for tangencies).
 

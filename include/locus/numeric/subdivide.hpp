@@ -1,67 +1,30 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Subdivision of parametric curves (row num.subdivide; book appendix A, numerical methods for
-// curves; the same four schemes as Eberly's "subdivision of curves").
-//
+// curves; the four schemes of Eberly's "subdivision of curves"). Methods, accuracy and caveats:
+// docs/notes/numeric.md.
 // A curve is any callable `Vec<T, N> curve(T t)`; its derivative, where asked for, any callable
 // `Vec<T, N> dcurve(T t)`. Every scheme works on the ORIENTED parameter interval from t0 to t1
 // (t1 < t0 is allowed: the parameters then decrease) and returns CurveSamples: the parameters
 // params[0] = t0, ..., params.back() = t1 (exactly) and points[i] = curve(params[i]).
-//
-//   subdivide_uniform(c, t0, t1, n)            n parameters equally spaced in t.
-//   arc_length(c, dc, t0, t1) / arc_length(c, t0, t1)
-//                                              the length of the curve: adaptive 5-point
-//                                              Gauss-Legendre quadrature of |c'(t)| (an interval is
-//                                              halved while the two-halves estimate differs from
-//                                              the whole-interval one by more than its share of
-//                                              relative_tolerance * length).
-//   subdivide_arc_length(c, dc, t0, t1, n)     n points equally spaced in ARC LENGTH: the length
-//   subdivide_arc_length(c, t0, t1, n)         table of the quadrature's leaves, then s(t) = s_k
-//                                              is solved in its leaf by safeguarded Newton
-//                                              (ds/dt = |c'|) falling back to bisection.
-//   subdivide_midpoint(c, t0, t1, tol)         adaptive: a piece [a, b] is halved while the curve
-//                                              midpoint c((a+b)/2) is farther than tol from the
-//                                              chord midpoint (c(a)+c(b))/2.
-//   subdivide_variation(c, t0, t1, tol)        adaptive: a piece is halved while its variation
-//                                              exceeds tol. The variation (the book's measure) is
-//                                              V = integral_a^b |c(t) - L(t)|^2 dt with L the
-//                                              chord interpolating c(a), c(b) linearly in t; the
-//                                              test is sqrt(V / (b - a)) <= tol, i.e. the RMS
-//                                              distance between piece and chord, a length. V is
-//                                              computed by 5-point Gauss-Legendre, exact for
-//                                              polynomial curves of degree <= 4.
-// Adaptive schemes refine breadth-first, level by level, so a point budget is spent evenly
-// along the curve. Without a derivative, c' is approximated by differentiating the quadratic
-// through three samples spaced cbrt(eps_T) * |t1 - t0| apart (kept inside the interval), so
-// lengths are then accurate to about eps_T^(2/3) relative, and relative_tolerance is raised to
-// at least 4 eps_T^(2/3) (finer requests would only chase the differencing noise).
-//
-// Budgets and bad input (nothing loops unboundedly, nothing returns NaN as valid):
-//  * n < 2: Status::invalid_input, empty output. tol < 0 or NaN: invalid_input, empty output.
-//  * t0 or t1 not finite: non_finite_input, empty output. A curve or derivative value that is
-//    not finite: non_finite_input, empty output (arc_length: length NaN).
-//  * A curve of zero length (t0 == t1 or a constant curve): uniform, midpoint and variation
-//    return their ordinary results (the adaptive ones just [t0, t1] after min_depth levels);
-//    subdivide_arc_length returns the uniform-in-parameter sampling with degenerate_input
-//    (every parameter is at arc length 0, none is preferred).
-//  * The adaptive schemes stop at max_depth levels, at max_points points, or when a piece is
-//    too short for its midpoint to be a new floating-point number; then the status is
-//    limit_exceeded and the result is the valid, coarser subdivision reached. The quadrature
-//    stops at max_depth halvings or max_evaluations derivative evaluations; the inversion at
-//    max_iterations steps per point (limit_exceeded, best estimate kept).
-// Caveat of the quadrature: |c'| is assumed smooth inside [t0, t1]. A kink of |c'| (a cusp, or
-// a parametrisation that stops and turns, like c(t^2) at t = 0) lying within about 5 % of a
-// quadrature interval's end is invisible to both the whole and the halves rule, and the error
-// there (about jump * (distance)^2) can exceed the tolerance: split the interval at such
-// parameters and add the lengths.
-// Caveat of the midpoint test (as in the book): a piece whose midpoint happens to lie on the
-// chord (one period of a sine) is accepted; raise min_depth for such curves.
-//
-// Precision: sums, quadrature and the Newton iteration are computed in compute_t<T> (double
-// for float); the curve is always evaluated at parameters of type T.
-// Cost: uniform n evaluations; arc length O(leaves) evaluations (10 per leaf, 3x that without
-// a derivative) plus about 6 per Newton step per point; midpoint 1 and variation 5 evaluations
-// per piece examined.
+//   subdivide_uniform(c, t0, t1, n)        n parameters equally spaced in t.
+//   arc_length(c[, dc], t0, t1)            the length: adaptive 5-point Gauss-Legendre of |c'|.
+//   subdivide_arc_length(c[, dc], t0, t1, n)  n points equally spaced in ARC LENGTH.
+//   subdivide_midpoint(c, t0, t1, tol)     halves a piece while the curve midpoint is farther
+//                                          than tol from the chord midpoint.
+//   subdivide_variation(c, t0, t1, tol)    halves a piece while the RMS distance between piece
+//                                          and chord, sqrt(V / (b - a)), exceeds tol.
+// Without a derivative c' is differenced (lengths accurate to about eps_T^(2/3) relative).
+// Bad input (nothing loops unboundedly, nothing returns NaN as valid): n < 2 or tol < 0 / NaN:
+// invalid_input; non-finite t0, t1 or curve values: non_finite_input (empty output, length NaN);
+// a zero-length curve: ordinary results, but subdivide_arc_length returns the uniform sampling
+// with degenerate_input. Budgets (max_depth, max_points, max_evaluations, max_iterations, or a
+// piece too short to halve): limit_exceeded with the valid coarser result reached.
+// Caveats: a kink of |c'| near a quadrature interval's end can exceed the tolerance (split the
+// interval there); the midpoint test accepts a piece whose midpoint lies on the chord (raise
+// min_depth). Computed in compute_t<T>; the curve is evaluated at parameters of type T.
+// Cost: uniform n evaluations; arc length 10 per quadrature leaf (3x without a derivative) plus
+// about 6 per Newton step per point; midpoint 1 and variation 5 per piece examined.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>

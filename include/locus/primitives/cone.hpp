@@ -18,15 +18,10 @@
 // lateral surface, (u, v, D) right-handed from plane.hpp's perpendicular_basis(D).
 // signed_value(cone, X) = cos^2(alpha) |X - V|^2 - dot(D, X - V)^2 is the book's implicit
 // quadric of the infinite double cone: negative strictly inside either nappe.
-//
-// Measures (integrated over h in [min_height, max_height], valid for every kind):
-//   volume       = pi tan^2(alpha) (max^3 - min^3) / 3
-//   lateral_area = pi tan(alpha) / cos(alpha) (max |max| - min |min|)
-//   surface_area = lateral_area + pi tan^2(alpha) (max^2 + min^2) (the two cap disks)
-// They are +infinity for an infinite cone. centroid() = V + hbar D, hbar = (3/4)(max^4 - min^4) /
-// (max^3 - min^3) (finite cones only). bounding_box() of a finite cone is the box of its
-// cap disks and, when min_height <= 0 <= max_height, the vertex.
-//
+// volume, lateral_area and surface_area (with the two cap disks) integrate over h in
+// [min_height, max_height] for every kind (the formulas: docs/notes/primitives.md); +infinity
+// for an infinite cone. centroid() (finite cones only); bounding_box() of a finite cone is the
+// box of its cap disks and, when min_height <= 0 <= max_height, the vertex.
 // Degenerate input: an angle outside (0, pi/2), min_height > max_height or a NaN parameter is
 // invalid (is_valid() false) and the measures return NaN. Equal heights give a disk (volume 0).
 // Cost O(1); no allocation.

@@ -12,19 +12,15 @@
 // symmetric positive definite, M = sum_i axis[i] axis[i]^T / extent[i]^2. to_implicit() builds
 // M; to_axes() diagonalises it with numeric/eigen_sym.hpp's closed-form 2x2 solver (the
 // eigenvalue nearer zero taken as det / larger, so thin ellipses keep relative accuracy) and
-// returns extent[0] >= extent[1] (axis[0] is the major axis) with
-// axis[1] = perp(axis[0]). The general quadratic coefficients a x^2 + b xy + ... live in
-// quadratic_curve.hpp (to_quadratic / to_ellipse).
-//
-// Measures: area = pi extent[0] extent[1]; perimeter() is the complete elliptic integral of the
-// second kind evaluated by the arithmetic-geometric mean (Gauss-Legendre: P = 2 pi / M(a, b) *
-// (a^2 - sum_n 2^(n-1) c_n^2)), accurate to a few ulps; perimeter_ramanujan() is Ramanujan's
-// second approximation pi (a + b)(1 + 3h / (10 + sqrt(4 - 3h))), h = ((a - b)/(a + b))^2,
-// relative error 0 for circles, < 1e-9 for b/a >= 0.5 and at most about 4e-4 (at b = 0).
+// returns extent[0] >= extent[1] (axis[0] major) with axis[1] = perp(axis[0]). The general
+// quadratic coefficients a x^2 + b xy + ... live in quadratic_curve.hpp (to_quadratic /
+// to_ellipse). Measures: area = pi extent[0] extent[1]; perimeter() is the complete elliptic
+// integral by the arithmetic-geometric mean, accurate to a few ulps; perimeter_ramanujan() is
+// Ramanujan's second approximation, relative error 0 for circles, < 1e-9 for b/a >= 0.5, at most
+// about 4e-4 (b = 0) (both formulas: docs/notes/primitives.md).
 //
 // EllipseArc2<T> {ellipse, start, sweep}: the points point_at(ellipse, a) for a in
 // [start, start + sweep], sweep in [0, 2 pi] (counter-clockwise in the angle parameter).
-//
 // Degenerate input: to_axes() returns std::nullopt when M is not positive definite or not finite
 // (the quadric is a hyperbola, parabola, empty or degenerate). A zero extent is degenerate
 // (is_degenerate()); perimeter() of a flat ellipse is 4 extent[0]. Eigen and perimeter

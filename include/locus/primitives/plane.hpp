@@ -2,33 +2,21 @@
 #pragma once
 // Planes in 3D, coordinate systems in a plane, and 2D objects embedded in 3D; row prim3.planar;
 // book sections 9.2.1-9.2.3, figures 9.1 (point-normal form), 9.2 (meaning of the coefficients),
-// 9.3 (parametric form).
+// 9.3 (parametric form). How 2D objects and polygons live in a plane: docs/notes/primitives.md.
 //
 // Plane3<T> {normal, constant} is the point set { X : dot(normal, X) = constant }, the book's
 // a x + b y + c z + d = 0 with normal (a, b, c) and constant = -d. The normal need NOT be unit
 // length: signed_value() is then dot(normal, X) - constant, a multiple |normal| of the signed
 // distance; signed_distance() divides by |normal|. normalized() rescales to a unit normal.
 // Point-normal form (fig 9.1): plane_from_point_normal(P, n) = { X : dot(n, X - P) = 0 }.
-// "Positive side" = the side the normal points to (signed_value > 0).
-//
-// plane_through(a, b, c) has normal (b - a) x (c - a), so a, b, c run counter-clockwise seen
-// from the positive side (same convention as Triangle's normal()).
-//
+// "Positive side" = the side the normal points to (signed_value > 0). plane_through(a, b, c) has
+// normal (b - a) x (c - a): a, b, c run counter-clockwise seen from the positive side.
 // PlaneFrame3<T> {origin, u, v, normal} is a right-handed orthonormal frame with u x v = normal
-// (fig 9.3, the parametric form P + s u + t v with orthonormal u, v). to_world(frame, (s, t))
-// embeds 2D coordinates in the plane (book 9.2.3: circles, polygons and other 2D objects in a
-// plane are the 2D object's points mapped through this frame); to_plane() is the inverse for
-// points on the plane and the orthogonal projection followed by the inverse for other points.
-//
-// newell_normal(points) is Newell's normal of a closed polygon (sum over the edges of the cross
-// products of consecutive vertices, computed in the edge-pair form that cancels translation
-// errors): for a planar polygon it is 2 * area * unit normal, oriented by the right-hand rule.
-// best_fit_plane_newell() is the plane with that normal through the vertex average; for
-// non-planar polygons it is the usual robust "average plane". A polygon in 3D is therefore
-// either a PlaneFrame3 plus prim2's 2D Polygon (to_world() maps its vertices; 2D algorithms run
-// on the plane coordinates) or a 3D vertex list whose plane is best_fit_plane_newell(); the 3D
-// circle, disk, triangle and rectangle are prim2's Circle3, Disk3, Triangle3 and Rectangle3, and
-// perpendicular_basis() gives the same in-plane axes as Circle3/Disk3.
+// (fig 9.3: P + s u + t v). to_world(frame, (s, t)) embeds 2D coordinates in the plane;
+// to_plane() is the inverse on the plane and the orthogonal projection followed by the inverse
+// elsewhere. newell_normal(points) is Newell's normal of a closed polygon (2 * area * unit normal
+// for a planar one, right-hand rule; translation errors cancel); best_fit_plane_newell() is the
+// plane with that normal through the vertex average.
 //
 // Degenerate input: plane_through returns std::nullopt when the three points are collinear or
 // coincident (decided EXACTLY by Triangle's is_degenerate, i.e. orient2d on three projections)

@@ -8,10 +8,9 @@
 // much as a whole point-triangle query. So the fast paths compute every arm they may need (a few
 // multiplies) and pick with select() or with single-comparison conditionals `a < b ? x : y` on
 // values already computed, which compilers emit as compare-and-blend (or min/max) instructions.
-// select() is the plain conditional: an earlier version forced a bitwise blend through integer
-// registers, and moving each value to a general-purpose register and back cost more than it
-// saved (per-query point-triangle, segment-segment and point-box queries ran 1.2x-2.2x slower
-// with it, bench/distance/distance_bench.cpp, GCC 12 -O3).
+// select() is the plain conditional, not a bitwise blend through integer registers: moving each
+// value to a general-purpose register and back costs more than it saves (measured:
+// bench/results/distance.md).
 
 #include <locus/core/scalar.hpp>
 

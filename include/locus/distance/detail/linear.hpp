@@ -2,63 +2,27 @@
 #pragma once
 // Internal machinery shared by the point-linear and linear-linear distance headers (rows
 // dist2.pt-linear, dist3.pt-linear, dist2.linear-linear, dist3.linear-linear; book sections
-// 6.1, 6.3, 10.2, 10.8).
+// 6.1, 6.3, 10.2, 10.8). The method and its error analysis: docs/notes/distance.md.
 //
 // A linear component is seen as LinearView {origin, end, dir, bounded_lo, bounded_hi}: the points
 // origin + t dir with t >= 0 when bounded_lo and t <= 1 when bounded_hi (a segment has both and
 // is evaluated as lerp(origin, end, t) so that its endpoints are exact; a ray has bounded_lo; a
 // line neither).
 //
-// Linear-linear method (written for this library; the approach follows the analysis in Eberly,
-// "Robust Computation of Distance Between Line Segments"): R(s, t) = |A(s) - B(t)|^2 is a convex
-// quadratic over the parameter domain I_A x I_B. Its minimum is either the unconstrained
-// minimiser (if it lies in the domain) or lies on an edge s = 0, s = 1, t = 0 or t = 1 of the
-// domain, where the problem is a point-linear query with an exact clamp. The unconstrained
-// minimiser comes from Cramer's rule; below an angle of ~14 degrees its s - t is inaccurate
-// (cancellation), so t is re-derived by projecting A(s) onto B and then s by projecting B(t)
-// onto A. When the directions are well separated (|dA x dB|^2 > 64 eps |dA|^2 |dB|^2) and the
-// minimiser lies in the domain it is returned; when it lies outside, only the (one or two) edges
-// whose constraints it violates can hold the minimum (KKT), and the nearer of those wins. In the
-// nearly parallel regime every candidate (the interior point, each finite edge, and for two
-// lines the projection of A's origin) is evaluated and the smallest squared distance wins.
-// Every candidate is a realisable pair of points, so the answer is never below the true distance by
-// more than rounding and is a minimum of continuous functions of the input, hence continuous as the
-// input moves through (near-)parallel configurations wherever the true distance is (a segment
-// bounds the minimiser); this is what the textbook "if det < epsilon then parallel" code gets
-// wrong. |dA x dB|^2 is evaluated as a sum of squared 2x2 minors (Lagrange's identity), not as
-// a c - b^2, so it does not cancel.
-// The interior point in that regime: Cramer's numerators b e - c d, a e - b d cancel as badly as
-// D does, so for two segments (whose parameters the clamp keeps in [0, 1], where a wrong position
-// along the valley costs at most sin^2(angle) |dA|^2 <= 64 eps |dA|^2) it is the refined Cramer
-// point, but when a component is unbounded, where the minimiser may lie arbitrarily far away
-// (s ~ |r| / sin angle), it comes from accurately rounded minors (accurate_minimiser: the
-// numerators are (dB x r) . (dA x dB) and (dA x r) . (dA x dB), each minor a difference of
-// products accurate to a few eps), then refined by the two projections.
-// In 2D the components either meet or have their minimum on an edge of the domain; whether they
-// meet is decided exactly first (five signs of core's exact predicate turn2d, the turn between
-// two directions given by their end points), and when they do the answer is the crossing: its
-// parameters on both (each closest point is the crossing to rounding) and a distance of exactly 0
-// (meet_2d). (Two segments reach linear_linear only when segment_pair_fast declines them, i.e.
-// nearly parallel or with the interior minimiser at a small angle; crossing segments that it
-// accepts get a distance of a few eps * scale, not necessarily 0.)
-//
-// Error: the squared distance is within a few eps * (scale)^2 of the true one, scale being the
-// magnitude of the closest points (tested against exact rationals); for nearly parallel unbounded
-// components they lie far away, and so does the answer: the true distance itself jumps at exact
-// parallelism (two lines in the plane meet unless exactly parallel). The parallel answer (an edge
-// or an origin's projection) is returned for exactly parallel directions, or when the minimiser
-// lies beyond the floating-point range (sin angle below ~|r| / max).
-//
-// Scale: squared directions or their product outside the normal range (coordinates beyond
-// ~1e77 or below ~1e-77 in double) are solved on the components scaled by a power of two
-// (detail/rescale.hpp: the parameters are scale-free), so the answer does not depend on the
-// units.
-//
+// linear_linear minimises |A(s) - B(t)|^2 over the parameter domain: the interior minimiser when
+// the directions are well separated, else every realisable candidate (interior point, finite
+// edges, an origin's projection) with the smallest winning, so the answer is continuous through
+// (near-)parallel configurations. In 2D whether the components meet is decided exactly
+// (core's turn2d) and a crossing gets distance exactly 0 (meet_2d; segment_pair_fast may answer
+// crossing segments first, with a distance of a few eps * scale).
+// Error: the squared distance is within a few eps * scale^2 of the true one, scale the magnitude
+// of the closest points. Inputs whose squared directions leave the normal range are solved on
+// copies scaled by a power of two (detail/rescale.hpp), so the answer does not depend on units.
 // Same-type pairs are solved in a canonical (lexicographic) argument order, so distance(b, a) is
 // bit for bit the swap of distance(a, b).
-// unique = false when the directions are parallel within sin^2(angle) <= (8 eps)^2 (the closest
-// pair is numerically undetermined) and the parameter ranges overlap in more than one point
-// (parallel_unique; also when 2D components that nearly parallel meet at one exact crossing).
+// unique = false when the directions are parallel within sin^2(angle) <= (8 eps)^2 and the
+// parameter ranges overlap in more than one point (parallel_unique; also 2D components that
+// nearly parallel meet at one exact crossing).
 
 #include <locus/core/error_free.hpp>
 #include <locus/core/predicates.hpp>

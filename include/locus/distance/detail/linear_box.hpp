@@ -2,40 +2,26 @@
 #pragma once
 // Internal machinery of the linear-box distance headers (line/ray/segment to aligned and
 // oriented boxes, 2D and 3D); row dist3.linear-obb (and its 2D analogue); book section 10.9.4
-// (figures 10.46-10.52).
+// (figures 10.46-10.52). Why this replaces the book's case analysis: docs/notes/distance.md.
 //
 // In the box's frame (the identity for an aligned box; the box axes for an oriented one) the box
 // is the product of slabs [lo_i, hi_i] and the linear component is x(t) = p + t d with t in its
 // domain (line: R, ray: [0, inf), segment: [0, 1]). The squared distance from x(t) to the box is
 //   f(t) = sum_i e_i(t)^2,  e_i(t) = x_i(t) - clamp(x_i(t), lo_i, hi_i)   (the excess over slab i),
-// a convex, continuously differentiable, piecewise quadratic function of t whose pieces are
-// delimited by the breakpoints (lo_i - p_i) / d_i and (hi_i - p_i) / d_i where x(t) crosses a
-// face plane. Its derivative g(t) = 2 sum_i d_i e_i(t) is continuous, piecewise linear and
-// non-decreasing. The method (written for this library) sorts the breakpoints that fall inside
-// the domain, evaluates the sign of g at each of them, and solves g = 0 in closed form on the one
-// piece where g changes sign (on a piece the active set, the slabs that x(t) is outside of, is
-// fixed, so g(t) = 2 (A t + B) with A = sum_active d_i^2); when g >= 0 already at the lower end of
-// the domain (or <= 0 at the upper end) the minimum is at that end.
-//
-// This replaces the book's case analysis. The book reflects the direction into the first octant
-// and then treats a direction with no zero component (figure 10.50-10.52: which face the line
-// "hits" first), one zero component (figure 10.49: a 2D problem in the plane of the other two
-// axes plus a constant offset) and two zero components (figure 10.48: a 1D problem plus a
-// constant offset) separately, each with its own divisions by direction components. Here a zero
-// component simply contributes no breakpoint and a constant term to f, and a tiny component gives
-// breakpoints far away (or overflowing to infinity, which the comparisons handle), so every one
-// of those cases is the same code, and the answer is continuous as a component passes through 0
-// (the textbook switch between cases is where implementations that test "d_i == 0" or
-// "|d_i| < epsilon" jump).
+// a convex, C1, piecewise quadratic function of t with breakpoints (lo_i - p_i) / d_i and
+// (hi_i - p_i) / d_i. Its derivative g(t) = 2 sum_i d_i e_i(t) is continuous, piecewise linear
+// and non-decreasing: the breakpoints inside the domain are sorted, the sign of g evaluated at
+// each, and g = 0 solved in closed form on the piece where it changes sign (or the minimum is at
+// a domain end). A zero direction component gives no breakpoint (a tiny one gives far or
+// infinite ones), so the answer is continuous as a component passes through 0.
 //
 // Uniqueness: f is constant exactly on a piece where every coordinate with d_i != 0 is inside its
-// slab (A = 0); since f is convex and g = 0 there, such a piece of positive length is the set of
-// minimisers (the line passes through the box, or runs parallel to a face or edge while its
-// projection meets it); components below 8 eps |d| count as zero for this test (a direction
-// parallel to a face up to the rounding of the frame change). Then unique = false and the midpoint
-// of that piece (clipped to the domain) is returned. A zero direction (or a zero-length segment) is
-// the point p at t = 0. Cost: at most 2 N + 2 breakpoints, an insertion sort, O(N) per breakpoint;
-// no allocation.
+// slab; such a piece of positive length is the set of minimisers (the line passes through the
+// box, or runs parallel to a face or edge while its projection meets it); components below
+// 8 eps |d| count as zero for this test. Then unique = false and the midpoint of that piece
+// (clipped to the domain) is returned. A zero direction (or a zero-length segment) is the point
+// p at t = 0. Cost: at most 2 N + 2 breakpoints, an insertion sort, O(N) per breakpoint; no
+// allocation.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>

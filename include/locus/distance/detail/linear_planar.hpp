@@ -3,46 +3,25 @@
 // Internal machinery shared by the line/ray/segment-triangle and line/ray/segment-rectangle
 // distance headers (rows dist3.linear-triangle, dist3.linear-rectangle; book sections 10.5.1,
 // 10.5.2, figures 10.38-10.43), and reused by the tetrahedron and triangle/rectangle pairs.
+// The method (KKT over the prism I x P, the 3 x 7 / 3 x 9 regions of figures 10.40 and 10.43
+// without region-specific code): docs/notes/distance.md.
 //
-// Method (written for this library from the book's formulation): with the linear component
-// A(t) (t in I: R, [0, inf) or [0, 1]; detail/linear.hpp) and the planar piece P(x) (triangle:
-// x = (s, u), s, u >= 0, s + u <= 1; rectangle: x = (s, t) in a box), F(t, x) = |A(t) - P(x)|^2
-// is a convex quadratic on the prism I x P. Its unconstrained minimiser, when the direction is
-// not parallel to the plane, is the crossing of A's line with P's plane (F = 0 there), found by
-// Cramer's rule on triple products. When the crossing lies in the prism it is the answer
-// (distance 0). Otherwise the minimum lies on a facet of the prism: an end t = 0 or t = 1 of A
-// (a point-triangle or point-rectangle query) or an edge of P (a linear-segment query,
-// detail/linear.hpp; the branch-free two-segment query when A is a segment). By KKT only the facets whose constraints the unconstrained minimiser
-// violates can hold it (if none of the active constraints at the minimum were violated, the
-// segment towards the minimiser would be a feasible descent direction), so in well-conditioned
-// cases only those one to three facets are evaluated: this is the book's partition of the
-// solution space into the 3 x 7 regions of figure 10.40 (3 x 9 for the rectangle, figure 10.43)
-// without region-specific code. The end facet is tried first, and its pair returned at once when
-// it satisfies the optimality condition (the end's nearest point of P, and the derivative along
-// the component pointing outward): the domain is a product of convex sets, so blockwise
-// optimality is global optimality. When the direction is nearly parallel to the plane (sin^2 of
-// the angle <= 64 eps), the triangle is nearly flat, or the crossing sits on a boundary that
-// rounding could move, every candidate is evaluated: the crossing (projected onto P, then one
-// alternating projection back onto A), both finite ends and every edge; each candidate is a
-// realisable pair of points, so the answer is never below the true distance by more than
-// rounding, is the minimum of continuous functions of the input, and no division can blow up
-// (a non-finite crossing is simply not a candidate).
+// F(t, x) = |A(t) - P(x)|^2 is minimised over the linear parameter t (R, [0, inf) or [0, 1];
+// detail/linear.hpp) and the planar piece's parameters x (triangle: s, u >= 0, s + u <= 1;
+// rectangle: a box). Well-conditioned cases evaluate the crossing of A with P's plane and only
+// the facets whose constraints it violates; nearly parallel directions (sin^2 angle <= 64 eps),
+// nearly flat triangles and crossings on a rounding-sensitive boundary evaluate every candidate.
+// Every candidate is a realisable pair, so the answer is never below the true distance by more
+// than rounding, continuous in the input, and no division can blow up.
 //
-// Scale: coordinates beyond ~1e76 or below ~1e-76 (double; ~1e9 and ~1e-9 for float), where the
-// plane's |n|^2 and the products of four overflow or underflow, are solved on a copy scaled by a
-// power of two (detail/rescale.hpp: the parameters are scale-free).
-//
+// Scale: coordinates beyond ~1e76 or below ~1e-76 (double; ~1e9 and ~1e-9 for float) are solved
+// on a copy scaled by a power of two (detail/rescale.hpp: the parameters are scale-free).
 // unique = false when the direction is parallel to the plane (sin^2 angle <= 64 eps^2) and the
-// closest pair can slide along the direction while both points stay on their objects (a
-// segment parallel to and above the triangle's interior, or parallel to its nearest edge), or
-// when the winning linear-edge candidate reports non-uniqueness (a flat triangle).
-//
-// Exact zero for segment-triangle: segment_meets_triangle() decides with the exact orient3d and
-// orient2d predicates whether a closed segment meets a closed non-degenerate triangle. The
-// segment query reports distance exactly 0 only when they meet, and whenever they meet and the
-// rounded contact pair agrees to 32 ulps of the largest coordinate (both closest points are then
-// the contact point on the triangle); a contact on a needle triangle or at a grazing angle, whose
-// rounded pair can be ~eps / angle apart, is reported as that pair.
+// closest pair can slide along it, or when the winning linear-edge candidate is not unique.
+// Exact zero for segment-triangle: segment_meets_triangle() decides with exact orient3d and
+// orient2d whether a closed segment meets a closed non-degenerate triangle; the distance is
+// exactly 0 only then, and whenever the rounded contact pair agrees to 32 ulps of the largest
+// coordinate (both closest points are then the contact point on the triangle).
 
 #include <locus/config.hpp>
 #include <locus/core/predicates.hpp>
