@@ -10,8 +10,8 @@
 #include <locus/core/barycentric.hpp>
 #include <locus/core/basis.hpp>
 #include <locus/core/error_free.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/core/frame.hpp>
-#include <locus/core/least_squares.hpp>
 #include <locus/core/linear_system.hpp>
 #include <locus/core/mat.hpp>
 #include <locus/core/point_range.hpp>

@@ -8,6 +8,7 @@
 #include <locus/numeric/calculus.hpp>
 #include <locus/numeric/decompose.hpp>
 #include <locus/numeric/eigen_sym.hpp>
+#include <locus/numeric/least_squares.hpp>
 #include <locus/numeric/matrix.hpp>
 #include <locus/numeric/minimize.hpp>
 #include <locus/numeric/polynomial.hpp>
