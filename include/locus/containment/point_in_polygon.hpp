@@ -1,54 +1,28 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Point in triangle, convex polygon, general polygon (with holes), and a slab-accelerated
-// locator for many queries on one polygon; row cg.pip; book section 13.3, figures 13.13
-// (convex polygon, O(log n)), 13.14-13.17 (crossing number and its degenerate cases).
-//
-// Every answer is EXACT for finite input: the only decisions are exact coordinate comparisons
-// and the exact orient2d of core/predicates.hpp. classify() returns Side::boundary for a point
-// on an edge or a vertex (closed edges, decided exactly), Side::inside / Side::outside
-// otherwise. contains(region, p) is classify(p, region) != Side::outside: the boundary counts as
-// inside.
-//
-// Rules and conventions:
-//  * Triangle2: either orientation. A degenerate (collinear) triangle has no interior: a point
-//    on one of its (closed) edges is boundary, everything else outside.
-//  * classify_convex(p, vertices): the vertices of a weakly convex polygon in COUNTER-CLOCKWISE
-//    order (collinear consecutive vertices and repeated consecutive vertices allowed; at least
-//    three distinct, non-collinear vertices). Binary search on the triangle fan from v[0]
-//    (fig 13.13 locates the two edges crossed by the vertical line instead; the fan search has
-//    the same O(log n) cost and needs only orient2d). The precondition is not checked (that
-//    would cost O(n)); violating it gives an unspecified Side, never UB or a hang. Cost
-//    O(log n) orient2d calls, plus the length of a run of collinear vertices through v[0] when
-//    p lies on the line of an edge at v[0]. Fewer than three vertices: the point or segment
-//    they span (boundary on it, outside elsewhere).
-//  * Polygon2 (any orientation, simple or not): the crossing number of the ray from p along +x
-//    (fig 13.14), i.e. the EVEN-ODD rule. An edge (a, b) counts when it straddles the ray's line
-//    under the half-open rule "exactly one endpoint has y > p.y" and p lies strictly left of it
-//    (as seen going upward), so a ray through a vertex or along a horizontal edge is counted
-//    once or not at all, consistently (figs 13.16, 13.17). A point on any closed edge is
-//    reported as boundary first, so the half-open rule never decides a boundary point (the
-//    book's fig 13.15 rule "left edges inside, right edges outside" is the value the crossing
-//    count alone would give; classify reports both as boundary). winding_number() gives the
-//    nonzero-rule count for the same ray.
-//  * PolygonWithHoles2: the even-odd rule over all rings together (outer and holes, in any
-//    orientation): boundary on any ring, otherwise inside iff the total crossing count is odd.
-//    For the documented convention (holes strictly inside the outer ring, pairwise disjoint)
-//    this is the region "outer minus holes".
-//  * PolygonLocator2: built once from the rings, answers exactly as classify() on the same
-//    rings, faster. Slab decomposition: the y-range is cut into about n equal slabs; each slab
-//    lists every edge whose y-range meets it, sorted by decreasing max x. The slab index is a
-//    monotone function of y in floating point, so an edge whose closed y-range contains p.y is
-//    always listed in p's slab whatever the rounding; the scan stops at the first edge entirely
-//    left of p. The slab count is reduced for tall edges so that the entries stay at most
-//    8 n. Build O(n log n), memory O(n); a query scans the edges of one slab right of p (a few
-//    for typical polygons, O(n) at worst).
-//
-// Bad input: a non-finite query point is outside. Edges with a non-finite endpoint are ignored
-// (they can neither hold nor be crossed by the ray: orient2d reports zero and the y tests fail).
-// PolygonLocator2 reports Status::non_finite_input for such rings (and then answers outside for
-// every query), Status::empty_input for no edges. Empty polygons: everything is outside.
-// No function allocates except PolygonLocator2's construction.
+// locator for many queries on one polygon; row cg.pip; book section 13.3, figures 13.13-13.17.
+// Every answer is EXACT for finite input (exact comparisons and orient2d). classify() returns
+// Side::boundary for a point on a closed edge or vertex, else inside / outside; contains(region,
+// p) is classify(p, region) != Side::outside (the boundary counts as inside).
+//  * Triangle2: either orientation; a collinear triangle has no interior (boundary on its edges,
+//    outside elsewhere).
+//  * classify_convex(p, vertices): a weakly convex polygon in COUNTER-CLOCKWISE order (collinear
+//    and repeated consecutive vertices allowed; at least three distinct non-collinear). Not
+//    checked (O(n)): a violation gives an unspecified Side, never UB or a hang. O(log n) binary
+//    search on the fan from v[0]. Fewer than three vertices: the point or segment they span.
+//  * Polygon2 (any orientation, simple or not): the EVEN-ODD rule by the crossing number of the
+//    ray along +x, with a half-open rule for vertices and horizontal edges (figs 13.14-13.17);
+//    boundary is decided first. winding_number() gives the nonzero-rule count. O(n).
+//  * PolygonWithHoles2: even-odd over all rings together (any orientation); for the documented
+//    convention (holes strictly inside outer, pairwise disjoint) this is "outer minus holes".
+//  * PolygonLocator2: answers exactly as classify() on the same rings, faster, by a slab
+//    decomposition (docs/notes/containment.md). Build O(n log n), memory O(n); a query scans one
+//    slab (a few edges for typical polygons, O(n) at worst).
+// Bad input: a non-finite query point is outside; edges with a non-finite endpoint are ignored.
+// PolygonLocator2 reports non_finite_input for such rings (then answers outside) and
+// empty_input for no edges. Empty polygons: everything is outside. Only PolygonLocator2's
+// construction allocates.
 
 #include <locus/config.hpp>
 #include <locus/core/point_range.hpp>

@@ -1,48 +1,23 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Point in tetrahedron, convex polyhedron (planes or a convex triangle mesh) and general closed
-// triangle mesh; row cg.piph; book section 13.4, figures 13.18 (a ray through a shared edge)
-// and 13.19 (a ray through a vertex).
-//
-// Every answer is EXACT for finite input: decisions are exact orient3d / orient2d signs
-// (core/predicates.hpp), exact coordinate comparisons and, for planes, the exact sign of
-// dot(normal, p) - constant. classify() returns Side::boundary for a point on the (closed)
-// surface, inside / outside otherwise; contains(region, p) = classify(p, region) != outside
-// (the boundary counts as inside).
-//
-// Inputs:
-//  * Tetrahedron3: either orientation. A flat tetrahedron (coplanar vertices) has no interior:
-//    points of the flat set (the union of its four triangles) are boundary, the rest outside.
-//  * Planes (convex polyhedron as an intersection of half-spaces): each Plane3 {normal,
-//    constant} bounds the half-space dot(normal, X) <= constant (normals point OUT). Outside if
-//    any dot(normal, p) - constant > 0, boundary if none is positive and one is zero, inside
-//    otherwise. No planes: the whole space (inside). A plane with a non-finite coefficient gives
-//    outside. Exact via a floating-point filter and, near zero, exact_sign_of_sum.
-//  * Triangle mesh: (vertices, triangles) spans; triangle {i, j, k} has normal (vj - vi) x
-//    (vk - vi). classify_convex(p, vertices, triangles) needs a closed convex mesh with outward
-//    normals (not checked): outside iff p is strictly above some face's plane (orient3d > 0),
-//    boundary iff on some face plane and above none. O(F).
+// triangle mesh; row cg.piph; book section 13.4, figures 13.18 and 13.19.
+// Every answer is EXACT for finite input (orient3d / orient2d, exact comparisons, exact sign of
+// dot(normal, p) - constant). classify() returns Side::boundary for a point on the closed
+// surface, inside / outside otherwise; contains(region, p) = classify(p, region) != outside.
+//  * Tetrahedron3: either orientation; a flat one has no interior (points of its four triangles
+//    are boundary, the rest outside).
+//  * Planes: each Plane3 {normal, constant} bounds dot(normal, X) <= constant (normals point
+//    OUT). No planes: the whole space (inside). A plane with a non-finite coefficient: outside.
+//  * Triangle mesh (vertices, triangles): triangle {i, j, k} has normal (vj - vi) x (vk - vi).
+//    classify_convex needs a closed convex mesh with outward normals (not checked); O(F).
 //  * classify(p, vertices, triangles): any closed mesh (every edge used by an even number of
-//    triangles; orientation, convexity and manifoldness are not needed, self-intersections are
-//    read by the even-odd rule). First, a point on any closed triangle is boundary (orient3d == 0
-//    and an exact 2D test in a coordinate plane where the triangle does not degenerate).
-//    Otherwise the parity of crossings of a ray along +x decides. Degenerate rays (through an
-//    edge, fig 13.18, or a vertex, fig 13.19, or in a triangle's plane) are resolved by
-//    Simulation of Simplicity (H. Edelsbrunner and E. P. Muecke, ACM TOG 9(1), 1990): the ray
-//    starts at p + (0, e, e^2) for an infinitesimal e > 0. Its yz-projection q + (e, e^2) never
-//    lies on a projected edge or vertex, so each triangle is crossed in its interior or not at
-//    all, and the parity is that of a genuinely generic ray (the point itself is not moved:
-//    p is off the surface, so p and p + (0, e, e^2) lie in the same region). A crossing of a
-//    triangle whose yz-projection is non-degenerate needs the perturbed point strictly inside
-//    the projected triangle (orient2d signs, then the signs of the e and e^2 coefficients,
-//    which are coordinate comparisons) and the hit in front of p (orient3d(a, b, c, p) of sign
-//    opposite to the projected orientation). Triangles parallel to the x axis are never
-//    crossed by the perturbed ray. This is the book's parity test with the case analysis of
-//    figures 13.18 and 13.19 replaced by one consistent symbolic rule.
-//    Cost O(F) with a box rejection per triangle; no allocation.
-//  * Non-closed meshes: the result is the parity of the perturbed ray's crossings, which is
-//    not a meaningful inside/outside; check with is_closed_mesh() (O(F log F), allocates).
-//
+//    triangles; orientation, convexity, manifoldness not needed; self-intersections are read by
+//    the even-odd rule). Boundary first, then the parity of crossings of a ray along +x, with
+//    degenerate rays (figs 13.18, 13.19) resolved by Simulation of Simplicity (method:
+//    docs/notes/containment.md). O(F) with a box rejection per triangle; no allocation.
+//  * Non-closed meshes give a meaningless parity; check with is_closed_mesh() (O(F log F),
+//    allocates).
 // Bad input: a non-finite query point is outside. Triangles with an out-of-range index or a
 // non-finite vertex are skipped. Empty meshes contain nothing (outside).
 

@@ -2,42 +2,24 @@
 #pragma once
 // 2D constrained Delaunay triangulation (CDT) and triangulation of polygons with holes.
 // CAPABILITIES row cg.delaunay2 ("constrained Delaunay, beyond the book"); book section 13.8.
-//
-// Algorithm. The Delaunay triangulation of the points (delaunay2.hpp) is built first. Each
-// constraint segment ab is then inserted: a walk from a along ab (exact orient2d) collects the
-// triangles whose edges ab crosses; they are removed, and the two pseudo-polygons on either side
-// of ab are re-triangulated by the recursive empty-circle rule (pick the vertex c whose circle
-// through a, b, c holds no other vertex of the pseudo-polygon, exact incircle; Anglada 1997).
-// The result is the constrained Delaunay triangulation: no point visible from the interior of a
-// triangle lies strictly inside its circumcircle, where segments block visibility.
-//
-// Constraints:
-//  - a constraint through existing vertices is split there: ab with a vertex v on its open
-//    segment becomes av and vb (both marked constrained);
-//  - a constraint that properly crosses an already inserted constraint is NOT inserted (no
-//    Steiner points are created): its index is listed in `rejected` and the status is
-//    invalid_input, while the triangulation is still the CDT of the accepted constraints; the
-//    same for constraints with an endpoint index out of range; a zero-length constraint (equal
-//    endpoints, also after duplicate merging) is ignored silently;
-//  - constraint endpoints are point indices; duplicate points are merged as in delaunay2.hpp
-//    (duplicate_of) and constraints are mapped to the kept point.
-//
+// The Delaunay triangulation of the points (delaunay2.hpp), then each constraint inserted by
+// removing the triangles it crosses and re-triangulating both sides (exact orient2d/incircle;
+// method: docs/notes/delaunay.md). No point visible from a triangle's interior lies strictly
+// inside its circumcircle (segments block visibility).
+// Constraints (endpoints are point indices; duplicates merged as in delaunay2.hpp, duplicate_of):
+//  - one through existing vertices is split there (all parts marked constrained);
+//  - one that properly crosses an inserted constraint, or has an endpoint index out of range,
+//    is NOT inserted (no Steiner points): it is listed in `rejected`, the status is
+//    invalid_input, and the result is the CDT of the accepted ones; zero length: ignored.
 // Output: the layout of Delaunay2Result (triangles CCW, halfedges -1 on the hull, hull CCW,
 // duplicate_of) plus constrained[e] = 1 for every half-edge on a constraint (both sides), and,
-// for triangulate_polygon(), inside[t] = 1 for triangles inside the polygon (even-odd rule:
-// crossing a constrained edge toggles the side, found by a breadth-first fill from the hull).
-//
-// Polygons with holes: triangulate_polygon(points, ring_ends) takes rings stored one after the
-// other in `points` (ring k is points[ring_ends[k-1] .. ring_ends[k]), ring_ends[-1] = 0), each
-// closed implicitly; the first ring is usually the outer boundary and the others holes, but the
-// even-odd rule accepts any orientation and nesting. Self-intersecting rings give rejected
-// edges and invalid_input.
-//
+// for triangulate_polygon(), inside[t] = 1 for triangles inside the polygon (even-odd rule).
+// triangulate_polygon(points, ring_ends): ring k is points[ring_ends[k-1] .. ring_ends[k])
+// (ring_ends[-1] = 0), closed implicitly; any orientation and nesting (even-odd rule).
+// Self-intersecting rings give rejected edges and invalid_input.
 // Bad input: NaN/Inf -> non_finite_input; no points -> empty_input; all points collinear ->
 // dimension 1, no triangles, status ok. Every walk has a step budget (the triangle count).
-//
-// Cost: the Delaunay triangulation, plus for each constraint O(k^2) in the number k of edges it
-// crosses (the re-triangulation and the re-linking of the cavity).
+// Cost: the Delaunay triangulation, plus O(k^2) per constraint crossing k edges.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>

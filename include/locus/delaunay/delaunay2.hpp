@@ -1,23 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// 2D Delaunay triangulation: incremental insertion with Lawson edge flips, every decision by an
-// exact predicate (orient2d, incircle of core/predicates.hpp). CAPABILITIES row cg.delaunay2;
-// book section 13.8, figures 13.42-13.51.
-//
-// Algorithm. The points are inserted in a biased randomized order (BRIO: a fixed hash of each
-// point's index puts it in one of rounds growing geometrically (8x), each round sorted along a
-// Hilbert curve over the bounding box, about 16 curve cells per point, stable radix sort), so
-// consecutive points are close and most points fall inside the hull of the earlier rounds. Each
-// point
-// is located by a visibility walk from the triangle of the previously inserted point, the
-// containing triangle is split in three (a point on an edge gives a degenerate triangle that the
-// first flip removes) and the link edges are flipped while the opposite vertex lies strictly
-// inside a circumcircle (Lawson). The outside of the hull is closed by "ghost" triangles that
-// share a vertex at infinity, so points outside the hull are inserted by the same code: a ghost
-// triangle on hull edge uv is "in conflict" with p when orient2d(v, u, p) < 0 (p strictly beyond
-// the edge) or p lies on the open segment uv. Flips happen only on a strict incircle > 0, so the
-// result has no input point strictly inside any triangle's circumcircle.
-//
+// 2D Delaunay triangulation; CAPABILITIES row cg.delaunay2; book section 13.8, figures
+// 13.42-13.51. Incremental insertion in BRIO/Hilbert order with Lawson flips, every decision an
+// exact orient2d/incircle (core/predicates.hpp); method: docs/notes/delaunay.md. No input point
+// lies strictly inside any triangle's circumcircle.
 // Output (Delaunay2Result), delaunator-style index buffers:
 //   triangles[3t + i]  vertex i of triangle t (input point indices), counter-clockwise.
 //   halfedges[3t + i]  the half-edge opposite to half-edge 3t + i (which runs from vertex i to
@@ -26,32 +12,17 @@
 //                      input point on the hull boundary is listed (collinear ones included).
 //   duplicate_of[i]    i for a point that is a vertex, else the index of the vertex with exactly
 //                      the same coordinates (the first one met in insertion order).
-//   dimension          2 for a real triangulation; 1 when all points are collinear (no triangles;
-//                      hull = the distinct points sorted along the line, lexicographically by
-//                      (x, y)); 0 when all points are equal (hull = the one kept point); -1 when
-//                      there is nothing (empty input or bad input).
-// Lower-dimensional output is data: status stays ok.
-//
-// Cocircular input (grids, points on a circle): the Delaunay triangulation is not unique; the
-// result is one valid choice, deterministic: the same input (values and order) gives the same
-// output (the rounds come from a fixed hash); a permuted input may give another valid choice.
-//
-// Bad input: any NaN or infinite coordinate gives Status::non_finite_input and an empty result;
-// no points gives Status::empty_input. Every walk has a step budget; a walk that exceeds it falls
-// back to an exact linear scan, so location never fails. The flip loop has a budget (never hit on
-// a correct triangulation); if it ran out the status would be limit_exceeded.
-//
-// Exactness: decisions are exact in the ranges stated in core/predicates.hpp (incircle: nonzero
-// |coordinates| within about 6e-64 .. 6e73 for double; every float). Outside them the result is
-// still a triangulation without crash or hang, but possibly not Delaunay.
-//
-// Cost: O(n log n) expected (n Hilbert keys, radix-sorted BRIO rounds, O(1) expected walk
-// steps and about 3 flips per point). Measured (bench/delaunay/delaunay2_bench.cpp, -O3, CPU
-// time, a loaded 2-core machine): 10^6 uniform points about 0.46-0.5x the time of CGAL's
-// Delaunay_triangulation_2<Epick> for one call, 1000 x 1000 grid about 0.5-0.7x. Peak heap
-// growth of one call about 88 bytes per point (Hilbert keys, the Hilbert-ordered copy of the
-// points, index arrays with ghosts that become the result in place); 10^6 points: 84 MB vs
-// CGAL's 145 MB. A reused Delaunay2 keeps its own copy of the points and of the result (145 MB).
+//   dimension          2; 1 when all points are collinear (no triangles; hull = the distinct points
+//                      sorted lexicographically by (x, y)); 0 when all are equal (hull = the kept
+//                      point); -1 for empty or bad input. Lower dimension is data: status stays ok.
+// Cocircular input: one valid triangulation, deterministic for the same input values and order;
+// a permuted input may give another valid one.
+// Bad input: NaN/Inf -> non_finite_input, empty result; no points -> empty_input. Walks fall back
+// to an exact scan; an exhausted flip budget (never on a correct triangulation) -> limit_exceeded.
+// Exactness: within incircle's range (core/predicates.hpp: double |coordinates| about
+// 6e-64 .. 6e73, every float); outside it a triangulation, possibly not Delaunay.
+// Cost: O(n log n) expected; peak heap about 88 bytes per point; a reused Delaunay2 keeps its
+// own copy of the points and of the result. Timings: bench/results/delaunay.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>

@@ -1,122 +1,30 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// 3D Delaunay tetrahedralization: incremental Bowyer-Watson insertion with every decision by an
-// exact predicate (orient3d, insphere of core/predicates.hpp) and a symbolic perturbation that
-// makes the output unique. CAPABILITIES row cg.delaunay3; book section 13.8, figure 13.52.
-//
-// Algorithm (Delaunay3Method::incremental, the default). The points are inserted in a biased
-// randomized order (BRIO: a fixed-seed shuffle, then rounds of geometrically growing size, each
-// sorted along a 3D Hilbert curve over the bounding box), so consecutive points are close. The
-// outside of the hull is closed by "ghost" tetrahedra sharing a vertex at infinity, so points
-// outside the hull are inserted by the same code. Each point is located by a visibility walk
-// (exact orient3d) from a tetrahedron of the previous point; the tetrahedra in conflict with it
-// (the point strictly inside their perturbed circumsphere; for a ghost on hull face abc: the
-// point strictly beyond the plane abc, or on it and in conflict with the real tetrahedron under
-// abc) are collected by a search over the adjacency (Bowyer-Watson "cavity"), removed, and the
-// cavity's boundary faces are joined to the new point.
-//
-// Symbolic perturbation. Cospherical input (grids, points on a sphere) has many Delaunay
-// tetrahedralizations. Every insphere test that is exactly zero is decided as if point q were
-// lifted to |q|^2 + eps_q on the paraboloid, eps_q > 0 infinitesimal and larger for
-// lexicographically larger points (x, then y, then z): the sign is then the sign of one of the
-// orient3d cofactors, never zero (Edelsbrunner & Muecke's Simulation of Simplicity applied to
-// the lifting map). The output is therefore the unique Delaunay tetrahedralization of the
-// perturbed points, which is a Delaunay tetrahedralization of the given points: no input point
-// lies strictly inside any tetrahedron's circumsphere. It does not depend on the input order
-// (a permuted input gives the same tetrahedra) and both methods below return the same set.
-//
-// Second method (Delaunay3Method::lifted_hull): the book's construction - lift every point p to
-// (p, |p|^2) on the paraboloid in 4D; the lower convex hull's facets project to the Delaunay
-// tetrahedra. Computed as a 4D convex hull in its own right (beneath-beyond with outside sets,
-// as in Qhull): the lifted points are inserted in a fixed-seed random order (no spatial sort, no
-// walk), each uninserted point is kept in the outside set of one facet it sees, the facets a new
-// point sees are found by a search from that facet, replaced by the cone from the point over
-// their horizon, and the points of the removed facets are re-assigned to the new facets (with an
-// exact scan of all facets as the fallback). The upper side is closed by a point at vertical
-// infinity, so the facets through it are the 3D hull faces. orient4d of lifted points is the
-// insphere determinant, so every decision is the exact (perturbed) insphere or orient3d. The
-// facets through the point at infinity are seen from p when p is strictly beyond their hull face,
-// or on its plane and the lower facet under that face is seen. Duplicates are removed first (the
-// smallest index is kept). O(n log n) expected for random input, O(n^2) worst; about 5x slower
-// than the incremental method (10^4 uniform points: 0.22 s vs 0.04 s): an independent second
-// algorithm that the tests compare against.
-//
-// Coplanar input (dimension 2). Both methods add one synthetic point e off the plane (a copy of
-// a first point with one coordinate changed) and tetrahedralize; every cell then has e as a
-// vertex and its face opposite e is a Delaunay triangle of the plane: the ball through a, b, c, e
-// meets the plane in the circumdisk of a, b, c, so insphere(a, b, c, e, d) is the exact in-plane
-// incircle test of d, in any tilted plane, with no projection (a coordinate projection is affine
-// and does not preserve circles). The perturbation then orders the in-plane ties by the
-// lexicographic rank of the points (e's own term vanishes), so the planar result is the unique
-// Delaunay triangulation of the perturbed points in their plane, independent of where e is and
-// of the input order. Exact under the same ranges as insphere (e's changed coordinate is half
-// the original one, or 1 when that is 0).
-//
-// Output (Delaunay3Result):
-//   tetrahedra[t].vertices   input point indices with orient3d(v0, v1, v2, v3) > 0 (exactly).
-//   tetrahedra[t].neighbors  neighbors[i] is the tetrahedron sharing the face opposite
-//                            vertices[i], or -1 when that face is on the hull.
-//   Face i of a tetrahedron is (v[a], v[b], v[c]) with (a, b, c) = kDelaunay3Face[i]; it is
-//   ordered so that orient3d(face, v[i]) > 0: the tetrahedron is on the side its normal
-//   (b - a) x (c - a) points to.
-//   hull                     the boundary faces, each with its outward normal (b - a) x (c - a)
-//                            (the convention of hull/hull3.hpp): a closed triangulated surface.
-//                            Points on the hull boundary that are not extreme are vertices too.
-//   duplicate_of[i]          i for a point that is a vertex, else the index of the vertex with
-//                            exactly the same coordinates: of equal points the smallest index
-//                            is kept, by both methods and whatever the insertion order.
-//   dimension                3 for a real tetrahedralization; 2 when all points are coplanar,
-//                            1 collinear, 0 all equal (then tetrahedra and hull are empty and
-//                            duplicate_of is still filled); -1 for empty or bad input.
-//   triangles                dimension 2 only: the Delaunay triangulation of the points in their
-//                            plane (input indices). All triangles face the same way: their normal
-//                            (b - a) x (c - a) has a positive component along the first axis
-//                            (x, then y, then z) not parallel to the plane (counter-clockwise
-//                            seen from +z for a plane z = const). They cover the points' convex
-//                            polygon; points on its boundary are vertices.
-//   chain                    dimension 1: the distinct points in order along their line
-//                            (lexicographic order, x then y then z), consecutive ones forming
-//                            the segments; dimension 0: the one kept point.
+// 3D Delaunay tetrahedralization; CAPABILITIES row cg.delaunay3; book section 13.8, figure 13.52.
+// Method (docs/notes/delaunay.md): incremental Bowyer-Watson insertion in BRIO/Hilbert order
+// (default) or the book's lower hull of the lifted points (Delaunay3Method::lifted_hull, an
+// independent check, slower); every decision is an exact orient3d/insphere (core/predicates.hpp)
+// under a symbolic perturbation, so the output is unique, independent of the input order and the
+// same for both methods: no input point lies strictly inside any tetrahedron's circumsphere.
+// Output (Delaunay3Result): tetrahedra[t].vertices: input indices, orient3d(v0, v1, v2, v3) > 0;
+// neighbors[i]: across the face opposite vertices[i], -1 on the hull. Face i is (v[a], v[b], v[c])
+// with (a, b, c) = kDelaunay3Face[i], ordered so that orient3d(face, v[i]) > 0. hull: the boundary
+// faces, outward normal (b - a) x (c - a) (as hull/hull3.hpp), non-extreme boundary points
+// included as vertices.
+// duplicate_of[i]: i for a vertex, else the smallest index with the same coordinates.
+// dimension 3; 2 coplanar (triangles: the in-plane Delaunay triangulation, normals positive along
+// the first axis, x then y then z, not parallel to the plane); 1 collinear (chain: the distinct
+// points in lexicographic order); 0 all equal (chain: the kept point); -1 empty or bad input.
 // Lower-dimensional output is data: the status stays ok.
-//
-// Queries on a result (free functions, also members of Delaunay3): locate(p) walks from a start
-// tetrahedron toward p (visibility walk, exact orient3d, at most max_steps steps, then an exact
-// scan of all tetrahedra) and reports inside / on_face / on_edge / on_vertex / outside (strictly
-// outside the hull, with a hull face p lies beyond). nearest_vertex(p) locates p and then
-// descends greedily over Delaunay edges to strictly closer vertices (exact distance comparison);
-// on a Delaunay tetrahedralization that ends at a nearest vertex (the lifted points form a convex
-// polytope whose edges are Delaunay edges, and |v - p|^2 is a linear function on it up to a
-// constant, so a vertex with no improving edge is a minimum). Both are O(n^(1/3)) expected steps
-// for evenly spread points from a far start, O(1) from a near one; no allocation. For results of
-// dimension < 3, locate reports empty_input and nearest_vertex scans the kept points.
-//
-// Incremental use: Delaunay3::insert adds points to a finished tetrahedralization (the same
-// walk and cavity code; a batch is Hilbert-sorted first); result() is compacted lazily, once per
-// batch of insertions, O(tetrahedra). When the current result has dimension < 3, insert rebuilds
-// from all points.
-//
-// Bad input: any NaN or infinite coordinate gives Status::non_finite_input and an empty result;
-// no points gives Status::empty_input; more than 2^26 points gives Status::invalid_input. Every
-// loop has a budget: a walk longer than the tetrahedron count falls back to an exact scan, and a
-// cavity search longer than the tetrahedron count stops with Status::limit_exceeded (never seen
-// on a valid structure).
-//
-// Exactness: decisions are exact in the ranges stated in core/predicates.hpp (insphere: nonzero
-// |coordinates| within about 7e-49 .. 5e58 for double; every float). Outside them the result is
-// still a tetrahedralization without crash or hang, but possibly not Delaunay.
-//
-// Cost: O(n log n) expected for evenly spread points (O(n^2) worst case, e.g. points on a
-// moment curve). Memory about 32 bytes per tetrahedron (6.7 n tetrahedra for uniform points)
-// plus a sorted copy of the points; the one-call delaunay() converts the internal array to the
-// result in place. Exactly cospherical quintuples (grids) are decided, perturbation included,
-// by a double evaluation proven exact on small lattices before the adaptive predicate is tried;
-// when every input point lies on one small lattice (coordinates k q, q a power of two, extents
-// below 512 q: integer grids, voxels) all predicates are exact double determinants without a
-// filter. Measured (bench/delaunay/delaunay3_bench.cpp, -O3, CPU time, one run on the shared
-// 2-core machine at load 3-6): 10^5 uniform points 0.50 s vs CGAL
-// Delaunay_triangulation_3<Epick> 0.72 s; 10^6 points 4.6 s vs 7.7 s; the 50^3 integer grid
-// 0.69 s vs 1.27 s (same cell counts as CGAL in all three). Peak heap growth (every malloc
-// counted): 10^6 points 294 MB vs CGAL's 526 MB; grid 37 MB vs 58 MB.
+// Queries: locate(p) (inside / on_face / on_edge / on_vertex / outside) and nearest_vertex(p),
+// exact walks, O(n^(1/3)) expected steps, no allocation; for dimension < 3 locate reports
+// empty_input and nearest_vertex scans. Delaunay3::insert adds points (rebuilds when dim < 3).
+// Bad input: NaN/Inf -> non_finite_input, empty result; no points -> empty_input; more than 2^26
+// points -> invalid_input; a cavity search over budget -> limit_exceeded (never seen).
+// Exactness: exact within insphere's range (core/predicates.hpp: double |coordinates| about
+// 7e-49 .. 5e58, every float); outside it a valid tetrahedralization, possibly not Delaunay.
+// Cost: O(n log n) expected (O(n^2) worst, e.g. points on a moment curve); about 32 bytes per
+// tetrahedron (6.7 n for uniform points), plus a point copy. Timings: bench/results/delaunay.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>

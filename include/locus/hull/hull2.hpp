@@ -2,10 +2,8 @@
 #pragma once
 // Convex hull of a finite set of 2D points (CAPABILITIES row cg.hull2; book section 13.7.1,
 // figures 13.32-13.38).
-//
 // Input: a span of Vec2<T> (T = float or double). Output (Hull2Result): a Status, the dimension
-// of the hull (0 point, 1 segment, 2 polygon; -1 when the status is not ok) and `indices` into the
-// input:
+// (0 point, 1 segment, 2 polygon; -1 when the status is not ok) and `indices` into the input:
 //   dimension 2: the hull polygon, counter-clockwise, starting at the lowest-leftmost point
 //                (minimum y, then minimum x). Without keep_collinear only strictly convex
 //                vertices (the extreme points) are listed; with it, every input point on the
@@ -13,35 +11,18 @@
 //   dimension 1: the two end points of the segment, the lowest-leftmost first; with
 //                keep_collinear every distinct point, sorted from that end to the other.
 //   dimension 0: one index.
-// Duplicated points are listed once: the smallest input index among equal points represents
-// them. Every method returns the same indices for the same input (they serve as each other's
-// oracles).
-//
-// Exactness: every combinatorial decision is an exact predicate (orient2d, lexicographic
-// comparison), so the result is the exact hull of the given floating-point points, on any input:
-// collinear, cocircular, duplicated, huge or tiny coordinates within orient2d's exact range (see
-// core/predicates.hpp). Floating-point arithmetic is used only for heuristics (bucketing keys and
-// the choice of the filter box), never for a decision that changes the result.
-//
-// Methods (Hull2Options::method):
-//   monotone_chain (default, fastest): an Akl-Toussaint filter discards the points strictly
-//     inside a box certified (by exact orient2d on its corners) to lie inside the hull of eight
-//     extreme points; the survivors are sorted by a bucket sort on y (two levels, in cache, for
-//     many survivors; exact ties resolved by a comparison sort inside the buckets) and one pass of
-//     Andrew's monotone chain links both chains. O(n) expected on uniform input and on points in
-//     convex position spread smoothly (a circle), O(n log n) worst case.
-//   incremental: the book's incremental merge (figure 13.34: the tangents from the new point to
-//     the current hull; figure 13.35: the five cases of a point against a degenerate hull that is
-//     a segment) after a lexicographic sort, so every new point is outside and the tangent search
-//     starts at the previous point: O(n log n).
-//   divide_and_conquer: the book's recursive merge of two hulls separated by a (lexicographic)
-//     line through their upper and lower tangents (figures 13.36-13.38): O(n log n).
-//
-// Bad input: an empty span gives Status::empty_input; a NaN or infinite coordinate gives
-// Status::non_finite_input (no indices); more than 2^32 - 1 points gives Status::invalid_input.
-// All points equal is dimension 0, not an error.
-//
-// Cost: see the methods; memory O(n) scratch, reused across calls by ConvexHull2.
+// Equal points are represented by their smallest index. Every method returns the same indices.
+// Exactness: every decision is an exact predicate (orient2d, lexicographic comparison): the exact
+// hull of the given points within orient2d's range (core/predicates.hpp); floating point only
+// steers heuristics (bucketing, the filter box).
+// Methods (Hull2Options::method; details: docs/notes/hull.md):
+//   monotone_chain (default, fastest): Akl-Toussaint filter, bucket sort, Andrew's monotone
+//     chain; O(n) expected on uniform or smooth convex-position input, O(n log n) worst case.
+//   incremental: the book's incremental merge (figures 13.34, 13.35): O(n log n).
+//   divide_and_conquer: the book's recursive merge (figures 13.36-13.38): O(n log n).
+// Bad input: empty -> Status::empty_input; NaN/Inf -> Status::non_finite_input (no indices); more
+// than 2^32 - 1 points -> Status::invalid_input. All points equal is dimension 0, not an error.
+// Memory O(n) scratch, reused across calls by ConvexHull2.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>

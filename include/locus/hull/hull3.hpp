@@ -2,44 +2,26 @@
 #pragma once
 // Convex hull of a finite set of 3D points (CAPABILITIES row cg.hull3; book section 13.7.2,
 // figures 13.39-13.41).
-//
 // Input: a span of Vec3<T> (T = float or double). Output (Hull3Result): a Status, the dimension
-// of the hull (0..3; -1 when the status is not ok) and, by dimension:
+// (0..3; -1 when the status is not ok) and, by dimension:
 //   3: `triangles`, index triples into the input, counter-clockwise seen from outside (the
 //      outward normal is (b - a) x (c - a), so orient3d(a, b, c, p) <= 0 for every input p);
-//      `adjacency[t][e]` is the triangle across edge (v[e], v[(e + 1) % 3]) of triangle t. The
-//      mesh is a closed 2-manifold (Euler: V - E + F = 2). Every vertex is an extreme point and
-//      every extreme point is a vertex; coplanar facets are triangulated (neighbouring triangles
-//      may be coplanar).
-//   2: `polygon`, the hull polygon (extreme points only), counter-clockwise in the projection
-//      onto the two coordinate axes other than `plane_axis`, taken in cyclic order (so the
-//      polygon's normal has a positive `plane_axis` component); no triangles.
+//      `adjacency[t][e]` is the triangle across edge (v[e], v[(e + 1) % 3]) of triangle t. A
+//      closed 2-manifold (V - E + F = 2); the vertices are exactly the extreme points; coplanar
+//      facets are triangulated (neighbouring triangles may be coplanar).
+//   2: `polygon`, the extreme points counter-clockwise in the projection onto the two axes other
+//      than `plane_axis`, in cyclic order (its normal has a positive `plane_axis` component).
 //   1: `polygon` holds the two end points (lexicographically smaller first).
 //   0: `polygon` holds one index.
 // `vertices` lists the hull's vertices (sorted indices) in every dimension. Duplicated points
 // are represented by their smallest index.
-//
-// Exactness: every combinatorial decision is exact orient3d / orient2d (core/predicates.hpp);
-// floating point only picks which point to insert next and the filter box. The result is the
-// exact hull of the given points within orient3d's exact range.
-//
-// Methods (Hull3Options::method):
-//   quickhull (default): an Akl-Toussaint style filter (a box certified by exact orient3d to lie
-//     inside the hull of 14 extreme points) drops interior points; then QuickHull: each face
-//     keeps its outside set, the furthest point of a face is inserted, the faces it sees are
-//     found by a walk over the adjacency from that face (figure 13.39), the horizon edges are
-//     coned to the point, and the orphaned outside points are redistributed to the new faces.
-//     Expected O(n log n) (also when every point is on the hull, e.g. on a sphere).
-//   incremental: the book's incremental method, points in input order, every face tested for
-//     visibility: O(n h). Simple; used as an oracle.
-// Non-extreme points that end up as vertices (points inside a coplanar facet or an edge, which
-// an insertion order may make vertices) are detected exactly - their incident triangles span at
-// most two planes - and the hull is rebuilt from the extreme points only.
-//
-// Bad input: empty span -> Status::empty_input; NaN or infinite coordinate ->
-// Status::non_finite_input; more than 2^32 - 2 points -> Status::invalid_input.
-//
-// Cost: O(n) memory; ConvexHull3 keeps its buffers across calls.
+// Exactness: every decision is an exact orient3d / orient2d: the exact hull of the given points
+// within orient3d's range (core/predicates.hpp).
+// Methods (Hull3Options::method; details: docs/notes/hull.md): quickhull (default; a filter,
+// then QuickHull: expected O(n log n), also with every point on the hull); incremental (the
+// book's, every face tested: O(n h); used as an oracle).
+// Bad input: empty -> Status::empty_input; NaN/Inf -> Status::non_finite_input; more than
+// 2^32 - 2 points -> Status::invalid_input. Memory O(n); ConvexHull3 keeps its buffers.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
