@@ -2,78 +2,29 @@
 #pragma once
 // Exact geometric predicates: orient2d, orient3d, incircle, insphere, and small exact helpers
 // (orient1d, lexicographic_compare, compare_sqr_distance, turn2d). CAPABILITIES row
-// core.predicates.
-//
-// Each predicate returns the *exact* sign of a polynomial in the input coordinates. A fast
-// inline filter (core/detail/predicate_filters.hpp, shared with the algorithms) evaluates the
-// determinant in double and accepts its sign when it exceeds a static error bound times the
-// permanent (the same determinant with absolute values), as in J. R. Shewchuk, "Adaptive
-// Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates" (1997), stage A.
-// Otherwise, after an exact lattice shortcut for grid input (orient3d, incircle, insphere), it
-// calls detail::*_adaptive (src/core/predicates.cpp,
-// built with -ffp-contract=off), which runs the paper's adaptive stages B, C and an exact stage
-// in expansion arithmetic. No global initialisation: every error bound is a constexpr computed
-// from eps = 2^-53. Float input is promoted to double, which is exact.
-//
+// core.predicates; book chapter 13 (figure 13.35: orient2d plus lexicographic_compare).
+// Each returns the exact sign of a polynomial in the coordinates: a double filter (Shewchuk 1997,
+// stage A; core/detail/predicate_filters.hpp), then adaptive expansion stages
+// (src/core/predicates.cpp); float input is promoted to double exactly. Method and the proof of
+// the range below: docs/notes/core.md.
 // Sign conventions (fixed; the library's combinatorial code relies on them):
 //   orient2d(a, b, c)       > 0 iff a, b, c are counter-clockwise: sign of det[b - a; c - a].
-//   orient3d(a, b, c, d)    > 0 iff d lies on the side of plane abc toward which
-//                           (b - a) x (c - a) points: sign of det[b - a; c - a; d - a].
-//                           This is the NEGATION of Shewchuk's orient3d (his is det[a-d; b-d;
-//                           c-d]).
+//   orient3d(a, b, c, d)    > 0 iff d is on the side of plane abc toward which (b - a) x (c - a)
+//                           points: sign of det[b - a; c - a; d - a] (NEGATION of Shewchuk's).
 //   incircle(a, b, c, d)    > 0 iff d is strictly inside the circle through a, b, c when
-//                           orient2d(a, b, c) > 0 (Shewchuk's convention); the sign flips with
-//                           the orientation of a, b, c.
+//                           orient2d(a, b, c) > 0 (the sign flips with that orientation).
 //   insphere(a, b, c, d, e) > 0 iff e is strictly inside the sphere through a, b, c, d when
-//                           orient3d(a, b, c, d) > 0 in OUR convention; the sign flips with the
-//                           orientation. This is the NEGATION of Shewchuk's insphere.
-//   turn2d(a, b, c, d)      > 0 iff the direction c -> d is counter-clockwise from a -> b (less
-//                           than a half turn): sign of det[b - a; d - c]; orient2d(a, b, c) =
-//                           turn2d(a, b, a, c). Zero iff the two directions are parallel (or
-//                           one is zero).
-// All are zero exactly on degenerate configurations (collinear, coplanar, cocircular,
-// cospherical), swap sign under an odd permutation of the points, and are invariant under
-// translation (orient*, in*) and positive scaling.
-//
-// Degenerate and bad input: if any coordinate is NaN or infinite the result is Sign::zero
-// (the filter can never accept a non-finite determinant or bound, and the fallback checks).
-//
-// Exactness range. Float input: every finite float is handled exactly (differences and products
-// of promoted floats stay far inside double range). Double input: the result is exact whenever
-// every nonzero coordinate c satisfies |c| >= 2^-L and |c| >= 2^-(L - 32) M, M the largest
-// coordinate magnitude, with no upper limit on M:
-//     orient2d   L = 480, H = 500   (about 3e-145; also turn2d, compare_sqr_distance)
-//     orient3d   L = 300, H = 330   (about 5e-91)
-//     incircle   L = 210, H = 245   (about 6e-64)
-//     insphere   L = 160, H = 195   (about 7e-49)
-// Why: every stage is exact when every nonzero coordinate lies in [2^-L, 2^H] (a degree-n
-// predicate needs n*(L+52) <= 1074, so every difference, product and expansion component is a
-// multiple of the smallest subnormal and no rounding is ever absolute; and n*(H+2) + 9 < 1024, so
-// no sum of the at most 2^9 monomials overflows, which also keeps every Veltkamp-Dekker split,
-// applied to values of degree <= n-1, 2^27 below overflow). Above 2^H the filter cannot accept
-// (an overflowing product makes its bound infinite or NaN), and the adaptive stages first scale
-// the input by the power of two that brings M into [1, 2) (normalising_scale, core/scalar.hpp),
-// which leaves the sign unchanged and rounds nothing while the coordinates stay normal: hence
-// the relative lower limit. (They scale small input up too, when M < 2^-32, but the filter may
-// already have accepted a wrong sign there: products in the subnormal range carry absolute
-// errors its relative bound does not cover. Only when every product underflows to zero does the
-// filter decline for certain; exactness below 2^-L is therefore not promised.)
-// Outside that range the result is still a deterministic Sign with no UB and no hang, but may be
-// wrong. Compiling the *calling* code with -ffast-math (-ffinite-math-only) voids the NaN rule;
-// FMA contraction in the caller does not invalidate the filter (a fused operation only drops
-// roundings that the error bounds allow for).
-//
-// Cost: the filter is the naive determinant plus an error bound (a few more flops and one
-// well-predicted branch): on random input about 1.15x the naive determinant for orient2d and
-// 1.4-1.8x for the others (bench/core/predicates_bench.cpp). The fallback runs only for nearly
-// degenerate input: about 10 ns for orient2d, 0.1 us orient3d, 0.5 us incircle, 1.5-3 us
-// insphere; of that, the test for input outside the exact range (which is then scaled) takes
-// about 2 ns (orient2d's fallback 81.7 -> 70.1 M/s, BM_orient2d_exact_degenerate; within noise for
-// the others). No allocation; stack use of the fallbacks is a few KB except insphere (about 40 KB
-// in stages B/C, about 140 KB in its rarely reached exact stage).
-//
-// Book: chapter 13 uses these signs throughout; figure 13.35 (the five relations of a point and a
-// segment) is decided exactly by orient2d plus lexicographic_compare (see the tests).
+//                           orient3d(a, b, c, d) > 0 in OUR convention (NEGATION of Shewchuk's).
+//   turn2d(a, b, c, d)      > 0 iff c -> d turns counter-clockwise from a -> b: det[b - a; d - c].
+// All are zero exactly on degenerate configurations, flip sign under an odd permutation, and are
+// invariant under translation and positive scaling. A NaN or infinite coordinate gives
+// Sign::zero (void if the caller is compiled with -ffast-math; FMA contraction is harmless).
+// Exactness: every finite float. Double: exact when every nonzero |c| >= 2^-L and
+// |c| >= 2^-(L - 32) M (M the largest |coordinate|, no upper limit), L = 480 orient2d (also
+// turn2d, compare_sqr_distance), 300 orient3d, 210 incircle, 160 insphere. Outside that range a
+// deterministic Sign with no UB or hang, possibly wrong.
+// Cost: the filter costs little more than the naive determinant; the fallback runs only near
+// degeneracy. No allocation; insphere's fallback uses up to about 140 KB of stack.
 
 #include <locus/config.hpp>
 #include <locus/core/detail/predicate_filters.hpp>

@@ -2,48 +2,23 @@
 #pragma once
 // Distance between a point and a filled convex polygon in O(log n); row dist2.pt-convex; book
 // section 6.1.6 (figure 6.13).
-//
 // distance_to_convex_polygon(p, v) takes the vertices v[0..n-1] of a convex polygon in
 // counter-clockwise order (any contiguous storage; Polygon2 via distance_to_convex_polygon(p,
 // poly)) and returns Distance<T, 2, NoParam, Vec2<T>>: closest[1] = the point of the filled
 // polygon nearest to p (p itself when p is inside or on the boundary, distance exactly 0);
-// param_b = closest[1] (a filled polygon is parametrised by the plane's own coordinates:
-// point_at(polygon, x) = x). The name says "convex" because Polygon2 does not: there is no
-// distance(p, Polygon2) overload; swapped(...) of result.hpp gives the polygon-first order.
-//
-// Method (written for this library from the book's idea of a binary search over the vertex fan;
-// every combinatorial decision is exact: orient2d of core/predicates.hpp and the exact sign of
-// dot(p - b, b - a) by core/exact_sum.hpp):
-//  1. Fan search: the rays v0 -> v[j] turn monotonically (by less than 180 degrees), so the sign
-//     of orient2d(v0, v[j], p) changes once along j and a binary search finds the fan wedge
-//     holding p. Inside that wedge p is inside iff it is left of (or on) the wedge's outer edge.
-//  2. Otherwise p sees a contiguous chain of "visible" edges (p strictly right of the edge). The
-//     search has found one visible edge k and one invisible edge g (edge 0 when p is inside the
-//     angle at v0; else, when p is behind v0, the edge where the line from p through v0 leaves
-//     the polygon, found by the same fan search).
-//  3. Along the visible chain the predicate "p projects beyond the end of edge j",
-//     dot(p - v[j+1], v[j+1] - v[j]) >= 0, is true on a prefix and false after it (if it fails at
-//     an edge it fails at every later visible edge: both edges face p, so the turn between them is
-//     less than the angle that would bring the edge end back towards p). The nearest point lies
-//     on the first visible edge where it fails (clamped projection; the clamp yields the vertex
-//     regions), so a second binary search over the edges ordered from g + 1 round to g - 1
-//     (where "visible and beyond" and "visible and not beyond" are each monotone on the side of
-//     k they are searched on) finds it. The nearest of that edge and its two neighbours (each an
-//     exact clamped point-segment projection) is returned.
-// Cost: O(log n): about 2 log2(n) orient2d and log2(n) dot-sign evaluations plus three
-// point-segment projections; no allocation.
-//
-// Preconditions and degenerate input: counter-clockwise, weakly convex (collinear consecutive
-// vertices allowed), no repeated consecutive vertex. These are NOT checked (checking is O(n);
-// use polygon_is_convex / polygon_orientation of primitives/polygon.hpp): a non-convex,
-// clockwise or duplicated-vertex input gives an unspecified finite answer (never a crash or a
-// loop; the returned pair is still a point of the polygon's boundary or p itself). n = 1 is the
-// point v[0]; n = 2 the segment v[0] v[1]. Two exact-zero situations fall back to an O(n) scan
-// of the edges (documented, not silent): all vertices collinear (a segment-like polygon), and p
-// exactly on the line through v[0] and v[n-1] beyond v[n-1]. Empty input (n = 0) has no points
-// and a non-finite p has no meaning: both give non_finite_distance() (result.hpp). To stay
-// O(log n) only the vertices the search reads are checked for NaN/inf (a non-finite one among
-// them gives non_finite_distance(); others are not seen). unique is always true (convex).
+// param_b = closest[1] (a filled polygon is parametrised by the plane's own coordinates). There
+// is no distance(p, Polygon2) overload, as Polygon2 need not be convex; swapped(...) of
+// result.hpp gives the polygon-first order. unique is always true.
+// Method (docs/notes/distance.md): two binary searches over the vertex fan with exact orient2d
+// and exact dot-product signs, then three exact clamped point-segment projections. Cost: about
+// 2 log2(n) orient2d and log2(n) dot signs; no allocation.
+// Preconditions, NOT checked (checking is O(n); use polygon_is_convex / polygon_orientation):
+// counter-clockwise, weakly convex (collinear consecutive vertices allowed), no repeated
+// consecutive vertex. A violation gives an unspecified finite point of the boundary (or p),
+// never a crash or loop. n = 1: the point; n = 2: the segment. All vertices collinear, or p
+// exactly on the line v[0] v[n-1] beyond v[n-1], falls back to an O(n) scan. n = 0 or a
+// non-finite p: non_finite_distance() (result.hpp); only the vertices the search reads are
+// checked for NaN/Inf.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>

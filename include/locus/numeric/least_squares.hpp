@@ -2,7 +2,6 @@
 #pragma once
 // Least-squares solution of over-determined systems A x ~ b (row core.lstsq; book chapter 2,
 // figure 2.9: the line y = m x + c closest, in the vertical squared distance, to a point set).
-//
 // Minimises ||A x - b||_2 for a row-major m x n matrix A (element (r, c) at a[r * n + c]) and
 // b of length m, m >= n expected. Two methods:
 //   * LstsqMethod::qr (default) - Householder QR with column pivoting (Businger-Golub; the
@@ -11,18 +10,15 @@
 //   * LstsqMethod::normal_equations - Cholesky of A^T A x = A^T b: cheaper (n^2 m / 2 instead of
 //     n^2 m) but squares the condition number, so it loses twice as many digits; use it only
 //     for well-conditioned A (e.g. a line fit through points that are not clustered).
-//
 // Rank. QR: column k (after pivoting) is dependent when |R_kk| <= rank_tolerance * |R_00|
 // (default max(m, n) * eps). Normal equations: a Cholesky pivot d_k <= rank_tolerance *
 // max_j (A^T A)_jj (default 16 max(m, n) eps, the rounding of forming A^T A; why:
-// docs/notes/core.md). Rank-deficient
-// A (rank < n, which includes m < n): status degenerate_input, `rank` reports the numerical
-// rank and x is a basic solution with the dependent unknowns set to zero (it still minimises
-// the residual, but is not the minimum-norm solution).
-//
+// docs/notes/core.md). Rank-deficient A (rank < n, which includes m < n): status
+// degenerate_input, `rank` reports the numerical rank and x is a basic solution with the
+// dependent unknowns set to zero (it still minimises the residual, but is not the minimum-norm
+// solution).
 // residual_norm = ||b - A x||_2: from the tail of Q^T b for QR (accurate also when tiny), and
 // evaluated directly for the normal equations.
-//
 // Degenerate input: m == 0 or n == 0 gives empty_input (x = n zeros, rank 0, residual ||b||);
 // NaN/Inf in A or b gives non_finite_input (x zeros, rank 0, residual NaN). Arithmetic is in T.
 // Allocates the result and one m x n working copy.

@@ -2,29 +2,20 @@
 #pragma once
 // Polynomial<T>: univariate polynomials of any degree, their arithmetic, and the classical tools
 // for reasoning about their real roots (row num.roots; book appendix A, figures A.9, A.10).
-//
-// Representation: `coeff[i]` multiplies x^i (low to high), in a std::vector. Trimming rule:
-// every constructor and every function returning a Polynomial removes trailing coefficients that
-// compare *exactly* equal to zero, so the result's last coefficient is non-zero; the zero
-// polynomial has no coefficients and degree() == -1. A tiny but non-zero leading coefficient is
-// kept on purpose: it is data (the polynomial really has large roots), not noise; call
-// trim(p, tol) to drop coefficients you know to be noise. The member is public, so a user may
-// store trailing zeros; every function here is correct on such input (degree() scans).
-//
+// Representation: `coeff[i]` multiplies x^i (low to high). Every constructor and every function
+// returning a Polynomial removes trailing coefficients that are exactly zero; the zero
+// polynomial has no coefficients and degree() == -1. A tiny non-zero leading coefficient is kept
+// (it is data: the polynomial has large roots); trim(p, tol) drops coefficients known to be noise.
+// Stored trailing zeros are handled correctly everywhere (degree() scans).
 // T is any field type with +, -, *, / and comparison with T(0): float, double, or an exact type
-// such as GMP's mpq_class. Functions that need magnitudes or rounding-error bounds (root bounds,
-// evaluate_with_bound, gcd's tolerance) are only for floating-point T (the Real concept).
-// With an exact T everything is exact: divide, gcd and the Sturm sequence are the textbook
-// algorithms. With floating-point T they are the same algorithms in rounded arithmetic: divide
-// removes the leading term exactly (it is set to zero, not computed); gcd treats a remainder
-// whose coefficients are all <= rel_tol * (largest coefficient of the divisor) as zero; the
-// Sturm sequence is only as reliable as the remainders (real_roots() in roots.hpp builds its own
-// in exact integers).
-//
+// such as GMP's mpq_class (then everything is exact). Root bounds, evaluate_with_bound and gcd's
+// tolerance need floating-point T (the Real concept). In floating point, divide sets the leading
+// term to zero exactly; gcd treats a remainder whose coefficients are all <= rel_tol * (largest
+// coefficient of the divisor) as zero; the Sturm sequence is only as reliable as the remainders
+// (real_roots() in roots.hpp builds its own in exact integers).
 // Degenerate input: division by the zero polynomial returns Status::degenerate_input (quotient 0,
 // remainder = dividend). gcd(0, 0) = 0. NaN/Inf coefficients propagate through arithmetic by IEEE
 // rules; use is_finite(p) to check, and the root finders report Status::non_finite_input.
-//
 // Cost: add O(n), multiply/compose O(n m) / O(n^2 m), divide O(n m), gcd O(n^2), Sturm
 // sequence O(n^2), one evaluation O(n). Arithmetic allocates (std::vector); the fixed-degree
 // solvers in roots.hpp do not.

@@ -1,56 +1,29 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Polygons in the plane: area, orientation, convexity, simplicity, monotonicity, centroid;
-// row prim2.polyline (polygon part); book section 5.4, figures 5.9 (simple concave and
-// convex polygons), 5.10 (nonsimple polygons: crossing edges, a shared vertex), 5.12 (a monotone
-// polygon split into two monotone chains).
-//
-// Polygon2<T> {vertices}: the closed chain v[0], v[1], ..., v[n-1], back to v[0] (the first
-// vertex is not repeated). PolygonWithHoles2<T> {outer, holes}: a region bounded by `outer`
-// minus the regions bounded by the holes (the usual convention, not enforced here: outer
-// counter-clockwise, holes clockwise, holes strictly inside outer and pairwise disjoint).
-// Every function also exists for bulk data as polygon_*(points), points any point range
-// (std::vector, std::array, std::span, point_span<2>(xy, n); core/point_range.hpp).
-//
-// Robustness. Combinatorial answers are EXACT for every finite input (orient2d of
-// core/predicates.hpp and exact coordinate comparisons; projections onto a direction by
-// core/exact_sum.hpp): orientation, is_convex, is_simple/self_intersection, monotone tests.
-// Measures are rounded: signed_area accumulates perp_dot(v[i] - v[0], v[i+1] - v[0]) (the
-// shoelace formula relative to the first vertex, which removes the translation-induced
-// cancellation) in compute_t<T>; centroid uses the same triangle fan.
-//
-// Definitions and conventions:
-//  * Consecutive duplicate vertices (including v[n-1] == v[0]) are ignored by every
-//    combinatorial test: they add a zero-length edge, nothing else.
-//  * orientation(): the exact orient2d at the lowest (then leftmost) vertex with its nearest
-//    distinct neighbours; for a simple polygon it is the sign of the area (positive =
-//    counter-clockwise). Zero when fewer than three distinct vertices, when the extreme vertex
-//    is a spike (both neighbours on one ray from it: never in a simple polygon), or when all
-//    vertices are collinear.
-//  * is_convex(): weakly convex. True iff there are at least three distinct vertices, not all
-//    collinear, every turn has the same sign or is straight (collinear consecutive vertices are
-//    allowed), no turn reverses direction (a spike), and the boundary winds exactly once (a
-//    star pentagram, whose turns are all left, winds twice and is NOT convex). It does not
-//    require simplicity separately: those conditions imply it.
-//  * is_simple(): the closed chain (duplicates removed) has at least three vertices, adjacent
-//    edges meet only at their shared vertex (no collinear fold-back), and non-adjacent edges are
-//    disjoint as closed segments, so touching at a vertex (fig 5.10b) or along a collinear
-//    overlap makes the polygon nonsimple. Collinear consecutive vertices are allowed.
-//    Algorithm: the Shamos-Hoey sweep (M. I. Shamos and D. Hoey, "Geometric intersection
-//    problems", FOCS 1976) over lexicographically (x, then y) sorted endpoints, with the
-//    sweep-line order decided by orient2d; at equal event points insertions come before
-//    deletions, so segments that only touch at an endpoint are neighbours at some moment and
-//    are tested. O(n log n) time, O(n) memory (the only allocating functions in this header;
-//    everything else is O(n) or O(1) without allocation).
-//  * Monotone polygon (fig 5.12) with respect to a direction d: the boundary splits into two
-//    chains, each monotone along d (non-strictly), i.e. the cyclic sequence of signs of
-//    dot(v[i+1] - v[i], d), zeros skipped, changes sign exactly twice. Simplicity is not
-//    checked (call is_simple as well for the book's definition). monotone_split() also returns
-//    the vertices where the chains meet (the extreme vertices along d).
-//  * centroid(): the area centroid; for a polygon of zero (rounded) area, the average of the
-//    vertices. perimeter(): the sum of the edge lengths.
-// Non-finite input: orientation zero, predicates false, measures NaN/inf as IEEE arithmetic
-// gives. Empty, 1- and 2-vertex polygons: area 0, not simple, not convex, orientation zero.
+// row prim2.polyline (polygon part); book section 5.4, figures 5.9, 5.10, 5.12.
+// Polygon2<T> {vertices}: the closed chain v[0] .. v[n-1], back to v[0] (first vertex not
+// repeated). PolygonWithHoles2<T> {outer, holes}: outer minus the holes (convention, not
+// enforced: outer counter-clockwise, holes clockwise, strictly inside, pairwise disjoint).
+// Every function also exists as polygon_*(points) for any point range (core/point_range.hpp).
+// Combinatorial answers are EXACT for finite input (orient2d, exact comparisons and projections):
+// orientation, is_convex, is_simple/self_intersection, monotone tests. Measures (signed_area,
+// centroid, perimeter) are rounded, in compute_t<T>. Consecutive duplicate vertices are ignored
+// by every combinatorial test. Details: docs/notes/primitives.md.
+//  * orientation(): the exact sign at the lowest (then leftmost) vertex; for a simple polygon the
+//    sign of the area (positive = counter-clockwise). Zero for fewer than three distinct
+//    vertices, all vertices collinear, or a spike at that vertex.
+//  * is_convex(): weakly convex: three or more distinct non-collinear vertices, all turns of one
+//    sign or straight, no spike, winding exactly once (a pentagram is NOT convex).
+//  * is_simple(): at least three vertices, adjacent edges meet only at their shared vertex,
+//    non-adjacent edges disjoint as closed segments (touching at a vertex, fig 5.10b, is
+//    nonsimple); collinear consecutive vertices allowed. Shamos-Hoey sweep, O(n log n) time and
+//    O(n) memory, the only allocating functions here; the rest are O(n) or O(1).
+//  * Monotone along d (fig 5.12): the cyclic signs of dot(v[i+1] - v[i], d), zeros skipped,
+//    change exactly twice; simplicity not checked. monotone_split() also returns the two
+//    extreme vertices along d. centroid(): area centroid; for zero (rounded) area the average.
+// Non-finite input: orientation zero, predicates false, measures NaN/inf. Fewer than three
+// vertices: area 0, not simple, not convex, orientation zero.
 
 #include <locus/config.hpp>
 #include <locus/core/point_range.hpp>

@@ -2,26 +2,21 @@
 #pragma once
 // Polylines (polygonal chains) in N dimensions and monotone chains; row prim2.polyline; book
 // section 5.4, figures 5.8 (a polyline) and 5.11 (strictly monotone and monotone chains).
-//
-// Polyline<T, N> {vertices, closed}: an owning vertex list; an open polyline has the n - 1
-// segments (v[i], v[i+1]); a closed one also the segment (v[n-1], v[0]) (a closed polyline is
-// a polygon's boundary). Every algorithm here also takes the vertices as
-// std::span<const Vec<T, N>> plus the `closed` flag, so any contiguous storage works (from a
-// std::vector, name the types: polyline_length<double, 2>(vec, closed)).
-//
+// Polyline<T, N> {vertices, closed}: an open polyline has the n - 1 segments (v[i], v[i+1]); a
+// closed one also (v[n-1], v[0]) (a polygon's boundary). Every algorithm also takes the vertices
+// as std::span<const Vec<T, N>> plus `closed` (from a std::vector, name the types:
+// polyline_length<double, 2>(vec, closed)).
 // Parametrisations:
 //   vertex parameter: point_at(poly, t) for t in [0, segment_count]: segment i = floor(t) at
 //     local parameter t - i, so t = i is vertex i (exactly) and t = segment_count is the end
 //     (v[0] again when closed); t outside the range is clamped.
 //   arc length: point_at_arc_length(poly, s) for s in [0, length(poly)], clamped; O(n) per
 //     call, or O(log n) with a table from cumulative_lengths().
-//
 // Monotone chains (fig 5.11): is_monotone_chain(v, d, strict) is true when the projections
 // dot(v[i], d) are all non-decreasing or all non-increasing along the open chain (strict: all
 // strictly increasing or all strictly decreasing, so every line perpendicular to d meets the
 // chain at most once). The comparisons are EXACT (exact sign of dot(v[i+1] - v[i], d), see
 // core/exact_sum.hpp), so axis directions and integer data are decided correctly.
-//
 // Degenerate input: an empty polyline has length 0 and point_at returns the zero vector; a
 // single vertex is returned for every parameter; zero-length segments are skipped by arc-length
 // walking. A chain with fewer than two vertices is (strictly) monotone; a zero or non-finite

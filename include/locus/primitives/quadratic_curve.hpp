@@ -1,37 +1,26 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // General quadratic curves (conics) in the plane: classification and conversions; row
-// prim2.quadratic; book section 5.5 (quadratic curves), figures 5.13, 5.14 (solution sets by the
-// signs of the eigenvalues d0, d1 and of r), 5.15 (circles), 5.16 (ellipses).
-//
+// prim2.quadratic; book section 5.5, figures 5.13, 5.14 (solution sets by eigenvalue signs),
+// 5.15 (circles), 5.16 (ellipses).
 // QuadraticCurve2<T> {a, b, c, d, e, f} is the point set
 //   { (x, y) : a x^2 + b x y + c y^2 + d x + e y + f = 0 },
 // i.e. X^T A X + B^T X + f = 0 with A = [[a, b/2], [b/2, c]] and B = (d, e) in the book's
 // matrix notation. evaluate() gives the (rounded) left-hand side.
-//
-// classify_conic() decides the class from three invariants whose SIGNS are computed exactly
-// (see below): the discriminant  disc = b^2 - 4ac  (= -4 det A; the book's d0 d1 < 0, = 0, > 0),
-// the determinant  D = det [[2a, b, d], [b, 2c, e], [d, e, 2f]]  (8 times the determinant of the
-// homogeneous 3x3 matrix; D = 0 iff the book's r = 0 after diagonalising and completing squares),
-// and, for the parabolic-degenerate case, K = (4af - d^2) + (4cf - e^2) (the sum of the
-// principal minors that contain the constant; a rotation- and translation-invariant there):
+// classify_conic() uses the exact signs (core/exact_sum.hpp, all finite coefficients, no
+// allocation) of disc = b^2 - 4ac, D = det [[2a, b, d], [b, 2c, e], [d, e, 2f]] and
+// K = (4af - d^2) + (4cf - e^2) (derivation: docs/notes/primitives.md):
 //   a = b = c = 0:  d = e = 0 ? (f = 0 ? plane : empty) : line;
-//   disc < 0:  D = 0 -> point;  a D < 0 -> ellipse (circle when a == c and b == 0);  else empty
-//              (fig 5.13, d0 d1 > 0: the ellipse, the point r = 0, no solution);
-//   disc > 0:  D = 0 -> two intersecting lines;  else hyperbola (fig 5.13, d0 d1 < 0);
-//   disc = 0:  D != 0 -> parabola (fig 5.14, e1 != 0); else K < 0 -> two parallel lines,
-//              K = 0 -> one double line, K > 0 -> empty (two imaginary lines) (fig 5.14, e1 = 0).
-// Exactness: every coefficient is converted to double exactly (float input too) and each
-// invariant's sign is core's exact_sign_of_sum (core/exact_sum.hpp): the exact sign for ALL
-// finite coefficients, with no allocation (cost: a few microseconds at worst).
-// So the class is exactly right for the coefficients as given; a conic computed with rounding
-// (e.g. by rotating an integer conic by a non-exact angle) may change class, which is correct
-// for the rounded coefficients. Non-finite coefficients give ConicKind::non_finite.
-//
+//   disc < 0:  D = 0 -> point;  a D < 0 -> ellipse (circle when a == c and b == 0);  else empty;
+//   disc > 0:  D = 0 -> two intersecting lines;  else hyperbola;
+//   disc = 0:  D != 0 -> parabola; else K < 0 -> two parallel lines, K = 0 -> one double line,
+//              K > 0 -> empty (two imaginary lines).
+// The class is exact for the coefficients as given (rounding them may change it, correctly).
+// Non-finite coefficients give ConicKind::non_finite.
 // Conversions: to_quadratic(Circle2 / Ellipse2) expands the implicit forms (rounded);
-// to_ellipse(q) returns the axis form when the class is ellipse or circle (centre from the 2x2
-// linear system, then ellipse.hpp's eigen decomposition; computed in compute_t<T>, rounded),
-// std::nullopt otherwise; to_circle(q) the circle when the class is circle.
+// to_ellipse(q) returns the axis form when the class is ellipse or circle (computed in
+// compute_t<T>, rounded), std::nullopt otherwise; to_circle(q) the circle when the class is
+// circle.
 
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>

@@ -2,56 +2,26 @@
 #pragma once
 // General quadric surfaces: classification and standard form; row prim3.quadric; book section
 // 9.4, figures 9.18 (three nonzero eigenvalues), 9.19 (two), 9.20 (one).
-//
 // Quadric3<T> {a, b, c} is the surface { X : X^T A X + dot(b, X) + c = 0 }, A symmetric (only
-// its upper triangle is read). signed_value(q, X) evaluates the left-hand side.
-//
-// Classification. The affine type of a real quadric is decided by the inertia (numbers of
-// positive and negative eigenvalues) of A and of the 4x4 extended matrix M = [[A, b/2],
-// [b^T/2, c]]. As in the book, diagonalising A = R D R^T and completing squares gives one of
-//   rank A = 3: ellipsoid, hyperboloid of one / two sheets, elliptic cone, point, empty
-//   rank A = 2: elliptic / hyperbolic paraboloid, elliptic / hyperbolic cylinder, line,
-//               two intersecting planes, empty
-//   rank A = 1: parabolic cylinder, two parallel planes, one (double) plane, empty
-//   rank A = 0: plane, empty (0 = c != 0), entire space (0 = 0)
-// and in each case the rank and inertia of M tell the alternatives apart (M is congruent to
-// diag(D) extended by the block of the remaining linear term and constant). Only real points
-// count: an "imaginary ellipsoid" x^2 + y^2 + z^2 + 1 = 0 is empty.
-//
-// quadric_type(q) is EXACT for the given coefficients, for every finite float or double input:
-// the inertia comes from the signs of the coefficients of the characteristic polynomials of A
-// and M (sums of principal minors; Descartes' rule of signs is exact for the real-rooted
-// characteristic polynomial of a symmetric matrix), each evaluated by core's exact_sign_of_sum
-// (core/exact_sum.hpp). `exact` is then always true. Compiled once (src/primitives/quadric.cpp).
-//
-// quadric_type(q, rel_tol) is the tolerance-based alternative for coefficients that carry
-// rounding error (e.g. a cone transformed in floating point is exactly a hyperboloid): after
-// scaling every coefficient by 1 / max|coefficient|, eigenvalues, the remaining linear term and
-// the constant of the standard form with magnitude <= rel_tol are treated as zero. The threshold
-// is relative to the largest coefficient, so rescale coordinates first when A, b and c have very
-// different magnitudes. A typical value is 1e3 * eps for data with a few rounding errors.
-//
-// Standard form: QuadricStandardForm {rotation R (right-handed, columns = new axes), center P,
-// diagonal d, linear e, constant k} with
-//   q(P + R y) = d0 y0^2 + d1 y1^2 + d2 y2^2 + dot(e, y) + k,
-// nonzero d first (positive before negative, then decreasing |d|), zero d last; e = (0, 0, e2)
-// with e2 > 0 only for paraboloids, the parabolic cylinder and the plane of rank A = 0 (then
-// k = 0: the origin of y lies on the surface's vertex/plane); otherwise e = 0 and k = 0 exactly
-// for cones, points, lines and intersecting/double planes. standard_form(q) takes the ranks
-// from the exact classification, so the form always agrees with quadric_type(q); its numbers (R, P,
-// d, k) are rounded and computed in compute_t<T> (double for float). The eigenvectors come from
-// numeric/eigen_sym.hpp's eigen_symmetric. to_quadric(form) converts back.
-//
-// The quadric solids convert to general form with to_quadric(): sphere |X - C|^2 - r^2,
-// ellipsoid (X - C)^T M (X - C) - 1, infinite cylinder |X - C|^2 - dot(D, X - C)^2 - r^2 and
-// infinite double cone cos^2(a) |X - V|^2 - dot(D, X - V)^2; signed_value() of the result equals
-// signed_value() of the solid (up to rounding), so "negative inside" carries over. The height
-// range of a finite cylinder or cone is not part of a quadric. The coefficients are rounded, so
-// classify the result with quadric_type(q, rel_tol) (a rounded cone is exactly a hyperboloid).
-//
-// Degenerate input: NaN or infinite coefficients give status non_finite_input and type
-// QuadricType::invalid. Cost: quadric_type(q) evaluates 7 exact principal-minor sums (at most
-// 24 products of 4 coefficients each; microseconds, no allocation).
+// its upper triangle is read). signed_value(q, X) evaluates the left-hand side. Only real points
+// count (x^2 + y^2 + z^2 + 1 = 0 is empty). The classes by rank of A, and the method (inertia
+// of A and of the extended 4x4 matrix): docs/notes/primitives.md.
+// quadric_type(q): EXACT for all finite float or double coefficients (signs of principal-minor
+// sums by core/exact_sum.hpp); `exact` is always true. Cost: 7 exact sums, microseconds, no
+// allocation.
+// quadric_type(q, rel_tol): for coefficients with rounding error (a cone transformed in floating
+// point is exactly a hyperboloid): after scaling by 1 / max|coefficient|, standard-form terms of
+// magnitude <= rel_tol count as zero (rescale coordinates first when A, b and c differ greatly in
+// magnitude; a typical rel_tol is 1e3 * eps).
+// standard_form(q): QuadricStandardForm {rotation R (right-handed, columns = new axes), center P,
+// diagonal d, linear e, constant k} with q(P + R y) = d0 y0^2 + d1 y1^2 + d2 y2^2 + dot(e, y) + k;
+// nonzero d first (positive before negative, then decreasing |d|); e = (0, 0, e2), e2 > 0 only
+// for paraboloids, the parabolic cylinder and the rank-0 plane (then k = 0); k = 0 exactly for
+// cones, points, lines and intersecting/double planes. The ranks agree with quadric_type(q); the
+// numbers are rounded, computed in compute_t<T>. to_quadric(form) converts back.
+// to_quadric(sphere / ellipsoid / cylinder / cone) keeps "negative inside" (infinite cylinder and
+// double cone: the height range is dropped); classify it with the rel_tol overload.
+// Non-finite coefficients: status non_finite_input, type QuadricType::invalid.
 
 #include <locus/config.hpp>
 #include <locus/core/mat.hpp>
