@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSL-1.0
+// The umbrella headers: <locus/locus.hpp> and one per area compile together in one unit (no
+// clash between areas, e.g. two structs of one name) and give the areas' entry points.
+#include <locus/bounding.hpp>
+#include <locus/containment.hpp>
+#include <locus/core.hpp>
+#include <locus/curves.hpp>
+#include <locus/delaunay.hpp>
+#include <locus/distance.hpp>
+#include <locus/fit.hpp>
+#include <locus/hull.hpp>
+#include <locus/io.hpp>
+#include <locus/locus.hpp>
+#include <locus/measure.hpp>
+#include <locus/numeric.hpp>
+#include <locus/primitives.hpp>
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace {
+
+TEST(Umbrella, EveryAreaIsReachableThroughItsUmbrella) {
+  using namespace locus;
+  const std::vector<Vec2d> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.25}};
+  EXPECT_EQ(orient2d(square[0], square[1], square[2]), Sign::positive);  // core
+  EXPECT_EQ(convex_hull(square).status, Status::ok);                     // hull
+  EXPECT_EQ(delaunay(square).status, Status::ok);                        // delaunay
+  const auto circle = min_circle(square);                                // bounding
+  EXPECT_EQ(circle.status, Status::ok);
+  EXPECT_NEAR(circle.circle.radius, 0.7071067811865476, 1e-15);
+  const Segment<double, 2> seg{{0, 2}, {1, 2}};
+  EXPECT_DOUBLE_EQ(distance(Vec2d{0, 0}, seg).distance, 2.0);         // distance, primitives
+  const auto roots = real_roots(Polynomial<double>{-2.0, 0.0, 1.0});  // numeric
+  ASSERT_EQ(roots.roots.size(), 2u);
+  EXPECT_DOUBLE_EQ(roots.roots[1].value * roots.roots[1].value, 2.0);
+}
+
+}  // namespace
