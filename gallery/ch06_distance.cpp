@@ -237,16 +237,17 @@ bool fig_6_4(SvgWriter& w) {
       continue;
     }
     draw(w, s, pen(c::blue, 2));
-    const std::string status = strip_status(s, y, mu, i, [&](const Segment<double, 2>& x) {
-      return distance(y, x).distance;
-    });
-    w.text(far_end(s, y), "S" + std::to_string(i / 2) + ": " + status, side_label(far_end(s, y), y));
+    const std::string status = strip_status(
+        s, y, mu, i, [&](const Segment<double, 2>& x) { return distance(y, x).distance; });
+    w.text(far_end(s, y), "S" + std::to_string(i / 2) + ": " + status,
+           side_label(far_end(s, y), y));
   }
   point(w, y, "Y", c::red);
   w.segment(y, final_d.closest[1], pen(c::green, 1.4));
   point(w, final_d.closest[1], "", c::green);
-  label(w, Vec2d{-big, -big}, "closest: " + fmt(final_d.distance) + " (segment " +
-                                   std::to_string(static_cast<int>(final_d.param_b)) + ")",
+  label(w, Vec2d{-big, -big},
+        "closest: " + fmt(final_d.distance) + " (segment " +
+            std::to_string(static_cast<int>(final_d.param_b)) + ")",
         c::green, 0, 0);
   return true;
 }
@@ -260,8 +261,10 @@ std::string feature(const Vec3d& bary) {
   const char* v[] = {"P\u2080", "P\u2081", "P\u2082"};
   int zeros = 0, nonzero = -1;
   for (int i = 0; i < 3; ++i) {
-    if (bary[i] == 0) ++zeros;
-    else nonzero = nonzero < 0 ? i : nonzero;
+    if (bary[i] == 0)
+      ++zeros;
+    else
+      nonzero = nonzero < 0 ? i : nonzero;
   }
   if (zeros == 0) return "interior";
   if (zeros == 2) return std::string("vertex ") + v[nonzero];
@@ -307,8 +310,8 @@ int st_region(double s, double t) {
   return t < 0 ? 6 : 1;
 }
 
-const std::vector<const char*> seven{c::gray,   c::blue,  c::green, c::orange,
-                                     c::purple, c::red,   "#1a9a9a"};
+const std::vector<const char*> seven{c::gray,   c::blue, c::green, c::orange,
+                                     c::purple, c::red,  "#1a9a9a"};
 
 // The parameter-plane frame: the domain triangle and the lines s = 0, t = 0, s + t = 1.
 void st_frame(SvgWriter& w, const Vec2d& off, double lo, double hi) {
@@ -326,9 +329,7 @@ void st_frame(SvgWriter& w, const Vec2d& off, double lo, double hi) {
 // locus::distance finds for the region's sample point.
 bool fig_6_6(SvgWriter& w) {
   const double lo = -1.0, hi = 2.0;
-  const auto bary_of_st = [](const Vec2d& st) {
-    return barycentric(tri65, point_at(tri65, st));
-  };
+  const auto bary_of_st = [](const Vec2d& st) { return barycentric(tri65, point_at(tri65, st)); };
   region_map(
       w, Vec2d{lo, lo}, Vec2d{hi, hi}, 90, 90,
       [&](const Vec2d& st) {
@@ -406,14 +407,14 @@ bool fig_6_8(SvgWriter& w) {
 // (locus::distance) are zero.
 bool fig_6_9(SvgWriter& w) {
   const Vec2d lo{-1.3, -1.2}, hi{3.4, 2.9};
-  const std::vector<const char*> colours{c::red, c::green, c::blue, c::orange, "#1a9a9a",
-                                         c::purple, c::gray};
+  const std::vector<const char*> colours{c::red,    c::green,  c::blue, c::orange,
+                                         "#1a9a9a", c::purple, c::gray};
   region_map(
       w, lo, hi, 120, 105,
       [&](const Vec2d& p) {
         const Vec3d b = distance(p, tri65).param_b;
         const int zeros = (b.x == 0) + (b.y == 0) + (b.z == 0);
-        if (zeros == 0) return 6;                                 // inside
+        if (zeros == 0) return 6;                                  // inside
         if (zeros == 2) return b.x != 0 ? 0 : (b.y != 0 ? 1 : 2);  // vertex regions
         return b.z == 0 ? 3 : (b.x == 0 ? 4 : 5);                  // edge regions
       },
@@ -433,7 +434,7 @@ bool fig_6_9(SvgWriter& w) {
 bool fig_6_10(SvgWriter& w) {
   const Vec2d u = normalize(Vec2d{1, 0.35});
   const Rectangle2<double> r{{0, 0}, {u, perp(u)}, {1.2, 0.7}};
-  const std::vector<const char*> colours{c::red,    c::green, c::blue,  c::orange, c::gray,
+  const std::vector<const char*> colours{c::red,    c::green,  c::blue,  c::orange, c::gray,
                                          c::purple, "#1a9a9a", c::black, "#b0a000"};
   const auto region = [&](const Vec2d& p) {
     const Vec2d st = distance(p, r).param_b;
@@ -447,8 +448,12 @@ bool fig_6_10(SvgWriter& w) {
     for (int i = -1; i <= 1; ++i) {
       const Vec2d p = r.center + (1.9 * i) * r.axis[0] + (1.45 * j) * r.axis[1];
       const Vec2d st = distance(p, r).param_b;
-      const std::string s = st.x == -r.extent[0] ? "s=\u2212e\u2080" : st.x == r.extent[0] ? "s=e\u2080" : "";
-      const std::string t = st.y == -r.extent[1] ? "t=\u2212e\u2081" : st.y == r.extent[1] ? "t=e\u2081" : "";
+      const std::string s = st.x == -r.extent[0]  ? "s=\u2212e\u2080"
+                            : st.x == r.extent[0] ? "s=e\u2080"
+                                                  : "";
+      const std::string t = st.y == -r.extent[1]  ? "t=\u2212e\u2081"
+                            : st.y == r.extent[1] ? "t=e\u2081"
+                                                  : "";
       label(w, p, s.empty() && t.empty() ? "inside" : s + (s.empty() || t.empty() ? "" : " ") + t,
             c::black, -20, -6);
     }
@@ -470,8 +475,10 @@ std::vector<Vec2d> frustum_outline(const Frustum2<double>& f) {
 bool fig_6_11(SvgWriter& w) {
   const Frustum2<double>& f = frustum6;
   const double q = f.d_max / f.d_min;
-  w.segment(f.origin, f.origin + f.d_max * f.direction + q * f.l_bound * f.left, dashed(c::gray, 1));
-  w.segment(f.origin, f.origin + f.d_max * f.direction - q * f.l_bound * f.left, dashed(c::gray, 1));
+  w.segment(f.origin, f.origin + f.d_max * f.direction + q * f.l_bound * f.left,
+            dashed(c::gray, 1));
+  w.segment(f.origin, f.origin + f.d_max * f.direction - q * f.l_bound * f.left,
+            dashed(c::gray, 1));
   closed(w, frustum_outline(f), filled(c::blue, 0.15));
   point(w, f.origin, "E", c::gray);
   w.arrow(f.origin, f.origin + 0.7 * f.direction, pen(c::gray, 1.2));
@@ -481,8 +488,8 @@ bool fig_6_11(SvgWriter& w) {
     if (!std::isfinite(d.distance)) return false;
     closest_link(w, d, "", "");
   }
-  label(w, Vec2d{-2.2, -0.4}, "(c) orthogonal frustum: near d = " + fmt(f.d_min) +
-                                  ", far d = " + fmt(f.d_max));
+  label(w, Vec2d{-2.2, -0.4},
+        "(c) orthogonal frustum: near d = " + fmt(f.d_min) + ", far d = " + fmt(f.d_max));
   return true;
 }
 
@@ -504,8 +511,10 @@ bool fig_6_12(SvgWriter& w) {
                          Vec2d{0.8, 3.7}, Vec2d{0.5, 2.0}}) {
     const auto d = distance(p, f);
     if (!std::isfinite(d.distance)) return false;
-    if (d.distance > 0) closest_link(w, d, "", "");
-    else point(w, p, "inside", c::red);
+    if (d.distance > 0)
+      closest_link(w, d, "", "");
+    else
+      point(w, p, "inside", c::red);
   }
   return true;
 }
@@ -555,11 +564,7 @@ bool fig_6_14(SvgWriter& w) {
 // BezierCurve2): every root of the derivative of the squared distance).
 bool fig_6_15(SvgWriter& w) {
   const BezierCurve2<double> curve{{{0, 0}, {1.0, 2.2}, {2.4, -1.2}, {3.4, 1.0}}};
-  w.curve(
-      [&](double t) {
-        return point_at(curve, t);
-      },
-      0, 1, 120, pen(c::blue, 2));
+  w.curve([&](double t) { return point_at(curve, t); }, 0, 1, 120, pen(c::blue, 2));
   w.polyline(curve.control, dashed(c::light, 1));
   for (const Vec2d& p : {Vec2d{1.6, 1.6}, Vec2d{2.0, -0.9}, Vec2d{3.9, 0.2}}) {
     const auto d = distance(p, curve);
@@ -594,8 +599,10 @@ void draw_line(SvgWriter& w, const Line2<double>& l, double len, const char* col
 
 // 6.16: line-line: (a) intersecting, distance 0; (b) parallel, positive distance.
 bool fig_6_16(SvgWriter& w) {
-  const Line2<double> a0{{0, 0}, normalize(Vec2d{1, 0.3})}, b0{{0.3, -0.5}, normalize(Vec2d{0.2, 1})};
-  const Line2<double> a1{{4.2, 0}, normalize(Vec2d{1, 0.3})}, b1{{4.2, 0.8}, normalize(Vec2d{-1, -0.3})};
+  const Line2<double> a0{{0, 0}, normalize(Vec2d{1, 0.3})},
+      b0{{0.3, -0.5}, normalize(Vec2d{0.2, 1})};
+  const Line2<double> a1{{4.2, 0}, normalize(Vec2d{1, 0.3})},
+      b1{{4.2, 0.8}, normalize(Vec2d{-1, -0.3})};
   draw_line(w, a0, 1.5, c::blue);
   draw_line(w, b0, 1.2, c::green);
   draw_line(w, a1, 1.5, c::blue);
@@ -608,7 +615,8 @@ bool fig_6_16(SvgWriter& w) {
 bool fig_6_17(SvgWriter& w) {
   const Vec2d dl = normalize(Vec2d{1, 0.2});
   const Line2<double> l0{{0, 0}, dl}, l1{{4.2, 0}, dl};
-  const Ray<double, 2> r0{{0.2, 1.0}, normalize(Vec2d{0.3, -1})}, r1{{4.4, 0.7}, normalize(Vec2d{0.5, 1})};
+  const Ray<double, 2> r0{{0.2, 1.0}, normalize(Vec2d{0.3, -1})},
+      r1{{4.4, 0.7}, normalize(Vec2d{0.5, 1})};
   draw_line(w, l0, 1.6, c::blue);
   draw_line(w, l1, 1.6, c::blue);
   draw_ray(w, r0, 1.8, c::green);
@@ -755,8 +763,8 @@ bool fig_6_22(SvgWriter& w) {
     draw(w, e, pen(c::blue, 2));
     const bool outside = std::max(e.p0.x, e.p1.x) < lo.x || std::min(e.p0.x, e.p1.x) > hi.x ||
                          std::max(e.p0.y, e.p1.y) < lo.y || std::min(e.p0.y, e.p1.y) > hi.y;
-    const std::string status = i == 0 ? "sets μ = " + fmt(mu)
-                               : outside ? "rejected by the rectangle"
+    const std::string status = i == 0            ? "sets μ = " + fmt(mu)
+                               : outside         ? "rejected by the rectangle"
                                : d.distance < mu ? "updates μ to " + fmt(d.distance)
                                                  : "dist " + fmt(d.distance) + " > μ";
     const Vec2d centre = lerp(s.p0, s.p1, 0.5);

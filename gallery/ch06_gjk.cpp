@@ -108,14 +108,18 @@ const GjkRun& gjk_run() {
 
 std::vector<Vec2d> simplex_points(const GjkSimplex<double, 2>& s) {
   std::vector<Vec2d> pts;
-  for (int i = 0; i < s.size; ++i) pts.push_back(s.a[static_cast<std::size_t>(i)] - s.b[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < s.size; ++i)
+    pts.push_back(s.a[static_cast<std::size_t>(i)] - s.b[static_cast<std::size_t>(i)]);
   return pts;
 }
 
 void draw_simplex(SvgWriter& w, const std::vector<Vec2d>& pts, const SvgStyle& s) {
-  if (pts.size() == 1) w.point(pts[0], dot(s.stroke.c_str(), 4));
-  else if (pts.size() == 2) w.segment(pts[0], pts[1], s);
-  else w.polyline(pts, s, true);
+  if (pts.size() == 1)
+    w.point(pts[0], dot(s.stroke.c_str(), 4));
+  else if (pts.size() == 2)
+    w.segment(pts[0], pts[1], s);
+  else
+    w.polyline(pts, s, true);
 }
 
 // One GJK iteration k (figures 6.25-6.28 are k = 0..3): A - B, the simplex S_k and V_k, the
@@ -171,13 +175,15 @@ bool fig_6_29(SvgWriter& w) {
       label(w, o + Vec2d{2.5, -2.0}, panel == 0 ? "(a)" : "(b)");
     }
     w.polygon(hull_of(grown), filled(c::blue, 0.15, 1.4));
-    for (std::size_t i = 0; i < before.size(); ++i) point(w, before[i], "S" + std::to_string(i), c::blue);
+    for (std::size_t i = 0; i < before.size(); ++i)
+      point(w, before[i], "S" + std::to_string(i), c::blue);
     point(w, steps[k].w, "W", c::red);
     point(w, steps[k].v_next, "V", c::green);
     w.segment(Vec2d{0, 0}, steps[k].v_next, dashed(c::green));
     const Vec2d o{gap, 0};
     draw_simplex(w, shifted(after, o), pen(c::green, 2.4));
-    for (std::size_t i = 0; i < after.size(); ++i) point(w, after[i] + o, "M" + std::to_string(i), c::green);
+    for (std::size_t i = 0; i < after.size(); ++i)
+      point(w, after[i] + o, "M" + std::to_string(i), c::green);
     w.segment(o, steps[k].v_next + o, dashed(c::green));
     return true;
   }
@@ -194,8 +200,10 @@ std::vector<Figure> chapter6_gjk_figures() {
       {"6.26", "gjk_distance with GjkTrace: step 1", fig_6_26},
       {"6.27", "gjk_distance with GjkTrace: step 2", fig_6_27},
       {"6.28", "gjk_distance with GjkTrace: step 3", fig_6_28},
-      {"6.29", "gjk_distance with GjkTrace: conv(S_k + W_k), its nearest point V_{k+1} and the new "
-               "simplex M", fig_6_29},
+      {"6.29",
+       "gjk_distance with GjkTrace: conv(S_k + W_k), its nearest point V_{k+1} and the new "
+       "simplex M",
+       fig_6_29},
   };
 }
 

@@ -46,8 +46,8 @@ void control_net(SvgWriter& w, const std::vector<Vec3d>& ctrl, int rows, int col
 // Isoparametric curves u = const and v = const of a surface point_at(u, v) over [u0, u1] x
 // [v0, v1]: `lines` + 1 of each, every one sampled at 48 points.
 template <class Eval>
-void isolines(SvgWriter& w, const Eval& eval, double u0, double u1, double v0, double v1,
-              int lines, const SvgStyle& s) {
+void isolines(SvgWriter& w, const Eval& eval, double u0, double u1, double v0, double v1, int lines,
+              const SvgStyle& s) {
   const int samples = 48;
   for (int dir = 0; dir < 2; ++dir)
     for (int i = 0; i <= lines; ++i) {
@@ -158,12 +158,12 @@ bool fig_9_24(SvgWriter& w) {
 // triangular net; the isoparametric curves u, v, w = const are drawn on the patch.
 bool fig_9_25(SvgWriter& w) {
   const int n = 3;
-  BezierTriangle<double, 3> tri{n, std::vector<Vec3d>(static_cast<std::size_t>(
-                                       triangle_control_count(n)))};
+  BezierTriangle<double, 3> tri{
+      n, std::vector<Vec3d>(static_cast<std::size_t>(triangle_control_count(n)))};
   // P_ijk over the planar triangle with corners e1 = (3, 0), e2 = (0, 3), e3 = (0, 0) (the
   // barycentric grid), lifted by heights that bulge the interior.
-  const double lift[4][4] = {{0.0, 0.5, 0.7, 0.2}, {0.6, 1.3, 0.4, 0}, {0.9, 0.8, 0, 0},
-                             {0.3, 0, 0, 0}};  // lift[j][i]
+  const double lift[4][4] = {
+      {0.0, 0.5, 0.7, 0.2}, {0.6, 1.3, 0.4, 0}, {0.9, 0.8, 0, 0}, {0.3, 0, 0, 0}};  // lift[j][i]
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i + j <= n; ++i) {
       const Vec3d p{1.0 * i + 0.5 * j, 0.9 * j, lift[j][i]};
@@ -213,8 +213,8 @@ bool fig_9_26(SvgWriter& w) {
                           {0.0, 0.4, 0.8, 1.2, 1.0, 0.3}, {-0.2, 0.0, 0.3, 0.4, 0.3, 0.0}};
   for (int i = 0; i < rows; ++i)
     for (int j = 0; j < cols; ++j) net.push_back({0.8 * i, 0.8 * j, z[i][j]});
-  const BSplineSurface<double, 3> s{d,   d, rows, cols, net, uniform_knots<double>(rows, d),
-                                    uniform_knots<double>(cols, d)};
+  const BSplineSurface<double, 3> s{
+      d, d, rows, cols, net, uniform_knots<double>(rows, d), uniform_knots<double>(cols, d)};
   if (validate(s) != Status::ok) return false;
   const ParamDomain<double> du = domain_u(s), dv = domain_v(s);
   w.set_camera(camera(eye, {2.0, 2.0, 0.6}));
@@ -236,8 +236,9 @@ std::vector<Figure> chapter9_surface_figures() {
       {"9.22", "BezierCurve3 point_at (de Casteljau), derivative_at (end tangents)", fig_9_22},
       {"9.23", "BSplineCurve3 open_uniform_knots, validate, domain, point_at (de Boor)", fig_9_23},
       {"9.24", "BezierPatch point_at (isoparametric curves), normal_at", fig_9_24},
-      {"9.25", "BezierTriangle triangle_index, point_at (barycentric isoparametric curves), "
-               "normal_at",
+      {"9.25",
+       "BezierTriangle triangle_index, point_at (barycentric isoparametric curves), "
+       "normal_at",
        fig_9_25},
       {"9.26", "BSplineSurface uniform_knots, validate, domain_u/v, point_at (de Boor)", fig_9_26},
   };

@@ -32,8 +32,8 @@
 #include <locus/distance/point_surface.hpp>
 #include <locus/distance/point_tetrahedron.hpp>
 #include <locus/distance/point_triangle.hpp>
-#include <locus/distance/ray_segment.hpp>
 #include <locus/distance/ray_ray.hpp>
+#include <locus/distance/ray_segment.hpp>
 #include <locus/distance/segment_segment.hpp>
 #include <locus/hull/hull2.hpp>
 #include <locus/io/svg_primitives.hpp>
@@ -173,8 +173,8 @@ bool fig_10_4(SvgWriter& w) {
   }
   for (std::size_t i = 0; i + 1 < pl.vertices.size(); ++i) {
     const Segment3<double> s{pl.vertices[i], pl.vertices[i + 1]};
-    const bool rejected = (s.p0.x > q.x + mu && s.p1.x > q.x + mu) ||
-                          (s.p0.x < q.x - mu && s.p1.x < q.x - mu);
+    const bool rejected =
+        (s.p0.x > q.x + mu && s.p1.x > q.x + mu) || (s.p0.x < q.x - mu && s.p1.x < q.x - mu);
     draw(w, s, rejected ? dashed(c::orange, 2) : pen(c::blue, 2));
     label(w, lerp(s.p0, s.p1, 0.5), rejected ? "rejected" : "tested",
           rejected ? c::orange : c::blue);
@@ -228,7 +228,8 @@ bool fig_10_7(SvgWriter& w) {
 // 10.8: point to triangle in 3D: the closest point is (a) inside, (b) on an edge, (c) a vertex.
 bool fig_10_8(SvgWriter& w) {
   w.set_camera(camera({3.2, -8, 3}, {3.2, 0.5, 0.4}));
-  const std::array<Vec3d, 3> qs{Vec3d{0.7, 0.5, 1.2}, Vec3d{1.0, -0.8, 0.8}, Vec3d{-0.6, -0.4, 0.9}};
+  const std::array<Vec3d, 3> qs{Vec3d{0.7, 0.5, 1.2}, Vec3d{1.0, -0.8, 0.8},
+                                Vec3d{-0.6, -0.4, 0.9}};
   for (std::size_t k = 0; k < 3; ++k) {
     const Vec3d off{3.0 * static_cast<double>(k), 0, 0};
     const Triangle3<double> t{off + Vec3d{0, 0, 0}, off + Vec3d{2, 0.2, 0.1},
@@ -240,7 +241,9 @@ bool fig_10_8(SvgWriter& w) {
     const Vec3d b = d.param_b;
     const int zeros = (b.x == 0) + (b.y == 0) + (b.z == 0);
     label(w, off + Vec3d{0.2, -0.4, -0.5},
-          std::string(panel_names[k]) + (zeros == 0 ? " interior" : zeros == 1 ? " edge" : " vertex"));
+          std::string(panel_names[k]) + (zeros == 0   ? " interior"
+                                         : zeros == 1 ? " edge"
+                                                      : " vertex"));
   }
   return true;
 }
@@ -372,8 +375,8 @@ bool fig_10_15(SvgWriter& w) {
     w.point(d.param_b, dot(c::blue));
     caption2(w, Vec2d{-1.4, y},
              "P'" + std::to_string(k) + ": h = " + fmt(h) + ", in plane " + fmt(in_plane) +
-                 ", dist = \u221a(h\u00b2 + d\u00b2) = " + fmt(std::sqrt(h * h + in_plane * in_plane)) +
-                 " (3D: " + fmt(d.distance) + ")");
+                 ", dist = \u221a(h\u00b2 + d\u00b2) = " +
+                 fmt(std::sqrt(h * h + in_plane * in_plane)) + " (3D: " + fmt(d.distance) + ")");
     y -= 0.32;
   }
   return true;
@@ -413,8 +416,9 @@ bool fig_10_17(SvgWriter& w) {
   for (int k = 0; k < 8; ++k)
     w.segment(p, point_at(circ, k * std::numbers::pi / 4), dashed(c::light, 1));
   link(w, d, "P", "");
-  label(w, Vec3d{0, 0, -0.7}, std::string("dist ") + fmt(d.distance) +
-                                  (d.unique ? "" : ", every circle point closest (not unique)"));
+  label(w, Vec3d{0, 0, -0.7},
+        std::string("dist ") + fmt(d.distance) +
+            (d.unique ? "" : ", every circle point closest (not unique)"));
   return true;
 }
 
@@ -440,7 +444,8 @@ bool fig_10_20(SvgWriter& w) {
   w.set_camera(camera({5, -6, 3}, {0.5, 0.4, 0.5}));
   const Tetrahedron3<double> tet{{{0, 0, 0}, {1.8, 0, 0}, {0.6, 1.6, 0}, {0.7, 0.6, 1.5}}};
   draw(w, tet, filled(c::blue, 0.1));
-  const std::array<Vec3d, 3> ps{Vec3d{1.5, -0.8, 1.3}, Vec3d{-0.9, -0.5, 0.4}, Vec3d{0.7, 0.5, 2.4}};
+  const std::array<Vec3d, 3> ps{Vec3d{1.5, -0.8, 1.3}, Vec3d{-0.9, -0.5, 0.4},
+                                Vec3d{0.7, 0.5, 2.4}};
   for (const Vec3d& p : ps) {
     const auto d = distance(p, tet);
     if (!std::isfinite(d.distance)) return false;
@@ -451,9 +456,8 @@ bool fig_10_20(SvgWriter& w) {
   return true;
 }
 
-const OrientedBox3<double> box10{{0, 0, 0},
-                                 {Vec3d{0.8, 0.6, 0}, Vec3d{-0.6, 0.8, 0}, Vec3d{0, 0, 1}},
-                                 {1.2, 0.7, 0.5}};
+const OrientedBox3<double> box10{
+    {0, 0, 0}, {Vec3d{0.8, 0.6, 0}, Vec3d{-0.6, 0.8, 0}, Vec3d{0, 0, 1}}, {1.2, 0.7, 0.5}};
 
 // 10.21: distance from points to an oriented box.
 bool fig_10_21(SvgWriter& w) {
@@ -517,8 +521,8 @@ bool fig_10_23(SvgWriter& w) {
 // 10.24: closest points of an ellipsoid's surface to a few query points (inside and outside).
 bool fig_10_24(SvgWriter& w) {
   w.set_camera(camera({5, -6, 3}));
-  const Ellipsoid3<double> e{{0, 0, 0}, {Vec3d{1, 0, 0}, Vec3d{0, 1, 0}, Vec3d{0, 0, 1}},
-                             {1.6, 1.0, 0.7}};
+  const Ellipsoid3<double> e{
+      {0, 0, 0}, {Vec3d{1, 0, 0}, Vec3d{0, 1, 0}, Vec3d{0, 0, 1}}, {1.6, 1.0, 0.7}};
   for (int k = 0; k < 12; ++k) {
     const double th = k * std::numbers::pi / 6;
     w.curve(
@@ -551,7 +555,8 @@ bool fig_10_24(SvgWriter& w) {
 // locus::distance(Vec3, BezierCurve3): every critical point of the squared distance).
 bool fig_10_25(SvgWriter& w) {
   w.set_camera(camera({5, -6, 3}, {1.2, 0.5, 0.5}));
-  const BezierCurve<double, 3> curve{{{0, 0, 0}, {0.8, 1.8, 0.6}, {2.0, -0.8, 1.4}, {2.8, 1.2, 0.4}}};
+  const BezierCurve<double, 3> curve{
+      {{0, 0, 0}, {0.8, 1.8, 0.6}, {2.0, -0.8, 1.4}, {2.8, 1.2, 0.4}}};
   std::vector<Vec3d> pts;
   for (int k = 0; k <= 120; ++k) pts.push_back(point_at(curve, k / 120.0));
   w.polyline(pts, pen(c::blue, 2));
@@ -733,8 +738,8 @@ bool fig_10_31(SvgWriter& w) {
 bool fig_10_32(SvgWriter& w) {
   const Line3<double> a{{-1, 0, 0}, {1, 0.2, 0}};
   const Ray<double, 3> b{{1.2, 0.4, 0.8}, {0.1, 1, 0.3}};
-  return pair3(w, a, b, {point_at(a, -0.8), point_at(a, 3.0)}, {b.origin, point_at(b, 2.0)},
-               false, true);
+  return pair3(w, a, b, {point_at(a, -0.8), point_at(a, 3.0)}, {b.origin, point_at(b, 2.0)}, false,
+               true);
 }
 // 10.33: a line and a segment.
 bool fig_10_33(SvgWriter& w) {
@@ -797,8 +802,7 @@ bool fig_10_36(SvgWriter& w) {
     if (!std::isfinite(free.distance) || !std::isfinite(con.distance)) return false;
     const Vec2d off{3.8 * static_cast<double>(k), 0};
     const Vec2d m{free.param_a, free.param_b};
-    closed(w,
-           std::vector<Vec2d>{off, off + Vec2d{1, 0}, off + Vec2d{1, 1}, off + Vec2d{0, 1}},
+    closed(w, std::vector<Vec2d>{off, off + Vec2d{1, 0}, off + Vec2d{1, 1}, off + Vec2d{0, 1}},
            filled(c::blue, 0.12, 2));
     const double q0 = free.sqr_distance, v = con.sqr_distance;
     // Interior minimum (v = q0): a few levels above it instead.
@@ -812,12 +816,13 @@ bool fig_10_36(SvgWriter& w) {
             const double rate = sqr_length(u.x * da - u.y * db);
             return off + m + std::sqrt((level - q0) / rate) * u;
           },
-          0, 2 * std::numbers::pi, 120, f == 1.0 && v - q0 > 1e-9 ? pen(c::red, 1.6) : dashed(c::orange, 1));
+          0, 2 * std::numbers::pi, 120,
+          f == 1.0 && v - q0 > 1e-9 ? pen(c::red, 1.6) : dashed(c::orange, 1));
     }
     point(w, off + m, "", c::gray);
     point(w, off + Vec2d{con.param_a, con.param_b}, "", c::red);
-    caption2(w, off + Vec2d{0, -1.4}, std::string(panel_names[k]) + " " +
-                                          coordinates(con.param_a, con.param_b));
+    caption2(w, off + Vec2d{0, -1.4},
+             std::string(panel_names[k]) + " " + coordinates(con.param_a, con.param_b));
   }
   return true;
 }
@@ -931,10 +936,10 @@ bool fig_10_45(SvgWriter& w) {
   // Place panel (b) to the right of panel (a)'s image (the camera's image-plane coordinates are
   // the drawing's world coordinates).
   double right = -1e300, top = -1e300, bottom = 1e300;
-  for (const Vec3d& p : {tet10.v[0], tet10.v[1], tet10.v[2], tet10.v[3], point_at(l, -1.6),
-                         point_at(l, 2.0), to_world(patch, Vec2d{1.7, 1.7}),
-                         to_world(patch, Vec2d{-1.7, 1.7}), to_world(patch, Vec2d{1.7, -1.7}),
-                         to_world(patch, Vec2d{-1.7, -1.7})}) {
+  for (const Vec3d& p :
+       {tet10.v[0], tet10.v[1], tet10.v[2], tet10.v[3], point_at(l, -1.6), point_at(l, 2.0),
+        to_world(patch, Vec2d{1.7, 1.7}), to_world(patch, Vec2d{-1.7, 1.7}),
+        to_world(patch, Vec2d{1.7, -1.7}), to_world(patch, Vec2d{-1.7, -1.7})}) {
     Vec2d q{};
     if (!w.project(p, q)) return false;
     right = std::max(right, q.x);
@@ -993,8 +998,7 @@ std::vector<Figure> chapter10_distance_figures() {
        fig_10_10},
       {"10.12", "distance(Vec3, Rectangle3)", fig_10_12},
       {"10.14", "distance(Vec3, PlanarPolygon3), planar_polygon", fig_10_14},
-      {"10.15", "distance(Vec3, PlanarPolygon3) (param_b: plane coordinates), to_plane",
-       fig_10_15},
+      {"10.15", "distance(Vec3, PlanarPolygon3) (param_b: plane coordinates), to_plane", fig_10_15},
       {"10.16", "distance(Vec3, Circle3)", fig_10_16},
       {"10.17", "distance(Vec3, Circle3) (unique = false on the axis)", fig_10_17},
       {"10.18", "distance(Vec3, Disk3)", fig_10_18},

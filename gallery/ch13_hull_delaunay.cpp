@@ -114,7 +114,7 @@ void clipped_circle(SvgWriter& w, const Circle2<double>& circ, const Vec2d& lo, 
 // vertical line through each point crosses are found by exact x comparisons and their crossing
 // points by locus::distance(Line2, Segment2).
 bool fig_13_13(SvgWriter& w) {
-  const std::vector<Vec2d> poly{{0, 0},     {3, -0.6}, {5, 0.6},  {5.4, 2.4},
+  const std::vector<Vec2d> poly{{0, 0},     {3, -0.6}, {5, 0.6},   {5.4, 2.4},
                                 {3.6, 3.8}, {1, 3.4},  {-0.6, 1.8}};
   if (!polygon_is_convex(std::span<const Vec2d>(poly))) return false;
   w.polygon(poly, filled(c::gray, 0.12, 1.6));
@@ -140,9 +140,8 @@ bool fig_13_13(SvgWriter& w) {
 
 // The polygon of 13.14, 13.16 and 13.17: notches meet the line y = 2 at a vertex (x = 10), along
 // a horizontal edge (4.5 <= x <= 6.5) and the right side passes through y = 2 at a vertex.
-const std::vector<Vec2d> crossing_polygon{{0, 0},   {14, 0}, {14, 2}, {14.5, 6}, {11, 6},
-                                          {10, 2},  {9, 6},  {7, 6},  {6.5, 2},  {4.5, 2},
-                                          {4, 6},   {0, 6}};
+const std::vector<Vec2d> crossing_polygon{{0, 0}, {14, 0}, {14, 2},  {14.5, 6}, {11, 6}, {10, 2},
+                                          {9, 6}, {7, 6},  {6.5, 2}, {4.5, 2},  {4, 6},  {0, 6}};
 
 // 13.14: crossing number of the ray from P along +x. The crossings are the edges the ray meets
 // (locus::distance(Ray2, Segment2) == 0); the answer is locus::classify(p, Polygon2).
@@ -220,8 +219,9 @@ bool fig_13_16(SvgWriter& w) {
     if (classify_polygon(q, std::span<const Vec2d>(crossing_polygon)) != Side::boundary)
       return false;
     w.point(q, dot(c::orange, 3.5));
-    const std::string tag = std::string(short_side(interval_side(crossing_polygon, y, before, xs[i]))) +
-                            "|" + short_side(interval_side(crossing_polygon, y, xs[i], after));
+    const std::string tag =
+        std::string(short_side(interval_side(crossing_polygon, y, before, xs[i]))) + "|" +
+        short_side(interval_side(crossing_polygon, y, xs[i], after));
     w.text(q, tag, text_style(c::black, 0, i % 2 ? 10 : -20, SvgAnchor::middle, 13));
   }
   point(w, Vec2d{1, y}, "P\u2081", c::orange);
@@ -356,8 +356,8 @@ bool fig_13_18(SvgWriter& w) {
     point(w, k.p, "p", c::black);
     const bool same = sides[0] == sides[1];
     w.text(k.at + Vec3d{0, 0, -1.3},
-           std::string(k.name) + (same ? " faces on one side: parity kept" :
-                                         " faces on both sides: parity toggled"),
+           std::string(k.name) +
+               (same ? " faces on one side: parity kept" : " faces on both sides: parity toggled"),
            text_style(c::black, 0, 0, SvgAnchor::middle, 12));
     w.text(k.at + Vec3d{0, 0, -1.3}, std::string("classify(p) = ") + side_name(s),
            text_style(c::black, 0, -16, SvgAnchor::middle, 12));
@@ -444,7 +444,7 @@ bool fig_13_19(SvgWriter& w) {
 // where locus::distance(Segment2, Segment2) meets an edge, each piece classified at its middle.
 bool fig_13_32(SvgWriter& w) {
   const std::vector<Vec2d> a{{0, 0}, {2.6, -0.3}, {3.4, 1.4}, {2.2, 3}, {0.2, 2.6}, {-0.6, 1.2}};
-  const std::vector<Vec2d> b{{4.6, 0},   {8, 0},   {8, 3},    {6.9, 3},
+  const std::vector<Vec2d> b{{4.6, 0},   {8, 0},     {8, 3},   {6.9, 3},
                              {6.9, 0.9}, {5.7, 0.9}, {5.7, 3}, {4.6, 3}};
   const std::pair<const std::vector<Vec2d>*, std::pair<Vec2d, Vec2d>> sets[] = {
       {&a, {{0.4, 0.6}, {2.4, 2.2}}}, {&b, {{5.1, 2.5}, {7.5, 2.3}}}};
@@ -477,10 +477,9 @@ bool fig_13_32(SvgWriter& w) {
 
 // A fixed scattered point set (the input of the 2D hull figures).
 const std::vector<Vec2d> scatter{
-    {0.2, 1.1},  {1.3, 0.2},  {2.6, 0.5},  {3.8, 0.1},  {4.6, 1.2},  {4.9, 2.6},  {4.1, 3.7},
-    {2.9, 4.2},  {1.4, 3.9},  {0.4, 2.9},  {1.2, 1.4},  {2.1, 1.9},  {3.2, 1.3},  {3.6, 2.6},
-    {2.5, 3.1},  {1.5, 2.7},  {2.9, 2.2},  {1.9, 0.9},  {3.9, 1.8},  {0.9, 2.2},  {2.2, 3.6},
-    {3.4, 3.4},  {4.2, 0.7},  {0.7, 0.6}};
+    {0.2, 1.1}, {1.3, 0.2}, {2.6, 0.5}, {3.8, 0.1}, {4.6, 1.2}, {4.9, 2.6}, {4.1, 3.7}, {2.9, 4.2},
+    {1.4, 3.9}, {0.4, 2.9}, {1.2, 1.4}, {2.1, 1.9}, {3.2, 1.3}, {3.6, 2.6}, {2.5, 3.1}, {1.5, 2.7},
+    {2.9, 2.2}, {1.9, 0.9}, {3.9, 1.8}, {0.9, 2.2}, {2.2, 3.6}, {3.4, 3.4}, {4.2, 0.7}, {0.7, 0.6}};
 
 // 13.33: a point set and its convex hull (locus::convex_hull): hull vertices black.
 bool fig_13_33(SvgWriter& w) {
@@ -498,7 +497,8 @@ std::optional<std::pair<Idx, Idx>> hull_neighbours_of_last(const std::vector<Vec
   const std::vector<Idx> h = hull_indices(pts);
   const Idx last = static_cast<Idx>(pts.size() - 1);
   for (std::size_t i = 0; i < h.size(); ++i)
-    if (h[i] == last) return std::make_pair(h[(i + h.size() - 1) % h.size()], h[(i + 1) % h.size()]);
+    if (h[i] == last)
+      return std::make_pair(h[(i + h.size() - 1) % h.size()], h[(i + 1) % h.size()]);
   return std::nullopt;
 }
 
@@ -547,7 +547,8 @@ bool fig_13_35(SvgWriter& w) {
     } else {
       what = "on the segment";
     }
-    if (s == Sign::zero) w.segment(off + Vec2d{-1.4, -0.7}, off + Vec2d{3.4, 1.7}, dashed(c::light, 1));
+    if (s == Sign::zero)
+      w.segment(off + Vec2d{-1.4, -0.7}, off + Vec2d{3.4, 1.7}, dashed(c::light, 1));
     w.arrow(off + q0, off + q1, pen(c::black, 1.8));
     label(w, off + q0, "Q\u2080", c::black, 4, -16);
     label(w, off + q1, "Q\u2081", c::black, 6, 2);
@@ -559,10 +560,10 @@ bool fig_13_35(SvgWriter& w) {
 }
 
 // Left and right point sets of the divide-and-conquer figures (separated by x = 3.5).
-const std::vector<Vec2d> left_set{{0, 1.2},  {0.8, 0},   {2.2, 0.4}, {3.0, 2.6},
+const std::vector<Vec2d> left_set{{0, 1.2},   {0.8, 0},   {2.2, 0.4}, {3.0, 2.6},
                                   {2.0, 3.4}, {0.6, 3.0}, {1.4, 1.6}, {2.2, 2.0}};
 const std::vector<Vec2d> right_set{{4.0, 3.2}, {4.6, 0.8}, {6.4, -0.4}, {7.6, 1.0},
-                                   {7.2, 3.4}, {5.6, 4.2}, {5.8, 1.8}, {5.0, 2.8}};
+                                   {7.2, 3.4}, {5.6, 4.2}, {5.8, 1.8},  {5.0, 2.8}};
 
 struct Bridges {
   std::pair<Idx, Idx> lower, upper;  // (left index, right index) into left_set / right_set
@@ -608,10 +609,10 @@ bool fig_13_36(SvgWriter& w) {
   draw_two_hulls(w, hl, hr);
   w.segment(left_set[b->upper.first], right_set[b->upper.second], pen(c::red, 2.2));
   w.segment(left_set[b->lower.first], right_set[b->lower.second], pen(c::red, 2.2));
-  label(w, lerp(left_set[b->upper.first], right_set[b->upper.second], 0.5), "upper tangent",
-        c::red, 0, 8);
-  label(w, lerp(left_set[b->lower.first], right_set[b->lower.second], 0.5), "lower tangent",
-        c::red, 0, -18);
+  label(w, lerp(left_set[b->upper.first], right_set[b->upper.second], 0.5), "upper tangent", c::red,
+        0, 8);
+  label(w, lerp(left_set[b->lower.first], right_set[b->lower.second], 0.5), "lower tangent", c::red,
+        0, -18);
   return true;
 }
 
@@ -705,11 +706,12 @@ bool fig_13_38(SvgWriter& w) {
   w.segment(Vec2d{l[hl[li]].x, -1.2}, Vec2d{l[hl[li]].x, 5.0}, dashed(c::light, 1));
   w.text(l[hl[li]], "L₀", text_style(c::blue, -6, -4, SvgAnchor::end));
   w.text(r[hr[ri]], "R₀", text_style(c::green, 6, -4));
-  caption_at(w, Vec2d{-0.2, -1.4}, "L₀ = rightmost of H_L and R₀ = leftmost of H_R on one "
-             "vertical line", c::black, 12);
+  caption_at(w, Vec2d{-0.2, -1.4},
+             "L₀ = rightmost of H_L and R₀ = leftmost of H_R on one "
+             "vertical line",
+             c::black, 12);
   return draw_walk(w, l, hl, r, hr, li, ri);
 }
-
 
 // ---- 3D hulls ----------------------------------------------------------------------------------
 
@@ -718,10 +720,10 @@ bool fig_13_38(SvgWriter& w) {
 // between visible and hidden faces (dashed); the cone from P to it is dotted. Checked: the hull
 // of the points and P has exactly the hidden faces plus one new face per terminator edge.
 bool fig_13_39(SvgWriter& w) {
-  const std::vector<Vec3d> pts{{0, 0, 0},     {2, 0, 0.2},   {2.2, 1.8, 0},   {0.2, 2, 0.1},
-                               {0.1, 0.2, 1.8}, {1.9, 0.1, 2}, {2.1, 2, 1.9},   {0, 1.8, 2.1},
-                               {1, 1, 2.7},   {1, -0.6, 1},  {2.7, 1, 1},     {1, 2.6, 1},
-                               {-0.6, 1, 1},  {1, 1, -0.6}};
+  const std::vector<Vec3d> pts{{0, 0, 0},       {2, 0, 0.2},   {2.2, 1.8, 0}, {0.2, 2, 0.1},
+                               {0.1, 0.2, 1.8}, {1.9, 0.1, 2}, {2.1, 2, 1.9}, {0, 1.8, 2.1},
+                               {1, 1, 2.7},     {1, -0.6, 1},  {2.7, 1, 1},   {1, 2.6, 1},
+                               {-0.6, 1, 1},    {1, 1, -0.6}};
   const Vec3d p{4.4, 2.2, 1.5};
   const Hull3Result h = convex_hull(pts);
   if (h.status != Status::ok || h.dimension != 3) return false;
@@ -759,9 +761,8 @@ bool fig_13_39(SvgWriter& w) {
       rim.insert(a);
       rim.insert(b);
       SvgStyle s = dashed(c::black, 2.2);
-      s.opacity = front_facing(w, pts, h.triangles[i]) || front_facing(w, pts, h.triangles[j])
-                      ? 1.0
-                      : 0.3;
+      s.opacity =
+          front_facing(w, pts, h.triangles[i]) || front_facing(w, pts, h.triangles[j]) ? 1.0 : 0.3;
       w.segment(pts[a], pts[b], s);
     }
   if (merged.triangles.size() != hidden + terminator) return false;
@@ -838,8 +839,9 @@ bool fig_13_40(SvgWriter& w) {
       olds += is_old[f] ? 1 : 0;
       front = front || front_facing(w, all, hu.triangles[f]);
     }
-    SvgStyle s = olds == 2 ? dashed(c::blue, 1.4) : olds == 0 ? dotted_pen(c::red, 1.6)
-                                                             : pen(c::black, 1.6);
+    SvgStyle s = olds == 2   ? dashed(c::blue, 1.4)
+                 : olds == 0 ? dotted_pen(c::red, 1.6)
+                             : pen(c::black, 1.6);
     s.opacity = front ? 1.0 : 0.3;
     w.segment(all[e.first] + off, all[e.second] + off, s);
   }
@@ -915,7 +917,8 @@ bool fig_13_41(SvgWriter& w) {
     point(w, q1, "1", c::blue);
     point(w, qa, "a", c::blue);
     point(w, qb, "b", c::blue);
-    for (std::size_t i = 0; i < v.size(); ++i) label(w, v[i], std::to_string(i + 2), c::black, 4, 4);
+    for (std::size_t i = 0; i < v.size(); ++i)
+      label(w, v[i], std::to_string(i + 2), c::black, 4, 4);
     w.text(apply_point(m, Vec3d{0, 0, 0}) + Vec3d{-3.5, 0, 1.6}, names[k],
            text_style(c::black, 0, 0, SvgAnchor::start, 13));
   }
@@ -937,8 +940,8 @@ void draw_edges(SvgWriter& w, const std::vector<Vec2d>& pts, const Delaunay2Resu
   for (std::size_t e = 0; e < dt.triangles.size(); ++e) {
     const std::int32_t twin = dt.halfedges[e];
     if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;
-    w.segment(off + pts[dt.triangles[e]], off + pts[dt.triangles[next_halfedge(static_cast<Idx>(e))]],
-              s);
+    w.segment(off + pts[dt.triangles[e]],
+              off + pts[dt.triangles[next_halfedge(static_cast<Idx>(e))]], s);
   }
 }
 
@@ -1046,8 +1049,8 @@ bool fig_13_44(SvgWriter& w) {
       draw(w, tri, filled(col, 0.12, 1.5));
       draw(w, *circ, dashed(col, 1.2));
       const Idx fourth = 6 - t[0] - t[1] - t[2];
-      const Sign s = orient2d(tri.v0, tri.v1, tri.v2) * incircle(tri.v0, tri.v1, tri.v2,
-                                                                  off + q->p[fourth]);
+      const Sign s =
+          orient2d(tri.v0, tri.v1, tri.v2) * incircle(tri.v0, tri.v1, tri.v2, off + q->p[fourth]);
       empty = empty && s != Sign::positive;
     }
     caption_at(w, off + Vec2d{-2.2, -4.6},
@@ -1122,8 +1125,8 @@ bool fig_13_46(SvgWriter& w) {
   label(w, centroid(n0), "N\u2080", c::blue, -6, -6);
   label(w, centroid(n1), "N\u2081", c::green, -6, -6);
   std::string verdict;
-  for (const auto& [n, bb, name, far] : {std::tuple{n0, c0, "B\u2080", off + w0},
-                                         std::tuple{n1, c1, "B\u2081", off + w1}}) {
+  for (const auto& [n, bb, name, far] :
+       {std::tuple{n0, c0, "B\u2080", off + w0}, std::tuple{n1, c1, "B\u2081", off + w1}}) {
     const bool swap = incircle(n.v0, n.v1, n.v2, far) == Sign::positive;
     draw(w, bb, filled(swap ? c::red : c::gray, 0.1, 1));
     label(w, centroid(bb), name, c::gray, -6, -6);
@@ -1294,9 +1297,8 @@ bool fig_13_51(SvgWriter& w) {
 // faces (outward normal pointing down) filled; (b) their projection, which must be the same
 // triangle set as locus::delaunay of the points.
 bool fig_13_52(SvgWriter& w) {
-  const std::vector<Vec2d> pts{{-1.2, -1.1}, {0.3, -1.4}, {1.4, -0.9}, {-0.4, -0.3},
-                               {0.9, 0.2},   {-1.5, 0.4}, {0.1, 0.8},  {1.3, 1.2},
-                               {-0.8, 1.4},  {0.6, -0.5}};
+  const std::vector<Vec2d> pts{{-1.2, -1.1}, {0.3, -1.4}, {1.4, -0.9}, {-0.4, -0.3}, {0.9, 0.2},
+                               {-1.5, 0.4},  {0.1, 0.8},  {1.3, 1.2},  {-0.8, 1.4},  {0.6, -0.5}};
   std::vector<Vec3d> lifted;
   for (const Vec2d& p : pts) lifted.push_back({p.x, p.y, p.x * p.x + p.y * p.y});
   const Hull3Result h = convex_hull(lifted);
@@ -1337,8 +1339,8 @@ bool fig_13_52(SvgWriter& w) {
   for (const Vec2d& p : pts) placed.push_back(origin + scale * p);
   for (const Tri& t : lower) w.polygon(pick(placed, t), filled(c::blue, 0.18, 1.2));
   for (const Vec2d& p : placed) w.point(p, dot(c::black, 3));
-  w.text(Vec2d{0.5 * (lo.x + hi.x), lo.y}, "(a) lifted hull", text_style(c::black, 0, -18,
-                                                                         SvgAnchor::middle, 13));
+  w.text(Vec2d{0.5 * (lo.x + hi.x), lo.y}, "(a) lifted hull",
+         text_style(c::black, 0, -18, SvgAnchor::middle, 13));
   w.text(Vec2d{origin.x, lo.y}, "(b) lower faces = Delaunay",
          text_style(c::black, 0, -18, SvgAnchor::middle, 13));
   return true;
@@ -1370,14 +1372,16 @@ Rectangle<double, 2> rect_with_axis(const std::vector<Vec2d>& pts, const Vec2d& 
     lo1 = std::min(lo1, dot(p, v));
     hi1 = std::max(hi1, dot(p, v));
   }
-  return {0.5 * (lo0 + hi0) * u + 0.5 * (lo1 + hi1) * v, {u, v},
+  return {0.5 * (lo0 + hi0) * u + 0.5 * (lo1 + hi1) * v,
+          {u, v},
           {0.5 * (hi0 - lo0), 0.5 * (hi1 - lo1)}};
 }
 
 // 13.79: (a) an enclosing rectangle with no side on a hull edge (axes turned from the optimum);
 // (b) the minimum-area rectangle (locus::min_rect), flush with a hull edge (red).
 bool fig_13_79(SvgWriter& w) {
-  const std::vector<Vec2d> pts{{0, 0}, {2.6, -0.4}, {3.6, 0.9}, {3.0, 2.4}, {1.2, 2.8}, {-0.4, 1.6}};
+  const std::vector<Vec2d> pts{{0, 0},     {2.6, -0.4}, {3.6, 0.9},
+                               {3.0, 2.4}, {1.2, 2.8},  {-0.4, 1.6}};
   const MinRectResult<double> mr = min_rect(std::span<const Vec2d>(pts));
   if (mr.status != Status::ok) return false;
   const double turn = 0.4;
@@ -1414,7 +1418,8 @@ bool fig_13_80(SvgWriter& w) {
   };
   if (!outside(old.circle, p)) return false;
   std::vector<Vec2d> grow{p};
-  for (int i = 0; i < old.support_count; ++i) grow.push_back(pts[old.support[static_cast<std::size_t>(i)]]);
+  for (int i = 0; i < old.support_count; ++i)
+    grow.push_back(pts[old.support[static_cast<std::size_t>(i)]]);
   const MinCircleResult<double> next = min_circle(std::span<const Vec2d>(grow));
   if (next.status != Status::ok) return false;
   const Vec2d off{6, 0};
@@ -1479,13 +1484,14 @@ std::vector<Figure> chapter13_figures() {
   return {
       {"13.13", "classify_convex; distance(Line2, Segment2) for the crossed edges", fig_13_13},
       {"13.14", "classify(Polygon2) (exact crossing number); distance(Ray2, Segment2)", fig_13_14},
-      {"13.16", "classify_polygon of the intervals around each boundary point; distance(Line2, "
-                "Segment2)",
+      {"13.16",
+       "classify_polygon of the intervals around each boundary point; distance(Line2, "
+       "Segment2)",
        fig_13_16},
-      {"13.17", "classify_polygon at each interval's middle; distance(Line2, Segment2)",
-       fig_13_17},
-      {"13.18", "classify(p, vertices, triangles) (simulation of simplicity); orient3d for the "
-                "face sides; distance(Ray3, Segment3)",
+      {"13.17", "classify_polygon at each interval's middle; distance(Line2, Segment2)", fig_13_17},
+      {"13.18",
+       "classify(p, vertices, triangles) (simulation of simplicity); orient3d for the "
+       "face sides; distance(Ray3, Segment3)",
        fig_13_18},
       {"13.19", "convex_hull (3D); classify_convex just past V along each ray", fig_13_19},
       {"13.32", "polygon_is_convex, classify_polygon, distance(Segment2, Segment2)", fig_13_32},
@@ -1494,11 +1500,13 @@ std::vector<Figure> chapter13_figures() {
        fig_13_34},
       {"13.35", "orient2d (exact), dot", fig_13_35},
       {"13.36", "convex_hull of each half and of the union (bridge edges)", fig_13_36},
-      {"13.37", "convex_hull of the halves; tangent walk by exact orient2d, checked against the "
-                "union's hull",
+      {"13.37",
+       "convex_hull of the halves; tangent walk by exact orient2d, checked against the "
+       "union's hull",
        fig_13_37},
-      {"13.38", "convex_hull of the halves; tangent walk by exact orient2d, checked against the "
-                "union's hull",
+      {"13.38",
+       "convex_hull of the halves; tangent walk by exact orient2d, checked against the "
+       "union's hull",
        fig_13_38},
       {"13.39", "convex_hull (3D) of the hull and of hull + P; orient3d face visibility",
        fig_13_39},
@@ -1511,11 +1519,13 @@ std::vector<Figure> chapter13_figures() {
       {"13.45", "delaunay, locate (inside / on_edge)", fig_13_45},
       {"13.46", "incircle (exact), circumscribed_circle", fig_13_46},
       {"13.47", "min_circle (supertriangle around it), classify(Triangle2)", fig_13_47},
-      {"13.48", "delaunay of the supertriangle and the points so far; incircle; "
-                "circumscribed_circle",
+      {"13.48",
+       "delaunay of the supertriangle and the points so far; incircle; "
+       "circumscribed_circle",
        fig_13_48},
-      {"13.49", "delaunay before and after inserting P (the fan at P = the insertion polygon); "
-                "incircle",
+      {"13.49",
+       "delaunay before and after inserting P (the fan at P = the insertion polygon); "
+       "incircle",
        fig_13_49},
       {"13.51", "delaunay of the supertriangle and all points", fig_13_51},
       {"13.52", "convex_hull (3D) of the lifted points, delaunay (same triangles)", fig_13_52},

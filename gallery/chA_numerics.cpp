@@ -91,7 +91,9 @@ struct Plot {
   double x0, x1, y0, y1;  // data window
   double sx = 1, sy = 1;
   Vec2d origin{0, 0};
-  [[nodiscard]] Vec2d at(double x, double y) const { return {origin.x + x * sx, origin.y + y * sy}; }
+  [[nodiscard]] Vec2d at(double x, double y) const {
+    return {origin.x + x * sx, origin.y + y * sy};
+  }
 };
 
 // Axes through the data origin (or along the window's edge when 0 is outside), with ticks every
@@ -279,7 +281,7 @@ bool fig_A_1(SvgWriter& w) {
   const Vec2d spoke{1, 0};  // a radius, so that the rotation of the circle is visible
   const Affine2d id = Affine2d::identity();
   // One row: the circle's images under the given maps, left to right, joined by labelled arrows.
-  const auto row = [&](double y, const Affine2d (&maps)[3], const char* (&names)[2],
+  const auto row = [&](double y, const Affine2d(&maps)[3], const char*(&names)[2],
                        const char* col) {
     double x = 0, prev_right = 0;
     std::vector<Vec2d> centres;
@@ -404,8 +406,14 @@ bool fig_A_4(SvgWriter& w) {
     label(w, label_spot(ls), fmt(lv, 1), c::blue, 4, 2);
   }
   const auto cp = critical_points_2d(
-      a3_f, [](Vec2d x) { return Vec2d{4 * x.x / 3, 2 * x.y}; },
-      [](Vec2d) { return Mat2d::from_rows(Vec2d{4.0 / 3, 0}, Vec2d{0, 2}); }, lo, hi);
+      a3_f,
+      [](Vec2d x) {
+        return Vec2d{4 * x.x / 3, 2 * x.y};
+      },
+      [](Vec2d) {
+        return Mat2d::from_rows(Vec2d{4.0 / 3, 0}, Vec2d{0, 2});
+      },
+      lo, hi);
   if (cp.status != Status::ok || cp.points.size() != 1) return false;
   point(w, cp.points[0].point, kind_name(cp.points[0].kind), kind_colour(cp.points[0].kind));
   label(w, Vec2d{lo.x, hi.y}, "f(x, y) = 2x\u00b2/3 + y\u00b2", c::black, 4, 6);
@@ -418,23 +426,24 @@ bool fig_A_4(SvgWriter& w) {
 // roots of p' and the sign of the first non-vanishing higher derivative there).
 bool fig_A_7(SvgWriter& w) {
   const Polynomial<double> ps[4] = {
-      Polynomial<double>{-0.6, 0, 1},           // (a) x^2 - 0.6
-      Polynomial<double>{0.4, 0.2, -1},         // (b) 0.4 + 0.2x - x^2
-      Polynomial<double>{0, 0, 0, 1},           // (c) x^3
-      Polynomial<double>{0.1, 0, 0, -0.8},      // (d) 0.1 - 0.8 x^3
+      Polynomial<double>{-0.6, 0, 1},       // (a) x^2 - 0.6
+      Polynomial<double>{0.4, 0.2, -1},     // (b) 0.4 + 0.2x - x^2
+      Polynomial<double>{0, 0, 0, 1},       // (c) x^3
+      Polynomial<double>{0.1, 0, 0, -0.8},  // (d) 0.1 - 0.8 x^3
   };
   const char* tag[] = {"(a)", "(b)", "(c)", "(d)"};
   for (int k = 0; k < 4; ++k) {
     const Plot p{-1.2, 1.2, -1.2, 1.2, 1, 1, Vec2d{(k % 2) * 3.2, -(k / 2) * 3.2}};
     plot_axes(w, p, 0, 0);
     const Polynomial<double>& f = ps[k];
-    plot_curve(w, p, [&](double x) { return f(x); }, -1.05, 1.05, pen(c::blue, 2));
+    plot_curve(
+        w, p, [&](double x) { return f(x); }, -1.05, 1.05, pen(c::blue, 2));
     const CriticalPoints1<double> cp = critical_points(f, -1.2, 1.2);
     if (cp.status != Status::ok || cp.points.size() != 1) return false;
     const auto& q = cp.points[0];
     point(w, p.at(q.x, q.value), "", kind_colour(q.kind));
-    label(w, p.at(-1.2, 1.2), std::string(tag[k]) + " " + kind_name(q.kind), kind_colour(q.kind),
-          0, 0);
+    label(w, p.at(-1.2, 1.2), std::string(tag[k]) + " " + kind_name(q.kind), kind_colour(q.kind), 0,
+          0);
   }
   return true;
 }
@@ -448,16 +457,18 @@ bool fig_A_8(SvgWriter& w) {
     const double a = ends[k][0], b = ends[k][1];
     const Plot p{-2, 2.4, -2.4, 4.4, 1, 0.6, Vec2d{k * 5.6, 0}};
     plot_axes(w, p, 1, 2);
-    plot_curve(w, p, [&](double x) { return f(x); }, -2, 2.4, pen(c::light, 1.2));
-    plot_curve(w, p, [&](double x) { return f(x); }, a, b, pen(c::blue, 2.2));
+    plot_curve(
+        w, p, [&](double x) { return f(x); }, -2, 2.4, pen(c::light, 1.2));
+    plot_curve(
+        w, p, [&](double x) { return f(x); }, a, b, pen(c::blue, 2.2));
     for (double e : {a, b}) w.segment(p.at(e, -2.4), p.at(e, 4.2), dashed(c::gray, 1));
     const CriticalPoints1<double> cp = critical_points(f, a, b);
     if (cp.status != Status::ok) return false;
     for (const auto& q : cp.points) w.point(p.at(q.x, q.value), dot(kind_colour(q.kind), 3));
     point(w, p.at(cp.max_x, cp.max_value), "max " + fmt(cp.max_value), c::red);
     w.text(p.at(0.2, -2.4),
-           "[" + fmt(a, 1) + ", " + fmt(b, 1) + "]: " +
-               (cp.max_x == b || cp.max_x == a ? "maximum at an end" : "maximum inside"),
+           "[" + fmt(a, 1) + ", " + fmt(b, 1) +
+               "]: " + (cp.max_x == b || cp.max_x == a ? "maximum at an end" : "maximum inside"),
            text_style(c::black, 0, -22, SvgAnchor::middle, 13));
   }
   return true;
@@ -476,7 +487,8 @@ bool fig_A_9(SvgWriter& w) {
   if (cp.status != Status::ok || cp.points.size() != 2) return false;
   const Plot p{a - 0.5, b + 0.8, -60, 100, 1, 0.055};
   plot_axes(w, p, 2, 20);
-  plot_curve(w, p, [&](double x) { return f(x); }, a, b, pen(c::blue, 2.2));
+  plot_curve(
+      w, p, [&](double x) { return f(x); }, a, b, pen(c::blue, 2.2));
   for (const auto& q : cp.points)
     point(w, p.at(q.x, q.value),
           std::string("relative ") + kind_name(q.kind) + " " + coordinates(q.x, q.value),
@@ -497,7 +509,8 @@ bool fig_A_10(SvgWriter& w) {
   if (r.status != Status::ok || r.roots.size() != 2) return false;
   const Plot p{a - 0.5, b + 0.8, -25, 95, 1, 0.075};
   plot_axes(w, p, 2, 20);
-  plot_curve(w, p, [&](double x) { return df(x); }, a, b, pen(c::green, 2.2));
+  plot_curve(
+      w, p, [&](double x) { return df(x); }, a, b, pen(c::green, 2.2));
   for (const auto& rt : r.roots) point(w, p.at(rt.value, 0), "", c::red);
   label(w, p.at(-6.2, 80), "f'(x) = 3x\u00b2 + 12x - 7", c::green, 0, 0);
   label(w, p.at(-6.2, 68),
@@ -515,7 +528,8 @@ bool fig_A_11(SvgWriter& w) {
   if (cp.status != Status::ok || cp.points.size() != 4) return false;
   const Plot p{a - 0.2, b + 0.3, -4, 5, 1, 0.5};
   plot_axes(w, p, 1, 2);
-  plot_curve(w, p, [&](double x) { return f(x); }, a, b, pen(c::blue, 2.2));
+  plot_curve(
+      w, p, [&](double x) { return f(x); }, a, b, pen(c::blue, 2.2));
   for (const auto& q : cp.points) {
     const bool up = q.kind == CriticalKind::maximum;
     w.point(p.at(q.x, q.value), dot(kind_colour(q.kind), 4));
@@ -547,9 +561,10 @@ bool fig_A_12(SvgWriter& w) {
   plot_axes(w, p, 1, 5);
   plot_curve(w, p, f, a, b, pen(c::blue, 2.2), 400);
   for (const auto& q : cp.points)
-    point(w, p.at(q.x, q.value),
-          std::string("relative ") + kind_name(q.kind) + " (" + fmt(q.x) + ", " + fmt(q.value) + ")",
-          kind_colour(q.kind));
+    point(
+        w, p.at(q.x, q.value),
+        std::string("relative ") + kind_name(q.kind) + " (" + fmt(q.x) + ", " + fmt(q.value) + ")",
+        kind_colour(q.kind));
   label(w, p.at(2.2, 9), "f(x) = 3x^(5/3) - 15x^(2/3)", c::blue, 0, 0);
   return true;
 }
@@ -770,7 +785,8 @@ bool fig_A_21(SvgWriter& w) {
   if (!draw_level(w, gc, fmin, pen(c::red, 1.6))) return false;
   if (!draw_level(w, gc, fmax, pen(c::orange, 1.2))) return false;
   if (!draw_level(w, ge, 100, pen(c::blue, 2.2))) return false;
-  const Vec2d emin{eig.vectors(0, 1), eig.vectors(1, 1)}, emax{eig.vectors(0, 0), eig.vectors(1, 0)};
+  const Vec2d emin{eig.vectors(0, 1), eig.vectors(1, 1)},
+      emax{eig.vectors(0, 0), eig.vectors(1, 0)};
   for (double s : {-1.0, 1.0}) {
     w.point(s * std::sqrt(fmin) * emin, dot(c::red, 4.5));
     w.point(s * std::sqrt(fmax) * emax, dot(c::orange, 4.5));
@@ -782,7 +798,8 @@ bool fig_A_21(SvgWriter& w) {
 }
 
 // A sphere as a wireframe of latitude and longitude circles (locus::point_at(Sphere3)).
-void sphere_wireframe(SvgWriter& w, const Sphere3<double>& s, int lat, int lon, const SvgStyle& st) {
+void sphere_wireframe(SvgWriter& w, const Sphere3<double>& s, int lat, int lon,
+                      const SvgStyle& st) {
   for (int i = 1; i < lat; ++i) {
     std::vector<Vec3d> ring;
     for (int k = 0; k < 72; ++k)
@@ -802,10 +819,10 @@ void sphere_wireframe(SvgWriter& w, const Sphere3<double>& s, int lat, int lon, 
 bool fig_A_22(SvgWriter& w) {
   const Vec3d p{1, 2, 2};
   const Sphere3<double> s{{0, 0, 0}, 6};
-  const auto lo = minimize_quadratic_on_sphere(Mat3d::identity(), -2.0 * p, sqr_length(p), s.center,
-                                               s.radius);
-  const auto hi = maximize_quadratic_on_sphere(Mat3d::identity(), -2.0 * p, sqr_length(p),
-                                               s.center, s.radius);
+  const auto lo =
+      minimize_quadratic_on_sphere(Mat3d::identity(), -2.0 * p, sqr_length(p), s.center, s.radius);
+  const auto hi =
+      maximize_quadratic_on_sphere(Mat3d::identity(), -2.0 * p, sqr_length(p), s.center, s.radius);
   if (lo.status != Status::ok || hi.status != Status::ok) return false;
   // Looking across the line through the origin and p, on which both answers lie.
   w.set_camera(camera({20, -10, 6}, {0, 0, 0}));
@@ -850,7 +867,8 @@ bool draw_constraints(SvgWriter& w, const TwoConstraints& k, std::vector<Vec3d>&
   }
   for (double z : {-h, h}) {
     std::vector<Vec3d> ring;
-    for (int i = 0; i < 72; ++i) ring.push_back(point_at(k.cyl, Vec2d{2 * pi_v<double> * i / 72, z}));
+    for (int i = 0; i < 72; ++i)
+      ring.push_back(point_at(k.cyl, Vec2d{2 * pi_v<double> * i / 72, z}));
     closed(w, ring, pen(c::gray, 1));
   }
   // The plane over [-1.3, 1.3]^2.
@@ -896,10 +914,12 @@ bool fig_A_23(SvgWriter& w) {
 // f there are spheres about the origin, drawn through the extrema.
 bool fig_A_24(SvgWriter& w) {
   const TwoConstraints k;
-  const auto t = k.on_plane(Vec2d{0, 0}), ex = k.on_plane(Vec2d{1, 0}), ey = k.on_plane(Vec2d{0, 1});
+  const auto t = k.on_plane(Vec2d{0, 0}), ex = k.on_plane(Vec2d{1, 0}),
+             ey = k.on_plane(Vec2d{0, 1});
   if (!t || !ex || !ey) return false;
   const Vec3d m0 = *ex - *t, m1 = *ey - *t;  // the columns of M
-  const Mat2d a = Mat2d::from_rows(Vec2d{dot(m0, m0), dot(m0, m1)}, Vec2d{dot(m1, m0), dot(m1, m1)});
+  const Mat2d a =
+      Mat2d::from_rows(Vec2d{dot(m0, m0), dot(m0, m1)}, Vec2d{dot(m1, m0), dot(m1, m1)});
   const Vec2d b{2 * dot(*t, m0), 2 * dot(*t, m1)};
   const double c0 = sqr_length(*t);
   const auto lo = minimize_quadratic_on_sphere(a, b, c0, Vec2d{0, 0}, k.cyl.radius);
@@ -983,11 +1003,13 @@ std::vector<Figure> appendix_a_figures() {
        fig_A_21},
       {"A.22", "minimize_quadratic_on_sphere, maximize_quadratic_on_sphere, Sphere3 point_at",
        fig_A_22},
-      {"A.23", "Cylinder3 point_at, oblique_projection (the plane over the cylinder), "
-               "apply_projective",
+      {"A.23",
+       "Cylinder3 point_at, oblique_projection (the plane over the cylinder), "
+       "apply_projective",
        fig_A_23},
-      {"A.24", "minimize/maximize_quadratic_on_sphere after eliminating z, eigen_symmetric "
-               "(second minimiser), oblique_projection",
+      {"A.24",
+       "minimize/maximize_quadratic_on_sphere after eliminating z, eigen_symmetric "
+       "(second minimiser), oblique_projection",
        fig_A_24},
   };
 }

@@ -60,8 +60,8 @@ std::pair<int, int> figure_order(std::string_view id) {
     return v;
   };
   const std::string_view head = id.substr(0, dot);
-  const int chapter = head.size() == 1 && head[0] >= 'A' && head[0] <= 'Z' ? 100 + (head[0] - 'A')
-                                                                           : number(head);
+  const int chapter =
+      head.size() == 1 && head[0] >= 'A' && head[0] <= 'Z' ? 100 + (head[0] - 'A') : number(head);
   const int figure = number(id.substr(dot + 1));
   if (chapter < 0 || figure < 0) return {-1, -1};
   return {chapter, figure};
@@ -119,8 +119,8 @@ std::string coverage_sentence(const std::vector<Figure>& figures) {
     if (!line.empty() && line[0] != '#') book_ids.push_back(line.substr(0, line.find('\t')));
   }
   std::sort(book_ids.begin(), book_ids.end());
-  const auto book_total = static_cast<std::size_t>(
-      std::unique(book_ids.begin(), book_ids.end()) - book_ids.begin());
+  const auto book_total =
+      static_cast<std::size_t>(std::unique(book_ids.begin(), book_ids.end()) - book_ids.begin());
   std::vector<int> chapters;
   for (const Figure& f : figures) {
     const int c = figure_order(f.id).first;

@@ -94,10 +94,12 @@ double brute_distance(const Poly& a, const Poly& b) {
   double best = std::numeric_limits<double>::infinity();
   for (const auto& t : b.tris)
     for (const auto& p : a.v)
-      best = std::min(best, locus::distance(p, locus::Triangle3d{b.v[t[0]], b.v[t[1]], b.v[t[2]]}).distance);
+      best = std::min(
+          best, locus::distance(p, locus::Triangle3d{b.v[t[0]], b.v[t[1]], b.v[t[2]]}).distance);
   for (const auto& t : a.tris)
     for (const auto& p : b.v)
-      best = std::min(best, locus::distance(p, locus::Triangle3d{a.v[t[0]], a.v[t[1]], a.v[t[2]]}).distance);
+      best = std::min(
+          best, locus::distance(p, locus::Triangle3d{a.v[t[0]], a.v[t[1]], a.v[t[2]]}).distance);
   for (const auto& ta : a.tris)
     for (int i = 0; i < 3; ++i)
       for (const auto& tb : b.tris)
@@ -115,7 +117,8 @@ double brute_depth(const Poly& a, const Poly& b) {
   const locus::Hull3Result h = locus::convex_hull(d);
   double best = std::numeric_limits<double>::infinity();
   for (const auto& t : h.triangles) {
-    const locus::Vec3d n = locus::normalize(locus::normal(locus::Triangle3d{d[t[0]], d[t[1]], d[t[2]]}));
+    const locus::Vec3d n =
+        locus::normalize(locus::normal(locus::Triangle3d{d[t[0]], d[t[1]], d[t[2]]}));
     best = std::min(best, locus::dot(n, d[t[0]]));
   }
   return best;  // < 0 would mean the origin is outside (not an intersecting pair)
@@ -195,7 +198,8 @@ locus::Mat3d rotation_between(const locus::Vec3d& u, const locus::Vec3d& v) {
   if (s < 1e-12) {
     if (c > 0) return locus::Mat3d::identity();
     const locus::Vec3d o = std::fabs(u.x) < 0.9 ? locus::Vec3d{1, 0, 0} : locus::Vec3d{0, 1, 0};
-    return locus::to_matrix(locus::AxisAngle<double>{locus::normalize(locus::cross(u, o)), std::acos(-1.0)});
+    return locus::to_matrix(
+        locus::AxisAngle<double>{locus::normalize(locus::cross(u, o)), std::acos(-1.0)});
   }
   return locus::to_matrix(locus::AxisAngle<double>{axis / s, std::atan2(s, c)});
 }
@@ -214,7 +218,8 @@ const PairSet& parallel_pairs() {
       const auto [nb, cb] = largest_face(b);
       const double tilt = u(rng) < 0.25 ? 0.0 : std::pow(10.0, -7.0 - 5.0 * u(rng));
       const double gap = std::pow(10.0, -1.0 - 3.0 * u(rng));
-      const locus::Vec3d side = locus::normalize(locus::cross(na, locus::Vec3d{g(rng), g(rng), g(rng)}));
+      const locus::Vec3d side =
+          locus::normalize(locus::cross(na, locus::Vec3d{g(rng), g(rng), g(rng)}));
       const locus::Mat3d rot = locus::to_matrix(locus::AxisAngle<double>{side, tilt}) *
                                locus::to_matrix(locus::AxisAngle<double>{na, 6.3 * u(rng)}) *
                                rotation_between(nb, -na);
@@ -250,8 +255,8 @@ void distance_accuracy(benchmark::State& state, const char* name, F&& distance_o
   state.counters["parallel_err"] = set_error(parallel_pairs(), distance_of);
   static std::set<std::string> printed;
   if (printed.insert(name).second)
-    std::fprintf(stderr, "%-34s max abs error: generic %.3g  near contact %.3g  face-face %.3g\n", name,
-                 state.counters["max_err"].value, state.counters["near_contact_err"].value,
+    std::fprintf(stderr, "%-34s max abs error: generic %.3g  near contact %.3g  face-face %.3g\n",
+                 name, state.counters["max_err"].value, state.counters["near_contact_err"].value,
                  state.counters["parallel_err"].value);
 }
 
@@ -272,11 +277,14 @@ void report(benchmark::State& state, const char* name, double max_err) {
 void BM_Gjk_Distance_locus(benchmark::State& state) {
   const PairSet& s = pairs(true);
   distance_accuracy(state, "distance locus", [](const PairSet& c, std::size_t k) {
-    return locus::gjk_distance(locus::ConvexPoints<double, 3>{c.a[k].v}, locus::ConvexPoints<double, 3>{c.b[k].v}).distance;
+    return locus::gjk_distance(locus::ConvexPoints<double, 3>{c.a[k].v},
+                               locus::ConvexPoints<double, 3>{c.b[k].v})
+        .distance;
   });
   std::size_t i = 0;
   for (auto _ : state) {
-    const auto r = locus::gjk_distance(locus::ConvexPoints<double, 3>{s.a[i].v}, locus::ConvexPoints<double, 3>{s.b[i].v});
+    const auto r = locus::gjk_distance(locus::ConvexPoints<double, 3>{s.a[i].v},
+                                       locus::ConvexPoints<double, 3>{s.b[i].v});
     benchmark::DoNotOptimize(r.distance);
     i = (i + 1) % kPairs;
   }
@@ -288,12 +296,14 @@ void BM_Gjk_Penetration_locus(benchmark::State& state) {
   const PairSet& s = pairs(false);
   double max_err = 0;
   for (std::size_t i = 0; i < kPairs; ++i) {
-    const auto r = locus::penetration(locus::ConvexPoints<double, 3>{s.a[i].v}, locus::ConvexPoints<double, 3>{s.b[i].v});
+    const auto r = locus::penetration(locus::ConvexPoints<double, 3>{s.a[i].v},
+                                      locus::ConvexPoints<double, 3>{s.b[i].v});
     max_err = std::max(max_err, std::fabs(r.depth - s.exact[i]));
   }
   std::size_t i = 0;
   for (auto _ : state) {
-    const auto r = locus::penetration(locus::ConvexPoints<double, 3>{s.a[i].v}, locus::ConvexPoints<double, 3>{s.b[i].v});
+    const auto r = locus::penetration(locus::ConvexPoints<double, 3>{s.a[i].v},
+                                      locus::ConvexPoints<double, 3>{s.b[i].v});
     benchmark::DoNotOptimize(r.depth);
     i = (i + 1) % kPairs;
   }
@@ -360,8 +370,12 @@ void BM_Gjk_Penetration_libccd(benchmark::State& state) {
   }
   report(state, Mpr ? "penetration libccd MPR" : "penetration libccd GJK+EPA", max_err);
 }
-void BM_Gjk_Penetration_libccd_GJK_EPA(benchmark::State& state) { BM_Gjk_Penetration_libccd<false>(state); }
-void BM_Gjk_Penetration_libccd_MPR(benchmark::State& state) { BM_Gjk_Penetration_libccd<true>(state); }
+void BM_Gjk_Penetration_libccd_GJK_EPA(benchmark::State& state) {
+  BM_Gjk_Penetration_libccd<false>(state);
+}
+void BM_Gjk_Penetration_libccd_MPR(benchmark::State& state) {
+  BM_Gjk_Penetration_libccd<true>(state);
+}
 BENCHMARK(BM_Gjk_Penetration_libccd_GJK_EPA);
 BENCHMARK(BM_Gjk_Penetration_libccd_MPR);
 #endif
@@ -420,7 +434,8 @@ void BM_Gjk_Distance_fcl(benchmark::State& state, const char* name) {
   report_time(state);
 }
 void BM_Gjk_Distance_fcl_libccd(benchmark::State& state) {
-  BM_Gjk_Distance_fcl<fcl::detail::GJKSolver_libccd<double>>(state, "distance FCL GJKSolver_libccd");
+  BM_Gjk_Distance_fcl<fcl::detail::GJKSolver_libccd<double>>(state,
+                                                             "distance FCL GJKSolver_libccd");
 }
 void BM_Gjk_Distance_fcl_indep(benchmark::State& state) {
   BM_Gjk_Distance_fcl<fcl::detail::GJKSolver_indep<double>>(state, "distance FCL GJKSolver_indep");
@@ -454,10 +469,12 @@ void BM_Gjk_Penetration_fcl(benchmark::State& state, const char* name) {
   report(state, name, max_err);
 }
 void BM_Gjk_Penetration_fcl_libccd(benchmark::State& state) {
-  BM_Gjk_Penetration_fcl<fcl::detail::GJKSolver_libccd<double>>(state, "penetration FCL GJKSolver_libccd");
+  BM_Gjk_Penetration_fcl<fcl::detail::GJKSolver_libccd<double>>(state,
+                                                                "penetration FCL GJKSolver_libccd");
 }
 void BM_Gjk_Penetration_fcl_indep(benchmark::State& state) {
-  BM_Gjk_Penetration_fcl<fcl::detail::GJKSolver_indep<double>>(state, "penetration FCL GJKSolver_indep");
+  BM_Gjk_Penetration_fcl<fcl::detail::GJKSolver_indep<double>>(state,
+                                                               "penetration FCL GJKSolver_indep");
 }
 BENCHMARK(BM_Gjk_Penetration_fcl_libccd);
 BENCHMARK(BM_Gjk_Penetration_fcl_indep);

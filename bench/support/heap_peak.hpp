@@ -39,7 +39,9 @@ class HeapPeak {
  public:
   HeapPeak() noexcept;
   [[nodiscard]] std::int64_t bytes() const noexcept;
-  [[nodiscard]] double mb() const noexcept { return static_cast<double>(bytes()) / (1024.0 * 1024.0); }
+  [[nodiscard]] double mb() const noexcept {
+    return static_cast<double>(bytes()) / (1024.0 * 1024.0);
+  }
 
  private:
   std::int64_t base_;

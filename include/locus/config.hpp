@@ -28,6 +28,23 @@
 #define LOCUS_ALWAYS_INLINE
 #endif
 
+// LOCUS_ALWAYS_INLINE_LAMBDA: the same for a lambda (placed after its parameter list).
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCUS_ALWAYS_INLINE_LAMBDA __attribute__((always_inline))
+#else
+#define LOCUS_ALWAYS_INLINE_LAMBDA
+#endif
+
+// LOCUS_NOINLINE: keeps a function out of line, for a slow path that would otherwise bloat its
+// callers, or a function whose address or frame must stay distinct.
+#if defined(__GNUC__) || defined(__clang__)
+#define LOCUS_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define LOCUS_NOINLINE __declspec(noinline)
+#else
+#define LOCUS_NOINLINE
+#endif
+
 // LOCUS_FLATTEN: every call in the function's body is inlined (recursively), for a function that
 // calls a general routine with arguments that make most of its branches constant (the compiler
 // can only fold them in an inlined copy).

@@ -394,7 +394,7 @@ void refine(const Evaluator& ev, const Mesh& m, Frame& best, std::uint64_t& work
 }
 
 // The box of a frame of the vertices scaled by `scale` (a power of two), scaled back.
-template <class T>
+template <Real T>
 OrientedBox<T, 3> to_box(const Frame& f, const V3& ref, double scale) {
   OrientedBox<T, 3> b;
   b.center = vec_cast<T>(ref + f.center / scale);

@@ -8,10 +8,8 @@
 namespace locus {
 namespace {
 
-void default_handler(const char* condition, const char* message, const char* file,
-                     int line) {
-  std::fprintf(stderr, "%s:%d: locus assertion failed: %s (%s)\n", file, line, condition,
-               message);
+void default_handler(const char* condition, const char* message, const char* file, int line) {
+  std::fprintf(stderr, "%s:%d: locus assertion failed: %s (%s)\n", file, line, condition, message);
 }
 
 std::atomic<AssertHandler> g_handler{nullptr};

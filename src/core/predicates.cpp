@@ -35,6 +35,7 @@
 #pragma STDC FP_CONTRACT OFF
 #endif
 
+#include <locus/config.hpp>
 #include <locus/core/predicates.hpp>
 
 #include "expansion.hpp"
@@ -42,14 +43,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-
-#if defined(__GNUC__) || defined(__clang__)
-#define LOCUS_NOINLINE __attribute__((noinline))
-#elif defined(_MSC_VER)
-#define LOCUS_NOINLINE __declspec(noinline)
-#else
-#define LOCUS_NOINLINE
-#endif
 
 namespace locus::detail {
 namespace {

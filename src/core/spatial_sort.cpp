@@ -41,7 +41,7 @@ constexpr std::array<std::uint8_t, 64> hilbert_table2 = [] {
 }();
 
 // Maps v in [lo, hi] to 0 .. 65535 without overflow for any finite lo <= v <= hi.
-template <class T>
+template <Real T>
 [[nodiscard]] std::uint32_t quantize16(T v, T lo, T hi) noexcept {
   const double half_span = 0.5 * double(hi) - 0.5 * double(lo);
   if (!(half_span > 0.0)) return 0;

@@ -8,6 +8,7 @@
 // always defined (the surface has no boundary), which removes every hull special case from the
 // split and flip code.
 
+#include <locus/config.hpp>
 #include <locus/delaunay/delaunay2.hpp>
 
 #include <locus/core/detail/spatial_sort.hpp>
@@ -34,22 +35,16 @@ constexpr std::uint32_t kNone = 0xFFFFFFFFu;
   return e % 3 == 0 ? e + 2 : e - 1;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] bool same_point(const Vec2<T>& a, const Vec2<T>& b) noexcept {
   return a.x == b.x && a.y == b.y;
 }
 
 // p strictly inside the segment ab, given that a, b, p are collinear and a != b.
-template <class T>
+template <Real T>
 [[nodiscard]] bool strictly_between(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) noexcept {
   return to_int(lexicographic_compare(a, p)) * to_int(lexicographic_compare(p, b)) > 0;
 }
-
-#if defined(__GNUC__) || defined(__clang__)
-#define LOCUS_D2_INLINE [[gnu::always_inline]] inline
-#else
-#define LOCUS_D2_INLINE inline
-#endif
 
 // The general case of Delaunay2::set_triangle: a ghost vertex at corner 0 or 1 is rotated to
 // corner 2.
@@ -172,10 +167,9 @@ const Delaunay2Result& Delaunay2<T>::compute(const T* xy, std::size_t n) {
 }
 
 template <Real T>
-LOCUS_D2_INLINE void Delaunay2<T>::set_triangle(std::uint32_t t, std::uint32_t a, std::uint32_t b,
-                                                std::uint32_t c, std::uint32_t opp_ab,
-                                                std::uint32_t opp_bc, std::uint32_t opp_ca,
-                                                std::uint32_t* out) noexcept {
+LOCUS_ALWAYS_INLINE inline void Delaunay2<T>::set_triangle(
+    std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t opp_ab,
+    std::uint32_t opp_bc, std::uint32_t opp_ca, std::uint32_t* out) noexcept {
   const std::uint32_t base = 3 * t;
   if (a != kGhost && b != kGhost) [[likely]] {
     tri_[base] = a;

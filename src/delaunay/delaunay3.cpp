@@ -7,6 +7,7 @@
 // is one load and the adjacency has no boundary: the cavity code has no hull special case.
 // neighbors[i] holds 4 * cell + face (the face index of this face in the neighbouring cell).
 
+#include <locus/config.hpp>
 #include <locus/delaunay/delaunay3.hpp>
 
 #include <locus/core/detail/spatial_sort.hpp>
@@ -31,21 +32,13 @@ constexpr std::size_t kMaxPoints = std::size_t(1) << 26;  // 4 * cells + 3 fits 
 
 constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
 
-#if defined(__GNUC__) || defined(__clang__)
-#define LOCUS_D3_INLINE [[gnu::always_inline]] inline
-#define LOCUS_D3_NOINLINE [[gnu::noinline]]
-#else
-#define LOCUS_D3_INLINE inline
-#define LOCUS_D3_NOINLINE
-#endif
-
-template <class T>
+template <Real T>
 [[nodiscard]] bool same_point(const Vec3<T>& a, const Vec3<T>& b) noexcept {
   return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
 // a, b, c on one line (exactly): every coordinate projection is degenerate.
-template <class T>
+template <Real T>
 [[nodiscard]] bool collinear(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) noexcept {
   return orient2d(Vec2<T>{a.x, a.y}, Vec2<T>{b.x, b.y}, Vec2<T>{c.x, c.y}) == Sign::zero &&
          orient2d(Vec2<T>{a.y, a.z}, Vec2<T>{b.y, b.z}, Vec2<T>{c.y, c.z}) == Sign::zero &&
@@ -56,13 +49,13 @@ template <class T>
 // first axis not parallel to the plane of a, b, c (non-collinear) changed, so it is off the
 // plane exactly. The faces opposite the apex are oriented toward it; `flip` says to reverse
 // them so that their normals have a positive component along that axis.
-template <class T>
+template <Real T>
 struct PlanarApex {
   Vec3<T> point;
   bool flip;
 };
 
-template <class T>
+template <Real T>
 [[nodiscard]] PlanarApex<T> planar_apex(const Vec3<T>& a, const Vec3<T>& b,
                                         const Vec3<T>& c) noexcept {
   int axis = 2;  // the normal's x component is the orientation of the (y, z) projection, ...
@@ -83,7 +76,7 @@ template <class T>
 // cofactor decides.
 // order[] = 0 .. 4 sorted so that p[order[0]] is the lexicographically largest (insertion
 // sort: five points).
-template <class T>
+template <Real T>
 void lexicographic_descending(const Vec3<T>* const p[5], int order[5]) noexcept {
   for (int i = 0; i < 5; ++i) order[i] = i;
   for (int i = 1; i < 5; ++i) {
@@ -97,9 +90,9 @@ void lexicographic_descending(const Vec3<T>* const p[5], int order[5]) noexcept 
   }
 }
 
-template <class T>
-LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
-                                           const Vec3<T>& d, const Vec3<T>& e) noexcept {
+template <Real T>
+LOCUS_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
+                                        const Vec3<T>& d, const Vec3<T>& e) noexcept {
   const Vec3<T>* const p[5] = {&a, &b, &c, &d, &e};
   int order[5];
   lexicographic_descending(p, order);
@@ -132,10 +125,9 @@ LOCUS_D3_NOINLINE Sign perturbed_zero_case(const Vec3<T>& a, const Vec3<T>& b, c
 // orient3d(a, b, c, d) = minor[0] - minor[1] + minor[2] - minor[3] (row operations), all exact
 // in double on the insphere lattice (below 4 * 6 * 2^27 q^3). The lexicographically largest
 // point with a nonzero cofactor decides.
-LOCUS_D3_NOINLINE Sign perturbed_from_minors(const Vec3<double>& a, const Vec3<double>& b,
-                                             const Vec3<double>& c, const Vec3<double>& d,
-                                             const Vec3<double>& e,
-                                             const double minor[4]) noexcept {
+LOCUS_NOINLINE Sign perturbed_from_minors(const Vec3<double>& a, const Vec3<double>& b,
+                                          const Vec3<double>& c, const Vec3<double>& d,
+                                          const Vec3<double>& e, const double minor[4]) noexcept {
   const double cofactor[5] = {minor[0], -minor[1], minor[2], -minor[3],
                               -((minor[0] - minor[1]) + (minor[2] - minor[3]))};
   const Vec3<double>* const pts[5] = {&a, &b, &c, &d, &e};
@@ -149,9 +141,9 @@ LOCUS_D3_NOINLINE Sign perturbed_from_minors(const Vec3<double>& a, const Vec3<d
 // After the semi-static filter failed: the insphere lattice shortcut of core (exact terms, and
 // an exact zero perturbed from their minors), else core's full stage A and adaptive stages, and
 // perturbed_zero_case for an exact zero.
-LOCUS_D3_NOINLINE Sign insphere_perturbed_slow(const Vec3<double>& a, const Vec3<double>& b,
-                                               const Vec3<double>& c, const Vec3<double>& d,
-                                               const Vec3<double>& e) noexcept {
+LOCUS_NOINLINE Sign insphere_perturbed_slow(const Vec3<double>& a, const Vec3<double>& b,
+                                            const Vec3<double>& c, const Vec3<double>& d,
+                                            const Vec3<double>& e) noexcept {
   if (const std::optional<detail::InsphereTerms> t = detail::insphere_lattice(a, b, c, d, e)) {
     if (t->det != 0.0) return -detail::nonzero_sign(t->det);
     return perturbed_from_minors(a, b, c, d, e, t->minor);
@@ -166,10 +158,10 @@ LOCUS_D3_NOINLINE Sign insphere_perturbed_slow(const Vec3<double>& a, const Vec3
 // The perturbed insphere (float input is promoted exactly; the perturbation only compares and
 // takes orientations, so deciding it on the doubles is the same): core's semi-static filter
 // (the cavity's cells have similar spreads in BRIO order), then the slow path.
-template <class T>
-LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& pa, const Vec3<T>& pb,
-                                               const Vec3<T>& pc, const Vec3<T>& pd,
-                                               const Vec3<T>& pe) noexcept {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline Sign insphere_perturbed_inline(const Vec3<T>& pa, const Vec3<T>& pb,
+                                                          const Vec3<T>& pc, const Vec3<T>& pd,
+                                                          const Vec3<T>& pe) noexcept {
   const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
                      c = detail::to_double(pc), d = detail::to_double(pd),
                      e = detail::to_double(pe);
@@ -183,10 +175,10 @@ LOCUS_D3_INLINE Sign insphere_perturbed_inline(const Vec3<T>& pa, const Vec3<T>&
 // Every point on core's insphere lattice (detail::points_on_insphere_lattice: integer grids,
 // voxels): the double evaluation of the determinants is exact, so no filter is needed, and an
 // exact zero is perturbed from the same minors.
-template <class T>
-LOCUS_D3_INLINE Sign insphere_perturbed_lattice(const Vec3<T>& pa, const Vec3<T>& pb,
-                                                const Vec3<T>& pc, const Vec3<T>& pd,
-                                                const Vec3<T>& pe) noexcept {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline Sign insphere_perturbed_lattice(const Vec3<T>& pa, const Vec3<T>& pb,
+                                                           const Vec3<T>& pc, const Vec3<T>& pd,
+                                                           const Vec3<T>& pe) noexcept {
   const Vec3<double> a = detail::to_double(pa), b = detail::to_double(pb),
                      c = detail::to_double(pc), d = detail::to_double(pd),
                      e = detail::to_double(pe);
@@ -197,9 +189,9 @@ LOCUS_D3_INLINE Sign insphere_perturbed_lattice(const Vec3<T>& pa, const Vec3<T>
 }
 
 // orient3d on the insphere lattice: the double determinant is exact.
-template <class T>
-LOCUS_D3_INLINE Sign orient3d_on_lattice(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc,
-                                         const Vec3<T>& pd) noexcept {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline Sign orient3d_on_lattice(const Vec3<T>& pa, const Vec3<T>& pb,
+                                                    const Vec3<T>& pc, const Vec3<T>& pd) noexcept {
   return sign_of(detail::orient3d_stage_a(detail::to_double(pa), detail::to_double(pb),
                                           detail::to_double(pc), detail::to_double(pd))
                      .det);
@@ -326,8 +318,8 @@ void Delaunay3<T>::edges_begin(std::size_t entries) {
 }
 
 template <Real T>
-LOCUS_D3_INLINE std::uint32_t Delaunay3<T>::edge_match(std::uint32_t u, std::uint32_t v,
-                                                       std::uint32_t code) noexcept {
+LOCUS_ALWAYS_INLINE inline std::uint32_t Delaunay3<T>::edge_match(std::uint32_t u, std::uint32_t v,
+                                                                  std::uint32_t code) noexcept {
   const std::uint32_t mask = (1u << edge_bits_) - 1u;
   std::uint32_t h = ((u + v) * 0x9E3779B1u) >> (32 - edge_bits_);
   EdgeSlot* table = edge_table_.data();
@@ -346,7 +338,8 @@ LOCUS_D3_INLINE std::uint32_t Delaunay3<T>::edge_match(std::uint32_t u, std::uin
 }
 
 template <Real T>
-LOCUS_D3_INLINE void Delaunay3<T>::glue(std::uint32_t code, std::uint32_t other) noexcept {
+LOCUS_ALWAYS_INLINE inline void Delaunay3<T>::glue(std::uint32_t code,
+                                                   std::uint32_t other) noexcept {
   if (other == kNone) return;
   cells_[code >> 2].neighbors[code & 3u] = static_cast<std::int32_t>(other);
   cells_[other >> 2].neighbors[other & 3u] = static_cast<std::int32_t>(code);
@@ -379,7 +372,8 @@ void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32
 }
 
 template <Real T>
-LOCUS_D3_INLINE bool Delaunay3<T>::in_conflict(std::uint32_t t, std::uint32_t v) const noexcept {
+LOCUS_ALWAYS_INLINE inline bool Delaunay3<T>::in_conflict(std::uint32_t t,
+                                                          std::uint32_t v) const noexcept {
   const Delaunay3Cell& c = cells_[t];
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T>& p = pts[v];
@@ -822,7 +816,7 @@ namespace {
 // the hull face abc with the outside on its positive side. nb[i] is the facet across the ridge
 // opposite v[i]. Replacing one vertex of a facet by a point keeps the facet's orientation, so a
 // new facet is a copy of a removed one with the apex put in.
-template <class T>
+template <Real T>
 class LiftedHull {
  public:
   explicit LiftedHull(std::span<const Vec3<T>> points) : p_(points) {}
@@ -915,7 +909,7 @@ class LiftedHull {
   std::uint32_t epoch_ = 0;
 };
 
-template <class T>
+template <Real T>
 bool LiftedHull<T>::build(std::span<const std::uint32_t> order) {
   const Vec3<T>* p = p_.data();
   const std::size_t m = order.size();
@@ -1028,7 +1022,7 @@ bool LiftedHull<T>::build(std::span<const std::uint32_t> order) {
 
 // The points with their duplicates removed (the smallest index of equal points is kept, in
 // lexicographic order) and their affine dimension.
-template <class T>
+template <Real T>
 int dedupe_and_dimension(std::span<const Vec3<T>> pts, Delaunay3Result& r,
                          std::vector<std::uint32_t>& kept) {
   const std::size_t n = pts.size();
@@ -1056,7 +1050,7 @@ int dedupe_and_dimension(std::span<const Vec3<T>> pts, Delaunay3Result& r,
   return 2;
 }
 
-template <class T>
+template <Real T>
 Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
   Delaunay3Result r;
   const std::size_t n = pts.size();
@@ -1172,7 +1166,7 @@ void classify_location(Locate3Result& r, std::size_t t, unsigned zero_mask) noex
   return true;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] Sign face_side(std::span<const Vec3<T>> pts, const Delaunay3Cell& c, int i,
                              const Vec3<T>& p) noexcept {
   return orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],

@@ -11,18 +11,18 @@ namespace {
 
 // ---- point - boxes (the per-query functions have no special cases) --------------------------
 
-template <class T>
-LOCUS_LANE_INLINE void point_aligned_box_run(const Source<Vec3<T>>& a,
-                                             const Source<AlignedBox3<T>>& b, T* out,
-                                             std::size_t n) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline void point_aligned_box_run(const Source<Vec3<T>>& a,
+                                                      const Source<AlignedBox3<T>>& b, T* out,
+                                                      std::size_t n) {
   lanes::run<T, 2>(
       a, b, out, n,
-      [](const auto& ps, const auto& bs) LOCUS_LANE_LAMBDA {
+      [](const auto& ps, const auto& bs) LOCUS_ALWAYS_INLINE_LAMBDA {
         const V3<T> p = gather3<T>(ps, std::identity{});
         const V3<T> lo = gather3<T>(bs, &AlignedBox3<T>::min);
         const V3<T> hi = gather3<T>(bs, &AlignedBox3<T>::max);
         // detail::point_aligned_box: the clamped coordinate's excess, squared and summed onto 0.
-        const auto excess = [](V<T> x, V<T> l, V<T> h) LOCUS_LANE_LAMBDA {
+        const auto excess = [](V<T> x, V<T> l, V<T> h) LOCUS_ALWAYS_INLINE_LAMBDA {
           const V<T> above = sel<T>(x < l, l, x);
           const V<T> e = x - sel<T>(h < above, h, above);
           return e * e;
@@ -36,24 +36,25 @@ LOCUS_LANE_INLINE void point_aligned_box_run(const Source<Vec3<T>>& a,
         return Result<T>{sel<T>(empty, nan, sqr + fz), M<T>{}};
       },
       [](const Vec3<T>& p, const AlignedBox3<T>& box)
-          LOCUS_LANE_LAMBDA { return sqr_distance(p, box); });
+          LOCUS_ALWAYS_INLINE_LAMBDA { return sqr_distance(p, box); });
 }
 
-template <class T>
-LOCUS_LANE_INLINE void point_oriented_box_run(const Source<Vec3<T>>& a,
-                                              const Source<OrientedBox3<T>>& b, T* out,
-                                              std::size_t n) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline void point_oriented_box_run(const Source<Vec3<T>>& a,
+                                                       const Source<OrientedBox3<T>>& b, T* out,
+                                                       std::size_t n) {
   lanes::run<T, 2>(
       a, b, out, n,
-      [](const auto& ps, const auto& bs) LOCUS_LANE_LAMBDA {
+      [](const auto& ps, const auto& bs) LOCUS_ALWAYS_INLINE_LAMBDA {
         const V3<T> p = gather3<T>(ps, std::identity{});
         const V3<T> c = gather3<T>(bs, &OrientedBox3<T>::center);
         const V3<T> ext = gather3<T>(bs, &OrientedBox3<T>::extent);
         V3<T> axis[3];
         for (int k = 0; k < 3; ++k)
-          axis[k] = gather3<T>(bs,
-                               [k](const OrientedBox3<T>& x)
-                                   LOCUS_LANE_LAMBDA -> const Vec3<T>& { return x.axis[k]; });
+          axis[k] = gather3<T>(
+              bs, [k](const OrientedBox3<T>& x) LOCUS_ALWAYS_INLINE_LAMBDA -> const Vec3<T>& {
+                return x.axis[k];
+              });
         // detail::point_oriented_box: per axis the coordinate in the box frame and its excess
         // over the slab (a negative extent acts as 0), squared and summed onto 0.
         const V3<T> d = p - c;
@@ -72,7 +73,7 @@ LOCUS_LANE_INLINE void point_oriented_box_run(const Source<Vec3<T>>& a,
         return Result<T>{sqr + fz, M<T>{}};
       },
       [](const Vec3<T>& p, const OrientedBox3<T>& box)
-          LOCUS_LANE_LAMBDA { return sqr_distance(p, box); });
+          LOCUS_ALWAYS_INLINE_LAMBDA { return sqr_distance(p, box); });
 }
 
 }  // namespace

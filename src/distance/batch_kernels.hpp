@@ -35,14 +35,14 @@ using lanes::Source;
 using lanes::V;
 using lanes::V3;
 
-template <class T>
+template <Real T>
 constexpr T kMin = std::numeric_limits<T>::min();
-template <class T>
+template <Real T>
 constexpr T kMax = std::numeric_limits<T>::max();
 
 // ---- point - triangle (detail::point_triangle, the 3D fast path) -------------------------------
 
-template <class T>
+template <Real T>
 struct PointTriangleLanes {
   V3<T> bary;     // barycentric (u, v, w) of the closest point
   V3<T> closest;  // point_at_barycentric(tri, bary)
@@ -52,9 +52,9 @@ struct PointTriangleLanes {
 
 /// detail::point_triangle_fast with the origin o and the other vertices x, y: barycentrics in
 /// that order.
-template <class T>
-LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_at(const V3<T>& p, const V3<T>& o,
-                                                          const V3<T>& x, const V3<T>& y) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline PointTriangleLanes<T> point_triangle_at(const V3<T>& p, const V3<T>& o,
+                                                                   const V3<T>& x, const V3<T>& y) {
   const V3<T> e0 = x - o, e1 = y - o, e2 = y - x, w0 = p - o, w1 = p - x;
   const V<T> a = dot(e0, e0), b = dot(e0, e1), c = dot(e1, e1), f = dot(e2, e2);
   const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
@@ -93,8 +93,10 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_at(const V3<T>& p, const 
 /// (v1, v2, v0), r2: (v2, v0, v1)). kBroadcast: the triangle is the same in every lane and every
 /// group (Group::kBroadcast).
 template <class T, bool kBroadcast = false>
-LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, const V3<T>& v0,
-                                                             const V3<T>& v1, const V3<T>& v2) {
+LOCUS_ALWAYS_INLINE inline PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p,
+                                                                      const V3<T>& v0,
+                                                                      const V3<T>& v1,
+                                                                      const V3<T>& v2) {
   const V3<T> d01 = v1 - v0, d02 = v2 - v0, d12 = v2 - v1;
   const V<T> l01 = dot(d01, d01), l02 = dot(d02, d02), l12 = dot(d12, d12);
   const V<T> b0 = dot(d01, d02), ac0 = l01 * l02;
@@ -121,12 +123,12 @@ LOCUS_LANE_INLINE PointTriangleLanes<T> point_triangle_lanes(const V3<T>& p, con
 
 // ---- segment - segment (detail::segment_pair) ------------------------------------------------
 
-template <class T>
+template <Real T>
 struct SegmentLanes {
   V3<T> p0, p1;
 };
 
-template <class T>
+template <Real T>
 struct SegmentPairLanes {
   V<T> s, t;  // parameters on the first and the second segment
   V<T> sqr;
@@ -135,8 +137,8 @@ struct SegmentPairLanes {
 
 /// A segment parameter t clamped to [0, 1] as detail::LinearView::clamp_param does, and whether
 /// it was finite (otherwise the scalar code takes a rescaling path).
-template <class T>
-LOCUS_LANE_INLINE V<T> clamp_param_lanes(V<T> t, M<T>& not_finite) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> clamp_param_lanes(V<T> t, M<T>& not_finite) {
   not_finite |= ~lanes::finite<T>(t);
   const V<T> lo = sel<T>(t < T(0), V<T>{}, t);
   return sel<T>(lo > T(1), lanes::splat<T>(T(1)), lo);
@@ -144,26 +146,26 @@ LOCUS_LANE_INLINE V<T> clamp_param_lanes(V<T> t, M<T>& not_finite) {
 
 /// detail::closest_param for a segment whose |dir|^2 = a is a normal number: the clamped
 /// projection, and whether it was finite (otherwise the scalar code takes a rescaling path).
-template <class T>
-LOCUS_LANE_INLINE V<T> closest_param_lanes(const SegmentLanes<T>& l, const V3<T>& dir, V<T> a,
-                                           const V3<T>& p, M<T>& not_finite) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> closest_param_lanes(const SegmentLanes<T>& l, const V3<T>& dir,
+                                                    V<T> a, const V3<T>& p, M<T>& not_finite) {
   return clamp_param_lanes<T>(dot(p - l.p0, dir) / a, not_finite);
 }
 
 /// detail::lex_less of two segments (p0 lexicographically, then p1).
-template <class T>
-LOCUS_LANE_INLINE M<T> lex_less(const V3<T>& a, const V3<T>& b) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline M<T> lex_less(const V3<T>& a, const V3<T>& b) {
   return (a.x < b.x) | ((a.x == b.x) & ((a.y < b.y) | ((a.y == b.y) & (a.z < b.z))));
 }
-template <class T>
-LOCUS_LANE_INLINE M<T> lex_less(const SegmentLanes<T>& a, const SegmentLanes<T>& b) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline M<T> lex_less(const SegmentLanes<T>& a, const SegmentLanes<T>& b) {
   const M<T> same = (a.p0.x == b.p0.x) & (a.p0.y == b.p0.y) & (a.p0.z == b.p0.z);
   return (same & lex_less<T>(a.p1, b.p1)) | (~same & lex_less<T>(a.p0, b.p0));
 }
 
 /// The quantities of segment_pair_fast for segments x, y (caller's order): directions, offset
 /// r = x.p0 - y.p0, a = |da|^2, b = da.db, c = |db|^2, d = da.r, e = db.r, D = |da x db|^2.
-template <class T>
+template <Real T>
 struct SegmentPairTerms {
   V3<T> da, db;
   V<T> a, b, c, d, e, D, ac;
@@ -173,11 +175,11 @@ struct SegmentPairTerms {
 /// angle): the parameters in the caller's order, and the lanes left to the scalar code. regular:
 /// segment_pair_fast's range and finiteness test; fast: the lanes whose result the caller takes
 /// from the fast path instead.
-template <class T>
-LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x,
-                                                        const SegmentLanes<T>& y,
-                                                        const SegmentPairTerms<T>& terms,
-                                                        M<T> regular, M<T> fast) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x,
+                                                                 const SegmentLanes<T>& y,
+                                                                 const SegmentPairTerms<T>& terms,
+                                                                 M<T> regular, M<T> fast) {
   constexpr T tiny = T(64) * eps_v<T>;
   // The rest (nearly parallel, or an interior minimiser at a small angle): detail::linear_linear
   // in the canonical argument order, for input in range (a, c normal, finite projections; other
@@ -211,7 +213,7 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
   // |A(s) - B(t)|^2 as the scalar code evaluates it. At s = 0 or 1 the point lerp(A, s) is the end
   // point itself up to the sign of a zero coordinate, which no square sees: the end points'
   // candidates use the end points directly.
-  const auto sqr_gap = [](const V3<T>& u, const V3<T>& v) LOCUS_LANE_LAMBDA {
+  const auto sqr_gap = [](const V3<T>& u, const V3<T>& v) LOCUS_ALWAYS_INLINE_LAMBDA {
     const V3<T> dq = u - v;
     return dot(dq, dq);
   };
@@ -227,7 +229,7 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
     return {sel<T>(swap, ti, si), sel<T>(swap, si, ti), q_interior, scalar};
   }
   V<T> best = sel<T>(interior, q_interior, lanes::splat<T>(std::numeric_limits<T>::infinity()));
-  const auto consider = [&](V<T> s, V<T> t, V<T> q) LOCUS_LANE_LAMBDA {
+  const auto consider = [&](V<T> s, V<T> t, V<T> q) LOCUS_ALWAYS_INLINE_LAMBDA {
     const M<T> take = q < best;
     best = sel<T>(take, q, best);
     bs = sel<T>(take, s, bs);
@@ -250,9 +252,9 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_rest(const SegmentLanes<T>& x
   return {sel<T>(swap, bt, bs), sel<T>(swap, bs, bt), sel<T>(refined, q_interior, best), scalar};
 }
 
-template <class T>
-LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& x,
-                                                         const SegmentLanes<T>& y) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& x,
+                                                                  const SegmentLanes<T>& y) {
   constexpr T tiny = T(64) * eps_v<T>;
   // detail::segment_pair_fast.
   const V3<T> da = x.p1 - x.p0, db = y.p1 - y.p0, r = x.p0 - y.p0;
@@ -264,7 +266,7 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
   const M<T> regular = (a >= kMin<T>)&(c >= kMin<T>)&(ac <= kMax<T>)&((d - d) + (e - e) == T(0));
   const M<T> fast = regular & (D > tiny * ac) & (s_out | t_out | (T(16) * D >= ac));
   // The parameters of the fast lanes: one exact clamped projection each.
-  const auto fast_pair = [&]() LOCUS_LANE_LAMBDA {
+  const auto fast_pair = [&]() LOCUS_ALWAYS_INLINE_LAMBDA {
     const V<T> zero = a - a, one = zero + T(1);
     const V<T> sc = sel<T>(sh, lanes::splat<T>(T(1)), V<T>{});
     const V<T> tc = sel<T>(th, lanes::splat<T>(T(1)), V<T>{});
@@ -296,7 +298,7 @@ LOCUS_LANE_INLINE SegmentPairLanes<T> segment_pair_lanes(const SegmentLanes<T>& 
 }
 
 template <class T, class G>
-LOCUS_LANE_INLINE SegmentLanes<T> gather_segment(const G& g) {
+LOCUS_ALWAYS_INLINE inline SegmentLanes<T> gather_segment(const G& g) {
   return {gather3<T>(g, &Segment3<T>::p0), gather3<T>(g, &Segment3<T>::p1)};
 }
 

@@ -6,18 +6,19 @@
 namespace locus {
 namespace {
 
-template <class T>
-LOCUS_LANE_INLINE void segment_segment_run(const Source<Segment3<T>>& a,
-                                           const Source<Segment3<T>>& b, T* out, std::size_t n) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline void segment_segment_run(const Source<Segment3<T>>& a,
+                                                    const Source<Segment3<T>>& b, T* out,
+                                                    std::size_t n) {
   lanes::run<T, 2>(
       a, b, out, n,
-      [](const auto& x, const auto& y) LOCUS_LANE_LAMBDA {
+      [](const auto& x, const auto& y) LOCUS_ALWAYS_INLINE_LAMBDA {
         const SegmentPairLanes<T> r =
             segment_pair_lanes<T>(gather_segment<T>(x), gather_segment<T>(y));
         return Result<T>{r.sqr, r.scalar};
       },
       [](const Segment3<T>& x, const Segment3<T>& y)
-          LOCUS_LANE_LAMBDA { return sqr_distance(x, y); });
+          LOCUS_ALWAYS_INLINE_LAMBDA { return sqr_distance(x, y); });
 }
 
 }  // namespace

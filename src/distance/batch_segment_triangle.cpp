@@ -17,11 +17,11 @@ namespace {
 /// filter's relative error bound holds) and none overflows. The range lies inside the one where
 /// detail::linear_triangle solves without rescaling (detail/rescale.hpp,
 /// outside_product_range), so that the lanes accepted here are solved as the scalar code does.
-template <class T>
-LOCUS_LANE_INLINE M<T> filter_range(const V3<T>& v) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline M<T> filter_range(const V3<T>& v) {
   constexpr T lo = sizeof(T) == 8 ? T(0x1p-250) : T(0x1p-16);
   constexpr T hi = sizeof(T) == 8 ? T(0x1p250) : T(0x1p30);
-  const auto one = [](V<T> x) LOCUS_LANE_LAMBDA {
+  const auto one = [](V<T> x) LOCUS_ALWAYS_INLINE_LAMBDA {
     const V<T> m = lanes::abs<T>(x);
     return (m == T(0)) | ((m >= lo) & (m <= hi));
   };
@@ -32,30 +32,31 @@ LOCUS_LANE_INLINE M<T> filter_range(const V3<T>& v) {
 /// by core's stage-A filter on lanes (detail::det3_stage_a, the scalar predicate's expression and
 /// bound for T's unit roundoff): `certain` lanes have the exact sign of det (input in
 /// filter_range); the others are left to the exact predicate.
-template <class T>
+template <Real T>
 struct Orient {
   V<T> det;
   M<T> certain;
 };
-template <class T>
-LOCUS_LANE_INLINE Orient<T> orient3d_filter(const V3<T>& a, const V3<T>& b, const V3<T>& c,
-                                            const V3<T>& d) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline Orient<T> orient3d_filter(const V3<T>& a, const V3<T>& b, const V3<T>& c,
+                                                     const V3<T>& d) {
   const detail::StageA<V<T>> f = detail::det3_stage_a<T>(
-      b - a, c - a, d - a, [](V<T> x) LOCUS_LANE_LAMBDA { return lanes::abs<T>(x); });
+      b - a, c - a, d - a, [](V<T> x) LOCUS_ALWAYS_INLINE_LAMBDA { return lanes::abs<T>(x); });
   return {f.det, (f.det > f.bound) | (-f.det > f.bound)};
 }
 
-template <class T>
-LOCUS_LANE_INLINE V<T> max_abs(const V3<T>& v) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> max_abs(const V3<T>& v) {
   // core/vec.hpp max_abs (the maximum is exact whatever the order).
   const V<T> x = lanes::abs<T>(v.x), y = lanes::abs<T>(v.y), z = lanes::abs<T>(v.z);
   const V<T> xy = sel<T>(x < y, y, x);
   return sel<T>(xy < z, z, xy);
 }
 
-template <class T>
-LOCUS_LANE_INLINE Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg, const V3<T>& v0,
-                                                   const V3<T>& v1, const V3<T>& v2) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg,
+                                                            const V3<T>& v0, const V3<T>& v1,
+                                                            const V3<T>& v2) {
   constexpr T eps = eps_v<T>;
   const V<T> zero{}, one = lanes::splat<T>(T(1));
   // Exact meeting test (detail::segment_meets_triangle) where the filter is certain: the two end
@@ -122,7 +123,7 @@ LOCUS_LANE_INLINE Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg, c
     // segment-segment evaluation each, with the edge's vertices selected per lane: two
     // evaluations per group instead of one per edge that some lane wants (three in most groups).
     // An edge (i, j) is told by i0 (i = 0, else 1) and j2 (j = 2, else 1).
-    const auto edge = [&](M<T> wanted, M<T> i0, M<T> j2) LOCUS_LANE_LAMBDA {
+    const auto edge = [&](M<T> wanted, M<T> i0, M<T> j2) LOCUS_ALWAYS_INLINE_LAMBDA {
       if (!lanes::any<T>(wanted & ok & ~end_wins)) return;
       const V3<T> vi = lanes::sel<T>(i0, v0, v1), vj = lanes::sel<T>(j2, v2, v1);
       const SegmentPairLanes<T> st = segment_pair_lanes<T>(seg, SegmentLanes<T>{vi, vj});
@@ -160,12 +161,13 @@ LOCUS_LANE_INLINE Result<T> segment_triangle_lanes(const SegmentLanes<T>& seg, c
   return {sel<T>(contact, zero, dot(gap, gap)), ~ok};
 }
 
-template <class T>
-LOCUS_LANE_INLINE void segment_triangle_run(const Source<Segment3<T>>& a,
-                                            const Source<Triangle3<T>>& b, T* out, std::size_t n) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline void segment_triangle_run(const Source<Segment3<T>>& a,
+                                                     const Source<Triangle3<T>>& b, T* out,
+                                                     std::size_t n) {
   lanes::run<T>(
       a, b, out, n,
-      [](const auto& s, const auto& t) LOCUS_LANE_LAMBDA {
+      [](const auto& s, const auto& t) LOCUS_ALWAYS_INLINE_LAMBDA {
         return segment_triangle_lanes<T>(gather_segment<T>(s), gather3<T>(t, &Triangle3<T>::v0),
                                          gather3<T>(t, &Triangle3<T>::v1),
                                          gather3<T>(t, &Triangle3<T>::v2));

@@ -109,7 +109,8 @@ void keep_better(Sub<N>& best, const Sub<N>& c) noexcept {
 /// Segment y[i] y[j].
 template <int N>
 [[nodiscard]] Sub<N> sub1(const V<N>* y, int i, int j) noexcept {
-  // Base the projection at the endpoint nearer the origin: less cancellation in y_i + t (y_j - y_i).
+  // Base the projection at the endpoint nearer the origin: less cancellation in y_i + t (y_j -
+  // y_i).
   if (sqr_length(y[j]) < sqr_length(y[i])) std::swap(i, j);
   const V<N> t = y[j] - y[i];
   const double tt = sqr_length(t);
@@ -132,7 +133,8 @@ template <int N>
 /// Best of the edges of the face ids[0..k) (k = 3: a triangle) that contain `must`: the edge
 /// opposite ids[q] is taken when beyond[q] (the origin lies beyond it).
 template <int N>
-[[nodiscard]] Sub<N> edges_beyond(const V<N>* y, const int* ids, const bool* beyond, int must) noexcept {
+[[nodiscard]] Sub<N> edges_beyond(const V<N>* y, const int* ids, const bool* beyond,
+                                  int must) noexcept {
   Sub<N> best;
   for (int q = 0; q < 3; ++q)
     if (beyond[q] && ids[q] != must) keep_better(best, sub1(y, ids[(q + 1) % 3], ids[(q + 2) % 3]));
@@ -367,7 +369,7 @@ void witnesses(const GjkState<N>& st, V<N>& pa, V<N>& pb) noexcept {
   }
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] double contact_tol(T option, double scale) noexcept {
   if (option >= T(0)) return static_cast<double>(option);
   return 64.0 * static_cast<double>(eps_v<T>) * scale;
@@ -420,8 +422,8 @@ template <int N>
 /// Returns false when a support plane through the origin was found (out holds the touching
 /// answer) or the input went non-finite.
 template <class T, int N>
-[[nodiscard]] bool raise_simplex(Minkowski<T, N>& mk, const GjkState<N>& st, double tol,
-                                 Pt<N>* pts, int& npts, EpaOut<N>& out) {
+[[nodiscard]] bool raise_simplex(Minkowski<T, N>& mk, const GjkState<N>& st, double tol, Pt<N>* pts,
+                                 int& npts, EpaOut<N>& out) {
   npts = 0;
   for (int i = 0; i < st.n; ++i)
     if (st.w[i] > 0.0 || st.n == 1) pts[npts++] = st.s[i];
@@ -464,7 +466,7 @@ template <class T, int N>
 }
 
 /// EPA in 3D over a fixed-capacity triangle mesh with exact orient3d visibility.
-template <class T>
+template <Real T>
 class Epa3 {
  public:
   static constexpr int max_v = epa_max_vertices;
@@ -543,8 +545,8 @@ class Epa3 {
  private:
   struct Face {
     int v[3];
-    int adj[3];   // face across edge (v[e], v[e+1])
-    int adj_e[3]; // that edge's index in the neighbour
+    int adj[3];    // face across edge (v[e], v[e+1])
+    int adj_e[3];  // that edge's index in the neighbour
     V<3> n;
     double dist;
     bool alive;
@@ -778,7 +780,7 @@ class Epa3 {
 };
 
 /// EPA in 2D over a counter-clockwise polygon with exact orient2d visibility.
-template <class T>
+template <Real T>
 class Epa2 {
  public:
   static constexpr int max_v = epa_max_vertices;
@@ -993,13 +995,14 @@ GjkDistance<T, N> gjk_distance(const SupportMap<T, N>& a, const SupportMap<T, N>
   if (dc > floor) {
     const V<N> n = -st.v / dc;
     const double signed_dist = dc - margin;
-    r.contact = signed_dist > tol    ? Contact::separated
+    r.contact = signed_dist > tol     ? Contact::separated
                 : signed_dist >= -tol ? Contact::touching
                                       : Contact::intersecting;
     r.normal = vec_cast<T>(n);
     if (signed_dist >= 0.0) {
       r.distance = static_cast<T>(signed_dist);
-      r.sqr_distance = margin == 0.0 ? static_cast<T>(st.vv) : static_cast<T>(signed_dist * signed_dist);
+      r.sqr_distance =
+          margin == 0.0 ? static_cast<T>(st.vv) : static_cast<T>(signed_dist * signed_dist);
       r.closest = {vec_cast<T>(pa + ma * n), vec_cast<T>(pb - mb * n)};
     } else {
       // The round parts overlap: a common point on the segment between the core points.
@@ -1046,7 +1049,7 @@ Penetration<T, N> penetration(const SupportMap<T, N>& a, const SupportMap<T, N>&
   const double ma = static_cast<double>(a.margin), mb = static_cast<double>(b.margin);
   const double margin = ma + mb;
   const auto classify = [&](double depth) {
-    r.contact = depth > tol ? Contact::intersecting
+    r.contact = depth > tol     ? Contact::intersecting
                 : depth >= -tol ? Contact::touching
                                 : Contact::separated;
   };
@@ -1070,7 +1073,8 @@ Penetration<T, N> penetration(const SupportMap<T, N>& a, const SupportMap<T, N>&
     return non_finite(Status::non_finite_input);
   if (e.status != Status::ok) r.status = e.status;
   // Flat differences with margins are ordinary: the depth is the margins.
-  if (e.status == Status::degenerate_input && margin > 0.0) r.status = st.limit ? Status::limit_exceeded : Status::ok;
+  if (e.status == Status::degenerate_input && margin > 0.0)
+    r.status = st.limit ? Status::limit_exceeded : Status::ok;
   const double depth = e.depth + margin;
   r.depth = static_cast<T>(depth);
   r.normal = vec_cast<T>(e.normal);
@@ -1091,11 +1095,9 @@ template GjkDistance<double, 2> gjk_distance(const SupportMap<double, 2>&,
 template GjkDistance<double, 3> gjk_distance(const SupportMap<double, 3>&,
                                              const SupportMap<double, 3>&,
                                              const GjkOptions<double, 3>&) noexcept;
-template Penetration<float, 2> penetration(const SupportMap<float, 2>&,
-                                           const SupportMap<float, 2>&,
+template Penetration<float, 2> penetration(const SupportMap<float, 2>&, const SupportMap<float, 2>&,
                                            const GjkOptions<float, 2>&) noexcept;
-template Penetration<float, 3> penetration(const SupportMap<float, 3>&,
-                                           const SupportMap<float, 3>&,
+template Penetration<float, 3> penetration(const SupportMap<float, 3>&, const SupportMap<float, 3>&,
                                            const GjkOptions<float, 3>&) noexcept;
 template Penetration<double, 2> penetration(const SupportMap<double, 2>&,
                                             const SupportMap<double, 2>&,

@@ -20,6 +20,7 @@
 // A source with stride 0 is one object broadcast to every query (the "one against many"
 // overloads).
 
+#include <locus/config.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/batch.hpp>
 
@@ -30,15 +31,9 @@
 #include <type_traits>
 #include <utility>
 
-// Everything a kernel calls is inlined into the driver, so that it is compiled for the driver's
-// instruction set and no vector crosses a call (LOCUS_LANE_LAMBDA: the same for lambdas).
-#if defined(__GNUC__)
-#define LOCUS_LANE_INLINE inline __attribute__((always_inline))
-#define LOCUS_LANE_LAMBDA __attribute__((always_inline))
-#else
-#define LOCUS_LANE_INLINE inline
-#define LOCUS_LANE_LAMBDA
-#endif
+// Everything a kernel calls is inlined into the driver (LOCUS_ALWAYS_INLINE, and
+// LOCUS_ALWAYS_INLINE_LAMBDA for lambdas), so that it is compiled for the driver's instruction set
+// and no vector crosses a call.
 
 // The batch drivers are compiled three times on x86-64 (LOCUS_LANE_VERSIONS): for x86-64-v4
 // (AVX-512: the same 32-byte vectors, but 32 registers, so fewer spills, and mask registers), for
@@ -91,60 +86,60 @@ struct Versions {
   }
 };
 
-template <class T>
+template <Real T>
 struct Lanes {
   static constexpr int W = static_cast<int>(32 / sizeof(T));
   typedef T V __attribute__((vector_size(32)));
   using M = decltype(V{} < V{});
 };
 
-template <class T>
+template <Real T>
 using V = typename Lanes<T>::V;
-template <class T>
+template <Real T>
 using M = typename Lanes<T>::M;
 
 /// Every lane = x.
-template <class T>
-LOCUS_LANE_INLINE V<T> splat(T x) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> splat(T x) {
   return V<T>{} + x;
 }
 
 /// Lane-wise m ? a : b.
-template <class T>
-LOCUS_LANE_INLINE V<T> sel(M<T> m, V<T> a, V<T> b) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> sel(M<T> m, V<T> a, V<T> b) {
   return m ? a : b;
 }
 
 /// Lane-wise (x < lo ? lo : x), then (hi < that ? hi : that): detail::clamp_minmax.
-template <class T>
-LOCUS_LANE_INLINE V<T> clamp_minmax(V<T> x, V<T> lo, V<T> hi) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> clamp_minmax(V<T> x, V<T> lo, V<T> hi) {
   const V<T> above = sel<T>(x < lo, lo, x);
   return sel<T>(hi < above, hi, above);
 }
 
 /// Lane-wise |x|.
-template <class T>
-LOCUS_LANE_INLINE V<T> abs(V<T> x) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> abs(V<T> x) {
   return sel<T>(x < T(0), -x, x);
 }
 
 /// Lanes whose value is finite (x - x is 0 for finite x, NaN otherwise).
-template <class T>
-LOCUS_LANE_INLINE M<T> finite(V<T> x) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline M<T> finite(V<T> x) {
   return (x - x) == V<T>{};
 }
 
 /// True when some lane of m is set.
-template <class T>
-LOCUS_LANE_INLINE bool any(M<T> m) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline bool any(M<T> m) {
   for (int k = 0; k < Lanes<T>::W; ++k)
     if (m[k]) return true;
   return false;
 }
 
 /// True when every lane of m is set.
-template <class T>
-LOCUS_LANE_INLINE bool all(M<T> m) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline bool all(M<T> m) {
   for (int k = 0; k < Lanes<T>::W; ++k)
     if (!m[k]) return false;
   return true;
@@ -152,47 +147,47 @@ LOCUS_LANE_INLINE bool all(M<T> m) {
 
 /// A 3D vector per lane, with the scalar Vec3 operations in the same evaluation order as
 /// core/vec.hpp (dot = (x x' + y y') + z z').
-template <class T>
+template <Real T>
 struct V3 {
   V<T> x, y, z;
 };
-template <class T>
-LOCUS_LANE_INLINE V3<T> operator-(const V3<T>& a, const V3<T>& b) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V3<T> operator-(const V3<T>& a, const V3<T>& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
-template <class T>
-LOCUS_LANE_INLINE V3<T> operator+(const V3<T>& a, const V3<T>& b) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V3<T> operator+(const V3<T>& a, const V3<T>& b) {
   return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
-template <class T>
-LOCUS_LANE_INLINE V3<T> operator*(V<T> s, const V3<T>& a) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V3<T> operator*(V<T> s, const V3<T>& a) {
   return {s * a.x, s * a.y, s * a.z};
 }
-template <class T>
-LOCUS_LANE_INLINE V<T> dot(const V3<T>& a, const V3<T>& b) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> dot(const V3<T>& a, const V3<T>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 /// detail::sqr_cross_norm for N = 3: the squared 2x2 minors (x, y), (x, z), (y, z) summed in that
 /// order onto 0.
-template <class T>
-LOCUS_LANE_INLINE V<T> sqr_cross_norm(const V3<T>& a, const V3<T>& b) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> sqr_cross_norm(const V3<T>& a, const V3<T>& b) {
   const V<T> m01 = a.x * b.y - a.y * b.x, m02 = a.x * b.z - a.z * b.x;
   const V<T> m12 = a.y * b.z - a.z * b.y;
   return ((V<T>{} + m01 * m01) + m02 * m02) + m12 * m12;
 }
 /// core/vec.hpp lerp: (1 - t) a + t b per coordinate.
-template <class T>
-LOCUS_LANE_INLINE V3<T> lerp(const V3<T>& a, const V3<T>& b, V<T> t) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V3<T> lerp(const V3<T>& a, const V3<T>& b, V<T> t) {
   const V<T> u = T(1) - t;
   return {u * a.x + t * b.x, u * a.y + t * b.y, u * a.z + t * b.z};
 }
-template <class T>
-LOCUS_LANE_INLINE V3<T> sel(M<T> m, const V3<T>& a, const V3<T>& b) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V3<T> sel(M<T> m, const V3<T>& a, const V3<T>& b) {
   return {sel<T>(m, a.x, b.x), sel<T>(m, a.y, b.y), sel<T>(m, a.z, b.z)};
 }
 /// finite_zero of one vector: (x 0 + y 0) + z 0 (0 for finite coordinates, NaN otherwise).
-template <class T>
-LOCUS_LANE_INLINE V<T> finite_zero(const V3<T>& a) {
+template <Real T>
+LOCUS_ALWAYS_INLINE inline V<T> finite_zero(const V3<T>& a) {
   return a.x * T(0) + a.y * T(0) + a.z * T(0);
 }
 
@@ -209,15 +204,15 @@ template <class Obj, bool kStep>
 struct Group {
   static constexpr bool kBroadcast = !kStep;  // one object in every lane
   const Obj* p;
-  [[nodiscard]] LOCUS_LANE_INLINE const Obj& operator[](std::size_t k) const {
+  [[nodiscard]] LOCUS_ALWAYS_INLINE inline const Obj& operator[](std::size_t k) const {
     return kStep ? p[k] : *p;
   }
 };
 
 /// Lane k = field(group[k]) for a scalar field.
 template <class T, class G, class Field>
-LOCUS_LANE_INLINE V<T> gather(const G& g, Field field) {
-  return [&]<std::size_t... k>(std::index_sequence<k...>) LOCUS_LANE_LAMBDA {
+LOCUS_ALWAYS_INLINE inline V<T> gather(const G& g, Field field) {
+  return [&]<std::size_t... k>(std::index_sequence<k...>) LOCUS_ALWAYS_INLINE_LAMBDA {
     return V<T>{field(g[k])...};
   }
   (std::make_index_sequence<Lanes<T>::W>{});
@@ -227,7 +222,7 @@ LOCUS_LANE_INLINE V<T> gather(const G& g, Field field) {
 /// instruction. (A memcpy into a vector was split by GCC, for AVX2, into two 16-byte moves through
 /// the stack, and the 32-byte reload stalled on store forwarding: 2x-3x slower kernels.)
 template <class T, int n = Lanes<T>::W>
-LOCUS_LANE_INLINE auto load_unaligned(const void* p) {
+LOCUS_ALWAYS_INLINE inline auto load_unaligned(const void* p) {
   typedef T U __attribute__((vector_size(n * sizeof(T)), aligned(alignof(T)), may_alias));
   typedef T R __attribute__((vector_size(n * sizeof(T))));
   return R(*static_cast<const U*>(p));
@@ -238,8 +233,8 @@ LOCUS_LANE_INLINE auto load_unaligned(const void* p) {
 /// and two rounds of in-lane or half-swapping shuffles, instead of W scalar loads and inserts per
 /// result.
 template <class T, class Obj>
-LOCUS_LANE_INLINE std::array<V<T>, 4> load_columns4(const Obj* objs, int start) {
-  const auto at = [&](int k) LOCUS_LANE_LAMBDA {
+LOCUS_ALWAYS_INLINE inline std::array<V<T>, 4> load_columns4(const Obj* objs, int start) {
+  const auto at = [&](int k) LOCUS_ALWAYS_INLINE_LAMBDA {
     return reinterpret_cast<const unsigned char*>(objs + k) + start * sizeof(T);
   };
   if constexpr (Lanes<T>::W == 4) {
@@ -255,7 +250,7 @@ LOCUS_LANE_INLINE std::array<V<T>, 4> load_columns4(const Obj* objs, int start) 
   } else {
     static_assert(Lanes<T>::W == 8);
     // Objects k and k + 4, one per half.
-    const auto pair = [&](int k) LOCUS_LANE_LAMBDA {
+    const auto pair = [&](int k) LOCUS_ALWAYS_INLINE_LAMBDA {
       return __builtin_shufflevector(load_unaligned<T, 4>(at(k)), load_unaligned<T, 4>(at(k + 4)),
                                      0, 1, 2, 3, 4, 5, 6, 7);
     };
@@ -278,7 +273,7 @@ LOCUS_LANE_INLINE std::array<V<T>, 4> load_columns4(const Obj* objs, int start) 
 /// scalars when it ends the object, so that no load reads past the group's last object; anything
 /// else lane by lane.
 template <class T, class G, class Member>
-LOCUS_LANE_INLINE V3<T> gather3(const G& g, Member member) {
+LOCUS_ALWAYS_INLINE inline V3<T> gather3(const G& g, Member member) {
   using Obj = std::remove_cvref_t<decltype(g[0])>;
   constexpr int K = static_cast<int>(sizeof(Obj) / sizeof(T));
   if constexpr (!G::kBroadcast &&
@@ -292,14 +287,17 @@ LOCUS_LANE_INLINE V3<T> gather3(const G& g, Member member) {
     const std::array<V<T>, 4> c = load_columns4<T>(g.p, start);
     return {c[off - start], c[off - start + 1], c[off - start + 2]};
   }
-  return {gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).x; }),
-          gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).y; }),
-          gather<T>(g, [&](const auto& o) LOCUS_LANE_LAMBDA { return std::invoke(member, o).z; })};
+  return {gather<T>(g, [&](const auto& o)
+                           LOCUS_ALWAYS_INLINE_LAMBDA { return std::invoke(member, o).x; }),
+          gather<T>(g, [&](const auto& o)
+                           LOCUS_ALWAYS_INLINE_LAMBDA { return std::invoke(member, o).y; }),
+          gather<T>(g, [&](const auto& o)
+                           LOCUS_ALWAYS_INLINE_LAMBDA { return std::invoke(member, o).z; })};
 }
 
 /// What a kernel returns for W queries: the squared distances, and the lanes the kernel does not
 /// handle (they are recomputed by the scalar query).
-template <class T>
+template <Real T>
 struct Result {
   V<T> sqr;
   M<T> scalar;
@@ -307,10 +305,11 @@ struct Result {
 
 template <class T, int kUnroll, bool kStepA, bool kStepB, class A, class B, class Kernel,
           class Scalar>
-LOCUS_LANE_INLINE void run_groups(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
-                                  Kernel kernel, Scalar scalar) {
+LOCUS_ALWAYS_INLINE inline void run_groups(const Source<A>& a, const Source<B>& b, T* out,
+                                           std::size_t n, Kernel kernel, Scalar scalar) {
   constexpr std::size_t W = Lanes<T>::W;
-  const auto finish = [&](const Result<T>& r, std::size_t i, std::size_t m) LOCUS_LANE_LAMBDA {
+  const auto finish = [&](const Result<T>& r, std::size_t i,
+                          std::size_t m) LOCUS_ALWAYS_INLINE_LAMBDA {
     T values[W];
     std::memcpy(values, &r.sqr, sizeof values);
     if (any<T>(r.scalar))
@@ -360,8 +359,8 @@ LOCUS_LANE_INLINE void run_groups(const Source<A>& a, const Source<B>& b, T* out
 /// out, and recomputes the lanes the kernel hands back with the scalar query (scalar(a, b)).
 /// kUnroll = 2 evaluates two groups per step (for the smaller kernels: it doubles the code).
 template <class T, int kUnroll = 1, class A, class B, class Kernel, class Scalar>
-LOCUS_LANE_INLINE void run(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
-                           Kernel kernel, Scalar scalar) {
+LOCUS_ALWAYS_INLINE inline void run(const Source<A>& a, const Source<B>& b, T* out, std::size_t n,
+                                    Kernel kernel, Scalar scalar) {
   if (n == 0) return;  // the spans' data may then be null
   if (a.stride != 0 && b.stride != 0)
     run_groups<T, kUnroll, true, true>(a, b, out, n, kernel, scalar);

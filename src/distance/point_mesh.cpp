@@ -13,7 +13,7 @@ namespace locus {
 namespace {
 
 // Squared distance from p to the box [lo, hi] (0 inside).
-template <class T>
+template <Real T>
 inline T box_sqr_distance(const Vec3<T>& p, const Vec3<T>& lo, const Vec3<T>& hi) noexcept {
   T s = T(0);
   for (int i = 0; i < 3; ++i) {
@@ -25,7 +25,7 @@ inline T box_sqr_distance(const Vec3<T>& p, const Vec3<T>& lo, const Vec3<T>& hi
 
 // Exact: p on the closed segment [a, b] (a point when a == b): inside the coordinate box and
 // collinear in all three coordinate projections.
-template <class T>
+template <Real T>
 bool on_segment3(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& p) noexcept {
   for (int i = 0; i < 3; ++i)
     if (p[i] < std::min(a[i], b[i]) || p[i] > std::max(a[i], b[i])) return false;
@@ -36,14 +36,14 @@ bool on_segment3(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& p) noexcept 
          orient2d(azx, bzx, pzx) == Sign::zero;
 }
 
-template <class T>
+template <Real T>
 Vec2<T> project_out(const Vec3<T>& v, int axis) noexcept {
   return axis == 0 ? Vec2<T>{v.y, v.z} : (axis == 1 ? Vec2<T>{v.z, v.x} : Vec2<T>{v.x, v.y});
 }
 
 // Exact: p on the closed triangle abc (coplanar, then inside in a projection where the triangle
 // keeps its area; a degenerate triangle is the union of its edges).
-template <class T>
+template <Real T>
 bool on_triangle3(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& p) noexcept {
   if (orient3d(a, b, c, p) != Sign::zero) return false;
   for (int k = 0; k < 3; ++k) {
@@ -59,7 +59,7 @@ bool on_triangle3(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Ve
 
 // Side of the moved point (q.y + e, q.z + e^2), e -> 0+, relative to the yz-line a -> b:
 // orient2d first, then the coefficient of e, then that of e^2.
-template <class T>
+template <Real T>
 int side_perturbed(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& q) noexcept {
   const int s = to_int(orient2d(Vec2<T>{a.y, a.z}, Vec2<T>{b.y, b.z}, Vec2<T>{q.y, q.z}));
   if (s != 0) return s;

@@ -57,7 +57,7 @@ void insertion_sort(Item* first, Item* last, Less less = {}) noexcept {
 
 // The strict hull (CCW, from the lowest-leftmost point) of at most a handful of points, by the
 // monotone chain; used for the filter polygon.
-template <class T>
+template <Real T>
 std::size_t tiny_hull(Vec2<T>* pts, std::size_t n, Vec2<T>* out) noexcept {
   std::sort(pts, pts + n, [](const Vec2<T>& a, const Vec2<T>& b) {
     return a.y < b.y || (a.y == b.y && a.x < b.x);
@@ -77,7 +77,7 @@ std::size_t tiny_hull(Vec2<T>* pts, std::size_t n, Vec2<T>* out) noexcept {
   return k - 1;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] bool strictly_inside(const Vec2<T>* poly, std::size_t n, const Vec2<T>& q) noexcept {
   for (std::size_t i = 0; i < n; ++i) {
     if (orient2d(poly[i], poly[(i + 1) % n], q) != Sign::positive) return false;

@@ -15,32 +15,32 @@ namespace {
 
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
-template <class T>
+template <Real T>
 [[nodiscard]] Vec2<T> drop_axis(const Vec3<T>& p, int k) noexcept {
   return Vec2<T>{p[(k + 1) % 3], p[(k + 2) % 3]};
 }
 
 // Three points are collinear iff their three coordinate projections are (the components of
 // (b - a) x (c - a) are those 2D determinants).
-template <class T>
+template <Real T>
 [[nodiscard]] bool collinear3(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) noexcept {
   for (int k = 0; k < 3; ++k)
     if (orient2d(drop_axis(a, k), drop_axis(b, k), drop_axis(c, k)) != Sign::zero) return false;
   return true;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] bool lex_less(const Vec3<T>& a, const Vec3<T>& b) noexcept {
   return lexicographic_compare(a, b) == Sign::negative;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] Sign side(const Vec3<T>* p, const std::uint32_t v[3], std::uint32_t q) noexcept {
   return orient3d(p[v[0]], p[v[1]], p[v[2]], p[q]);
 }
 
 // Bit pattern of a coordinate with -0 folded into +0 (equal values, equal keys).
-template <class T>
+template <Real T>
 [[nodiscard]] std::uint64_t coord_bits(T x) noexcept {
   x = x + T(0);
   if constexpr (sizeof(T) == 8) {
@@ -54,7 +54,7 @@ template <class T>
   }
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] std::uint64_t point_hash(const Vec3<T>& p) noexcept {
   std::uint64_t h = coord_bits(p.x) * 0x9E3779B97F4A7C15ull;
   h = (h ^ (h >> 29) ^ coord_bits(p.y)) * 0xBF58476D1CE4E5B9ull;

@@ -396,7 +396,7 @@ RootsResult<T> solve_fixed(const std::array<T, N>& c, const RootOptions& opt) no
   return res;
 }
 
-template <class T>
+template <Real T>
 RealRootsResult<T> real_roots_span(std::span<const T> p, T a, T b, const RootOptions& opt) {
   RealRootsResult<T> res;
   res.status = Status::ok;

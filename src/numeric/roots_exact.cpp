@@ -186,7 +186,7 @@ Pt midpoint(const Pt& a, const Pt& b) {
 
 /// Ordered integer keys of the values of T: consecutive keys are adjacent values, -0 and +0
 /// share the key 0, and +-inf are the keys just beyond +-max.
-template <class T>
+template <Real T>
 struct Grid {
   using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
   using Key = std::conditional_t<std::is_same_v<T, float>, std::int64_t, std::int64_t>;
@@ -222,7 +222,7 @@ struct Grid {
   }
 };
 
-template <class T>
+template <Real T>
 class Engine {
  public:
   using G = Grid<T>;
@@ -425,7 +425,7 @@ int root_bound_exponent(std::span<const double> a_in, bool reversed) {
 
 }  // namespace
 
-template <class T>
+template <Real T>
 Status exact_real_roots(std::span<const double> a, T lo, T hi, const RootOptions& opt,
                         std::vector<Root<T>>& out) {
   using G = Grid<T>;

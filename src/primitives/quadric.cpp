@@ -68,7 +68,7 @@ void inertia(const int* s, int n, int& rank, int& pos, int& neg) noexcept {
 
 }  // namespace
 
-template <class T>
+template <Real T>
 QuadricClass quadric_type(const Quadric3<T>& q) noexcept {
   QuadricClass r{Status::ok, QuadricType::invalid, 0, 0, 0, 0, 0, 0, true};
   if (!detail::quadric_is_finite(q)) {

@@ -196,7 +196,8 @@ TYPED_TEST(PointInPolyhedron, ConvexMeshesVsRationalHalfSpaces) {
         Vec3<T> p = grid<T>(rng, -12, 12);
         if (k % 4 == 0) {
           const Tri& t = mesh.t[std::size_t(rng.uniform_int(0, int(mesh.t.size()) - 1))];
-          p = T(0.5) * (mesh.v[t[0]] + mesh.v[t[std::size_t(1 + (k / 4) % 2)]]);  // vertex or edge midpoint
+          p = T(0.5) *
+              (mesh.v[t[0]] + mesh.v[t[std::size_t(1 + (k / 4) % 2)]]);  // vertex or edge midpoint
           if (k % 8 == 0) p = mesh.v[t[0]];
         }
         const Side expect = convex_oracle(qv, mesh.t, q(p));

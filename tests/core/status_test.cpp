@@ -22,7 +22,8 @@ TEST(Status, EveryValueHasADistinctLowerCaseName) {
     const std::string_view name = to_string(Status(v));
     EXPECT_NE(name, "unknown") << v;
     EXPECT_FALSE(name.empty()) << v;
-    for (char c : name) EXPECT_TRUE(std::islower(static_cast<unsigned char>(c)) || c == '_') << name;
+    for (char c : name)
+      EXPECT_TRUE(std::islower(static_cast<unsigned char>(c)) || c == '_') << name;
     names.insert(std::string(name));
   }
   EXPECT_EQ(int(names.size()), last + 1);

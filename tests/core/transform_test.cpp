@@ -251,8 +251,7 @@ TYPED_TEST(TransformTest, GenericInverseInvertsAndComposesInReverseOrder) {
   }
   // Scale ratios beyond 1 / (32 eps) are numerically singular.
   EXPECT_TRUE(inverse(scaling_axes(Vec3<T>{}, Vec3<T>{T(1), T(1), T(1) / T(16)})).has_value());
-  EXPECT_FALSE(
-      inverse(scaling_axes(Vec3<T>{}, Vec3<T>{T(1), T(1), T(8) * eps_v<T>})).has_value());
+  EXPECT_FALSE(inverse(scaling_axes(Vec3<T>{}, Vec3<T>{T(1), T(1), T(8) * eps_v<T>})).has_value());
   EXPECT_TRUE(
       inverse(scaling_axes(Vec3<T>{}, Vec3<T>{T(1), T(1), T(8) * eps_v<T>}), T(0)).has_value());
   // A nearly dependent pair of rows below the threshold is reported; with tolerance 0 only an
@@ -485,8 +484,7 @@ TYPED_TEST(TransformTest, NonuniformScalingAlongDirectionFigures3_20_4_16) {
     EXPECT_TRUE(
         near_exact(apply_point(a, p), want, tol<T>(32, T(40) * std::max(T(1), std::abs(s)))));
     EXPECT_NEAR(determinant(a), s, tol<T>(16, T(4)));
-    if (std::abs(s) > T(0.1))
-      expect_inverts(a, scaling_along(c, dir, T(1) / s));
+    if (std::abs(s) > T(0.1)) expect_inverts(a, scaling_along(c, dir, T(1) / s));
   }
   // Zero direction: identity; non-finite direction: NaN; zero factor: singular.
   const auto id = scaling_along(Vec3<T>{1, 2, 3}, Vec3<T>{}, T(5));

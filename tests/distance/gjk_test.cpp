@@ -38,8 +38,8 @@ constexpr int kScale = 1;
 // ---- polytopes and brute-force oracles ---------------------------------------------------------
 
 struct Poly3 {
-  std::vector<Vec3d> pts;                           // the input points (GJK sees these)
-  std::vector<std::array<std::uint32_t, 3>> tris;   // hull triangles (the oracle uses these)
+  std::vector<Vec3d> pts;                          // the input points (GJK sees these)
+  std::vector<std::array<std::uint32_t, 3>> tris;  // hull triangles (the oracle uses these)
 };
 
 Poly3 make_poly3(std::vector<Vec3d> pts) {
@@ -54,7 +54,8 @@ Poly3 make_poly3(std::vector<Vec3d> pts) {
 
 Poly3 random_poly3(Rng& rng, int n, const Vec3d& center, double radius) {
   std::vector<Vec3d> pts;
-  for (int i = 0; i < n; ++i) pts.push_back(center + radius * rng.unit<double, 3>() * rng.uniform(0.3, 1.0));
+  for (int i = 0; i < n; ++i)
+    pts.push_back(center + radius * rng.unit<double, 3>() * rng.uniform(0.3, 1.0));
   return make_poly3(std::move(pts));
 }
 
@@ -109,7 +110,8 @@ struct Poly2 {
 
 Poly2 random_poly2(Rng& rng, int n, const Vec2d& center, double radius) {
   Poly2 p;
-  for (int i = 0; i < n; ++i) p.pts.push_back(center + radius * rng.unit<double, 2>() * rng.uniform(0.3, 1.0));
+  for (int i = 0; i < n; ++i)
+    p.pts.push_back(center + radius * rng.unit<double, 2>() * rng.uniform(0.3, 1.0));
   const Hull2Result h = convex_hull(p.pts);
   EXPECT_EQ(h.dimension, 2);
   p.ring = h.indices;
@@ -122,7 +124,8 @@ double brute_distance2(const Poly2& a, const Poly2& b) {
     return Segment2d{p.pts[p.ring[i]], p.pts[p.ring[(i + 1) % p.ring.size()]]};
   };
   for (std::size_t i = 0; i < a.ring.size(); ++i)
-    for (std::size_t j = 0; j < b.ring.size(); ++j) best = std::min(best, distance(edges(a, i), edges(b, j)).distance);
+    for (std::size_t j = 0; j < b.ring.size(); ++j)
+      best = std::min(best, distance(edges(a, i), edges(b, j)).distance);
   return best;
 }
 
@@ -157,8 +160,10 @@ TEST(Gjk3, RandomPolytopesMatchFeaturePairMinimum) {
   double worst = 0.0;
   int separated = 0, intersecting = 0;
   for (int c = 0; c < 300 / kScale; ++c) {
-    const Poly3 a = random_poly3(rng, rng.uniform_int(4, 40), rng.vec<double, 3>(-2, 2), rng.uniform(0.2, 2.0));
-    const Poly3 b = random_poly3(rng, rng.uniform_int(4, 40), rng.vec<double, 3>(-2, 2), rng.uniform(0.2, 2.0));
+    const Poly3 a =
+        random_poly3(rng, rng.uniform_int(4, 40), rng.vec<double, 3>(-2, 2), rng.uniform(0.2, 2.0));
+    const Poly3 b =
+        random_poly3(rng, rng.uniform_int(4, 40), rng.vec<double, 3>(-2, 2), rng.uniform(0.2, 2.0));
     const auto r = gjk_distance(ConvexPoints<double, 3>{a.pts}, ConvexPoints<double, 3>{b.pts});
     ASSERT_EQ(r.status, Status::ok);
     const double mink = minkowski_signed3(a.pts, b.pts);
@@ -238,7 +243,8 @@ TEST(Gjk3, NearlyParallelFacesMatchFeaturePairMinimum) {
     const double gap = std::pow(10.0, rng.uniform(-4.0, -1.0));
     const Vec3d side = normalize(cross(na, rng.unit<double, 3>()));
     const Mat3d rot = to_matrix(AxisAngle<double>{side, tilt}) *
-                      to_matrix(AxisAngle<double>{na, rng.uniform(0.0, 6.28)}) * rotation_between(nb, -na);
+                      to_matrix(AxisAngle<double>{na, rng.uniform(0.0, 6.28)}) *
+                      rotation_between(nb, -na);
     std::vector<Vec3d> moved;
     for (const auto& q : b0.pts) moved.push_back(rot * q + (ca + gap * na - rot * cb));
     const Poly3 b = make_poly3(moved);
@@ -280,7 +286,8 @@ TEST(Gjk3, NearContactPolytopesMatchFeaturePairMinimum) {
 TEST(Gjk, FlatSimplexInFullDimension) {
   // Collinear segments in 2D and coplanar polygons in 3D: every GJK simplex of full size is
   // flat (orient2d / orient3d = 0), so only its facets can hold the nearest point.
-  EXPECT_NEAR(gjk_distance(Segment2d{{0, 0}, {1, 0}}, Segment2d{{2.5, 0}, {4, 0}}).distance, 1.5, 1e-15);
+  EXPECT_NEAR(gjk_distance(Segment2d{{0, 0}, {1, 0}}, Segment2d{{2.5, 0}, {4, 0}}).distance, 1.5,
+              1e-15);
   const std::vector<Vec2d> tri2{{0, 0}, {1, 0}, {3, 0}};  // a flat "triangle"
   EXPECT_NEAR(gjk_distance(ConvexPoints<double, 2>{tri2}, Vec2d{5, 0}).distance, 2.0, 1e-15);
   EXPECT_EQ(gjk_distance(ConvexPoints<double, 2>{tri2}, Vec2d{2, 0}).contact, Contact::touching);
@@ -330,8 +337,10 @@ TEST(Gjk2, RandomPolygonsMatchBruteForce) {
   SCOPED_TRACE(rng.trace());
   int separated = 0, intersecting = 0;
   for (int c = 0; c < 600 / kScale; ++c) {
-    const Poly2 a = random_poly2(rng, rng.uniform_int(3, 30), rng.vec<double, 2>(-2, 2), rng.uniform(0.2, 2.0));
-    const Poly2 b = random_poly2(rng, rng.uniform_int(3, 30), rng.vec<double, 2>(-2, 2), rng.uniform(0.2, 2.0));
+    const Poly2 a =
+        random_poly2(rng, rng.uniform_int(3, 30), rng.vec<double, 2>(-2, 2), rng.uniform(0.2, 2.0));
+    const Poly2 b =
+        random_poly2(rng, rng.uniform_int(3, 30), rng.vec<double, 2>(-2, 2), rng.uniform(0.2, 2.0));
     const auto r = gjk_distance(ConvexPoints<double, 2>{a.pts}, ConvexPoints<double, 2>{b.pts});
     ASSERT_EQ(r.status, Status::ok);
     const double mink = minkowski_signed2(a.pts, b.pts);
@@ -368,7 +377,8 @@ TYPED_TEST(GjkTyped, SpheresAreExact) {
   for (int c = 0; c < 200; ++c) {
     const Sphere<T, 3> a{rng.vec<T, 3>(-5, 5), rng.uniform<T>(0, 2)};
     const Sphere<T, 3> b{rng.vec<T, 3>(-5, 5), rng.uniform<T>(0, 2)};
-    const double gap = length(vec_cast<double>(b.center - a.center)) - double(a.radius) - double(b.radius);
+    const double gap =
+        length(vec_cast<double>(b.center - a.center)) - double(a.radius) - double(b.radius);
     const auto r = gjk_distance(a, b);
     const auto p = penetration(a, b);
     const T tol = locus_test::tol<T>(64, T(10));
@@ -421,9 +431,10 @@ TYPED_TEST(GjkTyped, CapsulesMatchSegmentSegment) {
   for (int c = 0; c < 200; ++c) {
     const Capsule<T, 3> a{{rng.vec<T, 3>(-3, 3), rng.vec<T, 3>(-3, 3)}, rng.uniform<T>(0, T(0.5))};
     const Capsule<T, 3> b{{rng.vec<T, 3>(-3, 3), rng.vec<T, 3>(-3, 3)}, rng.uniform<T>(0, T(0.5))};
-    const double core = distance(Segment3d{vec_cast<double>(a.segment.p0), vec_cast<double>(a.segment.p1)},
-                                 Segment3d{vec_cast<double>(b.segment.p0), vec_cast<double>(b.segment.p1)})
-                            .distance;
+    const double core =
+        distance(Segment3d{vec_cast<double>(a.segment.p0), vec_cast<double>(a.segment.p1)},
+                 Segment3d{vec_cast<double>(b.segment.p0), vec_cast<double>(b.segment.p1)})
+            .distance;
     const double gap = core - double(a.radius) - double(b.radius);
     const auto r = gjk_distance(a, b);
     const auto p = penetration(a, b);
@@ -443,11 +454,13 @@ TEST(Gjk3, CylinderAgainstPointIsAnalytic) {
   SCOPED_TRACE(rng.trace());
   for (int c = 0; c < 200; ++c) {
     const Vec3d axis = rng.unit<double, 3>();
-    const Cylinder3d cyl{{rng.vec<double, 3>(-1, 1), axis}, rng.uniform(0.2, 1.5), rng.uniform(0.2, 3.0)};
+    const Cylinder3d cyl{
+        {rng.vec<double, 3>(-1, 1), axis}, rng.uniform(0.2, 1.5), rng.uniform(0.2, 3.0)};
     const Vec3d p = rng.vec<double, 3>(-4, 4);
     const Vec3d rel = p - cyl.axis.origin;
     const double h = dot(rel, axis), rad = length(rel - h * axis);
-    const double dr = std::max(rad - cyl.radius, 0.0), dh = std::max(std::fabs(h) - 0.5 * cyl.height, 0.0);
+    const double dr = std::max(rad - cyl.radius, 0.0),
+                 dh = std::max(std::fabs(h) - 0.5 * cyl.height, 0.0);
     const double exact = std::hypot(dr, dh);
     const auto r = gjk_distance(cyl, p);
     EXPECT_NE(r.status, Status::limit_exceeded);
@@ -494,12 +507,14 @@ TEST(Gjk3, TransformedShapeEqualsMovedPoints) {
     const Vec3d t = rng.vec<double, 3>(-3, 3);
     std::vector<Vec3d> moved;
     for (const auto& p : b.pts) moved.push_back(rot * p + t);
-    const Transformed<ConvexPoints<double, 3>, double, 3> tb{ConvexPoints<double, 3>{b.pts}, rot, t, 0.0};
+    const Transformed<ConvexPoints<double, 3>, double, 3> tb{ConvexPoints<double, 3>{b.pts}, rot, t,
+                                                             0.0};
     const auto r1 = gjk_distance(ConvexPoints<double, 3>{a.pts}, tb);
     const auto r2 = gjk_distance(ConvexPoints<double, 3>{a.pts}, ConvexPoints<double, 3>{moved});
     EXPECT_NEAR(r1.distance, r2.distance, 1e-12);
     // A margin shrinks the distance by exactly the margin.
-    const Transformed<ConvexPoints<double, 3>, double, 3> tm{ConvexPoints<double, 3>{b.pts}, rot, t, 0.1};
+    const Transformed<ConvexPoints<double, 3>, double, 3> tm{ConvexPoints<double, 3>{b.pts}, rot, t,
+                                                             0.1};
     const auto r3 = gjk_distance(ConvexPoints<double, 3>{a.pts}, tm);
     if (r2.distance > 0.1 + 1e-9) {
       EXPECT_NEAR(r3.distance, r2.distance - 0.1, 1e-12);
@@ -518,13 +533,15 @@ TEST(Gjk3, MixedPrimitivesAgainstPolytopeBruteForce) {
   Rng rng(23);
   SCOPED_TRACE(rng.trace());
   for (int c = 0; c < 200 / kScale; ++c) {
-    const Triangle3d tri{rng.vec<double, 3>(-2, 2), rng.vec<double, 3>(-2, 2), rng.vec<double, 3>(-2, 2)};
+    const Triangle3d tri{rng.vec<double, 3>(-2, 2), rng.vec<double, 3>(-2, 2),
+                         rng.vec<double, 3>(-2, 2)};
     const Segment3d seg{rng.vec<double, 3>(-2, 2), rng.vec<double, 3>(-2, 2)};
     const Vec3d p = rng.vec<double, 3>(-2, 2);
     // Triangle-segment: minimum over edge-edge and segment endpoint-triangle pairs, unless the
     // segment pierces the triangle (the Minkowski-difference oracle decides).
     double exact = std::min(distance(seg.p0, tri).distance, distance(seg.p1, tri).distance);
-    for (int i = 0; i < 3; ++i) exact = std::min(exact, distance(Segment3d{tri[i], tri[(i + 1) % 3]}, seg).distance);
+    for (int i = 0; i < 3; ++i)
+      exact = std::min(exact, distance(Segment3d{tri[i], tri[(i + 1) % 3]}, seg).distance);
     if (minkowski_signed3({tri.v0, tri.v1, tri.v2}, {seg.p0, seg.p1}) < 0) exact = 0;
     const auto r = gjk_distance(tri, seg);
     if (exact > 1e-9) {
@@ -543,12 +560,15 @@ TEST(Gjk3, MixedPrimitivesAgainstPolytopeBruteForce) {
 
 // ---- contact classification and degenerate input ---------------------------------------------
 
-AlignedBox3d cube(const Vec3d& c, double h) { return {c - splat<double, 3>(h), c + splat<double, 3>(h)}; }
+AlignedBox3d cube(const Vec3d& c, double h) {
+  return {c - splat<double, 3>(h), c + splat<double, 3>(h)};
+}
 
 TEST(Gjk3, TouchingBoxes) {
   // Face, edge and vertex contact of unit cubes: distance 0, touching, depth 0.
   const AlignedBox3d a = cube({0, 0, 0}, 1);
-  for (const Vec3d& off : {Vec3d{2, 0, 0}, Vec3d{2, 2, 0}, Vec3d{2, 2, 2}, Vec3d{2, 0.5, 0.3}, Vec3d{0, 0, -2}}) {
+  for (const Vec3d& off :
+       {Vec3d{2, 0, 0}, Vec3d{2, 2, 0}, Vec3d{2, 2, 2}, Vec3d{2, 0.5, 0.3}, Vec3d{0, 0, -2}}) {
     const AlignedBox3d b = cube(off, 1);
     const auto r = gjk_distance(a, b);
     EXPECT_EQ(r.status, Status::ok);
@@ -560,7 +580,8 @@ TEST(Gjk3, TouchingBoxes) {
     EXPECT_NEAR(length(p.normal), 1.0, 1e-12);
     // Apart or overlapping by 1e-6 along every axis on which the cubes touch.
     Vec3d push{};
-    for (int i = 0; i < 3; ++i) push[i] = std::fabs(off[i]) == 2 ? (off[i] > 0 ? 1e-6 : -1e-6) : 0.0;
+    for (int i = 0; i < 3; ++i)
+      push[i] = std::fabs(off[i]) == 2 ? (off[i] > 0 ? 1e-6 : -1e-6) : 0.0;
     const auto far = gjk_distance(a, cube(off + push, 1));
     EXPECT_EQ(far.contact, Contact::separated);
     EXPECT_NEAR(far.distance, length(push), 1e-15);
@@ -673,7 +694,8 @@ TEST(Gjk3, NonFiniteAndInvalidInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   const Sphere3d good{{0, 0, 0}, 1};
-  for (const Sphere3d& bad : {Sphere3d{{nan, 0, 0}, 1}, Sphere3d{{0, 0, 0}, nan}, Sphere3d{{inf, 0, 0}, 1}}) {
+  for (const Sphere3d& bad :
+       {Sphere3d{{nan, 0, 0}, 1}, Sphere3d{{0, 0, 0}, nan}, Sphere3d{{inf, 0, 0}, 1}}) {
     const auto r = gjk_distance(good, bad);
     EXPECT_EQ(r.status, Status::non_finite_input);
     EXPECT_TRUE(std::isnan(r.distance));
@@ -699,8 +721,9 @@ TEST(Gjk3, IterationBudget) {
   EXPECT_GE(r.distance, exact - 1e-14);  // an upper bound
   EXPECT_EQ(r.iterations, 1);
   opt.max_iterations = 0;
-  EXPECT_EQ(gjk_distance(ConvexPoints<double, 3>{a.pts}, ConvexPoints<double, 3>{b.pts}, opt).status,
-            Status::limit_exceeded);
+  EXPECT_EQ(
+      gjk_distance(ConvexPoints<double, 3>{a.pts}, ConvexPoints<double, 3>{b.pts}, opt).status,
+      Status::limit_exceeded);
   // A curved pair converges within the default budget.
   const Cylinder3d c1{{{0, 0, 0}, normalize(Vec3d{1, 1, 0})}, 1, 2};
   const Cone3d c2{{3, 1, 0.5}, normalize(Vec3d{-1, 0.2, 0.1}), 0.4, 0.2, 1.5};
@@ -749,7 +772,8 @@ TEST(Gjk2, FloatPolygons) {
       EXPECT_NEAR(double(r.distance), mink, 1e-6);
     }
     if (mink < -1e-5) {
-      EXPECT_NEAR(double(penetration(ConvexPoints<float, 2>{af}, ConvexPoints<float, 2>{bf}).depth), -mink, 1e-6);
+      EXPECT_NEAR(double(penetration(ConvexPoints<float, 2>{af}, ConvexPoints<float, 2>{bf}).depth),
+                  -mink, 1e-6);
     }
   }
 }
@@ -771,7 +795,8 @@ TEST(Gjk2, TraceRecordsTheIterations) {
     EXPECT_LE(length(s.v_next), length(s.v) + 1e-15);
     EXPECT_GE(s.simplex.size, 1);
     Vec2d v{};
-    for (int i = 0; i < s.simplex.size; ++i) v += s.simplex.weight[i] * (s.simplex.a[i] - s.simplex.b[i]);
+    for (int i = 0; i < s.simplex.size; ++i)
+      v += s.simplex.weight[i] * (s.simplex.a[i] - s.simplex.b[i]);
     EXPECT_NEAR(length(v - s.v_next), 0.0, 1e-14);
     prev = length(s.v_next);
   }

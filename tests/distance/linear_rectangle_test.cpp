@@ -148,9 +148,8 @@ TYPED_TEST(LinearRectangleTest, LineHarnessAndExactOracle) {
 TYPED_TEST(LinearRectangleTest, Figure10_43PartitionRegions) {
   using T = TypeParam;
   // Axis-aligned rectangle [-3, 3] x [-2, 2] in the plane z = 1, and a rotated copy.
-  const Rectangle3<T> aligned{{T(0), T(0), T(1)},
-                              {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}},
-                              {T(3), T(2)}};
+  const Rectangle3<T> aligned{
+      {T(0), T(0), T(1)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}}, {T(3), T(2)}};
   const T coords_s[3] = {T(-5), T(1), T(4.5)}, coords_t[3] = {T(-3.5), T(-1), T(3)};
   const T t_values[3] = {T(-0.5), T(0.5), T(1.5)};
   const Vec3<T> dirs[2] = {{T(1), T(2), T(3)}, {T(-2), T(1), T(-1.5)}};
@@ -191,9 +190,8 @@ TYPED_TEST(LinearRectangleTest, Figure10_43PartitionRegions) {
 // Figure 10.42: a line and a rectangle; parallel cases and uniqueness.
 TYPED_TEST(LinearRectangleTest, Figure10_42ParallelCasesAndUniqueness) {
   using T = TypeParam;
-  const Rectangle3<T> rect{{T(0), T(0), T(0)},
-                           {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}},
-                           {T(3), T(2)}};
+  const Rectangle3<T> rect{
+      {T(0), T(0), T(0)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}}, {T(3), T(2)}};
   // A line crossing the rectangle: distance 0 at the crossing, unique.
   const auto l = distance(Line3<T>{{T(1), T(1), T(5)}, {T(0), T(0), T(-1)}}, rect);
   EXPECT_EQ(l.distance, T(0));
@@ -221,9 +219,8 @@ TYPED_TEST(LinearRectangleTest, Figure10_42ParallelCasesAndUniqueness) {
 
 TYPED_TEST(LinearRectangleTest, NearlyParallelIsContinuous) {
   using T = TypeParam;
-  const Rectangle3<T> rect{{T(0), T(0), T(0)},
-                           {{T(0.6), T(0.8), T(0)}, {T(-0.8), T(0.6), T(0)}},
-                           {T(3), T(2)}};
+  const Rectangle3<T> rect{
+      {T(0), T(0), T(0)}, {{T(0.6), T(0.8), T(0)}, {T(-0.8), T(0.6), T(0)}}, {T(3), T(2)}};
   for (int k = -30; k <= 30; ++k) {
     const T tilt = k == 0 ? T(0) : std::ldexp(T(k < 0 ? -1 : 1), -std::abs(k));
     for (const T h : {T(0), T(1)}) {
@@ -243,9 +240,8 @@ TYPED_TEST(LinearRectangleTest, NearlyParallelIsContinuous) {
 TYPED_TEST(LinearRectangleTest, DegenerateInput) {
   using T = TypeParam;
   // Zero extents: a segment and a point.
-  const Rectangle3<T> seg_rect{{T(0), T(0), T(0)},
-                               {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}},
-                               {T(2), T(0)}};
+  const Rectangle3<T> seg_rect{
+      {T(0), T(0), T(0)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}}, {T(2), T(0)}};
   const auto a = distance(Line3<T>{{T(1), T(3), T(4)}, {T(0), T(0), T(1)}}, seg_rect);
   EXPECT_EQ(a.distance, T(3));
   EXPECT_EQ(a.param_b, (Vec2<T>{T(1), T(0)}));
@@ -260,9 +256,8 @@ TYPED_TEST(LinearRectangleTest, DegenerateInput) {
   EXPECT_EQ(c.distance, T(0));
   EXPECT_FALSE(c.unique);
   // Zero-length segment and zero ray direction act as their point.
-  const Rectangle3<T> rect{{T(0), T(0), T(0)},
-                           {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}},
-                           {T(3), T(2)}};
+  const Rectangle3<T> rect{
+      {T(0), T(0), T(0)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}}, {T(3), T(2)}};
   const Vec3<T> p{T(5), T(0), T(0)};
   EXPECT_EQ(distance(Segment3<T>{p, p}, rect).distance, T(2));
   EXPECT_EQ(distance(Ray3<T>{p, Vec3<T>{}}, rect).distance, T(2));
@@ -276,9 +271,8 @@ TYPED_TEST(LinearRectangleTest, DegenerateInput) {
 TYPED_TEST(LinearRectangleTest, NonFiniteInputGivesNaNResult) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
-  const Rectangle3<T> rect{{T(0), T(0), T(0)},
-                           {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}},
-                           {T(3), T(2)}};
+  const Rectangle3<T> rect{
+      {T(0), T(0), T(0)}, {{T(1), T(0), T(0)}, {T(0), T(1), T(0)}}, {T(3), T(2)}};
   EXPECT_TRUE(dist::is_nan_result(distance(Segment3<T>{{nan, T(0), T(0)}, {}}, rect)));
   EXPECT_TRUE(dist::is_nan_result(distance(Ray3<T>{{}, {T(0), inf, T(0)}}, rect)));
   EXPECT_TRUE(dist::is_nan_result(distance(Line3<T>{{}, {T(0), T(0), nan}}, rect)));

@@ -219,7 +219,7 @@ TYPED_TEST(LinearTriangleTest, SegmentMeetsTriangleExactly) {
 TYPED_TEST(LinearTriangleTest, Figure10_40PartitionRegions) {
   using T = TypeParam;
   const Triangle3<T> tri{{T(0), T(0), T(1)}, {T(4), T(0), T(1)}, {T(0), T(4), T(1)}};
-  const Vec2<T> region_su[7] = {{T(1), T(1)},  {T(3), T(3)},   {T(-1), T(6)}, {T(-2), T(1)},
+  const Vec2<T> region_su[7] = {{T(1), T(1)},   {T(3), T(3)},  {T(-1), T(6)}, {T(-2), T(1)},
                                 {T(-1), T(-2)}, {T(3), T(-5)}, {T(6), T(-1)}};
   const T t_values[3] = {T(-0.5), T(0.5), T(1.5)};
   const Vec3<T> dirs[2] = {{T(1), T(2), T(3)}, {T(-2), T(1), T(-1.5)}};
@@ -320,8 +320,8 @@ TYPED_TEST(LinearTriangleTest, NearlyParallelIsContinuous) {
       const double e = ex::sqr_linear_triangle(q_of(seg), ex::tri_of(tri)).get_d();
       EXPECT_NEAR(double(r.sqr_distance), e, double(tol<T>(64, T(64)))) << "k " << k << " h " << h;
       const auto rl = distance(Line3<T>{seg.p0, seg.p1 - seg.p0}, tri);
-      const double el = ex::sqr_linear_triangle(ex::line(seg.p0, seg.p1 - seg.p0),
-                                                ex::tri_of(tri)).get_d();
+      const double el =
+          ex::sqr_linear_triangle(ex::line(seg.p0, seg.p1 - seg.p0), ex::tri_of(tri)).get_d();
       EXPECT_NEAR(double(rl.sqr_distance), el, double(tol<T>(64, T(64)))) << "k " << k;
     }
   }

@@ -291,8 +291,8 @@ TYPED_TEST(PointBoxTest, NonFiniteAndEmptyInputGiveNaNResult) {
   const OrientedBox3<T> base = oriented_box(box);
   for (int k = 0; k < 54; ++k) {
     for (const T x : {nan, inf, -inf}) {
-      const Vec3<T> points[3] = {{T(0.5), T(3), T(0.5)}, base.center + T(0.25) * base.extent,
-                                 base.center};
+      const Vec3<T> points[3] = {
+          {T(0.5), T(3), T(0.5)}, base.center + T(0.25) * base.extent, base.center};
       Vec3<T> p = points[k / 18];
       OrientedBox3<T> o = base;
       Vec3<T>* v[6] = {&p, &o.center, &o.extent, &o.axis[0], &o.axis[1], &o.axis[2]};

@@ -55,7 +55,8 @@ TEST(Support, ConvexPointsFlagsEveryNonFinitePointAndSurvivesOverflowingSums) {
         for (int i = 0; i < n; ++i) pts.push_back({double(i), -double(i), 0.5});
         pts[static_cast<std::size_t>(bad)].y = v;
         const Vec3d s = locus::support(locus::ConvexPoints<double, 3>{pts}, d);
-        EXPECT_TRUE(std::isnan(s.x) && std::isnan(s.y) && std::isnan(s.z)) << n << " " << bad << " " << v;
+        EXPECT_TRUE(std::isnan(s.x) && std::isnan(s.y) && std::isnan(s.z))
+            << n << " " << bad << " " << v;
       }
   std::vector<Vec3d> huge;
   for (int i = 0; i < 8; ++i) huge.push_back({1e308 * (0.5 + 0.05 * i), 0, 0});

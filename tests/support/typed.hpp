@@ -66,7 +66,8 @@ constexpr T tol(T k, T scale = T(1)) {
 }
 
 template <class T, int N>
-::testing::AssertionResult vec_near(const locus::Vec<T, N>& a, const locus::Vec<T, N>& b, T abs_tol) {
+::testing::AssertionResult vec_near(const locus::Vec<T, N>& a, const locus::Vec<T, N>& b,
+                                    T abs_tol) {
   for (int i = 0; i < N; ++i) {
     if (!(std::abs(a[i] - b[i]) <= abs_tol)) {
       std::string sa, sb;

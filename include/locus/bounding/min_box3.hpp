@@ -50,12 +50,12 @@ struct MinBoxOptions {
   bool refine = true;               ///< local descent over rotations from the best candidate
   bool edge_arcs = true;      ///< search every hull edge's arc of supporting normals (O'Rourke)
   double certify_tol = 1e-6;  ///< relative gap proved by branch and bound on the arcs (0: skip)
-  std::uint64_t max_work = 400000000;  ///< budget of work units (see the header comment)
+  std::uint64_t max_work = 400000000;             ///< budget of work units (see the header comment)
   MinBoxSearch search = MinBoxSearch::automatic;  ///< with edge_arcs: which branch and bound
 };
 
 /// The minimum-volume enclosing box found (see the header comment for its guarantee).
-template <class T>
+template <Real T>
 struct MinBoxResult {
   Status status = Status::empty_input;
   OrientedBox<T, 3> box{};

@@ -38,7 +38,7 @@
 namespace locus {
 
 /// The smallest enclosing circle and the input indices of its support points.
-template <class T>
+template <Real T>
 struct MinCircleResult {
   Status status = Status::empty_input;
   Circle2<T> circle{};                     ///< rounded centre and radius (see the header comment)

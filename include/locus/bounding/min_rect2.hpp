@@ -37,7 +37,7 @@ namespace locus {
 enum class RectCriterion : std::uint8_t { area, perimeter };
 
 /// The minimum enclosing rectangle.
-template <class T>
+template <Real T>
 struct MinRectResult {
   Status status = Status::empty_input;
   Rectangle<T, 2> rectangle{};

@@ -33,7 +33,7 @@
 namespace locus {
 
 /// The smallest enclosing sphere and the input indices of its support points.
-template <class T>
+template <Real T>
 struct MinSphereResult {
   Status status = Status::empty_input;
   Sphere3<T> sphere{};                     ///< rounded centre and radius

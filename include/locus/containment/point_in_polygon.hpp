@@ -47,7 +47,7 @@ namespace locus {
 namespace detail {
 
 /// Exact: p on the closed segment [a, b] (a point when a == b).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool on_closed_segment2(const Vec2<T>& a, const Vec2<T>& b,
                                              const Vec2<T>& p) noexcept {
   return orient2d(a, b, p) == Sign::zero && on_collinear_segment(a, b, p) && is_finite(p);
@@ -55,7 +55,7 @@ template <class T>
 
 /// What one edge does to the +x ray from p: 2 = p on the edge, 1 = crossing (half-open rule),
 /// 0 = nothing. The sign of the crossing (up = +1, down = -1) is returned through `dir`.
-template <class T>
+template <Real T>
 [[nodiscard]] inline int edge_ray_event(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p,
                                         int& dir) noexcept {
   const bool a_above = a.y > p.y, b_above = b.y > p.y;
@@ -77,7 +77,7 @@ template <class T>
 }
 
 /// Crossing parity and winding of one ring; returns false (and stops) when p is on the ring.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool accumulate_ring(std::span<const Vec2<T>> v, const Vec2<T>& p,
                                           int& crossings, int& winding) noexcept {
   const std::size_t n = v.size();
@@ -98,7 +98,7 @@ template <class T>
 // ---- triangle ------------------------------------------------------------------------------
 
 /// Exact classification of p against a triangle of either orientation (boundary = on an edge).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify(const Vec2<T>& p, const Triangle2<T>& t) noexcept {
   if (!is_finite(p)) return Side::outside;
   const Sign o = orient2d(t.v0, t.v1, t.v2);
@@ -117,7 +117,7 @@ template <class T>
 }
 
 /// classify(p, t) != outside.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains(const Triangle2<T>& t, const Vec2<T>& p) noexcept {
   return classify(p, t) != Side::outside;
 }
@@ -126,7 +126,7 @@ template <class T>
 
 /// Exact O(log n) classification against a weakly convex counter-clockwise polygon (see the
 /// header comment for the precondition).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify_convex(const Vec2<T>& p, std::span<const Vec2<T>> v) noexcept {
   if (!is_finite(p) || v.empty()) return Side::outside;
   const std::size_t n = v.size();
@@ -176,7 +176,7 @@ template <class T>
 }
 
 /// classify_convex(p, v) != outside.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains_convex(std::span<const Vec2<T>> v, const Vec2<T>& p) noexcept {
   return classify_convex(p, v) != Side::outside;
 }
@@ -184,7 +184,7 @@ template <class T>
 // ---- general polygons ----------------------------------------------------------------------
 
 /// Exact even-odd classification against the closed chain v (any orientation, simple or not).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify_polygon(const Vec2<T>& p, std::span<const Vec2<T>> v) noexcept {
   if (!is_finite(p) || v.empty()) return Side::outside;
   int crossings = 0, winding = 0;
@@ -194,7 +194,7 @@ template <class T>
 
 /// Exact winding number of the closed chain v around p (positive for counter-clockwise loops);
 /// 0 for a non-finite p or a point on the chain (check classify first to tell them apart).
-template <class T>
+template <Real T>
 [[nodiscard]] inline int winding_number(const Vec2<T>& p, std::span<const Vec2<T>> v) noexcept {
   if (!is_finite(p) || v.empty()) return 0;
   int crossings = 0, winding = 0;
@@ -220,18 +220,18 @@ template <PointRange2 R>
   return winding_number(p, point_span(v));
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify(const Vec2<T>& p, const Polygon2<T>& poly) noexcept {
   return classify_polygon(p, std::span<const Vec2<T>>(poly.vertices));
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains(const Polygon2<T>& poly, const Vec2<T>& p) noexcept {
   return classify(p, poly) != Side::outside;
 }
 
 /// Even-odd over all rings (see the header comment).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify(const Vec2<T>& p, const PolygonWithHoles2<T>& poly) noexcept {
   if (!is_finite(p)) return Side::outside;
   int crossings = 0, winding = 0;
@@ -245,7 +245,7 @@ template <class T>
   return (crossings & 1) ? Side::inside : Side::outside;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains(const PolygonWithHoles2<T>& poly, const Vec2<T>& p) noexcept {
   return classify(p, poly) != Side::outside;
 }
@@ -254,7 +254,7 @@ template <class T>
 
 /// A slab decomposition of a set of rings for fast exact point-in-polygon queries (even-odd
 /// rule, the same answers as classify(p, PolygonWithHoles2) on the same rings).
-template <class T>
+template <Real T>
 class PolygonLocator2 {
  public:
   PolygonLocator2() = default;
@@ -403,9 +403,9 @@ class PolygonLocator2 {
 
 template <PointRange2 R>
 PolygonLocator2(const R&) -> PolygonLocator2<range_scalar_t<R>>;
-template <class T>
+template <Real T>
 PolygonLocator2(const Polygon2<T>&) -> PolygonLocator2<T>;
-template <class T>
+template <Real T>
 PolygonLocator2(const PolygonWithHoles2<T>&) -> PolygonLocator2<T>;
 
 }  // namespace locus

@@ -22,13 +22,13 @@
 // non-finite vertex are skipped. Empty meshes contain nothing (outside).
 
 #include <locus/config.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/side.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
-#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/plane.hpp>
 #include <locus/primitives/tetrahedron.hpp>
 
@@ -45,13 +45,13 @@ namespace locus {
 
 namespace detail {
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> drop_axis(const Vec3<T>& v, int k) noexcept {
   return k == 0 ? Vec2<T>{v.y, v.z} : (k == 1 ? Vec2<T>{v.z, v.x} : Vec2<T>{v.x, v.y});
 }
 
 /// Exact: p on the closed segment [a, b] in 3D (a point when a == b).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool on_closed_segment3(const Vec3<T>& a, const Vec3<T>& b,
                                              const Vec3<T>& p) noexcept {
   for (int i = 0; i < 3; ++i)
@@ -62,7 +62,7 @@ template <class T>
 }
 
 /// Exact: p on the closed triangle abc (a segment or point when degenerate).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool on_closed_triangle3(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
                                               const Vec3<T>& p) noexcept {
   if (orient3d(a, b, c, p) != Sign::zero) return false;
@@ -79,7 +79,7 @@ template <class T>
 }
 
 /// Sign of orient2d((a.y, a.z), (b.y, b.z), (q.y + e, q.z + e^2)) for infinitesimal e > 0.
-template <class T>
+template <Real T>
 [[nodiscard]] inline int perturbed_side_yz(const Vec3<T>& a, const Vec3<T>& b,
                                            const Vec3<T>& q) noexcept {
   const Sign s = orient2d(Vec2<T>{a.y, a.z}, Vec2<T>{b.y, b.z}, Vec2<T>{q.y, q.z});
@@ -91,7 +91,7 @@ template <class T>
 }
 
 /// Exact sign of dot(n, p) - c for finite inputs.
-template <class T>
+template <Real T>
 [[nodiscard]] inline int plane_side_exact(const Vec3<T>& n, T c, const Vec3<T>& p) noexcept {
   const double t0 = double(n.x) * double(p.x), t1 = double(n.y) * double(p.y),
                t2 = double(n.z) * double(p.z), cd = double(c);
@@ -108,7 +108,7 @@ template <class T>
   return exact_sign_of_sum(m);
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool valid_triangle(std::span<const Vec3<T>> v,
                                          const std::array<std::uint32_t, 3>& t) noexcept {
   return t[0] < v.size() && t[1] < v.size() && t[2] < v.size() && is_finite(v[t[0]]) &&
@@ -120,7 +120,7 @@ template <class T>
 // ---- tetrahedron -------------------------------------------------------------------------------
 
 /// Exact classification against a tetrahedron of either orientation.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify(const Vec3<T>& p, const Tetrahedron3<T>& t) noexcept {
   if (!is_finite(p)) return Side::outside;
   for (const Vec3<T>& v : t.v)
@@ -142,7 +142,7 @@ template <class T>
   return on_face ? Side::boundary : Side::inside;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains(const Tetrahedron3<T>& t, const Vec3<T>& p) noexcept {
   return classify(p, t) != Side::outside;
 }
@@ -150,7 +150,7 @@ template <class T>
 // ---- convex polyhedra --------------------------------------------------------------------------
 
 /// Exact classification against the intersection of the half-spaces dot(n, X) <= c.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify(const Vec3<T>& p, std::span<const Plane3<T>> planes) noexcept {
   if (!is_finite(p)) return Side::outside;
   bool on_plane = false;
@@ -163,13 +163,13 @@ template <class T>
   return on_plane ? Side::boundary : Side::inside;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains(std::span<const Plane3<T>> planes, const Vec3<T>& p) noexcept {
   return classify(p, planes) != Side::outside;
 }
 
 /// Exact classification against a closed convex mesh with outward normals (not checked).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify_convex(
     const Vec3<T>& p, std::span<const Vec3<T>> vertices,
     std::span<const std::array<std::uint32_t, 3>> triangles) noexcept {
@@ -187,7 +187,7 @@ template <class T>
 // ---- general closed meshes ---------------------------------------------------------------------
 
 /// Exact classification against a closed triangle mesh (see the header comment).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Side classify(
     const Vec3<T>& p, std::span<const Vec3<T>> vertices,
     std::span<const std::array<std::uint32_t, 3>> triangles) noexcept {
@@ -217,7 +217,7 @@ template <class T>
   return odd ? Side::inside : Side::outside;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains(std::span<const Vec3<T>> vertices,
                                    std::span<const std::array<std::uint32_t, 3>> triangles,
                                    const Vec3<T>& p) noexcept {

@@ -68,7 +68,7 @@ requires(M >= 2)
 }
 
 /// Default tolerance of affine_combination's weight check, relative to sum |w_i|.
-template <class T>
+template <Real T>
 inline constexpr T affine_weight_tol_v = T(16) * eps_v<T>;
 
 /// The result of affine_combination.

@@ -35,7 +35,7 @@
 namespace locus {
 
 /// 2 pi rounded to T (exactly twice pi_v<T>).
-template <class T>
+template <Real T>
 inline constexpr T two_pi_v = T(2) * pi_v<T>;
 
 /// Degrees to radians; multiples of 45 degrees map to exact multiples of pi_v/4.
@@ -71,7 +71,7 @@ template <Real T>
 
 namespace detail {
 // r in [-2 pi_v, 0) plus 2 pi_v can round up to 2 pi_v; keep the half-open interval.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T add_two_pi_below(T r) noexcept {
   const T s = r + two_pi_v<T>;
   return s < two_pi_v<T> ? s : std::nextafter(two_pi_v<T>, T(0));
@@ -177,29 +177,29 @@ template <Real T>
 // ---- solving triangles (appendix B) ------------------------------------------------------
 
 /// A solved triangle: sides a, b, c opposite angles alpha, beta, gamma (radians).
-template <class T>
+template <Real T>
 struct SolvedTriangle {
   T a, b, c;
   T alpha, beta, gamma;
 };
 
 /// The triangles (0, 1 or 2) determined by three parts; solution[0..count) are valid.
-template <class T>
+template <Real T>
 struct TriangleSolutions {
   int count;
   std::array<SolvedTriangle<T>, 2> solution;
 };
 
 namespace detail {
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool positive_side(T s) noexcept {
   return s > T(0) && is_finite(s);
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool open_angle(T t) noexcept {
   return t > T(0) && t < pi_v<T>;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline TriangleSolutions<T> one_triangle(const SolvedTriangle<T>& t) noexcept {
   TriangleSolutions<T> r{};
   r.count = 1;
@@ -208,7 +208,7 @@ template <class T>
 }
 // Sides b, c and the included angle alpha known: the two remaining angles by atan2 of the
 // apex coordinates (A at the origin, B = (c, 0), C = b (cos alpha, sin alpha)).
-template <class T>
+template <Real T>
 [[nodiscard]] inline SolvedTriangle<T> from_sas(T b, T alpha, T c, T a) noexcept {
   const T sa = std::sin(alpha), ca = std::cos(alpha);
   SolvedTriangle<T> t{};

@@ -36,7 +36,7 @@
 namespace locus {
 
 /// Default flatness tolerance of the barycentric functions (see the header comment).
-template <class T>
+template <Real T>
 inline constexpr T simplex_flat_tol_v = T(16) * eps_v<T>;
 
 /// Barycentric coordinates w.r.t. a K-vertex simplex: w[i] belongs to vertex i. valid = false
@@ -99,7 +99,7 @@ template <class T, int N>
   }
   return r;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T max3(T x, T y, T z) noexcept {
   return x < y ? (y < z ? z : y) : (x < z ? z : x);
 }

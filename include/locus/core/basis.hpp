@@ -42,7 +42,7 @@ namespace locus {
 
 /// Default of the scale-relative independence tolerance: the sine of the angle between a vector
 /// and the span of the others below which the vector counts as dependent.
-template <class T>
+template <Real T>
 inline constexpr T independence_tol_v = T(64) * eps_v<T>;
 
 /// Result of Gram-Schmidt on K vectors in N-D: basis[0..rank) orthonormal and spanning the

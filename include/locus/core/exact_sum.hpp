@@ -14,6 +14,8 @@
 // allocation. Callers decide the easy cases with a floating-point filter first, as
 // sign_dot_diff does here.
 
+#include <locus/core/scalar.hpp>
+
 #include <cmath>
 #include <span>
 
@@ -34,7 +36,7 @@ namespace detail {
 
 /// Exact sign of dot(b - a, d) (the order of a and b along direction d); inputs must be finite.
 /// A floating-point filter decides all but near-ties; the rest go to exact_sign_of_sum.
-template <class T>
+template <Real T>
 [[nodiscard]] inline int sign_dot_diff(T ax, T ay, T bx, T by, T dx, T dy) noexcept {
   // For T = float the products are exact in double and the filter bound covers the sums.
   const double p0 = double(bx) * double(dx), p1 = double(by) * double(dy);

@@ -51,9 +51,9 @@ struct Frame {
   }
 };
 
-template <class T>
+template <Real T>
 using Frame2 = Frame<T, 2>;
-template <class T>
+template <Real T>
 using Frame3 = Frame<T, 3>;
 using Frame2f = Frame2<float>;
 using Frame3f = Frame3<float>;

@@ -43,12 +43,12 @@
 namespace locus {
 
 /// The default near-singularity threshold on rcond for an n x n system: n * eps.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T default_rcond_tolerance(int n) noexcept {
   return T(n < 1 ? 1 : n) * eps_v<T>;
 }
 /// The default rank threshold for an R x C matrix: max(R, C) * eps (relative to max|a_ij|).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T default_rank_tolerance(int rows, int cols) noexcept {
   return T(rows > cols ? (rows < 1 ? 1 : rows) : (cols < 1 ? 1 : cols)) * eps_v<T>;
 }
@@ -57,7 +57,7 @@ template <class T>
 template <class T, class X>
 struct LinearSolution {
   Status status = Status::empty_input;  ///< ok, degenerate_input (singular), non_finite_input
-  X x;                 ///< the solution; zero when singular
+  X x;                                  ///< the solution; zero when singular
   T determinant;       ///< det(A) (0 when exactly singular, NaN for non-finite input)
   T rcond;             ///< reciprocal condition number estimate in [0, 1]
   bool singular;       ///< det == 0, or the solution would not be finite
@@ -80,7 +80,7 @@ struct Lu {
 };
 
 /// A partial-pivoting factorisation of a run-time n x n matrix; layout as in Lu, row-major.
-template <class T>
+template <Real T>
 struct LuDynamic {
   Status status = Status::empty_input;
   int n;
@@ -94,7 +94,7 @@ struct LuDynamic {
 
 namespace detail {
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool all_finite(const T* a, std::size_t count) noexcept {
   for (std::size_t i = 0; i < count; ++i)
     if (!is_finite(a[i])) return false;
@@ -104,7 +104,7 @@ template <class T>
 /// In-place P A = L U with partial pivoting on the row-major n x n array a. Returns the number
 /// of columns eliminated: n on success, k < n when column k had no nonzero pivot (then the
 /// factorisation stops and the matrix is exactly singular). sign receives det(P).
-template <class T>
+template <Real T>
 inline int lu_inplace(T* a, int n, int* perm, int& sign) noexcept {
   sign = 1;
   for (int i = 0; i < n; ++i) perm[i] = i;
@@ -135,7 +135,7 @@ inline int lu_inplace(T* a, int n, int* perm, int& sign) noexcept {
 }
 
 /// x = A^-1 b from the factors (b and x must not overlap).
-template <class T>
+template <Real T>
 inline void lu_solve(const T* lu, const int* perm, int n, const T* b, T* x) noexcept {
   for (int i = 0; i < n; ++i) {
     T s = b[perm[i]];
@@ -151,7 +151,7 @@ inline void lu_solve(const T* lu, const int* perm, int n, const T* b, T* x) noex
 
 /// z = A^-T c from the factors: A^T = U^T L^T P, so solve U^T w = c, L^T v = w, z = P^T v.
 /// w is scratch of size n; c, w and z must not overlap.
-template <class T>
+template <Real T>
 inline void lu_solve_transposed(const T* lu, const int* perm, int n, const T* c, T* w,
                                 T* z) noexcept {
   for (int i = 0; i < n; ++i) {
@@ -168,7 +168,7 @@ inline void lu_solve_transposed(const T* lu, const int* perm, int n, const T* c,
 }
 
 /// Maximum absolute column sum (the matrix 1-norm) of a row-major n x n array.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T norm1(const T* a, int n) noexcept {
   T best = T(0);
   for (int c = 0; c < n; ++c) {
@@ -181,7 +181,7 @@ template <class T>
 
 /// Hager's estimate of ||A^-1||_1 (a lower bound, usually exact within a factor 3) with
 /// Higham's extra test vector. work holds 5 n scalars.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T inverse_norm1_estimate(const T* lu, const int* perm, int n,
                                               T* work) noexcept {
   T* x = work;
@@ -220,7 +220,7 @@ template <class T>
 }
 
 /// Shared factorisation driver: factors `lu` (holding A on entry) and fills the summary.
-template <class T>
+template <Real T>
 inline void factor_summary(T* lu, int n, int* perm, T* work, T rcond_tolerance, Status& status,
                            T& det, T& rcond, bool& singular, bool& near_singular) noexcept {
   const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
@@ -254,7 +254,7 @@ inline void factor_summary(T* lu, int n, int* perm, T* work, T rcond_tolerance, 
 }
 
 /// Complete-pivoting elimination rank of a row-major rows x cols array (destroyed).
-template <class T>
+template <Real T>
 [[nodiscard]] inline int rank_inplace(T* a, int rows, int cols, T tolerance) noexcept {
   T scale = T(0);
   for (int i = 0; i < rows * cols; ++i) {
@@ -319,14 +319,14 @@ template <class T, int N>
 
 /// Solves the 2x2 system a x = b by Cramer's rule. See the top comment for singular /
 /// near_singular (rcond in the infinity norm, threshold rcond_tolerance, default 2 eps).
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinearSolution<T, Vec2<T>> solve_cramer(
     const Mat2<T>& a, const Vec2<T>& b,
     T rcond_tolerance = default_rcond_tolerance<T>(2)) noexcept {
   return detail::cramer(a, b, rcond_tolerance);
 }
 /// Solves the 3x3 system a x = b by Cramer's rule (default rcond_tolerance 3 eps).
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinearSolution<T, Vec3<T>> solve_cramer(
     const Mat3<T>& a, const Vec3<T>& b,
     T rcond_tolerance = default_rcond_tolerance<T>(3)) noexcept {
@@ -438,12 +438,12 @@ template <class T, int R, int C>
 // ---- run-time size -------------------------------------------------------------------------
 
 /// A negative tolerance argument of a run-time solver selects the documented default.
-template <class T>
+template <Real T>
 inline constexpr T use_default_tolerance = T(-1);
 
 /// Factors the row-major n x n matrix a (a.size() == n * n). rcond_tolerance < 0 selects
 /// default_rcond_tolerance<T>(n).
-template <class T>
+template <Real T>
 [[nodiscard]] inline LuDynamic<T> lu_factor(std::span<const T> a, int n,
                                             T rcond_tolerance = use_default_tolerance<T>) {
   LOCUS_ASSERT(n >= 0 && a.size() == static_cast<std::size_t>(n) * static_cast<std::size_t>(n),
@@ -462,7 +462,7 @@ template <class T>
                          f.determinant, f.rcond, f.singular, f.near_singular);
   return f;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline LuDynamic<T> lu_factor(const std::vector<T>& a, int n,
                                             T rcond_tolerance = use_default_tolerance<T>) {
   return lu_factor(std::span<const T>(a), n, rcond_tolerance);
@@ -470,7 +470,7 @@ template <class T>
 
 /// Solves with a factorisation for the n x nrhs row-major block b; returns the n x nrhs
 /// solution block (zeros when the factorisation is singular).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::vector<T> solve(const LuDynamic<T>& f, std::span<const T> b,
                                           int nrhs = 1) {
   const int n = f.n;
@@ -489,7 +489,7 @@ template <class T>
   }
   return x;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::vector<T> solve(const LuDynamic<T>& f, const std::vector<T>& b,
                                           int nrhs = 1) {
   return solve(f, std::span<const T>(b), nrhs);
@@ -497,7 +497,7 @@ template <class T>
 
 /// Solves the row-major n x n system a X = b for nrhs right-hand sides (b is n x nrhs
 /// row-major) by Gaussian elimination with partial pivoting.
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinearSolution<T, std::vector<T>> solve(
     std::span<const T> a, int n, std::span<const T> b, int nrhs = 1,
     T rcond_tolerance = use_default_tolerance<T>) {
@@ -523,7 +523,7 @@ template <class T>
   }
   return s;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinearSolution<T, std::vector<T>> solve(
     const std::vector<T>& a, int n, const std::vector<T>& b, int nrhs = 1,
     T rcond_tolerance = use_default_tolerance<T>) {
@@ -531,18 +531,18 @@ template <class T>
 }
 
 /// Determinant of the row-major n x n matrix a by elimination (1 for n == 0, NaN if not finite).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T determinant(std::span<const T> a, int n) {
   return lu_factor(a, n).determinant;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline T determinant(const std::vector<T>& a, int n) {
   return determinant(std::span<const T>(a), n);
 }
 
 /// Inverse of the row-major n x n matrix a (row-major); std::nullopt when singular, not finite
 /// or overflowing.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<std::vector<T>> inverse(std::span<const T> a, int n) {
   std::vector<T> id(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), T(0));
   for (int i = 0; i < n; ++i) id[static_cast<std::size_t>(i * n + i)] = T(1);
@@ -550,14 +550,14 @@ template <class T>
   if (s.singular) return std::nullopt;
   return std::move(s.x);
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<std::vector<T>> inverse(const std::vector<T>& a, int n) {
   return inverse(std::span<const T>(a), n);
 }
 
 /// Numerical rank of the row-major rows x cols matrix a (complete pivoting; see top comment).
 /// rank_tolerance < 0 selects default_rank_tolerance<T>(rows, cols); -1 for non-finite input.
-template <class T>
+template <Real T>
 [[nodiscard]] inline int rank(std::span<const T> a, int rows, int cols,
                               T rank_tolerance = use_default_tolerance<T>) {
   LOCUS_ASSERT(rows >= 0 && cols >= 0 &&
@@ -567,7 +567,7 @@ template <class T>
   std::vector<T> w(a.begin(), a.end());
   return detail::rank_inplace(w.data(), rows, cols, rank_tolerance);
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline int rank(const std::vector<T>& a, int rows, int cols,
                               T rank_tolerance = use_default_tolerance<T>) {
   return rank(std::span<const T>(a), rows, cols, rank_tolerance);

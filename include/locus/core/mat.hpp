@@ -65,9 +65,12 @@ struct Mat {
   }
 };
 
-template <class T> using Mat2 = Mat<T, 2, 2>;
-template <class T> using Mat3 = Mat<T, 3, 3>;
-template <class T> using Mat4 = Mat<T, 4, 4>;
+template <Real T>
+using Mat2 = Mat<T, 2, 2>;
+template <Real T>
+using Mat3 = Mat<T, 3, 3>;
+template <Real T>
+using Mat4 = Mat<T, 4, 4>;
 using Mat2f = Mat2<float>;
 using Mat3f = Mat3<float>;
 using Mat4f = Mat4<float>;
@@ -188,18 +191,18 @@ template <class T, int R, int C>
 }
 
 /// The skew-symmetric matrix [v]x with [v]x * w = cross(v, w).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Mat3<T> skew(const Vec3<T>& v) noexcept {
   return {{{T(0), -v.z, v.y}, {v.z, T(0), -v.x}, {-v.y, v.x, T(0)}}};
 }
 
 // ---- determinants and inverses (closed form, sizes 2..4) ----------------------------------
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T determinant(const Mat2<T>& m) noexcept {
   return m.a[0][0] * m.a[1][1] - m.a[0][1] * m.a[1][0];
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T determinant(const Mat3<T>& m) noexcept {
   return m.a[0][0] * (m.a[1][1] * m.a[2][2] - m.a[1][2] * m.a[2][1]) -
          m.a[0][1] * (m.a[1][0] * m.a[2][2] - m.a[1][2] * m.a[2][0]) +
@@ -207,11 +210,11 @@ template <class T>
 }
 
 /// The adjugate (transposed cofactor matrix): adjugate(m) * m = det(m) I.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Mat2<T> adjugate(const Mat2<T>& m) noexcept {
   return {{{m.a[1][1], -m.a[0][1]}, {-m.a[1][0], m.a[0][0]}}};
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Mat3<T> adjugate(const Mat3<T>& m) noexcept {
   Mat3<T> r{};
   for (int i = 0; i < 3; ++i)
@@ -222,7 +225,7 @@ template <class T>
     }
   return r;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Mat4<T> adjugate(const Mat4<T>& m) noexcept {
   // Laplace expansion by complementary 2x2 minors of the top and bottom row pairs.
   const auto& a = m.a;
@@ -251,7 +254,7 @@ template <class T>
   r.a[3][3] = a[2][0] * s3 - a[2][1] * s1 + a[2][2] * s0;
   return r;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T determinant(const Mat4<T>& m) noexcept {
   const Mat4<T> adj = adjugate(m);
   return m.a[0][0] * adj.a[0][0] + m.a[0][1] * adj.a[1][0] + m.a[0][2] * adj.a[2][0] +
@@ -261,8 +264,8 @@ template <class T>
 /// Inverse by the adjugate; std::nullopt when det is 0 or the result is not finite. For
 /// ill-conditioned systems prefer the pivoting solvers of core/linear_system.hpp.
 template <class T, int N>
-  requires(N >= 2 && N <= 4)
-[[nodiscard]] constexpr std::optional<Mat<T, N, N>> inverse(const Mat<T, N, N>& m) noexcept {
+requires(N >= 2 && N <= 4)
+    [[nodiscard]] constexpr std::optional<Mat<T, N, N>> inverse(const Mat<T, N, N>& m) noexcept {
   const T det = determinant(m);
   if (det == T(0) || !is_finite(det)) return std::nullopt;
   Mat<T, N, N> inv = adjugate(m) * (T(1) / det);

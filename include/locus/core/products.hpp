@@ -35,8 +35,6 @@
 
 namespace locus {
 
-
-
 /// Scalar triple product a . (b x c) = det[a b c]: the signed volume of the parallelepiped
 /// spanned by a, b, c; positive for a right-handed triple. Invariant under cyclic permutation.
 template <Real T>

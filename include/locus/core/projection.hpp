@@ -109,8 +109,8 @@ template <class T, int N>
 /// The point (h_0, ..., h_{M-2}) / h_{M-1}; std::nullopt when the weight is 0 or the result is
 /// not finite (a point at infinity).
 template <class T, int M>
-  requires(M >= 2)
-[[nodiscard]] constexpr std::optional<Vec<T, M - 1>> dehomogenize(const Vec<T, M>& h) noexcept {
+requires(M >= 2)
+    [[nodiscard]] constexpr std::optional<Vec<T, M - 1>> dehomogenize(const Vec<T, M>& h) noexcept {
   const T w = h[M - 1];
   if (w == T(0) || !is_finite(w)) return std::nullopt;
   Vec<T, M - 1> p{};
@@ -122,8 +122,7 @@ template <class T, int M>
 /// The image of point p under the homogeneous matrix m: m (p, 1) divided by its weight;
 /// std::nullopt when the weight is 0 (p maps to infinity) or the result is not finite.
 template <class T, int M>
-  requires(M >= 2)
-[[nodiscard]] constexpr std::optional<Vec<T, M - 1>> apply_projective(
+requires(M >= 2) [[nodiscard]] constexpr std::optional<Vec<T, M - 1>> apply_projective(
     const Mat<T, M, M>& m, const Vec<T, M - 1>& p) noexcept {
   Vec<T, M> h{};
   for (int i = 0; i < M - 1; ++i) h[i] = p[i];
@@ -142,8 +141,7 @@ struct ProjectedPoint {
 /// Applies a camera/clip matrix to p and divides by w, reporting w <= 0 (on or behind the eye
 /// plane) and non-finite results with in_front = false.
 template <class T, int M>
-  requires(M >= 2)
-[[nodiscard]] constexpr ProjectedPoint<T, M - 1> project_point(
+requires(M >= 2) [[nodiscard]] constexpr ProjectedPoint<T, M - 1> project_point(
     const Mat<T, M, M>& m, const Vec<T, M - 1>& p) noexcept {
   Vec<T, M> h{};
   for (int i = 0; i < M - 1; ++i) h[i] = p[i];
@@ -166,7 +164,7 @@ enum class DepthRange : std::uint8_t {
 
 /// Right-handed view matrix: world to camera coordinates, camera at `eye` looking down -z
 /// towards `target`, `up` projected to +y (header comment for std::nullopt).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Mat4<T>> look_at(const Vec3<T>& eye, const Vec3<T>& target,
                                                     const Vec3<T>& up) noexcept {
   if (!is_finite(eye) || !is_finite(target) || !is_finite(up)) return std::nullopt;
@@ -181,7 +179,7 @@ template <class T>
 }
 
 /// Perspective frustum to clip space (glFrustum-style; header comment).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Mat4<T>> perspective_frustum(
     T left, T right, T bottom, T top, T z_near, T z_far,
     DepthRange depth = DepthRange::minus_one_to_one) noexcept {
@@ -206,7 +204,7 @@ template <class T>
 
 /// Symmetric perspective frustum from the vertical field of view `fovy` (radians) and the
 /// width/height `aspect` (gluPerspective-style).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Mat4<T>> perspective_fov(
     T fovy, T aspect, T z_near, T z_far, DepthRange depth = DepthRange::minus_one_to_one) noexcept {
   if (!(fovy > T(0)) || !(fovy < pi_v<T>) || !(aspect > T(0)) || !is_finite(aspect))
@@ -217,7 +215,7 @@ template <class T>
 
 /// Orthographic box [left, right] x [bottom, top] x [-z_far, -z_near] (view space) to clip space
 /// (glOrtho-style); z_near may be negative, z_near != z_far.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Mat4<T>> orthographic_box(
     T left, T right, T bottom, T top, T z_near, T z_far,
     DepthRange depth = DepthRange::minus_one_to_one) noexcept {
@@ -245,7 +243,7 @@ template <class T>
 /// std::nullopt when c = b, d = a, or the result is not finite. Evaluated as the product of the
 /// two ratios (c - a)/(c - b) and (d - b)/(d - a), so tiny or huge positions do not underflow or
 /// overflow in the products.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr std::optional<T> cross_ratio(T a, T b, T c, T d) noexcept {
   const T cb = c - b, da = d - a;
   if (cb == T(0) || da == T(0) || !is_finite(cb) || !is_finite(da)) return std::nullopt;

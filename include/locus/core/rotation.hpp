@@ -39,7 +39,7 @@
 namespace locus {
 
 /// Right-handed rotation by `angle` radians about the unit vector `axis`.
-template <class T>
+template <Real T>
 struct AxisAngle {
   Vec3<T> axis;
   T angle;
@@ -50,7 +50,7 @@ enum class EulerOrder : std::uint8_t { xyz, xzy, yxz, yzx, zxy, zyx };
 
 /// Euler (Tait-Bryan) angles in radians. `unique` is false when the middle angle is at +-90
 /// degrees (gimbal lock); the angles are then the canonical solution with angles[2] == 0.
-template <class T>
+template <Real T>
 struct EulerAngles {
   EulerOrder order;
   Vec3<T> angles;
@@ -59,7 +59,7 @@ struct EulerAngles {
 
 /// The default gimbal-lock tolerance on cos(middle angle): 16 eps (a few roundings of entries
 /// of magnitude 1).
-template <class T>
+template <Real T>
 inline constexpr T default_lock_tolerance = T(16) * eps_v<T>;
 
 namespace detail {
@@ -88,7 +88,7 @@ struct EulerAxes {
 }
 
 /// Rotation matrix about coordinate axis `axis` (0, 1, 2) by angle t.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Mat3<T> axis_rotation(int axis, T t) noexcept {
   const T c = std::cos(t), s = std::sin(t);
   const int a = (axis + 1) % 3, b = (axis + 2) % 3;  // (a, b) is a cyclic pair after `axis`
@@ -100,7 +100,7 @@ template <class T>
   return m;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline Quat<T> axis_quat(int axis, T t) noexcept {
   Quat<T> q{std::cos(t / T(2)), T(0), T(0), T(0)};
   const T s = std::sin(t / T(2));
@@ -116,7 +116,7 @@ template <class T>
 
 /// Unit quaternion of an axis-angle rotation; the axis need not be unit. Zero or non-finite
 /// axis, or non-finite angle: the identity.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Quat<T> to_quat(const AxisAngle<T>& aa) noexcept {
   const Vec3<T> u = normalize(aa.axis);
   if (u == Vec3<T>{} || !is_finite(aa.angle)) return Quat<T>::identity();
@@ -129,7 +129,7 @@ template <class T>
 /// is never below 1/2 and the result is accurate for every rotation (including angle pi).
 /// The output has w >= 0. Non-rotation input is normalised through the quaternion; a zero or
 /// non-finite matrix gives the identity.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Quat<T> to_quat(const Mat3<T>& r) noexcept {
   if (!is_finite(r)) return Quat<T>::identity();
   const auto& m = r.a;
@@ -157,7 +157,7 @@ template <class T>
 }
 
 /// Unit quaternion of Euler angles: the product q_A(a0) q_B(a1) q_C(a2).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Quat<T> to_quat(const EulerAngles<T>& e) noexcept {
   if (!is_finite(e.angles)) return Quat<T>::identity();
   const detail::EulerAxes ax = detail::euler_axes(e.order);
@@ -169,7 +169,7 @@ template <class T>
 
 /// Rotation matrix of a quaternion. Any nonzero q is accepted: the formula divides by |q|^2,
 /// so q and s q give the same rotation. Zero or non-finite q: the identity.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Mat3<T> to_matrix(const Quat<T>& q0) noexcept {
   const Quat<T> q = normalize(q0);
   const T xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
@@ -183,7 +183,7 @@ template <class T>
 /// Rotation matrix of an axis-angle pair by Rodrigues' formula
 /// R = I + sin(t) K + 2 sin^2(t/2) K^2 with K = skew(unit axis); the half-angle form keeps
 /// 1 - cos(t) accurate for tiny t. Zero or non-finite axis, or non-finite angle: the identity.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Mat3<T> to_matrix(const AxisAngle<T>& aa) noexcept {
   const Vec3<T> u = normalize(aa.axis);
   if (u == Vec3<T>{} || !is_finite(aa.angle)) return Mat3<T>::identity();
@@ -193,7 +193,7 @@ template <class T>
 }
 
 /// Rotation matrix of Euler angles: R_A(a0) R_B(a1) R_C(a2). Non-finite angles: the identity.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Mat3<T> to_matrix(const EulerAngles<T>& e) noexcept {
   if (!is_finite(e.angles)) return Mat3<T>::identity();
   const detail::EulerAxes ax = detail::euler_axes(e.order);
@@ -205,7 +205,7 @@ template <class T>
 
 /// Axis-angle of a quaternion, angle in [0, pi], unit axis. The angle is 2 atan2(|v|, |w|),
 /// accurate near 0 and near pi. The identity (and zero or non-finite q) gives {(1, 0, 0), 0}.
-template <class T>
+template <Real T>
 [[nodiscard]] inline AxisAngle<T> to_axis_angle(const Quat<T>& q0) noexcept {
   Quat<T> q = normalize(q0);
   if (q.w < T(0)) q = -q;
@@ -215,7 +215,7 @@ template <class T>
 }
 
 /// Axis-angle of a rotation matrix (through Shepperd's quaternion, robust near 0 and pi).
-template <class T>
+template <Real T>
 [[nodiscard]] inline AxisAngle<T> to_axis_angle(const Mat3<T>& r) noexcept {
   return to_axis_angle(to_quat(r));
 }
@@ -225,7 +225,7 @@ template <class T>
 /// Euler angles of a rotation matrix in the given order. See the top comment for the
 /// convention, ranges and gimbal-lock handling (unique == false when cos(a1) <= lock_tolerance).
 /// A non-finite matrix gives zero angles with unique == false.
-template <class T>
+template <Real T>
 [[nodiscard]] inline EulerAngles<T> to_euler(
     const Mat3<T>& r, EulerOrder order, T lock_tolerance = default_lock_tolerance<T>) noexcept {
   if (!is_finite(r)) return {order, Vec3<T>{}, false};
@@ -248,7 +248,7 @@ template <class T>
 }
 
 /// Euler angles of a quaternion (through its rotation matrix).
-template <class T>
+template <Real T>
 [[nodiscard]] inline EulerAngles<T> to_euler(
     const Quat<T>& q, EulerOrder order, T lock_tolerance = default_lock_tolerance<T>) noexcept {
   return to_euler(to_matrix(q), order, lock_tolerance);
@@ -258,7 +258,7 @@ template <class T>
 
 /// The angle in [0, pi] of the rotation taking a to b (a, b unit): 2 atan2(|a - b|, |a + b|)
 /// on the shorter arc, accurate for tiny and near-pi angles.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T angle_between(const Quat<T>& a, const Quat<T>& b) noexcept {
   const Quat<T> bb = dot(a, b) < T(0) ? -b : b;
   return T(4) * std::atan2(norm(a - bb), norm(a + bb));
@@ -266,7 +266,7 @@ template <class T>
 
 /// Interpolates between two rotation matrices by quaternion slerp along the shorter arc:
 /// constant angular velocity about a fixed axis; t = 0 gives a, t = 1 gives b (to rounding).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Mat3<T> slerp(const Mat3<T>& a, const Mat3<T>& b, T t) noexcept {
   return to_matrix(slerp(to_quat(a), to_quat(b), t));
 }
@@ -274,12 +274,12 @@ template <class T>
 // ---- repairing drifted matrices -----------------------------------------------------------
 
 /// Result of nearest_rotation / orthonormalize_rotation.
-template <class T>
+template <Real T>
 struct RotationFix {
   Status status =
       Status::empty_input;  ///< ok, degenerate_input (det <= 0 or rank < 3), non_finite_input
-  Mat3<T> rotation;  ///< the rotation (identity unless status is ok)
-  int iterations;    ///< Newton steps taken (0 for Gram-Schmidt)
+  Mat3<T> rotation;         ///< the rotation (identity unless status is ok)
+  int iterations;           ///< Newton steps taken (0 for Gram-Schmidt)
 };
 
 /// The rotation nearest to m in the Frobenius norm: the orthogonal polar factor of m = R S
@@ -288,7 +288,7 @@ struct RotationFix {
 /// (Higham), in double for float input, until the update is at rounding level. Needs
 /// det(m) > 0 (else the polar factor is a reflection): otherwise degenerate_input and the
 /// identity. At most 50 iterations (limit_exceeded, best so far, never seen for det > 0).
-template <class T>
+template <Real T>
 [[nodiscard]] inline RotationFix<T> nearest_rotation(const Mat3<T>& m) noexcept {
   using C = compute_t<T>;
   if (!is_finite(m)) return {Status::non_finite_input, Mat3<T>::identity(), 0};
@@ -332,7 +332,7 @@ template <class T>
 /// result is right-handed). Biased towards column 0, unlike nearest_rotation. det(m) <= 0 (a
 /// reflection or a singular matrix) or columns 0 and 1 dependent: degenerate_input and the
 /// identity.
-template <class T>
+template <Real T>
 [[nodiscard]] inline RotationFix<T> orthonormalize_rotation(const Mat3<T>& m) noexcept {
   if (!is_finite(m)) return {Status::non_finite_input, Mat3<T>::identity(), 0};
   // Orientation test on unit columns, so that tiny or huge scales cannot underflow/overflow it.

@@ -7,6 +7,7 @@
 // so in its top comment.
 
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <type_traits>
 
@@ -16,29 +17,42 @@ namespace locus {
 template <class T>
 concept Real = std::is_same_v<T, float> || std::is_same_v<T, double>;
 
-/// The internal computation type for numerically delicate code: double for float, else T.
+/// The coefficient types of the few value types that are exact-safe (Polynomial): any type with
+/// field arithmetic, so that tests can instantiate them with rationals. Everything else takes
+/// Real; `class T` is kept for parameters that are not scalars (point and range types).
 template <class T>
+concept Field = requires(T a, T b) {
+  { a + b } -> std::convertible_to<T>;
+  { a - b } -> std::convertible_to<T>;
+  { a* b } -> std::convertible_to<T>;
+  { a / b } -> std::convertible_to<T>;
+  { a < b } -> std::convertible_to<bool>;
+  T(0);
+};
+
+/// The internal computation type for numerically delicate code: double for float, else T.
+template <Real T>
 using compute_t = std::conditional_t<std::is_same_v<T, float>, double, T>;
 
 /// Machine epsilon of T (distance from 1 to the next representable value).
-template <class T>
+template <Real T>
 inline constexpr T eps_v = std::numeric_limits<T>::epsilon();
 
-template <class T>
+template <Real T>
 inline constexpr T pi_v = static_cast<T>(3.14159265358979323846264338327950288L);
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T sqr(T x) noexcept {
   return x * x;
 }
 
 /// True when x is neither NaN nor infinite (usable in constexpr contexts).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_finite(T x) noexcept {
   return x == x && x - x == T(0);
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T clamp(T x, T lo, T hi) noexcept {
   return x < lo ? lo : (hi < x ? hi : x);
 }
@@ -47,7 +61,7 @@ template <class T>
 /// at the ends of the range m f may fall short of 1 or reach 4); 1 for m = 0 or a non-finite m.
 /// Scaling by f is exact while the scaled values stay normal: algorithms whose answer is
 /// invariant under scaling use it to bring extreme input to magnitudes near 1.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T normalising_scale(T m) noexcept {
   if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return T(1);
   int e = 0;  // m = x 2^e with x in [0.5, 1)

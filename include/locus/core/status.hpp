@@ -29,15 +29,24 @@ enum class Status : std::uint8_t {
 /// A short lower-case name for a status ("ok", "non_finite_input", ...).
 [[nodiscard]] constexpr std::string_view to_string(Status s) noexcept {
   switch (s) {
-    case Status::ok: return "ok";
-    case Status::empty_input: return "empty_input";
-    case Status::degenerate_input: return "degenerate_input";
-    case Status::non_finite_input: return "non_finite_input";
-    case Status::invalid_topology: return "invalid_topology";
-    case Status::invalid_input: return "invalid_input";
-    case Status::parse_error: return "parse_error";
-    case Status::io_error: return "io_error";
-    case Status::limit_exceeded: return "limit_exceeded";
+    case Status::ok:
+      return "ok";
+    case Status::empty_input:
+      return "empty_input";
+    case Status::degenerate_input:
+      return "degenerate_input";
+    case Status::non_finite_input:
+      return "non_finite_input";
+    case Status::invalid_topology:
+      return "invalid_topology";
+    case Status::invalid_input:
+      return "invalid_input";
+    case Status::parse_error:
+      return "parse_error";
+    case Status::io_error:
+      return "io_error";
+    case Status::limit_exceeded:
+      return "limit_exceeded";
   }
   return "unknown";
 }

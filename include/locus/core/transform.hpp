@@ -50,8 +50,10 @@ struct Affine {
   }
 };
 
-template <class T> using Affine2 = Affine<T, 2>;
-template <class T> using Affine3 = Affine<T, 3>;
+template <Real T>
+using Affine2 = Affine<T, 2>;
+template <Real T>
+using Affine3 = Affine<T, 3>;
 using Affine2f = Affine2<float>;
 using Affine3f = Affine3<float>;
 using Affine2d = Affine2<double>;
@@ -64,7 +66,7 @@ using Affine3d = Affine3<double>;
 /// measure 1 / cond_F <= 6 eps; an inverse there would have no correct digits. Genuine maps
 /// above the threshold invert with relative error about cond * eps. Pass 0 to reject only an
 /// exactly zero determinant.
-template <class T>
+template <Real T>
 inline constexpr T affine_singular_tol_v = T(32) * eps_v<T>;
 
 namespace detail {
@@ -160,12 +162,12 @@ template <class T, int N>
 
 /// The affine map of a homogeneous 3x3 matrix whose last row is (0, 0, w), w != 0 (the matrix
 /// is divided by w). std::nullopt for a projective last row, w = 0 or non-finite entries.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Affine2<T>> to_affine(const Mat3<T>& m) noexcept {
   return detail::to_affine_impl<T, 2>(m);
 }
 /// The affine map of a homogeneous 4x4 matrix whose last row is (0, 0, 0, w), w != 0.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Affine3<T>> to_affine(const Mat4<T>& m) noexcept {
   return detail::to_affine_impl<T, 3>(m);
 }
@@ -219,8 +221,8 @@ template <class T, int N>
 
 /// The cofactor matrix cof(m) = transpose(adjugate(m)) = det(m) * m^{-T}; defined for every m.
 template <class T, int N>
-  requires(N >= 2 && N <= 4)
-[[nodiscard]] constexpr Mat<T, N, N> cofactor_matrix(const Mat<T, N, N>& m) noexcept {
+requires(N >= 2 && N <= 4)
+    [[nodiscard]] constexpr Mat<T, N, N> cofactor_matrix(const Mat<T, N, N>& m) noexcept {
   return transpose(adjugate(m));
 }
 
@@ -251,26 +253,26 @@ template <class T, int N>
 }
 
 /// The normal cross(t0, t1) of a surface with tangents t0, t1 (right-handed, not normalised).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> normal_from_tangents(const Vec3<T>& t0,
                                                      const Vec3<T>& t1) noexcept {
   return cross(t0, t1);
 }
 /// The normal of the transformed surface from the transformed tangents: cross(L t0, L t1) =
 /// cof(L) cross(t0, t1). Follows the tangents' orientation (flips under reflections).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> normal_from_tangents(const Affine3<T>& a, const Vec3<T>& t0,
                                                      const Vec3<T>& t1) noexcept {
   return cross(a.linear * t0, a.linear * t1);
 }
 /// The normal (t.y, -t.x) of a 2D curve with tangent t: to the right of the direction of travel,
 /// i.e. outward for a counter-clockwise boundary. Not normalised.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> normal_from_tangent(const Vec2<T>& t) noexcept {
   return {t.y, -t.x};
 }
 /// The normal of the transformed curve: normal_from_tangent(L t) = cof(L) normal_from_tangent(t).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> normal_from_tangent(const Affine2<T>& a,
                                                     const Vec2<T>& t) noexcept {
   return normal_from_tangent(Vec2<T>(a.linear * t));
@@ -285,33 +287,33 @@ template <class T, int N>
 }
 
 /// 2D rotation about the origin by `angle` radians, counter-clockwise for angle > 0 (fig. 3.21).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Affine2<T> rotation_2d(T angle) noexcept {
   const T c = std::cos(angle), s = std::sin(angle);
   return {{{{c, -s}, {s, c}}}, Vec2<T>{}};
 }
 /// 2D rotation about `center` by `angle` radians, counter-clockwise. Inverse: angle -> -angle.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Affine2<T> rotation(const Vec2<T>& center,
                                          std::type_identity_t<T> angle) noexcept {
   return detail::fixing(rotation_2d(angle).linear, center);
 }
 
 /// 3D rotation about the x axis: y towards z for angle > 0 (counter-clockwise seen from +x).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Affine3<T> rotation_about_x(T angle) noexcept {
   const T c = std::cos(angle), s = std::sin(angle);
   return {{{{T(1), T(0), T(0)}, {T(0), c, -s}, {T(0), s, c}}}, Vec3<T>{}};
 }
 /// 3D rotation about the y axis: z towards x for angle > 0 (counter-clockwise seen from +y).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Affine3<T> rotation_about_y(T angle) noexcept {
   const T c = std::cos(angle), s = std::sin(angle);
   return {{{{c, T(0), s}, {T(0), T(1), T(0)}, {-s, T(0), c}}}, Vec3<T>{}};
 }
 /// 3D rotation about the z axis: x towards y for angle > 0 (counter-clockwise seen from +z,
 /// figure 4.11).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Affine3<T> rotation_about_z(T angle) noexcept {
   const T c = std::cos(angle), s = std::sin(angle);
   return {{{{c, -s, T(0)}, {s, c, T(0)}, {T(0), T(0), T(1)}}}, Vec3<T>{}};
@@ -321,7 +323,7 @@ template <class T>
 /// (figures 4.12, 4.13), counter-clockwise when the axis points towards the viewer. The axis is
 /// normalised; a zero axis gives the identity, a non-finite one the all-NaN map. Linear part
 /// (Rodrigues): cos(a) I + sin(a) [u]x + (1 - cos(a)) u u^T. Inverse: angle -> -angle.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Affine3<T> rotation(const Vec3<T>& point, const Vec3<T>& axis,
                                          std::type_identity_t<T> angle) noexcept {
   if (!is_finite(axis)) return detail::nan_affine<T, 3>();
@@ -435,7 +437,7 @@ template <class T, int N>
 
 /// 2D shear fixing the line through `point` along `dir`; points to the left of dir (n = perp of
 /// dir) move along +dir: shear({0,0}, {1,0}, a) is (x, y) -> (x + tan(a) y, y) (figure 4.23).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Affine2<T> shear(const Vec2<T>& point, const Vec2<T>& dir,
                                       std::type_identity_t<T> angle) noexcept {
   return shear(point, perp(dir), dir, angle);

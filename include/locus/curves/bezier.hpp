@@ -48,9 +48,9 @@ struct BezierCurve {
   std::vector<Vec<T, N>> control;
 };
 
-template <class T>
+template <Real T>
 using BezierCurve2 = BezierCurve<T, 2>;
-template <class T>
+template <Real T>
 using BezierCurve3 = BezierCurve<T, 3>;
 
 namespace detail {
@@ -89,7 +89,7 @@ template <class T, class V>
 }
 
 /// The parameter clamped to [lo, hi]; NaN stays NaN.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T curve_clamp(T t, T lo, T hi) noexcept {
   return t < lo ? lo : (hi < t ? hi : t);
 }

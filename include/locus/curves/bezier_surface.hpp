@@ -101,7 +101,7 @@ void bezier_value_derivative(V* b, int n, T t, V& value, V& deriv) noexcept {
 /// The unit normal from the partials, with the collapsed-edge fallback described above.
 /// u_low / v_low say whether the parameter lies in the lower half of its range (the sign of the
 /// limit normal depends on which edge collapsed).
-template <class T>
+template <Real T>
 [[nodiscard]] Vec3<T> surface_normal(const SurfaceDerivatives<T, 3>& s, bool u_low,
                                      bool v_low) noexcept {
   const T k = T(64) * eps_v<T>;
@@ -179,7 +179,7 @@ template <class T, int N>
 }
 
 /// The unit normal normalize(du x dv), with the collapsed-edge fallback (see the header).
-template <class T>
+template <Real T>
 [[nodiscard]] Vec3<T> normal_at(const BezierPatch<T, 3>& p, T u, T v) noexcept {
   const SurfaceDerivatives<T, 3> s = partials(p, u, v);
   return detail::surface_normal(s, !(u > T(0.5)), !(v > T(0.5)));
@@ -259,7 +259,7 @@ void triangle_level(V* b, int m, T u, T v, T w) noexcept {
                                        w * b[triangle_index(m, i, j)];
 }
 
-template <class T>
+template <Real T>
 void clamp_barycentric(T& u, T& v) noexcept {
   u = u < T(0) ? T(0) : u;
   v = v < T(0) ? T(0) : v;
@@ -363,7 +363,7 @@ template <class T, int N>
 }
 
 /// normalize(du x dv): the unit normal, the zero vector where du x dv vanishes (64 eps relative).
-template <class T>
+template <Real T>
 [[nodiscard]] Vec3<T> normal_at(const BezierTriangle<T, 3>& p, T u, T v) noexcept {
   const SurfaceDerivatives<T, 3> s = partials(p, u, v);
   const Vec3<T> n = cross(s.du, s.dv);

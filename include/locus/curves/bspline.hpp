@@ -49,9 +49,9 @@ struct BSplineCurve {
   std::vector<T> knots;
 };
 
-template <class T>
+template <Real T>
 using BSplineCurve2 = BSplineCurve<T, 2>;
-template <class T>
+template <Real T>
 using BSplineCurve3 = BSplineCurve<T, 3>;
 
 /// The uniform knot vector (i - d)/(n - d), i = 0..n+d, for n control points of degree d: the
@@ -117,7 +117,7 @@ template <class T, int N>
 }
 
 /// The parameter interval of a curve.
-template <class T>
+template <Real T>
 struct ParamDomain {
   T min;
   T max;
@@ -133,7 +133,7 @@ namespace detail {
 }
 
 /// a / b with 0 for a zero denominator (the Cox-de Boor 0/0 = 0 convention).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T knot_ratio(T a, T b) noexcept {
   return b == T(0) ? T(0) : a / b;
 }
@@ -192,7 +192,7 @@ template <class T, class V, class Get>
 }
 
 /// Raises vals[0..p] = N_{k-p+m, p}(t), m = 0..p, in place to degree p + 1 (p + 2 values).
-template <class T>
+template <Real T>
 void raise_basis(std::span<const T> knots, int k, int p, T t, T* vals) noexcept {
   for (int j = p + 1; j >= 0; --j) {
     const auto i = static_cast<std::size_t>(k - (p + 1) + j);
@@ -206,7 +206,7 @@ void raise_basis(std::span<const T> knots, int k, int p, T t, T* vals) noexcept 
 
 /// The d + 1 non-zero basis values N_{k-d+m, d}(t) and their first derivatives (m = 0..d) on
 /// span k. vals and ders have room for d + 1 values; ders may be null.
-template <class T>
+template <Real T>
 void basis_and_derivative(std::span<const T> knots, int d, int k, T t, T* vals, T* ders) noexcept {
   vals[0] = T(1);
   for (int p = 0; p + 1 < d; ++p) raise_basis(knots, k, p, t, vals);

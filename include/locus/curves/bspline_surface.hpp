@@ -75,7 +75,7 @@ template <class S>
 }
 
 /// The non-zero basis values and derivatives in one direction at t (clamped into the domain).
-template <class T>
+template <Real T>
 struct BasisAt {
   int span;
   T t;
@@ -167,7 +167,7 @@ template <class T, int N>
 }
 
 /// The unit normal normalize(du x dv) with the collapsed-edge fallback (bezier_surface.hpp).
-template <class T>
+template <Real T>
 [[nodiscard]] Vec3<T> normal_at(const BSplineSurface<T, 3>& s, T u, T v) noexcept {
   const SurfaceDerivatives<T, 3> d = partials(s, u, v);
   if (!is_finite(d.point)) return Vec3<T>{};

@@ -52,9 +52,9 @@ struct NurbsCurve {
   std::vector<T> knots;
 };
 
-template <class T>
+template <Real T>
 using NurbsCurve2 = NurbsCurve<T, 2>;
-template <class T>
+template <Real T>
 using NurbsCurve3 = NurbsCurve<T, 3>;
 
 namespace detail {
@@ -261,14 +261,14 @@ template <class T, int N>
 }
 
 /// The 2D arc as an exact quadratic NURBS over [0, 1] (see nurbs_arc).
-template <class T>
+template <Real T>
 [[nodiscard]] NurbsCurve<T, 2> to_nurbs(const Arc2<T>& a) {
   return nurbs_arc(a.circle.center, Vec2<T>{T(1), T(0)}, Vec2<T>{T(0), T(1)}, a.circle.radius,
                    a.start, a.sweep);
 }
 
 /// The whole circle, counter-clockwise from angle 0, as four quadratic rational pieces.
-template <class T>
+template <Real T>
 [[nodiscard]] NurbsCurve<T, 2> to_nurbs(const Circle2<T>& c) {
   return to_nurbs(Arc2<T>{c, T(0), T(2) * pi_v<T>});
 }

@@ -140,7 +140,7 @@ template <class T, int N>
 }
 
 /// The unit normal normalize(du x dv) with the collapsed-edge fallback; zero where W == 0.
-template <class T>
+template <Real T>
 [[nodiscard]] Vec3<T> normal_at(const NurbsSurface<T, 3>& s, T u, T v) noexcept {
   const SurfaceDerivatives<T, 3> d = partials(s, u, v);
   if (!is_finite(d.point)) return Vec3<T>{};

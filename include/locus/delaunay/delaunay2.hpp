@@ -140,16 +140,16 @@ class Delaunay2 {
   std::vector<Vec2<T>> points_;  // as given
   std::vector<Vec2<T>> sorted_;  // internal vertex k = points_[orig_[k]], Hilbert order
   std::vector<std::uint32_t> orig_;
-  std::vector<std::uint32_t> tri_;  // with ghost triangles (vertex kGhost at corner 2)
-  std::vector<std::int32_t> adj_;  // opposite half-edge (the surface is closed), see adj()
+  std::vector<std::uint32_t> tri_;    // with ghost triangles (vertex kGhost at corner 2)
+  std::vector<std::int32_t> adj_;     // opposite half-edge (the surface is closed), see adj()
   std::vector<std::uint32_t> order_;  // compact(): the ghost triangles
   std::vector<std::uint32_t> stack_;
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint64_t> keys_tmp_;
   std::vector<std::uint32_t> counts_;  // radix sort buckets
-  std::uint32_t nt_ = 0;        // triangles in use in tri_ / adj_ (sized ahead)
-  std::uint32_t last_ = 0;      // a triangle incident to the last inserted vertex
-  std::uint32_t last_out_ = 0;  // the same triangle in result() numbering
+  std::uint32_t nt_ = 0;               // triangles in use in tri_ / adj_ (sized ahead)
+  std::uint32_t last_ = 0;             // a triangle incident to the last inserted vertex
+  std::uint32_t last_out_ = 0;         // the same triangle in result() numbering
   int dimension_ = -1;
   bool dirty_ = false;
   Status status_ = Status::empty_input;

@@ -90,8 +90,8 @@ struct Locate3Result {
 /// The result of nearest_vertex (3D).
 struct NearestVertex3Result {
   Status status = Status::empty_input;  ///< ok; empty_input; non_finite_input; invalid_input
-  std::uint32_t vertex = 0;       ///< input index of a nearest vertex (a kept point)
-  std::int32_t tetrahedron = -1;  ///< a tetrahedron with that vertex (-1 for dimension < 3)
+  std::uint32_t vertex = 0;             ///< input index of a nearest vertex (a kept point)
+  std::int32_t tetrahedron = -1;        ///< a tetrahedron with that vertex (-1 for dimension < 3)
 };
 
 /// Algorithm used by delaunay (3D).

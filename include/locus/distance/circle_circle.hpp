@@ -73,7 +73,7 @@ struct CirclePoly {
 };
 
 /// Lexicographic order on the raw scalars of a circle, for the canonical argument order.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool circle3_less(const Circle3<T>& a, const Circle3<T>& b) noexcept {
   const T va[7] = {a.center.x, a.center.y, a.center.z, a.normal.x,
                    a.normal.y, a.normal.z, a.radius};
@@ -82,17 +82,17 @@ template <class T>
   return std::lexicographical_compare(va, va + 7, vb, vb + 7);
 }
 
-template <class T>
+template <Real T>
 struct CircleCircleAngle {
   compute_t<T> angle;
   bool coaxial;
 };
-template <class T>
+template <Real T>
 [[nodiscard]] inline CircleCircleAngle<T> circle_circle3_angle(
     const Circle3<T>& c0, const Circle3<T>& c1, const CircleAxes<compute_t<T>>& ax,
     const Vec3<compute_t<T>>& n1) noexcept;
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline Distance<T, 3, T, T> circle_circle3(const Circle3<T>& c0,
                                                          const Circle3<T>& c1) noexcept {
   using C = compute_t<T>;
@@ -125,7 +125,7 @@ template <class T>
 
 /// The angle on c0 of the closest pair of two circles of positive radii (see the header), and
 /// whether they are coaxial; ax are c0's plane axes, n1 c1's unit normal.
-template <class T>
+template <Real T>
 [[nodiscard]] inline CircleCircleAngle<T> circle_circle3_angle(
     const Circle3<T>& c0, const Circle3<T>& c1, const CircleAxes<compute_t<T>>& ax,
     const Vec3<compute_t<T>>& n1) noexcept {

@@ -79,10 +79,10 @@ struct GjkTrace {
 template <class T, int N>
 struct GjkOptions {
   T relative_tolerance = T(64) * eps_v<T>;  ///< stop when the distance is this accurate
-  T contact_tolerance = T(-1);  ///< < 0: 64 eps(T) times the largest support coordinate
-  int max_iterations = 128;     ///< GJK support queries; EPA gets as many again
-  Vec<T, N> initial_direction{};  ///< V_0 = support along this (zero: the first axis)
-  GjkTrace<T, N>* trace = nullptr;  ///< if set, cleared and filled with the GJK steps
+  T contact_tolerance = T(-1);              ///< < 0: 64 eps(T) times the largest support coordinate
+  int max_iterations = 128;                 ///< GJK support queries; EPA gets as many again
+  Vec<T, N> initial_direction{};            ///< V_0 = support along this (zero: the first axis)
+  GjkTrace<T, N>* trace = nullptr;          ///< if set, cleared and filled with the GJK steps
 };
 
 /// Result of gjk_distance (see the header comment).
@@ -170,21 +170,21 @@ extern template Penetration<double, 3> penetration(const SupportMap<double, 3>&,
 
 /// GJK distance between two convex shapes of the same scalar type and dimension.
 template <SupportMapped A, SupportMapped B>
-  requires std::same_as<support_scalar_t<A>, support_scalar_t<B>> &&
-           (support_dimension_v<A> == support_dimension_v<B>)
-[[nodiscard]] inline GjkDistance<support_scalar_t<A>, support_dimension_v<A>> gjk_distance(
-    const A& a, const B& b,
-    const GjkOptions<support_scalar_t<A>, support_dimension_v<A>>& options = {}) noexcept {
+requires std::same_as<support_scalar_t<A>, support_scalar_t<B>> &&
+    (support_dimension_v<A> == support_dimension_v<B>)
+        [[nodiscard]] inline GjkDistance<support_scalar_t<A>, support_dimension_v<A>> gjk_distance(
+            const A& a, const B& b,
+            const GjkOptions<support_scalar_t<A>, support_dimension_v<A>>& options = {}) noexcept {
   return detail::gjk_distance(detail::make_support_map(a), detail::make_support_map(b), options);
 }
 
 /// Penetration depth (EPA) or, when separated, minus the distance.
 template <SupportMapped A, SupportMapped B>
-  requires std::same_as<support_scalar_t<A>, support_scalar_t<B>> &&
-           (support_dimension_v<A> == support_dimension_v<B>)
-[[nodiscard]] inline Penetration<support_scalar_t<A>, support_dimension_v<A>> penetration(
-    const A& a, const B& b,
-    const GjkOptions<support_scalar_t<A>, support_dimension_v<A>>& options = {}) noexcept {
+requires std::same_as<support_scalar_t<A>, support_scalar_t<B>> &&
+    (support_dimension_v<A> == support_dimension_v<B>)
+        [[nodiscard]] inline Penetration<support_scalar_t<A>, support_dimension_v<A>> penetration(
+            const A& a, const B& b,
+            const GjkOptions<support_scalar_t<A>, support_dimension_v<A>>& options = {}) noexcept {
   return detail::penetration(detail::make_support_map(a), detail::make_support_map(b), options);
 }
 

@@ -57,12 +57,12 @@ template <class C>
 /// The parameter t of the closest pair on the component (unclamped above 1 by rounding) and
 /// whether that point is on the circle's axis (every circle point equally close); n is the unit
 /// normal.
-template <class T>
+template <Real T>
 struct LinearCircleParam {
   compute_t<T> t;
   bool on_axis;
 };
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinearCircleParam<T> linear_circle3_param(
     const LinearView<T, 3>& v, const Circle3<T>& c, const Vec3<compute_t<T>>& n) noexcept {
   using C = compute_t<T>;

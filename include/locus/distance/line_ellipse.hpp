@@ -49,12 +49,12 @@ namespace detail {
 /// The candidate parameters on the linear component (before clamping to its domain): its ends,
 /// the projection of the center, the crossings of the curve and the projections of the two
 /// points whose tangent is parallel to the direction.
-template <class T>
+template <Real T>
 struct LinearEllipseCandidates {
   std::array<compute_t<T>, 8> t{};
   int count = 0;
 };
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinearEllipseCandidates<T> linear_ellipse2_candidates(
     const LinearView<T, 2>& v, const Ellipse2<T>& e) noexcept {
   using C = compute_t<T>;

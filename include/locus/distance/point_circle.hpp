@@ -46,19 +46,19 @@ template <Real T>
 
 namespace detail {
 /// Unit normal, in-plane axes and the in-plane offset of p's projection, for Circle3 / Disk3.
-template <class T>
+template <Real T>
 struct CircleFrame3 {
   CircleAxes<T> axes;
   T s, t;  // in-plane coordinates of p's projection relative to the center
 };
-template <class T>
+template <Real T>
 [[nodiscard]] inline CircleFrame3<T> circle_frame(const Vec3<T>& p, const Vec3<T>& center,
                                                   const Vec3<T>& normal) noexcept {
   const CircleAxes<T> ax = circle_axes_of_normal(normal);
   const Vec3<T> d = p - center;
   return {ax, dot(d, ax.u), dot(d, ax.v)};
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool circle3_ok(const Vec3<T>& p, const Vec3<T>& center,
                                         const Vec3<T>& normal, T radius) noexcept {
   return is_finite(p) && is_finite(center) && is_finite(normal) && is_finite(radius) &&

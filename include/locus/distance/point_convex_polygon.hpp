@@ -20,13 +20,13 @@
 // non-finite p: non_finite_distance() (result.hpp); only the vertices the search reads are
 // checked for NaN/Inf.
 
+#include <locus/core/exact_sum.hpp>
 #include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/linear.hpp>
 #include <locus/distance/result.hpp>
-#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/polygon.hpp>
 #include <locus/primitives/segment.hpp>
 
@@ -40,7 +40,7 @@ namespace locus {
 namespace detail {
 
 /// Exact sign of dot(p - b, b - a): > 0 when p projects beyond b on the line a -> b.
-template <class T>
+template <Real T>
 [[nodiscard]] inline int sign_beyond_end(const Vec2<T>& a, const Vec2<T>& b,
                                          const Vec2<T>& p) noexcept {
   if (!is_finite(a) || !is_finite(b) || !is_finite(p)) return 0;  // the caller reports NaN

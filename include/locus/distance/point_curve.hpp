@@ -49,7 +49,8 @@ inline void point_span_candidates(const Vec<C, N + 1>* h, int d, const Vec<C, N>
   if (d == 0) return;
   SpanPower<C, N> sp(h, d, p);
   const int len = 2 * d - 1;
-  SpanScratch<C, 32 * N> r(static_cast<std::size_t>(N * len)), ra(static_cast<std::size_t>(N * len));
+  SpanScratch<C, 32 * N> r(static_cast<std::size_t>(N * len)),
+      ra(static_cast<std::size_t>(N * len));
   span_derivative_numerator(sp, r.data(), ra.data());
   BoundedPoly<C> g(3 * d - 2);
   for (int k = 0; k < N; ++k)
@@ -89,8 +90,7 @@ template <class T, int N, class Curve>
     point_span_candidates<C, N>(h, d, pc, t0, t1, tr);
   });
   const T t = static_cast<T>(tr.best_t);
-  return make_distance(p, point_at(c, t), NoParam{}, t,
-                       !tr.tied(C(64) * static_cast<C>(eps_v<T>)));
+  return make_distance(p, point_at(c, t), NoParam{}, t, !tr.tied(C(64) * static_cast<C>(eps_v<T>)));
 }
 
 }  // namespace detail

@@ -110,14 +110,15 @@ template <class C>
 /// Local frame coordinates and the closest point, for Ellipse2 (shared by the linear queries).
 template <class C>
 struct EllipseLocal {
-  C x[2];       // closest point, in the frame of axis[0], axis[1] (original order)
+  C x[2];  // closest point, in the frame of axis[0], axis[1] (original order)
   bool unique;
 };
 
 /// Closest point to local coordinates y (frame of axis[0], axis[1]) on the ellipse with
 /// extents e[0], e[1] >= 0 (zero extents degenerate as the header says).
 template <class C>
-[[nodiscard]] inline EllipseLocal<C> ellipse_closest_local(const C (&e)[2], const C (&y)[2]) noexcept {
+[[nodiscard]] inline EllipseLocal<C> ellipse_closest_local(const C (&e)[2],
+                                                           const C (&y)[2]) noexcept {
   const int big = e[0] >= e[1] ? 0 : 1, small = 1 - big;
   EllipseLocal<C> out{{C(0), C(0)}, true};
   const C eb = e[big], es = e[small];
@@ -144,7 +145,7 @@ template <class C>
   return C(0);
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool ellipse_ok(const Ellipse2<T>& e) noexcept {
   return is_finite(e.center) && is_finite(e.axis[0]) && is_finite(e.axis[1]) &&
          is_finite(e.extent[0]) && is_finite(e.extent[1]) && e.extent[0] >= T(0) &&
@@ -164,8 +165,7 @@ template <Real T>
   const C y[2] = {dot(d, a0), dot(d, a1)};
   const C ext[2] = {C(e.extent[0]), C(e.extent[1])};
   const detail::EllipseLocal<C> loc = detail::ellipse_closest_local(ext, y);
-  const Vec2<T> q =
-      vec_cast<T>(vec_cast<C>(e.center) + loc.x[0] * a0 + loc.x[1] * a1);
+  const Vec2<T> q = vec_cast<T>(vec_cast<C>(e.center) + loc.x[0] * a0 + loc.x[1] * a1);
   const T angle = static_cast<T>(detail::ellipse_angle(ext, loc.x));
   return detail::make_distance(p, q, NoParam{}, angle, loc.unique);
 }

@@ -46,7 +46,7 @@
 namespace locus {
 
 /// A point of a triangle mesh: the input triangle's index and barycentric coordinates in it.
-template <class T>
+template <Real T>
 struct MeshPoint {
   static constexpr std::uint32_t none = 0xffffffffu;  ///< no triangle (the NaN result)
   std::uint32_t triangle = none;
@@ -138,7 +138,7 @@ template <Real T>
 
 namespace detail {
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Distance<T, 3, NoParam, MeshPoint<T>> mesh_nan_distance() noexcept {
   constexpr T nan = std::numeric_limits<T>::quiet_NaN();
   return {nan,

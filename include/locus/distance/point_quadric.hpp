@@ -73,9 +73,10 @@ template <Real T>
     qd.b = qc.b;
     qd.c = qc.c;
     const QuadricStandardForm<C> f = standard_form(qd);
-    if (f.status == Status::ok && f.constant < C(0) && f.diagonal.x > C(0) &&
-        f.diagonal.y > C(0) && f.diagonal.z > C(0)) {
-      const C ext[3] = {std::sqrt(-f.constant / f.diagonal.x), std::sqrt(-f.constant / f.diagonal.y),
+    if (f.status == Status::ok && f.constant < C(0) && f.diagonal.x > C(0) && f.diagonal.y > C(0) &&
+        f.diagonal.z > C(0)) {
+      const C ext[3] = {std::sqrt(-f.constant / f.diagonal.x),
+                        std::sqrt(-f.constant / f.diagonal.y),
                         std::sqrt(-f.constant / f.diagonal.z)};
       Vec3<C> ax[3];
       C y[3];
@@ -91,7 +92,8 @@ template <Real T>
     }
   }
   const C scale = C(1) + static_cast<C>(max_abs(p));
-  auto tr = detail::quadric_nearest<C, 3>(qc, pc, cls.rank_a, C(1024) * C(eps_v<T>) * scale * scale);
+  auto tr =
+      detail::quadric_nearest<C, 3>(qc, pc, cls.rank_a, C(1024) * C(eps_v<T>) * scale * scale);
   const C tie = C(64) * C(eps_v<T>);
   if (have_extra) tr.offer(sqr_length(extra - pc), C(0), extra);
   if (!tr.found) return detail::empty_set_distance<T, 3, NoParam, NoParam>(p);

@@ -572,13 +572,13 @@ template <class C, int N>
 /// The rounding part of the search tolerance tau (header comment): that of the bounds in C, and
 /// the precision T of the input (a float surface is only defined to float accuracy, and a
 /// near-constant distance within it would otherwise be refined to the work budget).
-template <class T>
+template <Real T>
 inline constexpr compute_t<T> tau_rounding =
     compute_t<T>(64) * std::numeric_limits<compute_t<T>>::epsilon() +
     compute_t<T>(16) * static_cast<compute_t<T>>(std::numeric_limits<T>::epsilon());
 
 /// The tie test's tolerance (header comment): 64 eps of T, relative on squared distances.
-template <class T>
+template <Real T>
 inline constexpr compute_t<T> tie_tolerance =
     compute_t<T>(64) * static_cast<compute_t<T>>(std::numeric_limits<T>::epsilon());
 

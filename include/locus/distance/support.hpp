@@ -81,7 +81,7 @@ template <class T, int N>
 struct SupportSpace<ConvexPoints<T, N>> : SupportSpace<Vec<T, N>> {};
 template <class T, int N>
 struct SupportSpace<Sphere<T, N>> : SupportSpace<Vec<T, N>> {};
-template <class T>
+template <Real T>
 struct SupportSpace<Circle2<T>> : SupportSpace<Vec<T, 2>> {};
 template <class T, int N>
 struct SupportSpace<AlignedBox<T, N>> : SupportSpace<Vec<T, N>> {};
@@ -89,9 +89,9 @@ template <class T, int N>
 struct SupportSpace<OrientedBox<T, N>> : SupportSpace<Vec<T, N>> {};
 template <class T, int N>
 struct SupportSpace<Capsule<T, N>> : SupportSpace<Vec<T, N>> {};
-template <class T>
+template <Real T>
 struct SupportSpace<Cylinder3<T>> : SupportSpace<Vec<T, 3>> {};
-template <class T>
+template <Real T>
 struct SupportSpace<Cone3<T>> : SupportSpace<Vec<T, 3>> {};
 template <class S, class T, int N>
 struct SupportSpace<Transformed<S, T, N>> : SupportSpace<Vec<T, N>> {};
@@ -115,7 +115,7 @@ template <class T, int N>
 /// the unit component of d orthogonal to the axis. When d is parallel to the axis up to
 /// rounding, that component is noise (not even orthogonal to the axis), so the disk's center
 /// (also a support point then) is returned.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> disk_support(const Vec3<T>& axis, const Vec3<T>& d, T r) noexcept {
   Vec3<T> radial = d - dot(d, axis) * axis;
   radial -= dot(radial, axis) * axis;  // second pass: orthogonal to the axis to rounding
@@ -192,8 +192,7 @@ template <Real T, int N>
 
 /// The corner farthest along d (the -extent side where dot(d, axis) <= 0).
 template <Real T, int N>
-[[nodiscard]] constexpr Vec<T, N> support(const OrientedBox<T, N>& b,
-                                          const Vec<T, N>& d) noexcept {
+[[nodiscard]] constexpr Vec<T, N> support(const OrientedBox<T, N>& b, const Vec<T, N>& d) noexcept {
   Vec<T, N> p = b.center;
   for (int i = 0; i < N; ++i)
     p += (dot(b.axis[i], d) > T(0) ? b.extent[i] : -b.extent[i]) * b.axis[i];
@@ -238,7 +237,8 @@ template <class S, Real T, int N>
 
 /// A shape GJK can take: support(s, d) and SupportSpace<S>.
 template <class S>
-concept SupportMapped = requires(const S& s, const Vec<support_scalar_t<S>, support_dimension_v<S>>& d) {
+concept SupportMapped = requires(const S& s,
+                                 const Vec<support_scalar_t<S>, support_dimension_v<S>>& d) {
   { support(s, d) } -> std::convertible_to<Vec<support_scalar_t<S>, support_dimension_v<S>>>;
 };
 
@@ -263,11 +263,11 @@ template <class T, int N>
 [[nodiscard]] constexpr T core_margin(const Sphere<T, N>& s) noexcept {
   return s.radius;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> core_support(const Circle2<T>& c, const Vec2<T>&) noexcept {
   return c.center;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T core_margin(const Circle2<T>& c) noexcept {
   return c.radius;
 }

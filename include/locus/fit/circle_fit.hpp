@@ -23,7 +23,7 @@
 namespace locus {
 
 /// Result of the circle fits.
-template <class T>
+template <Real T>
 struct CircleFit {
   Status status =
       Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input,
@@ -34,14 +34,14 @@ struct CircleFit {
 };
 
 namespace detail {
-template <class T>
+template <Real T>
 [[nodiscard]] CircleFit<T> to_circle_fit(const SphereFit<T, 2>& s) noexcept {
   return {s.status, Circle2<T>{s.sphere.center, s.sphere.radius}, s.rms, s.iterations};
 }
 }  // namespace detail
 
 /// Algebraic least-squares circle.
-template <class T>
+template <Real T>
 [[nodiscard]] CircleFit<T> fit_circle_algebraic(std::span<const Vec2<T>> pts,
                                                 const FitOptions<T>& opt = {}) {
   return detail::to_circle_fit(fit_sphere_algebraic(pts, opt));
@@ -53,7 +53,7 @@ template <PointRange2 R>
 }
 
 /// Geometric least-squares circle (Levenberg-Marquardt from the algebraic fit).
-template <class T>
+template <Real T>
 [[nodiscard]] CircleFit<T> fit_circle(std::span<const Vec2<T>> pts, const FitOptions<T>& opt = {}) {
   return detail::to_circle_fit(fit_sphere(pts, opt));
 }

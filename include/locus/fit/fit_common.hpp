@@ -35,7 +35,7 @@
 namespace locus {
 
 /// Options shared by the fits.
-template <class T>
+template <Real T>
 struct FitOptions {
   /// A spread below rank_tolerance * max|coordinate| counts as zero (see the top comment);
   /// a negative value selects 32 eps(T).
@@ -46,7 +46,7 @@ struct FitOptions {
 
 namespace detail {
 
-template <class T>
+template <Real T>
 [[nodiscard]] T fit_rank_tolerance(const FitOptions<T>& opt) noexcept {
   return opt.rank_tolerance >= T(0) ? opt.rank_tolerance : T(32) * eps_v<T>;
 }

@@ -39,8 +39,8 @@ enum class GaussianExtent : std::uint8_t {
 template <class T, int N>
 struct GaussianFit {
   Status status =
-      Status::empty_input;     ///< ok, empty_input, non_finite_input, limit_exceeded (Jacobi)
-  OrientedBox<T, N> box{};     ///< axes = eigenvectors of the covariance, ascending eigenvalue
+      Status::empty_input;  ///< ok, empty_input, non_finite_input, limit_exceeded (Jacobi)
+  OrientedBox<T, N> box{};  ///< axes = eigenvectors of the covariance, ascending eigenvalue
   Vec<T, N> mean{};
   Mat<T, N, N> covariance{};  ///< normalised by n
   T rms{};                    ///< RMS distance to the mean, sqrt(trace(covariance))

@@ -34,12 +34,12 @@ namespace locus {
 template <class T, int N>
 struct LineFit {
   Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
-  Line<T, N> line{};           ///< origin = mean, unit direction
-  T rms{};                     ///< RMS orthogonal distance
+  Line<T, N> line{};                    ///< origin = mean, unit direction
+  T rms{};                              ///< RMS orthogonal distance
 };
 
 /// Result of fit_line_vertical().
-template <class T>
+template <Real T>
 struct VerticalLineFit {
   Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
   T slope{};
@@ -86,7 +86,7 @@ template <PointRange R>
 }
 
 /// Least-squares line y = slope x + intercept with vertical residuals (figure 2.9).
-template <class T>
+template <Real T>
 [[nodiscard]] VerticalLineFit<T> fit_line_vertical(std::span<const Vec2<T>> pts,
                                                    const FitOptions<T>& opt = {}) {
   VerticalLineFit<T> out;

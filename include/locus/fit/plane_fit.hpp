@@ -44,11 +44,11 @@ struct HyperplaneFit {
 };
 
 /// Result of fit_plane().
-template <class T>
+template <Real T>
 struct PlaneFit {
   Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
-  Plane3<T> plane{};           ///< unit normal
-  T rms{};                     ///< RMS orthogonal distance
+  Plane3<T> plane{};                    ///< unit normal
+  T rms{};                              ///< RMS orthogonal distance
 };
 
 /// Result of fit_hyperplane_vertical(): x_{N-1} = dot(coefficients, x_{0..N-2}) + constant.
@@ -96,7 +96,7 @@ template <PointRange R>
 }
 
 /// Orthogonal least-squares plane through points in 3D.
-template <class T>
+template <Real T>
 [[nodiscard]] PlaneFit<T> fit_plane(std::span<const Vec3<T>> pts, const FitOptions<T>& opt = {}) {
   const HyperplaneFit<T, 3> h = fit_hyperplane(pts, opt);
   return {h.status, Plane3<T>{h.normal, h.constant}, h.rms};

@@ -39,19 +39,19 @@
 namespace locus {
 
 /// Result of fit_quadratic_curve().
-template <class T>
+template <Real T>
 struct QuadraticCurveFit {
   Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
-  QuadraticCurve2<T> curve{};  ///< unit coefficient vector (see the top comment)
-  T rms{};                     ///< RMS algebraic residual
+  QuadraticCurve2<T> curve{};           ///< unit coefficient vector (see the top comment)
+  T rms{};                              ///< RMS algebraic residual
 };
 
 /// Result of fit_quadric().
-template <class T>
+template <Real T>
 struct QuadricFit {
   Status status = Status::empty_input;  ///< ok, empty_input, degenerate_input, non_finite_input
-  Quadric3<T> quadric{};       ///< unit coefficient vector (see the top comment)
-  T rms{};                     ///< RMS algebraic residual
+  Quadric3<T> quadric{};                ///< unit coefficient vector (see the top comment)
+  T rms{};                              ///< RMS algebraic residual
 };
 
 namespace detail {
@@ -140,7 +140,7 @@ template <class C, class T, int N, int K, class Monomials, class ToForm>
 }  // namespace detail
 
 /// Algebraic least-squares conic through points (see the top comment for the normalisation).
-template <class T>
+template <Real T>
 [[nodiscard]] QuadraticCurveFit<T> fit_quadratic_curve(std::span<const Vec2<T>> pts,
                                                        const FitOptions<T>& opt = {}) {
   using C = compute_t<T>;
@@ -181,7 +181,7 @@ template <PointRange2 R>
 }
 
 /// Algebraic least-squares quadric surface through points (see the top comment).
-template <class T>
+template <Real T>
 [[nodiscard]] QuadricFit<T> fit_quadric(std::span<const Vec3<T>> pts,
                                         const FitOptions<T>& opt = {}) {
   using C = compute_t<T>;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // SvgWriter: a small SVG writer for 2D geometry and 3D wireframes (the figure gallery's drawing
-// surface, no capabilities row of its own; the 3D camera is the pipeline of book section 4.8). Details: docs/notes/io.md.
+// surface, no capabilities row of its own; the 3D camera is the pipeline of book section 4.8).
+// Details: docs/notes/io.md.
 //
 // Coordinates: everything is given in WORLD coordinates with the y axis pointing UP, mapped to
 // pixels by one uniform scale and a y flip (counter-clockwise in the world is counter-clockwise

@@ -41,13 +41,13 @@ namespace locus {
 
 namespace detail {
 // The 12 edges of a box whose 8 corners are indexed by bits (x, y, z).
-template <class T>
+template <Real T>
 void svg_box_edges(SvgWriter& w, const std::array<Vec3<T>, 8>& c, const SvgStyle& s) {
   for (std::size_t i = 0; i < 8; ++i)
     for (std::size_t bit : {std::size_t{1}, std::size_t{2}, std::size_t{4}})
       if (!(i & bit)) w.segment(c[i], c[i | bit], s);
 }
-template <class T>
+template <Real T>
 int svg_arc_pieces(T sweep) {
   const double n = std::ceil(64.0 * std::abs(static_cast<double>(sweep)) / (2.0 * pi_v<double>));
   return n < 8.0 ? 8 : (n > 4096.0 ? 4096 : static_cast<int>(n));

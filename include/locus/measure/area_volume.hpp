@@ -38,7 +38,7 @@
 namespace locus {
 
 /// Half of Newell's normal: |result| is the area of a planar polygon, its direction the normal.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> polygon_vector_area(std::span<const Vec3<T>> p) noexcept {
   using C = compute_t<T>;
   if (p.size() < 3) return Vec3<T>{};
@@ -50,14 +50,14 @@ template <class T>
 }
 
 /// Area of a planar 3D polygon (|vector area|).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T polygon_area(std::span<const Vec3<T>> p) noexcept {
   return length(polygon_vector_area(p));
 }
 
 /// Area centroid of a planar 3D polygon; the vertex average when the area is zero; the zero
 /// vector when empty.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> polygon_centroid(std::span<const Vec3<T>> p) noexcept {
   using C = compute_t<T>;
   if (p.empty()) return Vec3<T>{};
@@ -87,14 +87,14 @@ template <class T>
 
 namespace detail {
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool mesh_triangle_ok(std::size_t nv,
                                            const std::array<std::uint32_t, 3>& t) noexcept {
   return t[0] < nv && t[1] < nv && t[2] < nv;
 }
 
 /// The centre of the bounding box of the referenced vertices (compute_t), zero when none.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<compute_t<T>> mesh_reference(
     std::span<const Vec3<T>> v, std::span<const std::array<std::uint32_t, 3>> tris) noexcept {
   using C = compute_t<T>;
@@ -120,7 +120,7 @@ template <class T>
 }  // namespace detail
 
 /// Signed volume of a closed triangle mesh (positive for outward normals).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T mesh_signed_volume(
     std::span<const Vec3<T>> v, std::span<const std::array<std::uint32_t, 3>> tris) noexcept {
   using C = compute_t<T>;
@@ -136,14 +136,14 @@ template <class T>
 }
 
 /// |mesh_signed_volume|.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T mesh_volume(std::span<const Vec3<T>> v,
                                    std::span<const std::array<std::uint32_t, 3>> tris) noexcept {
   return std::abs(mesh_signed_volume(v, tris));
 }
 
 /// Sum of the triangle areas.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T mesh_surface_area(
     std::span<const Vec3<T>> v, std::span<const std::array<std::uint32_t, 3>> tris) noexcept {
   using C = compute_t<T>;

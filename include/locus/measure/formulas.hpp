@@ -47,12 +47,12 @@ namespace detail {
 /// The power of two by which lengths up to m are scaled before products of four of them are
 /// formed (1 when those stay in range; distance/detail/rescale.hpp): the formulas below run on
 /// the scaled lengths and scale their result back exactly, so they are scale-covariant.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T formula_scale(T m) noexcept {
   return outside_product_range<T, 4>(m) ? normalising_scale(m) : T(1);
 }
 /// Heron's formula on sides sorted a >= b >= c (no scaling).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T heron(T a, T b, T c) noexcept {
   if (a < b) std::swap(a, b);
   if (b < c) std::swap(b, c);
@@ -64,14 +64,14 @@ template <class T>
 }
 }  // namespace detail
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline T triangle_area_from_sides(T a, T b, T c) noexcept {
   const T s = detail::formula_scale(std::max({std::abs(a), std::abs(b), std::abs(c)}));
   return detail::heron(s * a, s * b, s * c) / s / s;
 }
 
 /// Inradius K / s from the side lengths.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T triangle_inradius(T a, T b, T c) noexcept {
   const T s = detail::formula_scale(std::max({std::abs(a), std::abs(b), std::abs(c)}));
   a *= s, b *= s, c *= s;
@@ -79,7 +79,7 @@ template <class T>
 }
 
 /// Circumradius a b c / (4 K) from the side lengths (inf for a degenerate triangle).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T triangle_circumradius(T a, T b, T c) noexcept {
   const T s = detail::formula_scale(std::max({std::abs(a), std::abs(b), std::abs(c)}));
   a *= s, b *= s, c *= s;
@@ -90,21 +90,21 @@ template <class T>
 
 /// Signed area of the quadrilateral p0 p1 p2 p3 (half the cross product of its diagonals;
 /// positive when counter-clockwise).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T quadrilateral_signed_area(const Vec2<T>& p0, const Vec2<T>& p1,
                                                     const Vec2<T>& p2, const Vec2<T>& p3) noexcept {
   return T(0.5) * perp_dot(p2 - p0, p3 - p1);
 }
 
 /// Area of a 2D quadrilateral.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T quadrilateral_area(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2,
                                           const Vec2<T>& p3) noexcept {
   return std::abs(quadrilateral_signed_area(p0, p1, p2, p3));
 }
 
 /// Area of a planar 3D quadrilateral: |(p2 - p0) x (p3 - p1)| / 2.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T quadrilateral_area(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& p2,
                                           const Vec3<T>& p3) noexcept {
   return T(0.5) * length(cross(p2 - p0, p3 - p1));
@@ -118,7 +118,7 @@ template <class T, int N>
 }
 
 /// Area centroid of a 2D quadrilateral (polygon_centroid of its four vertices).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> quadrilateral_centroid(const Vec2<T>& p0, const Vec2<T>& p1,
                                                     const Vec2<T>& p2, const Vec2<T>& p3) noexcept {
   // polygon_centroid forms products of three coordinates: on the vertices relative to p0,
@@ -130,17 +130,17 @@ template <class T>
 }
 
 /// Trapezoid with parallel sides a, b and height h: (a + b) h / 2.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T trapezoid_area(T a, T b, T h) noexcept {
   return T(0.5) * (a + b) * h;
 }
 
 /// Parallelogram spanned by u and v: |u x v|.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T parallelogram_area(const Vec2<T>& u, const Vec2<T>& v) noexcept {
   return std::abs(perp_dot(u, v));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline T parallelogram_area(const Vec3<T>& u, const Vec3<T>& v) noexcept {
   return length(cross(u, v));
 }
@@ -148,7 +148,7 @@ template <class T>
 /// Bretschneider: a convex quadrilateral with sides a, b, c, d (in order) and the interior
 /// angles alpha (between d and a) and gamma (between b and c):
 /// sqrt((s-a)(s-b)(s-c)(s-d) - a b c d cos^2((alpha + gamma) / 2)). NaN for impossible data.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T quadrilateral_area_bretschneider(T a, T b, T c, T d, T alpha,
                                                         T gamma) noexcept {
   // Products of four sides: on the sides scaled by a power of two q, scaled back by 1/q^2.
@@ -166,27 +166,27 @@ template <class T>
 // ----------------------------------------------------------------------------
 
 /// Perimeter n s of a regular n-gon with side s.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T regular_polygon_perimeter(int n, T s) noexcept {
   return n < 3 ? std::numeric_limits<T>::quiet_NaN() : static_cast<T>(n) * s;
 }
 
 /// Area n s^2 / (4 tan(pi / n)).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T regular_polygon_area(int n, T s) noexcept {
   if (n < 3) return std::numeric_limits<T>::quiet_NaN();
   return static_cast<T>(n) * s * s / (T(4) * std::tan(pi_v<T> / static_cast<T>(n)));
 }
 
 /// Inradius (apothem) s / (2 tan(pi / n)).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T regular_polygon_inradius(int n, T s) noexcept {
   if (n < 3) return std::numeric_limits<T>::quiet_NaN();
   return s / (T(2) * std::tan(pi_v<T> / static_cast<T>(n)));
 }
 
 /// Circumradius s / (2 sin(pi / n)).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T regular_polygon_circumradius(int n, T s) noexcept {
   if (n < 3) return std::numeric_limits<T>::quiet_NaN();
   return s / (T(2) * std::sin(pi_v<T> / static_cast<T>(n)));
@@ -196,25 +196,25 @@ template <class T>
 // ---------------------------------------------------------------------------------
 
 /// Arc length r theta.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T arc_length(T r, T theta) noexcept {
   return r * theta;
 }
 
 /// Chord length 2 r sin(theta / 2).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T chord_length(T r, T theta) noexcept {
   return T(2) * r * std::sin(T(0.5) * theta);
 }
 
 /// Sector area r^2 theta / 2.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T circular_sector_area(T r, T theta) noexcept {
   return T(0.5) * r * r * theta;
 }
 
 /// Segment area (between the chord and the arc) r^2 (theta - sin theta) / 2.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T circular_segment_area(T r, T theta) noexcept {
   // theta - sin theta = theta^3/6 - theta^5/120 + theta^7/5040 - ...: the series avoids the
   // cancellation for small angles (its truncation error is below eps there).
@@ -231,7 +231,7 @@ template <class T>
 }
 
 /// Annulus pi (R^2 - r^2) = pi (R - r)(R + r).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T annulus_area(T outer, T inner) noexcept {
   return pi_v<T> * (outer - inner) * (outer + inner);
 }
@@ -240,26 +240,26 @@ template <class T>
 // --------------------------------------------------------------------------------
 
 /// Spherical cap of height h on a sphere of radius r: pi h^2 (3 r - h) / 3.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T spherical_cap_volume(T r, T h) noexcept {
   return pi_v<T> * h * h * (T(3) * r - h) / T(3);
 }
 
 /// Curved area of a cap or zone of height h: 2 pi r h.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T spherical_zone_area(T r, T h) noexcept {
   return T(2) * pi_v<T> * r * h;
 }
 
 /// Spherical sector (cone to the centre plus the cap of height h): 2 pi r^2 h / 3.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T spherical_sector_volume(T r, T h) noexcept {
   return T(2) * pi_v<T> * r * r * h / T(3);
 }
 
 /// Spherical segment between parallel planes: base radii a, b, height h:
 /// pi h (3 a^2 + 3 b^2 + h^2) / 6.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T spherical_segment_volume(T a, T b, T h) noexcept {
   return pi_v<T> * h * (T(3) * a * a + T(3) * b * b + h * h) / T(6);
 }
@@ -268,20 +268,20 @@ template <class T>
 // -----------------------------------------------------------------------------
 
 /// Prism with base area B and height h: B h.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T prism_volume(T base_area, T h) noexcept {
   return base_area * h;
 }
 
 /// Pyramid (or cone) with base area B and height h: B h / 3.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T pyramid_volume(T base_area, T h) noexcept {
   return base_area * h / T(3);
 }
 
 /// Frustum of a pyramid with parallel base areas B1, B2 and height h: h (B1 + B2 + sqrt(B1 B2))
 /// / 3.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T pyramid_frustum_volume(T b1, T b2, T h) noexcept {
   // sqrt(B1) sqrt(B2), not sqrt(B1 B2): the product of two areas overflows long before the
   // volume does.
@@ -301,7 +301,7 @@ enum class PlatonicSolid : unsigned char {
 };
 
 /// Volume of the Platonic solid with edge length a.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T platonic_volume(PlatonicSolid solid, T a) noexcept {
   const T a3 = a * a * a;
   switch (solid) {
@@ -320,7 +320,7 @@ template <class T>
 }
 
 /// Surface area of the Platonic solid with edge length a.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T platonic_surface_area(PlatonicSolid solid, T a) noexcept {
   const T a2 = a * a;
   switch (solid) {

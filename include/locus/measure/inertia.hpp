@@ -41,7 +41,7 @@
 namespace locus {
 
 /// Mass properties of a solid: mass = density * volume, inertia about the centroid.
-template <class T>
+template <Real T>
 struct MassProperties3 {
   Status status = Status::empty_input;
   T volume{};
@@ -51,7 +51,7 @@ struct MassProperties3 {
 };
 
 /// Area properties of a polygon: second moments about the centroid, polar = trace.
-template <class T>
+template <Real T>
 struct MassProperties2 {
   Status status = Status::empty_input;
   T area{};
@@ -63,7 +63,7 @@ struct MassProperties2 {
 };
 
 /// Mass properties of the solid bounded by a closed triangle mesh with outward normals.
-template <class T>
+template <Real T>
 [[nodiscard]] inline MassProperties3<T> mass_properties(
     std::span<const Vec3<T>> v, std::span<const std::array<std::uint32_t, 3>> tris,
     T density = T(1)) noexcept {
@@ -139,7 +139,7 @@ template <PointRange3 R>
 }
 
 /// Area, centroid and second moments of a polygon (either orientation) with density rho.
-template <class T>
+template <Real T>
 [[nodiscard]] inline MassProperties2<T> mass_properties(const Polygon2<T>& poly,
                                                         T density = T(1)) noexcept {
   using C = compute_t<T>;
@@ -193,7 +193,7 @@ template <class T>
 
 /// Parallel-axis theorem: the inertia tensor about point q of a body with the given mass,
 /// centroid and inertia about the centroid.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Mat3<T> inertia_about(const Mat3<T>& inertia_at_centroid, T mass,
                                               const Vec3<T>& centroid, const Vec3<T>& q) noexcept {
   const Vec3<T> d = centroid - q;
@@ -201,7 +201,7 @@ template <class T>
 }
 
 /// The inertia tensor of the body rotated by R (orthogonal): R I R^T.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Mat3<T> rotate_inertia(const Mat3<T>& inertia, const Mat3<T>& r) noexcept {
   return r * inertia * transpose(r);
 }

@@ -49,7 +49,7 @@ namespace locus {
 // ---------------------------------------------------------------------------------------------
 
 /// f sampled on a regular grid: values[j * nx + i] = f(origin + (i spacing.x, j spacing.y)).
-template <class T>
+template <Real T>
 struct ScalarGrid {
   std::vector<T> values;
   int nx = 0;  ///< samples along x
@@ -99,13 +99,13 @@ struct LevelSetOptions {
 };
 
 /// One connected piece of a level set.
-template <class T>
+template <Real T>
 struct Contour {
   std::vector<Vec2<T>> points;  ///< f >= level on the left; a loop does not repeat points[0]
   bool closed = false;
 };
 
-template <class T>
+template <Real T>
 struct LevelSet {
   Status status = Status::empty_input;
   std::vector<Contour<T>> contours;
@@ -119,7 +119,7 @@ struct LevelSet {
 
 namespace detail::calculus {
 
-template <class T>
+template <Real T>
 struct GridIndex {
   int nx, ny;
   std::size_t horizontal_count() const noexcept {
@@ -282,7 +282,7 @@ enum class CriticalKind : std::uint8_t {
 
 /// Classification of a critical point by its Hessian: the eigenvalues (ascending) and the kind,
 /// degenerate when an eigenvalue has magnitude <= tau (and when the matrix is not finite).
-template <class T>
+template <Real T>
 struct HessianClass {
   CriticalKind kind = CriticalKind::degenerate;
   Vec2<T> eigenvalues{};
@@ -310,7 +310,7 @@ template <Real T>
   return r;
 }
 
-template <class T>
+template <Real T>
 struct CriticalPoint2 {
   Vec2<T> point{};
   T value = T(0);  ///< f at the point
@@ -318,13 +318,13 @@ struct CriticalPoint2 {
   Vec2<T> eigenvalues{};  ///< of the Hessian, ascending
 };
 
-template <class T>
+template <Real T>
 struct CriticalPoints2 {
   Status status = Status::empty_input;
   std::vector<CriticalPoint2<T>> points;  ///< sorted by x, then y
 };
 
-template <class T>
+template <Real T>
 struct CriticalPointOptions {
   int seeds_x = 12;  ///< Newton seeds along x (cell centres of a seeds_x x seeds_y grid)
   int seeds_y = 12;
@@ -558,7 +558,7 @@ template <Real T>
 }
 
 /// A critical point of a function of one variable.
-template <class T>
+template <Real T>
 struct CriticalPoint1 {
   T x = T(0);
   T value = T(0);
@@ -566,7 +566,7 @@ struct CriticalPoint1 {
   int multiplicity = 1;  ///< as a root of f' (polynomial version; 1 otherwise)
 };
 
-template <class T>
+template <Real T>
 struct CriticalPoints1 {
   Status status = Status::empty_input;
   std::vector<CriticalPoint1<T>> points;  ///< increasing x, interior and endpoints alike

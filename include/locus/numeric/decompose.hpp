@@ -15,9 +15,9 @@
 //
 // Bad input: NaN/Inf entries give Status::non_finite_input (factors are not meaningful); a
 // non-square matrix where a square one is needed, or a non-symmetric one for Cholesky, gives
-// Status::invalid_input; Cholesky of a matrix that is not positive definite gives Status::degenerate_input. The SVD's
-// Jacobi iteration has a sweep budget (Status::limit_exceeded past it).
-// Cost: O(n^3) each; the SVD costs a few sweeps of O(m n^2).
+// Status::invalid_input; Cholesky of a matrix that is not positive definite gives
+// Status::degenerate_input. The SVD's Jacobi iteration has a sweep budget (Status::limit_exceeded
+// past it). Cost: O(n^3) each; the SVD costs a few sweeps of O(m n^2).
 
 #include <locus/core/status.hpp>
 #include <locus/numeric/matrix.hpp>
@@ -29,29 +29,29 @@
 
 namespace locus {
 
-template <class T>
+template <Real T>
 struct QR {
   Status status = Status::empty_input;
   MatX<T> q;  ///< m x m orthogonal
   MatX<T> r;  ///< m x n upper triangular
 };
 
-template <class T>
+template <Real T>
 struct Cholesky {
   Status status = Status::empty_input;
   MatX<T> l;  ///< lower triangular, A = L L^T
 };
 
-template <class T>
+template <Real T>
 struct SVD {
   Status status = Status::empty_input;
-  MatX<T> u;             ///< m x k, orthonormal columns
-  std::vector<T> s;      ///< k singular values, descending
-  MatX<T> v;             ///< n x k, orthonormal columns
+  MatX<T> u;         ///< m x k, orthonormal columns
+  std::vector<T> s;  ///< k singular values, descending
+  MatX<T> v;         ///< n x k, orthonormal columns
   int sweeps = 0;
 };
 
-template <class T>
+template <Real T>
 struct Polar {
   Status status = Status::empty_input;
   MatX<T> q;  ///< orthogonal
@@ -73,7 +73,7 @@ MatX<T> from_compute(const MatX<C>& a) {
 }
 
 /// Euclidean norm of v[0], v[stride], ... (count entries), scaled against overflow/underflow.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T scaled_norm(const T* v, int count, int stride) noexcept {
   T mx = T(0);
   for (int i = 0; i < count; ++i) mx = std::fmax(mx, std::fabs(v[i * stride]));
@@ -87,7 +87,7 @@ template <class T>
 // H = I - tau u u^T (u_0 = 1) with H x = beta e_0, beta = -sign(x_0) |x|, so that x_0 - beta
 // never cancels. x = x[0], x[stride], ... (len entries) with norm = |x| > 0; x[0] becomes beta and
 // x[i stride] (i >= 1) u_i. Returns tau.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T make_householder(T* x, int len, int stride, T norm) noexcept {
   const T xk = x[0];
   const T beta = xk < T(0) ? norm : -norm;
@@ -100,7 +100,7 @@ template <class T>
 
 /// y <- H y for the reflector stored by make_householder at u (stride ustride, u_0 = 1 implied);
 /// y = y[0], y[ystride], ... (len entries). H is symmetric, so this also applies y^T H.
-template <class T>
+template <Real T>
 inline void apply_householder(const T* u, int ustride, int len, T tau, T* y, int ystride) noexcept {
   T w = y[0];
   for (int i = 1; i < len; ++i) w += u[i * ustride] * y[i * ystride];
@@ -111,7 +111,7 @@ inline void apply_householder(const T* u, int ustride, int len, T tau, T* y, int
 }  // namespace detail
 
 /// Householder QR, A = Q R (any shape; Q is rows x rows).
-template <class T>
+template <Real T>
 [[nodiscard]] QR<T> qr(const MatX<T>& a_in) {
   using C = compute_t<T>;
   QR<T> out;
@@ -140,7 +140,7 @@ template <class T>
 }
 
 /// Cholesky factorisation A = L L^T of a symmetric positive definite matrix.
-template <class T>
+template <Real T>
 [[nodiscard]] Cholesky<T> cholesky(const MatX<T>& a_in, T symmetry_tolerance = T(64) * eps_v<T>) {
   using C = compute_t<T>;
   Cholesky<T> out;
@@ -184,7 +184,7 @@ template <class T>
 }
 
 /// Thin singular value decomposition by one-sided Jacobi rotations.
-template <class T>
+template <Real T>
 [[nodiscard]] SVD<T> svd(const MatX<T>& a_in, int max_sweeps = 64) {
   using C = compute_t<T>;
   SVD<T> out;
@@ -232,7 +232,8 @@ template <class T>
         if (alpha <= negligible || beta <= negligible) continue;
         converged = false;
         const C zeta = (beta - alpha) / (C(2) * gamma);
-        const C t = (zeta >= C(0) ? C(1) : C(-1)) / (std::abs(zeta) + std::sqrt(C(1) + zeta * zeta));
+        const C t =
+            (zeta >= C(0) ? C(1) : C(-1)) / (std::abs(zeta) + std::sqrt(C(1) + zeta * zeta));
         const C c = C(1) / std::sqrt(C(1) + t * t), s = c * t;
         for (int i = 0; i < m; ++i) {
           const C up = u(i, p), uq = u(i, q);
@@ -309,7 +310,7 @@ template <class T>
 }
 
 /// Polar decomposition A = Q S of a square matrix (from the SVD).
-template <class T>
+template <Real T>
 [[nodiscard]] Polar<T> polar(const MatX<T>& a) {
   Polar<T> out;
   out.status = Status::ok;

@@ -34,20 +34,20 @@ namespace locus {
 template <class T, int N>
 struct SymmetricEigen {
   Status status = Status::empty_input;
-  Vec<T, N> values{};       ///< ascending
-  Mat<T, N, N> vectors{};   ///< column i is the unit eigenvector of values[i]
+  Vec<T, N> values{};      ///< ascending
+  Mat<T, N, N> vectors{};  ///< column i is the unit eigenvector of values[i]
 };
 
-template <class T>
+template <Real T>
 struct SymmetricEigenX {
   Status status = Status::empty_input;
-  std::vector<T> values;    ///< ascending
-  MatX<T> vectors;          ///< column i is the unit eigenvector of values[i]
-  int sweeps = 0;           ///< Jacobi sweeps used
+  std::vector<T> values;  ///< ascending
+  MatX<T> vectors;        ///< column i is the unit eigenvector of values[i]
+  int sweeps = 0;         ///< Jacobi sweeps used
 };
 
 /// Options of the symmetric eigensolvers.
-template <class T>
+template <Real T>
 struct SymmetricEigenOptions {
   /// |a_ij - a_ji| above this times max|a| makes the input "not symmetric" (invalid_input).
   T symmetry_tolerance = T(64) * eps_v<T>;
@@ -118,9 +118,9 @@ Vec3<C> any_unit_perpendicular(const Vec3<C>& v) noexcept {
 }  // namespace detail
 
 /// Eigendecomposition of a symmetric 2x2 matrix (closed form).
-template <class T>
-[[nodiscard]] SymmetricEigen<T, 2> eigen_symmetric(const Mat2<T>& a,
-                                                   const SymmetricEigenOptions<T>& opt = {}) noexcept {
+template <Real T>
+[[nodiscard]] SymmetricEigen<T, 2> eigen_symmetric(
+    const Mat2<T>& a, const SymmetricEigenOptions<T>& opt = {}) noexcept {
   using C = compute_t<T>;
   SymmetricEigen<T, 2> out;
   out.status = Status::ok;
@@ -140,7 +140,8 @@ template <class T>
     }
     return out;
   }
-  const C scale = std::max(std::abs(C(a(0, 0))), std::max(std::abs(C(a(0, 1))), std::abs(C(a(1, 1)))));
+  const C scale =
+      std::max(std::abs(C(a(0, 0))), std::max(std::abs(C(a(0, 1))), std::abs(C(a(1, 1)))));
   if (scale == C(0)) {
     out.values = Vec2<T>{};
     out.vectors = Mat2<T>::identity();
@@ -154,9 +155,9 @@ template <class T>
 }
 
 /// Eigendecomposition of a symmetric 3x3 matrix (closed form, robust; see the top comment).
-template <class T>
-[[nodiscard]] SymmetricEigen<T, 3> eigen_symmetric(const Mat3<T>& a_in,
-                                                   const SymmetricEigenOptions<T>& opt = {}) noexcept {
+template <Real T>
+[[nodiscard]] SymmetricEigen<T, 3> eigen_symmetric(
+    const Mat3<T>& a_in, const SymmetricEigenOptions<T>& opt = {}) noexcept {
   using C = compute_t<T>;
   SymmetricEigen<T, 3> out;
   out.status = Status::ok;
@@ -190,16 +191,16 @@ template <class T>
     const C q = trace(a) / C(3);
     Mat3<C> b = a;
     for (int i = 0; i < 3; ++i) b(i, i) -= q;
-    const C p = std::sqrt((b(0, 0) * b(0, 0) + b(1, 1) * b(1, 1) + b(2, 2) * b(2, 2) + C(2) * off) /
-                          C(6));
+    const C p =
+        std::sqrt((b(0, 0) * b(0, 0) + b(1, 1) * b(1, 1) + b(2, 2) * b(2, 2) + C(2) * off) / C(6));
     const C half_det = determinant(b * (C(1) / p)) / C(2);
     const C phi = std::acos(clamp(half_det, C(-1), C(1))) / C(3);
     // For det(B) >= 0 the largest eigenvalue is the isolated one, otherwise the smallest; the
     // isolated eigenvalue is at least sqrt(3) p from the other two, so A - lambda I has rank 2
     // and its eigenvector is a well-conditioned cross product of two rows.
     const bool largest_isolated = half_det >= C(0);
-    const C beta = largest_isolated ? C(2) * std::cos(phi)
-                                    : C(2) * std::cos(phi + C(2) * pi_v<C> / C(3));
+    const C beta =
+        largest_isolated ? C(2) * std::cos(phi) : C(2) * std::cos(phi + C(2) * pi_v<C> / C(3));
     Mat3<C> m = b;
     for (int i = 0; i < 3; ++i) m(i, i) -= p * beta;
     const Vec3<C> r0 = row(m, 0), r1 = row(m, 1), r2 = row(m, 2);
@@ -240,7 +241,7 @@ template <class T>
 }
 
 /// Eigendecomposition of a symmetric N x N matrix by cyclic Jacobi rotations.
-template <class T>
+template <Real T>
 [[nodiscard]] SymmetricEigenX<T> eigen_symmetric(const MatX<T>& a_in,
                                                  const SymmetricEigenOptions<T>& opt = {}) {
   using C = compute_t<T>;
@@ -296,7 +297,8 @@ template <class T>
         if (apq == C(0)) continue;
         // Rotation angle from tan(2 theta) = 2 apq / (aqq - app), the smaller root for t.
         const C theta = (a(q, q) - a(p, p)) / (C(2) * apq);
-        const C t = (theta >= C(0) ? C(1) : C(-1)) / (std::abs(theta) + std::sqrt(theta * theta + C(1)));
+        const C t =
+            (theta >= C(0) ? C(1) : C(-1)) / (std::abs(theta) + std::sqrt(theta * theta + C(1)));
         const C c = C(1) / std::sqrt(t * t + C(1)), s = t * c;
         for (int k = 0; k < n; ++k) {  // A <- A J (columns p, q)
           const C akp = a(k, p), akq = a(k, q);

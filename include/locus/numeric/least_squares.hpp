@@ -44,18 +44,18 @@ enum class LstsqMethod : std::uint8_t {
 };
 
 /// Result of least_squares().
-template <class T>
+template <Real T>
 struct LeastSquares {
   Status status =
       Status::empty_input;  ///< ok; degenerate_input (rank < n); empty_input; non_finite_input
-  std::vector<T> x;  ///< n unknowns
-  T residual_norm;   ///< ||b - A x||_2
-  int rank;          ///< numerical rank of A
+  std::vector<T> x;         ///< n unknowns
+  T residual_norm;          ///< ||b - A x||_2
+  int rank;                 ///< numerical rank of A
 };
 
 namespace detail {
 
-template <class T>
+template <Real T>
 inline void lstsq_qr(std::vector<T>& a, int m, int n, std::vector<T>& b, T tol,
                      LeastSquares<T>& out) {
   const std::size_t un = static_cast<std::size_t>(n);
@@ -103,7 +103,7 @@ inline void lstsq_qr(std::vector<T>& a, int m, int n, std::vector<T>& b, T tol,
   out.rank = rank;
 }
 
-template <class T>
+template <Real T>
 inline void lstsq_normal(const std::vector<T>& a, int m, int n, const std::vector<T>& b, T tol,
                          LeastSquares<T>& out) {
   const std::size_t un = static_cast<std::size_t>(n);
@@ -180,7 +180,7 @@ inline void lstsq_normal(const std::vector<T>& a, int m, int n, const std::vecto
 /// Least-squares solution of the row-major m x n system a x ~ b (see the top comment).
 /// rank_tolerance < 0 selects the default: max(m, n) * eps for QR, 16 max(m, n) * eps for the
 /// normal equations.
-template <class T>
+template <Real T>
 [[nodiscard]] inline LeastSquares<T> least_squares(std::span<const T> a, int m, int n,
                                                    std::span<const T> b,
                                                    LstsqMethod method = LstsqMethod::qr,
@@ -215,7 +215,7 @@ template <class T>
   if (out.rank < n) out.status = Status::degenerate_input;
   return out;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline LeastSquares<T> least_squares(const std::vector<T>& a, int m, int n,
                                                    const std::vector<T>& b,
                                                    LstsqMethod method = LstsqMethod::qr,

@@ -16,14 +16,15 @@
 
 namespace locus {
 
-template <class T>
+template <Real T>
 struct MatX {
   int rows = 0;
   int cols = 0;
   std::vector<T> data;  ///< row-major, rows * cols entries
 
   MatX() = default;
-  MatX(int r, int c, T fill = T(0)) : rows(r), cols(c), data(std::size_t(r) * std::size_t(c), fill) {
+  MatX(int r, int c, T fill = T(0))
+      : rows(r), cols(c), data(std::size_t(r) * std::size_t(c), fill) {
     LOCUS_ASSERT(r >= 0 && c >= 0, "MatX size must be non-negative");
   }
   template <int R, int C>
@@ -59,7 +60,7 @@ struct MatX {
   }
 };
 
-template <class T>
+template <Real T>
 [[nodiscard]] MatX<T> transpose(const MatX<T>& a) {
   MatX<T> t(a.cols, a.rows);
   for (int r = 0; r < a.rows; ++r)
@@ -67,7 +68,7 @@ template <class T>
   return t;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] MatX<T> operator*(const MatX<T>& a, const MatX<T>& b) {
   LOCUS_ASSERT(a.cols == b.rows, "MatX product shape mismatch");
   MatX<T> p(a.rows, b.cols);
@@ -79,7 +80,7 @@ template <class T>
   return p;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] std::vector<T> operator*(const MatX<T>& a, const std::vector<T>& x) {
   LOCUS_ASSERT(int(x.size()) == a.cols, "MatX-vector shape mismatch");
   std::vector<T> y(std::size_t(a.rows), T(0));
@@ -88,7 +89,7 @@ template <class T>
   return y;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] MatX<T> operator-(MatX<T> a, const MatX<T>& b) {
   LOCUS_ASSERT(a.rows == b.rows && a.cols == b.cols, "MatX shape mismatch");
   for (std::size_t i = 0; i < a.data.size(); ++i) a.data[i] -= b.data[i];
@@ -97,7 +98,7 @@ template <class T>
 
 /// Frobenius norm, scaled to avoid overflow and underflow. NaN when an entry is NaN, +inf when
 /// an entry is infinite (and none is NaN); 0 for an empty matrix.
-template <class T>
+template <Real T>
 [[nodiscard]] T frobenius_norm(const MatX<T>& a) noexcept {
   T m = T(0);
   bool infinite = false;
@@ -115,7 +116,7 @@ template <class T>
 }
 
 /// True when every entry is finite.
-template <class T>
+template <Real T>
 [[nodiscard]] bool is_finite(const MatX<T>& a) noexcept {
   for (T v : a.data)
     if (!is_finite(v)) return false;

@@ -47,7 +47,7 @@ namespace locus {
 // ---- one dimension -------------------------------------------------------------------------
 
 /// Three abscissae bracketing a minimum: f(b) < f(a) and f(b) <= f(c), b between a and c.
-template <class T>
+template <Real T>
 struct Bracket {
   Status status = Status::empty_input;  ///< ok, non_finite_input, limit_exceeded (no bracket found)
   T a{}, b{}, c{};
@@ -56,17 +56,17 @@ struct Bracket {
 };
 
 /// Result of a one-dimensional minimisation.
-template <class T>
+template <Real T>
 struct Minimum1 {
   Status status = Status::empty_input;  ///< ok, non_finite_input, limit_exceeded
-  T x{};                       ///< the best abscissa found
-  T value{};                   ///< f(x)
+  T x{};                                ///< the best abscissa found
+  T value{};                            ///< f(x)
   int iterations = 0;
   int evaluations = 0;
 };
 
 /// Options of Brent's method.
-template <class T>
+template <Real T>
 struct BrentOptions {
   T rel_tolerance = std::sqrt(eps_v<T>);  ///< relative accuracy of x (sqrt(eps) is the limit
                                           ///< for a smooth minimum: f is flat to eps there)
@@ -77,7 +77,7 @@ struct BrentOptions {
 namespace detail {
 
 // NaN counts as +infinity so that comparisons order it after every finite value.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T sanitize_value(T v) noexcept {
   return v == v ? v : std::numeric_limits<T>::infinity();
 }
@@ -259,14 +259,14 @@ template <class T, class F>
 template <class T, int N>
 struct MinimumN {
   Status status = Status::empty_input;  ///< ok, non_finite_input, limit_exceeded
-  Vec<T, N> x{};               ///< the best point found
-  T value{};                   ///< f(x)
-  int iterations = 0;          ///< direction-set sweeps
+  Vec<T, N> x{};                        ///< the best point found
+  T value{};                            ///< f(x)
+  int iterations = 0;                   ///< direction-set sweeps
   int evaluations = 0;
 };
 
 /// Options of Powell's method.
-template <class T>
+template <Real T>
 struct PowellOptions {
   T initial_step = T(1);  ///< length of the initial (coordinate) directions
   /// A sweep that lowers f by at most f_tolerance * (|f| + |f_new|) / 2 + f_abs_tolerance ends
@@ -374,7 +374,7 @@ template <class T, int N, class F>
 // ---- quadratic forms -----------------------------------------------------------------------
 
 /// Options of the quadratic-form minimisers.
-template <class T>
+template <Real T>
 struct QuadraticOptions {
   /// A is positive definite when lambda_min > definite_tolerance * max|lambda|; a negative
   /// value selects 16 N eps of the compute type.

@@ -34,7 +34,7 @@
 namespace locus {
 
 /// A univariate polynomial; coeff[i] multiplies x^i. See the header comment for trimming.
-template <class T>
+template <Field T>
 struct Polynomial {
   std::vector<T> coeff;
 
@@ -99,7 +99,7 @@ template <Real T>
   return true;
 }
 
-template <class T>
+template <Field T>
 [[nodiscard]] bool operator==(const Polynomial<T>& a, const Polynomial<T>& b) {
   const int d = a.degree();
   if (d != b.degree()) return false;
@@ -108,14 +108,14 @@ template <class T>
   return true;
 }
 
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> operator-(const Polynomial<T>& a) {
   std::vector<T> r(static_cast<std::size_t>(a.degree() + 1));
   for (std::size_t i = 0; i < r.size(); ++i) r[i] = -a.coeff[i];
   return Polynomial<T>(std::move(r));
 }
 
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> operator+(const Polynomial<T>& a, const Polynomial<T>& b) {
   const int n = std::max(a.degree(), b.degree());
   std::vector<T> r(static_cast<std::size_t>(n + 1));
@@ -123,7 +123,7 @@ template <class T>
   return Polynomial<T>(std::move(r));
 }
 
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> operator-(const Polynomial<T>& a, const Polynomial<T>& b) {
   const int n = std::max(a.degree(), b.degree());
   std::vector<T> r(static_cast<std::size_t>(n + 1));
@@ -131,7 +131,7 @@ template <class T>
   return Polynomial<T>(std::move(r));
 }
 
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> operator*(const Polynomial<T>& a, const Polynomial<T>& b) {
   const int da = a.degree(), db = b.degree();
   if (da < 0 || db < 0) return {};
@@ -141,19 +141,19 @@ template <class T>
   return Polynomial<T>(std::move(r));
 }
 
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> operator*(const Polynomial<T>& a, const T& s) {
   std::vector<T> r(static_cast<std::size_t>(a.degree() + 1));
   for (std::size_t i = 0; i < r.size(); ++i) r[i] = a.coeff[i] * s;
   return Polynomial<T>(std::move(r));
 }
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> operator*(const T& s, const Polynomial<T>& a) {
   return a * s;
 }
 
 /// Quotient and remainder of a / b: a = quotient * b + remainder, deg remainder < deg b.
-template <class T>
+template <Field T>
 struct PolynomialDivision {
   Status status = Status::ok;  ///< degenerate_input when b is the zero polynomial
   Polynomial<T> quotient;
@@ -162,7 +162,7 @@ struct PolynomialDivision {
 
 /// Long division. With floating-point T the eliminated leading term of each step is set to zero
 /// exactly rather than computed, so the remainder's degree is always < deg b.
-template <class T>
+template <Field T>
 [[nodiscard]] PolynomialDivision<T> divide(const Polynomial<T>& a, const Polynomial<T>& b) {
   PolynomialDivision<T> out;
   const int da = a.degree(), db = b.degree();
@@ -192,7 +192,7 @@ template <class T>
 }
 
 /// The derivative p'.
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> derivative(const Polynomial<T>& p) {
   const int n = p.degree();
   if (n <= 0) return {};
@@ -202,7 +202,7 @@ template <class T>
 }
 
 /// The composition p(q(x)), by Horner's scheme in the polynomial ring.
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> compose(const Polynomial<T>& p, const Polynomial<T>& q) {
   Polynomial<T> r;
   for (int i = p.degree(); i >= 0; --i) r = r * q + Polynomial<T>::constant(p[i]);
@@ -210,7 +210,7 @@ template <class T>
 }
 
 /// p divided by its leading coefficient (the zero polynomial stays zero).
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> monic(const Polynomial<T>& p) {
   const int n = p.degree();
   if (n < 0) return {};
@@ -222,7 +222,7 @@ template <class T>
 }
 
 namespace detail {
-template <class T>
+template <Field T>
 T max_abs_coeff(const Polynomial<T>& p) {
   T m = T(0);
   for (int i = 0; i <= p.degree(); ++i) m = std::max(m, std::abs(p[i]));
@@ -235,7 +235,7 @@ T max_abs_coeff(const Polynomial<T>& p) {
 /// coefficient of the current divisor counts as zero; the default 1e3 * eps suits data that is
 /// exact up to a few roundings; noisier data needs a larger tolerance (the gcd of perturbed
 /// polynomials is ill-posed, the tolerance says how much perturbation is forgiven).
-template <class T>
+template <Field T>
 [[nodiscard]] Polynomial<T> gcd(Polynomial<T> a, Polynomial<T> b,
                                 [[maybe_unused]] double rel_tol = -1.0) {
   if (a.degree() < b.degree()) std::swap(a, b);
@@ -255,7 +255,7 @@ template <class T>
 /// Horner's value and Higham's running error bound |value - p(x)| <= error_bound (Accuracy and
 /// Stability of Numerical Algorithms, 2nd ed., Algorithm 5.1; first order in eps, which we
 /// cover with a factor (1 + 4 n eps)). x and the coefficients are taken as exact.
-template <class T>
+template <Field T>
 struct EvaluationWithBound {
   T value;
   T error_bound;
@@ -310,7 +310,7 @@ template <Real T>
 /// divided by g when g is not constant, so that multiple roots do not make the whole sequence
 /// vanish: the sign variations then count distinct roots everywhere. Exact for exact T; for
 /// floating-point T see the header comment. Empty for the zero polynomial.
-template <class T>
+template <Field T>
 [[nodiscard]] std::vector<Polynomial<T>> sturm_sequence(const Polynomial<T>& p) {
   std::vector<Polynomial<T>> s;
   if (p.is_zero()) return s;
@@ -329,7 +329,7 @@ template <class T>
 }
 
 namespace detail {
-template <class T>
+template <Field T>
 int sign_variations(const std::vector<Polynomial<T>>& seq, const T& x) {
   int count = 0, last = 0;
   for (const auto& q : seq) {
@@ -346,13 +346,13 @@ int sign_variations(const std::vector<Polynomial<T>>& seq, const T& x) {
 
 /// Number of distinct real roots in (a, b] from a Sturm sequence (0 unless a < b). Exact for
 /// exact T.
-template <class T>
+template <Field T>
 [[nodiscard]] int sturm_count(const std::vector<Polynomial<T>>& seq, const T& a, const T& b) {
   if (seq.empty() || !(a < b)) return 0;
   return detail::sign_variations(seq, a) - detail::sign_variations(seq, b);
 }
 
-template <class T>
+template <Field T>
 [[nodiscard]] int sturm_count(const Polynomial<T>& p, const T& a, const T& b) {
   return sturm_count(sturm_sequence(p), a, b);
 }

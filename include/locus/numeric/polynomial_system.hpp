@@ -41,7 +41,7 @@
 namespace locus {
 
 /// f(x, y) = sum_i coeff[i](y) x^i.
-template <class T>
+template <Real T>
 struct BivariatePolynomial {
   std::vector<Polynomial<T>> coeff;
 
@@ -121,7 +121,7 @@ std::vector<std::vector<E>> sylvester(const std::vector<E>& f, int m, const std:
 }  // namespace detail
 
 /// Resultant of f and g with respect to x: a polynomial in y. Zero when either is zero.
-template <class T>
+template <Real T>
 [[nodiscard]] Polynomial<T> resultant_x(const BivariatePolynomial<T>& f,
                                         const BivariatePolynomial<T>& g) {
   const int m = f.degree_x(), n = g.degree_x();
@@ -134,7 +134,7 @@ template <class T>
 
 /// Resultant of two univariate polynomials (the Sylvester determinant). Zero when either is zero;
 /// for a non-zero constant f = c and deg g = n it is c^n.
-template <class T>
+template <Real T>
 [[nodiscard]] T resultant(const Polynomial<T>& f, const Polynomial<T>& g) {
   const int m = f.degree(), n = g.degree();
   if (m < 0 || n < 0) return T(0);
@@ -144,7 +144,7 @@ template <class T>
 }
 
 /// Coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0.
-template <class T>
+template <Real T>
 struct QuadraticCurveCoefficients {
   T a, b, c, d, e, f;
 };
@@ -158,10 +158,10 @@ struct QuadraticIntersectionOptions {
                                        ///< default 8 sqrt(eps(T))
 };
 
-template <class T>
+template <Real T>
 struct QuadraticCurvesIntersection {
   Status status = Status::empty_input;  ///< ok, non_finite_input, degenerate_input (a zero curve)
-  int count = 0;               ///< number of distinct intersection points listed
+  int count = 0;                        ///< number of distinct intersection points listed
   std::array<Vec2<T>, 4> point{};
   std::array<int, 4> multiplicity{};  ///< 2 at a tangency (intersection multiplicity)
   bool infinite = false;              ///< the curves share a component (coincident curves)

@@ -38,7 +38,7 @@
 namespace locus {
 
 /// A real root and its multiplicity.
-template <class T>
+template <Real T>
 struct Root {
   T value;
   int multiplicity;
@@ -66,7 +66,7 @@ struct RootOptions {
 };
 
 /// Roots of a polynomial of degree <= 4: no allocation in near mode.
-template <class T>
+template <Real T>
 struct RootsResult {
   Status status = Status::empty_input;  ///< ok, non_finite_input, degenerate_input, limit_exceeded
   int count = 0;                        ///< number of distinct real roots
@@ -82,7 +82,7 @@ struct RootsResult {
 };
 
 /// Roots of a polynomial of any degree (roots.size() distinct roots).
-template <class T>
+template <Real T>
 struct RealRootsResult {
   Status status = Status::empty_input;  ///< ok, non_finite_input, degenerate_input, limit_exceeded
   std::vector<Root<T>> roots;           ///< distinct real roots, increasing
@@ -114,7 +114,7 @@ int real_roots_engine(const double* a, const double* err, int n, double* work, R
 
 /// The exact engine (src/numeric/roots_exact.cpp): roots of a[0..n] (finite, not all zero) in
 /// [lo, hi], appended to out. Returns ok or limit_exceeded.
-template <class T>
+template <Real T>
 Status exact_real_roots(std::span<const double> a, T lo, T hi, const RootOptions& opt,
                         std::vector<Root<T>>& out);
 extern template Status exact_real_roots<float>(std::span<const double>, float, float,
@@ -136,7 +136,7 @@ LOCUS_ROOTS_EXTERN(double, 4)
 LOCUS_ROOTS_EXTERN(double, 5)
 #undef LOCUS_ROOTS_EXTERN
 
-template <class T>
+template <Real T>
 RealRootsResult<T> real_roots_span(std::span<const T> c, T a, T b, const RootOptions& opt);
 extern template RealRootsResult<float> real_roots_span<float>(std::span<const float>, float, float,
                                                               const RootOptions&);

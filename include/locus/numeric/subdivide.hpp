@@ -49,7 +49,7 @@ struct CurveSamples {
 };
 
 /// Length of a curve, with the outcome of the quadrature.
-template <class T>
+template <Real T>
 struct ArcLength {
   Status status = Status::empty_input;
   T length = T(0);
@@ -57,7 +57,7 @@ struct ArcLength {
 };
 
 /// Options of arc_length and subdivide_arc_length.
-template <class T>
+template <Real T>
 struct ArcLengthOptions {
   /// Target absolute error of a length, relative to the curve's total length.
   T relative_tolerance = T(64) * eps_v<T>;
@@ -161,7 +161,7 @@ struct FiniteDifferenceSpeed {
 
 // Finite differences carry errors of about eps_T^(2/3): asking the quadrature for more would
 // only chase that noise down to the depth budget.
-template <class T>
+template <Real T>
 ArcLengthOptions<T> fd_options(ArcLengthOptions<T> opt) noexcept {
   const T floor = T(4) * std::cbrt(eps_v<T> * eps_v<T>);
   if (opt.relative_tolerance >= T(0) && opt.relative_tolerance < floor)
@@ -175,7 +175,7 @@ struct Leaf {
   C ua, ub, length;
 };
 
-template <class T>
+template <Real T>
 struct LengthTable {
   using C = compute_t<T>;
   Status status = Status::empty_input;

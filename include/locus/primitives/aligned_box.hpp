@@ -40,9 +40,9 @@ struct AlignedBox {
   Vec<T, N> max;
 };
 
-template <class T>
+template <Real T>
 using AlignedBox2 = AlignedBox<T, 2>;
-template <class T>
+template <Real T>
 using AlignedBox3 = AlignedBox<T, 3>;
 using AlignedBox2f = AlignedBox2<float>;
 using AlignedBox2d = AlignedBox2<double>;
@@ -136,26 +136,26 @@ template <class T, int N>
 }
 
 /// Volume of a 3D box; 0 when empty.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T volume(const AlignedBox3<T>& b) noexcept {
   return measure(b);
 }
 
 /// Area of a 2D box; 0 when empty.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T area(const AlignedBox2<T>& b) noexcept {
   return measure(b);
 }
 
 /// Perimeter of a 2D box; 0 when empty.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T perimeter(const AlignedBox2<T>& b) noexcept {
   if (is_empty(b)) return T(0);
   return T(2) * ((b.max.x - b.min.x) + (b.max.y - b.min.y));
 }
 
 /// Surface area 2 (xy + yz + zx) of a 3D box; 0 when empty.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T surface_area(const AlignedBox3<T>& b) noexcept {
   if (is_empty(b)) return T(0);
   const Vec3<T> s = size(b);

@@ -31,7 +31,7 @@
 namespace locus {
 
 /// The arc of `circle` through the angles [start, start + sweep], counter-clockwise.
-template <class T>
+template <Real T>
 struct Arc2 {
   Circle2<T> circle;
   T start;
@@ -43,7 +43,7 @@ using Arc2d = Arc2<double>;
 
 namespace detail {
 /// True when `angle` modulo 2 pi lies in [start, start + sweep]; NaN gives false.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool angle_in_sweep(T angle, T start, T sweep) noexcept {
   using C = compute_t<T>;
   const C two_pi = C(2) * pi_v<C>;
@@ -57,50 +57,50 @@ template <class T>
 }  // namespace detail
 
 /// center + radius (cos angle, sin angle), as for the full circle.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> point_at(const Arc2<T>& arc, T angle) noexcept {
   return point_at(arc.circle, angle);
 }
 
 /// start + sweep.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T end_angle(const Arc2<T>& arc) noexcept {
   return arc.start + arc.sweep;
 }
 
 /// The point at the start angle.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> start_point(const Arc2<T>& arc) noexcept {
   return point_at(arc.circle, arc.start);
 }
 
 /// The point at the end angle.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> end_point(const Arc2<T>& arc) noexcept {
   return point_at(arc.circle, end_angle(arc));
 }
 
 /// radius * sweep.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T length(const Arc2<T>& arc) noexcept {
   return arc.circle.radius * arc.sweep;
 }
 
 /// True for a radius <= 0, a sweep outside [0, 2 pi], or a non-finite value.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_degenerate(const Arc2<T>& arc) noexcept {
   return is_degenerate(arc.circle) || !is_finite(arc.start) || !(arc.sweep >= T(0)) ||
          !(arc.sweep <= T(2) * pi_v<T>);
 }
 
 /// True when angle modulo 2 pi lies in [start, start + sweep].
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains_angle(const Arc2<T>& arc, T angle) noexcept {
   return detail::angle_in_sweep(angle, arc.start, arc.sweep);
 }
 
 /// True when the ray from the center through p meets the arc (p need not be on the circle).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains_direction(const Arc2<T>& arc, const Vec2<T>& p) noexcept {
   const Vec2<T> d = p - arc.circle.center;
   if (!is_finite(d) || d == Vec2<T>{} || !(arc.sweep >= T(0)) || !is_finite(arc.start))
@@ -121,7 +121,7 @@ template <class T>
 /// The counter-clockwise arc of `circle` from the direction of p0 to the direction of p1
 /// (both seen from the center). Coincident directions give sweep 0; a point at the center
 /// contributes angle 0.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Arc2<T> arc_between(const Circle2<T>& circle, const Vec2<T>& p0,
                                          const Vec2<T>& p1) noexcept {
   using C = compute_t<T>;

@@ -37,15 +37,15 @@ struct Capsule {
   T radius;
 };
 
-template <class T>
+template <Real T>
 using Capsule2 = Capsule<T, 2>;
-template <class T>
+template <Real T>
 using Capsule3 = Capsule<T, 3>;
 using Capsule3f = Capsule3<float>;
 using Capsule3d = Capsule3<double>;
 
 /// pi r^2 L + 4/3 pi r^3; NaN for a negative or NaN radius.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T volume(const Capsule3<T>& c) noexcept {
   const T r = c.radius;
   if (!(r >= T(0))) return std::numeric_limits<T>::quiet_NaN();
@@ -53,7 +53,7 @@ template <class T>
 }
 
 /// 2 pi r L + 4 pi r^2; NaN for a negative or NaN radius.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T surface_area(const Capsule3<T>& c) noexcept {
   const T r = c.radius;
   if (!(r >= T(0))) return std::numeric_limits<T>::quiet_NaN();
@@ -61,7 +61,7 @@ template <class T>
 }
 
 /// 2 r L + pi r^2 (2D); NaN for a negative or NaN radius.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T area(const Capsule2<T>& c) noexcept {
   const T r = c.radius;
   if (!(r >= T(0))) return std::numeric_limits<T>::quiet_NaN();
@@ -69,7 +69,7 @@ template <class T>
 }
 
 /// 2 L + 2 pi r (2D); NaN for a negative or NaN radius.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T perimeter(const Capsule2<T>& c) noexcept {
   const T r = c.radius;
   if (!(r >= T(0))) return std::numeric_limits<T>::quiet_NaN();
@@ -77,7 +77,7 @@ template <class T>
 }
 
 /// Lateral point point_at(segment, t) + r (cos theta u + sin theta v) with tt = (theta, t).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> point_at(const Capsule3<T>& c, const Vec2<T>& tt) noexcept {
   const auto b = perpendicular_basis(c.segment.p1 - c.segment.p0);
   return point_at(c.segment, tt.y) + c.radius * (std::cos(tt.x) * b.u + std::sin(tt.x) * b.v);

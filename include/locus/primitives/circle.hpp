@@ -22,8 +22,8 @@
 // zero vectors, so point_at() returns the center. Non-finite values propagate.
 // Cost O(1), no allocation; point_at calls cos and sin.
 
-#include <locus/core/scalar.hpp>
 #include <locus/core/basis.hpp>
+#include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 
 #include <cmath>
@@ -31,14 +31,14 @@
 namespace locus {
 
 /// The circle |X - center| = radius in the plane.
-template <class T>
+template <Real T>
 struct Circle2 {
   Vec2<T> center;
   T radius;
 };
 
 /// The circle of the given radius about center in the plane perpendicular to normal (3D).
-template <class T>
+template <Real T>
 struct Circle3 {
   Vec3<T> center;
   Vec3<T> normal;
@@ -46,7 +46,7 @@ struct Circle3 {
 };
 
 /// The filled disk of the given radius about center in the plane perpendicular to normal (3D).
-template <class T>
+template <Real T>
 struct Disk3 {
   Vec3<T> center;
   Vec3<T> normal;
@@ -61,7 +61,7 @@ using Disk3f = Disk3<float>;
 using Disk3d = Disk3<double>;
 
 /// Two unit vectors u, v spanning the plane of a Circle3 / Disk3, with u x v = unit normal.
-template <class T>
+template <Real T>
 struct CircleAxes {
   Vec3<T> u;
   Vec3<T> v;
@@ -70,7 +70,7 @@ struct CircleAxes {
 namespace detail {
 /// Right-handed in-plane axes of a normal: u x v = n / |n| (core/basis.hpp's completion, which
 /// is accurate to a few ulps for every direction); zero vectors for a zero or non-finite n.
-template <class T>
+template <Real T>
 [[nodiscard]] inline CircleAxes<T> circle_axes_of_normal(const Vec3<T>& n) noexcept {
   const OrthonormalBasis<T, 3> b = complete_basis(n);
   if (b.status != Status::ok) return {Vec3<T>{}, Vec3<T>{}};
@@ -79,24 +79,24 @@ template <class T>
 }  // namespace detail
 
 /// The in-plane axes (u, v) used by point_at(Circle3) (zero vectors for a zero normal).
-template <class T>
+template <Real T>
 [[nodiscard]] inline CircleAxes<T> in_plane_axes(const Circle3<T>& c) noexcept {
   return detail::circle_axes_of_normal(c.normal);
 }
 /// The in-plane axes (u, v) used by point_at(Disk3) (zero vectors for a zero normal).
-template <class T>
+template <Real T>
 [[nodiscard]] inline CircleAxes<T> in_plane_axes(const Disk3<T>& d) noexcept {
   return detail::circle_axes_of_normal(d.normal);
 }
 
 /// center + radius (cos angle, sin angle).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> point_at(const Circle2<T>& c, T angle) noexcept {
   return c.center + c.radius * Vec2<T>{std::cos(angle), std::sin(angle)};
 }
 
 /// center + radius (cos angle u + sin angle v) with (u, v) = in_plane_axes().
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> point_at(const Circle3<T>& c, T angle) noexcept {
   const CircleAxes<T> b = in_plane_axes(c);
   return c.center + (c.radius * std::cos(angle)) * b.u + (c.radius * std::sin(angle)) * b.v;
@@ -104,52 +104,52 @@ template <class T>
 
 /// center + s u + t v with st = (s, t) and (u, v) = in_plane_axes(); in the disk when
 /// s^2 + t^2 <= radius^2.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> point_at(const Disk3<T>& d, const Vec2<T>& st) noexcept {
   const CircleAxes<T> b = in_plane_axes(d);
   return d.center + st.x * b.u + st.y * b.v;
 }
 
 /// |p - center|^2 - radius^2 (rounded): negative inside, zero on, positive outside.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T evaluate(const Circle2<T>& c, const Vec2<T>& p) noexcept {
   return sqr_length(p - c.center) - c.radius * c.radius;
 }
 
 /// pi r^2 (the area of the disk bounded by the circle).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T area(const Circle2<T>& c) noexcept {
   return pi_v<T> * c.radius * c.radius;
 }
 /// pi r^2.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T area(const Disk3<T>& d) noexcept {
   return pi_v<T> * d.radius * d.radius;
 }
 /// 2 pi r.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T circumference(const Circle2<T>& c) noexcept {
   return T(2) * pi_v<T> * c.radius;
 }
 /// 2 pi r.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T circumference(const Circle3<T>& c) noexcept {
   return T(2) * pi_v<T> * c.radius;
 }
 
 /// True when the radius is not positive or a value is not finite.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_degenerate(const Circle2<T>& c) noexcept {
   return !(c.radius > T(0)) || !is_finite(c.radius) || !is_finite(c.center);
 }
 /// True when the radius is not positive, the normal is zero, or a value is not finite.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_degenerate(const Circle3<T>& c) noexcept {
   return !(c.radius > T(0)) || !is_finite(c.radius) || !is_finite(c.center) ||
          !is_finite(c.normal) || c.normal == Vec3<T>{};
 }
 /// True when the radius is not positive, the normal is zero, or a value is not finite.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_degenerate(const Disk3<T>& d) noexcept {
   return is_degenerate(Circle3<T>{d.center, d.normal, d.radius});
 }

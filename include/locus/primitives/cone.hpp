@@ -38,7 +38,7 @@
 namespace locus {
 
 /// Right circular cone with apex vertex, unit axis, half-angle and a height range.
-template <class T>
+template <Real T>
 struct Cone3 {
   Vec3<T> vertex;
   Vec3<T> axis;
@@ -51,39 +51,39 @@ using Cone3f = Cone3<float>;
 using Cone3d = Cone3<double>;
 
 /// Angle in (0, pi/2) and min_height <= max_height (no NaN).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_valid(const Cone3<T>& c) noexcept {
   return c.angle > T(0) && c.angle < pi_v<T> / T(2) && c.min_height <= c.max_height;
 }
 
 /// True when the height range is unbounded above or below.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_infinite(const Cone3<T>& c) noexcept {
   constexpr T inf = std::numeric_limits<T>::infinity();
   return c.max_height == inf || c.min_height == -inf;
 }
 
 /// True when min_height < 0 (the cone includes part of the opposite nappe).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_double(const Cone3<T>& c) noexcept {
   return c.min_height < T(0);
 }
 
 /// Radius |h| tan(alpha) of the cross-section at height h.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T radius_at(const Cone3<T>& c, T h) noexcept {
   return std::fabs(h) * std::tan(c.angle);
 }
 
 /// cos^2(alpha) |X - V|^2 - dot(D, X - V)^2: negative inside the infinite double cone.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T signed_value(const Cone3<T>& c, const Vec3<T>& x) noexcept {
   const Vec3<T> d = x - c.vertex;
   return sqr(std::cos(c.angle)) * sqr_length(d) - sqr(dot(c.axis, d));
 }
 
 /// V + h D + |h| tan(alpha) (cos theta u + sin theta v) with th = (theta, h).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> point_at(const Cone3<T>& c, const Vec2<T>& th) noexcept {
   const auto b = perpendicular_basis(c.axis);
   return c.vertex + th.y * c.axis +
@@ -91,7 +91,7 @@ template <class T>
 }
 
 /// pi tan^2(alpha) (max^3 - min^3) / 3; NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T volume(const Cone3<T>& c) noexcept {
   if (!is_valid(c)) return std::numeric_limits<T>::quiet_NaN();
   const T t = std::tan(c.angle);
@@ -100,7 +100,7 @@ template <class T>
 }
 
 /// pi tan(alpha) / cos(alpha) (max |max| - min |min|); NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T lateral_area(const Cone3<T>& c) noexcept {
   if (!is_valid(c)) return std::numeric_limits<T>::quiet_NaN();
   const T a = c.max_height, b = c.min_height;
@@ -108,7 +108,7 @@ template <class T>
 }
 
 /// Lateral area plus the two cap disks pi tan^2(alpha) (max^2 + min^2); NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T surface_area(const Cone3<T>& c) noexcept {
   if (!is_valid(c)) return std::numeric_limits<T>::quiet_NaN();
   const T t = std::tan(c.angle);
@@ -117,7 +117,7 @@ template <class T>
 
 /// Box of the cap disks (and the vertex when 0 is in the height range); infinite bounds for
 /// an infinite cone.
-template <class T>
+template <Real T>
 [[nodiscard]] inline AlignedBox3<T> bounding_box(const Cone3<T>& c) noexcept {
   const auto disk_box = [&](T h) {
     const Vec3<T> ctr = c.vertex + h * c.axis;
@@ -139,7 +139,7 @@ template <class T>
 /// Centroid of the solid: V + hbar D with hbar = (3/4) (max^4 - min^4) / (max^3 - min^3) (the
 /// section area grows as h^2). NaN components if invalid, infinite or flat (min == max gives
 /// the disk center V + min D).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> centroid(const Cone3<T>& c) noexcept {
   const T nan = std::numeric_limits<T>::quiet_NaN();
   if (!is_valid(c) || is_infinite(c)) return {nan, nan, nan};

@@ -35,7 +35,7 @@
 namespace locus {
 
 /// Right circular cylinder centred at axis.origin along the unit axis.direction.
-template <class T>
+template <Real T>
 struct Cylinder3 {
   Line3<T> axis;
   T radius;
@@ -46,13 +46,13 @@ using Cylinder3f = Cylinder3<float>;
 using Cylinder3d = Cylinder3<double>;
 
 /// True for height = +infinity.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_infinite(const Cylinder3<T>& c) noexcept {
   return c.height == std::numeric_limits<T>::infinity();
 }
 
 /// |X - C|^2 - dot(D, X - C)^2 - r^2 (infinite lateral surface; negative inside).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T signed_value(const Cylinder3<T>& c, const Vec3<T>& x) noexcept {
   const Vec3<T> d = x - c.axis.origin;
   const T h = dot(c.axis.direction, d);
@@ -60,7 +60,7 @@ template <class T>
 }
 
 /// C + t D + r (cos theta u + sin theta v) with tt = (theta, t).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> point_at(const Cylinder3<T>& c, const Vec2<T>& tt) noexcept {
   const auto b = perpendicular_basis(c.axis.direction);
   return c.axis.origin + tt.y * c.axis.direction +
@@ -68,14 +68,14 @@ template <class T>
 }
 
 namespace detail {
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool cylinder_invalid(const Cylinder3<T>& c) noexcept {
   return !(c.radius >= T(0)) || !(c.height >= T(0));
 }
 }  // namespace detail
 
 /// pi r^2 h (+infinity when infinite and r > 0); NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T volume(const Cylinder3<T>& c) noexcept {
   if (detail::cylinder_invalid(c)) return std::numeric_limits<T>::quiet_NaN();
   if (c.radius == T(0)) return T(0);
@@ -83,7 +83,7 @@ template <class T>
 }
 
 /// 2 pi r h; NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T lateral_area(const Cylinder3<T>& c) noexcept {
   if (detail::cylinder_invalid(c)) return std::numeric_limits<T>::quiet_NaN();
   if (c.radius == T(0)) return T(0);
@@ -91,7 +91,7 @@ template <class T>
 }
 
 /// 2 pi r h + 2 pi r^2 (lateral surface and the two caps); NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T surface_area(const Cylinder3<T>& c) noexcept {
   if (detail::cylinder_invalid(c)) return std::numeric_limits<T>::quiet_NaN();
   if (c.radius == T(0)) return T(0);
@@ -100,7 +100,7 @@ template <class T>
 
 /// Tight box of the two cap disks (infinite bounds along axes not orthogonal to D when
 /// the cylinder is infinite).
-template <class T>
+template <Real T>
 [[nodiscard]] inline AlignedBox3<T> bounding_box(const Cylinder3<T>& c) noexcept {
   Vec3<T> h{};
   for (int k = 0; k < 3; ++k) {
@@ -112,7 +112,7 @@ template <class T>
 }
 
 /// Centroid of the solid cylinder (its center, axis.origin).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> centroid(const Cylinder3<T>& c) noexcept {
   return c.axis.origin;
 }

@@ -40,7 +40,7 @@
 namespace locus {
 
 /// Axis form: center, unit orthogonal axes, half-axis lengths (book fig 5.16).
-template <class T>
+template <Real T>
 struct Ellipse2 {
   Vec2<T> center;
   Vec2<T> axis[2];
@@ -48,14 +48,14 @@ struct Ellipse2 {
 };
 
 /// Matrix form: the curve (X - center)^T m (X - center) = 1, m symmetric positive definite.
-template <class T>
+template <Real T>
 struct ImplicitEllipse2 {
   Vec2<T> center;
   Mat2<T> m;
 };
 
 /// The arc of an ellipse for angle parameters in [start, start + sweep], 0 <= sweep <= 2 pi.
-template <class T>
+template <Real T>
 struct EllipseArc2 {
   Ellipse2<T> ellipse;
   T start;
@@ -66,7 +66,7 @@ using Ellipse2f = Ellipse2<float>;
 using Ellipse2d = Ellipse2<double>;
 
 /// center + extent[0] cos(angle) axis[0] + extent[1] sin(angle) axis[1].
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> point_at(const Ellipse2<T>& e, T angle) noexcept {
   return e.center + (e.extent[0] * std::cos(angle)) * e.axis[0] +
          (e.extent[1] * std::sin(angle)) * e.axis[1];
@@ -74,27 +74,27 @@ template <class T>
 
 /// The point of the underlying ellipse at angle parameter `angle` (meaningful in
 /// [start, start + sweep]).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> point_at(const EllipseArc2<T>& arc, T angle) noexcept {
   return point_at(arc.ellipse, angle);
 }
 
 /// (X - C)^T M (X - C) - 1 (rounded): negative inside, zero on, positive outside.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T evaluate(const ImplicitEllipse2<T>& e, const Vec2<T>& p) noexcept {
   const Vec2<T> d = p - e.center;
   return dot(d, e.m * d) - T(1);
 }
 
 /// sum_i (dot(X - C, axis_i) / extent_i)^2 - 1 (rounded): negative inside, zero on the curve.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T evaluate(const Ellipse2<T>& e, const Vec2<T>& p) noexcept {
   const Vec2<T> d = p - e.center;
   return sqr(dot(d, e.axis[0]) / e.extent[0]) + sqr(dot(d, e.axis[1]) / e.extent[1]) - T(1);
 }
 
 /// True when an extent is not positive or a value is not finite.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_degenerate(const Ellipse2<T>& e) noexcept {
   return !(e.extent[0] > T(0)) || !(e.extent[1] > T(0)) || !is_finite(e.extent[0]) ||
          !is_finite(e.extent[1]) || !is_finite(e.center) || !is_finite(e.axis[0]) ||
@@ -102,13 +102,13 @@ template <class T>
 }
 
 /// pi extent[0] extent[1].
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T area(const Ellipse2<T>& e) noexcept {
   return pi_v<T> * e.extent[0] * e.extent[1];
 }
 
 /// Exact perimeter (to a few ulps) by the arithmetic-geometric mean; 4 a for a flat ellipse.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T perimeter(const Ellipse2<T>& e) noexcept {
   using C = compute_t<T>;
   C a = std::abs(static_cast<C>(e.extent[0])), b = std::abs(static_cast<C>(e.extent[1]));
@@ -138,7 +138,7 @@ template <class T>
 }
 
 /// Ramanujan's second approximation of the perimeter (see the header comment for its error).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T perimeter_ramanujan(const Ellipse2<T>& e) noexcept {
   using C = compute_t<T>;
   const C a = std::abs(static_cast<C>(e.extent[0])), b = std::abs(static_cast<C>(e.extent[1]));
@@ -149,7 +149,7 @@ template <class T>
 }
 
 /// The matrix form: M = sum_i axis_i axis_i^T / extent_i^2 (the axes are assumed orthonormal).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr ImplicitEllipse2<T> to_implicit(const Ellipse2<T>& e) noexcept {
   Mat2<T> m{};
   for (int i = 0; i < 2; ++i) {
@@ -159,11 +159,10 @@ template <class T>
   return {e.center, m};
 }
 
-
 /// Axis form of a matrix-form ellipse: extent[0] >= extent[1], axis[1] = perp(axis[0]).
 /// std::nullopt when m is not symmetric positive definite (as rounded) or not finite; only the
 /// upper triangle m(0, 1) is read for the off-diagonal entry.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Ellipse2<T>> to_axes(const ImplicitEllipse2<T>& e) noexcept {
   using C = compute_t<T>;
   if (!is_finite(e.center) || !is_finite(e.m)) return std::nullopt;
@@ -180,13 +179,13 @@ template <class T>
 }
 
 /// start + sweep, the angle parameter of the arc's end point.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T end_angle(const EllipseArc2<T>& arc) noexcept {
   return arc.start + arc.sweep;
 }
 
 /// True when angle (taken modulo 2 pi) lies in [start, start + sweep] (rounded, see arc.hpp).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool contains_angle(const EllipseArc2<T>& arc, T angle) noexcept {
   return detail::angle_in_sweep(angle, arc.start, arc.sweep);
 }

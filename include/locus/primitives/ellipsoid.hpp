@@ -36,9 +36,8 @@
 
 namespace locus {
 
-
 /// The ellipsoid { C + sum_i u_i extent[i] axis[i] : |u| = 1 } with orthonormal axes.
-template <class T>
+template <Real T>
 struct Ellipsoid3 {
   Vec3<T> center;
   Vec3<T> axis[3];
@@ -49,7 +48,7 @@ using Ellipsoid3f = Ellipsoid3<float>;
 using Ellipsoid3d = Ellipsoid3<double>;
 
 /// M = sum_i axis_i axis_i^T / extent_i^2, so the surface is (X - C)^T M (X - C) = 1.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Mat3<T> implicit_matrix(const Ellipsoid3<T>& e) noexcept {
   Mat3<T> m{};
   for (int i = 0; i < 3; ++i)
@@ -58,7 +57,7 @@ template <class T>
 }
 
 /// sum_i (dot(axis_i, X - C) / extent_i)^2 - 1: negative inside, zero on the surface.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T signed_value(const Ellipsoid3<T>& e, const Vec3<T>& x) noexcept {
   const Vec3<T> d = x - e.center;
   T s = T(0);
@@ -67,7 +66,7 @@ template <class T>
 }
 
 /// C + sum_i u_i extent[i] axis[i], u = (cos theta sin phi, sin theta sin phi, cos phi).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> point_at(const Ellipsoid3<T>& e, const Vec2<T>& tp) noexcept {
   const T st = std::sin(tp.x), ct = std::cos(tp.x), sp = std::sin(tp.y), cp = std::cos(tp.y);
   return e.center + (e.extent.x * ct * sp) * e.axis[0] + (e.extent.y * st * sp) * e.axis[1] +
@@ -75,7 +74,7 @@ template <class T>
 }
 
 /// 4/3 pi e0 e1 e2; NaN if an extent is negative.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T volume(const Ellipsoid3<T>& e) noexcept {
   if (e.extent.x < T(0) || e.extent.y < T(0) || e.extent.z < T(0))
     return std::numeric_limits<T>::quiet_NaN();
@@ -83,7 +82,7 @@ template <class T>
 }
 
 /// The tight axis-aligned box: half width along e_k is sqrt(sum_i (extent_i axis_i[k])^2).
-template <class T>
+template <Real T>
 [[nodiscard]] inline AlignedBox3<T> bounding_box(const Ellipsoid3<T>& e) noexcept {
   Vec3<T> h{};
   for (int k = 0; k < 3; ++k) {
@@ -96,7 +95,7 @@ template <class T>
 
 /// Axis form of (X - C)^T M (X - C) = 1 (M symmetric, upper triangle read); std::nullopt
 /// unless M is finite and positive definite (all computed eigenvalues > 0).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Ellipsoid3<T>> ellipsoid_from_implicit(
     const Vec3<T>& center, const Mat3<T>& m) noexcept {
   using C = compute_t<T>;
@@ -116,7 +115,7 @@ template <class T>
 }
 
 /// Centroid of the solid ellipsoid (its center).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> centroid(const Ellipsoid3<T>& e) noexcept {
   return e.center;
 }

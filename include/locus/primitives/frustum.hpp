@@ -35,7 +35,7 @@ namespace locus {
 
 /// Orthogonal view frustum with apex origin, orthonormal direction/up/right, near distance
 /// d_min, far distance d_max and near-face half extents u_bound (up) and r_bound (right).
-template <class T>
+template <Real T>
 struct Frustum3 {
   Vec3<T> origin;
   Vec3<T> direction;
@@ -51,14 +51,14 @@ using Frustum3f = Frustum3<float>;
 using Frustum3d = Frustum3<double>;
 
 /// 0 < d_min <= d_max, bounds >= 0, all finite.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_valid(const Frustum3<T>& f) noexcept {
   return f.d_min > T(0) && f.d_min <= f.d_max && is_finite(f.d_max) && f.u_bound >= T(0) &&
          f.r_bound >= T(0) && is_finite(f.u_bound) && is_finite(f.r_bound);
 }
 
 /// E + d D + (d/n)(s r R + t u U) with d = (1 - w) n + w f and stw = (s, t, w).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> point_at(const Frustum3<T>& f, const Vec3<T>& stw) noexcept {
   const T d = (T(1) - stw.z) * f.d_min + stw.z * f.d_max;
   const T q = d / f.d_min;
@@ -67,7 +67,7 @@ template <class T>
 }
 
 /// Corner k: bit 0 +R, bit 1 +U, bit 2 far face.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> corner(const Frustum3<T>& f, int k) noexcept {
   LOCUS_ASSERT(k >= 0 && k < 8, "Frustum corner index out of range");
   return point_at(f,
@@ -75,7 +75,7 @@ template <class T>
 }
 
 /// All 8 corners, corner(f, k) at index k.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr std::array<Vec3<T>, 8> corners(const Frustum3<T>& f) noexcept {
   std::array<Vec3<T>, 8> c{};
   for (int k = 0; k < 8; ++k) c[static_cast<std::size_t>(k)] = corner(f, k);
@@ -83,7 +83,7 @@ template <class T>
 }
 
 /// 4 r u (f^3 - n^3) / (3 n^2); NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T volume(const Frustum3<T>& f) noexcept {
   if (!is_valid(f)) return std::numeric_limits<T>::quiet_NaN();
   const T n = f.d_min, q = f.d_max / f.d_min;
@@ -92,7 +92,7 @@ template <class T>
 }
 
 /// Near and far rectangles plus the four side trapezoids; NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T surface_area(const Frustum3<T>& f) noexcept {
   if (!is_valid(f)) return std::numeric_limits<T>::quiet_NaN();
   const T n = f.d_min, q = f.d_max / f.d_min, r = f.r_bound, u = f.u_bound;
@@ -104,7 +104,7 @@ template <class T>
 }
 
 /// The box of the 8 corners.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr AlignedBox3<T> bounding_box(const Frustum3<T>& f) noexcept {
   AlignedBox3<T> b = empty_box<T, 3>();
   for (int k = 0; k < 8; ++k) b = expand(b, corner(f, k));
@@ -112,7 +112,7 @@ template <class T>
 }
 
 /// 2D orthogonal frustum (a trapezoid) with apex origin, orthonormal direction and left.
-template <class T>
+template <Real T>
 struct Frustum2 {
   Vec2<T> origin;
   Vec2<T> direction;
@@ -126,28 +126,28 @@ using Frustum2f = Frustum2<float>;
 using Frustum2d = Frustum2<double>;
 
 /// 0 < d_min <= d_max, l_bound >= 0, all finite.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_valid(const Frustum2<T>& f) noexcept {
   return f.d_min > T(0) && f.d_min <= f.d_max && is_finite(f.d_max) && f.l_bound >= T(0) &&
          is_finite(f.l_bound);
 }
 
 /// E + d D + (d/n) s l L with d = (1 - w) n + w f and sw = (s, w).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> point_at(const Frustum2<T>& f, const Vec2<T>& sw) noexcept {
   const T d = (T(1) - sw.y) * f.d_min + sw.y * f.d_max;
   return f.origin + d * f.direction + (d / f.d_min * sw.x * f.l_bound) * f.left;
 }
 
 /// Corner k: bit 0 +L, bit 1 far edge.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> corner(const Frustum2<T>& f, int k) noexcept {
   LOCUS_ASSERT(k >= 0 && k < 4, "Frustum corner index out of range");
   return point_at(f, Vec2<T>{(k & 1) ? T(1) : T(-1), (k & 2) ? T(1) : T(0)});
 }
 
 /// l (f^2 - n^2) / n; NaN if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T area(const Frustum2<T>& f) noexcept {
   if (!is_valid(f)) return std::numeric_limits<T>::quiet_NaN();
   const T q = f.d_max / f.d_min;
@@ -156,7 +156,7 @@ template <class T>
 
 /// Centroid of the solid: E + dbar D with dbar = (3/4) (f^4 - n^4) / (f^3 - n^3) (the section
 /// area grows as d^2); NaN components if invalid.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> centroid(const Frustum3<T>& f) noexcept {
   if (!is_valid(f)) {
     const T nan = std::numeric_limits<T>::quiet_NaN();

@@ -34,9 +34,9 @@ struct Line {
   Vec<T, N> direction;
 };
 
-template <class T>
+template <Real T>
 using Line2 = Line<T, 2>;
-template <class T>
+template <Real T>
 using Line3 = Line<T, 3>;
 using Line2f = Line2<float>;
 using Line2d = Line2<double>;
@@ -44,7 +44,7 @@ using Line3f = Line3<float>;
 using Line3d = Line3<double>;
 
 /// The line { X : dot(normal, X) + c = 0 } in the plane, i.e. a x + b y + c = 0 with normal (a, b).
-template <class T>
+template <Real T>
 struct ImplicitLine2 {
   Vec2<T> normal;
   T c;
@@ -66,7 +66,7 @@ template <class T, int N>
 }
 
 /// True when the normal is zero or a coefficient is not finite.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_degenerate(const ImplicitLine2<T>& line) noexcept {
   return !is_finite(line.normal) || !is_finite(line.c) || line.normal == Vec2<T>{};
 }
@@ -80,14 +80,14 @@ template <class T, int N>
 }
 
 /// a x + b y + c: zero on the line, positive on the side the normal points to (rounded).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T evaluate(const ImplicitLine2<T>& line, const Vec2<T>& p) noexcept {
   return dot(line.normal, p) + line.c;
 }
 
 /// The same line scaled to a unit normal, so evaluate() is the signed Euclidean distance;
 /// std::nullopt when the line is degenerate.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<ImplicitLine2<T>> normalized(
     const ImplicitLine2<T>& line) noexcept {
   if (is_degenerate(line)) return std::nullopt;
@@ -97,7 +97,7 @@ template <class T>
 
 /// Implicit form of a 2D line: normal = perp(direction) (left side positive),
 /// c = -dot(normal, origin). std::nullopt when the line is degenerate.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr std::optional<ImplicitLine2<T>> to_implicit(const Line2<T>& line) noexcept {
   if (is_degenerate(line)) return std::nullopt;
   const Vec2<T> n = perp(line.direction);
@@ -107,7 +107,7 @@ template <class T>
 /// Parametric form of an implicit line: direction = (b, -a), so that perp(direction) = normal
 /// (the inverse of to_implicit's convention), origin = the point of the line closest to the
 /// coordinate origin, -c * normal / |normal|^2. std::nullopt when the line is degenerate.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Line2<T>> to_parametric(const ImplicitLine2<T>& line) noexcept {
   if (is_degenerate(line)) return std::nullopt;
   // Scale by the largest component first so that |normal|^2 neither overflows nor underflows.

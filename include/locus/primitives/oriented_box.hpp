@@ -40,9 +40,9 @@ struct OrientedBox {
   Vec<T, N> extent;
 };
 
-template <class T>
+template <Real T>
 using OrientedBox2 = OrientedBox<T, 2>;
-template <class T>
+template <Real T>
 using OrientedBox3 = OrientedBox<T, 3>;
 using OrientedBox2f = OrientedBox2<float>;
 using OrientedBox2d = OrientedBox2<double>;
@@ -88,19 +88,19 @@ template <class T, int N>
 }
 
 /// Volume of a 3D box.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T volume(const OrientedBox3<T>& b) noexcept {
   return measure(b);
 }
 
 /// Area of a 2D box.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T area(const OrientedBox2<T>& b) noexcept {
   return measure(b);
 }
 
 /// Surface area 8 (e0 e1 + e1 e2 + e2 e0) of a 3D box; NaN if an extent is negative.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T surface_area(const OrientedBox3<T>& b) noexcept {
   const Vec3<T>& e = b.extent;
   if (e.x < T(0) || e.y < T(0) || e.z < T(0)) return std::numeric_limits<T>::quiet_NaN();

@@ -31,7 +31,7 @@
 namespace locus {
 
 /// A polygon in the plane of `frame`, given by its plane coordinates.
-template <class T>
+template <Real T>
 struct PlanarPolygon3 {
   PlaneFrame3<T> frame;
   Polygon2<T> polygon;
@@ -41,20 +41,20 @@ using PlanarPolygon3f = PlanarPolygon3<float>;
 using PlanarPolygon3d = PlanarPolygon3<double>;
 
 /// The point with plane coordinates st = (s, t): frame.origin + s u + t v.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> point_at(const PlanarPolygon3<T>& poly,
                                          const Vec2<T>& st) noexcept {
   return to_world(poly.frame, st);
 }
 
 /// Vertex i in 3D.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> vertex(const PlanarPolygon3<T>& poly, std::size_t i) noexcept {
   return to_world(poly.frame, poly.polygon.vertices[i]);
 }
 
 /// The polygon of 3D vertices in their Newell plane (see the header comment).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<PlanarPolygon3<T>> planar_polygon(
     std::span<const Vec3<T>> vertices) {
   if (vertices.size() < 3) return std::nullopt;

@@ -42,7 +42,7 @@
 namespace locus {
 
 /// The plane { X : dot(normal, X) = constant }; the normal need not be unit length.
-template <class T>
+template <Real T>
 struct Plane3 {
   Vec3<T> normal;
   T constant;
@@ -52,21 +52,21 @@ using Plane3f = Plane3<float>;
 using Plane3d = Plane3<double>;
 
 /// Point-normal form (fig 9.1): the plane through p with normal n, { X : dot(n, X - p) = 0 }.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Plane3<T> plane_from_point_normal(const Vec3<T>& p,
                                                           const Vec3<T>& n) noexcept {
   return {n, dot(n, p)};
 }
 
 /// True when the normal is zero or a coefficient is not finite.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool is_degenerate(const Plane3<T>& pl) noexcept {
   return !is_finite(pl.normal) || !is_finite(pl.constant) || pl.normal == Vec3<T>{};
 }
 
 /// The plane through a, b, c with normal (b - a) x (c - a); std::nullopt when the points are
 /// (exactly) collinear or the rounded normal is zero or not finite.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Plane3<T>> plane_through(const Vec3<T>& a, const Vec3<T>& b,
                                                             const Vec3<T>& c) noexcept {
   if (is_degenerate(Triangle3<T>{a, b, c})) return std::nullopt;
@@ -78,13 +78,13 @@ template <class T>
 }
 
 /// dot(normal, X) - constant: |normal| times the signed distance; positive on the normal side.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T signed_value(const Plane3<T>& pl, const Vec3<T>& x) noexcept {
   return dot(pl.normal, x) - pl.constant;
 }
 
 /// The same plane with a unit normal; {0, 0} for a degenerate plane.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Plane3<T> normalized(const Plane3<T>& pl) noexcept {
   if (is_degenerate(pl)) return {Vec3<T>{}, T(0)};
   const auto nl = normalize_with_length(pl.normal);
@@ -93,7 +93,7 @@ template <class T>
 
 /// Signed Euclidean distance from x to the plane (positive on the normal side); NaN for a
 /// degenerate plane.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T signed_distance(const Plane3<T>& pl, const Vec3<T>& x) noexcept {
   if (is_degenerate(pl)) return std::numeric_limits<T>::quiet_NaN();
   const auto nl = normalize_with_length(pl.normal);
@@ -101,7 +101,7 @@ template <class T>
 }
 
 /// Orthogonal projection of x onto the plane; x itself for a degenerate plane.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> project(const Plane3<T>& pl, const Vec3<T>& x) noexcept {
   if (is_degenerate(pl)) return x;
   const auto nl = normalize_with_length(pl.normal);
@@ -109,13 +109,13 @@ template <class T>
 }
 
 /// The point of the plane closest to the coordinate origin; the origin for a degenerate plane.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> closest_to_origin(const Plane3<T>& pl) noexcept {
   return project(pl, Vec3<T>{});
 }
 
 /// Two unit vectors u, v with (u, v, n) a right-handed orthonormal basis.
-template <class T>
+template <Real T>
 struct PerpendicularBasis {
   Vec3<T> u;
   Vec3<T> v;
@@ -125,7 +125,7 @@ struct PerpendicularBasis {
 /// in-plane axes of core/basis.hpp's complete_basis (also used by Circle3/Disk3, so a
 /// cylinder's cross-section and a Circle3 with the same normal are parametrised alike).
 /// A zero or non-finite n gives u = v = 0.
-template <class T>
+template <Real T>
 [[nodiscard]] inline PerpendicularBasis<T> perpendicular_basis(const Vec3<T>& n) noexcept {
   const OrthonormalBasis<T, 3> b = complete_basis(n);
   if (b.status != Status::ok) return {Vec3<T>{}, Vec3<T>{}};
@@ -133,7 +133,7 @@ template <class T>
 }
 
 /// A right-handed orthonormal frame in a plane: origin on the plane, u x v = normal.
-template <class T>
+template <Real T>
 struct PlaneFrame3 {
   Vec3<T> origin;
   Vec3<T> u;
@@ -143,7 +143,7 @@ struct PlaneFrame3 {
 
 /// The frame with the given origin and normal direction (u from perpendicular_basis);
 /// std::nullopt for a zero or non-finite normal or a non-finite origin.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<PlaneFrame3<T>> plane_frame(const Vec3<T>& origin,
                                                                const Vec3<T>& normal) noexcept {
   if (!is_finite(origin)) return std::nullopt;
@@ -155,32 +155,32 @@ template <class T>
 
 /// A frame of the plane whose origin is the plane point closest to the coordinate origin;
 /// std::nullopt for a degenerate plane.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<PlaneFrame3<T>> plane_frame(const Plane3<T>& pl) noexcept {
   if (is_degenerate(pl)) return std::nullopt;
   return plane_frame(closest_to_origin(pl), pl.normal);
 }
 
 /// The plane of a frame (unit normal).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Plane3<T> plane_of(const PlaneFrame3<T>& f) noexcept {
   return plane_from_point_normal(f.origin, f.normal);
 }
 
 /// Embeds plane coordinates (s, t): origin + s u + t v.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> to_world(const PlaneFrame3<T>& f, const Vec2<T>& st) noexcept {
   return f.origin + st.x * f.u + st.y * f.v;
 }
 
 /// Parametric form of the plane (fig 9.3), the same as to_world.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> point_at(const PlaneFrame3<T>& f, const Vec2<T>& st) noexcept {
   return to_world(f, st);
 }
 
 /// Plane coordinates of the orthogonal projection of x: (dot(x - origin, u), dot(x - origin, v)).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> to_plane(const PlaneFrame3<T>& f, const Vec3<T>& x) noexcept {
   const Vec3<T> d = x - f.origin;
   return {dot(d, f.u), dot(d, f.v)};
@@ -188,7 +188,7 @@ template <class T>
 
 /// Newell's normal of the closed polygon p[0], ..., p[n-1]: 2 * area * unit normal for a
 /// planar polygon, counter-clockwise seen from the side it points to; 0 for fewer than 3 points.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> newell_normal(std::span<const Vec3<T>> p) noexcept {
   Vec3<T> n{};
   const std::size_t count = p.size();
@@ -205,14 +205,14 @@ template <class T>
 }
 
 /// Newell's normal of the n vertices starting at p.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> newell_normal(const Vec3<T>* p, std::size_t n) noexcept {
   return newell_normal(std::span<const Vec3<T>>(p, n));
 }
 
 /// The plane with Newell's normal through the vertex average; std::nullopt when the normal is
 /// zero or not finite (fewer than 3 points, all collinear, or zero net area).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Plane3<T>> best_fit_plane_newell(
     std::span<const Vec3<T>> p) noexcept {
   const Vec3<T> n = newell_normal(p);
@@ -224,7 +224,7 @@ template <class T>
 }
 
 /// best_fit_plane_newell of the n vertices starting at p.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Plane3<T>> best_fit_plane_newell(const Vec3<T>* p,
                                                                     std::size_t n) noexcept {
   return best_fit_plane_newell(std::span<const Vec3<T>>(p, n));

@@ -26,11 +26,11 @@
 // vertices: area 0, not simple, not convex, orientation zero.
 
 #include <locus/config.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
-#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/segment.hpp>
 
@@ -45,13 +45,13 @@
 namespace locus {
 
 /// A closed polygon v[0], ..., v[n-1] (the first vertex is not repeated at the end).
-template <class T>
+template <Real T>
 struct Polygon2 {
   std::vector<Vec2<T>> vertices;
 };
 
 /// A polygon with holes: outer boundary and hole boundaries (see the header comment).
-template <class T>
+template <Real T>
 struct PolygonWithHoles2 {
   Polygon2<T> outer;
   std::vector<Polygon2<T>> holes;
@@ -62,7 +62,7 @@ using Polygon2d = Polygon2<double>;
 
 namespace detail {
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool all_finite(std::span<const Vec2<T>> v) noexcept {
   for (const Vec2<T>& p : v)
     if (!is_finite(p)) return false;
@@ -71,7 +71,7 @@ template <class T>
 
 /// Indices of the vertices that differ from their cyclic predecessor (consecutive duplicates
 /// removed; if all vertices coincide, the single index 0).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::vector<std::size_t> distinct_cycle(std::span<const Vec2<T>> v) {
   std::vector<std::size_t> out;
   const std::size_t n = v.size();
@@ -86,7 +86,7 @@ template <class T>
 
 /// Exact: for collinear a, b, c with a != b and b != c, true when c - b points back along a - b
 /// (the chain folds back on itself at b).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool folds_back(const Vec2<T>& a, const Vec2<T>& b,
                                         const Vec2<T>& c) noexcept {
   // b - a and c - b are parallel and nonzero, so their x-components are both zero or both
@@ -98,13 +98,13 @@ template <class T>
 }
 
 /// Exact lexicographic (x, then y) order.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool lex_less(const Vec2<T>& a, const Vec2<T>& b) noexcept {
   return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
 
 /// Exact: p lies on the closed segment [a, b], given orient2d(a, b, p) == 0.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool on_collinear_segment(const Vec2<T>& a, const Vec2<T>& b,
                                                   const Vec2<T>& p) noexcept {
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
@@ -115,7 +115,7 @@ template <class T>
 
 /// Exact test: do the closed segments [p0, p1] and [q0, q1] share a point (crossing, touching,
 /// or overlapping)? Degenerate segments act as points.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool segments_intersect_exact(const Vec2<T>& p0, const Vec2<T>& p1,
                                                    const Vec2<T>& q0, const Vec2<T>& q1) noexcept {
   const int o1 = to_int(orient2d(p0, p1, q0)), o2 = to_int(orient2d(p0, p1, q1));
@@ -132,7 +132,7 @@ template <class T>
 
 /// Signed area (shoelace relative to v[0], accumulated in compute_t<T>); positive for
 /// counter-clockwise order.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T polygon_signed_area(std::span<const Vec2<T>> v) noexcept {
   using C = compute_t<T>;
   if (v.size() < 3) return T(0);
@@ -144,20 +144,20 @@ template <class T>
 }
 
 /// |signed area|.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T polygon_area(std::span<const Vec2<T>> v) noexcept {
   return std::abs(polygon_signed_area(v));
 }
 
 /// Sum of the edge lengths of the closed chain.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T polygon_perimeter(std::span<const Vec2<T>> v) noexcept {
   return polyline_length(v, true);
 }
 
 /// Area centroid (triangle fan from v[0], weights in compute_t<T>); the vertex average when
 /// the rounded area is zero; the zero vector for an empty polygon.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> polygon_centroid(std::span<const Vec2<T>> v) noexcept {
   using C = compute_t<T>;
   if (v.empty()) return Vec2<T>{};
@@ -181,7 +181,7 @@ template <class T>
 // ---- orientation and convexity -------------------------------------------------------------
 
 /// Exact orientation at the lowest-leftmost vertex (see the header comment).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Sign polygon_orientation(std::span<const Vec2<T>> v) noexcept {
   const std::size_t n = v.size();
   if (n < 3 || !detail::all_finite(v)) return Sign::zero;
@@ -199,7 +199,7 @@ template <class T>
 }
 
 /// Exact weak convexity (see the header comment).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool polygon_is_convex(std::span<const Vec2<T>> v) noexcept {
   const std::size_t n = v.size();
   if (n < 3 || !detail::all_finite(v)) return false;
@@ -265,7 +265,7 @@ template <class T>
 /// The first pair of offending edges found, as indices i < j of the original edges
 /// (v[i], v[i+1 mod n]), or std::nullopt when the polygon is simple. A polygon with fewer than
 /// three distinct vertices reports the pair (0, 0); non-finite input too.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<std::pair<std::size_t, std::size_t>> polygon_self_intersection(
     std::span<const Vec2<T>> v) {
   using Result = std::optional<std::pair<std::size_t, std::size_t>>;
@@ -363,7 +363,7 @@ template <class T>
 }
 
 /// True when the polygon is simple (see the header comment); O(n log n).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool polygon_is_simple(std::span<const Vec2<T>> v) {
   return !polygon_self_intersection(v).has_value();
 }
@@ -382,7 +382,7 @@ struct MonotoneSplit {
 /// max_vertex (increasing indices, cyclically) is non-decreasing along d, the chain
 /// max_vertex -> min_vertex non-increasing. Not monotone for a zero or non-finite direction,
 /// non-finite vertices, fewer than three vertices, or all vertices on one perpendicular line.
-template <class T>
+template <Real T>
 [[nodiscard]] inline MonotoneSplit polygon_monotone_split(std::span<const Vec2<T>> v,
                                                           const Vec2<T>& d) noexcept {
   const std::size_t n = v.size();
@@ -419,7 +419,7 @@ template <class T>
 }
 
 /// Exact monotone-polygon test along direction d (fig 5.12).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool polygon_is_monotone(std::span<const Vec2<T>> v,
                                               const Vec2<T>& d) noexcept {
   return polygon_monotone_split(v, d).monotone;
@@ -427,51 +427,51 @@ template <class T>
 
 // ---- Polygon2 overloads ----------------------------------------------------------------------
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline T signed_area(const Polygon2<T>& p) noexcept {
   return polygon_signed_area(std::span<const Vec2<T>>(p.vertices));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline T area(const Polygon2<T>& p) noexcept {
   return polygon_area(std::span<const Vec2<T>>(p.vertices));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline T perimeter(const Polygon2<T>& p) noexcept {
   return polygon_perimeter(std::span<const Vec2<T>>(p.vertices));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> centroid(const Polygon2<T>& p) noexcept {
   return polygon_centroid(std::span<const Vec2<T>>(p.vertices));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline Sign orientation(const Polygon2<T>& p) noexcept {
   return polygon_orientation(std::span<const Vec2<T>>(p.vertices));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool is_convex(const Polygon2<T>& p) noexcept {
   return polygon_is_convex(std::span<const Vec2<T>>(p.vertices));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool is_simple(const Polygon2<T>& p) {
   return polygon_is_simple(std::span<const Vec2<T>>(p.vertices));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<std::pair<std::size_t, std::size_t>> self_intersection(
     const Polygon2<T>& p) {
   return polygon_self_intersection(std::span<const Vec2<T>>(p.vertices));
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool is_monotone(const Polygon2<T>& p, const Vec2<T>& d) noexcept {
   return polygon_is_monotone(std::span<const Vec2<T>>(p.vertices), d);
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline MonotoneSplit monotone_split(const Polygon2<T>& p, const Vec2<T>& d) noexcept {
   return polygon_monotone_split(std::span<const Vec2<T>>(p.vertices), d);
 }
 
 /// Area of the outer boundary minus the areas of the holes (absolute values, so the result
 /// does not depend on the boundaries' orientations).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T area(const PolygonWithHoles2<T>& p) noexcept {
   T a = area(p.outer);
   for (const Polygon2<T>& h : p.holes) a -= area(h);
@@ -479,7 +479,7 @@ template <class T>
 }
 
 /// Total boundary length (outer plus holes).
-template <class T>
+template <Real T>
 [[nodiscard]] inline T perimeter(const PolygonWithHoles2<T>& p) noexcept {
   T s = perimeter(p.outer);
   for (const Polygon2<T>& h : p.holes) s += perimeter(h);
@@ -487,7 +487,7 @@ template <class T>
 }
 
 /// Area centroid of the region (outer minus holes); the outer centroid when the area is zero.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec2<T> centroid(const PolygonWithHoles2<T>& p) noexcept {
   using C = compute_t<T>;
   C total = static_cast<C>(area(p.outer));

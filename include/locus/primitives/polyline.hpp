@@ -24,10 +24,10 @@
 // except cumulative_lengths (which returns a vector).
 
 #include <locus/config.hpp>
+#include <locus/core/exact_sum.hpp>
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
-#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/segment.hpp>
 
 #include <algorithm>
@@ -45,9 +45,9 @@ struct Polyline {
   bool closed = false;
 };
 
-template <class T>
+template <Real T>
 using Polyline2 = Polyline<T, 2>;
-template <class T>
+template <Real T>
 using Polyline3 = Polyline<T, 3>;
 using Polyline2f = Polyline2<float>;
 using Polyline2d = Polyline2<double>;
@@ -160,7 +160,7 @@ template <class T, int N>
 
 /// Exact monotonicity of the open chain v[0..n) with respect to direction d (fig 5.11):
 /// non-decreasing or non-increasing projections (strict = strictly).
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool is_monotone_chain(std::span<const Vec2<T>> v, const Vec2<T>& d,
                                             bool strict = false) noexcept {
   if (!is_finite(d) || d == Vec2<T>{}) return false;

@@ -22,11 +22,11 @@
 // compute_t<T>, rounded), std::nullopt otherwise; to_circle(q) the circle when the class is
 // circle.
 
+#include <locus/core/exact_sum.hpp>
 #include <locus/core/mat.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/primitives/circle.hpp>
-#include <locus/core/exact_sum.hpp>
 #include <locus/primitives/ellipse.hpp>
 
 #include <algorithm>
@@ -38,7 +38,7 @@
 namespace locus {
 
 /// The conic a x^2 + b x y + c y^2 + d x + e y + f = 0.
-template <class T>
+template <Real T>
 struct QuadraticCurve2 {
   T a, b, c, d, e, f;
 };
@@ -118,13 +118,13 @@ struct ConicSigns {
 }  // namespace detail
 
 /// a x^2 + b x y + c y^2 + d x + e y + f (rounded).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T evaluate(const QuadraticCurve2<T>& q, const Vec2<T>& p) noexcept {
   return (q.a * p.x + q.b * p.y + q.d) * p.x + (q.c * p.y + q.e) * p.y + q.f;
 }
 
 /// The exact class of the conic (see the header comment for the decision table).
-template <class T>
+template <Real T>
 [[nodiscard]] inline ConicKind classify_conic(const QuadraticCurve2<T>& q) noexcept {
   if (!is_finite(q.a) || !is_finite(q.b) || !is_finite(q.c) || !is_finite(q.d) || !is_finite(q.e) ||
       !is_finite(q.f))
@@ -148,7 +148,7 @@ template <class T>
 }
 
 /// The coefficients of |X - center|^2 - radius^2 = 0 (rounded).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr QuadraticCurve2<T> to_quadratic(const Circle2<T>& c) noexcept {
   return {T(1),
           T(0),
@@ -159,7 +159,7 @@ template <class T>
 }
 
 /// The coefficients of (X - C)^T M (X - C) - 1 = 0 with M from to_implicit(e) (rounded).
-template <class T>
+template <Real T>
 [[nodiscard]] inline QuadraticCurve2<T> to_quadratic(const Ellipse2<T>& e) noexcept {
   const ImplicitEllipse2<T> im = to_implicit(e);
   const Mat2<T>& m = im.m;
@@ -169,7 +169,7 @@ template <class T>
 }
 
 /// The axis form of the conic when classify_conic(q) is ellipse or circle, else std::nullopt.
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Ellipse2<T>> to_ellipse(const QuadraticCurve2<T>& q) noexcept {
   const ConicKind k = classify_conic(q);
   if (k != ConicKind::ellipse && k != ConicKind::circle) return std::nullopt;
@@ -196,7 +196,7 @@ template <class T>
 }
 
 /// The circle when classify_conic(q) is circle, else std::nullopt (rounded).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Circle2<T>> to_circle(const QuadraticCurve2<T>& q) noexcept {
   if (classify_conic(q) != ConicKind::circle) return std::nullopt;
   using C = compute_t<T>;

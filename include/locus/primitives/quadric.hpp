@@ -41,7 +41,7 @@
 namespace locus {
 
 /// The quadric surface X^T a X + dot(b, X) + c = 0 (a symmetric; upper triangle read).
-template <class T>
+template <Real T>
 struct Quadric3 {
   Mat3<T> a;
   Vec3<T> b;
@@ -127,7 +127,7 @@ struct QuadricClass {
 };
 
 /// q(P + R y) = sum d_i y_i^2 + dot(e, y) + k (see the header comment).
-template <class T>
+template <Real T>
 struct QuadricStandardForm {
   Status status;
   QuadricType type;
@@ -139,7 +139,7 @@ struct QuadricStandardForm {
 };
 
 /// X^T A X + dot(b, X) + c.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T signed_value(const Quadric3<T>& q, const Vec3<T>& x) noexcept {
   T s = q.c + dot(q.b, x);
   for (int i = 0; i < 3; ++i) {
@@ -181,7 +181,7 @@ namespace detail {
   }
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool quadric_is_finite(const Quadric3<T>& q) noexcept {
   return is_finite(q.a) && is_finite(q.b) && is_finite(q.c);
 }
@@ -190,7 +190,7 @@ template <class T>
 
 /// Exact classification of the quadric with the given coefficients (header comment); compiled
 /// in src/primitives/quadric.cpp for float and double.
-template <class T>
+template <Real T>
 [[nodiscard]] QuadricClass quadric_type(const Quadric3<T>& q) noexcept;
 extern template QuadricClass quadric_type<float>(const Quadric3<float>&) noexcept;
 extern template QuadricClass quadric_type<double>(const Quadric3<double>&) noexcept;
@@ -277,7 +277,7 @@ inline void quadric_to_compute(const Quadric3<T>& q, Mat3<C>& a, Vec3<C>& b, C& 
 
 /// Standard form with the ranks of the exact classification (so its type is
 /// quadric_type(q).type).
-template <class T>
+template <Real T>
 [[nodiscard]] inline QuadricStandardForm<T> standard_form(const Quadric3<T>& q) noexcept {
   using C = compute_t<T>;
   const QuadricClass cls = quadric_type(q);
@@ -296,7 +296,7 @@ template <class T>
 /// Standard form with tolerance decisions: after scaling by 1 / max|coefficient|, eigenvalues,
 /// the null-space linear term and the constant with magnitude <= rel_tol count as zero. The
 /// returned numbers are in the ORIGINAL scale.
-template <class T>
+template <Real T>
 [[nodiscard]] inline QuadricStandardForm<T> standard_form(const Quadric3<T>& q,
                                                           T rel_tol) noexcept {
   using C = compute_t<T>;
@@ -344,7 +344,7 @@ template <class T>
 }
 
 /// Tolerance-based classification (see standard_form(q, rel_tol)); exact = false.
-template <class T>
+template <Real T>
 [[nodiscard]] inline QuadricClass quadric_type(const Quadric3<T>& q, T rel_tol) noexcept {
   const auto f = standard_form(q, rel_tol);
   QuadricClass r{f.status, f.type, 0, 0, 0, 0, 0, 0, false};
@@ -370,7 +370,7 @@ template <class T>
 
 /// The quadric of a standard form: A = R diag(d) R^T, b = R e - 2 A P,
 /// c = P^T A P - dot(R e, P) + k (rounded).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Quadric3<T> to_quadric(const QuadricStandardForm<T>& f) noexcept {
   const Mat3<T>& r = f.rotation;
   const Mat3<T> a = r * Mat3<T>::diagonal(f.diagonal) * transpose(r);
@@ -381,7 +381,7 @@ template <class T>
 
 namespace detail {
 /// x^T A x + b.x + c for A symmetric, re-centred at p: A, -2 A p, p^T A p + c.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Quadric3<T> quadric_about(const Mat3<T>& a, const Vec3<T>& p,
                                                   T c) noexcept {
   const Vec3<T> ap = a * p;
@@ -390,26 +390,26 @@ template <class T>
 }  // namespace detail
 
 /// |X - C|^2 - r^2 in general form.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Quadric3<T> to_quadric(const Sphere3<T>& s) noexcept {
   return detail::quadric_about(Mat3<T>::identity(), s.center, -s.radius * s.radius);
 }
 
 /// (X - C)^T M (X - C) - 1 in general form (M = implicit_matrix(e)).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Quadric3<T> to_quadric(const Ellipsoid3<T>& e) noexcept {
   return detail::quadric_about(implicit_matrix(e), e.center, T(-1));
 }
 
 /// |X - C|^2 - dot(D, X - C)^2 - r^2 (the infinite cylinder) in general form.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Quadric3<T> to_quadric(const Cylinder3<T>& c) noexcept {
   const Mat3<T> a = Mat3<T>::identity() - outer(c.axis.direction, c.axis.direction);
   return detail::quadric_about(a, c.axis.origin, -c.radius * c.radius);
 }
 
 /// cos^2(a) |X - V|^2 - dot(D, X - V)^2 (the infinite double cone) in general form.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Quadric3<T> to_quadric(const Cone3<T>& c) noexcept {
   const Mat3<T> a = Mat3<T>::identity() * sqr(std::cos(c.angle)) - outer(c.axis, c.axis);
   return detail::quadric_about(a, c.vertex, T(0));

@@ -23,9 +23,9 @@ struct Ray {
   Vec<T, N> direction;
 };
 
-template <class T>
+template <Real T>
 using Ray2 = Ray<T, 2>;
-template <class T>
+template <Real T>
 using Ray3 = Ray<T, 3>;
 using Ray2f = Ray2<float>;
 using Ray2d = Ray2<double>;

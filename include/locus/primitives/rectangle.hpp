@@ -49,9 +49,9 @@ struct CornerRectangle {
   Vec<T, N> edge1;
 };
 
-template <class T>
+template <Real T>
 using Rectangle2 = Rectangle<T, 2>;
-template <class T>
+template <Real T>
 using Rectangle3 = Rectangle<T, 3>;
 using Rectangle2f = Rectangle2<float>;
 using Rectangle2d = Rectangle2<double>;

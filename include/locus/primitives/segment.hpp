@@ -41,9 +41,9 @@ struct Segment {
   }
 };
 
-template <class T>
+template <Real T>
 using Segment2 = Segment<T, 2>;
-template <class T>
+template <Real T>
 using Segment3 = Segment<T, 3>;
 using Segment2f = Segment2<float>;
 using Segment2d = Segment2<double>;
@@ -58,9 +58,9 @@ struct SegmentCDE {
   T extent;
 };
 
-template <class T>
+template <Real T>
 using SegmentCDE2 = SegmentCDE<T, 2>;
-template <class T>
+template <Real T>
 using SegmentCDE3 = SegmentCDE<T, 3>;
 
 /// (1 - t) p0 + t p1; exact at t = 0 and t = 1.

@@ -37,7 +37,7 @@ struct Sphere {
   T radius;
 };
 
-template <class T>
+template <Real T>
 using Sphere3 = Sphere<T, 3>;
 using Sphere3f = Sphere3<float>;
 using Sphere3d = Sphere3<double>;
@@ -55,7 +55,7 @@ template <class T, int N>
 }
 
 /// C + r (cos theta sin phi, sin theta sin phi, cos phi) with tp = (theta, phi).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> point_at(const Sphere3<T>& s, const Vec2<T>& tp) noexcept {
   const T st = std::sin(tp.x), ct = std::cos(tp.x), sp = std::sin(tp.y), cp = std::cos(tp.y);
   return s.center + s.radius * Vec3<T>{ct * sp, st * sp, cp};
@@ -78,14 +78,14 @@ template <class T, int N>
 }
 
 /// 4/3 pi r^3; NaN for a negative or NaN radius.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T volume(const Sphere3<T>& s) noexcept {
   if (!(s.radius >= T(0))) return std::numeric_limits<T>::quiet_NaN();
   return T(4) / T(3) * pi_v<T> * s.radius * s.radius * s.radius;
 }
 
 /// 4 pi r^2; NaN for a negative or NaN radius.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T surface_area(const Sphere3<T>& s) noexcept {
   if (!(s.radius >= T(0))) return std::numeric_limits<T>::quiet_NaN();
   return T(4) * pi_v<T> * s.radius * s.radius;

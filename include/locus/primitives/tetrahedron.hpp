@@ -38,7 +38,7 @@
 namespace locus {
 
 /// The tetrahedron with vertices v[0..3].
-template <class T>
+template <Real T>
 struct Tetrahedron3 {
   Vec3<T> v[4];
 };
@@ -47,19 +47,19 @@ using Tetrahedron3f = Tetrahedron3<float>;
 using Tetrahedron3d = Tetrahedron3<double>;
 
 /// Exact sign of orient3d(v0, v1, v2, v3): +1, 0 or -1.
-template <class T>
+template <Real T>
 [[nodiscard]] inline int orientation(const Tetrahedron3<T>& t) noexcept {
   return static_cast<int>(orient3d(t.v[0], t.v[1], t.v[2], t.v[3]));
 }
 
 /// True when the vertices are (exactly) coplanar.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool is_degenerate(const Tetrahedron3<T>& t) noexcept {
   return orientation(t) == 0;
 }
 
 /// det[v1 - v0, v2 - v0, v3 - v0] / 6, rounded, with the exact sign of orientation().
-template <class T>
+template <Real T>
 [[nodiscard]] inline T signed_volume(const Tetrahedron3<T>& t) noexcept {
   const int s = orientation(t);
   if (s == 0) return T(0);
@@ -70,13 +70,13 @@ template <class T>
 }
 
 /// |signed_volume|.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T volume(const Tetrahedron3<T>& t) noexcept {
   return std::fabs(signed_volume(t));
 }
 
 /// The face opposite vertex i, ordered so that its normal points outward.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Triangle3<T> face(const Tetrahedron3<T>& t, int i) noexcept {
   LOCUS_ASSERT(i >= 0 && i < 4, "Tetrahedron face index out of range");
   static constexpr int table[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -86,14 +86,14 @@ template <class T>
 }
 
 /// Outward normal of face i, (b - a) x (c - a) of face(t, i): length twice the face area.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> face_normal(const Tetrahedron3<T>& t, int i) noexcept {
   const Triangle3<T> f = face(t, i);
   return cross(f.v1 - f.v0, f.v2 - f.v0);
 }
 
 /// Sum of the four face areas.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T surface_area(const Tetrahedron3<T>& t) noexcept {
   T s = T(0);
   for (int i = 0; i < 4; ++i) {
@@ -104,26 +104,26 @@ template <class T>
 }
 
 /// (v0 + v1 + v2 + v3) / 4, summed as quarters so that it cannot overflow.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> centroid(const Tetrahedron3<T>& t) noexcept {
   return T(0.25) * t.v[0] + T(0.25) * t.v[1] + T(0.25) * t.v[2] + T(0.25) * t.v[3];
 }
 
 /// v0 + s (v1 - v0) + t (v2 - v0) + u (v3 - v0) with stu = (s, t, u).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> point_at(const Tetrahedron3<T>& t, const Vec3<T>& stu) noexcept {
   return t.v[0] + stu.x * (t.v[1] - t.v[0]) + stu.y * (t.v[2] - t.v[0]) + stu.z * (t.v[3] - t.v[0]);
 }
 
 /// sum b_i v_i (barycentric; exact at the vertices).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> point_at_barycentric(const Tetrahedron3<T>& t,
                                                      const Vec4<T>& b) noexcept {
   return b.x * t.v[0] + b.y * t.v[1] + b.z * t.v[2] + b.w * t.v[3];
 }
 
 /// The box of the four vertices.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr AlignedBox3<T> bounding_box(const Tetrahedron3<T>& t) noexcept {
   AlignedBox3<T> b{t.v[0], t.v[0]};
   for (int i = 1; i < 4; ++i) b = expand(b, t.v[i]);

@@ -32,7 +32,7 @@
 namespace locus {
 
 /// Torus with center, unit axis normal, major radius R and minor (tube) radius r.
-template <class T>
+template <Real T>
 struct Torus3 {
   Vec3<T> center;
   Vec3<T> normal;
@@ -44,7 +44,7 @@ using Torus3f = Torus3<float>;
 using Torus3d = Torus3<double>;
 
 /// C + (R + r cos b)(cos a u + sin a v) + r sin b N with ab = (a, b).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> point_at(const Torus3<T>& t, const Vec2<T>& ab) noexcept {
   const auto b = perpendicular_basis(t.normal);
   const T ring = t.major_radius + t.minor_radius * std::cos(ab.y);
@@ -53,7 +53,7 @@ template <class T>
 }
 
 /// (|d|^2 + R^2 - r^2)^2 - 4 R^2 (|d|^2 - dot(N, d)^2), d = X - C: negative inside the tube.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T signed_value(const Torus3<T>& t, const Vec3<T>& x) noexcept {
   const Vec3<T> d = x - t.center;
   const T dd = sqr_length(d), z = dot(t.normal, d);
@@ -62,7 +62,7 @@ template <class T>
 }
 
 /// 2 pi^2 R r^2 (Pappus); NaN for negative or NaN radii.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T volume(const Torus3<T>& t) noexcept {
   if (!(t.major_radius >= T(0)) || !(t.minor_radius >= T(0)))
     return std::numeric_limits<T>::quiet_NaN();
@@ -70,7 +70,7 @@ template <class T>
 }
 
 /// 4 pi^2 R r (Pappus); NaN for negative or NaN radii.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T surface_area(const Torus3<T>& t) noexcept {
   if (!(t.major_radius >= T(0)) || !(t.minor_radius >= T(0)))
     return std::numeric_limits<T>::quiet_NaN();
@@ -78,7 +78,7 @@ template <class T>
 }
 
 /// Tight box: C_k +- (R sqrt(1 - N_k^2) + r).
-template <class T>
+template <Real T>
 [[nodiscard]] inline AlignedBox3<T> bounding_box(const Torus3<T>& t) noexcept {
   Vec3<T> h{};
   for (int k = 0; k < 3; ++k)
@@ -87,7 +87,7 @@ template <class T>
 }
 
 /// Centroid of the solid torus (its center).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> centroid(const Torus3<T>& t) noexcept {
   return t.center;
 }

@@ -52,9 +52,9 @@ struct Triangle {
   }
 };
 
-template <class T>
+template <Real T>
 using Triangle2 = Triangle<T, 2>;
-template <class T>
+template <Real T>
 using Triangle3 = Triangle<T, 3>;
 using Triangle2f = Triangle2<float>;
 using Triangle2d = Triangle2<double>;
@@ -88,13 +88,13 @@ template <class T, int N>
 }
 
 /// Exact orientation of (v0, v1, v2): positive = counter-clockwise, zero = collinear.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Sign orientation(const Triangle2<T>& tri) noexcept {
   return orient2d(tri.v0, tri.v1, tri.v2);
 }
 
 /// Signed area, positive for counter-clockwise order (rounded; use orientation() to decide).
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T signed_area(const Triangle2<T>& tri) noexcept {
   return T(0.5) * perp_dot(tri.v1 - tri.v0, tri.v2 - tri.v0);
 }
@@ -102,7 +102,7 @@ template <class T>
 /// Unnormalised normal (v1 - v0) x (v2 - v0), |normal| = 2 * area. Evaluated at the vertex
 /// opposite the longest edge (the same vector mathematically), which keeps the rounding error
 /// small for needle-shaped triangles.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> normal(const Triangle3<T>& tri) noexcept {
   const Vec3<T> e0 = tri.v1 - tri.v0, e1 = tri.v2 - tri.v1, e2 = tri.v0 - tri.v2;
   const T l0 = sqr_length(e0), l1 = sqr_length(e1), l2 = sqr_length(e2);
@@ -113,7 +113,7 @@ template <class T>
 
 /// Unit normal of a 3D triangle; the zero vector when the triangle is degenerate (or the
 /// rounded cross product vanishes).
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec3<T> unit_normal(const Triangle3<T>& tri) noexcept {
   return normalize(normal(tri));
 }
@@ -168,7 +168,7 @@ template <class T, int N>
 
 /// Barycentric coordinates (u, v, w) of p with respect to a 2D triangle, p = u v0 + v v1 + w v2
 /// and u + v + w = 1 (rounded). std::nullopt when the triangle is degenerate (exact test).
-template <class T>
+template <Real T>
 [[nodiscard]] inline std::optional<Vec3<T>> barycentric(const Triangle2<T>& tri,
                                                         const Vec2<T>& p) noexcept {
   if (is_degenerate(tri)) return std::nullopt;

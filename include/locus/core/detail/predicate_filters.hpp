@@ -43,15 +43,15 @@ namespace detail {
 
 // ---- Stage-A error bounds -----------------------------------------------------------------------
 
-template <class T>
+template <Real T>
 inline constexpr T unit_roundoff_v = std::numeric_limits<T>::epsilon() / T(2);
-template <class T>
+template <Real T>
 inline constexpr T orient2d_bound_a_v = (T(3) + T(16) * unit_roundoff_v<T>)*unit_roundoff_v<T>;
-template <class T>
+template <Real T>
 inline constexpr T orient3d_bound_a_v = (T(7) + T(56) * unit_roundoff_v<T>)*unit_roundoff_v<T>;
-template <class T>
+template <Real T>
 inline constexpr T incircle_bound_a_v = (T(10) + T(96) * unit_roundoff_v<T>)*unit_roundoff_v<T>;
-template <class T>
+template <Real T>
 inline constexpr T insphere_bound_a_v = (T(16) + T(224) * unit_roundoff_v<T>)*unit_roundoff_v<T>;
 // The float constants are exact (no rounding down of a bound).
 static_assert(double(orient3d_bound_a_v<float>) == (7.0 + 56.0 * 0x1p-24) * 0x1p-24);
@@ -321,7 +321,7 @@ template <int N>
 /// m < 2^ex, every extent below 2^9 q: any differences of these points are exact and on
 /// insphere_lattice_v (so also on orient3d's), and insphere_terms and orient3d_stage_a evaluate
 /// exactly. O(n); false for an empty or non-finite set.
-template <class T>
+template <Real T>
 [[nodiscard]] bool points_on_insphere_lattice(std::span<const Vec3<T>> points) noexcept {
   if (points.empty()) return false;
   Vec3<double> lo = to_double(points[0]), hi = lo;

@@ -128,7 +128,7 @@ template <class T, int N>
   return s;
 }
 
-template <class T>
+template <Real T>
 struct LinLinParams {
   T s;
   T t;
@@ -186,7 +186,7 @@ template <class T, int N>
 /// the other by projection (see below). meet = false when the lines are parallel, the components
 /// miss each other, or the crossing lies beyond the floating-point range. unique is left to the
 /// caller.
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinLinParams<T> meet_2d(const LinearView<T, 2>& A,
                                              const LinearView<T, 2>& B) noexcept {
   const auto dbl = [](const Vec2<T>& p) { return Vec2<double>{double(p[0]), double(p[1])}; };
@@ -229,7 +229,7 @@ template <class T>
 }
 
 /// Length of the intersection of [lo0, hi0] and [lo1, hi1] is positive.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool overlaps(T lo0, T hi0, T lo1, T hi1) noexcept {
   const T lo = lo0 < lo1 ? lo1 : lo0;
   const T hi = hi0 < hi1 ? hi0 : hi1;

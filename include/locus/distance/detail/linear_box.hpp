@@ -37,7 +37,7 @@
 
 namespace locus::detail {
 
-template <class T>
+template <Real T>
 struct LinearBoxParam {
   T t;
   bool unique;

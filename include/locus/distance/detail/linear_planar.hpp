@@ -74,7 +74,7 @@ struct BestCandidate {
 
 /// Exact: the closed segment [p, q] and the closed triangle tri (coplanar with it) meet, decided
 /// on the projection onto coordinate plane (i, j), in which the triangle is not degenerate.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool coplanar_segment_meets_triangle(const Vec3<T>& p, const Vec3<T>& q,
                                                           const Triangle3<T>& tri, int i,
                                                           int j) noexcept {
@@ -96,7 +96,7 @@ template <class T>
 
 /// Exact: 1 when the closed segment [p, q] meets the closed triangle, 0 when it does not, -1
 /// when the triangle is degenerate (collinear vertices: not decided here).
-template <class T>
+template <Real T>
 [[nodiscard]] inline int segment_meets_triangle(const Vec3<T>& p, const Vec3<T>& q,
                                                 const Triangle3<T>& tri) noexcept {
   const Sign sp = orient3d(tri.v0, tri.v1, tri.v2, p), sq = orient3d(tri.v0, tri.v1, tri.v2, q);
@@ -121,7 +121,7 @@ template <class T>
   return (pos && neg) ? 0 : 1;
 }
 
-template <class T>
+template <Real T>
 LOCUS_COLD LinearPlanarParams<T, Vec3<T>> linear_triangle_rescaled(const LinearView<T, 3>& A,
                                                                    const Triangle3<T>& tri,
                                                                    int meets) noexcept;
@@ -130,7 +130,7 @@ LOCUS_COLD LinearPlanarParams<T, Vec3<T>> linear_triangle_rescaled(const LinearV
 /// a solid triangle. meets: 1 / 0 when the caller knows exactly that they meet / do not meet,
 /// -1 when unknown. range_checked: set by linear_triangle_rescaled (below), which handles the
 /// squares out of range.
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinearPlanarParams<T, Vec3<T>> linear_triangle(
     const LinearView<T, 3>& A, const Triangle3<T>& tri, int meets,
     bool range_checked = false) noexcept {
@@ -254,25 +254,25 @@ template <class T>
 /// into [1, 2), when that coordinate lies beyond the product range (detail/rescale.hpp: the
 /// parameters are scale-free); otherwise on the input itself. (The batch kernel accepts a smaller
 /// range and leaves these to this code.)
-template <class T>
+template <Real T>
 LOCUS_COLD LinearPlanarParams<T, Vec3<T>> linear_triangle_rescaled(const LinearView<T, 3>& A,
                                                                    const Triangle3<T>& tri,
                                                                    int meets) noexcept {
   const T m = std::max({max_abs(A.origin), max_abs(A.end), max_abs(A.dir), max_abs(tri.v0),
                         max_abs(tri.v1), max_abs(tri.v2)});
   const T f = m > T(0) && outside_product_range(m) ? normalising_scale(m) : T(1);
-  return linear_triangle(scaled_view(A, f), Triangle3<T>{f * tri.v0, f * tri.v1, f * tri.v2},
-                         meets, true);
+  return linear_triangle(scaled_view(A, f), Triangle3<T>{f * tri.v0, f * tri.v1, f * tri.v2}, meets,
+                         true);
 }
 
 /// What a linear-triangle query finds; distance() and sqr_distance() both read it. finite is
 /// false (and sqr NaN) exactly when some input coordinate is NaN or infinite.
-template <class T>
+template <Real T>
 struct LinearTriangleCore {
-  T t;                                ///< parameter on the linear component
-  Vec3<T> bary;                       ///< barycentric on the triangle
-  std::array<Vec3<T>, 2> closest;     ///< on the component, on the triangle
-  T sqr;                              ///< sqr_length(closest[0] - closest[1])
+  T t;                             ///< parameter on the linear component
+  Vec3<T> bary;                    ///< barycentric on the triangle
+  std::array<Vec3<T>, 2> closest;  ///< on the component, on the triangle
+  T sqr;                           ///< sqr_length(closest[0] - closest[1])
   bool unique;
   bool finite;
 };
@@ -314,7 +314,7 @@ template <class T, class L>
 /// Parameters (t on A, (s, t) on rect) of a closest pair of a linear component and a solid
 /// rectangle in 3D; the work is done in the rectangle's frame (center, axis[0], axis[1],
 /// axis[0] x axis[1]), where the rectangle is the box [-e0, e0] x [-e1, e1] x {0}.
-template <class T>
+template <Real T>
 [[nodiscard]] inline LinearPlanarParams<T, Vec2<T>> linear_rectangle(
     const LinearView<T, 3>& world, const Rectangle<T, 3>& rect) noexcept {
   using P = Vec2<T>;

@@ -77,21 +77,21 @@ struct PieceBest {
   }
 };
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool finite_input(const Triangle3<T>& t) noexcept {
   return is_finite(t.v0) && is_finite(t.v1) && is_finite(t.v2);
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool finite_input(const Rectangle<T, 3>& r) noexcept {
   return is_finite(r.center) && is_finite(r.axis[0]) && is_finite(r.axis[1]) &&
          is_finite(r.extent[0]) && is_finite(r.extent[1]);
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T piece_scale(const Triangle3<T>& t) noexcept {
   return max_abs(t.v0) + max_abs(t.v1 - t.v0) + max_abs(t.v2 - t.v0);
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr T piece_scale(const Rectangle<T, 3>& r) noexcept {
   return max_abs(r.center) + (r.extent[0] > T(0) ? r.extent[0] : T(0)) +
          (r.extent[1] > T(0) ? r.extent[1] : T(0));
@@ -99,12 +99,12 @@ template <class T>
 
 /// Edge k of a piece as a segment, and the piece's parameter of the point at t on it.
 /// Triangle: edges v0 v1, v1 v2, v2 v0, barycentric parameter.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Segment3<T> piece_edge(const Triangle3<T>& t, int k) noexcept {
   return k == 0 ? Segment3<T>{t.v0, t.v1}
                 : (k == 1 ? Segment3<T>{t.v1, t.v2} : Segment3<T>{t.v2, t.v0});
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec3<T> piece_edge_param(const Triangle3<T>&, int k, T t) noexcept {
   Vec3<T> b{};
   b[k] = T(1) - t;
@@ -113,36 +113,36 @@ template <class T>
 }
 /// Rectangle: edges between consecutive corners (-,-), (+,-), (+,+), (-,+) (rectangle.hpp's
 /// corners()), symmetric (s, t) parameter.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> rect_corner_param(const Rectangle<T, 3>& r, int k) noexcept {
   const T ex = r.extent[0] > T(0) ? r.extent[0] : T(0);
   const T ey = r.extent[1] > T(0) ? r.extent[1] : T(0);
   return {(k == 1 || k == 2) ? ex : -ex, k >= 2 ? ey : -ey};
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Segment3<T> piece_edge(const Rectangle<T, 3>& r, int k) noexcept {
   return {point_at(r, rect_corner_param(r, k)), point_at(r, rect_corner_param(r, (k + 1) % 4))};
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec2<T> piece_edge_param(const Rectangle<T, 3>& r, int k, T t) noexcept {
   return lerp(rect_corner_param(r, k), rect_corner_param(r, (k + 1) % 4), t);
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr int edge_count(const Triangle3<T>&) noexcept {
   return 3;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr int edge_count(const Rectangle<T, 3>&) noexcept {
   return 4;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] inline auto segment_piece_distance(const Segment3<T>& s,
                                                  const Triangle3<T>& t) noexcept {
   return linear_triangle_distance<T>(s, t);
 }
-template <class T>
+template <Real T>
 [[nodiscard]] inline auto segment_piece_distance(const Segment3<T>& s,
                                                  const Rectangle<T, 3>& r) noexcept {
   return linear_rectangle_distance<T>(s, r);
@@ -180,13 +180,13 @@ template <class T, int N>
     if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
   return 0;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool piece_less(const Triangle3<T>& a, const Triangle3<T>& b) noexcept {
   for (int k = 0; k < 3; ++k)
     if (const int c = lex_compare(a[k], b[k])) return c < 0;
   return false;
 }
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool piece_less(const Rectangle<T, 3>& a,
                                         const Rectangle<T, 3>& b) noexcept {
   if (const int c = lex_compare(a.center, b.center)) return c < 0;

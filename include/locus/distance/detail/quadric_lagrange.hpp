@@ -4,9 +4,9 @@
 // point nearest to p on the quadric Q(X) = X^T A X + B . X + c = 0 by Lagrange's condition.
 //
 // In the frame X = p + R y (R the eigenvectors of A, eigenvalues l_i) the quadric reads
-// sum_i l_i y_i^2 + beta . y + gamma = 0 with beta = R^T (2 A p + B), gamma = Q(p). A critical point
-// of |y|^2 on it satisfies y + t (2 L y + beta) = 0, i.e. y_i = -t beta_i / D_i, D_i = 1 + 2 l_i t,
-// and substituting gives the polynomial (degree 2N)
+// sum_i l_i y_i^2 + beta . y + gamma = 0 with beta = R^T (2 A p + B), gamma = Q(p). A critical
+// point of |y|^2 on it satisfies y + t (2 L y + beta) = 0, i.e. y_i = -t beta_i / D_i, D_i = 1 + 2
+// l_i t, and substituting gives the polynomial (degree 2N)
 //   gamma prod_j D_j^2 - sum_i t beta_i^2 (1 + l_i t) prod_{j != i} D_j^2 = 0,
 // formed with a coefficient error bound and solved for ALL real roots by numeric/roots.hpp. The
 // roots miss exactly the critical points with D_i = 0 (p on a symmetry plane of the quadric:
@@ -41,7 +41,8 @@ struct SmallPoly {
 };
 
 template <class C>
-[[nodiscard]] constexpr SmallPoly<C> small_mul(const SmallPoly<C>& x, const SmallPoly<C>& y) noexcept {
+[[nodiscard]] constexpr SmallPoly<C> small_mul(const SmallPoly<C>& x,
+                                               const SmallPoly<C>& y) noexcept {
   SmallPoly<C> r;
   for (int i = 0; i < 7; ++i)
     for (int j = 0; i + j < 7; ++j) {
@@ -85,9 +86,8 @@ template <class C, int N>
   const SymmetricEigen<C, N> eg = eigen_symmetric(q.a);
   int order[N];
   for (int i = 0; i < N; ++i) order[i] = i;
-  std::sort(order, order + N, [&](int x, int y) {
-    return std::fabs(eg.values[x]) > std::fabs(eg.values[y]);
-  });
+  std::sort(order, order + N,
+            [&](int x, int y) { return std::fabs(eg.values[x]) > std::fabs(eg.values[y]); });
   const Vec<C, N> g0 = q.gradient(p);
   Vec<C, N> x = p;
   for (int k = 0; k < rank; ++k) {

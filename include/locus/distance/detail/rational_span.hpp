@@ -14,8 +14,8 @@
 // numeric/roots.hpp's engine as coefficient_error (so tangencies become double roots, and an
 // identically vanishing polynomial - a span at constant distance - is recognised).
 //
-// Everything runs in compute_t<T> with fixed stack buffers for degree <= rational_span_inline_degree
-// (heap buffers beyond).
+// Everything runs in compute_t<T> with fixed stack buffers for degree <=
+// rational_span_inline_degree (heap buffers beyond).
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -92,7 +92,8 @@ struct BoundedPoly {
       : c(static_cast<std::size_t>(degree < 0 ? 1 : degree + 1)),
         err(static_cast<std::size_t>(degree < 0 ? 1 : degree + 1)),
         deg(degree) {
-    for (int i = 0; i <= deg; ++i) c[static_cast<std::size_t>(i)] = err[static_cast<std::size_t>(i)] = C(0);
+    for (int i = 0; i <= deg; ++i)
+      c[static_cast<std::size_t>(i)] = err[static_cast<std::size_t>(i)] = C(0);
   }
 };
 
@@ -121,9 +122,8 @@ template <class C>
   SpanScratch<double, 1280> work(roots::work_doubles(n));
   SpanScratch<roots::R, 40> r1(static_cast<std::size_t>(n)), r2(static_cast<std::size_t>(n));
   bool budget_hit = false;
-  const int cnt =
-      roots::real_roots_engine(a.data(), e.data(), n, work.data(), r1.data(), r2.data(), 0.0,
-                               budget_hit);
+  const int cnt = roots::real_roots_engine(a.data(), e.data(), n, work.data(), r1.data(), r2.data(),
+                                           0.0, budget_hit);
   int k = 0;
   for (int i = 0; i < cnt; ++i) {
     const double x = r1[static_cast<std::size_t>(i)].x;

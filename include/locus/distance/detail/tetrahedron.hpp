@@ -26,14 +26,14 @@ namespace locus::detail {
 
 inline constexpr int tet_face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Triangle3<T> tet_face_triangle(const Tetrahedron3<T>& tet, int i) noexcept {
   return {tet.v[tet_face[i][0]], tet.v[tet_face[i][1]], tet.v[tet_face[i][2]]};
 }
 
 /// Exact: +1 when p is strictly beyond face i's plane (outside), 0 on it, -1 inside; o is the
 /// tetrahedron's exact orientation (nonzero).
-template <class T>
+template <Real T>
 [[nodiscard]] inline int tet_outside(const Tetrahedron3<T>& tet, int o, int i,
                                      const Vec3<T>& p) noexcept {
   const int* f = tet_face[i];
@@ -41,7 +41,7 @@ template <class T>
 }
 
 /// Exact: p lies in the closed solid tetrahedron of orientation o != 0.
-template <class T>
+template <Real T>
 [[nodiscard]] inline bool tet_contains(const Tetrahedron3<T>& tet, int o,
                                        const Vec3<T>& p) noexcept {
   for (int i = 0; i < 4; ++i)
@@ -51,7 +51,7 @@ template <class T>
 
 /// Barycentric coordinates of a point p inside the tetrahedron (orientation o != 0): the
 /// sub-volumes of p with each face, in double, clamped at 0 and normalised to sum 1.
-template <class T>
+template <Real T>
 [[nodiscard]] inline Vec4<T> tet_inside_barycentric(const Tetrahedron3<T>& tet, int o,
                                                     const Vec3<T>& p) noexcept {
   double w[4], sum = 0.0;
@@ -67,21 +67,21 @@ template <class T>
 
 /// The tetrahedron's barycentric coordinates of the point with barycentric coordinates b on
 /// face i.
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr Vec4<T> tet_from_face(int i, const Vec3<T>& b) noexcept {
   Vec4<T> r{};
   for (int k = 0; k < 3; ++k) r[tet_face[i][k]] = b[k];
   return r;
 }
 
-template <class T>
+template <Real T>
 [[nodiscard]] constexpr bool finite_input(const Tetrahedron3<T>& tet) noexcept {
   return is_finite(tet.v[0]) && is_finite(tet.v[1]) && is_finite(tet.v[2]) && is_finite(tet.v[3]);
 }
 
 /// Length (in A's parameter) of the part of A inside the solid tetrahedron, by clipping against
 /// the four face planes in floating point (Cyrus-Beck); 0 when it misses.
-template <class T>
+template <Real T>
 [[nodiscard]] inline T tet_chord(const LinearView<T, 3>& A, const Tetrahedron3<T>& tet,
                                  int o) noexcept {
   constexpr T inf = std::numeric_limits<T>::infinity();
