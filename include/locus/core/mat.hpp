@@ -65,11 +65,11 @@ struct Mat {
   }
 };
 
-template <Real T>
+template <Field T>
 using Mat2 = Mat<T, 2, 2>;
-template <Real T>
+template <Field T>
 using Mat3 = Mat<T, 3, 3>;
-template <Real T>
+template <Field T>
 using Mat4 = Mat<T, 4, 4>;
 using Mat2f = Mat2<float>;
 using Mat3f = Mat3<float>;
@@ -191,18 +191,18 @@ template <class T, int R, int C>
 }
 
 /// The skew-symmetric matrix [v]x with [v]x * w = cross(v, w).
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Mat3<T> skew(const Vec3<T>& v) noexcept {
   return {{{T(0), -v.z, v.y}, {v.z, T(0), -v.x}, {-v.y, v.x, T(0)}}};
 }
 
 // ---- determinants and inverses (closed form, sizes 2..4) ----------------------------------
 
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr T determinant(const Mat2<T>& m) noexcept {
   return m.a[0][0] * m.a[1][1] - m.a[0][1] * m.a[1][0];
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr T determinant(const Mat3<T>& m) noexcept {
   return m.a[0][0] * (m.a[1][1] * m.a[2][2] - m.a[1][2] * m.a[2][1]) -
          m.a[0][1] * (m.a[1][0] * m.a[2][2] - m.a[1][2] * m.a[2][0]) +
@@ -210,11 +210,11 @@ template <Real T>
 }
 
 /// The adjugate (transposed cofactor matrix): adjugate(m) * m = det(m) I.
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Mat2<T> adjugate(const Mat2<T>& m) noexcept {
   return {{{m.a[1][1], -m.a[0][1]}, {-m.a[1][0], m.a[0][0]}}};
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Mat3<T> adjugate(const Mat3<T>& m) noexcept {
   Mat3<T> r{};
   for (int i = 0; i < 3; ++i)
@@ -225,7 +225,7 @@ template <Real T>
     }
   return r;
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Mat4<T> adjugate(const Mat4<T>& m) noexcept {
   // Laplace expansion by complementary 2x2 minors of the top and bottom row pairs.
   const auto& a = m.a;
@@ -254,7 +254,7 @@ template <Real T>
   r.a[3][3] = a[2][0] * s3 - a[2][1] * s1 + a[2][2] * s0;
   return r;
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr T determinant(const Mat4<T>& m) noexcept {
   const Mat4<T> adj = adjugate(m);
   return m.a[0][0] * adj.a[0][0] + m.a[0][1] * adj.a[1][0] + m.a[0][2] * adj.a[2][0] +

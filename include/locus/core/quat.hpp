@@ -33,7 +33,7 @@
 namespace locus {
 
 /// A quaternion w + x i + y j + z k (scalar part first).
-template <Real T>
+template <Field T>
 struct Quat {
   T w, x, y, z;
 
@@ -49,77 +49,77 @@ using Quatf = Quat<float>;
 using Quatd = Quat<double>;
 
 /// The vector part (x, y, z).
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Vec3<T> vector_part(const Quat<T>& q) noexcept {
   return {q.x, q.y, q.z};
 }
 
 // ---- arithmetic ---------------------------------------------------------------------------
 
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Quat<T> operator+(const Quat<T>& a, const Quat<T>& b) noexcept {
   return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Quat<T> operator-(const Quat<T>& a, const Quat<T>& b) noexcept {
   return {a.w - b.w, a.x - b.x, a.y - b.y, a.z - b.z};
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Quat<T> operator-(const Quat<T>& a) noexcept {
   return {-a.w, -a.x, -a.y, -a.z};
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Quat<T> operator*(const Quat<T>& a, T s) noexcept {
   return {a.w * s, a.x * s, a.y * s, a.z * s};
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Quat<T> operator*(T s, const Quat<T>& a) noexcept {
   return a * s;
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Quat<T> operator/(const Quat<T>& a, T s) noexcept {
   return {a.w / s, a.x / s, a.y / s, a.z / s};
 }
 /// Hamilton product: (a * b) rotates by b first, then by a.
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Quat<T> operator*(const Quat<T>& a, const Quat<T>& b) noexcept {
   return {
       a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
       a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr bool operator==(const Quat<T>& a, const Quat<T>& b) noexcept {
   return a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
 /// Four-dimensional dot product; for unit quaternions |dot| = cos(half the rotation angle
 /// between them).
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr T dot(const Quat<T>& a, const Quat<T>& b) noexcept {
   return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
 }
 /// The conjugate w - xi - yj - zk; the inverse rotation for a unit quaternion.
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Quat<T> conjugate(const Quat<T>& q) noexcept {
   return {q.w, -q.x, -q.y, -q.z};
 }
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr T sqr_norm(const Quat<T>& q) noexcept {
   return dot(q, q);
 }
 /// Euclidean norm |q| (overflow-safe, via the Vec4 length).
-template <Real T>
+template <Field T>
 [[nodiscard]] inline T norm(const Quat<T>& q) noexcept {
   return length(Vec4<T>{q.w, q.x, q.y, q.z});
 }
 /// True when every component is finite.
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr bool is_finite(const Quat<T>& q) noexcept {
   return is_finite(q.w) && is_finite(q.x) && is_finite(q.y) && is_finite(q.z);
 }
 
 /// q / |q|; the identity when q is zero or not finite (so the result is always a rotation).
-template <Real T>
+template <Field T>
 [[nodiscard]] inline Quat<T> normalize(const Quat<T>& q) noexcept {
   const Vec4<T> n = normalize(Vec4<T>{q.w, q.x, q.y, q.z});
   if (n == Vec4<T>{}) return Quat<T>::identity();
@@ -127,7 +127,7 @@ template <Real T>
 }
 
 /// Multiplicative inverse conj(q) / |q|^2; the identity when q is zero or not finite.
-template <Real T>
+template <Field T>
 [[nodiscard]] inline Quat<T> inverse(const Quat<T>& q) noexcept {
   const T n = norm(q);
   if (!(n > T(0)) || !is_finite(n)) return Quat<T>::identity();
@@ -137,7 +137,7 @@ template <Real T>
 
 /// Rotates v by the unit quaternion q: q v q*, evaluated as v + 2 u x (u x v + w v) with
 /// u = (x, y, z). q must be unit (the formula uses |q| = 1); normalise a drifted q first.
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Vec3<T> rotate(const Quat<T>& q, const Vec3<T>& v) noexcept {
   const Vec3<T> u{q.x, q.y, q.z};
   const Vec3<T> t = cross(u, v) + q.w * v;
@@ -148,7 +148,7 @@ template <Real T>
 
 /// exp(q) = e^w (cos|v| + sin|v| v/|v|) for q = (w, v). A pure quaternion (0, t/2 u) maps to
 /// the rotation by t about u. Accurate for tiny |v| (uses sin|v|/|v| -> 1).
-template <Real T>
+template <Field T>
 [[nodiscard]] inline Quat<T> exp(const Quat<T>& q) noexcept {
   const Vec3<T> v = vector_part(q);
   const T a = length(v);
@@ -162,7 +162,7 @@ template <Real T>
 /// length in [0, pi]). For a unit quaternion the result is pure: (0, t/2 u). The angle comes
 /// from atan2(|v|, w), accurate near 0 and pi. A real negative q gets vector part (pi, 0, 0).
 /// The zero quaternion gives {-inf, 0, 0, 0}.
-template <Real T>
+template <Field T>
 [[nodiscard]] inline Quat<T> log(const Quat<T>& q) noexcept {
   const Vec3<T> v = vector_part(q);
   const T vl = length(v);
@@ -180,7 +180,7 @@ template <Real T>
 
 /// Normalised linear interpolation along the shorter arc (b is negated when dot(a, b) < 0).
 /// Not constant speed, but cheap and always a unit quaternion (identity if the blend is zero).
-template <Real T>
+template <Field T>
 [[nodiscard]] inline Quat<T> nlerp(const Quat<T>& a, const Quat<T>& b, T t) noexcept {
   const Quat<T> bb = dot(a, b) < T(0) ? -b : b;
   return normalize(a * (T(1) - t) + bb * t);
@@ -193,7 +193,7 @@ template <Real T>
 /// loses half the digits near 0). When theta < sqrt(eps) the inputs are nearly parallel and the
 /// result is nlerp, whose deviation from slerp is O(theta^3) < eps: finite and unit also for
 /// identical inputs (endpoints then within an ulp, through the normalisation).
-template <Real T>
+template <Field T>
 [[nodiscard]] inline Quat<T> slerp(const Quat<T>& a, const Quat<T>& b, T t) noexcept {
   const Quat<T> bb = dot(a, b) < T(0) ? -b : b;
   const T theta = T(2) * std::atan2(norm(a - bb), norm(a + bb));

@@ -37,7 +37,7 @@ struct Vec {
   }
 };
 
-template <Real T>
+template <Field T>
 struct Vec<T, 2> {
   T x, y;
   [[nodiscard]] constexpr T& operator[](int i) noexcept {
@@ -50,7 +50,7 @@ struct Vec<T, 2> {
   }
 };
 
-template <Real T>
+template <Field T>
 struct Vec<T, 3> {
   T x, y, z;
   [[nodiscard]] constexpr T& operator[](int i) noexcept {
@@ -63,7 +63,7 @@ struct Vec<T, 3> {
   }
 };
 
-template <Real T>
+template <Field T>
 struct Vec<T, 4> {
   T x, y, z, w;
   [[nodiscard]] constexpr T& operator[](int i) noexcept {
@@ -76,11 +76,11 @@ struct Vec<T, 4> {
   }
 };
 
-template <Real T>
+template <Field T>
 using Vec2 = Vec<T, 2>;
-template <Real T>
+template <Field T>
 using Vec3 = Vec<T, 3>;
-template <Real T>
+template <Field T>
 using Vec4 = Vec<T, 4>;
 using Vec2f = Vec2<float>;
 using Vec3f = Vec3<float>;
@@ -295,17 +295,17 @@ template <class T, int N>
 }
 
 /// Cross product a x b (3D); |a x b| = |a||b| sin(angle), right-handed.
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) noexcept {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 /// The counter-clockwise perpendicular (-y, x) of a 2D vector.
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr Vec2<T> perp(const Vec2<T>& a) noexcept {
   return {-a.y, a.x};
 }
 /// Perp-dot product a.x*b.y - a.y*b.x = dot(perp(a), b): twice the signed area of (0, a, b).
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr T perp_dot(const Vec2<T>& a, const Vec2<T>& b) noexcept {
   return a.x * b.y - a.y * b.x;
 }

@@ -26,6 +26,7 @@
 // inequality, inradius/circumradius return 0 / inf for a degenerate triangle as K = 0 gives,
 // regular-polygon functions return NaN for n < 3. Cost O(1), constexpr where no sqrt/trig.
 
+#include <locus/core/angle.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/distance/detail/rescale.hpp>
@@ -195,11 +196,7 @@ template <Real T>
 // ---- circle pieces
 // ---------------------------------------------------------------------------------
 
-/// Arc length r theta.
-template <Real T>
-[[nodiscard]] constexpr T arc_length(T r, T theta) noexcept {
-  return r * theta;
-}
+// Arc length r theta: arc_length in core/angle.hpp.
 
 /// Chord length 2 r sin(theta / 2).
 template <Real T>
