@@ -31,28 +31,28 @@ concept Field = requires(T a, T b) {
 };
 
 /// The internal computation type for numerically delicate code: double for float, else T.
-template <Real T>
+template <Field T>
 using compute_t = std::conditional_t<std::is_same_v<T, float>, double, T>;
 
 /// Machine epsilon of T (distance from 1 to the next representable value).
-template <Real T>
+template <Field T>
 inline constexpr T eps_v = std::numeric_limits<T>::epsilon();
 
-template <Real T>
+template <Field T>
 inline constexpr T pi_v = static_cast<T>(3.14159265358979323846264338327950288L);
 
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr T sqr(T x) noexcept {
   return x * x;
 }
 
 /// True when x is neither NaN nor infinite (usable in constexpr contexts).
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr bool is_finite(T x) noexcept {
   return x == x && x - x == T(0);
 }
 
-template <Real T>
+template <Field T>
 [[nodiscard]] constexpr T clamp(T x, T lo, T hi) noexcept {
   return x < lo ? lo : (hi < x ? hi : x);
 }
@@ -61,7 +61,7 @@ template <Real T>
 /// at the ends of the range m f may fall short of 1 or reach 4); 1 for m = 0 or a non-finite m.
 /// Scaling by f is exact while the scaled values stay normal: algorithms whose answer is
 /// invariant under scaling use it to bring extreme input to magnitudes near 1.
-template <Real T>
+template <Field T>
 [[nodiscard]] inline T normalising_scale(T m) noexcept {
   if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return T(1);
   int e = 0;  // m = x 2^e with x in [0.5, 1)
