@@ -1,0 +1,407 @@
+// SPDX-License-Identifier: BSL-1.0
+// Ear clipping with holes (see include/locus/triangulate/ear_clipping.hpp and
+// docs/notes/triangulate.md).
+
+#include <locus/triangulate/ear_clipping.hpp>
+
+#include <locus/core/predicates.hpp>
+
+#include "rings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace locus {
+
+using triangulate_detail::same_point;
+using triangulate_detail::strictly_between;
+
+template <Real T>
+struct EarClipRun {
+  using Node = typename EarClipping2<T>::Node;
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+  std::span<const Vec2<T>> pts;
+  PolygonTriangulation& out;
+  std::vector<Node>& nodes;
+  std::vector<std::uint32_t>& late;  // reflex vertices that were convex when the grid was built
+  std::vector<std::uint32_t>& cell_start;
+  std::vector<std::uint32_t>& cell_nodes;
+  double min_x = 0, min_y = 0, inv_x = 0, inv_y = 0;
+  std::uint32_t gx = 1, gy = 1;
+
+  const Vec2<T>& at(std::uint32_t n) const { return pts[nodes[n].index]; }
+
+  std::uint32_t add_node(std::uint32_t index) {
+    nodes.push_back(Node{index, kNone, kNone, 0, 0});
+    return static_cast<std::uint32_t>(nodes.size() - 1);
+  }
+
+  // Strictly inside the cone of node a (interior on the left of prev -> a -> next).
+  bool locally_inside(std::uint32_t a, const Vec2<T>& q) const {
+    const Vec2<T>& p0 = at(nodes[a].prev);
+    const Vec2<T>& p1 = at(a);
+    const Vec2<T>& p2 = at(nodes[a].next);
+    const bool l0 = orient2d(p0, p1, q) == Sign::positive;
+    const bool l1 = orient2d(p1, p2, q) == Sign::positive;
+    return orient2d(p0, p1, p2) != Sign::negative ? (l0 && l1) : (l0 || l1);
+  }
+
+  // Whether edge ab blocks the open segment mp: a proper crossing, or a or b on it.
+  static bool blocks(const Vec2<T>& m, const Vec2<T>& p, const Vec2<T>& a, const Vec2<T>& b) {
+    const Sign o1 = orient2d(m, p, a);
+    const Sign o2 = orient2d(m, p, b);
+    if (o1 == Sign::zero && strictly_between(m, a, p)) return true;
+    if (o2 == Sign::zero && strictly_between(m, b, p)) return true;
+    if (o1 == Sign::zero || o2 == Sign::zero || o1 == o2) return false;
+    const Sign o3 = orient2d(a, b, m);
+    const Sign o4 = orient2d(a, b, p);
+    return o3 != Sign::zero && o4 != Sign::zero && o3 != o4;
+  }
+
+  // The exact bridge test: the segment from outer node p to hole node m leaves both cones
+  // inward and no edge of any ring blocks it.
+  bool bridge_visible(std::uint32_t p, std::uint32_t m) const {
+    const Vec2<T>& pm = at(m);
+    const Vec2<T>& pp = at(p);
+    if (same_point(pm, pp))
+      return locally_inside(p, at(nodes[m].prev)) && locally_inside(p, at(nodes[m].next));
+    if (!locally_inside(p, pm) || !locally_inside(m, pp)) return false;
+    const T lo_x = std::min(pm.x, pp.x), hi_x = std::max(pm.x, pp.x);
+    const T lo_y = std::min(pm.y, pp.y), hi_y = std::max(pm.y, pp.y);
+    for (const Node& e : nodes) {
+      if (e.removed) continue;
+      const Vec2<T>& a = pts[e.index];
+      const Vec2<T>& b = pts[nodes[e.next].index];
+      if (std::max(a.x, b.x) < lo_x || std::min(a.x, b.x) > hi_x || std::max(a.y, b.y) < lo_y ||
+          std::min(a.y, b.y) > hi_y)
+        continue;
+      if (blocks(pm, pp, a, b)) return false;
+    }
+    return true;
+  }
+
+  // Eberly's candidate: the nearest edge hit by the ray from m towards -x, then the visible
+  // vertex of smallest angle in the triangle it spans (rounded arithmetic: a guess only).
+  std::uint32_t bridge_candidate(std::uint32_t outer, std::uint32_t m) const {
+    const Vec2<T>& h = at(m);
+    const double hx = double(h.x), hy = double(h.y);
+    double qx = -std::numeric_limits<double>::infinity();
+    std::uint32_t cand = kNone;
+    std::uint32_t p = outer;
+    do {
+      const Vec2<T>& a = at(p);
+      const Vec2<T>& b = at(nodes[p].next);
+      if (h.y <= a.y && h.y >= b.y && a.y != b.y) {
+        // The slope first: a product of two differences would leave the exponent range.
+        const double slope = (double(b.x) - double(a.x)) / (double(b.y) - double(a.y));
+        const double x = double(a.x) + (hy - double(a.y)) * slope;
+        if (x <= hx && x > qx) {
+          qx = x;
+          cand = a.x < b.x ? p : nodes[p].next;
+        }
+      }
+      p = nodes[p].next;
+    } while (p != outer);
+    if (cand == kNone) return kNone;
+    const Vec2<T> cm = at(cand);
+    const Vec2<double> hd{hx, hy}, qd{qx, hy}, md{double(cm.x), double(cm.y)};
+    const Vec2<double> t0 = hy < md.y ? hd : qd, t2 = hy < md.y ? qd : hd;
+    double tan_min = std::numeric_limits<double>::infinity();
+    std::uint32_t best = cand;
+    p = cand;
+    do {
+      const Vec2<T>& q = at(p);
+      if (h.x >= q.x && q.x >= cm.x && h.x != q.x) {
+        const Vec2<double> qd2{double(q.x), double(q.y)};
+        if (orient2d(t0, md, qd2) != Sign::negative && orient2d(md, t2, qd2) != Sign::negative &&
+            orient2d(t2, t0, qd2) != Sign::negative) {
+          const double t = std::abs(hy - qd2.y) / (hx - qd2.x);
+          if (locally_inside(p, h) && (t < tan_min || (t == tan_min && q.x > at(best).x))) {
+            best = p;
+            tan_min = t;
+          }
+        }
+      }
+      p = nodes[p].next;
+    } while (p != cand);
+    return best;
+  }
+
+  // Joins the hole whose lexicographically smallest vertex is node m to the ring through outer.
+  bool bridge(std::uint32_t outer, std::uint32_t m) {
+    std::uint32_t p = bridge_candidate(outer, m);
+    if (p == kNone || !bridge_visible(p, m)) {
+      std::vector<std::pair<double, std::uint32_t>> cands;
+      const Vec2<T>& h = at(m);
+      std::uint32_t q = outer;
+      do {
+        // hypot: no overflow or underflow, and exact under power-of-two scaling.
+        cands.emplace_back(std::hypot(double(at(q).x) - double(h.x), double(at(q).y) - double(h.y)),
+                           q);
+        q = nodes[q].next;
+      } while (q != outer);
+      std::sort(cands.begin(), cands.end());
+      p = kNone;
+      for (const auto& c : cands)
+        if (bridge_visible(c.second, m)) {
+          p = c.second;
+          break;
+        }
+      if (p == kNone) return false;
+    }
+    // p -> m -> (the hole) -> m2 -> p2 -> old p.next
+    const std::uint32_t m2 = add_node(nodes[m].index);
+    const std::uint32_t p2 = add_node(nodes[p].index);
+    const std::uint32_t pn = nodes[p].next, mp = nodes[m].prev;
+    nodes[p].next = m;
+    nodes[m].prev = p;
+    nodes[p2].next = pn;
+    nodes[pn].prev = p2;
+    nodes[m2].next = p2;
+    nodes[p2].prev = m2;
+    nodes[mp].next = m2;
+    nodes[m2].prev = mp;
+    return true;
+  }
+
+  bool convex(std::uint32_t v) const {
+    return orient2d(at(nodes[v].prev), at(v), at(nodes[v].next)) == Sign::positive;
+  }
+
+  std::uint32_t cell_x(T x) const {
+    const double c = (double(x) * 0.5 - min_x) * inv_x;
+    return c >= 1.0 ? std::min(gx - 1, static_cast<std::uint32_t>(c)) : 0u;
+  }
+  std::uint32_t cell_y(T y) const {
+    const double c = (double(y) * 0.5 - min_y) * inv_y;
+    return c >= 1.0 ? std::min(gy - 1, static_cast<std::uint32_t>(c)) : 0u;
+  }
+
+  void build_grid(std::uint32_t start) {
+    double lx = std::numeric_limits<double>::infinity(), ly = lx, hx = -lx, hy = -lx;
+    std::uint32_t reflex = 0, v = start;
+    do {
+      nodes[v].reflex = convex(v) ? 0 : 1;
+      reflex += nodes[v].reflex;
+      const Vec2<T>& p = at(v);
+      lx = std::min(lx, double(p.x) * 0.5);
+      hx = std::max(hx, double(p.x) * 0.5);
+      ly = std::min(ly, double(p.y) * 0.5);
+      hy = std::max(hy, double(p.y) * 0.5);
+      v = nodes[v].next;
+    } while (v != start);
+    // About one reflex vertex per cell, the cells shaped like the bounding box. Coordinates are
+    // halved so the extent cannot overflow; any monotone cell map is correct.
+    const double w = hx - lx, h = hy - ly;
+    const double cells = std::max(1.0, double(reflex));
+    double fx = w > 0 && h > 0 ? std::sqrt(cells * w / h) : (w > 0 ? cells : 1.0);
+    fx = std::clamp(fx, 1.0, 4096.0);
+    const double fy = std::clamp(h > 0 ? cells / fx : 1.0, 1.0, 4096.0);
+    gx = static_cast<std::uint32_t>(fx);
+    gy = static_cast<std::uint32_t>(fy);
+    min_x = lx;
+    min_y = ly;
+    inv_x = w > 0 ? double(gx) / w : 0.0;
+    inv_y = h > 0 ? double(gy) / h : 0.0;
+    if (!std::isfinite(inv_x)) inv_x = 0.0;
+    if (!std::isfinite(inv_y)) inv_y = 0.0;
+    cell_start.assign(std::size_t(gx) * gy + 1, 0);
+    v = start;
+    do {
+      if (nodes[v].reflex) ++cell_start[std::size_t(cell_y(at(v).y)) * gx + cell_x(at(v).x) + 1];
+      v = nodes[v].next;
+    } while (v != start);
+    for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
+    cell_nodes.resize(reflex);
+    std::vector<std::uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
+    v = start;
+    do {
+      if (nodes[v].reflex)
+        cell_nodes[fill[std::size_t(cell_y(at(v).y)) * gx + cell_x(at(v).x)]++] = v;
+      v = nodes[v].next;
+    } while (v != start);
+    // Nodes reflex now are in the grid; a node turning reflex later goes to `late`.
+    late.clear();
+  }
+
+  // Whether reflex node n blocks the ear a, b, c (closed triangle, coincident points excepted).
+  bool blocks_ear(std::uint32_t n, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                  const Vec2<T>& pa, const Vec2<T>& pb, const Vec2<T>& pc) const {
+    if (nodes[n].removed || !nodes[n].reflex || n == a || n == b || n == c) return false;
+    const Vec2<T>& q = at(n);
+    if (same_point(q, pa) || same_point(q, pb) || same_point(q, pc)) return false;
+    return orient2d(pa, pb, q) != Sign::negative && orient2d(pb, pc, q) != Sign::negative &&
+           orient2d(pc, pa, q) != Sign::negative;
+  }
+
+  bool is_ear(std::uint32_t b) const {
+    const std::uint32_t a = nodes[b].prev, c = nodes[b].next;
+    const Vec2<T>&pa = at(a), &pb = at(b), &pc = at(c);
+    if (orient2d(pa, pb, pc) != Sign::positive) return false;
+    const T lx = std::min({pa.x, pb.x, pc.x}), hx = std::max({pa.x, pb.x, pc.x});
+    const T ly = std::min({pa.y, pb.y, pc.y}), hy = std::max({pa.y, pb.y, pc.y});
+    const std::uint32_t x0 = cell_x(lx), x1 = cell_x(hx), y0 = cell_y(ly), y1 = cell_y(hy);
+    for (std::uint32_t y = y0; y <= y1; ++y) {
+      const std::size_t row = std::size_t(y) * gx;
+      for (std::uint32_t i = cell_start[row + x0], e = cell_start[row + x1 + 1]; i < e; ++i) {
+        const std::uint32_t n = cell_nodes[i];
+        const Vec2<T>& q = at(n);
+        if (q.x < lx || q.x > hx || q.y < ly || q.y > hy) continue;
+        if (blocks_ear(n, a, b, c, pa, pb, pc)) return false;
+      }
+    }
+    for (const std::uint32_t n : late)
+      if (blocks_ear(n, a, b, c, pa, pb, pc)) return false;
+    return true;
+  }
+
+  void update_reflex(std::uint32_t v, std::vector<std::uint8_t>& in_grid) {
+    const std::uint8_t r = convex(v) ? 0 : 1;
+    if (r && !in_grid[v]) {
+      in_grid[v] = 1;
+      late.push_back(v);
+    }
+    nodes[v].reflex = r;
+  }
+
+  void unlink(std::uint32_t v) {
+    const std::uint32_t a = nodes[v].prev, c = nodes[v].next;
+    nodes[a].next = c;
+    nodes[c].prev = a;
+    nodes[v].removed = 1;
+  }
+
+  void emit(std::uint32_t b) {
+    out.triangles.push_back(
+        {nodes[nodes[b].prev].index, nodes[b].index, nodes[nodes[b].next].index});
+  }
+
+  void clip(std::uint32_t start, std::uint32_t count) {
+    build_grid(start);
+    std::vector<std::uint8_t> in_grid(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) in_grid[i] = nodes[i].reflex;
+    std::uint32_t ear = start, stop = start;
+    while (count > 2) {
+      const std::uint32_t a = nodes[ear].prev, c = nodes[ear].next;
+      if (is_ear(ear)) {
+        emit(ear);
+        unlink(ear);
+        --count;
+        update_reflex(a, in_grid);
+        update_reflex(c, in_grid);
+        // Continuing two vertices on gives fewer slivers than re-testing the neighbour.
+        ear = stop = nodes[c].next;
+        continue;
+      }
+      ear = c;
+      if (ear != stop) continue;
+      // A full turn without an ear. First drop duplicates, straight-run middles and spikes
+      // (bridges and cut ears create them).
+      bool removed = false;
+      std::uint32_t v = ear;
+      for (std::uint32_t seen = 0, n = count; seen < n && count > 2; ++seen) {
+        const std::uint32_t pv = nodes[v].prev, nv = nodes[v].next;
+        if (same_point(at(pv), at(v)) || orient2d(at(pv), at(v), at(nv)) == Sign::zero) {
+          unlink(v);
+          --count;
+          update_reflex(pv, in_grid);
+          update_reflex(nv, in_grid);
+          removed = true;
+          v = pv;
+        } else {
+          v = nv;
+        }
+      }
+      ear = stop = v;
+      if (removed) continue;
+      // No ear in a cleaned ring: the rings were not a polygon with holes. Cut a convex vertex
+      // anyway so the call terminates, and say so.
+      std::uint32_t u = ear;
+      bool found = false;
+      for (std::uint32_t seen = 0; seen < count; ++seen, u = nodes[u].next)
+        if (convex(u)) {
+          found = true;
+          break;
+        }
+      out.status = Status::invalid_topology;
+      if (!found) return;
+      const std::uint32_t ua = nodes[u].prev, uc = nodes[u].next;
+      emit(u);
+      unlink(u);
+      --count;
+      update_reflex(ua, in_grid);
+      update_reflex(uc, in_grid);
+      ear = stop = uc;
+    }
+  }
+};
+
+template <Real T>
+const PolygonTriangulation& EarClipping2<T>::compute(std::span<const Vec2<T>> points,
+                                                     std::span<const std::uint32_t> ring_ends) {
+  result_.triangles.clear();
+  nodes_.clear();
+  std::vector<std::uint32_t> ends;
+  result_.status = triangulate_detail::prepare_rings(points, ring_ends, false, ring_, ends);
+  if (result_.status != Status::ok) return result_;
+  std::vector<std::uint32_t> late;
+  EarClipRun<T> run{points, result_, nodes_, late, cell_start_, cell_nodes_};
+  // One cyclic list per ring; the first node of each ring is its lexicographically smallest.
+  hole_starts_.clear();
+  std::uint32_t begin = 0;
+  for (const std::uint32_t end : ends) {
+    const std::uint32_t first = static_cast<std::uint32_t>(nodes_.size());
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t n = run.add_node(ring_[i]);
+      nodes_[n].prev = i == begin ? first + (end - begin) - 1 : n - 1;
+      nodes_[n].next = i + 1 == end ? first : n + 1;
+    }
+    hole_starts_.push_back(first);
+    begin = end;
+  }
+  // Holes in increasing lexicographic order of their smallest vertex: each bridge then reaches
+  // left into the part already joined, as Eberly describes.
+  std::sort(hole_starts_.begin() + 1, hole_starts_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const Sign s = lexicographic_compare(run.at(a), run.at(b));
+    return s == Sign::negative || (s == Sign::zero && a < b);
+  });
+  const std::uint32_t outer = hole_starts_[0];
+  for (std::size_t h = 1; h < hole_starts_.size(); ++h) {
+    if (!run.bridge(outer, hole_starts_[h])) {
+      // No valid bridge: drop the hole (its nodes leave the edge set) and report.
+      result_.status = Status::invalid_topology;
+      std::uint32_t v = hole_starts_[h];
+      do {
+        nodes_[v].removed = 1;
+        v = nodes_[v].next;
+      } while (v != hole_starts_[h]);
+    }
+  }
+  std::uint32_t count = 0, v = outer;
+  do {
+    ++count;
+    v = nodes_[v].next;
+  } while (v != outer);
+  result_.triangles.reserve(count);
+  run.clip(outer, count);
+  return result_;
+}
+
+template <Real T>
+PolygonTriangulation triangulate_ear_clipping(std::span<const Vec2<T>> points,
+                                              std::span<const std::uint32_t> ring_ends) {
+  EarClipping2<T> e;
+  return e.compute(points, ring_ends);
+}
+
+template class EarClipping2<float>;
+template class EarClipping2<double>;
+template PolygonTriangulation triangulate_ear_clipping<float>(std::span<const Vec2<float>>,
+                                                              std::span<const std::uint32_t>);
+template PolygonTriangulation triangulate_ear_clipping<double>(std::span<const Vec2<double>>,
+                                                               std::span<const std::uint32_t>);
+
+}  // namespace locus
