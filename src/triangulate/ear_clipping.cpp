@@ -39,11 +39,24 @@ struct EarClipRun {
     return static_cast<std::uint32_t>(nodes.size() - 1);
   }
 
+  // The nearest ring neighbours at a different point (bridges and pinches make zero-length
+  // edges; the cone of a copy is the one its true neighbours span).
+  std::uint32_t distinct_prev(std::uint32_t a) const {
+    std::uint32_t p = nodes[a].prev;
+    for (std::uint32_t k = 0; k < 64 && p != a && same_point(at(p), at(a)); ++k) p = nodes[p].prev;
+    return p;
+  }
+  std::uint32_t distinct_next(std::uint32_t a) const {
+    std::uint32_t n = nodes[a].next;
+    for (std::uint32_t k = 0; k < 64 && n != a && same_point(at(n), at(a)); ++k) n = nodes[n].next;
+    return n;
+  }
+
   // Strictly inside the cone of node a (interior on the left of prev -> a -> next).
   bool locally_inside(std::uint32_t a, const Vec2<T>& q) const {
-    const Vec2<T>& p0 = at(nodes[a].prev);
+    const Vec2<T>& p0 = at(distinct_prev(a));
     const Vec2<T>& p1 = at(a);
-    const Vec2<T>& p2 = at(nodes[a].next);
+    const Vec2<T>& p2 = at(distinct_next(a));
     const bool l0 = orient2d(p0, p1, q) == Sign::positive;
     const bool l1 = orient2d(p1, p2, q) == Sign::positive;
     return orient2d(p0, p1, p2) != Sign::negative ? (l0 && l1) : (l0 || l1);
@@ -59,6 +72,13 @@ struct EarClipRun {
     const Sign o3 = orient2d(a, b, m);
     const Sign o4 = orient2d(a, b, p);
     return o3 != Sign::zero && o4 != Sign::zero && o3 != o4;
+  }
+
+  static bool proper_cross(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c, const Vec2<T>& d) {
+    const Sign o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+    const Sign o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+    return o1 != Sign::zero && o2 != Sign::zero && o1 != o2 && o3 != Sign::zero &&
+           o4 != Sign::zero && o3 != o4;
   }
 
   // The exact bridge test: the segment from outer node p to hole node m leaves both cones
@@ -130,27 +150,45 @@ struct EarClipRun {
     return best;
   }
 
-  // Joins the hole whose lexicographically smallest vertex is node m to the ring through outer.
+  // The nearest vertex of the ring through outer that sees hole node m, or kNone.
+  std::uint32_t nearest_visible(std::uint32_t outer, std::uint32_t m) const {
+    std::vector<std::pair<double, std::uint32_t>> cands;
+    const Vec2<T>& h = at(m);
+    std::uint32_t q = outer;
+    do {
+      // hypot: no overflow or underflow, and exact under power-of-two scaling.
+      cands.emplace_back(std::hypot(double(at(q).x) - double(h.x), double(at(q).y) - double(h.y)),
+                         q);
+      q = nodes[q].next;
+    } while (q != outer);
+    std::sort(cands.begin(), cands.end());
+    for (const auto& c : cands)
+      if (bridge_visible(c.second, m)) return c.second;
+    return kNone;
+  }
+
+  // Joins the hole whose lexicographically smallest vertex is node m to the ring through outer:
+  // Eberly's candidate if it passes the exact test, else the nearest visible vertex, else the
+  // same from the hole's other vertices (a hole lying along the outer ring needs that).
+  // Returns false when no bridge is valid; the hole is then joined by Eberly's candidate (or
+  // the nearest vertex) anyway, the best effort on input that is not a polygon.
   bool bridge(std::uint32_t outer, std::uint32_t m) {
-    std::uint32_t p = bridge_candidate(outer, m);
+    const std::uint32_t guess = bridge_candidate(outer, m);
+    std::uint32_t p = guess;
+    bool valid = true;
     if (p == kNone || !bridge_visible(p, m)) {
-      std::vector<std::pair<double, std::uint32_t>> cands;
-      const Vec2<T>& h = at(m);
-      std::uint32_t q = outer;
-      do {
-        // hypot: no overflow or underflow, and exact under power-of-two scaling.
-        cands.emplace_back(std::hypot(double(at(q).x) - double(h.x), double(at(q).y) - double(h.y)),
-                           q);
-        q = nodes[q].next;
-      } while (q != outer);
-      std::sort(cands.begin(), cands.end());
       p = kNone;
-      for (const auto& c : cands)
-        if (bridge_visible(c.second, m)) {
-          p = c.second;
-          break;
-        }
-      if (p == kNone) return false;
+      const std::uint32_t first = m;
+      do {
+        p = nearest_visible(outer, m);
+        if (p != kNone) break;
+        m = nodes[m].next;
+      } while (m != first);
+      if (p == kNone) {
+        valid = false;
+        m = first;
+        p = guess != kNone ? guess : outer;
+      }
     }
     // p -> m -> (the hole) -> m2 -> p2 -> old p.next
     const std::uint32_t m2 = add_node(nodes[m].index);
@@ -164,7 +202,7 @@ struct EarClipRun {
     nodes[p2].prev = m2;
     nodes[mp].next = m2;
     nodes[m2].prev = mp;
-    return true;
+    return valid;
   }
 
   bool convex(std::uint32_t v) const {
@@ -227,12 +265,13 @@ struct EarClipRun {
     late.clear();
   }
 
-  // Whether reflex node n blocks the ear a, b, c (closed triangle, coincident points excepted).
+  // Whether reflex node n blocks the ear a, b, c (closed triangle; a copy of corner a, which
+  // bridges and pinches create, does not block).
   bool blocks_ear(std::uint32_t n, std::uint32_t a, std::uint32_t b, std::uint32_t c,
                   const Vec2<T>& pa, const Vec2<T>& pb, const Vec2<T>& pc) const {
     if (nodes[n].removed || !nodes[n].reflex || n == a || n == b || n == c) return false;
     const Vec2<T>& q = at(n);
-    if (same_point(q, pa) || same_point(q, pb) || same_point(q, pc)) return false;
+    if (same_point(q, pa)) return false;
     return orient2d(pa, pb, q) != Sign::negative && orient2d(pb, pc, q) != Sign::negative &&
            orient2d(pc, pa, q) != Sign::negative;
   }
@@ -258,8 +297,11 @@ struct EarClipRun {
     return true;
   }
 
-  void update_reflex(std::uint32_t v, std::vector<std::uint8_t>& in_grid) {
+  std::vector<std::uint8_t> in_grid = {};
+
+  void update_reflex(std::uint32_t v) {
     const std::uint8_t r = convex(v) ? 0 : 1;
+    if (in_grid.size() < nodes.size()) in_grid.resize(nodes.size(), 0);
     if (r && !in_grid[v]) {
       in_grid[v] = 1;
       late.push_back(v);
@@ -279,19 +321,56 @@ struct EarClipRun {
         {nodes[nodes[b].prev].index, nodes[b].index, nodes[nodes[b].next].index});
   }
 
+  // Cuts the ear at b (emitted) and refreshes its neighbours.
+  void cut(std::uint32_t b) {
+    const std::uint32_t a = nodes[b].prev, c = nodes[b].next;
+    emit(b);
+    unlink(b);
+    update_reflex(a);
+    update_reflex(c);
+  }
+
+  // Whether ring through a has a diagonal a-b inside it that no ring edge blocks (used only
+  // on rings without ears, i.e. non-simple input; the midpoint test is rounded).
+  bool valid_diagonal(std::uint32_t a, std::uint32_t b) const {
+    if (nodes[a].next == b || nodes[a].prev == b) return false;
+    const Vec2<T>&pa = at(a), &pb = at(b);
+    if (same_point(pa, pb) || !locally_inside(a, pb) || !locally_inside(b, pa)) return false;
+    std::uint32_t e = a;
+    do {
+      if (blocks(pa, pb, at(e), at(nodes[e].next))) return false;
+      e = nodes[e].next;
+    } while (e != a);
+    const double mx = (double(pa.x) + double(pb.x)) * 0.5, my = (double(pa.y) + double(pb.y)) * 0.5;
+    bool in = false;
+    e = a;
+    do {
+      const Vec2<T>&p = at(e), &q = at(nodes[e].next);
+      if ((double(p.y) > my) != (double(q.y) > my) &&
+          mx < (double(q.x) - double(p.x)) * ((my - double(p.y)) / (double(q.y) - double(p.y))) +
+                   double(p.x))
+        in = !in;
+      e = nodes[e].next;
+    } while (e != a);
+    return in;
+  }
+
+  std::uint32_t ring_count(std::uint32_t start) const {
+    std::uint32_t n = 0, v = start;
+    do {
+      ++n;
+      v = nodes[v].next;
+    } while (v != start);
+    return n;
+  }
+
   void clip(std::uint32_t start, std::uint32_t count) {
-    build_grid(start);
-    std::vector<std::uint8_t> in_grid(nodes.size());
-    for (std::size_t i = 0; i < nodes.size(); ++i) in_grid[i] = nodes[i].reflex;
     std::uint32_t ear = start, stop = start;
     while (count > 2) {
-      const std::uint32_t a = nodes[ear].prev, c = nodes[ear].next;
+      const std::uint32_t c = nodes[ear].next;
       if (is_ear(ear)) {
-        emit(ear);
-        unlink(ear);
+        cut(ear);
         --count;
-        update_reflex(a, in_grid);
-        update_reflex(c, in_grid);
         // Continuing two vertices on gives fewer slivers than re-testing the neighbour.
         ear = stop = nodes[c].next;
         continue;
@@ -307,8 +386,8 @@ struct EarClipRun {
         if (same_point(at(pv), at(v)) || orient2d(at(pv), at(v), at(nv)) == Sign::zero) {
           unlink(v);
           --count;
-          update_reflex(pv, in_grid);
-          update_reflex(nv, in_grid);
+          update_reflex(pv);
+          update_reflex(nv);
           removed = true;
           v = pv;
         } else {
@@ -317,8 +396,61 @@ struct EarClipRun {
       }
       ear = stop = v;
       if (removed) continue;
-      // No ear in a cleaned ring: the rings were not a polygon with holes. Cut a convex vertex
-      // anyway so the call terminates, and say so.
+      // No ear in a cleaned ring: the rings were not a polygon with holes. Say so, and make a
+      // best effort that terminates: split the ring along a diagonal and clip both parts, or,
+      // when there is none, cut a convex vertex anyway.
+      out.status = Status::invalid_topology;
+      // A local self-intersection a -> p -> p' -> b with ap crossing p'b: cut triangle a p b
+      // and drop p, p' (earcut's cure; it keeps the area of small loops).
+      {
+        bool cured = false;
+        std::uint32_t p = ear;
+        for (std::uint32_t seen = 0, n = count; seen < n && count > 3; ++seen) {
+          const std::uint32_t a = nodes[p].prev, pn = nodes[p].next, b = nodes[pn].next;
+          if (!same_point(at(a), at(b)) && proper_cross(at(a), at(p), at(pn), at(b)) &&
+              locally_inside(a, at(b)) && locally_inside(b, at(a))) {
+            if (orient2d(at(a), at(p), at(b)) == Sign::positive)
+              out.triangles.push_back({nodes[a].index, nodes[p].index, nodes[b].index});
+            unlink(p);
+            unlink(pn);
+            count -= 2;
+            update_reflex(a);
+            update_reflex(b);
+            cured = true;
+            p = b;
+          } else {
+            p = pn;
+          }
+        }
+        if (cured) {
+          ear = stop = p;
+          continue;
+        }
+      }
+      if (count > 3) {
+        std::uint32_t a = ear;
+        do {
+          for (std::uint32_t b = nodes[nodes[a].next].next; b != nodes[a].prev; b = nodes[b].next)
+            if (valid_diagonal(a, b)) {
+              const std::uint32_t a2 = add_node(nodes[a].index);
+              const std::uint32_t b2 = add_node(nodes[b].index);
+              const std::uint32_t an = nodes[a].next, bp = nodes[b].prev;
+              nodes[a].next = b;
+              nodes[b].prev = a;
+              nodes[a2].next = an;
+              nodes[an].prev = a2;
+              nodes[b2].next = a2;
+              nodes[a2].prev = b2;
+              nodes[bp].next = b2;
+              nodes[b2].prev = bp;
+              for (const std::uint32_t u : {a, b, a2, b2}) update_reflex(u);
+              clip(a, ring_count(a));
+              clip(a2, ring_count(a2));
+              return;
+            }
+          a = nodes[a].next;
+        } while (a != ear);
+      }
       std::uint32_t u = ear;
       bool found = false;
       for (std::uint32_t seen = 0; seen < count; ++seen, u = nodes[u].next)
@@ -326,14 +458,10 @@ struct EarClipRun {
           found = true;
           break;
         }
-      out.status = Status::invalid_topology;
       if (!found) return;
-      const std::uint32_t ua = nodes[u].prev, uc = nodes[u].next;
-      emit(u);
-      unlink(u);
+      const std::uint32_t uc = nodes[u].next;
+      cut(u);
       --count;
-      update_reflex(ua, in_grid);
-      update_reflex(uc, in_grid);
       ear = stop = uc;
     }
   }
@@ -347,6 +475,9 @@ const PolygonTriangulation& EarClipping2<T>::compute(std::span<const Vec2<T>> po
   std::vector<std::uint32_t> ends;
   result_.status = triangulate_detail::prepare_rings(points, ring_ends, false, ring_, ends);
   if (result_.status != Status::ok) return result_;
+  // Crossing edges are not a polygon: say so, then clip anyway (a best effort that terminates).
+  if (triangulate_detail::rings_cross(points, ring_, ends))
+    result_.status = Status::invalid_topology;
   std::vector<std::uint32_t> late;
   EarClipRun<T> run{points, result_, nodes_, late, cell_start_, cell_nodes_};
   // One cyclic list per ring; the first node of each ring is its lexicographically smallest.
@@ -370,15 +501,7 @@ const PolygonTriangulation& EarClipping2<T>::compute(std::span<const Vec2<T>> po
   });
   const std::uint32_t outer = hole_starts_[0];
   for (std::size_t h = 1; h < hole_starts_.size(); ++h) {
-    if (!run.bridge(outer, hole_starts_[h])) {
-      // No valid bridge: drop the hole (its nodes leave the edge set) and report.
-      result_.status = Status::invalid_topology;
-      std::uint32_t v = hole_starts_[h];
-      do {
-        nodes_[v].removed = 1;
-        v = nodes_[v].next;
-      } while (v != hole_starts_[h]);
-    }
+    if (!run.bridge(outer, hole_starts_[h])) result_.status = Status::invalid_topology;
   }
   std::uint32_t count = 0, v = outer;
   do {
@@ -386,6 +509,9 @@ const PolygonTriangulation& EarClipping2<T>::compute(std::span<const Vec2<T>> po
     v = nodes_[v].next;
   } while (v != outer);
   result_.triangles.reserve(count);
+  run.build_grid(outer);
+  run.in_grid.assign(nodes_.size(), 0);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) run.in_grid[i] = nodes_[i].reflex;
   run.clip(outer, count);
   return result_;
 }

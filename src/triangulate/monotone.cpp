@@ -126,7 +126,10 @@ struct Sweep {
         diagonals.push_back({v, helper[e]});
     };
     const auto insert = [&](std::uint32_t e, std::uint32_t v, std::uint32_t r) {
-      where[e] = tree.insert(e).first;
+      const auto [it, inserted] = tree.insert(e);
+      // An equal key exists only for overlapping edges: not a polygon.
+      if (!inserted) status = Status::invalid_topology;
+      where[e] = inserted ? it : tree.end();
       helper[e] = v;
       right[e] = r;
       top[e] = v;
@@ -149,6 +152,8 @@ struct Sweep {
       return *--it;
     };
     for (const std::uint32_t v : order) {
+      // The tree order assumes non-crossing edges: stop at the first sign of a crossing.
+      if (status != Status::ok) return;
       const std::uint32_t ein = prev[v], eout = v;
       switch (type[v]) {
         case VertexType::start: {
@@ -297,13 +302,14 @@ struct Sweep {
           out.push_back(index[u]);
           const std::uint32_t w = adj[s];
           const std::uint32_t back = slot(w, u);
+          if (back == kNone) break;
           // The next half-edge turns clockwise from w -> u around w.
           const std::uint32_t nxt = back == start[w] ? start[w + 1] - 1 : back - 1;
           u = w;
           s = nxt;
           ++steps;
         }
-        if (s != i) status = Status::invalid_topology;
+        if (s != i || !used[s]) status = Status::invalid_topology;
         ends.push_back(static_cast<std::uint32_t>(out.size()));
       }
   }
@@ -393,6 +399,7 @@ Status decompose(std::span<const Vec2<T>> points, std::span<const std::uint32_t>
   const Status s = triangulate_detail::prepare_rings(points, ring_ends, true, verts, ends);
   if (s != Status::ok) return s;
   holes = ends.size() - 1;
+  if (triangulate_detail::rings_cross(points, verts, ends)) return Status::invalid_topology;
   sw.pts = points;
   sw.build(verts, ends);
   sw.run();
@@ -408,9 +415,14 @@ MonotoneDecomposition monotone_decomposition(std::span<const Vec2<T>> points,
   Sweep<T> sw;
   std::size_t holes = 0;
   out.status = decompose(points, ring_ends, sw, holes);
-  if (sw.index.empty()) return out;
+  if (out.status != Status::ok) return out;
   sw.pieces(out.vertices, out.piece_ends);
   out.status = sw.status;
+  if (out.status != Status::ok) {
+    out.vertices.clear();
+    out.piece_ends.clear();
+    return out;
+  }
   for (const auto& d : sw.diagonals) out.diagonals.push_back({sw.index[d[0]], sw.index[d[1]]});
   return out;
 }
@@ -422,10 +434,11 @@ PolygonTriangulation triangulate_monotone(std::span<const Vec2<T>> points,
   Sweep<T> sw;
   std::size_t holes = 0;
   out.status = decompose(points, ring_ends, sw, holes);
-  if (sw.index.empty()) return out;
+  if (out.status != Status::ok) return out;
   std::vector<std::uint32_t> verts, ends;
   sw.pieces(verts, ends);
   out.status = sw.status;
+  if (out.status != Status::ok) return out;
   const std::size_t n = sw.index.size();
   out.triangles.reserve(n + 2 * holes);
   std::vector<std::pair<std::uint32_t, bool>> merged, stack;
@@ -447,7 +460,7 @@ TrapezoidDecomposition trapezoid_decomposition(std::span<const Vec2<T>> points,
   Sweep<T> sw;
   std::size_t holes = 0;
   out.status = decompose(points, ring_ends, sw, holes);
-  out.trapezoids = std::move(sw.traps);
+  if (out.status == Status::ok) out.trapezoids = std::move(sw.traps);
   return out;
 }
 

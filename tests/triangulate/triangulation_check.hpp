@@ -160,7 +160,10 @@ std::string check_triangulation(std::span<const locus::Vec2<T>> pts,
   std::vector<std::array<std::uint32_t, 2>> edges;
   std::uint32_t first = 0;
   for (const std::uint32_t e : ends) {
-    for (std::uint32_t i = first; i < e; ++i) edges.push_back({i, i + 1 == e ? first : i + 1});
+    // A ring of zero area (a Steiner point, a slit) bounds nothing: its points and edges may
+    // lie inside triangles.
+    if (twice_ring_area(pts, first, e) != 0)
+      for (std::uint32_t i = first; i < e; ++i) edges.push_back({i, i + 1 == e ? first : i + 1});
     first = e;
   }
   std::vector<Box> eboxes;

@@ -14,9 +14,10 @@
 // Degenerate input: straight runs keep their middle vertices (they are regular vertices, every
 // vertex is used); duplicates and spike tips are dropped (polygon_triangulation.hpp). The rings
 // must be simple and disjoint: a crossing the sweep detects (an edge missing from the tree, no
-// edge left of a split or merge vertex, a piece that is not closed, a wrong triangle count)
-// gives invalid_topology with the pieces or triangles found so far; undetected crossings give
-// unspecified (but terminating, in-range) output. Cost O(n log n). docs/notes/triangulate.md.
+// edge left of a split or merge vertex, a vertex outside its interval, two tree neighbours
+// crossing, a piece that is not closed, a wrong triangle count) gives invalid_topology and no
+// pieces or triangles; an undetected crossing gives terminating, in-range output. Use ear
+// clipping for a best effort on such input. Cost O(n log n). docs/notes/triangulate.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
