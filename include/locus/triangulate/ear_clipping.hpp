@@ -2,21 +2,20 @@
 #pragma once
 // Ear clipping of a polygon with holes (book section 13.9.1, figures 13.53-13.56; CAPABILITIES
 // row cg.triangulate). Input, output and status: triangulate/polygon_triangulation.hpp.
-// Method: each hole is joined to the outer ring by a bridge (two coincident edges) from its
-// lexicographically smallest vertex, holes in increasing order of that vertex; the bridge
-// candidate comes from a horizontal ray (Eberly), and is accepted only after an exact check:
-// inside both vertex cones and crossing or touching no edge of any ring (orient2d, lexicographic
-// order). If the candidate fails, every vertex of the joined ring is tried, nearest first.
-// Then ears are cut from the joined ring; the ear test looks only at reflex vertices, kept in a
-// uniform grid, so a test costs the reflex vertices near the ear, not O(n).
-// Degenerate input: the interior vertex of a straight run is dropped (no triangle uses it, so
-// triangles meet it as a T-junction), as are merged duplicates and spike tips; holes that touch
-// the outer ring or each other at a vertex are bridged there (zero-length bridge). When no ear
-// exists (only for non-simple input) a convex vertex is cut anyway and the status is
-// invalid_topology; a hole without any valid bridge is also invalid_topology (that hole is
-// then ignored). Cost: O(n log n) to sort, O(n h) for h holes' bridges, then about O(n k) for
-// k reflex vertices per grid cell (near O(n) on ordinary input). Derivation:
-// docs/notes/triangulate.md.
+// Method: each hole is joined to the outer ring by a bridge (two coincident edges), holes in
+// lexicographic order of their smallest vertex; Eberly's horizontal-ray candidate is used only
+// if an exact test accepts it (inside both vertex cones, no edge of any ring crossing or
+// touching it: orient2d, lexicographic order), else the nearest vertex that passes, from any
+// hole vertex. Then ears are cut; the ear test looks only at reflex vertices, kept in a uniform
+// grid, so it costs the reflex vertices near the ear, not O(n).
+// Degenerate input: straight-run middles, merged duplicates and spike tips are dropped (no
+// triangle uses them: T-junctions there); holes touching the outer ring or each other at a
+// vertex are bridged there (zero-length bridge); pinched rings are handled by the cones of the
+// copies. Rings that cross (exact grid test), a hole with no valid bridge, or a ring with no ear
+// (cured as earcut does: local loops cut, then split along a valid diagonal, else a convex
+// vertex cut anyway) give invalid_topology with a best effort that terminates.
+// Cost: O(n log n) sorting, O(n) per bridge, then about O(n k) for k reflex vertices per grid
+// cell (near O(n) on ordinary input). Derivation: docs/notes/triangulate.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
