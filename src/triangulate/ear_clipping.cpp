@@ -9,6 +9,7 @@
 #include "rings.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -209,6 +210,10 @@ struct EarClipRun {
     return orient2d(at(nodes[v].prev), at(v), at(nodes[v].next)) == Sign::positive;
   }
 
+  // Coordinates in cell units (cell k spans [k, k + 1)).
+  double gx_of(T x) const { return (double(x) * 0.5 - min_x) * inv_x; }
+  double gy_of(T y) const { return (double(y) * 0.5 - min_y) * inv_y; }
+
   std::uint32_t cell_x(T x) const {
     const double c = (double(x) * 0.5 - min_x) * inv_x;
     return c >= 1.0 ? std::min(gx - 1, static_cast<std::uint32_t>(c)) : 0u;
@@ -244,8 +249,17 @@ struct EarClipRun {
     min_y = ly;
     inv_x = w > 0 ? double(gx) / w : 0.0;
     inv_y = h > 0 ? double(gy) / h : 0.0;
-    if (!std::isfinite(inv_x)) inv_x = 0.0;
-    if (!std::isfinite(inv_y)) inv_y = 0.0;
+    // Rounding of the cell map must stay far below a cell (the row clipping widens by one);
+    // coordinates huge against their extent get one column or row instead.
+    const double big = std::max({std::abs(lx), std::abs(hx), std::abs(ly), std::abs(hy)});
+    if (!std::isfinite(inv_x) || big * 0x1p-48 * inv_x > 0.125) {
+      inv_x = 0.0;
+      gx = 1;
+    }
+    if (!std::isfinite(inv_y) || big * 0x1p-48 * inv_y > 0.125) {
+      inv_y = 0.0;
+      gy = 1;
+    }
     cell_start.assign(std::size_t(gx) * gy + 1, 0);
     v = start;
     do {
@@ -282,8 +296,41 @@ struct EarClipRun {
     if (orient2d(pa, pb, pc) != Sign::positive) return false;
     const T lx = std::min({pa.x, pb.x, pc.x}), hx = std::max({pa.x, pb.x, pc.x});
     const T ly = std::min({pa.y, pb.y, pc.y}), hy = std::max({pa.y, pb.y, pc.y});
-    const std::uint32_t x0 = cell_x(lx), x1 = cell_x(hx), y0 = cell_y(ly), y1 = cell_y(hy);
+    const std::uint32_t y0 = cell_y(ly), y1 = cell_y(hy);
+    // Row by row, only the cells the triangle reaches (a long thin ear would otherwise visit
+    // its whole bounding box): its x-extent in each row's band, in cell units, widened by a
+    // cell against rounding. Cell units: the same map as cell_x/cell_y, so a point's cell is
+    // within a rounding error of where the triangle puts it.
+    const double ax = gx_of(pa.x), ay = gy_of(pa.y), bx = gx_of(pb.x), by = gy_of(pb.y);
+    const double cx = gx_of(pc.x), cy = gy_of(pc.y);
+    const std::array<std::array<double, 4>, 3> edges = {
+        {{ax, ay, bx, by}, {bx, by, cx, cy}, {cx, cy, ax, ay}}};
     for (std::uint32_t y = y0; y <= y1; ++y) {
+      const double band_lo = y == y0 ? -1e300 : double(y), band_hi = y == y1 ? 1e300 : y + 1.0;
+      double lo = 1e300, hi = -1e300;
+      for (const auto& e : edges) {
+        // The part of edge e inside the band.
+        double t0 = 0.0, t1 = 1.0;
+        const double dy = e[3] - e[1];
+        if (dy != 0.0) {
+          double ta = (band_lo - e[1]) / dy, tb = (band_hi - e[1]) / dy;
+          if (ta > tb) std::swap(ta, tb);
+          t0 = std::max(t0, ta);
+          t1 = std::min(t1, tb);
+        } else if (e[1] < band_lo || e[1] > band_hi) {
+          continue;
+        }
+        if (!(t0 <= t1)) continue;
+        const double xa = e[0] + t0 * (e[2] - e[0]), xb = e[0] + t1 * (e[2] - e[0]);
+        lo = std::min({lo, xa, xb});
+        hi = std::max({hi, xa, xb});
+      }
+      std::uint32_t x0 = cell_x(lx), x1 = cell_x(hx);
+      if (lo <= hi) {
+        const double l = std::floor(lo) - 1.0, h = std::floor(hi) + 1.0;
+        if (l > double(x0)) x0 = static_cast<std::uint32_t>(std::min(l, double(x1)));
+        if (h < double(x1)) x1 = static_cast<std::uint32_t>(std::max(h, double(x0)));
+      }
       const std::size_t row = std::size_t(y) * gx;
       for (std::uint32_t i = cell_start[row + x0], e = cell_start[row + x1 + 1]; i < e; ++i) {
         const std::uint32_t n = cell_nodes[i];

@@ -11,7 +11,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
+#include <set>
 #include <span>
 #include <vector>
 
@@ -120,80 +122,85 @@ namespace locus::triangulate_detail {
 
 /// Whether two edges of the rings (verts/ends as prepare_rings gives them) cross properly
 /// (interiors meet in one point, exact orient2d). Touching at vertices and collinear overlaps
-/// are not crossings. A uniform grid over the edges' boxes: near O(n) on ordinary input.
+/// are not crossings. Shamos and Hoey's sweep: edges in a balanced tree ordered along the
+/// sweep line, each new neighbour pair tested; O(n log n).
 template <Real T>
 [[nodiscard]] bool rings_cross(std::span<const Vec2<T>> points,
                                const std::vector<std::uint32_t>& verts,
                                const std::vector<std::uint32_t>& ends) {
-  std::vector<std::array<std::uint32_t, 2>> edges;
+  const std::uint32_t m = static_cast<std::uint32_t>(verts.size());
+  if (m < 4) return false;
+  std::vector<std::uint32_t> next(m), prev(m);
   std::uint32_t begin = 0;
   for (const std::uint32_t end : ends) {
-    for (std::uint32_t i = begin; i < end; ++i)
-      edges.push_back({verts[i], verts[i + 1 == end ? begin : i + 1]});
+    for (std::uint32_t i = begin; i < end; ++i) {
+      next[i] = i + 1 == end ? begin : i + 1;
+      prev[i] = i == begin ? end - 1 : i - 1;
+    }
     begin = end;
   }
-  if (edges.size() < 4) return false;
-  double lx = std::numeric_limits<double>::infinity(), ly = lx, hx = -lx, hy = -lx;
-  for (const std::uint32_t v : verts) {
-    lx = std::min(lx, double(points[v].x) * 0.5);
-    hx = std::max(hx, double(points[v].x) * 0.5);
-    ly = std::min(ly, double(points[v].y) * 0.5);
-    hy = std::max(hy, double(points[v].y) * 0.5);
-  }
-  const double w = hx - lx, h = hy - ly;
-  const double cells = double(edges.size());
-  double fx = w > 0 && h > 0 ? std::sqrt(cells * w / h) : (w > 0 ? cells : 1.0);
-  fx = std::clamp(fx, 1.0, 2048.0);
-  const double fy = std::clamp(h > 0 ? cells / fx : 1.0, 1.0, 2048.0);
-  const auto gx = static_cast<std::uint32_t>(fx), gy = static_cast<std::uint32_t>(fy);
-  double ix = w > 0 ? double(gx) / w : 0.0, iy = h > 0 ? double(gy) / h : 0.0;
-  if (!std::isfinite(ix)) ix = 0;
-  if (!std::isfinite(iy)) iy = 0;
-  const auto cx = [&](T x) {
-    const double c = (double(x) * 0.5 - lx) * ix;
-    return c >= 1.0 ? std::min(gx - 1, static_cast<std::uint32_t>(c)) : 0u;
+  const auto at = [&](std::uint32_t n) -> const Vec2<T>& { return points[verts[n]]; };
+  const auto above = [&](std::uint32_t a, std::uint32_t b) {
+    const Vec2<T>&pa = at(a), &pb = at(b);
+    if (pa.y != pb.y) return pa.y > pb.y;
+    if (pa.x != pb.x) return pa.x < pb.x;
+    return a < b;
   };
-  const auto cy = [&](T y) {
-    const double c = (double(y) * 0.5 - ly) * iy;
-    return c >= 1.0 ? std::min(gy - 1, static_cast<std::uint32_t>(c)) : 0u;
+  // Edge e joins node e and next[e]; up/lo its endpoints in sweep order.
+  const auto up = [&](std::uint32_t e) { return above(e, next[e]) ? e : next[e]; };
+  const auto lo = [&](std::uint32_t e) { return above(e, next[e]) ? next[e] : e; };
+  const auto crosses = [&](std::uint32_t e, std::uint32_t f) {
+    const Vec2<T>&a = at(e), &b = at(next[e]), &p = at(f), &q = at(next[f]);
+    const Sign o1 = orient2d(a, b, p), o2 = orient2d(a, b, q);
+    if (o1 == Sign::zero || o2 == Sign::zero || o1 == o2) return false;
+    const Sign o3 = orient2d(p, q, a), o4 = orient2d(p, q, b);
+    return o3 != Sign::zero && o4 != Sign::zero && o3 != o4;
   };
-  std::vector<std::uint32_t> start(std::size_t(gx) * gy + 1, 0), items;
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<std::uint32_t> fill;
-    if (pass == 1) {
-      for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-      items.resize(start.back());
-      fill.assign(start.begin(), start.end() - 1);
+  bool found = false;
+  // Left to right along the sweep line, for edges that do not cross (a crossing met on the
+  // way sets `found`, and the sweep stops at the next event).
+  const auto less = [&](std::uint32_t e1, std::uint32_t e2) {
+    if (e1 == e2) return false;
+    const Vec2<T>&u1 = at(up(e1)), &l1 = at(lo(e1)), &u2 = at(up(e2)), &l2 = at(lo(e2));
+    const Sign a = orient2d(u1, l1, u2), b = orient2d(u1, l1, l2);
+    if (a != Sign::negative && b != Sign::negative && (a != Sign::zero || b != Sign::zero))
+      return true;
+    if (a != Sign::positive && b != Sign::positive && (a != Sign::zero || b != Sign::zero))
+      return false;
+    if (a == Sign::zero && b == Sign::zero) return e1 < e2;
+    const Sign c = orient2d(u2, l2, u1), d = orient2d(u2, l2, l1);
+    if (c != Sign::zero && d != Sign::zero && c != d) found = true;
+    return c != Sign::positive && d != Sign::positive;
+  };
+  std::vector<std::uint32_t> order(m);
+  for (std::uint32_t i = 0; i < m; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), above);
+  std::set<std::uint32_t, decltype(less)> tree(less);
+  using It = typename std::set<std::uint32_t, decltype(less)>::iterator;
+  std::vector<It> where(m, tree.end());
+  const auto check = [&](It a, It b) {
+    if (a != tree.end() && b != tree.end() && crosses(*a, *b)) found = true;
+  };
+  for (const std::uint32_t v : order) {
+    if (found) return true;
+    for (const std::uint32_t e : {prev[v], v}) {  // edges ending here first
+      if (lo(e) != v || where[e] == tree.end()) continue;
+      const It it = where[e];
+      const It after = std::next(it);
+      if (it != tree.begin()) check(std::prev(it), after);
+      tree.erase(it);
+      where[e] = tree.end();
     }
-    for (std::uint32_t e = 0; e < edges.size(); ++e) {
-      const Vec2<T>&a = points[edges[e][0]], &b = points[edges[e][1]];
-      const std::uint32_t x0 = cx(std::min(a.x, b.x)), x1 = cx(std::max(a.x, b.x));
-      const std::uint32_t y0 = cy(std::min(a.y, b.y)), y1 = cy(std::max(a.y, b.y));
-      for (std::uint32_t y = y0; y <= y1; ++y)
-        for (std::uint32_t x = x0; x <= x1; ++x) {
-          const std::size_t c = std::size_t(y) * gx + x;
-          if (pass == 0)
-            ++start[c + 1];
-          else
-            items[fill[c]++] = e;
-        }
+    for (const std::uint32_t e : {prev[v], v}) {
+      if (up(e) != v) continue;
+      const auto [it, inserted] = tree.insert(e);
+      if (!inserted) continue;  // collinear overlap with the same key: not a proper crossing
+      where[e] = it;
+      if (it != tree.begin()) check(std::prev(it), it);
+      check(it, std::next(it));
     }
   }
-  for (std::size_t c = 0; c + 1 < start.size(); ++c)
-    for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
-      for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
-        const auto& e = edges[items[i]];
-        const auto& f = edges[items[j]];
-        const Vec2<T>&a = points[e[0]], &b = points[e[1]], &p = points[f[0]], &q = points[f[1]];
-        if (std::max(a.x, b.x) < std::min(p.x, q.x) || std::max(p.x, q.x) < std::min(a.x, b.x) ||
-            std::max(a.y, b.y) < std::min(p.y, q.y) || std::max(p.y, q.y) < std::min(a.y, b.y))
-          continue;
-        const Sign o1 = orient2d(a, b, p), o2 = orient2d(a, b, q);
-        if (o1 == Sign::zero || o2 == Sign::zero || o1 == o2) continue;
-        const Sign o3 = orient2d(p, q, a), o4 = orient2d(p, q, b);
-        if (o3 != Sign::zero && o4 != Sign::zero && o3 != o4) return true;
-      }
-  return false;
+  return found;
 }
 
 }  // namespace locus::triangulate_detail
