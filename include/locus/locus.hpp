@@ -17,3 +17,4 @@
 #include <locus/measure.hpp>
 #include <locus/numeric.hpp>
 #include <locus/primitives.hpp>
+#include <locus/triangulate.hpp>

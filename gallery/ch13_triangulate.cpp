@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: BSL-1.0
+// Gallery, chapter 13.9: polygon triangulation. Ear clipping (13.53), the horizontal
+// trapezoidal decomposition (13.56, 13.68), the monotone pieces (13.69) and the triangulation of
+// the monotone pieces (13.70). Every figure draws what locus computes: triangulate_ear_clipping,
+// trapezoid_decomposition (+ trapezoid_corners), monotone_decomposition and
+// triangulate_monotone on one sample polygon with a hole; a figure fails when the status is not
+// ok or the pieces' area differs from the polygon's.
+#include "gallery.hpp"
+
+#include <locus/triangulate/ear_clipping.hpp>
+#include <locus/triangulate/monotone.hpp>
+#include <locus/triangulate/trapezoid_decomposition.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace locus_gallery {
+namespace {
+
+using namespace locus;
+namespace c = colour;
+
+struct Sample {
+  std::vector<Vec2d> points;
+  std::vector<std::uint32_t> ends;
+};
+
+// A polygon with split and merge vertices and one hole (the inputs of every figure).
+const Sample& sample() {
+  static const Sample s = {{{0, 0},
+                            {4, 1.2},
+                            {7, 0.2},
+                            {10, 2},
+                            {8.6, 4.4},
+                            {10.4, 7.6},
+                            {6.8, 6.2},
+                            {4.4, 8.4},
+                            {2.2, 5.6},
+                            {-0.6, 6.8},
+                            {1.4, 3.2},
+                            // hole
+                            {4.2, 3.2},
+                            {5.0, 5.0},
+                            {6.6, 3.6}},
+                           {11, 14}};
+  return s;
+}
+
+double twice_area(std::span<const Vec2d> p) {
+  double a = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2d& u = p[i];
+    const Vec2d& v = p[(i + 1) % p.size()];
+    a += u.x * v.y - v.x * u.y;
+  }
+  return a;
+}
+
+double polygon_twice_area() {
+  const Sample& s = sample();
+  const std::span<const Vec2d> pts(s.points);
+  return std::abs(twice_area(pts.subspan(0, 11))) - std::abs(twice_area(pts.subspan(11, 3)));
+}
+
+bool close_area(double a) { return std::abs(a - polygon_twice_area()) <= 1e-9; }
+
+void draw_polygon(SvgWriter& w, const Vec2d& off) {
+  const Sample& s = sample();
+  std::vector<Vec2d> outer, hole;
+  for (std::uint32_t i = 0; i < 11; ++i) outer.push_back(off + s.points[i]);
+  for (std::uint32_t i = 11; i < 14; ++i) hole.push_back(off + s.points[i]);
+  w.polygon(outer, pen(c::black, 2));
+  w.polygon(hole, pen(c::black, 2));
+}
+
+bool draw_triangles(SvgWriter& w, const PolygonTriangulation& r, const Vec2d& off,
+                    const char* col) {
+  if (r.status != Status::ok) return false;
+  const Sample& s = sample();
+  double sum = 0;
+  for (const auto& t : r.triangles) {
+    const std::vector<Vec2d> v{off + s.points[t[0]], off + s.points[t[1]], off + s.points[t[2]]};
+    sum += twice_area(std::span<const Vec2d>(v));
+    w.polygon(v, filled(col, 0.15, 1));
+  }
+  draw_polygon(w, off);
+  return close_area(sum);
+}
+
+// 13.53: the diagonals ear clipping finds (each triangle's third side joins mutually visible
+// vertices; the hole is joined by a bridge).
+bool fig_13_53(SvgWriter& w) {
+  const Sample& s = sample();
+  const auto r = triangulate_ear_clipping(s.points, s.ends);
+  const bool ok = draw_triangles(w, r, {0, 0}, c::blue);
+  w.text(Vec2d{0, -1.2},
+         std::to_string(r.triangles.size()) + " ears cut (triangulate_ear_clipping)",
+         text_style(c::black, 0, 0));
+  return ok;
+}
+
+// 13.56: the sample polygon, its vertices numbered.
+bool fig_13_56(SvgWriter& w) {
+  const Sample& s = sample();
+  draw_polygon(w, {0, 0});
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    point(w, s.points[i], "V" + std::to_string(i), i < 11 ? c::black : c::red);
+  return true;
+}
+
+// 13.68: the trapezoids of the horizontal decomposition (one horizontal segment from each
+// vertex to the nearest edges on either side).
+bool fig_13_68(SvgWriter& w) {
+  const Sample& s = sample();
+  const auto d = trapezoid_decomposition(s.points, s.ends);
+  if (d.status != Status::ok) return false;
+  const char* cols[] = {c::blue, c::green, c::orange, c::purple};
+  double sum = 0;
+  for (std::size_t i = 0; i < d.trapezoids.size(); ++i) {
+    const auto q = trapezoid_corners(std::span<const Vec2d>(s.points), d.trapezoids[i]);
+    const std::vector<Vec2d> v(q.begin(), q.end());
+    sum += twice_area(std::span<const Vec2d>(v));
+    w.polygon(v, filled(cols[i % 4], 0.2, 1));
+  }
+  draw_polygon(w, {0, 0});
+  w.text(Vec2d{0, -1.2}, std::to_string(d.trapezoids.size()) + " trapezoids",
+         text_style(c::black, 0, 0));
+  return std::abs(sum - polygon_twice_area()) <= 1e-9;
+}
+
+// 13.69: the monotone pieces (light and dark gray alternate), with the trapezoid sides.
+bool fig_13_69(SvgWriter& w) {
+  const Sample& s = sample();
+  const auto m = monotone_decomposition(s.points, s.ends);
+  const auto d = trapezoid_decomposition(s.points, s.ends);
+  if (m.status != Status::ok || d.status != Status::ok) return false;
+  double sum = 0;
+  std::uint32_t b = 0;
+  for (std::size_t k = 0; k < m.piece_ends.size(); ++k) {
+    std::vector<Vec2d> v;
+    for (std::uint32_t i = b; i < m.piece_ends[k]; ++i) v.push_back(s.points[m.vertices[i]]);
+    b = m.piece_ends[k];
+    sum += twice_area(std::span<const Vec2d>(v));
+    w.polygon(v, filled(k % 2 ? c::gray : c::light, 0.6, 1));
+  }
+  for (const auto& t : d.trapezoids) {
+    const auto q = trapezoid_corners(std::span<const Vec2d>(s.points), t);
+    w.segment(q[0], q[1], dashed(c::blue, 1));
+    w.segment(q[3], q[2], dashed(c::blue, 1));
+  }
+  for (const auto& e : m.diagonals) w.segment(s.points[e[0]], s.points[e[1]], pen(c::red, 2));
+  draw_polygon(w, {0, 0});
+  return close_area(sum);
+}
+
+// 13.70: the monotone pieces triangulated by the stack walk.
+bool fig_13_70(SvgWriter& w) {
+  const Sample& s = sample();
+  const auto r = triangulate_monotone(s.points, s.ends);
+  const bool ok = draw_triangles(w, r, {0, 0}, c::green);
+  w.text(Vec2d{0, -1.2}, std::to_string(r.triangles.size()) + " triangles (triangulate_monotone)",
+         text_style(c::black, 0, 0));
+  return ok;
+}
+
+}  // namespace
+
+std::vector<Figure> chapter13_polytri_figures() {
+  return {
+      {"13.53", "triangulate_ear_clipping", fig_13_53},
+      {"13.56", "the input of the trapezoid and monotone figures", fig_13_56},
+      {"13.68", "trapezoid_decomposition, trapezoid_corners", fig_13_68},
+      {"13.69", "monotone_decomposition, trapezoid_decomposition", fig_13_69},
+      {"13.70", "triangulate_monotone", fig_13_70},
+  };
+}
+
+}  // namespace locus_gallery
