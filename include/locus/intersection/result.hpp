@@ -20,15 +20,21 @@
 //   start, an interior point, end).  coincident: count 0, both arguments are the same set and
 //   no kind above describes it (equal circles, ellipses, quadratic curves).
 // Index 0 always refers to the first argument: the swapped-argument overload returns swapped().
-// Unbounded sets (polylines, mesh slices) come in result types with vectors and a Status instead.
+// Unbounded results use vectors and a Status: PolylineIntersection2 (a linear component against
+// a polyline or polygon boundary) lists PolylineCrossing2 pieces, each a point or a segment.
 // Non-finite input gives kind empty unless the pair header says otherwise; no NaN point is ever
 // reported inside count. Cost: an aggregate of Capacity (N + 2) scalars; no allocation.
 
+#include <locus/core/scalar.hpp>
+#include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace locus {
 
@@ -73,6 +79,35 @@ template <class T, int N, class PA, class PB, int C>
 [[nodiscard]] constexpr Intersection<T, N, PB, PA, C> swapped(
     const Intersection<T, N, PA, PB, C>& r) noexcept {
   return {r.kind, r.count, r.point, r.param_b, r.param_a};
+}
+
+/// One piece of a linear component's intersection with a polyline: kind point (count 1) or
+/// segment (count 2, an overlap with an edge, ends by increasing param_a), with the
+/// parameters on both arguments (on a polyline or polygon: the vertex parameter edge + local t,
+/// primitives/polyline.hpp) and the index of the edge it lies on.
+template <Real T>
+struct PolylineCrossing2 {
+  Kind kind = Kind::point;
+  int count = 1;
+  std::array<Vec2<T>, 2> point{};
+  std::array<T, 2> param_a{};
+  std::array<T, 2> param_b{};
+  std::size_t edge = 0;
+};
+
+/// The intersection of a linear component with a polyline or polygon boundary: the pieces in
+/// order along the linear component (see the pair header).
+template <Real T>
+struct PolylineIntersection2 {
+  Status status = Status::empty_input;
+  std::vector<PolylineCrossing2<T>> crossings;
+};
+
+/// The same answer with the arguments exchanged (each piece's parameters swapped).
+template <Real T>
+[[nodiscard]] inline PolylineIntersection2<T> swapped(PolylineIntersection2<T> r) noexcept {
+  for (PolylineCrossing2<T>& c : r.crossings) std::swap(c.param_a, c.param_b);
+  return r;
 }
 
 /// A readable name of the kind ("empty", "point", ...), for messages and the CLI.
