@@ -133,7 +133,7 @@ void check(const L& l, const std::vector<Vec2<T>>& v, bool closed, int* pieces_s
     for (int i = 0; i < q.count; ++i) {
       const std::size_t s = static_cast<std::size_t>(i);
       const double bound =
-          4 * eps * std::max({m, std::abs(q.point[i].x.get_d()), std::abs(q.point[i].y.get_d())});
+          6 * eps * std::max({m, std::abs(q.point[i].x.get_d()), std::abs(q.point[i].y.get_d())});
       const double pe =
           std::max(std::abs(mpq_class(mpq_class(double(c.point[s].x)) - q.point[i].x).get_d()),
                    std::abs(mpq_class(mpq_class(double(c.point[s].y)) - q.point[i].y).get_d()));

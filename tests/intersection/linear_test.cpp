@@ -2,7 +2,7 @@
 // Row int2.linear: intersects() / intersection() for the six pairs of Line2, Ray2, Segment2,
 // float and double, against the exact GMP oracle (linear_oracle.hpp). Each case checks: the kind
 // equals the exact one; intersects() agrees; a crossing point is within the header's bound
-// 4 eps max(|X|, m) of the exact point X, and each parameter within that bound over |direction|;
+// 6 eps max(|X|, m) of the exact point X, and each parameter within that bound over |direction|;
 // overlap end points equal the exact ones (they are input points) with accurate parameters;
 // every entry lies on both arguments through its parameters; the swapped overload returns
 // swapped(). Inputs: seeded random, tiny crossing angles (down to 1e-15 rad), near-parallel
@@ -141,7 +141,7 @@ void check(const A& a, const B& b, Worst* worst = nullptr) {
   // Entries whose point the oracle knows (the finite ends): bound of the header.
   for (int i = 0; i < (e.kind == ex::QKind::line ? 0 : e.count); ++i) {
     SCOPED_TRACE("entry " + std::to_string(i));
-    const double bound = 4.0 * eps * std::max(qmax_abs(e.point[i]), m);
+    const double bound = 6.0 * eps * std::max(qmax_abs(e.point[i]), m);
     const double pe = err(r.point[static_cast<std::size_t>(i)], e.point[i]);
     EXPECT_LE(pe, bound) << "point error " << pe;
     if (e.kind != ex::QKind::point) {
@@ -161,7 +161,7 @@ void check(const A& a, const B& b, Worst* worst = nullptr) {
     const double eb = std::abs(mpq_class(mpq_class(tb) - e.tb[i]).get_d()) * db;
     EXPECT_LE(ea, bound) << "param_a " << ta << " against " << e.ta[i].get_d();
     EXPECT_LE(eb, bound) << "param_b " << tb << " against " << e.tb[i].get_d();
-    if (worst && bound > 0) worst->add(std::max({pe, ea, eb}) / (bound / 4.0));
+    if (worst && bound > 0) worst->add(std::max({pe, ea, eb}) / (bound / 6.0));
   }
   // Every entry lies on both arguments through its parameters (ray's second point, line points).
   for (int i = 0; i < r.count; ++i) {

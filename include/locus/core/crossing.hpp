@@ -4,12 +4,12 @@
 // the intersection area, rows int2.linear and int2.linear-polyline; book section 7.1).
 //
 // turn2d_value(a, b, c, d): det[b - a; d - c] (whose exact sign is turn2d() in predicates.hpp)
-// rounded from its exact value: the four 2x2 minors of the raw coordinates are formed in
-// expansion arithmetic (src/core/crossing.cpp), so no difference rounds first; relative error
-// below 2 eps (double eps), sign always turn2d()'s. Why: a crossing's parameter is a ratio of
-// two such determinants, and at tiny crossing angles the naive ones lose every digit.
-// Exact signs (floating-point filter, then core/exact_sum.hpp), for points given implicitly as
-// the crossing X(p, q) of the lines p0 p1 and q0 q1:
+// rounded from its exact value: exact differences and products in double-double, or, near zero,
+// the four 2x2 minors of the raw coordinates in expansion arithmetic (src/core/crossing.cpp);
+// no difference rounds first. Relative error below 2 eps (double eps), sign always turn2d()'s. Why:
+// a crossing's parameter is a ratio of two such determinants, and at tiny crossing angles the naive
+// ones lose every digit. Exact signs (floating-point filter, then core/exact_sum.hpp), for points
+// given implicitly as the crossing X(p, q) of the lines p0 p1 and q0 q1:
 //   side_of_crossing(p0, p1, q0, q1, a, b) = sign of orient2d(a, b, X(p, q));
 //   compare_crossing_params(a, b, o, p0, p1, q0, q1) = sign of t_q - t_p, where t_x is the
 //     parameter of X(line, x) on the line o + t (b - a): the order of two crossings along it.
@@ -19,6 +19,7 @@
 // Cost: turn2d_value about 100 flops; the predicates a few dozen flops when the filter decides,
 // a few microseconds otherwise; no allocation.
 
+#include <locus/core/error_free.hpp>
 #include <locus/core/exact_sum.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
@@ -35,12 +36,40 @@ namespace detail {
                                            const Vec2<double>& c, const Vec2<double>& d) noexcept;
 }  // namespace detail
 
+namespace detail {
+/// Double-double evaluation of det[b - a; d - c]: exact differences (two_sum), exact leading
+/// products, first-order tails. Its error is at most u |v| + 32 u^2 (|p| + |q|) (u = 2^-53,
+/// p and q the two leading products); accepted when that is below 1.5 u |v|, else the exact
+/// expansion decides. Contraction into FMAs only makes the tails more accurate.
+[[nodiscard]] inline double turn2d_value_dd(const Vec2<double>& a, const Vec2<double>& b,
+                                            const Vec2<double>& c, const Vec2<double>& d) noexcept {
+  double h1, l1, h2, l2, h3, l3, h4, l4;
+  two_sum(b.x, -a.x, h1, l1);
+  two_sum(d.y, -c.y, h2, l2);
+  two_sum(b.y, -a.y, h3, l3);
+  two_sum(d.x, -c.x, h4, l4);
+  const double p = h1 * h2, q = h3 * h4;
+  const double pe = product_error(h1, h2, p), qe = product_error(h3, h4, q);
+  double s, se;
+  two_sum(p, -q, s, se);
+  const double tail =
+      (se + (pe - qe)) + ((h1 * l2 + l1 * h2) - (h3 * l4 + l3 * h4)) + (l1 * l2 - l3 * l4);
+  const double v = s + tail;
+  const double perm = std::abs(p) + std::abs(q);
+  // 64 u perm <= |v|: the tails' rounding (32 u^2 perm) is at most u |v| / 2. Products near
+  // underflow or non-finite input go to the exact path.
+  if (std::abs(v) >= 0x1p-47 * perm && perm > 0x1p-900 && perm < 0x1p1000) [[likely]]
+    return v;
+  return turn2d_value_accurate(a, b, c, d);
+}
+}  // namespace detail
+
 /// det[b - a; d - c] = perp_dot(b - a, d - c), relative error below 2 eps (see the header).
 template <Real T>
 [[nodiscard]] inline double turn2d_value(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c,
                                          const Vec2<T>& d) noexcept {
-  return detail::turn2d_value_accurate(vec_cast<double>(a), vec_cast<double>(b),
-                                       vec_cast<double>(c), vec_cast<double>(d));
+  return detail::turn2d_value_dd(vec_cast<double>(a), vec_cast<double>(b), vec_cast<double>(c),
+                                 vec_cast<double>(d));
 }
 
 namespace detail::crossing {

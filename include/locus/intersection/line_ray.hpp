@@ -11,16 +11,16 @@
 // Exact decisions: parallel, collinear, whether and how they meet come from exact signs
 // (turn2d, orient2d, lexicographic order; core/predicates.hpp), never from a tolerance.
 // Constructed point: an input point exactly when one lies on the other argument (touching at
-// an end point); otherwise |point - X|inf <= 4 eps max(|X|inf, m), X the exact intersection,
+// an end point); otherwise |point - X|inf <= 6 eps max(|X|inf, m), X the exact intersection,
 // m the largest |coordinate| of the end points and origins, eps of T; this holds at tiny
 // crossing angles too: the parameter is a ratio of determinants rounded from their exact
-// values when the naive ones are not accurate enough (core/crossing.hpp). Parameters: within
-// 4 eps max(|X|inf, m) / |direction|inf of the exact ones, clamped to the domain.
+// values (core/crossing.hpp), never of rounded differences. Parameters: within
+// 6 eps max(|X|inf, m) / |direction|inf of the exact ones, clamped to the domain.
 // Degenerate: a zero-length segment or a zero direction acts as the point p0 / origin
 // (parameter 0). Any NaN or infinite coordinate gives kind empty (intersects false).
 // The swapped overload (Ray2, Line2) returns swapped() of this one: index 0 is the first argument.
 // Range: exact for coordinates whose products stay inside the double range (predicates.hpp).
-// Cost: a few exact-sign filters (about ten ns); the accurate determinants only near parallel.
+// Cost: a few exact-sign filters; a constructed crossing adds four double-double determinants.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/linear2.hpp>

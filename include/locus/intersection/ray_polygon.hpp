@@ -12,7 +12,7 @@
 // those found at that position); each overlapping edge gives its own segment piece. Exact: which
 // edges meet the ray, how, and the order along it (compare_crossing_params, core/crossing.hpp);
 // points and parameters are rounded as in the linear pairs
-// (|point - X|inf <= 4 eps max(|X|inf, m), m the largest |coordinate| of the inputs).
+// (|point - X|inf <= 6 eps max(|X|inf, m), m the largest |coordinate| of the inputs).
 // Degenerate: a zero direction or zero-length segment acts as its point (one piece at most);
 // a single vertex acts as a point (edge 0); zero-length edges act as points.
 // The swapped overload (Polygon2, Ray2) returns swapped(): parameters exchanged, same order.

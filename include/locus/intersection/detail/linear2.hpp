@@ -5,11 +5,11 @@
 // 0 and a line's direction vector), o is the point of parameter 0, lo bounds t >= 0 (ray,
 // segment) and hi bounds t <= 1 (segment, whose parameter 1 is at b). The side of a point p of
 // such a component is det[b - a; p - o] = turn2d(a, b, o, p): exact signs decide everything.
-// A crossing's parameter is a ratio of two such determinants; their naive values are used when
-// a forward error bound shows the point is within one eps of the exact one, else the
-// determinants are rounded from their exact values (core/crossing.hpp). Collinear overlaps are
-// decided by exact lexicographic comparisons, which order collinear points along their line.
-// Computation is in double (float input is promoted exactly). docs/notes/intersection.md.
+// A crossing's parameter is a ratio of two such determinants, each rounded from its exact value
+// (core/crossing.hpp: double-double, exact expansions near zero), so tiny angles lose nothing.
+// Collinear overlaps are decided by exact lexicographic comparisons, which order collinear points
+// along their line. Computation is in double (float input is promoted exactly).
+// docs/notes/intersection.md.
 
 #include <locus/core/crossing.hpp>
 #include <locus/core/predicates.hpp>
@@ -64,20 +64,6 @@ template <Real T>
   return turn2d(l.a, l.b, l.o, p);
 }
 
-/// det[b - a; d - c] in double with the stage-A error bound of orient2d (Shewchuk 1997).
-struct Approx {
-  double v, err;
-};
-[[nodiscard]] inline Approx turn_approx(const V& a, const V& b, const V& c, const V& d) noexcept {
-  const double p = (b.x - a.x) * (d.y - c.y), q = (b.y - a.y) * (d.x - c.x);
-  // (3 + 16 eps) eps with eps = 2^-53, rounded up; products near underflow get an infinite
-  // bound, which sends the caller to the accurate values.
-  const double mag = std::abs(p) + std::abs(q);
-  return {p - q, mag > 0x1p-900 ? 3.3307e-16 * mag : INFINITY};
-}
-[[nodiscard]] inline Approx side_approx(const Lin& l, const V& p) noexcept {
-  return turn_approx(l.a, l.b, l.o, p);
-}
 [[nodiscard]] inline double side_accurate(const Lin& l, const V& p) noexcept {
   return turn2d_value(l.a, l.b, l.o, p);
 }
@@ -125,21 +111,6 @@ struct Approx {
 
 [[nodiscard]] inline bool finite(const Lin& l) noexcept { return all_finite(l.a, l.b, l.o); }
 
-[[nodiscard]] inline double max_abs2(const V& p, const V& q) noexcept {
-  return std::max(max_abs(p), max_abs(q));
-}
-
-/// Whether the computed ratio n / d (naive values) is accurate enough: its forward error times
-/// scale must stay below eps * ref (first order; the bound carries a small safety factor).
-[[nodiscard]] inline bool ratio_ok(const Approx& n, const Approx& d, double scale,
-                                   double ref) noexcept {
-  const double ad = std::abs(d.v);
-  if (!(ad > 2.0 * d.err)) return false;
-  const double t = std::abs(n.v / d.v);
-  const double dt = (n.err + t * d.err) / (ad - d.err) + 0x1p-53 * t;
-  return dt * scale <= 0x1p-53 * ref;
-}
-
 /// Parameter of the crossing on l with m (not parallel): t = side(m, l.o) / det[dir l; dir m].
 /// For a segment the ratio is s0 / (s0 - s1) with s0, s1 = m's sides of p0 and p1, of opposite
 /// signs (or one zero), so the difference cannot cancel; t - 1 = s1 / (s0 - s1) is returned too,
@@ -149,28 +120,12 @@ struct Param {
   bool from_end;
 };
 [[nodiscard]] inline Param crossing_param(const Lin& l, const Lin& m) noexcept {
-  const double scale = max_abs(dir(l));
   if (l.hi) {
-    const Approx s0 = side_approx(m, l.o), s1 = side_approx(m, l.b);
-    const bool from_end = std::abs(s1.v) < std::abs(s0.v);
-    const Approx den{s0.v - s1.v, s0.err + s1.err + 0x1p-53 * std::abs(s0.v - s1.v)};
-    double v0 = s0.v, v1 = s1.v;
-    if (!ratio_ok(from_end ? s1 : s0, den, scale, max_abs2(l.o, l.b))) {
-      v0 = side_accurate(m, l.o);
-      v1 = side_accurate(m, l.b);
-    }
+    const double v0 = side_accurate(m, l.o), v1 = side_accurate(m, l.b);
     const double dd = v0 - v1;
-    return {v0 / dd, v1 / dd, from_end};
+    return {v0 / dd, v1 / dd, std::abs(v1) < std::abs(v0)};
   }
-  const Approx s0 = side_approx(m, l.o);
-  const Approx den = turn_approx(l.a, l.b, m.a, m.b);
-  const double ref = std::max(max_abs(l.o), max_abs(l.o + (s0.v / den.v) * dir(l)));
-  double n = s0.v, dv = den.v;
-  if (!ratio_ok(s0, den, scale, ref)) {
-    n = side_accurate(m, l.o);
-    dv = turn2d_value(l.a, l.b, m.a, m.b);
-  }
-  const double t = n / dv;
+  const double t = side_accurate(m, l.o) / turn2d_value(l.a, l.b, m.a, m.b);
   return {t, t - 1.0, false};
 }
 
