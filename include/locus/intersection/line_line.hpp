@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Intersection of a line and a line in the plane: intersects() (the book's test) and
+// Intersection of two lines in the plane: intersects() (the book's test) and
 // intersection() (find); row int2.linear, book section 7.1 (linear components).
 // Parameters: t in R (origin + t direction) on each argument.
 // Result (intersection/result.hpp, LinearIntersection2<T>): empty; point (a crossing, or a
-// touch at an end point); collinear overlap: line, with its
-// points and their parameters on both arguments (segment: end points by increasing param_a;
-// ray: origin, then origin + direction of the input ray it lies on; line: the first argument's
-// origin and origin + direction).
+// touch at an end point); or, when collinear, the overlap: line (two of its points: the first
+// argument's origin and origin + direction); every entry with its parameters
+// on both arguments.
 // Exact decisions: parallel, collinear, whether and how they meet come from exact signs
 // (turn2d, orient2d, lexicographic order; core/predicates.hpp), never from a tolerance.
 // Constructed point: an input point exactly when one lies on the other argument (touching at

@@ -4,19 +4,16 @@
 // intersection() (find); row int2.linear, book section 7.1 (linear components).
 // Parameters: Line2 t in R (origin + t direction); Segment2 t in [0, 1] ((1 - t) p0 + t p1).
 // Result (intersection/result.hpp, LinearIntersection2<T>): empty; point (a crossing, or a
-// touch at an end point); collinear overlap: segment, with its
-// points and their parameters on both arguments (segment: end points by increasing param_a;
-// ray: origin, then origin + direction of the input ray it lies on; line: the first argument's
-// origin and origin + direction).
-// Exact decisions: parallel, collinear, whether and how they meet come from exact signs
-// (turn2d, orient2d, lexicographic order; core/predicates.hpp), never from a tolerance.
-// Constructed point: an input point exactly when one lies on the other argument (touching at
-// an end point); otherwise |point - X|inf <= 6 eps max(|X|inf, m), X the exact intersection,
-// m the largest |coordinate| of the end points and origins, eps of T; this holds at tiny
-// crossing angles too: the parameter is a ratio of determinants rounded from their exact
-// values (core/crossing.hpp), never of rounded differences. Parameters: within
-// 6 eps max(|X|inf, m) / |direction|inf of the exact ones, clamped to the domain.
-// Degenerate: a zero-length segment or a zero direction acts as the point p0 / origin
+// touch at an end point); or, when collinear, the overlap: segment (its end points by increasing
+// param_a); every entry with its parameters on both arguments. Exact decisions: parallel,
+// collinear, whether and how they meet come from exact signs (turn2d, orient2d, lexicographic
+// order; core/predicates.hpp), never from a tolerance. Constructed point: an input point exactly
+// when one lies on the other argument (touching at an end point); otherwise |point - X|inf <= 6 eps
+// max(|X|inf, m), X the exact intersection, m the largest |coordinate| of the end points and
+// origins, eps of T; this holds at tiny crossing angles too: the parameter is a ratio of
+// determinants rounded from their exact values (core/crossing.hpp), never of rounded differences.
+// Parameters: within 6 eps max(|X|inf, m) / |direction|inf of the exact ones, clamped to the
+// domain. Degenerate: a zero-length segment or a zero direction acts as the point p0 / origin
 // (parameter 0). Any NaN or infinite coordinate gives kind empty (intersects false).
 // The swapped overload (Segment2, Line2) returns swapped() of this one: index 0 is the first
 // argument. Range: exact for coordinates whose products stay inside the double range
