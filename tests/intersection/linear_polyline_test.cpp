@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "intersection/linear_oracle.hpp"
+#include "support/scale_covariance.hpp"
 #include "support/typed.hpp"
 
 namespace {
@@ -132,6 +133,8 @@ void check(const L& l, const std::vector<Vec2<T>>& v, bool closed, int* pieces_s
     ASSERT_EQ(c.count, q.count);
     for (int i = 0; i < q.count; ++i) {
       const std::size_t s = static_cast<std::size_t>(i);
+      ASSERT_TRUE(is_finite(c.point[s]) && std::isfinite(c.param_a[s]) &&
+                  std::isfinite(c.param_b[s]));
       const double bound =
           6 * eps * std::max({m, std::abs(q.point[i].x.get_d()), std::abs(q.point[i].y.get_d())});
       const double pe =
@@ -265,6 +268,30 @@ TYPED_TEST(IntersectionLinearPolyline, NearTiesOrderedExactly) {
       }
       check<T>(l, v, i % 2 == 0);
       if (::testing::Test::HasFatalFailure()) return;
+    }
+  });
+}
+
+// Coordinates near the ends of the exponent range: random chains and integer-grid chains scaled
+// by 2^k still match the oracle (each pair rescales; the ordering predicate is exact for any
+// finite input).
+TYPED_TEST(IntersectionLinearPolyline, FarExponents) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for_each_linear<T>([&]<class L>() {
+    for (const int k : locus_test::far_scale_exponents<T>()) {
+      for (int i = 0; i < 60; ++i) {
+        std::vector<Vec2<T>> v(static_cast<std::size_t>(rng.uniform_int(2, 8)));
+        for (auto& p : v)
+          p = i % 2 ? rng.vec<T, 2>(-1, 1)
+                    : Vec2<T>{T(rng.uniform_int(-2, 2)), T(rng.uniform_int(-2, 2))};
+        const Vec2<T> p = i % 2 ? rng.vec<T, 2>(-1, 1) : Vec2<T>{T(rng.uniform_int(-2, 2)), T(0)};
+        const Vec2<T> q = i % 2 ? rng.vec<T, 2>(-1, 1) : Vec2<T>{T(rng.uniform_int(-2, 2)), T(1)};
+        check<T>(Make<L>::from(locus_test::scaled(p, k), locus_test::scaled(q, k)),
+                 locus_test::scaled(v, k), i % 3 == 0);
+        if (::testing::Test::HasFatalFailure()) return;
+      }
     }
   });
 }

@@ -142,6 +142,10 @@ void check(const A& a, const B& b, Worst* worst = nullptr) {
   for (int i = 0; i < (e.kind == ex::QKind::line ? 0 : e.count); ++i) {
     SCOPED_TRACE("entry " + std::to_string(i));
     const double bound = 6.0 * eps * std::max(qmax_abs(e.point[i]), m);
+    ASSERT_TRUE(is_finite(r.point[static_cast<std::size_t>(i)]) &&
+                std::isfinite(r.param_a[static_cast<std::size_t>(i)]) &&
+                std::isfinite(r.param_b[static_cast<std::size_t>(i)]))
+        << "a non-finite point or parameter reported";
     const double pe = err(r.point[static_cast<std::size_t>(i)], e.point[i]);
     EXPECT_LE(pe, bound) << "point error " << pe;
     if (e.kind != ex::QKind::point) {
@@ -438,6 +442,36 @@ TYPED_TEST(IntersectionLinear, BookConfigurations) {
   EXPECT_EQ(r.point[0], (Vec2<T>{2, 1}));
   EXPECT_EQ(r.param_a[0], T(0.5));
   EXPECT_NEAR(double(r.param_b[0]), 2.0 / 3.0, double(eps_v<T>));
+}
+
+// Coordinates near the ends of the exponent range (2^+-1000 and 2^+-900 for double, 2^+-110 and
+// 2^+-100 for float): random and tiny-angle cases still match the oracle within the bound (the
+// engine rescales by a power of two where products would overflow or underflow).
+TYPED_TEST(IntersectionLinear, FarExponentsMatchTheOracle) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for_each_pair<T>([&]<class A, class B>() {
+    SCOPED_TRACE(type_name<A>() + "-" + type_name<B>());
+    for (const int k : locus_test::far_scale_exponents<T>()) {
+      SCOPED_TRACE("scale 2^" + std::to_string(k));
+      for (int i = 0; i < 100; ++i) {
+        std::vector<Vec2<T>> pts(4);
+        if (i % 2 == 0) {
+          for (auto& p : pts) p = rng.vec<T, 2>(-1, 1);
+        } else {
+          const double angle = std::pow(10.0, -rng.uniform<double>(2.0, 6.0));
+          const Vec2<double> c{rng.uniform<double>(-1, 1), rng.uniform<double>(-1, 1)};
+          const Vec2<double> u{1.0, 0.0}, v{std::cos(angle), std::sin(angle)};
+          pts = {vec_cast<T>(c - 0.4 * u), vec_cast<T>(c + 0.7 * u), vec_cast<T>(c - 0.6 * v),
+                 vec_cast<T>(c + 0.3 * v)};
+        }
+        const std::vector<Vec2<T>> s = locus_test::scaled(pts, k);
+        check<T>(Make<A>::from(s[0], s[1]), Make<B>::from(s[2], s[3]));
+        if (::testing::Test::HasFatalFailure()) return;
+      }
+    }
+  });
 }
 
 }  // namespace

@@ -18,7 +18,8 @@
 // 6 eps max(|X|inf, m) / |direction|inf of the exact ones, clamped to the domain.
 // Degenerate: a zero-length segment or a zero direction acts as the point p0 / origin
 // (parameter 0). Any NaN or infinite coordinate gives kind empty (intersects false).
-// Range: exact for coordinates whose products stay inside the double range (predicates.hpp).
+// Range: every finite input (far from 1 the input is rescaled by a power of two); a crossing
+// of nearly parallel lines beyond the largest double has infinite coordinates.
 // Cost: a few exact-sign filters; a constructed crossing adds four double-double determinants.
 
 #include <locus/core/scalar.hpp>

@@ -211,10 +211,37 @@ template <bool Construct>
   return r;
 }
 
+/// The binary exponent of the largest |coordinate| when it lies outside [2^-400, 2^400] (where
+/// products of coordinates would underflow or overflow), else 0.
+[[nodiscard]] inline int range_exponent(const Lin& A, const Lin& B) noexcept {
+  const double m = std::max(
+      {max_abs(A.a), max_abs(A.b), max_abs(A.o), max_abs(B.a), max_abs(B.b), max_abs(B.o)});
+  return m > 0x1p400 || (m > 0.0 && m < 0x1p-400) ? std::ilogb(m) : 0;
+}
+[[nodiscard]] inline Lin scaled(const Lin& l, int e) noexcept {
+  const auto s = [e](const V& v) noexcept { return V{std::ldexp(v.x, e), std::ldexp(v.y, e)}; };
+  return {s(l.a), s(l.b), s(l.o), l.lo, l.hi};
+}
+
+template <bool Construct>
+[[nodiscard]] inline Result intersect_in_range(const Lin& A, const Lin& B) noexcept;
+
 template <bool Construct>
 [[nodiscard]] inline Result intersect(const Lin& A, const Lin& B) noexcept {
+  if (!finite(A) || !finite(B)) return Result{};
+  // Far from 1 the input is scaled by a power of two (exact, and every answer is covariant), so
+  // no product of coordinates overflows or underflows.
+  if (const int e = range_exponent(A, B); e != 0) [[unlikely]] {
+    Result r = intersect_in_range<Construct>(scaled(A, -e), scaled(B, -e));
+    for (V& p : r.point) p = V{std::ldexp(p.x, e), std::ldexp(p.y, e)};
+    return r;
+  }
+  return intersect_in_range<Construct>(A, B);
+}
+
+template <bool Construct>
+[[nodiscard]] inline Result intersect_in_range(const Lin& A, const Lin& B) noexcept {
   Result r;
-  if (!finite(A) || !finite(B)) return r;
   const bool pa = A.a == A.b, pb = B.a == B.b;
   if (pa && pb) {
     if (A.o != B.o) return r;

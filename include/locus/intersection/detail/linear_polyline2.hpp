@@ -6,9 +6,10 @@
 // duplicates removed. Every position along the component is named exactly as the crossing of
 // the component's line with a line x0 x1 of input points: a transversal crossing by its edge, an
 // input point P (an overlap end, a crossing on a parallel edge) by the axis-parallel line through
-// P and (P.x, 2 P.y) or (2 P.x, P.y), whichever is not parallel to the component. Two positions
-// are compared by compare_crossing_params (core/crossing.hpp), exact, so a vertex met by two
-// edges is recognised as one point however it is rounded. docs/notes/intersection.md.
+// P and (P.x, 2 P.y) or (2 P.x, P.y) (halved instead of doubled above 1), whichever is not parallel
+// to the component. Two positions are compared by compare_crossing_params (core/crossing.hpp),
+// exact, so a vertex met by two edges is recognised as one point however it is rounded.
+// docs/notes/intersection.md.
 
 #include <locus/core/crossing.hpp>
 #include <locus/core/predicates.hpp>
@@ -44,8 +45,12 @@ struct Piece {
 /// A line through p that crosses the component's line (not parallel to it), named by input-exact
 /// points: x = p.x when the component is not vertical, else y = p.y.
 [[nodiscard]] inline Key through(const Lin& l, const V& p) noexcept {
-  if (l.a.x != l.b.x) return {p, V{p.x, p.y != 0.0 ? 2.0 * p.y : 1.0}};
-  return {p, V{p.x != 0.0 ? 2.0 * p.x : 1.0, p.y}};
+  // Halving or doubling is exact and moves the second point off p without overflow.
+  const auto other = [](double c) noexcept {
+    return c == 0.0 ? 1.0 : (std::abs(c) > 1.0 ? 0.5 * c : 2.0 * c);
+  };
+  if (l.a.x != l.b.x) return {p, V{p.x, other(p.y)}};
+  return {p, V{other(p.x), p.y}};
 }
 
 /// Sign of (position of k) - (position of j) along the component.
