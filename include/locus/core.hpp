@@ -9,6 +9,7 @@
 #include <locus/core/angle.hpp>
 #include <locus/core/barycentric.hpp>
 #include <locus/core/basis.hpp>
+#include <locus/core/crossing.hpp>
 #include <locus/core/error_free.hpp>
 #include <locus/core/exact_sum.hpp>
 #include <locus/core/frame.hpp>

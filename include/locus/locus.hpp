@@ -13,6 +13,7 @@
 #include <locus/distance.hpp>
 #include <locus/fit.hpp>
 #include <locus/hull.hpp>
+#include <locus/intersection.hpp>
 #include <locus/io.hpp>
 #include <locus/measure.hpp>
 #include <locus/numeric.hpp>

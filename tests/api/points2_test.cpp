@@ -23,6 +23,9 @@
 #include <locus/fit/quadratic_fit.hpp>
 #include <locus/fit/sphere_fit.hpp>
 #include <locus/hull/hull2.hpp>
+#include <locus/intersection/line_polyline.hpp>
+#include <locus/intersection/ray_polyline.hpp>
+#include <locus/intersection/segment_polyline.hpp>
 #include <locus/io/svg.hpp>
 #include <locus/primitives/aligned_box.hpp>
 #include <locus/primitives/polygon.hpp>
@@ -198,6 +201,19 @@ TYPED_TEST(PointRange2Test, PolygonsPolylinesAndContainment) {
     const auto f = distance_to_polyline(Line<T, 2>{q, d}, p, true);
     return digest(a.sqr_distance, a.closest, b.sqr_distance, b.closest, b.param_b, c.sqr_distance,
                   c.closest, e.sqr_distance, e.param_a, f.sqr_distance, f.closest);
+  });
+  expect_same(poly, "intersection with polygon and polylines", [&](const auto& p) {
+    std::vector<double> out;
+    const auto add = [&out](const PolylineIntersection2<T>& r) {
+      out.push_back(double(static_cast<int>(r.status)));
+      for (const auto& c : r.crossings)
+        out.insert(out.end(), {double(c.count), double(c.edge), double(c.point[0].x),
+                               double(c.point[0].y), double(c.param_a[0]), double(c.param_b[0])});
+    };
+    add(intersection(Line<T, 2>{q, d}, p, true));
+    add(intersection(Ray<T, 2>{q, d}, p, false));
+    add(intersection(Segment<T, 2>{q, q + d}, p, true));
+    return digest(out);
   });
   expect_same(poly, "svg", [](const auto& p) {
     SvgWriter svg;

@@ -9,6 +9,7 @@
 #include <locus/distance.hpp>
 #include <locus/fit.hpp>
 #include <locus/hull.hpp>
+#include <locus/intersection.hpp>
 #include <locus/io.hpp>
 #include <locus/locus.hpp>
 #include <locus/measure.hpp>
@@ -31,7 +32,9 @@ TEST(Umbrella, EveryAreaIsReachableThroughItsUmbrella) {
   EXPECT_EQ(circle.status, Status::ok);
   EXPECT_NEAR(circle.circle.radius, 0.7071067811865476, 1e-15);
   const Segment<double, 2> seg{{0, 2}, {1, 2}};
-  EXPECT_DOUBLE_EQ(distance(Vec2d{0, 0}, seg).distance, 2.0);         // distance, primitives
+  EXPECT_DOUBLE_EQ(distance(Vec2d{0, 0}, seg).distance, 2.0);  // distance, primitives
+  EXPECT_EQ(intersection(seg, Segment<double, 2>{{0.5, 0}, {0.5, 3}}).point[0],
+            (Vec2d{0.5, 2}));                                         // intersection
   const auto roots = real_roots(Polynomial<double>{-2.0, 0.0, 1.0});  // numeric
   ASSERT_EQ(roots.roots.size(), 2u);
   EXPECT_DOUBLE_EQ(roots.roots[1].value * roots.roots[1].value, 2.0);
