@@ -15,5 +15,6 @@
 #include <locus/hull.hpp>
 #include <locus/io.hpp>
 #include <locus/measure.hpp>
+#include <locus/mesh.hpp>
 #include <locus/numeric.hpp>
 #include <locus/primitives.hpp>
