@@ -94,8 +94,16 @@ Parsed<T> read_off(std::string_view text) {
            "vertex count " + std::to_string(nv) + " exceeds 2^32 - 1");
     return p;
   }
-  // Each vertex line takes at least 6 bytes ("0 0 0\n"), each face line 8 ("3 0 0 0\n"): never
-  // reserve more than the rest of the text could hold.
+  // A face line takes at least 8 bytes ("3 0 1 2\n"; the last maybe without its newline), a
+  // vertex line 6 ("0 0 0\n"): a face count beyond that is refused, and nothing is reserved
+  // beyond what the rest of the text could hold.
+  const std::uint64_t left = lines.remaining();
+  if (nf > (left + 1) / 8) {
+    p.fail(Status::parse_error, lines.line_number(), lines.line_start(),
+           std::to_string(nf) + " faces cannot fit in the remaining " + std::to_string(left) +
+               " bytes");
+    return p;
+  }
   m.vertices.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(nv, lines.remaining() / 6)));
   for (std::uint64_t i = 0; i < nv; ++i) {
     if (!next_content()) {

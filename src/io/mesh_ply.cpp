@@ -133,8 +133,11 @@ class Tokens {
     }
     const std::size_t b = pos_;
     while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '\n') ++pos_;
+    if (pos_ > b) last_line_ = line_;
     return text_.substr(b, pos_ - b);
   }
+  /// The line of the last token returned (for errors at the end of the text).
+  [[nodiscard]] std::size_t last_line() const noexcept { return last_line_; }
   [[nodiscard]] std::size_t line() const noexcept { return line_; }
   [[nodiscard]] std::size_t pos() const noexcept { return pos_; }
   [[nodiscard]] std::size_t remaining() const noexcept { return text_.size() - pos_; }
@@ -143,6 +146,7 @@ class Tokens {
   std::string_view text_;
   std::size_t pos_;
   std::size_t line_;
+  std::size_t last_line_ = line_;
 };
 
 }  // namespace
@@ -296,7 +300,7 @@ Parsed<T> read_ply(std::string_view bytes) {
       if (e.props.empty()) continue;
       const std::uint64_t k = e.props.size();
       if (e.count > (tok.remaining() + 1) / (2 * k)) {
-        p.fail(Status::parse_error, tok.line(), tok.pos(),
+        p.fail(Status::parse_error, e.line, tok.pos(),
                "element '" + e.name + "' announces " + std::to_string(e.count) +
                    " records, more than the remaining " + std::to_string(tok.remaining()) +
                    " bytes can hold");
@@ -345,7 +349,7 @@ Parsed<T> read_ply(std::string_view bytes) {
           for (std::uint64_t i = 0; i < n; ++i) {
             const std::string_view it = tok.next();
             if (it.empty()) {
-              p.fail(Status::parse_error, tok.line(), tok.pos(),
+              p.fail(Status::parse_error, tok.last_line(), tok.pos(),
                      "unexpected end of file in a list of " + std::to_string(n) + " items");
               return p;
             }
