@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <system_error>
 
 namespace locus {
 
@@ -93,18 +94,20 @@ MeshReadResult<T> read_mesh(const std::filesystem::path& path, MeshFormat format
       return r;
     }
   }
-  std::ifstream in(path, std::ios::binary);
+  // The size comes from the file system, not from seeking: a directory or a device would report
+  // a meaningless length.
+  std::error_code ec;
+  const bool regular = std::filesystem::is_regular_file(path, ec);
+  const std::uintmax_t size = regular ? std::filesystem::file_size(path, ec) : 0;
   std::string bytes;
-  if (in) {
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    in.seekg(0, std::ios::beg);
-    if (size >= 0) {
-      bytes.resize(static_cast<std::size_t>(size));
-      in.read(bytes.data(), size);
-    }
+  bool read = false;
+  if (regular && !ec) {
+    std::ifstream in(path, std::ios::binary);
+    bytes.resize(static_cast<std::size_t>(size));
+    read = in && in.read(bytes.data(), static_cast<std::streamsize>(size)) &&
+           in.gcount() == static_cast<std::streamsize>(size);
   }
-  if (!in) {
+  if (!read) {
     r.status = Status::io_error;
     r.message = name + ": cannot read the file";
     return r;

@@ -208,6 +208,12 @@ TYPED_TEST(MeshIoTest, FilesByExtension) {
   EXPECT_EQ(missing.status, Status::io_error);
   EXPECT_NE(missing.message.find("missing.obj"), std::string::npos);
   EXPECT_EQ(locus::write_mesh(dir / "no_such_dir" / "x.obj", m).status, Status::io_error);
+  std::filesystem::create_directories(dir / "dir.obj");
+  EXPECT_EQ(locus::read_mesh<T>(dir / "dir.obj").status, Status::io_error);
+  { std::ofstream empty(dir / "empty.obj"); }
+  const auto e = locus::read_mesh<T>(dir / "empty.obj");
+  EXPECT_EQ(e.status, Status::ok) << e.message;
+  EXPECT_EQ(locus::read_mesh<T>(dir / "empty.obj", MeshFormat::ply).status, Status::parse_error);
   std::filesystem::remove_all(dir);
 }
 
