@@ -14,6 +14,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -298,6 +299,53 @@ TYPED_TEST(MeshIoTest, ObjSyntaxVariants) {
   const auto e = parse<T>("", MeshFormat::obj);
   EXPECT_EQ(e.status, Status::ok);
   EXPECT_TRUE(e.mesh.vertices.empty());
+}
+
+// OBJ files written here with every corner form and a random mix of absolute and relative
+// indices, vertices interleaved with faces (relative indices count only the vertices above):
+// the reader must give back the mesh they were written from.
+TYPED_TEST(MeshIoTest, ObjRelativeAndAbsoluteIndicesAgree) {
+  using T = TypeParam;
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 30; ++trial) {
+    const PolygonMesh<T> m = random_mesh<T>(rng, rng.uniform_int(3, 40), rng.uniform_int(1, 30));
+    std::string text;
+    std::size_t written = 0;  // vertices written so far
+    for (std::size_t f = 0; f < locus::face_count(m); ++f) {
+      const auto fv = locus::face(m, f);
+      const std::uint32_t need = *std::max_element(fv.begin(), fv.end()) + 1;
+      for (; written < need; ++written) {
+        const auto& v = m.vertices[written];
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\nvt 0 0\nvn 0 0 1\n", double(v.x),
+                      double(v.y), double(v.z));
+        text += buf;
+      }
+      text += rng.uniform_int(0, 1) ? "f" : "f ";
+      for (const std::uint32_t i : fv) {
+        const bool relative = rng.uniform_int(0, 1) != 0;
+        const std::string idx = relative ? std::to_string(std::int64_t(i) - std::int64_t(written))
+                                         : std::to_string(i + 1);
+        const std::string forms[] = {idx, idx + "/" + idx, idx + "//" + idx,
+                                     idx + "/" + idx + "/" + idx};
+        text += " " + forms[rng.uniform_int(0, 3)];
+      }
+      text += rng.uniform_int(0, 1) ? "\n" : "\r\n";
+    }
+    for (; written < m.vertices.size(); ++written) {
+      const auto& v = m.vertices[written];
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", double(v.x), double(v.y),
+                    double(v.z));
+      text += buf;
+    }
+    // Read through the byte-span overload.
+    const auto r = locus::parse_mesh<T>(std::as_bytes(std::span(text.data(), text.size())),
+                                        MeshFormat::obj, "mixed.obj");
+    ASSERT_EQ(r.status, Status::ok) << r.message;
+    expect_same_mesh(m, r.mesh);  // %.17g reads back exactly in float and double
+  }
 }
 
 TYPED_TEST(MeshIoTest, OffSyntaxVariants) {
