@@ -21,3 +21,5 @@ LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build)
 # Test and benchmark dependencies: GoogleTest, GMP rationals (exact oracle), Google Benchmark,
 # Eigen (test/benchmark oracle for the numerics).
 LOCUS_TEST_PACKAGES=(libgtest-dev libgmp-dev libbenchmark-dev libeigen3-dev)
+# The fuzz step of scripts/test only: clang with libFuzzer's runtime (-fsanitize=fuzzer).
+LOCUS_FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)

@@ -16,6 +16,7 @@
 #include <locus/intersection.hpp>
 #include <locus/io.hpp>
 #include <locus/measure.hpp>
+#include <locus/mesh.hpp>
 #include <locus/numeric.hpp>
 #include <locus/primitives.hpp>
 #include <locus/triangulate.hpp>
