@@ -191,11 +191,15 @@ Minimum1<T> minimize_brent_ref(FunctionRef<T(T)> f, const Bracket<T>& br,
   return brent_from_bracket(f, br, opt);
 }
 
-template <Real T>
-PowellRun<T> minimize_powell_ref(FunctionRef<T(const T*)> f, int n, T* x, T* work,
-                                 const PowellOptions<T>& opt) noexcept {
+namespace {
+
+// Powell's method in dimension NC (0: the run-time n): the common small dimensions get their
+// own instantiation so that the per-coordinate loops unroll as they did inline.
+template <class T, std::size_t NC>
+PowellRun<T> powell_impl(FunctionRef<T(const T*)> f, int n, T* x, T* work,
+                         const PowellOptions<T>& opt) {
   PowellRun<T> out;
-  const auto un = static_cast<std::size_t>(n);
+  const std::size_t un = NC > 0 ? NC : static_cast<std::size_t>(n);
   bool finite = is_finite(opt.initial_step);
   for (std::size_t k = 0; k < un; ++k) finite = finite && is_finite(x[k]);
   if (!finite) {
@@ -294,6 +298,25 @@ PowellRun<T> minimize_powell_ref(FunctionRef<T(const T*)> f, int n, T* x, T* wor
   out.evaluations = evals;
   out.status = converged ? Status::ok : Status::limit_exceeded;
   return out;
+}
+
+}  // namespace
+
+template <Real T>
+PowellRun<T> minimize_powell_ref(FunctionRef<T(const T*)> f, int n, T* x, T* work,
+                                 const PowellOptions<T>& opt) noexcept {
+  switch (n) {
+    case 1:
+      return powell_impl<T, 1>(f, n, x, work, opt);
+    case 2:
+      return powell_impl<T, 2>(f, n, x, work, opt);
+    case 3:
+      return powell_impl<T, 3>(f, n, x, work, opt);
+    case 4:
+      return powell_impl<T, 4>(f, n, x, work, opt);
+    default:
+      return powell_impl<T, 0>(f, n, x, work, opt);
+  }
 }
 
 #define LOCUS_MINIMIZE_INSTANTIATE(T)                                                 \
