@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Level sets and critical points (numeric/calculus.hpp; row num.calculus), compiled once for
-// float and double; the callables arrive as detail::FunctionRef. Methods: docs/notes/numeric.md.
+// float and double (the routines on a user's callable stay inline templates: measured faster).
+// Methods: docs/notes/numeric.md.
 
 #include <locus/numeric/calculus.hpp>
 
@@ -36,30 +37,6 @@ struct GridIndex {
     return horizontal_count() + static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny - 1);
   }
 };
-
-}  // namespace detail::calculus
-
-namespace detail::calculus {
-
-template <class T, class F>
-void absolute_extrema(CriticalPoints1<T>& r, F&& f, T a, T b) {
-  const auto consider = [&](T x, T v) {
-    if (!locus::is_finite(v)) return;
-    if (!locus::is_finite(r.min_value) || v < r.min_value) {
-      r.min_x = x;
-      r.min_value = v;
-    }
-    if (!locus::is_finite(r.max_value) || v > r.max_value) {
-      r.max_x = x;
-      r.max_value = v;
-    }
-  };
-  r.min_value = r.max_value = std::numeric_limits<T>::quiet_NaN();
-  r.min_x = r.max_x = a;
-  consider(a, f(a));
-  for (const auto& p : r.points) consider(p.x, p.value);
-  consider(b, f(b));
-}
 
 }  // namespace detail::calculus
 
@@ -188,142 +165,6 @@ LevelSet<T> level_set(const ScalarGrid<T>& grid, std::type_identity_t<T> level,
   return out;
 }
 
-namespace detail::calculus {
-template <Real T>
-CriticalPoints2<T> critical_points_2d_ref(FunctionRef<T(Vec2<T>)> f,
-                                          FunctionRef<Vec2<T>(Vec2<T>)> grad,
-                                          FunctionRef<Mat2<T>(Vec2<T>)> hess, const Vec2<T>& lo,
-                                          const Vec2<T>& hi, const CriticalPointOptions<T>& opt) {
-  using C = compute_t<T>;
-  CriticalPoints2<T> out;
-  out.status = Status::ok;
-  if (!is_finite(lo) || !is_finite(hi)) {
-    out.status = Status::non_finite_input;
-    return out;
-  }
-  if (!(lo.x < hi.x) || !(lo.y < hi.y) || opt.seeds_x < 1 || opt.seeds_y < 1 ||
-      opt.max_iterations < 1 || opt.max_points < 1) {
-    out.status = Status::invalid_input;
-    return out;
-  }
-  const C dx = C(hi.x) - C(lo.x), dy = C(hi.y) - C(lo.y);
-  const C diag = std::sqrt(dx * dx + dy * dy);
-  const C accept_step = std::sqrt(C(eps_v<T>)) * diag;
-  const C merge = C(opt.merge_tolerance) * diag;
-  struct Found {
-    Vec2<T> x;
-    C gnorm;
-  };
-  std::vector<Found> found;
-  C hscale = C(0);
-  bool any_finite = false, limit = false;
-  const auto gnorm_at = [&](const Vec2<T>& x, Vec2<C>& g) -> bool {
-    const Vec2<T> gt = grad(x);
-    g = {C(gt.x), C(gt.y)};
-    return is_finite(g);
-  };
-  for (int sj = 0; sj < opt.seeds_y; ++sj) {
-    for (int si = 0; si < opt.seeds_x; ++si) {
-      Vec2<T> x{static_cast<T>(C(lo.x) + dx * (C(si) + C(0.5)) / C(opt.seeds_x)),
-                static_cast<T>(C(lo.y) + dy * (C(sj) + C(0.5)) / C(opt.seeds_y))};
-      Vec2<C> g;
-      if (!gnorm_at(x, g)) continue;
-      C last_step = std::numeric_limits<C>::infinity();
-      bool ok = true;
-      for (int it = 0; it < opt.max_iterations; ++it) {
-        const Mat2<T> ht = hess(x);
-        if (!is_finite(ht)) {
-          ok = false;
-          break;
-        }
-        any_finite = true;
-        for (int r = 0; r < 2; ++r)
-          for (int c = 0; c < 2; ++c) hscale = std::max(hscale, C(std::abs(ht(r, c))));
-        const C off = (C(ht(0, 1)) + C(ht(1, 0))) / C(2);
-        const Mat2<C> hc = Mat2<C>::from_rows(Vec2<C>{C(ht(0, 0)), off}, Vec2<C>{off, C(ht(1, 1))});
-        const auto eig = eigen_symmetric(hc);
-        const C lmax = std::max(std::abs(eig.values[0]), std::abs(eig.values[1]));
-        Vec2<C> d{};
-        for (int k = 0; k < 2; ++k) {
-          const C lk = eig.values[k];
-          if (!(std::abs(lk) > C(1e-12) * lmax)) continue;
-          const Vec2<C> vk{eig.vectors(0, k), eig.vectors(1, k)};
-          d -= (dot(vk, g) / lk) * vk;
-        }
-        C len = length(d);
-        if (!(len > C(0))) {
-          last_step = C(0);
-          break;
-        }
-        if (len > diag) {
-          d *= diag / len;
-          len = diag;
-        }
-        const C g0 = length(g);
-        C alpha = C(1);
-        Vec2<T> xn{};
-        Vec2<C> gn{};
-        bool moved = false;
-        for (int bt = 0; bt < 30; ++bt) {
-          xn = {static_cast<T>(C(x.x) + alpha * d.x), static_cast<T>(C(x.y) + alpha * d.y)};
-          if (!gnorm_at(xn, gn)) {
-            alpha /= C(2);
-            continue;
-          }
-          // Close to convergence |g| is rounding noise: take the full Newton step.
-          if (length(gn) <= g0 || alpha * len <= accept_step) {
-            moved = true;
-            break;
-          }
-          alpha /= C(2);
-        }
-        if (!moved) break;
-        last_step = alpha * len;
-        const bool same = xn == x;
-        x = xn;
-        g = gn;
-        if (same ||
-            last_step <= C(4) * C(eps_v<T>) * (std::max(std::abs(C(x.x)), std::abs(C(x.y))) + diag))
-          break;
-      }
-      if (!ok || !(last_step <= accept_step)) continue;
-      if (C(x.x) < C(lo.x) - merge || C(x.x) > C(hi.x) + merge || C(x.y) < C(lo.y) - merge ||
-          C(x.y) > C(hi.y) + merge)
-        continue;
-      const C gl = length(g);
-      bool merged = false;
-      for (Found& fd : found) {
-        if (std::hypot(C(fd.x.x) - C(x.x), C(fd.x.y) - C(x.y)) <= merge) {
-          if (gl < fd.gnorm) fd = {x, gl};
-          merged = true;
-          break;
-        }
-      }
-      if (!merged) {
-        if (static_cast<int>(found.size()) >= opt.max_points)
-          limit = true;
-        else
-          found.push_back({x, gl});
-      }
-    }
-  }
-  if (!any_finite) {
-    out.status = Status::non_finite_input;
-    return out;
-  }
-  const T tau = static_cast<T>(C(opt.degenerate_tolerance) * hscale);
-  for (const Found& fd : found) {
-    const auto cls = classify_critical_point(hess(fd.x), tau);
-    out.points.push_back({fd.x, f(fd.x), cls.kind, cls.eigenvalues});
-  }
-  std::sort(out.points.begin(), out.points.end(), [](const auto& a, const auto& b) {
-    return a.point.x < b.point.x || (a.point.x == b.point.x && a.point.y < b.point.y);
-  });
-  if (limit) out.status = Status::limit_exceeded;
-  return out;
-}
-}  // namespace detail::calculus
-
 template <Real T>
 CriticalPoints2<T> critical_points_2d(const ScalarGrid<T>& grid,
                                       const CriticalPointOptions<T>& opt) {
@@ -445,118 +286,12 @@ CriticalPoints1<T> critical_points(const Polynomial<T>& p, T a, std::type_identi
   return r;
 }
 
-namespace detail::calculus {
-template <Real T>
-CriticalPoints1<T> critical_points_1d_ref(FunctionRef<T(T)> f, FunctionRef<T(T)> df, T a, T b,
-                                          const CriticalPoints1Options& opt) {
-  using C = compute_t<T>;
-  CriticalPoints1<T> r;
-  r.status = Status::ok;
-  r.min_value = r.max_value = std::numeric_limits<T>::quiet_NaN();
-  if (!locus::is_finite(a) || !locus::is_finite(b)) {
-    r.status = Status::non_finite_input;
-    return r;
-  }
-  if (a > b || opt.samples < 1 || opt.max_iterations < 1) {
-    r.status = Status::invalid_input;
-    return r;
-  }
-  const int n = opt.samples;
-  std::vector<T> xs(static_cast<std::size_t>(n) + 1);
-  std::vector<C> ds(static_cast<std::size_t>(n) + 1);
-  bool nonfinite = false, limit = false;
-  for (int i = 0; i <= n; ++i) {
-    const T x = i == n ? b : static_cast<T>(C(a) + (C(b) - C(a)) * C(i) / C(n));
-    xs[static_cast<std::size_t>(i)] = x;
-    ds[static_cast<std::size_t>(i)] = C(df(x));
-    nonfinite = nonfinite || !locus::is_finite(ds[static_cast<std::size_t>(i)]);
-  }
-  const auto sgn = [](C v) { return v > C(0) ? 1 : (v < C(0) ? -1 : 0); };
-  for (int i = 0; i <= n; ++i) {
-    const std::size_t k = static_cast<std::size_t>(i);
-    const C d = ds[k];
-    if (!locus::is_finite(d)) continue;
-    if (d == C(0)) {
-      if (i == 0 || i == n) continue;  // an endpoint is an extremum candidate anyway
-      const C dl = ds[k - 1], dr = ds[k + 1];
-      if (!locus::is_finite(dl) || !locus::is_finite(dr)) continue;
-      CriticalKind kind = CriticalKind::inflection;
-      if (sgn(dl) < 0 && sgn(dr) > 0)
-        kind = CriticalKind::minimum;
-      else if (sgn(dl) > 0 && sgn(dr) < 0)
-        kind = CriticalKind::maximum;
-      r.points.push_back({xs[k], f(xs[k]), kind, 1});
-      continue;
-    }
-    if (i == n) continue;
-    const C dn = ds[k + 1];
-    if (!locus::is_finite(dn) || dn == C(0) || sgn(d) == sgn(dn)) continue;
-    // Illinois regula falsi with bisection whenever the secant point is not well inside.
-    C lo = C(xs[k]), hi = C(xs[k + 1]), flo = d, fhi = dn;
-    int side = 0;
-    T x = xs[k];
-    bool done = false;
-    for (int it = 0; it < opt.max_iterations; ++it) {
-      C m = (lo * fhi - hi * flo) / (fhi - flo);
-      if (!(m > lo && m < hi) || !locus::is_finite(m) || it % 4 == 3) m = (lo + hi) / C(2);
-      const T xm = static_cast<T>(m);
-      if (C(xm) <= lo || C(xm) >= hi) {
-        x = std::abs(flo) <= std::abs(fhi) ? static_cast<T>(lo) : static_cast<T>(hi);
-        done = true;
-        break;
-      }
-      const C fm = C(df(xm));
-      if (fm != fm) {
-        // f' undefined inside the bracket: report the point met, flag the status.
-        nonfinite = true;
-        x = xm;
-        done = true;
-        break;
-      }
-      if (fm == C(0)) {
-        x = xm;
-        done = true;
-        break;
-      }
-      if (sgn(fm) == sgn(flo)) {
-        lo = C(xm);
-        flo = fm;
-        if (side == -1) fhi /= C(2);
-        side = -1;
-      } else {
-        hi = C(xm);
-        fhi = fm;
-        if (side == 1) flo /= C(2);
-        side = 1;
-      }
-      x = static_cast<T>((lo + hi) / C(2));
-    }
-    if (!done) limit = true;
-    r.points.push_back({x, f(x), sgn(d) < 0 ? CriticalKind::minimum : CriticalKind::maximum, 1});
-  }
-  std::sort(r.points.begin(), r.points.end(),
-            [](const auto& p, const auto& q) { return p.x < q.x; });
-  detail::calculus::absolute_extrema(r, f, a, b);
-  if (nonfinite)
-    r.status = Status::non_finite_input;
-  else if (limit)
-    r.status = Status::limit_exceeded;
-  return r;
-}
-}  // namespace detail::calculus
-
-#define LOCUS_CALCULUS_INSTANTIATE(T)                                                        \
-  template LevelSet<T> level_set<T>(const ScalarGrid<T>&, std::type_identity_t<T>,           \
-                                    const LevelSetOptions&);                                 \
-  template CriticalPoints2<T> critical_points_2d<T>(const ScalarGrid<T>&,                    \
-                                                    const CriticalPointOptions<T>&);         \
-  template CriticalPoints1<T> critical_points<T>(const Polynomial<T>&, T,                    \
-                                                 std::type_identity_t<T>);                   \
-  template CriticalPoints2<T> detail::calculus::critical_points_2d_ref<T>(                   \
-      FunctionRef<T(Vec2<T>)>, FunctionRef<Vec2<T>(Vec2<T>)>, FunctionRef<Mat2<T>(Vec2<T>)>, \
-      const Vec2<T>&, const Vec2<T>&, const CriticalPointOptions<T>&);                       \
-  template CriticalPoints1<T> detail::calculus::critical_points_1d_ref<T>(                   \
-      FunctionRef<T(T)>, FunctionRef<T(T)>, T, T, const CriticalPoints1Options&);
+#define LOCUS_CALCULUS_INSTANTIATE(T)                                                \
+  template LevelSet<T> level_set<T>(const ScalarGrid<T>&, std::type_identity_t<T>,   \
+                                    const LevelSetOptions&);                         \
+  template CriticalPoints2<T> critical_points_2d<T>(const ScalarGrid<T>&,            \
+                                                    const CriticalPointOptions<T>&); \
+  template CriticalPoints1<T> critical_points<T>(const Polynomial<T>&, T, std::type_identity_t<T>);
 LOCUS_CALCULUS_INSTANTIATE(float)
 LOCUS_CALCULUS_INSTANTIATE(double)
 #undef LOCUS_CALCULUS_INSTANTIATE

@@ -32,12 +32,10 @@
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/numeric/decompose.hpp>
-#include <locus/numeric/detail/function_ref.hpp>
 #include <locus/numeric/eigen_sym.hpp>
 #include <locus/numeric/matrix.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -77,23 +75,149 @@ struct BrentOptions {
 };
 
 namespace detail {
-// The compiled bodies (src/numeric/minimize.cpp, float and double).
+
+// NaN counts as +infinity so that comparisons order it after every finite value.
 template <Real T>
-[[nodiscard]] Bracket<T> bracket_minimum_ref(FunctionRef<T(T)> f, T a, T b,
-                                             int max_evaluations) noexcept;
-template <Real T>
-[[nodiscard]] Minimum1<T> minimize_brent_ref(FunctionRef<T(T)> f, T lo, T hi,
-                                             const BrentOptions<T>& opt) noexcept;
-template <Real T>
-[[nodiscard]] Minimum1<T> minimize_brent_ref(FunctionRef<T(T)> f, const Bracket<T>& br,
-                                             const BrentOptions<T>& opt) noexcept;
+[[nodiscard]] inline T sanitize_value(T v) noexcept {
+  return v == v ? v : std::numeric_limits<T>::infinity();
+}
+
+inline constexpr double golden_ratio = 1.618033988749894848204586834365638;
+inline constexpr double golden_section = 0.381966011250105151795413165634362;  // 2 - phi
+
+// Brent's localmin on [a, b] starting from the point x (f(x) = fx) inside it.
+template <class T, class F>
+Minimum1<T> brent_core(F& f, T a, T b, T x, T fx, const BrentOptions<T>& opt, int evals) {
+  Minimum1<T> out;
+  out.status = Status::ok;
+  if (a > b) std::swap(a, b);
+  T w = x, v = x, fw = fx, fv = fx;
+  T d = T(0), e = T(0);  // the last step and the one before it
+  const T cgold = T(golden_section);
+  int it = 0;
+  bool converged = false;
+  for (; it < opt.max_iterations; ++it) {
+    const T xm = (a + b) / T(2);
+    const T tol1 = opt.rel_tolerance * std::abs(x) + opt.abs_tolerance;
+    const T tol2 = T(2) * tol1;
+    if (std::abs(x - xm) <= tol2 - (b - a) / T(2)) {
+      converged = true;
+      break;
+    }
+    bool golden = true;
+    if (std::abs(e) > tol1) {
+      // Parabola through (x, fx), (w, fw), (v, fv): its vertex is x + p / q.
+      const T r = (x - w) * (fx - fv);
+      T q = (x - v) * (fx - fw);
+      T p = (x - v) * q - (x - w) * r;
+      q = T(2) * (q - r);
+      if (q > T(0)) p = -p;
+      q = std::abs(q);
+      const T e_prev = e;
+      // Accept only a step that lands inside (a, b) and is less than half the step before
+      // last: this is what guarantees at least golden-section convergence.
+      if (std::abs(p) < std::abs(T(0.5) * q * e_prev) && p > q * (a - x) && p < q * (b - x) &&
+          is_finite(p / q)) {
+        e = d;
+        d = p / q;
+        const T u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = xm >= x ? tol1 : -tol1;
+        golden = false;
+      }
+    }
+    if (golden) {
+      e = x >= xm ? a - x : b - x;
+      d = cgold * e;
+    }
+    const T u = std::abs(d) >= tol1 ? x + d : x + (d >= T(0) ? tol1 : -tol1);
+    const T fu = sanitize_value(static_cast<T>(f(u)));
+    ++evals;
+    if (fu <= fx) {
+      if (u >= x)
+        a = x;
+      else
+        b = x;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
+    } else {
+      if (u < x)
+        a = u;
+      else
+        b = u;
+      if (fu <= fw || w == x) {
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u;
+        fv = fu;
+      }
+    }
+  }
+  out.x = x;
+  out.value = fx;
+  out.iterations = it;
+  out.evaluations = evals;
+  if (fx == std::numeric_limits<T>::infinity()) {  // every value seen was NaN or +inf
+    out.status = Status::non_finite_input;
+    out.value = std::numeric_limits<T>::quiet_NaN();
+  } else if (!converged) {
+    out.status = Status::limit_exceeded;
+  }
+  return out;
+}
+
 }  // namespace detail
 
 /// Finds a bracket of a minimum by golden-ratio expansion from a and b (a != b), going
 /// downhill. At most max_evaluations evaluations of f.
 template <class T, class F>
 [[nodiscard]] Bracket<T> bracket_minimum(F&& f, T a, T b, int max_evaluations = 64) noexcept {
-  return detail::bracket_minimum_ref<T>(f, a, b, max_evaluations);
+  Bracket<T> out;
+  out.status = Status::ok;
+  if (!is_finite(a) || !is_finite(b)) {
+    out.status = Status::non_finite_input;
+    return out;
+  }
+  if (a == b) b = a + (a == T(0) ? T(1) : std::abs(a) * T(1e-3));
+  T fa = detail::sanitize_value(static_cast<T>(f(a)));
+  T fb = detail::sanitize_value(static_cast<T>(f(b)));
+  int evals = 2;
+  if (!is_finite(fa) && !is_finite(fb)) {
+    out = {Status::non_finite_input, a, b, b, fa, fb, fb, evals};
+    return out;
+  }
+  if (fb > fa) {
+    std::swap(a, b);
+    std::swap(fa, fb);
+  }
+  T c = b + T(detail::golden_ratio) * (b - a);
+  T fc = detail::sanitize_value(static_cast<T>(f(c)));
+  ++evals;
+  while (!(fc > fb)) {
+    if (evals >= max_evaluations || !is_finite(c)) {
+      out = {Status::limit_exceeded, a, b, c, fa, fb, fc, evals};
+      return out;
+    }
+    if (fc == fb && fb == fa) {
+      // A plateau: every point of it is a minimiser; report it as found.
+      break;
+    }
+    a = b;
+    fa = fb;
+    b = c;
+    fb = fc;
+    c = b + T(detail::golden_ratio) * (b - a);
+    fc = detail::sanitize_value(static_cast<T>(f(c)));
+    ++evals;
+  }
+  out = {Status::ok, a, b, c, fa, fb, fc, evals};
+  return out;
 }
 
 /// Brent's minimisation of f on the interval [lo, hi] (a local minimum; the global one when f is
@@ -101,14 +225,32 @@ template <class T, class F>
 template <class T, class F>
 [[nodiscard]] Minimum1<T> minimize_brent(F&& f, T lo, T hi,
                                          const BrentOptions<T>& opt = {}) noexcept {
-  return detail::minimize_brent_ref<T>(f, lo, hi, opt);
+  if (!is_finite(lo) || !is_finite(hi)) {
+    Minimum1<T> out;
+    out.status = Status::ok;
+    out.status = Status::non_finite_input;
+    out.x = out.value = std::numeric_limits<T>::quiet_NaN();
+    return out;
+  }
+  if (lo > hi) std::swap(lo, hi);
+  const T x = lo + T(detail::golden_section) * (hi - lo);
+  const T fx = detail::sanitize_value(static_cast<T>(f(x)));
+  return detail::brent_core(f, lo, hi, x, fx, opt, 1);
 }
 
 /// Brent's minimisation from a bracket (bracket.b is the start point).
 template <class T, class F>
 [[nodiscard]] Minimum1<T> minimize_brent(F&& f, const Bracket<T>& br,
                                          const BrentOptions<T>& opt = {}) noexcept {
-  return detail::minimize_brent_ref<T>(f, br, opt);
+  if (br.status == Status::non_finite_input || !is_finite(br.a) || !is_finite(br.c)) {
+    Minimum1<T> out;
+    out.status = Status::ok;
+    out.status = Status::non_finite_input;
+    out.x = out.value = std::numeric_limits<T>::quiet_NaN();
+    return out;
+  }
+  return detail::brent_core(f, std::min(br.a, br.c), std::max(br.a, br.c), br.b, br.fb, opt,
+                            br.evaluations);
 }
 
 // ---- N dimensions --------------------------------------------------------------------------
@@ -136,39 +278,96 @@ struct PowellOptions {
   BrentOptions<T> line{};  ///< line-search options (t is in units of the direction's length)
 };
 
-namespace detail {
-template <Real T>
-struct PowellRun {
-  Status status = Status::empty_input;
-  T value{};
-  int iterations = 0;
-  int evaluations = 0;
-};
-// x: the n coordinates (start in, best point out); work: n * n + 3 n scalars.
-template <Real T>
-[[nodiscard]] PowellRun<T> minimize_powell_ref(FunctionRef<T(const T*)> f, int n, T* x, T* work,
-                                               const PowellOptions<T>& opt) noexcept;
-}  // namespace detail
-
 /// Powell's direction-set minimisation of f: Vec<T, N> -> T from x0 (a local minimum).
 template <class T, int N, class F>
 [[nodiscard]] MinimumN<T, N> minimize_powell(F&& f, const Vec<T, N>& x0,
                                              const PowellOptions<T>& opt = {}) noexcept {
-  std::array<T, N> x;
-  for (int i = 0; i < N; ++i) x[std::size_t(i)] = x0[i];
-  std::array<T, N * N + 3 * N> work;
-  const auto g = [&f](const T* p) {
-    Vec<T, N> v;
-    for (int i = 0; i < N; ++i) v[i] = p[i];
-    return static_cast<T>(f(v));
-  };
-  const detail::PowellRun<T> r = detail::minimize_powell_ref<T>(g, N, x.data(), work.data(), opt);
   MinimumN<T, N> out;
-  out.status = r.status;
-  for (int i = 0; i < N; ++i) out.x[i] = x[std::size_t(i)];
-  out.value = r.value;
-  out.iterations = r.iterations;
-  out.evaluations = r.evaluations;
+  out.status = Status::ok;
+  out.x = x0;
+  if (!is_finite(x0) || !is_finite(opt.initial_step)) {
+    out.status = Status::non_finite_input;
+    out.value = std::numeric_limits<T>::quiet_NaN();
+    return out;
+  }
+  Vec<T, N> dir[N];
+  for (int i = 0; i < N; ++i) dir[i] = opt.initial_step * unit_vec<T, N>(i);
+  Vec<T, N> x = x0;
+  T fx = detail::sanitize_value(static_cast<T>(f(x)));
+  int evals = 1;
+  if (!is_finite(fx)) {
+    out.status = Status::non_finite_input;
+    out.value = std::numeric_limits<T>::quiet_NaN();
+    out.evaluations = evals;
+    return out;
+  }
+  bool line_failed = false;
+  // Moves x to the minimum along d; returns the decrease of f.
+  auto line_search = [&](const Vec<T, N>& d) -> T {
+    auto g = [&](T t) { return f(x + t * d); };
+    const Bracket<T> br = bracket_minimum(g, T(0), T(1));
+    evals += br.evaluations;
+    if (br.status != Status::ok) {
+      line_failed = br.status == Status::limit_exceeded;
+      // Keep the best point seen while bracketing.
+      T best_t = T(0), best_f = fx;
+      if (br.fa < best_f) best_t = br.a, best_f = br.fa;
+      if (br.fb < best_f) best_t = br.b, best_f = br.fb;
+      if (br.fc < best_f && is_finite(br.c)) best_t = br.c, best_f = br.fc;
+      const T dec = fx - best_f;
+      x = x + best_t * d;
+      fx = best_f;
+      return dec;
+    }
+    Minimum1<T> m = minimize_brent(g, br, opt.line);
+    evals += m.evaluations - br.evaluations;
+    T t = m.x, ft = m.value;
+    if (!(ft < fx)) return T(0);  // no improvement: stay (also guards NaN)
+    const T dec = fx - ft;
+    x = x + t * d;
+    fx = ft;
+    return dec;
+  };
+  int it = 0;
+  bool converged = false;
+  for (; it < opt.max_iterations && evals < opt.max_evaluations && !line_failed; ++it) {
+    const Vec<T, N> x_start = x;
+    const T f_start = fx;
+    int big_index = 0;
+    T big_decrease = T(0);
+    for (int i = 0; i < N; ++i) {
+      const T dec = line_search(dir[i]);
+      if (dec > big_decrease) {
+        big_decrease = dec;
+        big_index = i;
+      }
+    }
+    if (T(2) * (f_start - fx) <=
+        opt.f_tolerance * (std::abs(f_start) + std::abs(fx)) + opt.f_abs_tolerance) {
+      converged = true;
+      break;
+    }
+    // Powell's test: adopt the net displacement as a new direction only if the extrapolated
+    // point is lower and the decrease was not dominated by one direction (which would make the
+    // set nearly dependent if that direction were dropped).
+    const Vec<T, N> disp = x - x_start;
+    const T f_ext = detail::sanitize_value(static_cast<T>(f(x + disp)));
+    ++evals;
+    if (f_ext < f_start) {
+      const T t1 = f_start - fx - big_decrease, t2 = f_start - f_ext;
+      const T lhs = T(2) * (f_start - T(2) * fx + f_ext) * t1 * t1;
+      if (lhs < big_decrease * t2 * t2) {
+        line_search(disp);
+        dir[big_index] = dir[N - 1];
+        dir[N - 1] = disp;
+      }
+    }
+  }
+  out.x = x;
+  out.value = fx;
+  out.iterations = it;
+  out.evaluations = evals;
+  out.status = converged ? Status::ok : Status::limit_exceeded;
   return out;
 }
 
