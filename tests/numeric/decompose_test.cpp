@@ -84,7 +84,7 @@ int independent_prefix(const MatX<T>& a) {
 
 }  // namespace
 
-// LU lives in core/linear_system.hpp (run-time sizes: lu_factor on a row-major span); it is
+// LU for run-time sizes is numeric/decompose.hpp's lu_factor on a row-major span; it is
 // checked here against Eigen as the peer oracle, next to the other factorisations.
 TYPED_TEST(DecomposeTest, LUReconstructsAndSolvesLikeEigen) {
   using T = TypeParam;

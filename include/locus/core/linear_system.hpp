@@ -6,10 +6,8 @@
 //   * solve_cramer(Mat2/Mat3, Vec) - closed form by Cramer's rule (det and adjugate of mat.hpp);
 //   * lu_factor / solve / determinant / inverse - Gaussian elimination with partial (row)
 //     pivoting, PA = LU, for compile-time N (Mat<T, N, N>, Vec<T, N>, Mat<T, N, K> for several
-//     right-hand sides) and run-time n (row-major std::span<const T> or std::vector<T>);
+//     right-hand sides); run-time n x n systems are numeric/decompose.hpp's (same contract);
 //   * rank - Gaussian elimination with complete pivoting (rows and columns), any R x C.
-// Run-time matrices are row-major, element (r, c) at a[r * cols + c]; several right-hand sides
-// are an n x k row-major block (column j is one right-hand side).
 //
 // `singular`: an exactly zero pivot (det == 0) or a non-finite solution; x is then zero and the
 // status degenerate_input (figure 2.3's "none" and "infinitely many" alike; rank() of A and
@@ -21,8 +19,8 @@
 //
 // Degenerate input: a NaN or infinite entry in A or b gives status non_finite_input, singular,
 // zero x, determinant NaN, rcond 0, and rank() returns -1. An empty system (n == 0) is ok with
-// an empty solution and determinant 1. Queries never throw; the run-time solvers allocate their
-// results (std::vector). Arithmetic is in T (no promotion of float).
+// an empty solution and determinant 1. Queries never throw and never allocate. Arithmetic is
+// in T (no promotion of float).
 // Cost: Cramer 2x2/3x3 O(1); factorisation n^3 / 3 multiply-adds; each extra right-hand side
 // n^2; condition estimate about 4 to 10 solves (n^2 each); inverse n^3; rank R C min(R, C).
 
@@ -36,9 +34,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
-#include <span>
 #include <utility>
-#include <vector>
 
 namespace locus {
 
@@ -73,19 +69,6 @@ struct Lu {
       Status::empty_input;  ///< ok, degenerate_input (exactly singular), non_finite_input
   Mat<T, N, N> lu;
   int perm[N];
-  T determinant;
-  T rcond;
-  bool singular;
-  bool near_singular;
-};
-
-/// A partial-pivoting factorisation of a run-time n x n matrix; layout as in Lu, row-major.
-template <Real T>
-struct LuDynamic {
-  Status status = Status::empty_input;
-  int n;
-  std::vector<T> lu;
-  std::vector<int> perm;
   T determinant;
   T rcond;
   bool singular;
@@ -433,144 +416,6 @@ template <class T, int R, int C>
   for (int r = 0; r < R; ++r)
     for (int c = 0; c < C; ++c) w[r * C + c] = a.a[r][c];
   return detail::rank_inplace(w, R, C, rank_tolerance);
-}
-
-// ---- run-time size -------------------------------------------------------------------------
-
-/// A negative tolerance argument of a run-time solver selects the documented default.
-template <Real T>
-inline constexpr T use_default_tolerance = T(-1);
-
-/// Factors the row-major n x n matrix a (a.size() == n * n). rcond_tolerance < 0 selects
-/// default_rcond_tolerance<T>(n).
-template <Real T>
-[[nodiscard]] inline LuDynamic<T> lu_factor(std::span<const T> a, int n,
-                                            T rcond_tolerance = use_default_tolerance<T>) {
-  LOCUS_ASSERT(n >= 0 && a.size() == static_cast<std::size_t>(n) * static_cast<std::size_t>(n),
-               "lu_factor: a must hold n * n entries");
-  if (rcond_tolerance < T(0)) rcond_tolerance = default_rcond_tolerance<T>(n);
-  LuDynamic<T> f{Status::ok,
-                 n,
-                 std::vector<T>(a.begin(), a.end()),
-                 std::vector<int>(static_cast<std::size_t>(n)),
-                 T(1),
-                 T(1),
-                 false,
-                 false};
-  std::vector<T> work(5 * static_cast<std::size_t>(n));
-  detail::factor_summary(f.lu.data(), n, f.perm.data(), work.data(), rcond_tolerance, f.status,
-                         f.determinant, f.rcond, f.singular, f.near_singular);
-  return f;
-}
-template <Real T>
-[[nodiscard]] inline LuDynamic<T> lu_factor(const std::vector<T>& a, int n,
-                                            T rcond_tolerance = use_default_tolerance<T>) {
-  return lu_factor(std::span<const T>(a), n, rcond_tolerance);
-}
-
-/// Solves with a factorisation for the n x nrhs row-major block b; returns the n x nrhs
-/// solution block (zeros when the factorisation is singular).
-template <Real T>
-[[nodiscard]] inline std::vector<T> solve(const LuDynamic<T>& f, std::span<const T> b,
-                                          int nrhs = 1) {
-  const int n = f.n;
-  LOCUS_ASSERT(
-      nrhs >= 0 && b.size() == static_cast<std::size_t>(n) * static_cast<std::size_t>(nrhs),
-      "solve: b must hold n * nrhs entries");
-  std::vector<T> x(static_cast<std::size_t>(n) * static_cast<std::size_t>(nrhs), T(0));
-  if (f.singular) return x;
-  std::vector<T> bc(static_cast<std::size_t>(n)), xc(static_cast<std::size_t>(n));
-  for (int k = 0; k < nrhs; ++k) {
-    for (int i = 0; i < n; ++i)
-      bc[static_cast<std::size_t>(i)] = b[static_cast<std::size_t>(i * nrhs + k)];
-    detail::lu_solve(f.lu.data(), f.perm.data(), n, bc.data(), xc.data());
-    for (int i = 0; i < n; ++i)
-      x[static_cast<std::size_t>(i * nrhs + k)] = xc[static_cast<std::size_t>(i)];
-  }
-  return x;
-}
-template <Real T>
-[[nodiscard]] inline std::vector<T> solve(const LuDynamic<T>& f, const std::vector<T>& b,
-                                          int nrhs = 1) {
-  return solve(f, std::span<const T>(b), nrhs);
-}
-
-/// Solves the row-major n x n system a X = b for nrhs right-hand sides (b is n x nrhs
-/// row-major) by Gaussian elimination with partial pivoting.
-template <Real T>
-[[nodiscard]] inline LinearSolution<T, std::vector<T>> solve(
-    std::span<const T> a, int n, std::span<const T> b, int nrhs = 1,
-    T rcond_tolerance = use_default_tolerance<T>) {
-  LOCUS_ASSERT(
-      nrhs >= 0 && b.size() == static_cast<std::size_t>(n) * static_cast<std::size_t>(nrhs),
-      "solve: b must hold n * nrhs entries");
-  const LuDynamic<T> f = lu_factor(a, n, rcond_tolerance);
-  LinearSolution<T, std::vector<T>> s{f.status, {},         f.determinant,
-                                      f.rcond,  f.singular, f.near_singular};
-  if (f.status == Status::ok && !detail::all_finite(b.data(), b.size())) {
-    s.status = Status::non_finite_input;
-    s.singular = s.near_singular = true;
-  }
-  if (s.singular) {
-    s.x.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(nrhs), T(0));
-    return s;
-  }
-  s.x = solve(f, b, nrhs);
-  if (!detail::all_finite(s.x.data(), s.x.size())) {
-    s.status = Status::degenerate_input;
-    s.x.assign(s.x.size(), T(0));
-    s.singular = s.near_singular = true;
-  }
-  return s;
-}
-template <Real T>
-[[nodiscard]] inline LinearSolution<T, std::vector<T>> solve(
-    const std::vector<T>& a, int n, const std::vector<T>& b, int nrhs = 1,
-    T rcond_tolerance = use_default_tolerance<T>) {
-  return solve(std::span<const T>(a), n, std::span<const T>(b), nrhs, rcond_tolerance);
-}
-
-/// Determinant of the row-major n x n matrix a by elimination (1 for n == 0, NaN if not finite).
-template <Real T>
-[[nodiscard]] inline T determinant(std::span<const T> a, int n) {
-  return lu_factor(a, n).determinant;
-}
-template <Real T>
-[[nodiscard]] inline T determinant(const std::vector<T>& a, int n) {
-  return determinant(std::span<const T>(a), n);
-}
-
-/// Inverse of the row-major n x n matrix a (row-major); std::nullopt when singular, not finite
-/// or overflowing.
-template <Real T>
-[[nodiscard]] inline std::optional<std::vector<T>> inverse(std::span<const T> a, int n) {
-  std::vector<T> id(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), T(0));
-  for (int i = 0; i < n; ++i) id[static_cast<std::size_t>(i * n + i)] = T(1);
-  auto s = solve(a, n, std::span<const T>(id), n);
-  if (s.singular) return std::nullopt;
-  return std::move(s.x);
-}
-template <Real T>
-[[nodiscard]] inline std::optional<std::vector<T>> inverse(const std::vector<T>& a, int n) {
-  return inverse(std::span<const T>(a), n);
-}
-
-/// Numerical rank of the row-major rows x cols matrix a (complete pivoting; see top comment).
-/// rank_tolerance < 0 selects default_rank_tolerance<T>(rows, cols); -1 for non-finite input.
-template <Real T>
-[[nodiscard]] inline int rank(std::span<const T> a, int rows, int cols,
-                              T rank_tolerance = use_default_tolerance<T>) {
-  LOCUS_ASSERT(rows >= 0 && cols >= 0 &&
-                   a.size() == static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols),
-               "rank: a must hold rows * cols entries");
-  if (rank_tolerance < T(0)) rank_tolerance = default_rank_tolerance<T>(rows, cols);
-  std::vector<T> w(a.begin(), a.end());
-  return detail::rank_inplace(w.data(), rows, cols, rank_tolerance);
-}
-template <Real T>
-[[nodiscard]] inline int rank(const std::vector<T>& a, int rows, int cols,
-                              T rank_tolerance = use_default_tolerance<T>) {
-  return rank(std::span<const T>(a), rows, cols, rank_tolerance);
 }
 
 }  // namespace locus

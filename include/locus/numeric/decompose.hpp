@@ -2,7 +2,10 @@
 #pragma once
 // Matrix decompositions on run-time sized matrices (row num.decomp; book appendix A).
 //
-//   (LU with partial pivoting for run-time sizes is core/linear_system.hpp's lu_factor.)
+//   lu_factor / solve / determinant / inverse / rank on a row-major n x n std::span or vector
+//                (element (r, c) at a[r * cols + c]; k right-hand sides are an n x k block):
+//                partial pivoting, with core/linear_system.hpp's contract (LinearSolution,
+//                rcond, singular); compiled once; results allocate (std::vector).
 //   qr(A)        A = Q R by Householder reflections (m >= n); Q is m x m orthogonal, R m x n upper.
 //                (numeric/least_squares.hpp solves with the same reflections, column-pivoted.)
 //   cholesky(A)  A = L L^T for symmetric positive definite A; L lower triangular.
@@ -19,12 +22,15 @@
 // Status::degenerate_input. The SVD's Jacobi iteration has a sweep budget (Status::limit_exceeded
 // past it). Cost: O(n^3) each; the SVD costs a few sweeps of O(m n^2).
 
+#include <locus/core/linear_system.hpp>
 #include <locus/core/status.hpp>
 #include <locus/numeric/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
+#include <span>
 #include <vector>
 
 namespace locus {
@@ -334,6 +340,69 @@ template <Real T>
       out.s(r, c) = T(s);
     }
   return out;
+}
+
+// ---- LU and rank of run-time n x n systems (compiled in src/numeric/lu.cpp) ---------------
+
+/// A partial-pivoting factorisation of a run-time n x n matrix; layout as in Lu, row-major.
+template <Real T>
+struct LuDynamic {
+  Status status = Status::empty_input;
+  int n;
+  std::vector<T> lu;
+  std::vector<int> perm;
+  T determinant;
+  T rcond;
+  bool singular;
+  bool near_singular;
+};
+
+template <Real T>
+inline constexpr T use_default_tolerance = T(-1);
+template <Real T>
+[[nodiscard]] LuDynamic<T> lu_factor(std::span<const T> a, int n,
+                                     T rcond_tolerance = use_default_tolerance<T>);
+template <Real T>
+[[nodiscard]] inline LuDynamic<T> lu_factor(const std::vector<T>& a, int n,
+                                            T rcond_tolerance = use_default_tolerance<T>) {
+  return lu_factor(std::span<const T>(a), n, rcond_tolerance);
+}
+template <Real T>
+[[nodiscard]] std::vector<T> solve(const LuDynamic<T>& f, std::span<const T> b, int nrhs = 1);
+template <Real T>
+[[nodiscard]] inline std::vector<T> solve(const LuDynamic<T>& f, const std::vector<T>& b,
+                                          int nrhs = 1) {
+  return solve(f, std::span<const T>(b), nrhs);
+}
+template <Real T>
+[[nodiscard]] LinearSolution<T, std::vector<T>> solve(std::span<const T> a, int n,
+                                                      std::span<const T> b, int nrhs = 1,
+                                                      T rcond_tolerance = use_default_tolerance<T>);
+template <Real T>
+[[nodiscard]] inline LinearSolution<T, std::vector<T>> solve(
+    const std::vector<T>& a, int n, const std::vector<T>& b, int nrhs = 1,
+    T rcond_tolerance = use_default_tolerance<T>) {
+  return solve(std::span<const T>(a), n, std::span<const T>(b), nrhs, rcond_tolerance);
+}
+template <Real T>
+[[nodiscard]] T determinant(std::span<const T> a, int n);
+template <Real T>
+[[nodiscard]] inline T determinant(const std::vector<T>& a, int n) {
+  return determinant(std::span<const T>(a), n);
+}
+template <Real T>
+[[nodiscard]] std::optional<std::vector<T>> inverse(std::span<const T> a, int n);
+template <Real T>
+[[nodiscard]] inline std::optional<std::vector<T>> inverse(const std::vector<T>& a, int n) {
+  return inverse(std::span<const T>(a), n);
+}
+template <Real T>
+[[nodiscard]] int rank(std::span<const T> a, int rows, int cols,
+                       T rank_tolerance = use_default_tolerance<T>);
+template <Real T>
+[[nodiscard]] inline int rank(const std::vector<T>& a, int rows, int cols,
+                              T rank_tolerance = use_default_tolerance<T>) {
+  return rank(std::span<const T>(a), rows, cols, rank_tolerance);
 }
 
 }  // namespace locus

@@ -41,7 +41,7 @@
 namespace locus {
 
 /// f(x, y) = sum_i coeff[i](y) x^i.
-template <Real T>
+template <Field T>
 struct BivariatePolynomial {
   std::vector<Polynomial<T>> coeff;
 
@@ -121,7 +121,7 @@ std::vector<std::vector<E>> sylvester(const std::vector<E>& f, int m, const std:
 }  // namespace detail
 
 /// Resultant of f and g with respect to x: a polynomial in y. Zero when either is zero.
-template <Real T>
+template <Field T>
 [[nodiscard]] Polynomial<T> resultant_x(const BivariatePolynomial<T>& f,
                                         const BivariatePolynomial<T>& g) {
   const int m = f.degree_x(), n = g.degree_x();
@@ -134,7 +134,7 @@ template <Real T>
 
 /// Resultant of two univariate polynomials (the Sylvester determinant). Zero when either is zero;
 /// for a non-zero constant f = c and deg g = n it is c^n.
-template <Real T>
+template <Field T>
 [[nodiscard]] T resultant(const Polynomial<T>& f, const Polynomial<T>& g) {
   const int m = f.degree(), n = g.degree();
   if (m < 0 || n < 0) return T(0);

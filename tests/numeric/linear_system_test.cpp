@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
-// Tests for core/linear_system.hpp (row core.linsys; figures 2.2, 2.3): Cramer's rule, Gaussian
-// elimination with partial pivoting (fixed and run-time size), determinant, inverse, rank,
-// near-singularity, against exact GMP rational arithmetic.
+// Tests for core/linear_system.hpp (fixed size) and the run-time solvers of numeric/decompose.hpp
+// (row core.linsys; figures 2.2, 2.3): Cramer's rule, Gaussian elimination with partial pivoting,
+// determinant, inverse, rank, near-singularity, against exact GMP rational arithmetic; the two
+// sizes are also checked against each other, so they live in one file.
 #include <locus/core/linear_system.hpp>
+#include <locus/numeric/decompose.hpp>
 
 #include "support/typed.hpp"
 
