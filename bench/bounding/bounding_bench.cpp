@@ -168,6 +168,62 @@ void BM_min_sphere_locus(benchmark::State& state) {
 }
 BENCHMARK(BM_min_sphere_locus)->Unit(benchmark::kMillisecond);
 
+// The same inputs scaled by 2^k (Arg k; exact): the time should not depend on the scale.
+template <int D>
+std::vector<locus::Vec<double, D>> scaled_input(int k) {
+  std::vector<locus::Vec<double, D>> p;
+  if constexpr (D == 2) {
+    p = disk_points();
+  } else {
+    p = cube_points();
+  }
+  for (auto& q : p)
+    for (int i = 0; i < D; ++i) q[i] = std::ldexp(q[i], k);
+  return p;
+}
+
+void BM_min_circle_locus_scaled(benchmark::State& state) {
+  const int k = static_cast<int>(state.range(0));
+  const auto pts = scaled_input<2>(k);
+  locus::MinCircle2<double> solver;
+  double r = 0;
+  for (auto _ : state) {
+    const auto res = solver.compute(pts);
+    r = res.circle.radius;
+    sink = r;
+  }
+  state.SetLabel("radius/2^k=" + std::to_string(std::ldexp(r, -k)));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+}
+BENCHMARK(BM_min_circle_locus_scaled)
+    ->Arg(-500)
+    ->Arg(-300)
+    ->Arg(0)
+    ->Arg(300)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_min_sphere_locus_scaled(benchmark::State& state) {
+  const int k = static_cast<int>(state.range(0));
+  const auto pts = scaled_input<3>(k);
+  locus::MinSphere3<double> solver;
+  double r = 0;
+  for (auto _ : state) {
+    const auto res = solver.compute(pts);
+    r = res.sphere.radius;
+    sink = r;
+  }
+  state.SetLabel("radius/2^k=" + std::to_string(std::ldexp(r, -k)));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+}
+BENCHMARK(BM_min_sphere_locus_scaled)
+    ->Arg(-500)
+    ->Arg(-300)
+    ->Arg(0)
+    ->Arg(300)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond);
+
 void BM_min_box_locus(benchmark::State& state, BoxCase kind) {
   const auto& pts = box_input(kind);
   double v = 0;

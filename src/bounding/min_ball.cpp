@@ -273,6 +273,30 @@ class Engine {
   bool exhausted_ = false;
 };
 
+// The power of two by which the input is scaled, exactly, before the search. Far from 1 (at
+// 2^-500) the predicates' filters underflow and the deep-inside shortcut (which needs r^2 above
+// 2^-900) is off, so every decision takes the exact path, about 200 times slower: such input is
+// brought to largest |coordinate| hi in [1, 2). Scaling up is always exact; scaling down stops
+// where the smallest nonzero |coordinate| would leave the normal range. Within [2^-256, 2^256]
+// the fast paths work as they are and the input is used unscaled (the decisions are exact and
+// the constructions scale-covariant, so the result is the same either way).
+template <class T, int D>
+double input_scale(std::span<const Vec<T, D>> pts, double hi) noexcept {
+  if (hi >= 0x1p-256 && hi <= 0x1p256) return 1.0;
+  const double f = normalising_scale(hi);
+  if (f >= 1.0) return f;
+  double lo = std::numeric_limits<double>::infinity();
+  for (const Vec<T, D>& p : pts)
+    for (int i = 0; i < D; ++i) {
+      const double a = std::abs(static_cast<double>(p[i]));
+      if (a > 0.0) lo = std::min(lo, a);
+    }
+  if (!(lo < std::numeric_limits<double>::infinity())) return f;
+  // lo * 2^j stays normal for j >= min_exponent - 1 - ilogb(lo).
+  const int floor_exp = std::numeric_limits<double>::min_exponent - 1 - std::ilogb(lo);
+  return floor_exp >= 0 ? 1.0 : std::max(f, std::ldexp(1.0, floor_exp));
+}
+
 struct Solved {
   Status status;
   int support_count;
@@ -284,7 +308,7 @@ struct Solved {
 // extreme points along a few fixed directions first (a heuristic: the first ball is then nearly
 // final; the result does not depend on it), and links them into the list head -> ... -> tail.
 template <class T, int D>
-void prepare(std::span<const Vec<T, D>> pts, std::span<const std::uint32_t> ids,
+void prepare(std::span<const Vec<T, D>> pts, double scale, std::span<const std::uint32_t> ids,
              const MinBallOptions& options, std::vector<std::uint32_t>& next,
              std::vector<std::uint32_t>& prev, std::vector<std::uint32_t>& order,
              std::vector<Vec<double, D>>& copy) {
@@ -301,7 +325,7 @@ void prepare(std::span<const Vec<T, D>> pts, std::span<const std::uint32_t> ids,
       std::swap(order[i], order[j]);
     }
   }
-  for (std::uint32_t i = 0; i < m; ++i) copy[i] = vec_cast<double>(pts[order[i]]);
+  for (std::uint32_t i = 0; i < m; ++i) copy[i] = vec_cast<double>(pts[order[i]]) * scale;
   std::uint32_t lo[kDirs<D>] = {}, hi[kDirs<D>] = {};
   extremes<D>(copy, lo, hi);
   std::uint32_t front = 0;
@@ -326,6 +350,14 @@ void prepare(std::span<const Vec<T, D>> pts, std::span<const std::uint32_t> ids,
   next[tail] = tail;
 }
 
+// The ball of the engine's support set, back in the input's units (division by a power of two).
+template <int D>
+void finish(const Engine<D>& engine, double scale, Vec<double, D>& center, double& radius) {
+  engine.ball(center, radius);
+  center = center / scale;
+  radius = radius / scale;
+}
+
 template <class T, int D>
 Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
              std::vector<std::uint32_t>& next, std::vector<std::uint32_t>& prev,
@@ -337,12 +369,23 @@ Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
     out.status = Status::invalid_input;
     return out;
   }
+  // One pass for the finiteness check and the largest |coordinate|, without early exit and
+  // with one accumulator per coordinate (independent chains: this pass is on the critical path
+  // of a search that costs a few ns a point).
+  double cmax[D] = {};
+  bool finite = true;
   for (const Vec<T, D>& p : pts)
-    if (!is_finite(p)) {
-      out.status = Status::non_finite_input;
-      return out;
+    for (int i = 0; i < D; ++i) {
+      const double a = std::abs(static_cast<double>(p[i]));
+      finite &= a <= std::numeric_limits<double>::max();
+      cmax[i] = a > cmax[i] ? a : cmax[i];
     }
+  if (!finite) {
+    out.status = Status::non_finite_input;
+    return out;
+  }
   const auto n = static_cast<std::uint32_t>(pts.size());
+  const double scale = input_scale(pts, *std::max_element(cmax, cmax + D));
   const std::uint64_t budget =
       options.max_tests != 0 ? options.max_tests : 1000u * std::uint64_t{n} + 1000000u;
   std::uint64_t tests = 0;
@@ -371,7 +414,7 @@ Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
       use_all = true;
       break;
     }
-    prepare<T, D>(pts, subset, options, next, prev, order, copy);
+    prepare<T, D>(pts, scale, subset, options, next, prev, order, copy);
     const auto m = static_cast<std::uint32_t>(subset.size());
     Engine<D> engine(copy, next, prev, budget - std::min(budget, tests));
     const bool ok = engine.run(m, m + 1);
@@ -381,20 +424,20 @@ Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
       out.tests = tests;
       out.support_count = engine.support_count();
       for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
-      engine.ball(center, radius);
+      finish(engine, scale, center, radius);
       return out;
     }
     extra.clear();
     for (std::uint32_t i = 0; i < n && extra.size() <= subset_limit; ++i) {
       if (++tests > budget) break;
-      if (engine.outside_point(vec_cast<double>(pts[i]))) extra.push_back(i);
+      if (engine.outside_point(vec_cast<double>(pts[i]) * scale)) extra.push_back(i);
     }
     if (extra.empty() && tests <= budget) {
       out.status = Status::ok;
       out.tests = tests;
       out.support_count = engine.support_count();
       for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
-      engine.ball(center, radius);
+      finish(engine, scale, center, radius);
       return out;
     }
     if (tests > budget) {
@@ -402,7 +445,7 @@ Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
       out.tests = tests;
       out.support_count = engine.support_count();
       for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
-      engine.ball(center, radius);
+      finish(engine, scale, center, radius);
       return out;
     }
     subset.insert(subset.end(), extra.begin(), extra.end());
@@ -410,13 +453,13 @@ Solved solve(std::span<const Vec<T, D>> pts, const MinBallOptions& options,
 
   subset.resize(n);
   for (std::uint32_t i = 0; i < n; ++i) subset[i] = i;
-  prepare<T, D>(pts, subset, options, next, prev, order, copy);
+  prepare<T, D>(pts, scale, subset, options, next, prev, order, copy);
   Engine<D> engine(copy, next, prev, budget - std::min(budget, tests));
   const bool ok = engine.run(n, n + 1);
   out.tests = tests + engine.tests();
   out.support_count = engine.support_count();
   for (int i = 0; i < out.support_count; ++i) out.support[i] = order[engine.support(i)];
-  engine.ball(center, radius);
+  finish(engine, scale, center, radius);
   out.status =
       ok ? Status::ok : (engine.exhausted() ? Status::limit_exceeded : Status::degenerate_input);
   return out;

@@ -498,269 +498,335 @@ void SvgWriter::add_polyline3(const std::vector<Vec3d>& pts, bool closed, const 
 
 // ---- emission ---------------------------------------------------------------------------------
 
-std::string SvgWriter::to_string() const {
-  const Mapping m = mapping();
-  const auto px = [&m](const Vec2d& p) -> Vec2d {
+namespace {
+
+using Item = SvgWriter::Item;
+
+// World to pixel coordinates (y flipped) under a mapping.
+struct PixelMap {
+  const SvgWriter::Mapping& m;
+  [[nodiscard]] Vec2d operator()(const Vec2d& p) const noexcept {
     return {(p.x - m.inner_lo.x) * m.scale + m.origin_px.x,
             (m.inner_hi.y - p.y) * m.scale + m.origin_px.y};
-  };
+  }
+};
 
+double marker_radius(const SvgStyle& st) noexcept {
+  return nonneg_finite(st.marker_size) ? st.marker_size : 3.0;
+}
+
+// The XML declaration and the opening <svg> tag with the canvas size.
+void write_document_open(std::string& out, const SvgWriter::Mapping& m) {
+  Element e;
+  e.raw("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"");
+  e.attr("width", m.width);
+  e.attr("height", m.height);
+  e.raw(" viewBox=\"0 0 ");
+  e.num(m.width);
+  e.raw(" ");
+  e.num(m.height);
+  e.raw("\">\n");
+  out += e.s;
+}
+
+void write_title(std::string& out, const SvgOptions& options) {
+  if (options.title.empty()) return;
+  out += "<title>";
+  append_escaped(out, options.title);
+  out += "</title>\n";
+}
+
+// A rectangle over the whole canvas in the background colour.
+void write_background(std::string& out, const SvgWriter::Mapping& m, const SvgOptions& options) {
+  if (options.background.empty() || options.background == "none") return;
+  Element e;
+  e.raw("<rect x=\"0\" y=\"0\"");
+  e.attr("width", m.width);
+  e.attr("height", m.height);
+  e.attr("fill", options.background);
+  e.raw("/>\n");
+  if (e.ok) out += e.s;
+}
+
+// A point as its marker (circle, square, triangle or cross) of radius marker_size.
+void write_point_marker(Element& e, const Item& it, const PixelMap& px) {
+  const SvgStyle& st = it.style;
+  const Vec2d p = px(it.pts[0][0]);
+  const double r = marker_radius(st);
+  switch (st.marker) {
+    case SvgMarker::circle:
+      e.raw("<circle");
+      e.attr("cx", p.x);
+      e.attr("cy", p.y);
+      e.attr("r", r);
+      style_attrs(e, st, solid_colour(st));
+      break;
+    case SvgMarker::square:
+      e.raw("<rect");
+      e.attr("x", p.x - r);
+      e.attr("y", p.y - r);
+      e.attr("width", 2 * r);
+      e.attr("height", 2 * r);
+      style_attrs(e, st, solid_colour(st));
+      break;
+    case SvgMarker::triangle:
+      e.raw("<polygon points=\"");
+      e.pt({p.x, p.y - 1.3 * r});
+      e.raw(" ");
+      e.pt({p.x - 1.15 * r, p.y + 0.7 * r});
+      e.raw(" ");
+      e.pt({p.x + 1.15 * r, p.y + 0.7 * r});
+      e.raw("\"");
+      style_attrs(e, st, solid_colour(st));
+      break;
+    case SvgMarker::cross:
+      e.raw("<path d=\"M");
+      e.pt({p.x - r, p.y - r});
+      e.raw(" L");
+      e.pt({p.x + r, p.y + r});
+      e.raw(" M");
+      e.pt({p.x - r, p.y + r});
+      e.raw(" L");
+      e.pt({p.x + r, p.y - r});
+      e.raw("\"");
+      style_attrs(e, st, "none");
+      break;
+  }
+  e.raw("/>\n");
+}
+
+// A segment as a <line>; a line or ray (stored as origin, direction) clipped to the view first,
+// and nothing when it misses the view.
+void write_segment_line_or_ray(Element& e, const Item& it, const SvgWriter::Mapping& m,
+                               const PixelMap& px) {
+  Vec2d a = it.pts[0][0], b = it.pts[0][1];
+  if (it.kind != Item::Kind::segment) {
+    const Vec2d p = a, d = b;
+    double t0 = it.kind == Item::Kind::ray ? 0.0 : -std::numeric_limits<double>::infinity();
+    double t1 = std::numeric_limits<double>::infinity();
+    if (!clip_param(p, d, m.lo, m.hi, t0, t1) || !is_finite(t0) || !is_finite(t1)) return;
+    a = p + t0 * d;
+    b = p + t1 * d;
+  }
+  const Vec2d pa = px(a), pb = px(b);
+  e.raw("<line");
+  e.attr("x1", pa.x);
+  e.attr("y1", pa.y);
+  e.attr("x2", pb.x);
+  e.attr("y2", pb.y);
+  style_attrs(e, it.style, "none");
+  e.raw("/>\n");
+}
+
+// An arrow as a group of its shaft (<line>) and head (<polygon>); a zero vector as a dot.
+void write_arrow(Element& e, const Item& it, const PixelMap& px) {
+  const SvgStyle& st = it.style;
+  const Vec2d pa = px(it.pts[0][0]), pb = px(it.pts[0][1]);
+  const Vec2d d = pb - pa;
+  const double len = length(d);
+  const std::string_view colour = st.stroke.empty() || st.stroke == "none"
+                                      ? std::string_view("black")
+                                      : std::string_view(st.stroke);
+  if (!(len > 0.0) || !is_finite(len)) {
+    e.raw("<circle");
+    e.attr("cx", pa.x);
+    e.attr("cy", pa.y);
+    e.attr("r", marker_radius(st));
+    style_attrs(e, st, colour, false);
+    e.raw("/>\n");
+    return;
+  }
+  const Vec2d u = d / len, v = perp(u);
+  const double head = std::min(len, 3.0 * marker_radius(st));
+  const Vec2d base = pb - head * u;
+  e.raw("<g>");
+  if (len > head) {
+    e.raw("<line");
+    e.attr("x1", pa.x);
+    e.attr("y1", pa.y);
+    e.attr("x2", base.x);
+    e.attr("y2", base.y);
+    style_attrs(e, st, "none");
+    e.raw("/>");
+  }
+  e.raw("<polygon points=\"");
+  e.pt(pb);
+  e.raw(" ");
+  e.pt(base + 0.4 * head * v);
+  e.raw(" ");
+  e.pt(base - 0.4 * head * v);
+  e.raw("\"");
+  SvgStyle hs = st;
+  hs.fill_opacity = st.opacity;
+  style_attrs(e, hs, colour, false);
+  e.raw("/></g>\n");
+}
+
+// A polyline as one <polyline> (or <polygon> when closed) per finite run, each dropped alone
+// when it holds a non-finite number.
+void write_polyline_runs(std::string& out, const Item& it, const PixelMap& px) {
+  const SvgStyle& st = it.style;
+  for (const auto& run : it.pts) {
+    Element r;
+    r.raw(it.closed ? "<polygon points=\"" : "<polyline points=\"");
+    for (std::size_t i = 0; i < run.size(); ++i) {
+      if (i) r.raw(" ");
+      r.pt(px(run[i]));
+    }
+    r.raw("\"");
+    style_attrs(r, st, it.closed ? std::string_view(st.fill) : std::string_view("none"));
+    r.raw("/>\n");
+    if (r.ok) out += r.s;
+  }
+}
+
+// A polygon with holes as one <path> of closed rings under the even-odd rule.
+void write_polygon_path(Element& e, const Item& it, const PixelMap& px) {
+  e.raw("<path d=\"");
+  for (std::size_t k = 0; k < it.pts.size(); ++k) {
+    const auto& ring = it.pts[k];
+    if (k) e.raw(" ");
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      e.raw(i ? " L" : "M");
+      e.pt(px(ring[i]));
+    }
+    e.raw(" Z");
+  }
+  e.raw("\" fill-rule=\"evenodd\"");
+  style_attrs(e, it.style, it.style.fill);
+  e.raw("/>\n");
+}
+
+void write_circle(Element& e, const Item& it, const SvgWriter::Mapping& m, const PixelMap& px) {
+  const Vec2d c = px(it.pts[0][0]);
+  e.raw("<circle");
+  e.attr("cx", c.x);
+  e.attr("cy", c.y);
+  e.attr("r", it.a * m.scale);
+  style_attrs(e, it.style, it.style.fill);
+  e.raw("/>\n");
+}
+
+// An ellipse as an axis-aligned <ellipse> rotated about its centre to its first axis.
+void write_ellipse(Element& e, const Item& it, const SvgWriter::Mapping& m, const PixelMap& px) {
+  const Vec2d c = px(it.pts[0][0]), u = it.pts[0][1];
+  // The y flip turns a counter-clockwise world angle into a clockwise pixel angle.
+  const double deg = -std::atan2(u.y, u.x) * (180.0 / kPi);
+  e.raw("<ellipse");
+  e.attr("cx", c.x);
+  e.attr("cy", c.y);
+  e.attr("rx", it.a * m.scale);
+  e.attr("ry", it.b * m.scale);
+  e.raw(" transform=\"rotate(");
+  e.num(deg);
+  e.raw(" ");
+  e.num(c.x);
+  e.raw(" ");
+  e.num(c.y);
+  e.raw(")\"");
+  style_attrs(e, it.style, it.style.fill);
+  e.raw("/>\n");
+}
+
+// A circular arc as a <path> of elliptical-arc commands (two half turns for a full circle).
+void write_arc_path(Element& e, const Item& it, const SvgWriter::Mapping& m, const PixelMap& px) {
+  const Vec2d c = it.pts[0][0];
+  const double r = it.a, a0 = it.b, span = it.c;
+  const double rp = r * m.scale;
+  auto at = [&](double t) { return px(c + r * Vec2d{std::cos(t), std::sin(t)}); };
+  e.raw("<path d=\"M");
+  e.pt(at(a0));
+  // Counter-clockwise in the world is sweep-flag 0 after the y flip.
+  if (span >= kTwoPi) {
+    for (int h = 1; h <= 2; ++h) {
+      e.raw(" A");
+      e.num(rp);
+      e.raw(",");
+      e.num(rp);
+      e.raw(" 0 0 0 ");
+      e.pt(at(a0 + h * kPi));
+    }
+  } else {
+    e.raw(" A");
+    e.num(rp);
+    e.raw(",");
+    e.num(rp);
+    e.raw(span > kPi ? " 0 1 0 " : " 0 0 0 ");
+    e.pt(at(a0 + span));
+  }
+  e.raw("\"");
+  style_attrs(e, it.style, it.style.fill);
+  e.raw("/>\n");
+}
+
+// A label as a <text> offset by (text_dx, text_dy) pixels, y up.
+void write_text(Element& e, const Item& it, const PixelMap& px) {
+  const SvgStyle& st = it.style;
+  const Vec2d p = px(it.pts[0][0]);
+  const double dx = is_finite(st.text_dx) ? st.text_dx : 0.0;
+  const double dy = is_finite(st.text_dy) ? st.text_dy : 0.0;
+  e.raw("<text");
+  e.attr("x", p.x + dx);
+  e.attr("y", p.y - dy);
+  e.attr("font-size", nonneg_finite(st.font_size) ? st.font_size : 14.0);
+  e.raw(" font-family=\"serif\"");
+  e.raw(st.anchor == SvgAnchor::start    ? " text-anchor=\"start\""
+        : st.anchor == SvgAnchor::middle ? " text-anchor=\"middle\""
+                                         : " text-anchor=\"end\"");
+  style_attrs(e, st, solid_colour(st), false);
+  e.raw(">");
+  append_escaped(e.s, it.str);
+  e.raw("</text>\n");
+}
+
+// One stored item; an element holding a non-finite number is dropped.
+void write_item(std::string& out, const Item& it, const SvgWriter::Mapping& m, const PixelMap& px) {
+  Element e;
+  switch (it.kind) {
+    case Item::Kind::point:
+      write_point_marker(e, it, px);
+      break;
+    case Item::Kind::segment:
+    case Item::Kind::line:
+    case Item::Kind::ray:
+      write_segment_line_or_ray(e, it, m, px);
+      break;
+    case Item::Kind::arrow:
+      write_arrow(e, it, px);
+      break;
+    case Item::Kind::polyline:
+      write_polyline_runs(out, it, px);
+      break;
+    case Item::Kind::polygon:
+      write_polygon_path(e, it, px);
+      break;
+    case Item::Kind::circle:
+      write_circle(e, it, m, px);
+      break;
+    case Item::Kind::ellipse:
+      write_ellipse(e, it, m, px);
+      break;
+    case Item::Kind::arc:
+      write_arc_path(e, it, m, px);
+      break;
+    case Item::Kind::text:
+      write_text(e, it, px);
+      break;
+  }
+  if (e.ok) out += e.s;
+}
+
+}  // namespace
+
+std::string SvgWriter::to_string() const {
+  const Mapping m = mapping();
+  const PixelMap px{m};
   std::string out;
   out.reserve(512 + items_.size() * 96);
-  {
-    Element e;
-    e.raw("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"");
-    e.attr("width", m.width);
-    e.attr("height", m.height);
-    e.raw(" viewBox=\"0 0 ");
-    e.num(m.width);
-    e.raw(" ");
-    e.num(m.height);
-    e.raw("\">\n");
-    out += e.s;
-  }
-  if (!options_.title.empty()) {
-    out += "<title>";
-    append_escaped(out, options_.title);
-    out += "</title>\n";
-  }
-  if (!options_.background.empty() && options_.background != "none") {
-    Element e;
-    e.raw("<rect x=\"0\" y=\"0\"");
-    e.attr("width", m.width);
-    e.attr("height", m.height);
-    e.attr("fill", options_.background);
-    e.raw("/>\n");
-    if (e.ok) out += e.s;
-  }
-
-  for (const Item& it : items_) {
-    Element e;
-    const SvgStyle& st = it.style;
-    switch (it.kind) {
-      case Item::Kind::point: {
-        const Vec2d p = px(it.pts[0][0]);
-        const double r = nonneg_finite(st.marker_size) ? st.marker_size : 3.0;
-        switch (st.marker) {
-          case SvgMarker::circle:
-            e.raw("<circle");
-            e.attr("cx", p.x);
-            e.attr("cy", p.y);
-            e.attr("r", r);
-            style_attrs(e, st, solid_colour(st));
-            break;
-          case SvgMarker::square:
-            e.raw("<rect");
-            e.attr("x", p.x - r);
-            e.attr("y", p.y - r);
-            e.attr("width", 2 * r);
-            e.attr("height", 2 * r);
-            style_attrs(e, st, solid_colour(st));
-            break;
-          case SvgMarker::triangle:
-            e.raw("<polygon points=\"");
-            e.pt({p.x, p.y - 1.3 * r});
-            e.raw(" ");
-            e.pt({p.x - 1.15 * r, p.y + 0.7 * r});
-            e.raw(" ");
-            e.pt({p.x + 1.15 * r, p.y + 0.7 * r});
-            e.raw("\"");
-            style_attrs(e, st, solid_colour(st));
-            break;
-          case SvgMarker::cross:
-            e.raw("<path d=\"M");
-            e.pt({p.x - r, p.y - r});
-            e.raw(" L");
-            e.pt({p.x + r, p.y + r});
-            e.raw(" M");
-            e.pt({p.x - r, p.y + r});
-            e.raw(" L");
-            e.pt({p.x + r, p.y - r});
-            e.raw("\"");
-            style_attrs(e, st, "none");
-            break;
-        }
-        e.raw("/>\n");
-        break;
-      }
-      case Item::Kind::segment:
-      case Item::Kind::line:
-      case Item::Kind::ray: {
-        Vec2d a = it.pts[0][0], b = it.pts[0][1];
-        if (it.kind != Item::Kind::segment) {
-          const Vec2d p = a, d = b;
-          double t0 = it.kind == Item::Kind::ray ? 0.0 : -std::numeric_limits<double>::infinity();
-          double t1 = std::numeric_limits<double>::infinity();
-          if (!clip_param(p, d, m.lo, m.hi, t0, t1) || !is_finite(t0) || !is_finite(t1)) break;
-          a = p + t0 * d;
-          b = p + t1 * d;
-        }
-        const Vec2d pa = px(a), pb = px(b);
-        e.raw("<line");
-        e.attr("x1", pa.x);
-        e.attr("y1", pa.y);
-        e.attr("x2", pb.x);
-        e.attr("y2", pb.y);
-        style_attrs(e, st, "none");
-        e.raw("/>\n");
-        break;
-      }
-      case Item::Kind::arrow: {
-        const Vec2d pa = px(it.pts[0][0]), pb = px(it.pts[0][1]);
-        const Vec2d d = pb - pa;
-        const double len = length(d);
-        const std::string_view colour = st.stroke.empty() || st.stroke == "none"
-                                            ? std::string_view("black")
-                                            : std::string_view(st.stroke);
-        if (!(len > 0.0) || !is_finite(len)) {
-          // A zero vector: a dot where it starts.
-          e.raw("<circle");
-          e.attr("cx", pa.x);
-          e.attr("cy", pa.y);
-          e.attr("r", nonneg_finite(st.marker_size) ? st.marker_size : 3.0);
-          style_attrs(e, st, colour, false);
-          e.raw("/>\n");
-          break;
-        }
-        const Vec2d u = d / len, v = perp(u);
-        const double head =
-            std::min(len, 3.0 * (nonneg_finite(st.marker_size) ? st.marker_size : 3.0));
-        const Vec2d base = pb - head * u;
-        e.raw("<g>");
-        if (len > head) {
-          e.raw("<line");
-          e.attr("x1", pa.x);
-          e.attr("y1", pa.y);
-          e.attr("x2", base.x);
-          e.attr("y2", base.y);
-          style_attrs(e, st, "none");
-          e.raw("/>");
-        }
-        e.raw("<polygon points=\"");
-        e.pt(pb);
-        e.raw(" ");
-        e.pt(base + 0.4 * head * v);
-        e.raw(" ");
-        e.pt(base - 0.4 * head * v);
-        e.raw("\"");
-        SvgStyle hs = st;
-        hs.fill_opacity = st.opacity;
-        style_attrs(e, hs, colour, false);
-        e.raw("/></g>\n");
-        break;
-      }
-      case Item::Kind::polyline: {
-        for (const auto& run : it.pts) {
-          Element r;
-          r.raw(it.closed ? "<polygon points=\"" : "<polyline points=\"");
-          for (std::size_t i = 0; i < run.size(); ++i) {
-            if (i) r.raw(" ");
-            r.pt(px(run[i]));
-          }
-          r.raw("\"");
-          style_attrs(r, st, it.closed ? std::string_view(st.fill) : std::string_view("none"));
-          r.raw("/>\n");
-          if (r.ok) out += r.s;
-        }
-        break;
-      }
-      case Item::Kind::polygon: {
-        e.raw("<path d=\"");
-        for (std::size_t k = 0; k < it.pts.size(); ++k) {
-          const auto& ring = it.pts[k];
-          if (k) e.raw(" ");
-          for (std::size_t i = 0; i < ring.size(); ++i) {
-            e.raw(i ? " L" : "M");
-            e.pt(px(ring[i]));
-          }
-          e.raw(" Z");
-        }
-        e.raw("\" fill-rule=\"evenodd\"");
-        style_attrs(e, st, st.fill);
-        e.raw("/>\n");
-        break;
-      }
-      case Item::Kind::circle: {
-        const Vec2d c = px(it.pts[0][0]);
-        e.raw("<circle");
-        e.attr("cx", c.x);
-        e.attr("cy", c.y);
-        e.attr("r", it.a * m.scale);
-        style_attrs(e, st, st.fill);
-        e.raw("/>\n");
-        break;
-      }
-      case Item::Kind::ellipse: {
-        const Vec2d c = px(it.pts[0][0]), u = it.pts[0][1];
-        // The y flip turns a counter-clockwise world angle into a clockwise pixel angle.
-        const double deg = -std::atan2(u.y, u.x) * (180.0 / kPi);
-        e.raw("<ellipse");
-        e.attr("cx", c.x);
-        e.attr("cy", c.y);
-        e.attr("rx", it.a * m.scale);
-        e.attr("ry", it.b * m.scale);
-        e.raw(" transform=\"rotate(");
-        e.num(deg);
-        e.raw(" ");
-        e.num(c.x);
-        e.raw(" ");
-        e.num(c.y);
-        e.raw(")\"");
-        style_attrs(e, st, st.fill);
-        e.raw("/>\n");
-        break;
-      }
-      case Item::Kind::arc: {
-        const Vec2d c = it.pts[0][0];
-        const double r = it.a, a0 = it.b, span = it.c;
-        const double rp = r * m.scale;
-        auto at = [&](double t) { return px(c + r * Vec2d{std::cos(t), std::sin(t)}); };
-        e.raw("<path d=\"M");
-        e.pt(at(a0));
-        // Counter-clockwise in the world is sweep-flag 0 after the y flip.
-        if (span >= kTwoPi) {
-          for (int h = 1; h <= 2; ++h) {
-            e.raw(" A");
-            e.num(rp);
-            e.raw(",");
-            e.num(rp);
-            e.raw(" 0 0 0 ");
-            e.pt(at(a0 + h * kPi));
-          }
-        } else {
-          e.raw(" A");
-          e.num(rp);
-          e.raw(",");
-          e.num(rp);
-          e.raw(span > kPi ? " 0 1 0 " : " 0 0 0 ");
-          e.pt(at(a0 + span));
-        }
-        e.raw("\"");
-        style_attrs(e, st, st.fill);
-        e.raw("/>\n");
-        break;
-      }
-      case Item::Kind::text: {
-        const Vec2d p = px(it.pts[0][0]);
-        const double dx = is_finite(st.text_dx) ? st.text_dx : 0.0;
-        const double dy = is_finite(st.text_dy) ? st.text_dy : 0.0;
-        e.raw("<text");
-        e.attr("x", p.x + dx);
-        e.attr("y", p.y - dy);
-        e.attr("font-size", nonneg_finite(st.font_size) ? st.font_size : 14.0);
-        e.raw(" font-family=\"serif\"");
-        e.raw(st.anchor == SvgAnchor::start    ? " text-anchor=\"start\""
-              : st.anchor == SvgAnchor::middle ? " text-anchor=\"middle\""
-                                               : " text-anchor=\"end\"");
-        style_attrs(e, st, solid_colour(st), false);
-        e.raw(">");
-        append_escaped(e.s, it.str);
-        e.raw("</text>\n");
-        break;
-      }
-    }
-    if (e.ok) out += e.s;
-  }
+  write_document_open(out, m);
+  write_title(out, options_);
+  write_background(out, m, options_);
+  for (const Item& it : items_) write_item(out, it, m, px);
   out += "</svg>\n";
   return out;
 }

@@ -127,6 +127,42 @@ TYPED_TEST(BoundingScale, MinSphereContainsInputAtExtremeScales) {
   }
 }
 
+// Huge points with a coordinate near the bottom of the range: the input is scaled down only as
+// far as keeps that coordinate exact, so the ball is still found and contains every point, and
+// its support is the one of the same points at scale 1 with that coordinate 0 (it decides
+// nothing: the points are in general position).
+TYPED_TEST(BoundingScale, MinBallWithHugeAndTinyCoordinates) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const int big = locus_test::far_scale_exponents<T>()[3];
+  const T tiny = std::numeric_limits<T>::denorm_min() * T(3);
+  for (int trial = 0; trial < 6; ++trial) {
+    auto p2 = grid_points<T, 2>(rng, 200);
+    auto p3 = grid_points<T, 3>(rng, 200);
+    auto q2 = scaled(p2, big);
+    auto q3 = scaled(p3, big);
+    q2[7].y = tiny;
+    q3[7].z = tiny;
+    p2[7].y = T(0);
+    p3[7].z = T(0);
+    const auto r2 = locus::min_circle<T>(q2);
+    const auto r3 = locus::min_sphere<T>(q3);
+    ASSERT_EQ(r2.status, Status::ok);
+    ASSERT_EQ(r3.status, Status::ok);
+    expect_ball_contains<T, 2>(scaled(q2, -big), big, r2.circle.center, r2.circle.radius);
+    expect_ball_contains<T, 3>(scaled(q3, -big), big, r3.sphere.center, r3.sphere.radius);
+    const auto z2 = locus::min_circle<T>(p2);
+    const auto z3 = locus::min_sphere<T>(p3);
+    ASSERT_EQ(r2.support_count, z2.support_count);
+    ASSERT_EQ(r3.support_count, z3.support_count);
+    for (int i = 0; i < r2.support_count; ++i)
+      EXPECT_EQ(r2.support[std::size_t(i)], z2.support[std::size_t(i)]);
+    for (int i = 0; i < r3.support_count; ++i)
+      EXPECT_EQ(r3.support[std::size_t(i)], z3.support[std::size_t(i)]);
+  }
+}
+
 TYPED_TEST(BoundingScale, MinCircleAndSphere) {
   using T = TypeParam;
   Rng rng;

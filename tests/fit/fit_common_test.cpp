@@ -118,17 +118,23 @@ void check_moments(Rng& rng, double offset, double spread, int n) {
       maxp = std::max(maxp, std::abs(double(q[c])));
       maxd = std::max(maxd, std::abs(double(q[c]) - mean[c].get_d()));
     }
+  // The moments are those of the points scaled by a power of two to max|coordinate| in [1, 2).
+  int ex = 0;
+  EXPECT_EQ(std::frexp(double(m.scale), &ex), 0.5);
+  EXPECT_GE(maxp * double(m.scale), 1.0);
+  EXPECT_LT(maxp * double(m.scale), 2.0);
   const double e = double(eps_v<C>);
   const double mean_tol = (n + 2) * e * maxp;
   const double cov_tol = 2 * (n + 4) * e * maxd * maxd + 4 * mean_tol * mean_tol;
   for (int r = 0; r < N; ++r) {
-    EXPECT_NEAR(double(m.mean[r]), mean[r].get_d(), mean_tol);
+    EXPECT_NEAR(double(m.unscale(m.mean[r])), mean[r].get_d(), mean_tol);
     for (int c = 0; c < N; ++c) {
       mpq_class cov = 0;
       for (const auto& q : p)
         cov += (mpq_class(double(q[r])) - mean[r]) * (mpq_class(double(q[c])) - mean[c]);
       cov /= n;
-      EXPECT_NEAR(double(m.covariance(r, c)), cov.get_d(), cov_tol) << r << "," << c;
+      EXPECT_NEAR(double(m.unscale(m.unscale(m.covariance(r, c)))), cov.get_d(), cov_tol)
+          << r << "," << c;
       EXPECT_EQ(m.covariance(r, c), m.covariance(c, r));  // exactly symmetric
     }
   }
@@ -147,8 +153,8 @@ TYPED_TEST(FitCommonTest, MomentsVsGmp) {
   // A single point: mean is the point, covariance zero.
   const std::vector<Vec2<T>> one{{T(3), T(-4)}};
   const auto m = detail::moments<compute_t<T>>(sp(one));
-  EXPECT_EQ(m.mean[0], 3);
-  EXPECT_EQ(m.mean[1], -4);
+  EXPECT_EQ(m.unscale(m.mean[0]), 3);
+  EXPECT_EQ(m.unscale(m.mean[1]), -4);
   for (int r = 0; r < 2; ++r)
     for (int c = 0; c < 2; ++c) EXPECT_EQ(m.covariance(r, c), 0);
 }

@@ -16,7 +16,9 @@
 #include <locus/fit/quadratic_fit.hpp>
 #include <locus/fit/sphere_fit.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "fit_test_util.hpp"
@@ -50,13 +52,15 @@ std::vector<Vec<T, N>> grid_points(Rng& rng, int n, F&& shape) {
   return pts;
 }
 
-// Check 8's exponents and the largest |k| that keeps second moments of the coordinates normal
-// (double +-499, float +-52): every fit forms them (covariances, normal equations, the
-// quadratics' coefficients of degree two), so that is where the fits work. (Beyond it, at
-// double +-1000, where lengths are still finite, every fit fails: its covariance overflows.)
+// Check 8's exponents, the largest |k| that keeps lengths normal and finite for values up to
+// 2^24 (double +-1000, float +-104) and the driver's far exponents (double +-900 and +-1000,
+// float +-100 and +-110): the fits work on the points scaled by a power of two (Moments), so
+// they hold over the whole finite range.
 template <class T>
 std::vector<int> exponents() {
-  return locus_test::covariant_exponents<T>(2);
+  std::vector<int> k = locus_test::covariant_exponents<T>(1);
+  for (const int e : locus_test::far_scale_exponents<T>()) k.push_back(e);
+  return k;
 }
 
 template <class T, int N>
@@ -230,8 +234,37 @@ std::vector<Covariant> unit_form(std::vector<double> q, std::vector<int> degree,
   return out;
 }
 
+// At any k: the unit coefficient vector of the fit to the input scaled by 2^k against the one
+// of the unscaled fit mapped to the scaled input (quadratic / 2^2k, linear / 2^k) and
+// renormalised in long double, whose exponent range holds 2^(+-2k); entries that fall out of
+// the range of T compare against 0. Absolute tolerance tol on the unit vector.
+void expect_unit_form_scaled(const std::vector<double>& base, const std::vector<int>& degree, int k,
+                             const std::vector<double>& got, Status status, double tol) {
+  SCOPED_TRACE("scaled by 2^" + std::to_string(k));
+  EXPECT_EQ(status, Status::ok);
+  std::vector<long double> q(base.size());
+  long double norm = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    q[i] = std::ldexp(static_cast<long double>(base[i]), -degree[i] * k);
+    norm = std::max(norm, std::abs(q[i]));
+  }
+  long double sum = 0;
+  std::size_t big = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    q[i] /= norm;
+    sum += q[i] * q[i];
+    if (std::abs(q[i]) > std::abs(q[big])) big = i;
+  }
+  const long double s = (q[big] < 0 ? -1.0L : 1.0L) / std::sqrt(sum);
+  for (std::size_t i = 0; i < q.size(); ++i)
+    EXPECT_NEAR(got[i], static_cast<double>(s * q[i]), tol) << "coefficient " << i;
+}
+
 TYPED_TEST(FitScale, QuadraticCurvesAndQuadrics) {
   using T = TypeParam;
+  if (std::numeric_limits<long double>::max_exponent <
+      4 * std::numeric_limits<double>::max_exponent)
+    GTEST_SKIP() << "the oracle needs a long double with a wider exponent range than double";
   Rng rng;
   SCOPED_TRACE(rng.trace());
   auto parabola = [](Rng& g) {
@@ -244,25 +277,44 @@ TYPED_TEST(FitScale, QuadraticCurvesAndQuadrics) {
            fit_test::gauss(g, 0.02) * Vec3<double>{1, 1, 1};
   };
   const double tol = 64.0 * double(locus::eps_v<T>);
+  auto curve = [](const locus::QuadraticCurveFit<T>& r) {
+    const auto& c = r.curve;
+    return std::vector<double>{c.a, c.b, c.c, c.d, c.e, c.f};
+  };
+  auto quadric = [](const locus::QuadricFit<T>& r) {  // the unit vector the fit normalises
+    const auto& q = r.quadric;
+    return std::vector<double>{
+        q.a(0, 0),       q.a(1, 1), q.a(2, 2), 2.0 * q.a(0, 1), 2.0 * q.a(0, 2),
+        2.0 * q.a(1, 2), q.b.x,     q.b.y,     q.b.z,           q.c};
+  };
+  const std::vector<int> deg2{2, 2, 2, 1, 1, 0}, deg3{2, 2, 2, 2, 2, 2, 1, 1, 1, 0};
   for (int trial = 0; trial < 4; ++trial) {
     const auto p2 = grid_points<T, 2>(rng, 40, parabola);
     const auto p3 = grid_points<T, 3>(rng, 80, ellipsoid);
+    // Where every coefficient of the unscaled form stays in range (|2k| within it).
     locus_test::expect_scale_covariant(
         [&](int k) {
           const auto r = locus::fit_quadratic_curve(scaled(p2, k));
-          const auto& c = r.curve;
-          return unit_form({c.a, c.b, c.c, c.d, c.e, c.f}, {2, 2, 2, 1, 1, 0}, k, r.status);
+          return unit_form(curve(r), deg2, k, r.status);
         },
-        exponents<T>(), tol);
+        locus_test::covariant_exponents<T>(2), tol);
     locus_test::expect_scale_covariant(
         [&](int k) {
           const auto r = locus::fit_quadric(scaled(p3, k));
-          const auto& q = r.quadric;
-          return unit_form({q.a(0, 0), q.a(0, 1), q.a(0, 2), q.a(1, 1), q.a(1, 2), q.a(2, 2), q.b.x,
-                            q.b.y, q.b.z, q.c},
-                           {2, 2, 2, 2, 2, 2, 1, 1, 1, 0}, k, r.status);
+          return unit_form(quadric(r), deg3, k, r.status);
         },
-        exponents<T>(), tol);
+        locus_test::covariant_exponents<T>(2), tol);
+    // Over the whole range, against the unscaled fit mapped in long double.
+    const auto base2 = locus::fit_quadratic_curve(p2);
+    const auto base3 = locus::fit_quadric(p3);
+    ASSERT_EQ(base2.status, Status::ok);
+    ASSERT_EQ(base3.status, Status::ok);
+    for (const int k : exponents<T>()) {
+      const auto r2 = locus::fit_quadratic_curve(scaled(p2, k));
+      expect_unit_form_scaled(curve(base2), deg2, k, curve(r2), r2.status, tol);
+      const auto r3 = locus::fit_quadric(scaled(p3, k));
+      expect_unit_form_scaled(quadric(base3), deg3, k, quadric(r3), r3.status, tol);
+    }
   }
 }
 
@@ -284,12 +336,20 @@ TYPED_TEST(FitScale, Gaussians) {
           add(out, "center", r.box.center, 1);
           add(out, "extent", r.box.extent, 1);
           for (int i = 0; i < 3; ++i) add(out, "axis" + std::to_string(i), r.box.axis[i], 0);
+          return out;
+        },
+        exponents<T>());
+    // The covariance scales by 2^(2k): compared where that stays in range.
+    locus_test::expect_scale_covariant(
+        [&](int k) {
+          const auto r = locus::fit_gaussian(scaled(pts, k));
+          std::vector<Covariant> out;
           for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j)
               out.push_back({"covariance", double(r.covariance(i, j)), 2});
           return out;
         },
-        exponents<T>());
+        locus_test::covariant_exponents<T>(2));
   }
 }
 

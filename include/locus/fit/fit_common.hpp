@@ -12,6 +12,8 @@
 // covariance-based fits cannot see a relative width below about sqrt(eps(C))). C = compute_t<T>:
 // every fit computes in double for float input and rounds its result to T.
 //
+// Scale: every fit works on the points scaled by a power of two that brings the largest
+// |coordinate| near 1 (Moments), so it is scale-covariant over the whole finite range.
 // Cost: O(n N^2) for the covariance; no allocation beyond the fits' own.
 
 #include <locus/config.hpp>
@@ -73,21 +75,39 @@ template <class C, class T, int N>
   return m;
 }
 
-/// Mean and covariance (normalised by n) in the compute type, by two passes (no cancellation).
+/// Mean and covariance (normalised by n) in the compute type, by two passes (no cancellation),
+/// of the points scaled by `scale`, a power of two that brings the largest |coordinate| to
+/// [1, 2): then no product of two coordinates leaves the exponent range whatever the input's
+/// magnitude, and every result computed from the scaled points is the same for the input
+/// scaled by any power of two. A fit maps its lengths back by dividing by `scale` (exact).
 template <class C, int N>
 struct Moments {
-  Vec<C, N> mean{};
-  Mat<C, N, N> covariance{};
+  C scale = C(1);             ///< power of two; scaled point = scale * p
+  Vec<C, N> mean{};           ///< of the scaled points
+  Mat<C, N, N> covariance{};  ///< of the scaled points
+
+  template <class T>
+  [[nodiscard]] Vec<C, N> scaled(const Vec<T, N>& p) const noexcept {
+    return vec_cast<C>(p) * scale;
+  }
+  template <class T>
+  [[nodiscard]] Vec<C, N> centred(const Vec<T, N>& p) const noexcept {
+    return scaled(p) - mean;
+  }
+  /// A length (or coordinate) of the scaled points back in the input's units.
+  [[nodiscard]] C unscale(C x) const noexcept { return x / scale; }
+  [[nodiscard]] Vec<C, N> unscale(const Vec<C, N>& x) const noexcept { return x / scale; }
 };
 
 template <class C, class T, int N>
 [[nodiscard]] Moments<C, N> moments(std::span<const Vec<T, N>> pts) noexcept {
   Moments<C, N> m;
+  m.scale = normalising_scale(coordinate_scale<C>(pts));
   const C inv_n = C(1) / C(pts.size());
-  for (const Vec<T, N>& p : pts) m.mean += vec_cast<C>(p);
+  for (const Vec<T, N>& p : pts) m.mean += m.scaled(p);
   m.mean *= inv_n;
   for (const Vec<T, N>& p : pts) {
-    const Vec<C, N> d = vec_cast<C>(p) - m.mean;
+    const Vec<C, N> d = m.centred(p);
     for (int r = 0; r < N; ++r)
       for (int c = r; c < N; ++c) m.covariance(r, c) += d[r] * d[c];
   }
@@ -155,6 +175,7 @@ struct VerticalSolution {
   Vec<compute_t<T>, N - 1> coef{};
   compute_t<T> constant{};
   compute_t<T> rms{};
+  Vec<compute_t<T>, N> mean{};  ///< of the points
 };
 
 template <class T, int N>
@@ -171,28 +192,31 @@ template <class T, int N>
   for (const Vec<T, N>& p : pts)
     for (int j = 0; j < K; ++j) xscale = std::max(xscale, std::abs(C(p[j])));
   const auto [vmin, vmax] = block_variance_range<K>(m.covariance);
-  if (negligible_variance<C, K>(vmin, vmax, xscale, C(rank_tol))) {
+  if (negligible_variance<C, K>(vmin, vmax, xscale * m.scale, C(rank_tol))) {
     out.status = Status::degenerate_input;
     return out;
   }
   const int n = static_cast<int>(pts.size());
   std::vector<C> a(pts.size() * static_cast<std::size_t>(K)), b(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) {
+    const Vec<C, N> d = m.centred(pts[i]);
     for (int j = 0; j < K; ++j)
-      a[i * static_cast<std::size_t>(K) + static_cast<std::size_t>(j)] = C(pts[i][j]) - m.mean[j];
-    b[i] = C(pts[i][K]) - m.mean[K];
+      a[i * static_cast<std::size_t>(K) + static_cast<std::size_t>(j)] = d[j];
+    b[i] = d[K];
   }
   const LeastSquares<C> ls = least_squares(a, n, K, b);
   if (ls.status != Status::ok) {
     out.status = Status::degenerate_input;
     return out;
   }
-  out.constant = m.mean[K];
+  C constant = m.mean[K];
   for (int j = 0; j < K; ++j) {
     out.coef[j] = ls.x[static_cast<std::size_t>(j)];
-    out.constant -= out.coef[j] * m.mean[j];
+    constant -= out.coef[j] * m.mean[j];
   }
-  out.rms = ls.residual_norm / std::sqrt(C(n));
+  out.constant = m.unscale(constant);
+  out.mean = m.unscale(m.mean);
+  out.rms = m.unscale(ls.residual_norm / std::sqrt(C(n)));
   return out;
 }
 

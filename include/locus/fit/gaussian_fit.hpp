@@ -58,10 +58,11 @@ template <class T, int N>
   const detail::Moments<C, N> m = detail::moments<C>(pts);
   const SymmetricEigen<C, N> e = detail::eigen_any(m.covariance);
   out.status = e.status;
-  out.mean = vec_cast<T>(m.mean);
+  out.mean = vec_cast<T>(m.unscale(m.mean));
+  // Divided by the scale twice: a covariance beyond the range of C is lost only there.
   for (int r = 0; r < N; ++r)
-    for (int c = 0; c < N; ++c) out.covariance(r, c) = T(m.covariance(r, c));
-  out.rms = T(std::sqrt(std::max(trace(m.covariance), C(0))));
+    for (int c = 0; c < N; ++c) out.covariance(r, c) = T(m.unscale(m.unscale(m.covariance(r, c))));
+  out.rms = T(m.unscale(std::sqrt(std::max(trace(m.covariance), C(0)))));
   Vec<C, N> center = m.mean;
   Vec<C, N> half{};
   if (extent == GaussianExtent::std_dev) {
@@ -69,7 +70,7 @@ template <class T, int N>
   } else {
     Vec<C, N> lo = splat<C, N>(C(0)), hi = splat<C, N>(C(0));
     for (const Vec<T, N>& p : pts) {
-      const Vec<C, N> d = vec_cast<C>(p) - m.mean;
+      const Vec<C, N> d = m.centred(p);
       for (int i = 0; i < N; ++i) {
         const C s = dot(col(e.vectors, i), d);
         lo[i] = std::min(lo[i], s);
@@ -81,9 +82,9 @@ template <class T, int N>
       center += ((hi[i] + lo[i]) / C(2)) * col(e.vectors, i);
     }
   }
-  out.box.center = vec_cast<T>(center);
+  out.box.center = vec_cast<T>(m.unscale(center));
   for (int i = 0; i < N; ++i) out.box.axis[i] = vec_cast<T>(col(e.vectors, i));
-  out.box.extent = vec_cast<T>(half);
+  out.box.extent = vec_cast<T>(m.unscale(half));
   return out;
 }
 

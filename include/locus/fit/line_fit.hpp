@@ -62,7 +62,7 @@ template <class T, int N>
   const detail::Moments<C, N> m = detail::moments<C>(pts);
   const SymmetricEigen<C, N> e = detail::eigen_any(m.covariance);
   if (detail::negligible_variance<C, N>(e.values[N - 1], e.values[N - 1],
-                                        detail::coordinate_scale<C>(pts),
+                                        detail::coordinate_scale<C>(pts) * m.scale,
                                         C(detail::fit_rank_tolerance(opt)))) {
     out.status = Status::degenerate_input;
     return out;
@@ -70,11 +70,11 @@ template <class T, int N>
   const Vec<C, N> d = detail::canonical_sign(col(e.vectors, N - 1));
   C s = C(0);
   for (const Vec<T, N>& p : pts) {
-    const Vec<C, N> q = vec_cast<C>(p) - m.mean;
+    const Vec<C, N> q = m.centred(p);
     s += std::max(C(0), sqr_length(q - dot(q, d) * d));
   }
-  out.line = {vec_cast<T>(m.mean), vec_cast<T>(d)};
-  out.rms = T(std::sqrt(s / C(pts.size())));
+  out.line = {vec_cast<T>(m.unscale(m.mean)), vec_cast<T>(d)};
+  out.rms = T(m.unscale(std::sqrt(s / C(pts.size()))));
   out.status = e.status == Status::limit_exceeded ? Status::limit_exceeded : Status::ok;
   return out;
 }
@@ -96,10 +96,7 @@ template <Real T>
   out.status = v.status;
   out.rms = T(v.rms);
   if (v.status != Status::ok) return out;
-  using C = compute_t<T>;
-  C mx = C(0);
-  for (const Vec2<T>& p : pts) mx += C(p.x);
-  mx /= C(pts.size());
+  const auto mx = v.mean.x;
   out.slope = T(v.coef[0]);
   out.intercept = T(v.constant);
   out.line = {Vec2<T>{T(mx), T(v.coef[0] * mx + v.constant)}, Vec2<T>{T(1), T(v.coef[0])}};

@@ -74,17 +74,17 @@ template <class T, int N>
   const detail::Moments<C, N> m = detail::moments<C>(pts);
   const SymmetricEigen<C, N> e = detail::eigen_any(m.covariance);
   if (detail::negligible_variance<C, N>(e.values[1], e.values[N - 1],
-                                        detail::coordinate_scale<C>(pts),
+                                        detail::coordinate_scale<C>(pts) * m.scale,
                                         C(detail::fit_rank_tolerance(opt)))) {
     out.status = Status::degenerate_input;
     return out;
   }
   const Vec<C, N> n = detail::canonical_sign(col(e.vectors, 0));
   C s = C(0);
-  for (const Vec<T, N>& p : pts) s += sqr(dot(n, vec_cast<C>(p) - m.mean));
+  for (const Vec<T, N>& p : pts) s += sqr(dot(n, m.centred(p)));
   out.normal = vec_cast<T>(n);
-  out.constant = T(dot(n, m.mean));
-  out.rms = T(std::sqrt(s / C(pts.size())));
+  out.constant = T(m.unscale(dot(n, m.mean)));
+  out.rms = T(m.unscale(std::sqrt(s / C(pts.size()))));
   out.status = e.status == Status::limit_exceeded ? Status::limit_exceeded : Status::ok;
   return out;
 }

@@ -78,8 +78,46 @@ struct QuadraticForm {
 template <class C, int N>
 struct NullVectorResult {
   Status status = Status::empty_input;
-  QuadraticForm<C, N> form;  ///< in the ORIGINAL coordinates, not yet normalised
+  QuadraticForm<C, N> form;  ///< in the coordinates x = unit * p, not yet normalised
+  C unit = C(1);             ///< power of two (see Moments)
 };
+
+/// The coefficient vector of a quadratic form in x = unit * p (coefficient i of degree
+/// degree[i]) rewritten for p, normalised to unit length with its largest entry positive,
+/// without forming unit^2 (which leaves the range at the ends of it): entry i is
+/// qx[i] 2^(degree[i] j - e), j = log2(unit), e the largest exponent among them. Also the RMS
+/// over the points of that unit vector's algebraic residual, from the residuals in x.
+template <class C, int K>
+struct UnitCoefficients {
+  Vec<C, K> q{};
+  C rms{};
+};
+
+template <class C, int K, class T, int N, class Monomials>
+[[nodiscard]] UnitCoefficients<C, K> unit_coefficients(const Vec<C, K>& qx,
+                                                       const std::array<int, K>& degree, C unit,
+                                                       std::span<const Vec<T, N>> pts,
+                                                       Monomials monomials) {
+  const int j = std::ilogb(unit);
+  int e = std::numeric_limits<int>::min();
+  for (int i = 0; i < K; ++i)
+    if (qx[i] != C(0)) e = std::max(e, std::ilogb(qx[i]) + degree[static_cast<std::size_t>(i)] * j);
+  Vec<C, K> y{};
+  for (int i = 0; i < K; ++i) y[i] = std::ldexp(qx[i], degree[static_cast<std::size_t>(i)] * j - e);
+  const C len = length(y);
+  UnitCoefficients<C, K> out;
+  out.q = canonical_sign(y / len);
+  // Entry i of q times monomial i of p = qx[i] monomial_i(x) 2^-e / len, up to the sign.
+  C sum = C(0);
+  for (const Vec<T, N>& p : pts) {
+    const std::array<C, K> v = monomials(vec_cast<C>(p) * unit);
+    C r = C(0);
+    for (int i = 0; i < K; ++i) r += qx[i] * v[static_cast<std::size_t>(i)];
+    sum += r * r;
+  }
+  out.rms = std::ldexp(std::sqrt(sum / C(pts.size())), -e) / len;
+  return out;
+}
 
 // Smallest right singular vector of the design matrix of the normalised points, converted to a
 // quadratic form in the original coordinates.
@@ -100,7 +138,7 @@ template <class C, class T, int N, int K, class Monomials, class ToForm>
   // Streaming Givens QR: R is the K x K triangle with R^T R = V^T V.
   MatX<C> r(K, K);
   for (const Vec<T, N>& p : pts) {
-    std::array<C, K> w = monomials((vec_cast<C>(p) - m.mean) / s);
+    std::array<C, K> w = monomials(m.centred(p) / s);
     for (int j = 0; j < K; ++j) {
       const C wj = w[static_cast<std::size_t>(j)];
       if (wj == C(0)) continue;
@@ -119,8 +157,8 @@ template <class C, class T, int N, int K, class Monomials, class ToForm>
     out.status = d.status == Status::limit_exceeded ? Status::degenerate_input : d.status;
     return out;
   }
-  const C tol =
-      std::max(C(64) * std::sqrt(C(K)) * eps_v<C>, C(rank_tol) * coordinate_scale<C>(pts) / s);
+  const C tol = std::max(C(64) * std::sqrt(C(K)) * eps_v<C>,
+                         C(rank_tol) * coordinate_scale<C>(pts) * m.scale / s);
   if (!(d.s[K - 2] > tol * d.s[0])) {
     out.status = Status::degenerate_input;
     return out;
@@ -128,12 +166,13 @@ template <class C, class T, int N, int K, class Monomials, class ToForm>
   std::array<C, K> w{};
   for (int k = 0; k < K; ++k) w[static_cast<std::size_t>(k)] = d.v(k, K - 1);
   const QuadraticForm<C, N> fu = to_form(w);
-  // u = (p - mean) / s: u^T Au u + bu . u + cu = p^T (Au/s^2) p + (bu/s - 2 Au mean/s^2) . p
+  // u = (x - mean) / s: u^T Au u + bu . u + cu = x^T (Au/s^2) x + (bu/s - 2 Au mean/s^2) . x
   //                                               + mean^T Au mean / s^2 - bu . mean / s + cu.
   const Vec<C, N> am = fu.a * m.mean;
   out.form.a = fu.a * (C(1) / (s * s));
   out.form.b = fu.b / s - am * (C(2) / (s * s));
   out.form.c = dot(m.mean, am) / (s * s) - dot(fu.b, m.mean) / s + fu.c;
+  out.unit = m.scale;
   return out;
 }
 
@@ -160,17 +199,13 @@ template <Real T>
   out.status = res.status;
   if (res.status != Status::ok) return out;
   const detail::QuadraticForm<C, 2>& f = res.form;
-  Vec<C, 6> q{f.a(0, 0), C(2) * f.a(0, 1), f.a(1, 1), f.b.x, f.b.y, f.c};
-  q = detail::canonical_sign(q / length(q));
-  C sum = C(0);
-  for (const Vec2<T>& p : pts) {
-    const std::array<C, 6> v = detail::conic_monomials(vec_cast<C>(p));
-    C e = C(0);
-    for (int k = 0; k < 6; ++k) e += q[k] * v[static_cast<std::size_t>(k)];
-    sum += e * e;
-  }
+  const Vec<C, 6> qx{f.a(0, 0), C(2) * f.a(0, 1), f.a(1, 1), f.b.x, f.b.y, f.c};
+  const auto u =
+      detail::unit_coefficients<C, 6>(qx, {2, 2, 2, 1, 1, 0}, res.unit, pts,
+                                      [](const Vec2<C>& x) { return detail::conic_monomials(x); });
+  const Vec<C, 6>& q = u.q;
   out.curve = {T(q[0]), T(q[1]), T(q[2]), T(q[3]), T(q[4]), T(q[5])};
-  out.rms = T(std::sqrt(sum / C(pts.size())));
+  out.rms = T(u.rms);
   return out;
 }
 
@@ -203,23 +238,19 @@ template <Real T>
   out.status = res.status;
   if (res.status != Status::ok) return out;
   const detail::QuadraticForm<C, 3>& f = res.form;
-  Vec<C, 10> q{
+  const Vec<C, 10> qx{
       f.a(0, 0), f.a(1, 1), f.a(2, 2), C(2) * f.a(0, 1), C(2) * f.a(0, 2), C(2) * f.a(1, 2), f.b.x,
       f.b.y,     f.b.z,     f.c};
-  q = detail::canonical_sign(q / length(q));
-  C sum = C(0);
-  for (const Vec3<T>& p : pts) {
-    const std::array<C, 10> v = detail::quadric_monomials(vec_cast<C>(p));
-    C e = C(0);
-    for (int k = 0; k < 10; ++k) e += q[k] * v[static_cast<std::size_t>(k)];
-    sum += e * e;
-  }
+  const auto u = detail::unit_coefficients<C, 10>(
+      qx, {2, 2, 2, 2, 2, 2, 1, 1, 1, 0}, res.unit, pts,
+      [](const Vec3<C>& x) { return detail::quadric_monomials(x); });
+  const Vec<C, 10>& q = u.q;
   out.quadric.a = Mat3<T>::from_rows(Vec3<T>{T(q[0]), T(q[3] / C(2)), T(q[4] / C(2))},
                                      Vec3<T>{T(q[3] / C(2)), T(q[1]), T(q[5] / C(2))},
                                      Vec3<T>{T(q[4] / C(2)), T(q[5] / C(2)), T(q[2])});
   out.quadric.b = {T(q[6]), T(q[7]), T(q[8])};
   out.quadric.c = T(q[9]);
-  out.rms = T(std::sqrt(sum / C(pts.size())));
+  out.rms = T(u.rms);
   return out;
 }
 

@@ -52,10 +52,11 @@ namespace detail {
 template <class C, int N>
 struct NormalizedSphereProblem {
   Status status = Status::empty_input;
-  std::vector<Vec<C, N>> q;  ///< (p - mean) / scale
-  Vec<C, N> mean{};
-  C scale{};
-  Vec<C, N> center{};  ///< algebraic solution in normalised coordinates
+  std::vector<Vec<C, N>> q;  ///< (unit p - mean) / scale
+  C unit{};                  ///< power of two: the fit works on unit * p (see Moments)
+  Vec<C, N> mean{};          ///< of unit * p
+  C scale{};                 ///< RMS radius of unit * p about the mean
+  Vec<C, N> center{};        ///< algebraic solution in normalised coordinates
   C radius{};
 };
 
@@ -68,11 +69,12 @@ template <class C, class T, int N>
   if (out.status != Status::ok) return out;
   const Moments<C, N> m = moments<C>(pts);
   const SymmetricEigen<C, N> e = eigen_any(m.covariance);
-  if (negligible_variance<C, N>(e.values[0], e.values[N - 1], coordinate_scale<C>(pts),
+  if (negligible_variance<C, N>(e.values[0], e.values[N - 1], coordinate_scale<C>(pts) * m.scale,
                                 C(rank_tol))) {
     out.status = Status::degenerate_input;
     return out;
   }
+  out.unit = m.scale;
   out.mean = m.mean;
   out.scale = std::sqrt(trace(m.covariance));
   const std::size_t n = pts.size();
@@ -80,7 +82,7 @@ template <class C, class T, int N>
   constexpr std::size_t cols = N + 1;
   std::vector<C> a(n * cols), b(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec<C, N> q = (vec_cast<C>(pts[i]) - m.mean) / out.scale;
+    const Vec<C, N> q = m.centred(pts[i]) / out.scale;
     out.q[i] = q;
     for (int j = 0; j < N; ++j) a[i * cols + static_cast<std::size_t>(j)] = q[j];
     a[i * cols + N] = C(1);
@@ -142,8 +144,8 @@ template <class T, class C, int N>
   SphereFit<T, N> out;
   out.status = Status::ok;
   out.status = st;
-  out.sphere = {vec_cast<T>(pr.mean + pr.scale * c), T(pr.scale * r)};
-  out.rms = T(pr.scale * std::sqrt(cost / C(pr.q.size())));
+  out.sphere = {vec_cast<T>((pr.mean + pr.scale * c) / pr.unit), T(pr.scale * r / pr.unit)};
+  out.rms = T(pr.scale * std::sqrt(cost / C(pr.q.size())) / pr.unit);
   out.iterations = iterations;
   return out;
 }

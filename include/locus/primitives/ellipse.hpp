@@ -44,7 +44,7 @@ template <Real T>
 struct Ellipse2 {
   Vec2<T> center;
   Vec2<T> axis[2];
-  T extent[2];
+  Vec2<T> extent;  ///< half-axis lengths along axis[0], axis[1]
 };
 
 /// Matrix form: the curve (X - center)^T m (X - center) = 1, m symmetric positive definite.
