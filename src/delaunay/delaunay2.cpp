@@ -72,8 +72,8 @@ LocateResult locate(const Delaunay2Result& dt, std::span<const Vec2<T>> points, 
                     std::int32_t start, std::size_t max_steps) noexcept {
   LocateResult r;
   r.status = Status::ok;
-  const std::size_t nt = dt.triangles.size() / 3;
-  if (nt == 0 || dt.halfedges.size() != dt.triangles.size()) {
+  const std::size_t nt = dt.triangles.size();
+  if (nt == 0 || dt.adjacency.size() != nt) {
     r.status = Status::empty_input;
     return r;
   }
@@ -84,31 +84,31 @@ LocateResult locate(const Delaunay2Result& dt, std::span<const Vec2<T>> points, 
   if (max_steps == 0) max_steps = 4 * nt + 16;
   std::uint32_t t =
       (start >= 0 && static_cast<std::size_t>(start) < nt) ? static_cast<std::uint32_t>(start) : 0u;
-  std::uint32_t came = kNone;
+  std::uint32_t came = kNoTriangle;  // the triangle the walk came from (p is beyond that edge)
   for (std::size_t step = 0; step < max_steps; ++step) {
     r.steps = step + 1;
-    const std::uint32_t base = 3 * t;
+    const std::array<std::uint32_t, 3>& v = dt.triangles[t];
+    const std::array<std::uint32_t, 3>& nb = dt.adjacency[t];
     unsigned zero_mask = 0;
     bool moved = false;
     for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t e = base + i;
-      if (e == came) continue;
-      const std::uint32_t a = dt.triangles[e], b = dt.triangles[nxt(e)];
-      if (a >= points.size() || b >= points.size()) {
+      const std::uint32_t o = nb[i];
+      if (o != kNoTriangle && o == came) continue;
+      const std::uint32_t a = v[i], b = v[i == 2 ? 0 : i + 1];
+      if (a >= points.size() || b >= points.size() || (o != kNoTriangle && o >= nt)) {
         r.status = Status::invalid_input;
         return r;
       }
       const Sign s = orient2d(points[a], points[b], p);
       if (s == Sign::negative) {
-        const std::int32_t o = dt.halfedges[e];
-        if (o < 0) {
+        if (o == kNoTriangle) {
           r.location = Location::outside;
           r.triangle = static_cast<std::int32_t>(t);
           r.corner = static_cast<int>(i);
           return r;
         }
-        came = static_cast<std::uint32_t>(o);
-        t = came / 3;
+        came = t;
+        t = o;
         moved = true;
         break;
       }
@@ -154,14 +154,6 @@ void Delaunay2<T>::reset() {
 template <Real T>
 const Delaunay2Result& Delaunay2<T>::compute(std::span<const Vec2<T>> points) {
   points_.assign(points.begin(), points.end());
-  run(points_);
-  return result();
-}
-
-template <Real T>
-const Delaunay2Result& Delaunay2<T>::compute(const T* xy, std::size_t n) {
-  points_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) points_[i] = Vec2<T>{xy[2 * i], xy[2 * i + 1]};
   run(points_);
   return result();
 }
@@ -387,7 +379,7 @@ void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
     status_ = Status::empty_input;
     return;
   }
-  if (n >= std::size_t(0x7FFFFFFF) / 3) {  // half-edge indices must fit in int32
+  if (n >= std::size_t(0x7FFFFFFF) / 3) {  // 6 (n + 1) half-edge indices must fit in uint32
     status_ = Status::invalid_input;
     return;
   }
@@ -457,22 +449,21 @@ void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
   if (!ok) status_ = Status::limit_exceeded;
 }
 
-// The result: the real triangles packed into slots [0, count) with input point indices, their
-// opposite half-edges (-1 on the hull), the hull. Ghost triangles are few (one per hull edge) and
-// form one cycle around the hull, so instead of renumbering every triangle, the hull walk lists
-// them, their real neighbours' half-edges are cut (kNone, which is -1 as int32), and each ghost
-// slot below count receives the real triangle of a slot at or above count (its neighbours' back
-// links follow): O(h) moves and one pass that maps vertices to input indices. In place (from
-// take_result(), the internal arrays are not needed any more) the arrays are packed themselves
-// and handed over: no second pair of 12-byte-per-triangle arrays is allocated or touched;
-// otherwise copies are packed. Both give the same numbering.
+// The result: the real triangles numbered [0, count), written straight into the result's layout
+// (input point indices; adjacency as triangle indices, kNoTriangle on the hull), and the hull.
+// Ghost triangles are few (one per hull edge) and form one cycle around the hull, so instead of
+// renumbering every triangle, the hull walk lists them, their real neighbours' half-edges are cut
+// (kNone) for the pass, and each ghost slot below count receives the real triangle of a slot at
+// or above count: real triangle t keeps number t unless t >= count (moved_[t - count]). One
+// sequential pass then writes both arrays. In place (from take_result(), the internal arrays are
+// not needed any more) they are released at once; otherwise the cut links are restored.
 template <Real T>
 void Delaunay2<T>::compact(bool in_place) {
   Delaunay2Result& r = result_;
   r.status = status_;
   r.dimension = dimension_;
   r.triangles.clear();
-  r.halfedges.clear();
+  r.adjacency.clear();
   r.duplicate_count = 0;
   for (std::size_t i = 0; i < r.duplicate_of.size(); ++i)
     r.duplicate_count += r.duplicate_of[i] != i ? 1u : 0u;
@@ -482,7 +473,7 @@ void Delaunay2<T>::compact(bool in_place) {
   }
   r.hull.clear();
   const std::uint32_t nt = nt_;
-  const std::uint32_t* opp = adj();
+  std::uint32_t* opp = adj();
   std::uint32_t some_ghost = 0;
   while (some_ghost + 1 < nt && tri_[3 * some_ghost + 2] != kGhost) ++some_ghost;
   // Hull: ghost (u, v, G) lies beyond hull edge v -> u; the ghost across its half-edge G -> u
@@ -501,48 +492,53 @@ void Delaunay2<T>::compact(bool in_place) {
     std::rotate(r.hull.begin(), smallest, r.hull.end());
   }
   const auto count = static_cast<std::uint32_t>(nt - ghosts.size());
-  // Triangle of the last point (a real one), followed through the moves: the walk start of
-  // locate().
-  std::uint32_t last_real = tri_[3 * last_ + 2] == kGhost ? opp[3 * last_] / 3 : last_;
-  std::uint32_t* tri = tri_.data();
-  std::uint32_t* adj_out = adj();
-  if (!in_place) {
-    r.triangles.assign(tri_.begin(), tri_.begin() + 3 * std::ptrdiff_t(nt));
-    r.halfedges.assign(adj_.begin(), adj_.begin() + 3 * std::ptrdiff_t(nt));
-    tri = r.triangles.data();
-    adj_out = reinterpret_cast<std::uint32_t*>(r.halfedges.data());
-  }
-  for (const std::uint32_t g : ghosts) adj_out[adj_out[3 * g]] = kNone;
+  for (const std::uint32_t g : ghosts) opp[opp[3 * g]] = kNone;
   std::sort(ghosts.begin(), ghosts.end());
-  std::size_t above = static_cast<std::size_t>(
-      std::lower_bound(ghosts.begin(), ghosts.end(), count) - ghosts.begin());
-  std::uint32_t from = count;
-  for (std::size_t k = 0; k < ghosts.size() && ghosts[k] < count; ++k) {
-    const std::uint32_t hole = ghosts[k];
-    while (above < ghosts.size() && ghosts[above] == from) ++above, ++from;
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t o = adj_out[3 * from + i];
-      tri[3 * hole + i] = tri[3 * from + i];
-      adj_out[3 * hole + i] = o;
-      if (o != kNone) adj_out[o] = 3 * hole + i;
+  // source[k]: the slot whose triangle becomes triangle k, for the ghost slots k below count.
+  moved_.assign(nt - count, kNone);
+  {
+    std::size_t above = static_cast<std::size_t>(
+        std::lower_bound(ghosts.begin(), ghosts.end(), count) - ghosts.begin());
+    std::uint32_t from = count;
+    for (std::size_t k = 0; k < ghosts.size() && ghosts[k] < count; ++k) {
+      while (above < ghosts.size() && ghosts[above] == from) ++above, ++from;
+      moved_[from - count] = ghosts[k];
+      ++from;
     }
-    if (from == last_real) last_real = hole;
-    ++from;
   }
-  last_out_ = last_real;
-  for (std::size_t e = 0; e < 3 * std::size_t(count); ++e) tri[e] = orig_[tri[e]];
+  const std::uint32_t* moved = moved_.data();
+  const auto renumber = [&](std::uint32_t t) noexcept { return t < count ? t : moved[t - count]; };
+  // Triangle of the last point (a real one): the walk start of locate().
+  const std::uint32_t last_real = tri_[3 * last_ + 2] == kGhost ? opp[3 * last_] / 3 : last_;
+  last_out_ = renumber(last_real);
+
+  r.triangles.resize(count);
+  r.adjacency.resize(count);
+  std::array<std::uint32_t, 3>* tris = r.triangles.data();
+  std::array<std::uint32_t, 3>* nbrs = r.adjacency.data();
+  const std::uint32_t* tri = tri_.data();
+  const std::uint32_t* orig = orig_.data();
+  const auto write = [&](std::uint32_t k, std::uint32_t src) LOCUS_ALWAYS_INLINE_LAMBDA {
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t o = opp[3 * src + i];
+      tris[k][i] = orig[tri[3 * src + i]];
+      nbrs[k][i] = o == kNone ? kNoTriangle : renumber(o / 3);
+    }
+  };
+  for (std::uint32_t k = 0; k < count; ++k)
+    if (tri[3 * k + 2] != kGhost) write(k, k);
+  for (std::uint32_t s = count; s < nt; ++s)
+    if (moved[s - count] != kNone) write(moved[s - count], s);
+
   if (in_place) {
-    tri_.resize(3 * std::size_t(count));
-    adj_.resize(3 * std::size_t(count));
-    r.triangles.swap(tri_);
-    r.halfedges.swap(adj_);
     tri_.clear();
+    tri_.shrink_to_fit();
     adj_.clear();
+    adj_.shrink_to_fit();
     nt_ = 0;
     dimension_ = -1;
   } else {
-    r.triangles.resize(3 * std::size_t(count));
-    r.halfedges.resize(3 * std::size_t(count));
+    for (const std::uint32_t g : ghosts) opp[opp[3 * g]] = 3 * g;
   }
   ghosts.clear();
 }
@@ -598,22 +594,18 @@ template <Real T>
 Delaunay2Result delaunay(std::span<const Vec2<T>> points) {
   Delaunay2<T> d;
   d.run(points);
+  // compact() writes the result into new arrays: first release what it does not read.
+  d.sorted_ = {};
+  d.keys_ = {};
+  d.keys_tmp_ = {};
+  d.stack_ = {};
   return d.take_result();
-}
-
-template <Real T>
-Delaunay2Result delaunay(const T* xy, std::size_t n) {
-  std::vector<Vec2<T>> points(n);
-  for (std::size_t i = 0; i < n; ++i) points[i] = Vec2<T>{xy[2 * i], xy[2 * i + 1]};
-  return delaunay(std::span<const Vec2<T>>(points));
 }
 
 template class Delaunay2<float>;
 template class Delaunay2<double>;
 template Delaunay2Result delaunay<float>(std::span<const Vec2<float>>);
 template Delaunay2Result delaunay<double>(std::span<const Vec2<double>>);
-template Delaunay2Result delaunay<float>(const float*, std::size_t);
-template Delaunay2Result delaunay<double>(const double*, std::size_t);
 template LocateResult locate<float>(const Delaunay2Result&, std::span<const Vec2<float>>,
                                     const Vec2<float>&, std::int32_t, std::size_t) noexcept;
 template LocateResult locate<double>(const Delaunay2Result&, std::span<const Vec2<double>>,

@@ -216,16 +216,6 @@ const Delaunay3Result& Delaunay3<T>::compute(std::span<const Vec3<T>> points) {
 }
 
 template <Real T>
-const Delaunay3Result& Delaunay3<T>::compute(const T* xyz, std::size_t n) {
-  points_.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    points_[i] = Vec3<T>{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-  run();
-  compact(false);
-  return result_;
-}
-
-template <Real T>
 Delaunay3Result Delaunay3<T>::take_result() {
   if (dirty_) compact(false);
   Delaunay3Result r = std::move(result_);
@@ -374,7 +364,7 @@ void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32
 template <Real T>
 LOCUS_ALWAYS_INLINE inline bool Delaunay3<T>::in_conflict(std::uint32_t t,
                                                           std::uint32_t v) const noexcept {
-  const Delaunay3Cell& c = cells_[t];
+  const Cell& c = cells_[t];
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T>& p = pts[v];
   if (c.vertices[3] == kGhost) [[unlikely]] {
@@ -383,7 +373,7 @@ LOCUS_ALWAYS_INLINE inline bool Delaunay3<T>::in_conflict(std::uint32_t t,
     if (s != Sign::zero) return s == Sign::positive;
     // On the hull plane: the ghost goes with the real cell under the face, so the face is
     // either inside the cavity or not on its boundary (never a flat new cell).
-    const Delaunay3Cell& r = cells_[std::uint32_t(c.neighbors[3]) >> 2];
+    const Cell& r = cells_[std::uint32_t(c.neighbors[3]) >> 2];
     const Vec3<T>&ra = pts[r.vertices[0]], &rb = pts[r.vertices[1]], &rc = pts[r.vertices[2]],
           &rd = pts[r.vertices[3]];
     return (lattice_ ? insphere_perturbed_lattice(ra, rb, rc, rd, p)
@@ -401,7 +391,7 @@ std::uint32_t Delaunay3<T>::scan(std::uint32_t v, std::uint32_t* duplicate) noex
   const Vec3<T>& p = pts[v];
   const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
   for (std::uint32_t t = 0; t < nc; ++t) {
-    const Delaunay3Cell& c = cells_[t];
+    const Cell& c = cells_[t];
     if (c.vertices[3] >= kDead) continue;
     bool inside = true;
     for (int i = 0; i < 4 && inside; ++i)
@@ -430,7 +420,7 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
   std::uint32_t came = kNone;
   std::uint32_t rng = walk_rng_;
   for (std::size_t step = 0; step < budget; ++step) {
-    const Delaunay3Cell& c = cells_[t];
+    const Cell& c = cells_[t];
     if (c.vertices[3] == kGhost) {
       const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]];
       if ((lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p)) == Sign::positive) {
@@ -517,7 +507,7 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
         }
         mark[nb] = out;
       }
-      const Delaunay3Cell& cc = cells_[c];
+      const Cell& cc = cells_[c];
       boundary_.push_back({cc.vertices[std::size_t(kFace[i][0])],
                            cc.vertices[std::size_t(kFace[i][1])],
                            cc.vertices[std::size_t(kFace[i][2])], code});
@@ -549,7 +539,7 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
   for (std::size_t k = 0; k < nb_faces; ++k) {
     const Boundary& f = boundary_[k];
     const std::uint32_t s = fresh_[k];
-    Delaunay3Cell& cell = cells_[s];
+    Cell& cell = cells_[s];
     // (a, b, c, v) is positive: v sees the face from the cavity side. A ghost vertex is moved
     // to corner 3 by an even permutation.
     int apex_corner = 3;
@@ -705,6 +695,7 @@ void Delaunay3<T>::compact(bool in_place) {
   r.status = status_;
   r.dimension = status_ == Status::ok || status_ == Status::limit_exceeded ? dimension_ : -1;
   r.tetrahedra.clear();
+  r.adjacency.clear();
   r.hull.clear();
   r.duplicate_count = 0;
   // duplicate_of[i] < i for a duplicate (insert_vertex), so one ascending pass resolves chains.
@@ -719,33 +710,34 @@ void Delaunay3<T>::compact(bool in_place) {
     return;
   }
   if (dimension_ < 3) return;
-  // New index of each real cell (mark_ is reused as the map); ghosts and free slots map to -1.
+  // New index of each real cell (mark_ is reused as the map); ghosts and free slots map to
+  // kNoTetrahedron. The result is written in one forward pass, straight into its final layout.
   const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
   std::uint32_t count = 0;
   for (std::uint32_t t = 0; t < nc; ++t)
-    mark_[t] = cells_[t].vertices[3] >= kDead ? kNone : count++;
-  auto map_neighbor = [&](std::int32_t code) {
-    const std::uint32_t m = mark_[std::uint32_t(code) >> 2];
-    return m == kNone ? std::int32_t(-1) : static_cast<std::int32_t>(m);
-  };
-  if (in_place) {
-    // Slot mark_[t] <= t, so a forward pass packs the array without overwriting unread cells.
-    for (std::uint32_t t = 0; t < nc; ++t) {
-      const Delaunay3Cell c = cells_[t];
-      if (c.vertices[3] == kGhost) {
-        r.hull.push_back({orig_[c.vertices[0]], orig_[c.vertices[1]], orig_[c.vertices[2]]});
-        continue;
-      }
-      if (c.vertices[3] == kDead) continue;
-      Delaunay3Cell& o = cells_[mark_[t]];
-      for (std::size_t i = 0; i < 4; ++i) {
-        o.vertices[i] = orig_[c.vertices[i]];
-        o.neighbors[i] = map_neighbor(c.neighbors[i]);
-      }
+    mark_[t] = cells_[t].vertices[3] >= kDead ? kNoTetrahedron : count++;
+  r.tetrahedra.resize(count);
+  r.adjacency.resize(count);
+  std::array<std::uint32_t, 4>* tets = r.tetrahedra.data();
+  std::array<std::uint32_t, 4>* adjacency = r.adjacency.data();
+  const std::uint32_t* map = mark_.data();
+  const std::uint32_t* orig = orig_.data();
+  for (std::uint32_t t = 0; t < nc; ++t) {
+    const Cell& c = cells_[t];
+    if (c.vertices[3] == kGhost) {
+      r.hull.push_back({orig[c.vertices[0]], orig[c.vertices[1]], orig[c.vertices[2]]});
+      continue;
     }
-    cells_.resize(count);
-    r.tetrahedra.swap(cells_);
+    if (c.vertices[3] == kDead) continue;
+    const std::uint32_t k = map[t];
+    for (std::size_t i = 0; i < 4; ++i) {
+      tets[k][i] = orig[c.vertices[i]];
+      adjacency[k][i] = map[std::uint32_t(c.neighbors[i]) >> 2];
+    }
+  }
+  if (in_place) {
     cells_.clear();
+    cells_.shrink_to_fit();
     mark_.clear();
     mark_.shrink_to_fit();
     sorted_.clear();
@@ -754,20 +746,6 @@ void Delaunay3<T>::compact(bool in_place) {
     orig_.shrink_to_fit();
     dimension_ = -1;
     return;
-  }
-  r.tetrahedra.resize(count);
-  for (std::uint32_t t = 0; t < nc; ++t) {
-    const Delaunay3Cell& c = cells_[t];
-    if (c.vertices[3] == kGhost) {
-      r.hull.push_back({orig_[c.vertices[0]], orig_[c.vertices[1]], orig_[c.vertices[2]]});
-      continue;
-    }
-    if (c.vertices[3] == kDead) continue;
-    Delaunay3Cell& o = r.tetrahedra[mark_[t]];
-    for (std::size_t i = 0; i < 4; ++i) {
-      o.vertices[i] = orig_[c.vertices[i]];
-      o.neighbors[i] = map_neighbor(c.neighbors[i]);
-    }
   }
   // The query start: a real cell of the last inserted point (under it when last_ is a ghost).
   std::uint32_t last = last_;
@@ -784,7 +762,7 @@ template <Real T>
 void Delaunay3<T>::planar_triangles(bool in_place) {
   Delaunay3Result& r = result_;
   r.triangles.clear();
-  for (const Delaunay3Cell& c : cells_) {
+  for (const Cell& c : cells_) {
     if (c.vertices[3] >= kDead) continue;
     int j = 0;
     while (j < 3 && c.vertices[std::size_t(j)] != apex_) ++j;
@@ -1100,8 +1078,8 @@ Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
     return r;
   }
   const std::uint32_t apex_id = dim == 2 ? m - 1 : kNone;
-  std::vector<std::int32_t> index(hull.facets.size(), -1);
-  std::int32_t count = 0;
+  std::vector<std::uint32_t> index(hull.facets.size(), kNoTetrahedron);
+  std::uint32_t count = 0;
   for (std::size_t f = 0; f < hull.facets.size(); ++f)
     if (hull.facets[f].alive && hull.facets[f].v[3] != kGhost) index[f] = count++;
   for (std::size_t f = 0; f < hull.facets.size(); ++f) {
@@ -1121,12 +1099,13 @@ Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
       r.hull.push_back({kept[F.v[0]], kept[F.v[1]], kept[F.v[2]]});
       continue;
     }
-    Delaunay3Cell c;
+    std::array<std::uint32_t, 4> v, nb;
     for (std::size_t i = 0; i < 4; ++i) {
-      c.vertices[i] = kept[F.v[i]];
-      c.neighbors[i] = index[F.nb[i]];
+      v[i] = kept[F.v[i]];
+      nb[i] = index[F.nb[i]];
     }
-    r.tetrahedra.push_back(c);
+    r.tetrahedra.push_back(v);
+    r.adjacency.push_back(nb);
   }
   return r;
 }
@@ -1159,19 +1138,22 @@ void classify_location(Locate3Result& r, std::size_t t, unsigned zero_mask) noex
   }
 }
 
-[[nodiscard]] bool valid_cell(const Delaunay3Cell& c, std::size_t np, std::size_t nt) noexcept {
-  for (std::size_t i = 0; i < 4; ++i)
-    if (c.vertices[i] >= np || (c.neighbors[i] >= 0 && std::size_t(c.neighbors[i]) >= nt))
-      return false;
+// Tetrahedron t of dt has vertices below np and neighbours below nt (or none).
+[[nodiscard]] bool valid_tetrahedron(const Delaunay3Result& dt, std::size_t t, std::size_t np,
+                                     std::size_t nt) noexcept {
+  if (t >= dt.adjacency.size()) return false;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::uint32_t nb = dt.adjacency[t][i];
+    if (dt.tetrahedra[t][i] >= np || (nb != kNoTetrahedron && nb >= nt)) return false;
+  }
   return true;
 }
 
 template <Real T>
-[[nodiscard]] Sign face_side(std::span<const Vec3<T>> pts, const Delaunay3Cell& c, int i,
-                             const Vec3<T>& p) noexcept {
-  return orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],
-                  pts[c.vertices[std::size_t(kFace[i][1])]],
-                  pts[c.vertices[std::size_t(kFace[i][2])]], p);
+[[nodiscard]] Sign face_side(std::span<const Vec3<T>> pts, const std::array<std::uint32_t, 4>& v,
+                             int i, const Vec3<T>& p) noexcept {
+  return orient3d(pts[v[std::size_t(kFace[i][0])]], pts[v[std::size_t(kFace[i][1])]],
+                  pts[v[std::size_t(kFace[i][2])]], p);
 }
 
 }  // namespace
@@ -1198,19 +1180,19 @@ Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
   std::size_t came = nt;
   for (std::size_t step = 0; step < max_steps; ++step) {
     r.steps = step + 1;
-    const Delaunay3Cell& c = dt.tetrahedra[t];
-    if (!valid_cell(c, np, nt)) {
+    if (!valid_tetrahedron(dt, t, np, nt)) {
       r.status = Status::invalid_input;
       return r;
     }
+    const std::array<std::uint32_t, 4>& v = dt.tetrahedra[t];
     unsigned zero_mask = 0;
     bool moved = false;
     for (int i = 0; i < 4; ++i) {
-      const std::int32_t nb = c.neighbors[std::size_t(i)];
-      if (nb >= 0 && std::size_t(nb) == came) continue;  // p is strictly on this side
-      const Sign s = face_side(points, c, i, p);
+      const std::uint32_t nb = dt.adjacency[t][std::size_t(i)];
+      if (nb != kNoTetrahedron && std::size_t(nb) == came) continue;  // p is strictly this side
+      const Sign s = face_side(points, v, i, p);
       if (s == Sign::negative) {
-        if (nb < 0) {  // beyond a hull face: outside the convex hull
+        if (nb == kNoTetrahedron) {  // beyond a hull face: outside the convex hull
           r.location = Location3::outside;
           r.tetrahedron = static_cast<std::int32_t>(t);
           r.face = i;
@@ -1231,15 +1213,14 @@ Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
   // Out of steps: an exact scan.
   r.scanned = true;
   for (std::size_t u = 0; u < nt; ++u) {
-    const Delaunay3Cell& c = dt.tetrahedra[u];
-    if (!valid_cell(c, np, nt)) {
+    if (!valid_tetrahedron(dt, u, np, nt)) {
       r.status = Status::invalid_input;
       return r;
     }
     unsigned zero_mask = 0;
     bool in = true;
     for (int i = 0; i < 4 && in; ++i) {
-      const Sign s = face_side(points, c, i, p);
+      const Sign s = face_side(points, dt.tetrahedra[u], i, p);
       in = s != Sign::negative;
       if (s == Sign::zero) zero_mask |= 1u << i;
     }
@@ -1250,7 +1231,7 @@ Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
   }
   for (std::size_t u = 0; u < nt; ++u)
     for (int i = 0; i < 4; ++i)
-      if (dt.tetrahedra[u].neighbors[std::size_t(i)] < 0 &&
+      if (dt.adjacency[u][std::size_t(i)] == kNoTetrahedron &&
           face_side(points, dt.tetrahedra[u], i, p) == Sign::negative) {
         r.location = Location3::outside;
         r.tetrahedron = static_cast<std::int32_t>(u);
@@ -1293,8 +1274,8 @@ NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, std::span<const V
     return r;
   }
   std::size_t t = std::size_t(loc.tetrahedron);
-  std::uint32_t best = dt.tetrahedra[t].vertices[0];
-  for (const std::uint32_t v : dt.tetrahedra[t].vertices)
+  std::uint32_t best = dt.tetrahedra[t][0];
+  for (const std::uint32_t v : dt.tetrahedra[t])
     if (compare_sqr_distance(p, points[v], points[best]) == Sign::negative) best = v;
   // Greedy descent: search the star of `best` (the tetrahedra around it, reached across the
   // faces through it) for a strictly closer vertex. Each move strictly decreases the distance.
@@ -1306,13 +1287,12 @@ NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, std::span<const V
     bool moved = false;
     while (head < count && !moved) {
       const std::uint32_t s = star[head++];
-      const Delaunay3Cell& c = dt.tetrahedra[s];
-      if (!valid_cell(c, np, dt.tetrahedra.size())) {
+      if (!valid_tetrahedron(dt, s, np, dt.tetrahedra.size())) {
         r.status = Status::invalid_input;
         return r;
       }
       for (std::size_t i = 0; i < 4 && !moved; ++i) {
-        const std::uint32_t w = c.vertices[i];
+        const std::uint32_t w = dt.tetrahedra[s][i];
         if (w == best) continue;
         if (compare_sqr_distance(p, points[w], points[best]) == Sign::negative) {
           best = w;
@@ -1321,16 +1301,16 @@ NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, std::span<const V
           break;
         }
         // Face i contains `best` (it is opposite another corner): its neighbour is in the star.
-        const std::int32_t nb = c.neighbors[i];
-        if (nb < 0) continue;
+        const std::uint32_t nb = dt.adjacency[s][i];
+        if (nb == kNoTetrahedron) continue;
         bool seen = false;
-        for (std::size_t k = 0; k < count && !seen; ++k) seen = star[k] == std::uint32_t(nb);
+        for (std::size_t k = 0; k < count && !seen; ++k) seen = star[k] == nb;
         if (seen) continue;
         if (count == kStar) {  // an unusually large star: decide by scanning
           scan();
           return r;
         }
-        star[count++] = static_cast<std::uint32_t>(nb);
+        star[count++] = nb;
       }
     }
     if (!moved) break;
