@@ -223,7 +223,8 @@ Delaunay3Result Delaunay3<T>::take_result() {
   points_.clear();
   sorted_.clear();
   orig_.clear();
-  cells_.clear();
+  cell_v_.clear();
+  cell_n_.clear();
   mark_.clear();
   free_.clear();
   dimension_ = -1;
@@ -331,8 +332,8 @@ template <Real T>
 LOCUS_ALWAYS_INLINE inline void Delaunay3<T>::glue(std::uint32_t code,
                                                    std::uint32_t other) noexcept {
   if (other == kNone) return;
-  cells_[code >> 2].neighbors[code & 3u] = static_cast<std::int32_t>(other);
-  cells_[other >> 2].neighbors[other & 3u] = static_cast<std::int32_t>(code);
+  cell_n_[code >> 2][code & 3u] = static_cast<std::int32_t>(other);
+  cell_n_[other >> 2][other & 3u] = static_cast<std::int32_t>(code);
 }
 
 // Links the faces through `apex` of the given cells: the face through apex and edge x -> y
@@ -341,7 +342,7 @@ template <Real T>
 void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32_t apex) {
   edges_begin(3 * cells.size());
   for (const std::uint32_t t : cells) {
-    const auto& v = cells_[t].vertices;
+    const auto& v = cell_v_[t];
     if (v[3] == apex) {
       // The common case (a, b, c, apex): faces 0, 1, 2 are (apex, c, b), (apex, a, c) and
       // (apex, b, a) once rotated to start at the apex (kFace).
@@ -364,23 +365,22 @@ void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32
 template <Real T>
 LOCUS_ALWAYS_INLINE inline bool Delaunay3<T>::in_conflict(std::uint32_t t,
                                                           std::uint32_t v) const noexcept {
-  const Cell& c = cells_[t];
+  const auto& c_v = cell_v_[t];
+  const auto& c_n = cell_n_[t];
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T>& p = pts[v];
-  if (c.vertices[3] == kGhost) [[unlikely]] {
-    const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]];
+  if (c_v[3] == kGhost) [[unlikely]] {
+    const Vec3<T>&a = pts[c_v[0]], &b = pts[c_v[1]], &cc = pts[c_v[2]];
     const Sign s = lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p);
     if (s != Sign::zero) return s == Sign::positive;
     // On the hull plane: the ghost goes with the real cell under the face, so the face is
     // either inside the cavity or not on its boundary (never a flat new cell).
-    const Cell& r = cells_[std::uint32_t(c.neighbors[3]) >> 2];
-    const Vec3<T>&ra = pts[r.vertices[0]], &rb = pts[r.vertices[1]], &rc = pts[r.vertices[2]],
-          &rd = pts[r.vertices[3]];
+    const auto& r_v = cell_v_[std::uint32_t(c_n[3]) >> 2];
+    const Vec3<T>&ra = pts[r_v[0]], &rb = pts[r_v[1]], &rc = pts[r_v[2]], &rd = pts[r_v[3]];
     return (lattice_ ? insphere_perturbed_lattice(ra, rb, rc, rd, p)
                      : insphere_perturbed_inline(ra, rb, rc, rd, p)) == Sign::positive;
   }
-  const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]],
-        &d = pts[c.vertices[3]];
+  const Vec3<T>&a = pts[c_v[0]], &b = pts[c_v[1]], &cc = pts[c_v[2]], &d = pts[c_v[3]];
   if (lattice_) return insphere_perturbed_lattice(a, b, cc, d, p) == Sign::positive;
   return insphere_perturbed_inline(a, b, cc, d, p) == Sign::positive;
 }
@@ -389,22 +389,21 @@ template <Real T>
 std::uint32_t Delaunay3<T>::scan(std::uint32_t v, std::uint32_t* duplicate) noexcept {
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T>& p = pts[v];
-  const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
+  const std::uint32_t nc = static_cast<std::uint32_t>(cell_v_.size());
   for (std::uint32_t t = 0; t < nc; ++t) {
-    const Cell& c = cells_[t];
-    if (c.vertices[3] >= kDead) continue;
+    const auto& c_v = cell_v_[t];
+    if (c_v[3] >= kDead) continue;
     bool inside = true;
     for (int i = 0; i < 4 && inside; ++i)
-      inside = orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],
-                        pts[c.vertices[std::size_t(kFace[i][1])]],
-                        pts[c.vertices[std::size_t(kFace[i][2])]], p) != Sign::negative;
+      inside = orient3d(pts[c_v[std::size_t(kFace[i][0])]], pts[c_v[std::size_t(kFace[i][1])]],
+                        pts[c_v[std::size_t(kFace[i][2])]], p) != Sign::negative;
     if (!inside) continue;
     for (int i = 0; i < 4; ++i)
-      if (same_point(pts[c.vertices[std::size_t(i)]], p)) *duplicate = c.vertices[std::size_t(i)];
+      if (same_point(pts[c_v[std::size_t(i)]], p)) *duplicate = c_v[std::size_t(i)];
     return t;
   }
   for (std::uint32_t t = 0; t < nc; ++t)
-    if (cells_[t].vertices[3] == kGhost && in_conflict(t, v)) return t;
+    if (cell_v_[t][3] == kGhost && in_conflict(t, v)) return t;
   return kNone;
 }
 
@@ -414,22 +413,23 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
   // A visibility walk in a Delaunay tetrahedralization visits no cell twice (Edelsbrunner's
   // acyclicity of the in-front relation), so it ends within the cell count; the budget guards
   // a corrupted structure. The face order is varied per step (a remembering stochastic walk).
-  const std::size_t budget = cells_.size() + 64;
+  const std::size_t budget = cell_v_.size() + 64;
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T> p = pts[v];
   std::uint32_t came = kNone;
   std::uint32_t rng = walk_rng_;
   for (std::size_t step = 0; step < budget; ++step) {
-    const Cell& c = cells_[t];
-    if (c.vertices[3] == kGhost) {
-      const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]];
+    const auto& c_v = cell_v_[t];
+    const auto& c_n = cell_n_[t];
+    if (c_v[3] == kGhost) {
+      const Vec3<T>&a = pts[c_v[0]], &b = pts[c_v[1]], &cc = pts[c_v[2]];
       if ((lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p)) == Sign::positive) {
         walk_rng_ = rng;
         return t;
       }
       // p is on the real side of the hull face or on its plane: test every face from inside.
       came = kNone;
-      t = std::uint32_t(c.neighbors[3]) >> 2;
+      t = std::uint32_t(c_n[3]) >> 2;
       continue;
     }
     rng = rng * 1664525u + 1013904223u;
@@ -438,11 +438,11 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
     bool moved = false;
     for (int j = 0; j < 4; ++j) {
       const int i = (start + j) & 3;
-      const std::uint32_t nb = std::uint32_t(c.neighbors[std::size_t(i)]) >> 2;
+      const std::uint32_t nb = std::uint32_t(c_n[std::size_t(i)]) >> 2;
       if (nb == came) continue;
-      const Vec3<T>& a = pts[c.vertices[std::size_t(kFace[i][0])]];
-      const Vec3<T>& b = pts[c.vertices[std::size_t(kFace[i][1])]];
-      const Vec3<T>& cc = pts[c.vertices[std::size_t(kFace[i][2])]];
+      const Vec3<T>& a = pts[c_v[std::size_t(kFace[i][0])]];
+      const Vec3<T>& b = pts[c_v[std::size_t(kFace[i][1])]];
+      const Vec3<T>& cc = pts[c_v[std::size_t(kFace[i][2])]];
       const Sign s = lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p);
       if (s == Sign::negative) {
         came = t;
@@ -455,7 +455,7 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
     if (moved) continue;
     if (zeros >= 3) {
       for (int i = 0; i < 4; ++i)
-        if (same_point(pts[c.vertices[std::size_t(i)]], p)) *duplicate = c.vertices[std::size_t(i)];
+        if (same_point(pts[c_v[std::size_t(i)]], p)) *duplicate = c_v[std::size_t(i)];
     }
     walk_rng_ = rng;
     return t;
@@ -488,13 +488,13 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
   cavity_.push_back(t0);
   mark[t0] = in;
   // Every cell is marked at most once, so the search ends within the cell count.
-  std::size_t budget = cells_.size() + 16;
+  std::size_t budget = cell_v_.size() + 16;
   while (!stack_.empty()) {
     if (budget-- == 0) return false;
     const std::uint32_t c = stack_.back();
     stack_.pop_back();
     for (int i = 0; i < 4; ++i) {
-      const std::int32_t code = cells_[c].neighbors[std::size_t(i)];
+      const std::int32_t code = cell_n_[c][std::size_t(i)];
       const std::uint32_t nb = std::uint32_t(code) >> 2;
       const std::uint32_t m = mark[nb];
       if (m == in) continue;
@@ -507,10 +507,9 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
         }
         mark[nb] = out;
       }
-      const Cell& cc = cells_[c];
-      boundary_.push_back({cc.vertices[std::size_t(kFace[i][0])],
-                           cc.vertices[std::size_t(kFace[i][1])],
-                           cc.vertices[std::size_t(kFace[i][2])], code});
+      const auto& cc_v = cell_v_[c];
+      boundary_.push_back({cc_v[std::size_t(kFace[i][0])], cc_v[std::size_t(kFace[i][1])],
+                           cc_v[std::size_t(kFace[i][2])], code});
     }
   }
   // New cells: the cavity's slots first (a cavity with all its vertices on its boundary has
@@ -525,38 +524,40 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
       s = free_.back();
       free_.pop_back();
     } else {
-      s = static_cast<std::uint32_t>(cells_.size());
-      cells_.push_back({});
+      s = static_cast<std::uint32_t>(cell_v_.size());
+      cell_v_.push_back({});
+      cell_n_.push_back({});
       mark_.push_back(0);
       mark = mark_.data();
     }
     fresh_.push_back(s);
   }
   for (std::size_t k = nb_faces; k < cavity_.size(); ++k) {
-    cells_[cavity_[k]].vertices = {kNone, kNone, kNone, kDead};
+    cell_v_[cavity_[k]] = {kNone, kNone, kNone, kDead};
     free_.push_back(cavity_[k]);
   }
   for (std::size_t k = 0; k < nb_faces; ++k) {
     const Boundary& f = boundary_[k];
     const std::uint32_t s = fresh_[k];
-    Cell& cell = cells_[s];
+    std::array<std::uint32_t, 4>& cell_v = cell_v_[s];
+    std::array<std::uint32_t, 4>& cell_n = cell_n_[s];
     // (a, b, c, v) is positive: v sees the face from the cavity side. A ghost vertex is moved
     // to corner 3 by an even permutation.
     int apex_corner = 3;
     if (f.a == kGhost) {
-      cell.vertices = {v, f.c, f.b, kGhost};
+      cell_v = {v, f.c, f.b, kGhost};
       apex_corner = 0;
     } else if (f.b == kGhost) {
-      cell.vertices = {f.c, v, f.a, kGhost};
+      cell_v = {f.c, v, f.a, kGhost};
       apex_corner = 1;
     } else if (f.c == kGhost) {
-      cell.vertices = {f.b, f.a, v, kGhost};
+      cell_v = {f.b, f.a, v, kGhost};
       apex_corner = 2;
     } else {
-      cell.vertices = {f.a, f.b, f.c, v};
+      cell_v = {f.a, f.b, f.c, v};
     }
-    cell.neighbors[std::size_t(apex_corner)] = f.outside;
-    cells_[std::uint32_t(f.outside) >> 2].neighbors[std::uint32_t(f.outside) & 3u] =
+    cell_n[std::size_t(apex_corner)] = f.outside;
+    cell_n_[std::uint32_t(f.outside) >> 2][std::uint32_t(f.outside) & 3u] =
         static_cast<std::int32_t>(4 * s + std::uint32_t(apex_corner));
   }
   link_around(fresh_, v);
@@ -588,7 +589,8 @@ void Delaunay3<T>::lower_dimensional(int dimension) {
 
 template <Real T>
 void Delaunay3<T>::run() {
-  cells_.clear();
+  cell_v_.clear();
+  cell_n_.clear();
   mark_.clear();
   free_.clear();
   epoch_ = 0;
@@ -662,19 +664,22 @@ void Delaunay3<T>::run() {
                 d = static_cast<std::uint32_t>(k3);
   if (orient3d(pts[a], pts[b], pts[c], pts[d]) == Sign::negative) std::swap(c, d);
 
-  cells_.reserve(7 * n + 64);
+  cell_v_.reserve(7 * n + 64);
+
+  cell_n_.reserve(7 * n + 64);
   mark_.reserve(7 * n + 64);
-  cells_.resize(5);
+  cell_v_.resize(5);
+  cell_n_.resize(5);
   mark_.assign(5, 0);
-  cells_[0].vertices = {a, b, c, d};
+  cell_v_[0] = {a, b, c, d};
   for (int i = 0; i < 4; ++i) {
-    const std::uint32_t f0 = cells_[0].vertices[std::size_t(kFace[i][0])];
-    const std::uint32_t f1 = cells_[0].vertices[std::size_t(kFace[i][1])];
-    const std::uint32_t f2 = cells_[0].vertices[std::size_t(kFace[i][2])];
+    const std::uint32_t f0 = cell_v_[0][std::size_t(kFace[i][0])];
+    const std::uint32_t f1 = cell_v_[0][std::size_t(kFace[i][1])];
+    const std::uint32_t f2 = cell_v_[0][std::size_t(kFace[i][2])];
     const std::uint32_t g = 1 + std::uint32_t(i);
-    cells_[g].vertices = {f0, f2, f1, kGhost};  // the outside on the positive side
-    cells_[g].neighbors[3] = static_cast<std::int32_t>(4 * 0 + std::uint32_t(i));
-    cells_[0].neighbors[std::size_t(i)] = static_cast<std::int32_t>(4 * g + 3);
+    cell_v_[g] = {f0, f2, f1, kGhost};  // the outside on the positive side
+    cell_n_[g][3] = static_cast<std::int32_t>(4 * 0 + std::uint32_t(i));
+    cell_n_[0][std::size_t(i)] = static_cast<std::int32_t>(4 * g + 3);
   }
   const std::uint32_t ghosts[4] = {1, 2, 3, 4};
   link_around(ghosts, kGhost);
@@ -711,33 +716,45 @@ void Delaunay3<T>::compact(bool in_place) {
   }
   if (dimension_ < 3) return;
   // New index of each real cell (mark_ is reused as the map); ghosts and free slots map to
-  // kNoTetrahedron. The result is written in one forward pass, straight into its final layout.
-  const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
+  // kNoTetrahedron, building codes 4 * cell + face to the neighbour's new index.
+  const std::uint32_t nc = static_cast<std::uint32_t>(cell_v_.size());
   std::uint32_t count = 0;
   for (std::uint32_t t = 0; t < nc; ++t)
-    mark_[t] = cells_[t].vertices[3] >= kDead ? kNoTetrahedron : count++;
-  r.tetrahedra.resize(count);
-  r.adjacency.resize(count);
-  std::array<std::uint32_t, 4>* tets = r.tetrahedra.data();
-  std::array<std::uint32_t, 4>* adjacency = r.adjacency.data();
+    mark_[t] = cell_v_[t][3] >= kDead ? kNoTetrahedron : count++;
   const std::uint32_t* map = mark_.data();
   const std::uint32_t* orig = orig_.data();
+  std::array<std::uint32_t, 4>* tets = cell_v_.data();
+  std::array<std::uint32_t, 4>* adjacency = cell_n_.data();
+  if (!in_place) {
+    r.tetrahedra.resize(count);
+    r.adjacency.resize(count);
+    tets = r.tetrahedra.data();
+    adjacency = r.adjacency.data();
+  }
+  // In place, slot map[t] <= t, so a forward pass packs the arrays (already in the result's
+  // type) without overwriting unread cells, and they are handed over: no second copy of 32 bytes
+  // per cell is allocated or touched.
   for (std::uint32_t t = 0; t < nc; ++t) {
-    const Cell& c = cells_[t];
-    if (c.vertices[3] == kGhost) {
-      r.hull.push_back({orig[c.vertices[0]], orig[c.vertices[1]], orig[c.vertices[2]]});
+    const std::array<std::uint32_t, 4> v = cell_v_[t];
+    if (v[3] == kGhost) {
+      r.hull.push_back({orig[v[0]], orig[v[1]], orig[v[2]]});
       continue;
     }
-    if (c.vertices[3] == kDead) continue;
+    if (v[3] == kDead) continue;
+    const std::array<std::uint32_t, 4> n = cell_n_[t];
     const std::uint32_t k = map[t];
     for (std::size_t i = 0; i < 4; ++i) {
-      tets[k][i] = orig[c.vertices[i]];
-      adjacency[k][i] = map[std::uint32_t(c.neighbors[i]) >> 2];
+      tets[k][i] = orig[v[i]];
+      adjacency[k][i] = map[n[i] >> 2];
     }
   }
   if (in_place) {
-    cells_.clear();
-    cells_.shrink_to_fit();
+    cell_v_.resize(count);
+    cell_n_.resize(count);
+    r.tetrahedra.swap(cell_v_);
+    r.adjacency.swap(cell_n_);
+    cell_v_.clear();
+    cell_n_.clear();
     mark_.clear();
     mark_.shrink_to_fit();
     sorted_.clear();
@@ -749,7 +766,7 @@ void Delaunay3<T>::compact(bool in_place) {
   }
   // The query start: a real cell of the last inserted point (under it when last_ is a ghost).
   std::uint32_t last = last_;
-  if (cells_[last].vertices[3] == kGhost) last = std::uint32_t(cells_[last].neighbors[3]) >> 2;
+  if (cell_v_[last][3] == kGhost) last = std::uint32_t(cell_n_[last][3]) >> 2;
   last_out_ = mark_[last] == kNone ? 0 : static_cast<std::int32_t>(mark_[last]);
   // The marks were overwritten: restart the epochs.
   std::fill(mark_.begin(), mark_.end(), 0u);
@@ -762,18 +779,20 @@ template <Real T>
 void Delaunay3<T>::planar_triangles(bool in_place) {
   Delaunay3Result& r = result_;
   r.triangles.clear();
-  for (const Cell& c : cells_) {
-    if (c.vertices[3] >= kDead) continue;
+  for (const std::array<std::uint32_t, 4>& c_v : cell_v_) {
+    if (c_v[3] >= kDead) continue;
     int j = 0;
-    while (j < 3 && c.vertices[std::size_t(j)] != apex_) ++j;
+    while (j < 3 && c_v[std::size_t(j)] != apex_) ++j;
     std::array<std::uint32_t, 3> t;
-    for (int k = 0; k < 3; ++k) t[std::size_t(k)] = orig_[c.vertices[std::size_t(kFace[j][k])]];
+    for (int k = 0; k < 3; ++k) t[std::size_t(k)] = orig_[c_v[std::size_t(kFace[j][k])]];
     if (apex_flip_) std::swap(t[1], t[2]);
     r.triangles.push_back(t);
   }
   if (in_place) {
-    cells_.clear();
-    cells_.shrink_to_fit();
+    cell_v_.clear();
+    cell_n_.clear();
+    cell_v_.shrink_to_fit();
+    cell_n_.shrink_to_fit();
     mark_.clear();
     mark_.shrink_to_fit();
     sorted_.clear();

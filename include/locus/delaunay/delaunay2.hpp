@@ -121,18 +121,29 @@ class Delaunay2 {
   bool in_conflict(std::uint32_t p, std::uint32_t e) const noexcept;
   void compact(bool in_place);
   void lower_dimensional(std::span<const Vec2<T>> in);
-  [[nodiscard]] std::uint32_t* adj() noexcept { return adj_.data(); }
-  [[nodiscard]] const std::uint32_t* adj() const noexcept { return adj_.data(); }
+  // The triangles are stored in the result's type (compact() hands them over in place) and
+  // addressed as flat half-edge slots 3t + i: std::array<std::uint32_t, 3> is exactly three
+  // uint32 without padding (static_assert in the source).
+  [[nodiscard]] static std::uint32_t* flat(std::vector<std::array<std::uint32_t, 3>>& v) noexcept {
+    return reinterpret_cast<std::uint32_t*>(v.data());
+  }
+  [[nodiscard]] std::uint32_t* tri() noexcept { return flat(tri_); }
+  [[nodiscard]] const std::uint32_t* tri() const noexcept {
+    return reinterpret_cast<const std::uint32_t*>(tri_.data());
+  }
+  [[nodiscard]] std::uint32_t* adj() noexcept { return flat(adj_); }
+  [[nodiscard]] const std::uint32_t* adj() const noexcept {
+    return reinterpret_cast<const std::uint32_t*>(adj_.data());
+  }
 
   std::vector<Vec2<T>> points_;  // as given
   std::vector<Vec2<T>> sorted_;  // internal vertex k = points_[orig_[k]], Hilbert order
   std::vector<std::uint32_t> orig_;
-  // Internally half-edges: slot 3t + i of tri_ is vertex i of triangle t, adj_[3t + i] the
+  // Internally half-edges: slot 3t + i of tri() is vertex i of triangle t, adj()[3t + i] the
   // half-edge opposite to the one from vertex i to vertex i + 1 (the surface is closed).
-  std::vector<std::uint32_t> tri_;    // with ghost triangles (vertex kGhost at corner 2)
-  std::vector<std::uint32_t> adj_;    // opposite half-edge
-  std::vector<std::uint32_t> order_;  // compact(): the ghost triangles
-  std::vector<std::uint32_t> moved_;  // compact(): new slot of the real triangles past the end
+  std::vector<std::array<std::uint32_t, 3>> tri_;  // with ghost triangles (kGhost at corner 2)
+  std::vector<std::array<std::uint32_t, 3>> adj_;  // opposite half-edges
+  std::vector<std::uint32_t> order_;               // compact(): the ghost triangles
   std::vector<std::uint32_t> stack_;
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint64_t> keys_tmp_;

@@ -162,10 +162,6 @@ class Delaunay3 {
   [[nodiscard]] std::span<const Vec3<T>> points() const noexcept { return points_; }
 
  private:
-  struct Cell {  // while building: neighbors hold 4 * cell + face, ghosts have vertex 3 = kGhost
-    std::array<std::uint32_t, 4> vertices;
-    std::array<std::int32_t, 4> neighbors;
-  };
   struct Boundary {  // a face of the cavity: vertices seen from inside, and the cell outside
     std::uint32_t a, b, c;
     std::int32_t outside;
@@ -191,7 +187,10 @@ class Delaunay3 {
   std::vector<Vec3<T>> points_;  // as given
   std::vector<Vec3<T>> sorted_;  // internal vertex k = points_[orig_[k]], BRIO/Hilbert order
   std::vector<std::uint32_t> orig_;
-  std::vector<Cell> cells_;
+  // Cells in the result's types (compact() hands them over in place): vertices (a ghost cell has
+  // kGhost at corner 3) and, while building, neighbours as codes 4 * cell + face.
+  std::vector<std::array<std::uint32_t, 4>> cell_v_;
+  std::vector<std::array<std::uint32_t, 4>> cell_n_;
   std::vector<std::uint32_t> mark_;  // per cell: 2 * epoch (in cavity), 2 * epoch + 1 (not)
   std::uint32_t epoch_ = 0;
   std::vector<std::uint32_t> stack_, cavity_, fresh_, free_;
