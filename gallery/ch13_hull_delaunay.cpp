@@ -928,21 +928,16 @@ bool fig_13_41(SvgWriter& w) {
 // ---- 13.7 Delaunay triangulation ---------------------------------------------------------------
 
 // Triangles of a Delaunay2Result as index triples.
-std::vector<Tri> triangles_of(const Delaunay2Result& dt) {
-  std::vector<Tri> out;
-  for (std::size_t t = 0; t < dt.triangle_count(); ++t)
-    out.push_back({dt.triangles[3 * t], dt.triangles[3 * t + 1], dt.triangles[3 * t + 2]});
-  return out;
-}
+std::vector<Tri> triangles_of(const Delaunay2Result& dt) { return dt.triangles; }
 
 void draw_edges(SvgWriter& w, const std::vector<Vec2d>& pts, const Delaunay2Result& dt,
                 const Vec2d& off, const SvgStyle& s) {
-  for (std::size_t e = 0; e < dt.triangles.size(); ++e) {
-    const std::int32_t twin = dt.halfedges[e];
-    if (twin >= 0 && static_cast<std::size_t>(twin) < e) continue;
-    w.segment(off + pts[dt.triangles[e]],
-              off + pts[dt.triangles[next_halfedge(static_cast<Idx>(e))]], s);
-  }
+  for (std::size_t t = 0; t < dt.triangle_count(); ++t)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Idx twin = dt.adjacency[t][i];  // each interior edge once, from its lower triangle
+      if (twin != kNoTriangle && twin < t) continue;
+      w.segment(off + pts[dt.triangles[t][i]], off + pts[dt.triangles[t][(i + 1) % 3]], s);
+    }
 }
 
 // 13.42: two triangulations of one point set, both covering its convex hull: (a) every point is
@@ -992,11 +987,15 @@ std::optional<QuadPair> quad_pair() {
   QuadPair q;
   const Delaunay2Result dt = delaunay(std::span<const Vec2d>(q.p));
   if (dt.status != Status::ok || dt.triangle_count() != 2) return std::nullopt;
-  for (std::size_t e = 0; e < 6; ++e) {
-    if (dt.halfedges[e] < 0) continue;
-    const Idx u = dt.triangles[e], v = dt.triangles[next_halfedge(static_cast<Idx>(e))];
-    const Idx x = dt.triangles[prev_halfedge(static_cast<Idx>(e))];
-    const Idx y = dt.triangles[prev_halfedge(static_cast<Idx>(dt.halfedges[e]))];
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Idx across = dt.adjacency[0][i];
+    if (across == kNoTriangle) continue;
+    const Tri& t0 = dt.triangles[0];
+    const Tri& t1 = dt.triangles[across];
+    const Idx u = t0[i], v = t0[(i + 1) % 3], x = t0[(i + 2) % 3];
+    Idx y = t1[0];  // the vertex of the other triangle off the shared edge
+    for (const Idx k : t1)
+      if (k != u && k != v) y = k;
     q.del = {Tri{u, v, x}, Tri{v, u, y}};
     q.other = {Tri{x, y, v}, Tri{y, x, u}};
     return q;
@@ -1077,19 +1076,19 @@ bool fig_13_45(SvgWriter& w) {
     if (loc.location != (k == 0 ? Location::inside : Location::on_edge)) return false;
     std::vector<Idx> tris{static_cast<Idx>(loc.triangle)};
     if (k == 1) {
-      const std::int32_t twin = dt.halfedges[3 * static_cast<std::size_t>(loc.triangle) +
-                                             static_cast<std::size_t>(loc.corner)];
-      if (twin >= 0) tris.push_back(static_cast<Idx>(twin) / 3);
+      const Idx twin = dt.adjacency[static_cast<std::size_t>(loc.triangle)]
+                                   [static_cast<std::size_t>(loc.corner)];
+      if (twin != kNoTriangle) tris.push_back(twin);
     }
     for (Idx t : tris) {
       std::vector<Vec2d> v;
-      for (std::size_t i = 0; i < 3; ++i) v.push_back(off + small_set[dt.triangles[3 * t + i]]);
+      for (std::size_t i = 0; i < 3; ++i) v.push_back(off + small_set[dt.triangles[t][i]]);
       w.polygon(v, filled(c::blue, 0.15, 0.5));
     }
     draw_edges(w, small_set, dt, off, pen(c::black, 1.3));
     for (Idx t : tris)
       for (std::size_t i = 0; i < 3; ++i)
-        w.segment(off + p, off + small_set[dt.triangles[3 * t + i]], pen(c::red, 1.8));
+        w.segment(off + p, off + small_set[dt.triangles[t][i]], pen(c::red, 1.8));
     w.point(off + p, dot(c::black, 4));
     caption_at(w, off + Vec2d{-1.2, -3.0}, k == 0 ? "(a) inside a triangle" : "(b) on an edge");
   }
@@ -1196,8 +1195,8 @@ std::vector<std::size_t> conflicts(const Delaunay2Result& dt, const std::vector<
                                    const Vec2d& p) {
   std::vector<std::size_t> out;
   for (std::size_t t = 0; t < dt.triangle_count(); ++t)
-    if (incircle(in[dt.triangles[3 * t]], in[dt.triangles[3 * t + 1]], in[dt.triangles[3 * t + 2]],
-                 p) == Sign::positive)
+    if (incircle(in[dt.triangles[t][0]], in[dt.triangles[t][1]], in[dt.triangles[t][2]], p) ==
+        Sign::positive)
       out.push_back(t);
   return out;
 }
@@ -1221,8 +1220,8 @@ bool fig_13_48(SvgWriter& w) {
   if (bad.empty()) return false;
   const auto m = w.mapping();
   for (std::size_t t : bad) {
-    const Triangle2<double> tri{in[dt.triangles[3 * t]], in[dt.triangles[3 * t + 1]],
-                                in[dt.triangles[3 * t + 2]]};
+    const Triangle2<double> tri{in[dt.triangles[t][0]], in[dt.triangles[t][1]],
+                                in[dt.triangles[t][2]]};
     draw(w, tri, filled(c::blue, 0.15, 0.5));
     const auto circ = circumscribed_circle(tri);
     if (!circ) return false;
@@ -1249,21 +1248,20 @@ bool fig_13_49(SvgWriter& w) {
   const std::set<std::size_t> bad_set(bad.begin(), bad.end());
   std::set<std::pair<Idx, Idx>> fan;  // boundary edges, counter-clockwise around the polygon
   for (std::size_t t : bad) {
-    w.polygon(std::vector<Vec2d>{in[dt.triangles[3 * t]], in[dt.triangles[3 * t + 1]],
-                                 in[dt.triangles[3 * t + 2]]},
-              filled(c::blue, 0.12, 0.3));
+    w.polygon(
+        std::vector<Vec2d>{in[dt.triangles[t][0]], in[dt.triangles[t][1]], in[dt.triangles[t][2]]},
+        filled(c::blue, 0.12, 0.3));
     for (std::size_t i = 0; i < 3; ++i) {
-      const std::size_t e = 3 * t + i;
-      const std::int32_t twin = dt.halfedges[e];
-      if (twin >= 0 && bad_set.count(static_cast<std::size_t>(twin) / 3)) continue;
-      fan.insert({dt.triangles[e], dt.triangles[next_halfedge(static_cast<Idx>(e))]});
+      const Idx twin = dt.adjacency[t][i];
+      if (twin != kNoTriangle && bad_set.count(twin)) continue;
+      fan.insert({dt.triangles[t][i], dt.triangles[t][(i + 1) % 3]});
     }
   }
   std::set<std::pair<Idx, Idx>> at_p;  // edges opposite P in the new triangulation
   for (std::size_t t = 0; t < dt2.triangle_count(); ++t)
     for (std::size_t i = 0; i < 3; ++i)
-      if (dt2.triangles[3 * t + i] == pi)
-        at_p.insert({dt2.triangles[3 * t + (i + 1) % 3], dt2.triangles[3 * t + (i + 2) % 3]});
+      if (dt2.triangles[t][i] == pi)
+        at_p.insert({dt2.triangles[t][(i + 1) % 3], dt2.triangles[t][(i + 2) % 3]});
   if (fan != at_p) return false;
   bw_mesh(w, in, dt);
   for (const auto& [u, v] : fan) {

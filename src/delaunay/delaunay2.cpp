@@ -25,6 +25,9 @@ namespace locus {
 
 namespace {
 
+// Delaunay2 addresses its std::array triangles as flat half-edge slots (delaunay2.hpp).
+static_assert(sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::uint32_t));
+
 constexpr std::uint32_t kGhost = 0xFFFFFFFFu;
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
@@ -72,8 +75,8 @@ LocateResult locate(const Delaunay2Result& dt, std::span<const Vec2<T>> points, 
                     std::int32_t start, std::size_t max_steps) noexcept {
   LocateResult r;
   r.status = Status::ok;
-  const std::size_t nt = dt.triangles.size() / 3;
-  if (nt == 0 || dt.halfedges.size() != dt.triangles.size()) {
+  const std::size_t nt = dt.triangles.size();
+  if (nt == 0 || dt.adjacency.size() != nt) {
     r.status = Status::empty_input;
     return r;
   }
@@ -84,31 +87,31 @@ LocateResult locate(const Delaunay2Result& dt, std::span<const Vec2<T>> points, 
   if (max_steps == 0) max_steps = 4 * nt + 16;
   std::uint32_t t =
       (start >= 0 && static_cast<std::size_t>(start) < nt) ? static_cast<std::uint32_t>(start) : 0u;
-  std::uint32_t came = kNone;
+  std::uint32_t came = kNoTriangle;  // the triangle the walk came from (p is beyond that edge)
   for (std::size_t step = 0; step < max_steps; ++step) {
     r.steps = step + 1;
-    const std::uint32_t base = 3 * t;
+    const std::array<std::uint32_t, 3>& v = dt.triangles[t];
+    const std::array<std::uint32_t, 3>& nb = dt.adjacency[t];
     unsigned zero_mask = 0;
     bool moved = false;
     for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t e = base + i;
-      if (e == came) continue;
-      const std::uint32_t a = dt.triangles[e], b = dt.triangles[nxt(e)];
-      if (a >= points.size() || b >= points.size()) {
+      const std::uint32_t o = nb[i];
+      if (o != kNoTriangle && o == came) continue;
+      const std::uint32_t a = v[i], b = v[i == 2 ? 0 : i + 1];
+      if (a >= points.size() || b >= points.size() || (o != kNoTriangle && o >= nt)) {
         r.status = Status::invalid_input;
         return r;
       }
       const Sign s = orient2d(points[a], points[b], p);
       if (s == Sign::negative) {
-        const std::int32_t o = dt.halfedges[e];
-        if (o < 0) {
+        if (o == kNoTriangle) {
           r.location = Location::outside;
           r.triangle = static_cast<std::int32_t>(t);
           r.corner = static_cast<int>(i);
           return r;
         }
-        came = static_cast<std::uint32_t>(o);
-        t = came / 3;
+        came = t;
+        t = o;
         moved = true;
         break;
       }
@@ -159,22 +162,14 @@ const Delaunay2Result& Delaunay2<T>::compute(std::span<const Vec2<T>> points) {
 }
 
 template <Real T>
-const Delaunay2Result& Delaunay2<T>::compute(const T* xy, std::size_t n) {
-  points_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) points_[i] = Vec2<T>{xy[2 * i], xy[2 * i + 1]};
-  run(points_);
-  return result();
-}
-
-template <Real T>
 LOCUS_ALWAYS_INLINE inline void Delaunay2<T>::set_triangle(
     std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t opp_ab,
     std::uint32_t opp_bc, std::uint32_t opp_ca, std::uint32_t* out) noexcept {
   const std::uint32_t base = 3 * t;
   if (a != kGhost && b != kGhost) [[likely]] {
-    tri_[base] = a;
-    tri_[base + 1] = b;
-    tri_[base + 2] = c;
+    tri()[base] = a;
+    tri()[base + 1] = b;
+    tri()[base + 2] = c;
     out[0] = base;
     out[1] = base + 1;
     out[2] = base + 2;
@@ -188,7 +183,7 @@ LOCUS_ALWAYS_INLINE inline void Delaunay2<T>::set_triangle(
   }
   const std::uint32_t v[3] = {a, b, c};
   const std::uint32_t o[3] = {opp_ab, opp_bc, opp_ca};
-  set_triangle_rotated(tri_.data(), adj(), t, v, o, out);
+  set_triangle_rotated(tri(), adj(), t, v, o, out);
 }
 
 template <Real T>
@@ -197,13 +192,13 @@ bool Delaunay2<T>::in_conflict(std::uint32_t v, std::uint32_t e) const noexcept 
   const std::uint32_t base = o - o % 3;
   const Vec2<T>* pts = sorted_.data();
   const Vec2<T>& p = pts[v];
-  if (tri_[base + 2] == kGhost) {
-    const Vec2<T>& u = pts[tri_[base]];
-    const Vec2<T>& w = pts[tri_[base + 1]];
+  if (tri()[base + 2] == kGhost) {
+    const Vec2<T>& u = pts[tri()[base]];
+    const Vec2<T>& w = pts[tri()[base + 1]];
     const Sign s = orient2d(u, w, p);
     return s == Sign::positive || (s == Sign::zero && strictly_between(u, w, p));
   }
-  return incircle(pts[tri_[o]], pts[tri_[nxt(o)]], pts[tri_[prv(o)]], p) == Sign::positive;
+  return incircle(pts[tri()[o]], pts[tri()[nxt(o)]], pts[tri()[prv(o)]], p) == Sign::positive;
 }
 
 template <Real T>
@@ -212,25 +207,25 @@ std::uint32_t Delaunay2<T>::scan(const Vec2<T>& p, std::uint32_t* duplicate) con
   const std::uint32_t nt = nt_;
   for (std::uint32_t t = 0; t < nt; ++t) {
     const std::uint32_t base = 3 * t;
-    if (tri_[base + 2] == kGhost) continue;
+    if (tri()[base + 2] == kGhost) continue;
     unsigned zero_mask = 0;
     bool inside = true;
     for (std::uint32_t i = 0; i < 3 && inside; ++i) {
-      const Sign s = orient2d(pts[tri_[base + i]], pts[tri_[nxt(base + i)]], p);
+      const Sign s = orient2d(pts[tri()[base + i]], pts[tri()[nxt(base + i)]], p);
       if (s == Sign::negative) inside = false;
       if (s == Sign::zero) zero_mask |= 1u << i;
     }
     if (!inside) continue;
     if ((zero_mask & (zero_mask - 1)) != 0) {  // two edges through p (no popcount call)
       const std::uint32_t corner = zero_mask == 3u ? 1u : (zero_mask == 6u ? 2u : 0u);
-      *duplicate = tri_[base + corner];
+      *duplicate = tri()[base + corner];
     }
     return t;
   }
   for (std::uint32_t t = 0; t < nt; ++t) {
     const std::uint32_t base = 3 * t;
-    if (tri_[base + 2] != kGhost) continue;
-    if (orient2d(pts[tri_[base]], pts[tri_[base + 1]], p) == Sign::positive) return t;
+    if (tri()[base + 2] != kGhost) continue;
+    if (orient2d(pts[tri()[base]], pts[tri()[base + 1]], p) == Sign::positive) return t;
   }
   return 0;  // unreachable for a valid triangulation
 }
@@ -245,8 +240,8 @@ std::uint32_t Delaunay2<T>::walk(const Vec2<T>& p, std::uint32_t t,
   std::uint32_t came = kNone;
   for (std::size_t step = 0; step < budget; ++step) {
     const std::uint32_t base = 3 * t;
-    if (tri_[base + 2] == kGhost) {
-      if (orient2d(pts[tri_[base]], pts[tri_[base + 1]], p) == Sign::positive) return t;
+    if (tri()[base + 2] == kGhost) {
+      if (orient2d(pts[tri()[base]], pts[tri()[base + 1]], p) == Sign::positive) return t;
       t = adj()[base] / 3;
       came = kNone;  // p may lie on that hull edge: test it again from inside
       continue;
@@ -256,7 +251,7 @@ std::uint32_t Delaunay2<T>::walk(const Vec2<T>& p, std::uint32_t t,
     for (std::uint32_t i = 0; i < 3; ++i) {
       const std::uint32_t e = base + i;
       if (e == came) continue;
-      const Sign s = orient2d(pts[tri_[e]], pts[tri_[nxt(e)]], p);
+      const Sign s = orient2d(pts[tri()[e]], pts[tri()[nxt(e)]], p);
       if (s == Sign::negative) {
         came = adj()[e];
         t = came / 3;
@@ -268,7 +263,7 @@ std::uint32_t Delaunay2<T>::walk(const Vec2<T>& p, std::uint32_t t,
     if (moved) continue;
     if ((zero_mask & (zero_mask - 1)) != 0) {  // two edges through p (no popcount call)
       const std::uint32_t corner = zero_mask == 3u ? 1u : (zero_mask == 6u ? 2u : 0u);
-      *duplicate = tri_[base + corner];
+      *duplicate = tri()[base + corner];
     }
     return t;
   }
@@ -285,11 +280,11 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
     return true;
   }
   const std::uint32_t base = 3 * t;
-  const std::uint32_t a = tri_[base], b = tri_[base + 1], c = tri_[base + 2];
+  const std::uint32_t a = tri()[base], b = tri()[base + 1], c = tri()[base + 2];
   const std::uint32_t oab = adj()[base], obc = adj()[base + 1], oca = adj()[base + 2];
   // run() sized the arrays for every point; insert() may need more.
-  if (3 * (std::size_t(nt_) + 2) > tri_.size()) {
-    const std::size_t size = std::max(2 * tri_.size(), 3 * (std::size_t(nt_) + 2));
+  if (std::size_t(nt_) + 2 > tri_.size()) {
+    const std::size_t size = std::max(2 * tri_.size(), std::size_t(nt_) + 2);
     tri_.resize(size);
     adj_.resize(size);
   }
@@ -327,10 +322,10 @@ bool Delaunay2<T>::insert_vertex(std::uint32_t v) {
     const std::uint32_t e = stack_[--depth];
     const std::uint32_t o = adj()[e];
     const std::uint32_t ob = o - o % 3;
-    const std::uint32_t x = tri_[e], y = tri_[nxt(e)];
-    const std::uint32_t z = tri_[prv(o)];
+    const std::uint32_t x = tri()[e], y = tri()[nxt(e)];
+    const std::uint32_t z = tri()[prv(o)];
     // The opposite triangle is (y, x, z); a ghost one (z or x or y at infinity) is rare.
-    if (tri_[ob + 2] == kGhost) [[unlikely]] {
+    if (tri()[ob + 2] == kGhost) [[unlikely]] {
       if (!in_conflict(v, e)) continue;
     } else if (incircle(pts[y], pts[x], pts[z], pv) != Sign::positive) {
       continue;
@@ -387,7 +382,7 @@ void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
     status_ = Status::empty_input;
     return;
   }
-  if (n >= std::size_t(0x7FFFFFFF) / 3) {  // half-edge indices must fit in int32
+  if (n >= std::size_t(0x7FFFFFFF) / 3) {  // 6 (n + 1) half-edge indices must fit in uint32
     status_ = Status::invalid_input;
     return;
   }
@@ -436,15 +431,15 @@ void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
 
   // A closed triangulation of n + 1 vertices (the ghost one included) has 2 (n + 1) - 4
   // triangles: allocate them all now, not six entries per insertion.
-  tri_.resize(6 * (n + 1));
-  adj_.resize(6 * (n + 1));
+  tri_.resize(2 * (n + 1));
+  adj_.resize(2 * (n + 1));
   nt_ = 4;
   // t0 = (a, b, c); ghosts t1 = (b, a, G), t2 = (c, b, G), t3 = (a, c, G).
   const std::uint32_t init_tri[12] = {a, b, c, b, a, kGhost, c, b, kGhost, a, c, kGhost};
   // Opposite half-edges: a->b (0) / b->a (3); b->c (1) / c->b (6); c->a (2) / a->c (9);
   // a->G (4) / G->a (11); b->G (7) / G->b (5); c->G (10) / G->c (8).
   const std::uint32_t init_adj[12] = {3, 6, 9, 0, 11, 7, 1, 5, 10, 2, 8, 4};
-  std::copy(init_tri, init_tri + 12, tri_.begin());
+  std::copy(init_tri, init_tri + 12, tri());
   std::copy(init_adj, init_adj + 12, adj());
   last_ = 0;
 
@@ -458,21 +453,22 @@ void Delaunay2<T>::run(std::span<const Vec2<T>> in) {
 }
 
 // The result: the real triangles packed into slots [0, count) with input point indices, their
-// opposite half-edges (-1 on the hull), the hull. Ghost triangles are few (one per hull edge) and
-// form one cycle around the hull, so instead of renumbering every triangle, the hull walk lists
-// them, their real neighbours' half-edges are cut (kNone, which is -1 as int32), and each ghost
-// slot below count receives the real triangle of a slot at or above count (its neighbours' back
-// links follow): O(h) moves and one pass that maps vertices to input indices. In place (from
-// take_result(), the internal arrays are not needed any more) the arrays are packed themselves
-// and handed over: no second pair of 12-byte-per-triangle arrays is allocated or touched;
-// otherwise copies are packed. Both give the same numbering.
+// neighbours as triangle indices (kNoTriangle on the hull), the hull. Ghost triangles are few (one
+// per hull edge) and form one cycle around the hull, so instead of renumbering every triangle, the
+// hull walk lists them, their real neighbours' half-edges are cut (kNone, equal to kNoTriangle),
+// and each ghost slot below count receives the real triangle of a slot at or above count (its
+// neighbours' back links follow): O(h) moves, then one pass maps vertices to input indices and
+// half-edges to triangles. In place (from take_result(), the internal arrays are not needed any
+// more) the arrays, already in the result's type, are packed themselves and handed over: no
+// second pair of 12-byte-per-triangle arrays is allocated or touched (fresh pages cost as much
+// as the pass); otherwise copies are packed. Both give the same numbering.
 template <Real T>
 void Delaunay2<T>::compact(bool in_place) {
   Delaunay2Result& r = result_;
   r.status = status_;
   r.dimension = dimension_;
   r.triangles.clear();
-  r.halfedges.clear();
+  r.adjacency.clear();
   r.duplicate_count = 0;
   for (std::size_t i = 0; i < r.duplicate_of.size(); ++i)
     r.duplicate_count += r.duplicate_of[i] != i ? 1u : 0u;
@@ -484,7 +480,7 @@ void Delaunay2<T>::compact(bool in_place) {
   const std::uint32_t nt = nt_;
   const std::uint32_t* opp = adj();
   std::uint32_t some_ghost = 0;
-  while (some_ghost + 1 < nt && tri_[3 * some_ghost + 2] != kGhost) ++some_ghost;
+  while (some_ghost + 1 < nt && tri()[3 * some_ghost + 2] != kGhost) ++some_ghost;
   // Hull: ghost (u, v, G) lies beyond hull edge v -> u; the ghost across its half-edge G -> u
   // is (w, u, G), so visiting u, w, ... follows the hull counter-clockwise.
   std::vector<std::uint32_t>& ghosts = order_;
@@ -492,7 +488,7 @@ void Delaunay2<T>::compact(bool in_place) {
   {
     std::uint32_t g = some_ghost;
     for (std::uint32_t guard = 0; guard < nt; ++guard) {
-      r.hull.push_back(orig_[tri_[3 * g]]);
+      r.hull.push_back(orig_[tri()[3 * g]]);
       ghosts.push_back(g);
       g = opp[3 * g + 2] / 3;
       if (g == some_ghost) break;
@@ -503,14 +499,14 @@ void Delaunay2<T>::compact(bool in_place) {
   const auto count = static_cast<std::uint32_t>(nt - ghosts.size());
   // Triangle of the last point (a real one), followed through the moves: the walk start of
   // locate().
-  std::uint32_t last_real = tri_[3 * last_ + 2] == kGhost ? opp[3 * last_] / 3 : last_;
-  std::uint32_t* tri = tri_.data();
+  std::uint32_t last_real = tri()[3 * last_ + 2] == kGhost ? opp[3 * last_] / 3 : last_;
+  std::uint32_t* tri_out = tri();
   std::uint32_t* adj_out = adj();
   if (!in_place) {
-    r.triangles.assign(tri_.begin(), tri_.begin() + 3 * std::ptrdiff_t(nt));
-    r.halfedges.assign(adj_.begin(), adj_.begin() + 3 * std::ptrdiff_t(nt));
-    tri = r.triangles.data();
-    adj_out = reinterpret_cast<std::uint32_t*>(r.halfedges.data());
+    r.triangles.assign(tri_.begin(), tri_.begin() + std::ptrdiff_t(nt));
+    r.adjacency.assign(adj_.begin(), adj_.begin() + std::ptrdiff_t(nt));
+    tri_out = flat(r.triangles);
+    adj_out = flat(r.adjacency);
   }
   for (const std::uint32_t g : ghosts) adj_out[adj_out[3 * g]] = kNone;
   std::sort(ghosts.begin(), ghosts.end());
@@ -522,7 +518,7 @@ void Delaunay2<T>::compact(bool in_place) {
     while (above < ghosts.size() && ghosts[above] == from) ++above, ++from;
     for (std::uint32_t i = 0; i < 3; ++i) {
       const std::uint32_t o = adj_out[3 * from + i];
-      tri[3 * hole + i] = tri[3 * from + i];
+      tri_out[3 * hole + i] = tri_out[3 * from + i];
       adj_out[3 * hole + i] = o;
       if (o != kNone) adj_out[o] = 3 * hole + i;
     }
@@ -530,19 +526,24 @@ void Delaunay2<T>::compact(bool in_place) {
     ++from;
   }
   last_out_ = last_real;
-  for (std::size_t e = 0; e < 3 * std::size_t(count); ++e) tri[e] = orig_[tri[e]];
+  static_assert(kNone == kNoTriangle);
+  const std::uint32_t* orig = orig_.data();
+  for (std::size_t e = 0; e < 3 * std::size_t(count); ++e) {
+    tri_out[e] = orig[tri_out[e]];
+    adj_out[e] = adj_out[e] == kNone ? kNoTriangle : adj_out[e] / 3;
+  }
   if (in_place) {
-    tri_.resize(3 * std::size_t(count));
-    adj_.resize(3 * std::size_t(count));
+    tri_.resize(count);
+    adj_.resize(count);
     r.triangles.swap(tri_);
-    r.halfedges.swap(adj_);
+    r.adjacency.swap(adj_);
     tri_.clear();
     adj_.clear();
     nt_ = 0;
     dimension_ = -1;
   } else {
-    r.triangles.resize(3 * std::size_t(count));
-    r.halfedges.resize(3 * std::size_t(count));
+    r.triangles.resize(count);
+    r.adjacency.resize(count);
   }
   ghosts.clear();
 }
@@ -601,19 +602,10 @@ Delaunay2Result delaunay(std::span<const Vec2<T>> points) {
   return d.take_result();
 }
 
-template <Real T>
-Delaunay2Result delaunay(const T* xy, std::size_t n) {
-  std::vector<Vec2<T>> points(n);
-  for (std::size_t i = 0; i < n; ++i) points[i] = Vec2<T>{xy[2 * i], xy[2 * i + 1]};
-  return delaunay(std::span<const Vec2<T>>(points));
-}
-
 template class Delaunay2<float>;
 template class Delaunay2<double>;
 template Delaunay2Result delaunay<float>(std::span<const Vec2<float>>);
 template Delaunay2Result delaunay<double>(std::span<const Vec2<double>>);
-template Delaunay2Result delaunay<float>(const float*, std::size_t);
-template Delaunay2Result delaunay<double>(const double*, std::size_t);
 template LocateResult locate<float>(const Delaunay2Result&, std::span<const Vec2<float>>,
                                     const Vec2<float>&, std::int32_t, std::size_t) noexcept;
 template LocateResult locate<double>(const Delaunay2Result&, std::span<const Vec2<double>>,

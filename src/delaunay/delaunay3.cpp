@@ -216,16 +216,6 @@ const Delaunay3Result& Delaunay3<T>::compute(std::span<const Vec3<T>> points) {
 }
 
 template <Real T>
-const Delaunay3Result& Delaunay3<T>::compute(const T* xyz, std::size_t n) {
-  points_.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    points_[i] = Vec3<T>{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-  run();
-  compact(false);
-  return result_;
-}
-
-template <Real T>
 Delaunay3Result Delaunay3<T>::take_result() {
   if (dirty_) compact(false);
   Delaunay3Result r = std::move(result_);
@@ -233,7 +223,8 @@ Delaunay3Result Delaunay3<T>::take_result() {
   points_.clear();
   sorted_.clear();
   orig_.clear();
-  cells_.clear();
+  cell_v_.clear();
+  cell_n_.clear();
   mark_.clear();
   free_.clear();
   dimension_ = -1;
@@ -341,8 +332,8 @@ template <Real T>
 LOCUS_ALWAYS_INLINE inline void Delaunay3<T>::glue(std::uint32_t code,
                                                    std::uint32_t other) noexcept {
   if (other == kNone) return;
-  cells_[code >> 2].neighbors[code & 3u] = static_cast<std::int32_t>(other);
-  cells_[other >> 2].neighbors[other & 3u] = static_cast<std::int32_t>(code);
+  cell_n_[code >> 2][code & 3u] = static_cast<std::int32_t>(other);
+  cell_n_[other >> 2][other & 3u] = static_cast<std::int32_t>(code);
 }
 
 // Links the faces through `apex` of the given cells: the face through apex and edge x -> y
@@ -351,7 +342,7 @@ template <Real T>
 void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32_t apex) {
   edges_begin(3 * cells.size());
   for (const std::uint32_t t : cells) {
-    const auto& v = cells_[t].vertices;
+    const auto& v = cell_v_[t];
     if (v[3] == apex) {
       // The common case (a, b, c, apex): faces 0, 1, 2 are (apex, c, b), (apex, a, c) and
       // (apex, b, a) once rotated to start at the apex (kFace).
@@ -374,23 +365,22 @@ void Delaunay3<T>::link_around(std::span<const std::uint32_t> cells, std::uint32
 template <Real T>
 LOCUS_ALWAYS_INLINE inline bool Delaunay3<T>::in_conflict(std::uint32_t t,
                                                           std::uint32_t v) const noexcept {
-  const Delaunay3Cell& c = cells_[t];
+  const auto& c_v = cell_v_[t];
+  const auto& c_n = cell_n_[t];
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T>& p = pts[v];
-  if (c.vertices[3] == kGhost) [[unlikely]] {
-    const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]];
+  if (c_v[3] == kGhost) [[unlikely]] {
+    const Vec3<T>&a = pts[c_v[0]], &b = pts[c_v[1]], &cc = pts[c_v[2]];
     const Sign s = lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p);
     if (s != Sign::zero) return s == Sign::positive;
     // On the hull plane: the ghost goes with the real cell under the face, so the face is
     // either inside the cavity or not on its boundary (never a flat new cell).
-    const Delaunay3Cell& r = cells_[std::uint32_t(c.neighbors[3]) >> 2];
-    const Vec3<T>&ra = pts[r.vertices[0]], &rb = pts[r.vertices[1]], &rc = pts[r.vertices[2]],
-          &rd = pts[r.vertices[3]];
+    const auto& r_v = cell_v_[std::uint32_t(c_n[3]) >> 2];
+    const Vec3<T>&ra = pts[r_v[0]], &rb = pts[r_v[1]], &rc = pts[r_v[2]], &rd = pts[r_v[3]];
     return (lattice_ ? insphere_perturbed_lattice(ra, rb, rc, rd, p)
                      : insphere_perturbed_inline(ra, rb, rc, rd, p)) == Sign::positive;
   }
-  const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]],
-        &d = pts[c.vertices[3]];
+  const Vec3<T>&a = pts[c_v[0]], &b = pts[c_v[1]], &cc = pts[c_v[2]], &d = pts[c_v[3]];
   if (lattice_) return insphere_perturbed_lattice(a, b, cc, d, p) == Sign::positive;
   return insphere_perturbed_inline(a, b, cc, d, p) == Sign::positive;
 }
@@ -399,22 +389,21 @@ template <Real T>
 std::uint32_t Delaunay3<T>::scan(std::uint32_t v, std::uint32_t* duplicate) noexcept {
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T>& p = pts[v];
-  const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
+  const std::uint32_t nc = static_cast<std::uint32_t>(cell_v_.size());
   for (std::uint32_t t = 0; t < nc; ++t) {
-    const Delaunay3Cell& c = cells_[t];
-    if (c.vertices[3] >= kDead) continue;
+    const auto& c_v = cell_v_[t];
+    if (c_v[3] >= kDead) continue;
     bool inside = true;
     for (int i = 0; i < 4 && inside; ++i)
-      inside = orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],
-                        pts[c.vertices[std::size_t(kFace[i][1])]],
-                        pts[c.vertices[std::size_t(kFace[i][2])]], p) != Sign::negative;
+      inside = orient3d(pts[c_v[std::size_t(kFace[i][0])]], pts[c_v[std::size_t(kFace[i][1])]],
+                        pts[c_v[std::size_t(kFace[i][2])]], p) != Sign::negative;
     if (!inside) continue;
     for (int i = 0; i < 4; ++i)
-      if (same_point(pts[c.vertices[std::size_t(i)]], p)) *duplicate = c.vertices[std::size_t(i)];
+      if (same_point(pts[c_v[std::size_t(i)]], p)) *duplicate = c_v[std::size_t(i)];
     return t;
   }
   for (std::uint32_t t = 0; t < nc; ++t)
-    if (cells_[t].vertices[3] == kGhost && in_conflict(t, v)) return t;
+    if (cell_v_[t][3] == kGhost && in_conflict(t, v)) return t;
   return kNone;
 }
 
@@ -424,22 +413,23 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
   // A visibility walk in a Delaunay tetrahedralization visits no cell twice (Edelsbrunner's
   // acyclicity of the in-front relation), so it ends within the cell count; the budget guards
   // a corrupted structure. The face order is varied per step (a remembering stochastic walk).
-  const std::size_t budget = cells_.size() + 64;
+  const std::size_t budget = cell_v_.size() + 64;
   const Vec3<T>* pts = sorted_.data();
   const Vec3<T> p = pts[v];
   std::uint32_t came = kNone;
   std::uint32_t rng = walk_rng_;
   for (std::size_t step = 0; step < budget; ++step) {
-    const Delaunay3Cell& c = cells_[t];
-    if (c.vertices[3] == kGhost) {
-      const Vec3<T>&a = pts[c.vertices[0]], &b = pts[c.vertices[1]], &cc = pts[c.vertices[2]];
+    const auto& c_v = cell_v_[t];
+    const auto& c_n = cell_n_[t];
+    if (c_v[3] == kGhost) {
+      const Vec3<T>&a = pts[c_v[0]], &b = pts[c_v[1]], &cc = pts[c_v[2]];
       if ((lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p)) == Sign::positive) {
         walk_rng_ = rng;
         return t;
       }
       // p is on the real side of the hull face or on its plane: test every face from inside.
       came = kNone;
-      t = std::uint32_t(c.neighbors[3]) >> 2;
+      t = std::uint32_t(c_n[3]) >> 2;
       continue;
     }
     rng = rng * 1664525u + 1013904223u;
@@ -448,11 +438,11 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
     bool moved = false;
     for (int j = 0; j < 4; ++j) {
       const int i = (start + j) & 3;
-      const std::uint32_t nb = std::uint32_t(c.neighbors[std::size_t(i)]) >> 2;
+      const std::uint32_t nb = std::uint32_t(c_n[std::size_t(i)]) >> 2;
       if (nb == came) continue;
-      const Vec3<T>& a = pts[c.vertices[std::size_t(kFace[i][0])]];
-      const Vec3<T>& b = pts[c.vertices[std::size_t(kFace[i][1])]];
-      const Vec3<T>& cc = pts[c.vertices[std::size_t(kFace[i][2])]];
+      const Vec3<T>& a = pts[c_v[std::size_t(kFace[i][0])]];
+      const Vec3<T>& b = pts[c_v[std::size_t(kFace[i][1])]];
+      const Vec3<T>& cc = pts[c_v[std::size_t(kFace[i][2])]];
       const Sign s = lattice_ ? orient3d_on_lattice(a, b, cc, p) : orient3d(a, b, cc, p);
       if (s == Sign::negative) {
         came = t;
@@ -465,7 +455,7 @@ std::uint32_t Delaunay3<T>::walk(std::uint32_t v, std::uint32_t t,
     if (moved) continue;
     if (zeros >= 3) {
       for (int i = 0; i < 4; ++i)
-        if (same_point(pts[c.vertices[std::size_t(i)]], p)) *duplicate = c.vertices[std::size_t(i)];
+        if (same_point(pts[c_v[std::size_t(i)]], p)) *duplicate = c_v[std::size_t(i)];
     }
     walk_rng_ = rng;
     return t;
@@ -498,13 +488,13 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
   cavity_.push_back(t0);
   mark[t0] = in;
   // Every cell is marked at most once, so the search ends within the cell count.
-  std::size_t budget = cells_.size() + 16;
+  std::size_t budget = cell_v_.size() + 16;
   while (!stack_.empty()) {
     if (budget-- == 0) return false;
     const std::uint32_t c = stack_.back();
     stack_.pop_back();
     for (int i = 0; i < 4; ++i) {
-      const std::int32_t code = cells_[c].neighbors[std::size_t(i)];
+      const std::int32_t code = cell_n_[c][std::size_t(i)];
       const std::uint32_t nb = std::uint32_t(code) >> 2;
       const std::uint32_t m = mark[nb];
       if (m == in) continue;
@@ -517,10 +507,9 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
         }
         mark[nb] = out;
       }
-      const Delaunay3Cell& cc = cells_[c];
-      boundary_.push_back({cc.vertices[std::size_t(kFace[i][0])],
-                           cc.vertices[std::size_t(kFace[i][1])],
-                           cc.vertices[std::size_t(kFace[i][2])], code});
+      const auto& cc_v = cell_v_[c];
+      boundary_.push_back({cc_v[std::size_t(kFace[i][0])], cc_v[std::size_t(kFace[i][1])],
+                           cc_v[std::size_t(kFace[i][2])], code});
     }
   }
   // New cells: the cavity's slots first (a cavity with all its vertices on its boundary has
@@ -535,38 +524,40 @@ bool Delaunay3<T>::insert_vertex(std::uint32_t v) {
       s = free_.back();
       free_.pop_back();
     } else {
-      s = static_cast<std::uint32_t>(cells_.size());
-      cells_.push_back({});
+      s = static_cast<std::uint32_t>(cell_v_.size());
+      cell_v_.push_back({});
+      cell_n_.push_back({});
       mark_.push_back(0);
       mark = mark_.data();
     }
     fresh_.push_back(s);
   }
   for (std::size_t k = nb_faces; k < cavity_.size(); ++k) {
-    cells_[cavity_[k]].vertices = {kNone, kNone, kNone, kDead};
+    cell_v_[cavity_[k]] = {kNone, kNone, kNone, kDead};
     free_.push_back(cavity_[k]);
   }
   for (std::size_t k = 0; k < nb_faces; ++k) {
     const Boundary& f = boundary_[k];
     const std::uint32_t s = fresh_[k];
-    Delaunay3Cell& cell = cells_[s];
+    std::array<std::uint32_t, 4>& cell_v = cell_v_[s];
+    std::array<std::uint32_t, 4>& cell_n = cell_n_[s];
     // (a, b, c, v) is positive: v sees the face from the cavity side. A ghost vertex is moved
     // to corner 3 by an even permutation.
     int apex_corner = 3;
     if (f.a == kGhost) {
-      cell.vertices = {v, f.c, f.b, kGhost};
+      cell_v = {v, f.c, f.b, kGhost};
       apex_corner = 0;
     } else if (f.b == kGhost) {
-      cell.vertices = {f.c, v, f.a, kGhost};
+      cell_v = {f.c, v, f.a, kGhost};
       apex_corner = 1;
     } else if (f.c == kGhost) {
-      cell.vertices = {f.b, f.a, v, kGhost};
+      cell_v = {f.b, f.a, v, kGhost};
       apex_corner = 2;
     } else {
-      cell.vertices = {f.a, f.b, f.c, v};
+      cell_v = {f.a, f.b, f.c, v};
     }
-    cell.neighbors[std::size_t(apex_corner)] = f.outside;
-    cells_[std::uint32_t(f.outside) >> 2].neighbors[std::uint32_t(f.outside) & 3u] =
+    cell_n[std::size_t(apex_corner)] = f.outside;
+    cell_n_[std::uint32_t(f.outside) >> 2][std::uint32_t(f.outside) & 3u] =
         static_cast<std::int32_t>(4 * s + std::uint32_t(apex_corner));
   }
   link_around(fresh_, v);
@@ -598,7 +589,8 @@ void Delaunay3<T>::lower_dimensional(int dimension) {
 
 template <Real T>
 void Delaunay3<T>::run() {
-  cells_.clear();
+  cell_v_.clear();
+  cell_n_.clear();
   mark_.clear();
   free_.clear();
   epoch_ = 0;
@@ -672,19 +664,22 @@ void Delaunay3<T>::run() {
                 d = static_cast<std::uint32_t>(k3);
   if (orient3d(pts[a], pts[b], pts[c], pts[d]) == Sign::negative) std::swap(c, d);
 
-  cells_.reserve(7 * n + 64);
+  cell_v_.reserve(7 * n + 64);
+
+  cell_n_.reserve(7 * n + 64);
   mark_.reserve(7 * n + 64);
-  cells_.resize(5);
+  cell_v_.resize(5);
+  cell_n_.resize(5);
   mark_.assign(5, 0);
-  cells_[0].vertices = {a, b, c, d};
+  cell_v_[0] = {a, b, c, d};
   for (int i = 0; i < 4; ++i) {
-    const std::uint32_t f0 = cells_[0].vertices[std::size_t(kFace[i][0])];
-    const std::uint32_t f1 = cells_[0].vertices[std::size_t(kFace[i][1])];
-    const std::uint32_t f2 = cells_[0].vertices[std::size_t(kFace[i][2])];
+    const std::uint32_t f0 = cell_v_[0][std::size_t(kFace[i][0])];
+    const std::uint32_t f1 = cell_v_[0][std::size_t(kFace[i][1])];
+    const std::uint32_t f2 = cell_v_[0][std::size_t(kFace[i][2])];
     const std::uint32_t g = 1 + std::uint32_t(i);
-    cells_[g].vertices = {f0, f2, f1, kGhost};  // the outside on the positive side
-    cells_[g].neighbors[3] = static_cast<std::int32_t>(4 * 0 + std::uint32_t(i));
-    cells_[0].neighbors[std::size_t(i)] = static_cast<std::int32_t>(4 * g + 3);
+    cell_v_[g] = {f0, f2, f1, kGhost};  // the outside on the positive side
+    cell_n_[g][3] = static_cast<std::int32_t>(4 * 0 + std::uint32_t(i));
+    cell_n_[0][std::size_t(i)] = static_cast<std::int32_t>(4 * g + 3);
   }
   const std::uint32_t ghosts[4] = {1, 2, 3, 4};
   link_around(ghosts, kGhost);
@@ -705,6 +700,7 @@ void Delaunay3<T>::compact(bool in_place) {
   r.status = status_;
   r.dimension = status_ == Status::ok || status_ == Status::limit_exceeded ? dimension_ : -1;
   r.tetrahedra.clear();
+  r.adjacency.clear();
   r.hull.clear();
   r.duplicate_count = 0;
   // duplicate_of[i] < i for a duplicate (insert_vertex), so one ascending pass resolves chains.
@@ -719,33 +715,46 @@ void Delaunay3<T>::compact(bool in_place) {
     return;
   }
   if (dimension_ < 3) return;
-  // New index of each real cell (mark_ is reused as the map); ghosts and free slots map to -1.
-  const std::uint32_t nc = static_cast<std::uint32_t>(cells_.size());
+  // New index of each real cell (mark_ is reused as the map); ghosts and free slots map to
+  // kNoTetrahedron, building codes 4 * cell + face to the neighbour's new index.
+  const std::uint32_t nc = static_cast<std::uint32_t>(cell_v_.size());
   std::uint32_t count = 0;
   for (std::uint32_t t = 0; t < nc; ++t)
-    mark_[t] = cells_[t].vertices[3] >= kDead ? kNone : count++;
-  auto map_neighbor = [&](std::int32_t code) {
-    const std::uint32_t m = mark_[std::uint32_t(code) >> 2];
-    return m == kNone ? std::int32_t(-1) : static_cast<std::int32_t>(m);
-  };
-  if (in_place) {
-    // Slot mark_[t] <= t, so a forward pass packs the array without overwriting unread cells.
-    for (std::uint32_t t = 0; t < nc; ++t) {
-      const Delaunay3Cell c = cells_[t];
-      if (c.vertices[3] == kGhost) {
-        r.hull.push_back({orig_[c.vertices[0]], orig_[c.vertices[1]], orig_[c.vertices[2]]});
-        continue;
-      }
-      if (c.vertices[3] == kDead) continue;
-      Delaunay3Cell& o = cells_[mark_[t]];
-      for (std::size_t i = 0; i < 4; ++i) {
-        o.vertices[i] = orig_[c.vertices[i]];
-        o.neighbors[i] = map_neighbor(c.neighbors[i]);
-      }
+    mark_[t] = cell_v_[t][3] >= kDead ? kNoTetrahedron : count++;
+  const std::uint32_t* map = mark_.data();
+  const std::uint32_t* orig = orig_.data();
+  std::array<std::uint32_t, 4>* tets = cell_v_.data();
+  std::array<std::uint32_t, 4>* adjacency = cell_n_.data();
+  if (!in_place) {
+    r.tetrahedra.resize(count);
+    r.adjacency.resize(count);
+    tets = r.tetrahedra.data();
+    adjacency = r.adjacency.data();
+  }
+  // In place, slot map[t] <= t, so a forward pass packs the arrays (already in the result's
+  // type) without overwriting unread cells, and they are handed over: no second copy of 32 bytes
+  // per cell is allocated or touched.
+  for (std::uint32_t t = 0; t < nc; ++t) {
+    const std::array<std::uint32_t, 4> v = cell_v_[t];
+    if (v[3] == kGhost) {
+      r.hull.push_back({orig[v[0]], orig[v[1]], orig[v[2]]});
+      continue;
     }
-    cells_.resize(count);
-    r.tetrahedra.swap(cells_);
-    cells_.clear();
+    if (v[3] == kDead) continue;
+    const std::array<std::uint32_t, 4> n = cell_n_[t];
+    const std::uint32_t k = map[t];
+    for (std::size_t i = 0; i < 4; ++i) {
+      tets[k][i] = orig[v[i]];
+      adjacency[k][i] = map[n[i] >> 2];
+    }
+  }
+  if (in_place) {
+    cell_v_.resize(count);
+    cell_n_.resize(count);
+    r.tetrahedra.swap(cell_v_);
+    r.adjacency.swap(cell_n_);
+    cell_v_.clear();
+    cell_n_.clear();
     mark_.clear();
     mark_.shrink_to_fit();
     sorted_.clear();
@@ -755,23 +764,9 @@ void Delaunay3<T>::compact(bool in_place) {
     dimension_ = -1;
     return;
   }
-  r.tetrahedra.resize(count);
-  for (std::uint32_t t = 0; t < nc; ++t) {
-    const Delaunay3Cell& c = cells_[t];
-    if (c.vertices[3] == kGhost) {
-      r.hull.push_back({orig_[c.vertices[0]], orig_[c.vertices[1]], orig_[c.vertices[2]]});
-      continue;
-    }
-    if (c.vertices[3] == kDead) continue;
-    Delaunay3Cell& o = r.tetrahedra[mark_[t]];
-    for (std::size_t i = 0; i < 4; ++i) {
-      o.vertices[i] = orig_[c.vertices[i]];
-      o.neighbors[i] = map_neighbor(c.neighbors[i]);
-    }
-  }
   // The query start: a real cell of the last inserted point (under it when last_ is a ghost).
   std::uint32_t last = last_;
-  if (cells_[last].vertices[3] == kGhost) last = std::uint32_t(cells_[last].neighbors[3]) >> 2;
+  if (cell_v_[last][3] == kGhost) last = std::uint32_t(cell_n_[last][3]) >> 2;
   last_out_ = mark_[last] == kNone ? 0 : static_cast<std::int32_t>(mark_[last]);
   // The marks were overwritten: restart the epochs.
   std::fill(mark_.begin(), mark_.end(), 0u);
@@ -784,18 +779,20 @@ template <Real T>
 void Delaunay3<T>::planar_triangles(bool in_place) {
   Delaunay3Result& r = result_;
   r.triangles.clear();
-  for (const Delaunay3Cell& c : cells_) {
-    if (c.vertices[3] >= kDead) continue;
+  for (const std::array<std::uint32_t, 4>& c_v : cell_v_) {
+    if (c_v[3] >= kDead) continue;
     int j = 0;
-    while (j < 3 && c.vertices[std::size_t(j)] != apex_) ++j;
+    while (j < 3 && c_v[std::size_t(j)] != apex_) ++j;
     std::array<std::uint32_t, 3> t;
-    for (int k = 0; k < 3; ++k) t[std::size_t(k)] = orig_[c.vertices[std::size_t(kFace[j][k])]];
+    for (int k = 0; k < 3; ++k) t[std::size_t(k)] = orig_[c_v[std::size_t(kFace[j][k])]];
     if (apex_flip_) std::swap(t[1], t[2]);
     r.triangles.push_back(t);
   }
   if (in_place) {
-    cells_.clear();
-    cells_.shrink_to_fit();
+    cell_v_.clear();
+    cell_n_.clear();
+    cell_v_.shrink_to_fit();
+    cell_n_.shrink_to_fit();
     mark_.clear();
     mark_.shrink_to_fit();
     sorted_.clear();
@@ -1100,8 +1097,8 @@ Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
     return r;
   }
   const std::uint32_t apex_id = dim == 2 ? m - 1 : kNone;
-  std::vector<std::int32_t> index(hull.facets.size(), -1);
-  std::int32_t count = 0;
+  std::vector<std::uint32_t> index(hull.facets.size(), kNoTetrahedron);
+  std::uint32_t count = 0;
   for (std::size_t f = 0; f < hull.facets.size(); ++f)
     if (hull.facets[f].alive && hull.facets[f].v[3] != kGhost) index[f] = count++;
   for (std::size_t f = 0; f < hull.facets.size(); ++f) {
@@ -1121,12 +1118,13 @@ Delaunay3Result delaunay_lifted(std::span<const Vec3<T>> pts) {
       r.hull.push_back({kept[F.v[0]], kept[F.v[1]], kept[F.v[2]]});
       continue;
     }
-    Delaunay3Cell c;
+    std::array<std::uint32_t, 4> v, nb;
     for (std::size_t i = 0; i < 4; ++i) {
-      c.vertices[i] = kept[F.v[i]];
-      c.neighbors[i] = index[F.nb[i]];
+      v[i] = kept[F.v[i]];
+      nb[i] = index[F.nb[i]];
     }
-    r.tetrahedra.push_back(c);
+    r.tetrahedra.push_back(v);
+    r.adjacency.push_back(nb);
   }
   return r;
 }
@@ -1159,19 +1157,22 @@ void classify_location(Locate3Result& r, std::size_t t, unsigned zero_mask) noex
   }
 }
 
-[[nodiscard]] bool valid_cell(const Delaunay3Cell& c, std::size_t np, std::size_t nt) noexcept {
-  for (std::size_t i = 0; i < 4; ++i)
-    if (c.vertices[i] >= np || (c.neighbors[i] >= 0 && std::size_t(c.neighbors[i]) >= nt))
-      return false;
+// Tetrahedron t of dt has vertices below np and neighbours below nt (or none).
+[[nodiscard]] bool valid_tetrahedron(const Delaunay3Result& dt, std::size_t t, std::size_t np,
+                                     std::size_t nt) noexcept {
+  if (t >= dt.adjacency.size()) return false;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::uint32_t nb = dt.adjacency[t][i];
+    if (dt.tetrahedra[t][i] >= np || (nb != kNoTetrahedron && nb >= nt)) return false;
+  }
   return true;
 }
 
 template <Real T>
-[[nodiscard]] Sign face_side(std::span<const Vec3<T>> pts, const Delaunay3Cell& c, int i,
-                             const Vec3<T>& p) noexcept {
-  return orient3d(pts[c.vertices[std::size_t(kFace[i][0])]],
-                  pts[c.vertices[std::size_t(kFace[i][1])]],
-                  pts[c.vertices[std::size_t(kFace[i][2])]], p);
+[[nodiscard]] Sign face_side(std::span<const Vec3<T>> pts, const std::array<std::uint32_t, 4>& v,
+                             int i, const Vec3<T>& p) noexcept {
+  return orient3d(pts[v[std::size_t(kFace[i][0])]], pts[v[std::size_t(kFace[i][1])]],
+                  pts[v[std::size_t(kFace[i][2])]], p);
 }
 
 }  // namespace
@@ -1198,19 +1199,19 @@ Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
   std::size_t came = nt;
   for (std::size_t step = 0; step < max_steps; ++step) {
     r.steps = step + 1;
-    const Delaunay3Cell& c = dt.tetrahedra[t];
-    if (!valid_cell(c, np, nt)) {
+    if (!valid_tetrahedron(dt, t, np, nt)) {
       r.status = Status::invalid_input;
       return r;
     }
+    const std::array<std::uint32_t, 4>& v = dt.tetrahedra[t];
     unsigned zero_mask = 0;
     bool moved = false;
     for (int i = 0; i < 4; ++i) {
-      const std::int32_t nb = c.neighbors[std::size_t(i)];
-      if (nb >= 0 && std::size_t(nb) == came) continue;  // p is strictly on this side
-      const Sign s = face_side(points, c, i, p);
+      const std::uint32_t nb = dt.adjacency[t][std::size_t(i)];
+      if (nb != kNoTetrahedron && std::size_t(nb) == came) continue;  // p is strictly this side
+      const Sign s = face_side(points, v, i, p);
       if (s == Sign::negative) {
-        if (nb < 0) {  // beyond a hull face: outside the convex hull
+        if (nb == kNoTetrahedron) {  // beyond a hull face: outside the convex hull
           r.location = Location3::outside;
           r.tetrahedron = static_cast<std::int32_t>(t);
           r.face = i;
@@ -1231,15 +1232,14 @@ Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
   // Out of steps: an exact scan.
   r.scanned = true;
   for (std::size_t u = 0; u < nt; ++u) {
-    const Delaunay3Cell& c = dt.tetrahedra[u];
-    if (!valid_cell(c, np, nt)) {
+    if (!valid_tetrahedron(dt, u, np, nt)) {
       r.status = Status::invalid_input;
       return r;
     }
     unsigned zero_mask = 0;
     bool in = true;
     for (int i = 0; i < 4 && in; ++i) {
-      const Sign s = face_side(points, c, i, p);
+      const Sign s = face_side(points, dt.tetrahedra[u], i, p);
       in = s != Sign::negative;
       if (s == Sign::zero) zero_mask |= 1u << i;
     }
@@ -1250,7 +1250,7 @@ Locate3Result locate(const Delaunay3Result& dt, std::span<const Vec3<T>> points,
   }
   for (std::size_t u = 0; u < nt; ++u)
     for (int i = 0; i < 4; ++i)
-      if (dt.tetrahedra[u].neighbors[std::size_t(i)] < 0 &&
+      if (dt.adjacency[u][std::size_t(i)] == kNoTetrahedron &&
           face_side(points, dt.tetrahedra[u], i, p) == Sign::negative) {
         r.location = Location3::outside;
         r.tetrahedron = static_cast<std::int32_t>(u);
@@ -1293,8 +1293,8 @@ NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, std::span<const V
     return r;
   }
   std::size_t t = std::size_t(loc.tetrahedron);
-  std::uint32_t best = dt.tetrahedra[t].vertices[0];
-  for (const std::uint32_t v : dt.tetrahedra[t].vertices)
+  std::uint32_t best = dt.tetrahedra[t][0];
+  for (const std::uint32_t v : dt.tetrahedra[t])
     if (compare_sqr_distance(p, points[v], points[best]) == Sign::negative) best = v;
   // Greedy descent: search the star of `best` (the tetrahedra around it, reached across the
   // faces through it) for a strictly closer vertex. Each move strictly decreases the distance.
@@ -1306,13 +1306,12 @@ NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, std::span<const V
     bool moved = false;
     while (head < count && !moved) {
       const std::uint32_t s = star[head++];
-      const Delaunay3Cell& c = dt.tetrahedra[s];
-      if (!valid_cell(c, np, dt.tetrahedra.size())) {
+      if (!valid_tetrahedron(dt, s, np, dt.tetrahedra.size())) {
         r.status = Status::invalid_input;
         return r;
       }
       for (std::size_t i = 0; i < 4 && !moved; ++i) {
-        const std::uint32_t w = c.vertices[i];
+        const std::uint32_t w = dt.tetrahedra[s][i];
         if (w == best) continue;
         if (compare_sqr_distance(p, points[w], points[best]) == Sign::negative) {
           best = w;
@@ -1321,16 +1320,16 @@ NearestVertex3Result nearest_vertex(const Delaunay3Result& dt, std::span<const V
           break;
         }
         // Face i contains `best` (it is opposite another corner): its neighbour is in the star.
-        const std::int32_t nb = c.neighbors[i];
-        if (nb < 0) continue;
+        const std::uint32_t nb = dt.adjacency[s][i];
+        if (nb == kNoTetrahedron) continue;
         bool seen = false;
-        for (std::size_t k = 0; k < count && !seen; ++k) seen = star[k] == std::uint32_t(nb);
+        for (std::size_t k = 0; k < count && !seen; ++k) seen = star[k] == nb;
         if (seen) continue;
         if (count == kStar) {  // an unusually large star: decide by scanning
           scan();
           return r;
         }
-        star[count++] = static_cast<std::uint32_t>(nb);
+        star[count++] = nb;
       }
     }
     if (!moved) break;

@@ -85,7 +85,7 @@ TYPED_TEST(PointRange2Test, HullsAndTriangulations) {
   });
   expect_same(pts, "delaunay", [](const auto& p) {
     const Delaunay2Result r = delaunay(p);
-    return digest(r.status, r.dimension, r.triangles, r.halfedges, r.hull);
+    return digest(r.status, r.dimension, r.triangles, r.adjacency, r.hull);
   });
   expect_same(pts, "locate", [&](const auto& p) {
     const Delaunay2Result dt = delaunay(p);
@@ -95,7 +95,7 @@ TYPED_TEST(PointRange2Test, HullsAndTriangulations) {
   const std::vector<std::array<std::uint32_t, 2>> constraints = {{0, 7}, {3, 11}};
   expect_same(pts, "constrained_delaunay", [&](const auto& p) {
     const ConstrainedDelaunay2Result r = constrained_delaunay(p, constraints);
-    return digest(r.status, r.triangles, r.halfedges, r.constrained, r.rejected);
+    return digest(r.status, r.triangles, r.adjacency, r.constrained, r.rejected);
   });
   const std::array<std::uint32_t, 1> ring_ends = {static_cast<std::uint32_t>(kRing)};
   expect_same(poly, "triangulate_polygon", [&](const auto& p) {

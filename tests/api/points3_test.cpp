@@ -81,9 +81,7 @@ TYPED_TEST(PointRange3Test, HullsAndTriangulations) {
   });
   expect_same(pts, "delaunay", [](const auto& p) {
     const Delaunay3Result r = delaunay(p);
-    Digest d = digest(r.status, r.dimension, r.hull);
-    for (const Delaunay3Cell& c : r.tetrahedra) put(d, digest(c.vertices, c.neighbors));
-    return d;
+    return digest(r.status, r.dimension, r.tetrahedra, r.adjacency, r.hull);
   });
   expect_same(pts, "locate and nearest_vertex", [&](const auto& p) {
     const Delaunay3Result dt = delaunay(p);

@@ -35,7 +35,7 @@ locus::Delaunay2Result as_delaunay(const ConstrainedDelaunay2Result& c) {
   r.status = c.status == Status::invalid_input ? Status::ok : c.status;
   r.dimension = c.dimension;
   r.triangles = c.triangles;
-  r.halfedges = c.halfedges;
+  r.adjacency = c.adjacency;
   r.hull = c.hull;
   r.duplicate_of = c.duplicate_of;
   for (std::size_t i = 0; i < r.duplicate_of.size(); ++i)
@@ -50,10 +50,11 @@ template <class T>
                                              const std::vector<Edge>& cons,
                                              const ConstrainedDelaunay2Result& r) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint8_t> edges;
-  for (std::size_t e = 0; e < r.triangles.size(); ++e) {
-    const auto a = r.triangles[e], b = r.triangles[locus::next_halfedge(std::uint32_t(e))];
-    edges[{std::min(a, b), std::max(a, b)}] |= r.constrained[e];
-  }
+  for (std::size_t t = 0; t < r.triangles.size(); ++t)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto a = r.triangles[t][i], b = r.triangles[t][(i + 1) % 3];
+      edges[{std::min(a, b), std::max(a, b)}] |= r.constrained[t][i];
+    }
   std::set<std::pair<std::uint32_t, std::uint32_t>> expected;
   for (std::size_t k = 0; k < cons.size(); ++k) {
     if (std::find(r.rejected.begin(), r.rejected.end(), k) != r.rejected.end()) continue;
@@ -112,8 +113,8 @@ mpq_class inside_twice_area(const std::vector<Vec2<T>>& p, const ConstrainedDela
   mpq_class s = 0;
   for (std::size_t t = 0; t < r.triangle_count(); ++t)
     if (r.inside[t])
-      s += locus_test::exact_cross(p[r.triangles[3 * t]], p[r.triangles[3 * t + 1]],
-                                   p[r.triangles[3 * t + 2]]);
+      s +=
+          locus_test::exact_cross(p[r.triangles[t][0]], p[r.triangles[t][1]], p[r.triangles[t][2]]);
   return s;
 }
 
@@ -170,7 +171,7 @@ TYPED_TEST(ConstrainedDelaunay2Test, ConstraintThroughCollinearVertices) {
   EXPECT_EQ(r.status, Status::ok);
   EXPECT_TRUE(check_cdt(p, cons, r));
   std::size_t marked = 0;
-  for (auto c : r.constrained) marked += c;
+  for (const auto& c : r.constrained) marked += std::size_t(c[0]) + c[1] + c[2];
   // 8 + 8 + 4 pieces, two half-edges each (none on the hull).
   EXPECT_EQ(marked, 2u * (8 + 8 + 4));
 }

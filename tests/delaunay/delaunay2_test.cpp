@@ -215,9 +215,9 @@ TYPED_TEST(Delaunay2Test, RandomBruteForce) {
             bool found = false;
             for (std::size_t t = 0; t < r.triangle_count() && !found; ++t)
               for (int k = 0; k < 3; ++k)
-                found = found || (r.triangles[3 * t + std::size_t(k)] == a &&
-                                  r.triangles[3 * t + std::size_t((k + 1) % 3)] == b &&
-                                  r.triangles[3 * t + std::size_t((k + 2) % 3)] == c);
+                found = found || (r.triangles[t][std::size_t(k)] == a &&
+                                  r.triangles[t][std::size_t((k + 1) % 3)] == b &&
+                                  r.triangles[t][std::size_t((k + 2) % 3)] == c);
             EXPECT_TRUE(found) << "strictly Delaunay triangle " << a << " " << b << " " << c;
           }
       EXPECT_LE(strict, r.triangle_count());
@@ -237,14 +237,18 @@ TYPED_TEST(Delaunay2Test, TransformInvariance) {
   ASSERT_TRUE(check_delaunay(p, r));
   const auto edges = edge_set(r);
   bool unique = true;  // no interior edge with a cocircular opposite vertex
-  for (std::size_t e = 0; e < r.halfedges.size() && unique; ++e) {
-    const auto o = r.halfedges[e];
-    if (o < 0) continue;
-    const auto t = e / 3;
-    unique =
-        locus::incircle(p[r.triangles[3 * t]], p[r.triangles[3 * t + 1]], p[r.triangles[3 * t + 2]],
-                        p[r.triangles[locus::prev_halfedge(std::uint32_t(o))]]) != Sign::zero;
-  }
+  for (std::size_t t = 0; t < r.triangle_count() && unique; ++t)
+    for (std::size_t i = 0; i < 3 && unique; ++i) {
+      const auto u = r.adjacency[t][i];
+      if (u == locus::kNoTriangle) continue;
+      // The vertex of u opposite the shared edge: the one that is not on triangle t.
+      std::uint32_t z = r.triangles[u][0];
+      for (const auto v : r.triangles[u])
+        if (std::find(r.triangles[t].begin(), r.triangles[t].end(), v) == r.triangles[t].end())
+          z = v;
+      unique = locus::incircle(p[r.triangles[t][0]], p[r.triangles[t][1]], p[r.triangles[t][2]],
+                               p[z]) != Sign::zero;
+    }
   {  // translation by an exact offset
     auto q = p;
     for (auto& v : q) v = {v.x + T(3), v.y - T(5)};
@@ -324,7 +328,7 @@ TEST(Delaunay2, OutsideExactRangeNoCrashOrHang) {
     const auto r = run(p);
     EXPECT_TRUE(r.status == Status::ok || r.status == Status::limit_exceeded);
     EXPECT_LE(r.triangle_count(), 2 * p.size());
-    EXPECT_EQ(r.halfedges.size(), r.triangles.size());
+    EXPECT_EQ(r.adjacency.size(), r.triangles.size());
   }
 }
 
@@ -353,8 +357,8 @@ TYPED_TEST(Delaunay2Test, LocateMatchesBruteForce) {
       int zeros = 0;
       bool in = true;
       for (int i = 0; i < 3; ++i) {
-        const Sign s = locus::orient2d(p[r.triangles[3 * t + std::size_t(i)]],
-                                       p[r.triangles[3 * t + std::size_t((i + 1) % 3)]], q);
+        const Sign s = locus::orient2d(p[r.triangles[t][std::size_t(i)]],
+                                       p[r.triangles[t][std::size_t((i + 1) % 3)]], q);
         in = in && s != Sign::negative;
         zeros += s == Sign::zero;
       }
@@ -367,19 +371,32 @@ TYPED_TEST(Delaunay2Test, LocateMatchesBruteForce) {
       case Location::inside:
         EXPECT_EQ(loc.triangle, inside);
         break;
-      case Location::on_edge:
+      case Location::on_edge: {
         EXPECT_TRUE(on_edges >= 1 && on_vertices == 0);
+        const auto& tv = r.triangles[std::size_t(loc.triangle)];
+        EXPECT_EQ(locus::orient2d(p[tv[std::size_t(loc.corner)]],
+                                  p[tv[std::size_t((loc.corner + 1) % 3)]], q),
+                  Sign::zero);
         break;
+      }
       case Location::on_vertex: {
         EXPECT_GE(on_vertices, 1);
-        const auto v = r.triangles[3 * std::size_t(loc.triangle) + std::size_t(loc.corner)];
+        const auto v = r.triangles[std::size_t(loc.triangle)][std::size_t(loc.corner)];
         EXPECT_TRUE(p[v].x == q.x && p[v].y == q.y);
         break;
       }
-      case Location::outside:
+      case Location::outside: {
         EXPECT_EQ(inside, -1);
         EXPECT_EQ(on_edges + on_vertices, 0);
+        // Beyond edge `corner` of `triangle`, a hull edge.
+        const auto& tv = r.triangles[std::size_t(loc.triangle)];
+        EXPECT_EQ(r.adjacency[std::size_t(loc.triangle)][std::size_t(loc.corner)],
+                  locus::kNoTriangle);
+        EXPECT_EQ(locus::orient2d(p[tv[std::size_t(loc.corner)]],
+                                  p[tv[std::size_t((loc.corner + 1) % 3)]], q),
+                  Sign::negative);
         break;
+      }
     }
   }
   // A tiny step budget reports limit_exceeded instead of walking on.
@@ -406,7 +423,7 @@ TYPED_TEST(Delaunay2Test, IncrementalInsertMatchesBatch) {
   EXPECT_EQ(edge_set(r), edge_set(run(all)));
 }
 
-TYPED_TEST(Delaunay2Test, FlatArrayOverload) {
+TYPED_TEST(Delaunay2Test, FlatArrayThroughPointSpan) {
   using T = TypeParam;
   locus_test::Rng rng;
   SCOPED_TRACE(rng.trace());
@@ -416,7 +433,7 @@ TYPED_TEST(Delaunay2Test, FlatArrayOverload) {
     xy.push_back(q.x);
     xy.push_back(q.y);
   }
-  auto r = locus::delaunay(xy.data(), p.size());
+  auto r = locus::delaunay(locus::point_span<2>(xy.data(), p.size()));
   EXPECT_TRUE(check_delaunay(p, r));
   EXPECT_EQ(r.triangles, run(p).triangles);
 }

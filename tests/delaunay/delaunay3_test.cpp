@@ -144,7 +144,7 @@ using TetSet = std::set<std::array<std::uint32_t, 4>>;
 
 TetSet tet_set(const Delaunay3Result& r) {
   TetSet s;
-  for (const auto& c : r.tetrahedra) s.insert(sorted4(c.vertices));
+  for (const auto& c : r.tetrahedra) s.insert(sorted4(c));
   return s;
 }
 
@@ -233,6 +233,7 @@ template <class T>
   }
   const std::size_t nt = r.tetrahedra.size();
   if (nt == 0) return ::testing::AssertionFailure() << "no tetrahedra";
+  if (r.adjacency.size() != nt) return ::testing::AssertionFailure() << "adjacency size";
   std::vector<char> used(n, 0);
   std::map<std::array<std::uint32_t, 3>, int> face_count;
   std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
@@ -245,12 +246,12 @@ template <class T>
   };
   for (std::size_t t = 0; t < nt; ++t) {
     const auto& c = r.tetrahedra[t];
-    for (auto v : c.vertices) {
+    for (auto v : c) {
       if (v >= n || r.duplicate_of[v] != v)
         return ::testing::AssertionFailure() << "bad vertex in cell " << t;
       used[v] = 1;
     }
-    const auto& v = c.vertices;
+    const auto& v = c;
     const mpq_class o = exact_orient(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
     if (o <= 0) return ::testing::AssertionFailure() << "cell " << t << " not positive";
     volume += o;
@@ -268,8 +269,8 @@ template <class T>
       std::array<std::uint32_t, 3> key = f;
       std::sort(key.begin(), key.end());
       ++face_count[key];
-      const std::int32_t nb = c.neighbors[std::size_t(i)];
-      if (nb < 0) {
+      const std::uint32_t nb = r.adjacency[t][std::size_t(i)];
+      if (nb == locus::kNoTetrahedron) {
         boundary.push_back({f[0], f[2], f[1]});  // outward
         continue;
       }
@@ -277,12 +278,12 @@ template <class T>
       const auto& d = r.tetrahedra[std::size_t(nb)];
       int back = -1, shared = 0;
       for (int j = 0; j < 4; ++j) {
-        if (d.neighbors[std::size_t(j)] == std::int32_t(t)) back = j;
-        shared += std::count(key.begin(), key.end(), d.vertices[std::size_t(j)]) > 0 ? 1 : 0;
+        if (r.adjacency[nb][std::size_t(j)] == t) back = j;
+        shared += std::count(key.begin(), key.end(), d[std::size_t(j)]) > 0 ? 1 : 0;
       }
       if (back < 0) return ::testing::AssertionFailure() << "adjacency not symmetric at " << t;
       if (shared != 3) return ::testing::AssertionFailure() << "neighbour misses the face " << t;
-      const std::uint32_t opposite = d.vertices[std::size_t(back)];
+      const std::uint32_t opposite = d[std::size_t(back)];
       if (std::count(key.begin(), key.end(), opposite) != 0)
         return ::testing::AssertionFailure() << "neighbour face index at " << t;
       if (orient_sign(f[0], f[1], f[2], opposite) != Sign::negative)
@@ -343,7 +344,7 @@ template <class T>
     return ::testing::AssertionFailure() << "cell volumes differ from hull3's volume";
   if (brute) {
     for (std::size_t t = 0; t < nt; ++t) {
-      const auto& v = r.tetrahedra[t].vertices;
+      const auto& v = r.tetrahedra[t];
       for (std::size_t i = 0; i < n; ++i)
         if (exact_insphere(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]], pts[i]) > 0)
           return ::testing::AssertionFailure() << "point " << i << " inside sphere of " << t;
@@ -637,7 +638,8 @@ TYPED_TEST(Delaunay3Test, ZeroToFourPoints) {
     ASSERT_TRUE(check_delaunay3(q, r, true));
     ASSERT_EQ(r.tetrahedron_count(), 1u);
     EXPECT_EQ(r.hull.size(), 4u);
-    for (auto nb : r.tetrahedra[0].neighbors) EXPECT_EQ(nb, -1);
+    ASSERT_EQ(r.adjacency.size(), 1u);
+    for (auto nb : r.adjacency[0]) EXPECT_EQ(nb, locus::kNoTetrahedron);
   }
 }
 
@@ -721,13 +723,13 @@ TYPED_TEST(Delaunay3Test, Duplicates) {
   std::set<std::array<std::array<T, 3>, 4>> a, b;
   for (const auto& c : r.tetrahedra) {
     std::array<std::array<T, 3>, 4> t;
-    for (int i = 0; i < 4; ++i) t[std::size_t(i)] = key(p[c.vertices[std::size_t(i)]]);
+    for (int i = 0; i < 4; ++i) t[std::size_t(i)] = key(p[c[std::size_t(i)]]);
     std::sort(t.begin(), t.end());
     a.insert(t);
   }
   for (const auto& c : r0.tetrahedra) {
     std::array<std::array<T, 3>, 4> t;
-    for (int i = 0; i < 4; ++i) t[std::size_t(i)] = key(base[c.vertices[std::size_t(i)]]);
+    for (int i = 0; i < 4; ++i) t[std::size_t(i)] = key(base[c[std::size_t(i)]]);
     std::sort(t.begin(), t.end());
     b.insert(t);
   }
@@ -809,7 +811,7 @@ TYPED_TEST(Delaunay3Test, PermutationAndTranslationInvariance) {
   TetSet mapped;
   for (const auto& c : rq.tetrahedra) {
     std::array<std::uint32_t, 4> t;
-    for (int i = 0; i < 4; ++i) t[std::size_t(i)] = perm[c.vertices[std::size_t(i)]];
+    for (int i = 0; i < 4; ++i) t[std::size_t(i)] = perm[c[std::size_t(i)]];
     mapped.insert(sorted4(t));
   }
   EXPECT_EQ(mapped, tet_set(r));
@@ -853,7 +855,7 @@ TYPED_TEST(Delaunay3Test, RandomMedium) {
   EXPECT_EQ(tet_set(a), tet_set(r));
   std::vector<T> flat;
   for (const auto& q : p) flat.insert(flat.end(), {q.x, q.y, q.z});
-  const auto& b = d.compute(flat.data(), p.size());
+  const auto& b = d.compute(locus::point_span<3>(flat.data(), p.size()));
   EXPECT_EQ(tet_set(b), tet_set(r));
 }
 
@@ -1125,7 +1127,7 @@ TYPED_TEST(Delaunay3Test, LiftedHullAgainstIncremental) {
     TetSet a;
     for (const auto& c : lifted.tetrahedra) {
       std::array<std::uint32_t, 4> t;
-      for (int i = 0; i < 4; ++i) t[std::size_t(i)] = r.duplicate_of[c.vertices[std::size_t(i)]];
+      for (int i = 0; i < 4; ++i) t[std::size_t(i)] = r.duplicate_of[c[std::size_t(i)]];
       a.insert(sorted4(t));
     }
     EXPECT_EQ(a, tet_set(r)) << "case " << k << ", " << p.size() << " points";
@@ -1157,7 +1159,7 @@ TYPED_TEST(Delaunay3Test, InsertAfterConstruction) {
   TetSet mapped_all;
   for (const auto& c : all.tetrahedra) {
     std::array<std::uint32_t, 4> t;
-    for (int i = 0; i < 4; ++i) t[std::size_t(i)] = r.duplicate_of[c.vertices[std::size_t(i)]];
+    for (int i = 0; i < 4; ++i) t[std::size_t(i)] = r.duplicate_of[c[std::size_t(i)]];
     mapped_all.insert(sorted4(t));
   }
   EXPECT_EQ(tet_set(r), mapped_all);
@@ -1205,9 +1207,8 @@ template <class T>
   int sign[4];
   for (int i = 0; i < 4; ++i) {
     const auto& F = locus::kDelaunay3Face[std::size_t(i)];
-    sign[i] =
-        sgn(exact_orient(pts[c.vertices[std::size_t(F[0])]], pts[c.vertices[std::size_t(F[1])]],
-                         pts[c.vertices[std::size_t(F[2])]], q));
+    sign[i] = sgn(exact_orient(pts[c[std::size_t(F[0])]], pts[c[std::size_t(F[1])]],
+                               pts[c[std::size_t(F[2])]], q));
   }
   auto expect = [&](std::array<int, 4> want) {
     for (int i = 0; i < 4; ++i)
@@ -1232,13 +1233,14 @@ template <class T>
     }
     case Location3::on_vertex: {
       if (loc.corner < 0 || loc.corner > 3) return ::testing::AssertionFailure() << "corner";
-      const auto& v = pts[c.vertices[std::size_t(loc.corner)]];
+      const auto& v = pts[c[std::size_t(loc.corner)]];
       if (!(v.x == q.x && v.y == q.y && v.z == q.z))
         return ::testing::AssertionFailure() << "not the vertex";
       return ::testing::AssertionSuccess();
     }
     case Location3::outside: {
-      if (loc.face < 0 || loc.face > 3 || c.neighbors[std::size_t(loc.face)] != -1)
+      if (loc.face < 0 || loc.face > 3 ||
+          r.adjacency[std::size_t(loc.tetrahedron)][std::size_t(loc.face)] != locus::kNoTetrahedron)
         return ::testing::AssertionFailure() << "not a hull face";
       if (sign[loc.face] != -1) return ::testing::AssertionFailure() << "not beyond the face";
       return ::testing::AssertionSuccess();
@@ -1255,8 +1257,8 @@ bool contained_brute(const Points<T>& pts, const Delaunay3Result& r, const Vec3<
     bool in = true;
     for (int i = 0; i < 4 && in; ++i) {
       const auto& F = locus::kDelaunay3Face[std::size_t(i)];
-      in = locus::orient3d(pts[c.vertices[std::size_t(F[0])]], pts[c.vertices[std::size_t(F[1])]],
-                           pts[c.vertices[std::size_t(F[2])]], q) != Sign::negative;
+      in = locus::orient3d(pts[c[std::size_t(F[0])]], pts[c[std::size_t(F[1])]],
+                           pts[c[std::size_t(F[2])]], q) != Sign::negative;
     }
     if (in) return true;
   }

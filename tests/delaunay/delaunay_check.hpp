@@ -10,6 +10,7 @@
 #include <locus/delaunay/delaunay2.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <fstream>
 #include <set>
@@ -46,20 +47,22 @@ using EdgeSet = std::set<std::pair<std::uint32_t, std::uint32_t>>;
 
 inline EdgeSet edge_set(const locus::Delaunay2Result& r) {
   EdgeSet s;
-  for (std::size_t e = 0; e < r.triangles.size(); ++e) {
-    const std::uint32_t a = r.triangles[e], b = r.triangles[locus::next_halfedge(std::uint32_t(e))];
-    s.insert({std::min(a, b), std::max(a, b)});
-  }
+  for (const auto& t : r.triangles)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::uint32_t a = t[i], b = t[(i + 1) % 3];
+      s.insert({std::min(a, b), std::max(a, b)});
+    }
   return s;
 }
 
 /// Checks a 2D result exactly: orientation, adjacency symmetry, hull convexity and coverage,
 /// Euler's formula, exact area sum, local (hence global) empty circumcircles, duplicates.
 /// With `brute` also the global empty-circle property against every point (O(n T)).
+/// `constrained` (a CDT's per-edge flags) exempts those edges from the empty-circle test.
 template <class T>
-::testing::AssertionResult check_delaunay(const std::vector<locus::Vec2<T>>& pts,
-                                          const locus::Delaunay2Result& r, bool brute = false,
-                                          const std::vector<std::uint8_t>* constrained = nullptr) {
+::testing::AssertionResult check_delaunay(
+    const std::vector<locus::Vec2<T>>& pts, const locus::Delaunay2Result& r, bool brute = false,
+    const std::vector<std::array<std::uint8_t, 3>>* constrained = nullptr) {
   using locus::Sign;
   const std::size_t n = pts.size();
   if (r.status != locus::Status::ok) return ::testing::AssertionFailure() << "status not ok";
@@ -86,45 +89,48 @@ template <class T>
   const std::size_t nv = kept.size();
 
   if (r.dimension != 2) return ::testing::AssertionFailure() << "dimension " << r.dimension;
-  const std::size_t ne = r.triangles.size();
-  if (ne % 3 != 0 || r.halfedges.size() != ne || ne == 0)
+  const std::size_t nt = r.triangles.size();
+  if (r.adjacency.size() != nt || nt == 0 || r.triangle_count() != nt)
     return ::testing::AssertionFailure() << "array sizes";
+  if (constrained && constrained->size() != nt)
+    return ::testing::AssertionFailure() << "constrained size";
+  const auto& tri = r.triangles;
   std::vector<char> used(n, 0);
   std::size_t boundary = 0;
-  for (std::size_t e = 0; e < ne; ++e) {
-    const std::uint32_t a = r.triangles[e];
-    if (a >= n || r.duplicate_of[a] != a)
-      return ::testing::AssertionFailure() << "bad vertex at " << e;
-    used[a] = 1;
-    const std::int32_t o = r.halfedges[e];
-    if (o < 0) {
-      ++boundary;
-      continue;
+  for (std::size_t t = 0; t < nt; ++t)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::uint32_t a = tri[t][i], b = tri[t][(i + 1) % 3];
+      if (a >= n || r.duplicate_of[a] != a)
+        return ::testing::AssertionFailure() << "bad vertex at " << t << "," << i;
+      used[a] = 1;
+      const std::uint32_t u = r.adjacency[t][i];
+      if (u == locus::kNoTriangle) {
+        ++boundary;
+        continue;
+      }
+      if (u >= nt) return ::testing::AssertionFailure() << "adjacency out of range at " << t;
+      // The triangle across has the edge reversed (b, a), and names t across it.
+      std::size_t j = 3;
+      for (std::size_t k = 0; k < 3; ++k)
+        if (tri[u][k] == b && tri[u][(k + 1) % 3] == a) j = k;
+      if (j == 3) return ::testing::AssertionFailure() << "adjacency endpoints at " << t;
+      if (r.adjacency[u][j] != t) return ::testing::AssertionFailure() << "adjacency asymmetry";
     }
-    if (std::size_t(o) >= ne || r.halfedges[std::size_t(o)] != std::int32_t(e))
-      return ::testing::AssertionFailure() << "halfedge asymmetry at " << e;
-    const std::uint32_t b = r.triangles[locus::next_halfedge(std::uint32_t(e))];
-    if (r.triangles[std::size_t(o)] != b ||
-        r.triangles[locus::next_halfedge(std::uint32_t(o))] != a)
-      return ::testing::AssertionFailure() << "halfedge endpoints at " << e;
-  }
   for (std::size_t i = 0; i < n; ++i)
     if (r.duplicate_of[i] == i && !used[i])
       return ::testing::AssertionFailure() << "kept point " << i << " in no triangle";
-  const std::size_t nt = ne / 3;
   for (std::size_t t = 0; t < nt; ++t) {
-    if (locus::orient2d(pts[r.triangles[3 * t]], pts[r.triangles[3 * t + 1]],
-                        pts[r.triangles[3 * t + 2]]) != Sign::positive)
+    if (locus::orient2d(pts[tri[t][0]], pts[tri[t][1]], pts[tri[t][2]]) != Sign::positive)
       return ::testing::AssertionFailure() << "triangle " << t << " not strictly CCW";
   }
-  // Hull: convex (no right turn), its edges are exactly the boundary half-edges.
+  // Hull: convex (no right turn), its edges are exactly the boundary edges.
   const std::size_t h = r.hull.size();
   if (h != boundary)
     return ::testing::AssertionFailure() << "hull size " << h << " vs " << boundary;
   std::set<std::pair<std::uint32_t, std::uint32_t>> bedges;
-  for (std::size_t e = 0; e < ne; ++e)
-    if (r.halfedges[e] < 0)
-      bedges.insert({r.triangles[e], r.triangles[locus::next_halfedge(std::uint32_t(e))]});
+  for (std::size_t t = 0; t < nt; ++t)
+    for (std::size_t i = 0; i < 3; ++i)
+      if (r.adjacency[t][i] == locus::kNoTriangle) bedges.insert({tri[t][i], tri[t][(i + 1) % 3]});
   for (std::size_t i = 0; i < h; ++i) {
     const std::uint32_t a = r.hull[i], b = r.hull[(i + 1) % h], c = r.hull[(i + 2) % h];
     if (!bedges.count({a, b})) return ::testing::AssertionFailure() << "hull edge not boundary";
@@ -137,30 +143,32 @@ template <class T>
   // Exact area: sum of triangles = hull area.
   mpq_class sum = 0;
   for (std::size_t t = 0; t < nt; ++t)
-    sum += exact_cross(pts[r.triangles[3 * t]], pts[r.triangles[3 * t + 1]],
-                       pts[r.triangles[3 * t + 2]]);
+    sum += exact_cross(pts[tri[t][0]], pts[tri[t][1]], pts[tri[t][2]]);
   if (sum != exact_twice_area(pts, r.hull))
     return ::testing::AssertionFailure() << "area sum differs from hull area";
   // Locally Delaunay at every interior edge (implies globally Delaunay).
-  for (std::size_t e = 0; e < ne; ++e) {
-    const std::int32_t o = r.halfedges[e];
-    if (o < 0) continue;
-    if (constrained && (*constrained)[e]) {
-      if (!(*constrained)[std::size_t(o)])
-        return ::testing::AssertionFailure() << "constrained flag on one side only at " << e;
-      continue;
+  for (std::size_t t = 0; t < nt; ++t)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::uint32_t u = r.adjacency[t][i];
+      if (u == locus::kNoTriangle) continue;
+      const std::uint32_t a = tri[t][i], b = tri[t][(i + 1) % 3];
+      std::size_t j = 0;  // edge (b, a) of u, found above
+      while (!(tri[u][j] == b && tri[u][(j + 1) % 3] == a)) ++j;
+      if (constrained && (*constrained)[t][i]) {
+        if (!(*constrained)[u][j])
+          return ::testing::AssertionFailure() << "constrained flag on one side only at " << t;
+        continue;
+      }
+      const std::uint32_t z = tri[u][(j + 2) % 3];
+      if (locus::incircle(pts[tri[t][0]], pts[tri[t][1]], pts[tri[t][2]], pts[z]) == Sign::positive)
+        return ::testing::AssertionFailure()
+               << "edge " << i << " of " << t << " not locally Delaunay";
     }
-    const std::uint32_t t = std::uint32_t(e) / 3;
-    const auto z = r.triangles[locus::prev_halfedge(std::uint32_t(o))];
-    if (locus::incircle(pts[r.triangles[3 * t]], pts[r.triangles[3 * t + 1]],
-                        pts[r.triangles[3 * t + 2]], pts[z]) == Sign::positive)
-      return ::testing::AssertionFailure() << "edge " << e << " not locally Delaunay";
-  }
   if (brute && !constrained) {
     for (std::size_t t = 0; t < nt; ++t)
       for (std::size_t i = 0; i < n; ++i)
-        if (locus::incircle(pts[r.triangles[3 * t]], pts[r.triangles[3 * t + 1]],
-                            pts[r.triangles[3 * t + 2]], pts[i]) == Sign::positive)
+        if (locus::incircle(pts[tri[t][0]], pts[tri[t][1]], pts[tri[t][2]], pts[i]) ==
+            Sign::positive)
           return ::testing::AssertionFailure() << "point " << i << " inside circle of " << t;
     // Every point inside or on the hull.
     for (std::size_t i = 0; i < n; ++i)

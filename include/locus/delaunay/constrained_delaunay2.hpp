@@ -11,9 +11,10 @@
 //  - one that properly crosses an inserted constraint, or has an endpoint index out of range,
 //    is NOT inserted (no Steiner points): it is listed in `rejected`, the status is
 //    invalid_input, and the result is the CDT of the accepted ones; zero length: ignored.
-// Output: the layout of Delaunay2Result (triangles CCW, halfedges -1 on the hull, hull CCW,
-// duplicate_of) plus constrained[e] = 1 for every half-edge on a constraint (both sides), and,
-// for triangulate_polygon(), inside[t] = 1 for triangles inside the polygon (even-odd rule).
+// Output: the layout of Delaunay2Result (triangles CCW, adjacency[t][i] across edge
+// (v[i], v[i+1]), kNoTriangle on the hull; hull CCW; duplicate_of), plus constrained[t][i] = 1
+// when edge i of triangle t lies on a constraint (set on both sides), and, for
+// triangulate_polygon(), inside[t] = 1 for triangles inside the polygon (even-odd rule).
 // triangulate_polygon(points, ring_ends): ring k is points[ring_ends[k-1] .. ring_ends[k])
 // (ring_ends[-1] = 0), closed implicitly; any orientation and nesting (even-odd rule).
 // Self-intersecting rings give rejected edges and invalid_input.
@@ -39,15 +40,15 @@ namespace locus {
 struct ConstrainedDelaunay2Result {
   Status status = Status::empty_input;
   int dimension = -1;
-  std::vector<std::uint32_t> triangles;     ///< 3 vertex indices per triangle, CCW
-  std::vector<std::int32_t> halfedges;      ///< opposite half-edge, -1 on the hull
-  std::vector<std::uint32_t> hull;          ///< CCW hull vertices
+  std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise
+  std::vector<std::array<std::uint32_t, 3>> adjacency;  ///< across edge (v[i], v[i+1])
+  std::vector<std::uint32_t> hull;                      ///< CCW hull vertices
   std::vector<std::uint32_t> duplicate_of;  ///< per input point: itself or the kept equal point
-  std::vector<std::uint8_t> constrained;    ///< per half-edge: 1 on a constraint
-  std::vector<std::uint8_t> inside;         ///< per triangle (triangulate_polygon only)
-  std::vector<std::uint32_t> rejected;      ///< indices of constraints not inserted
+  std::vector<std::array<std::uint8_t, 3>> constrained;  ///< per edge: 1 on a constraint
+  std::vector<std::uint8_t> inside;     ///< per triangle (triangulate_polygon only)
+  std::vector<std::uint32_t> rejected;  ///< indices of constraints not inserted
 
-  [[nodiscard]] std::size_t triangle_count() const noexcept { return triangles.size() / 3; }
+  [[nodiscard]] std::size_t triangle_count() const noexcept { return triangles.size(); }
 };
 
 /// Reusable constrained Delaunay triangulator (keeps its buffers between calls).
@@ -65,16 +66,49 @@ class ConstrainedDelaunay2 {
   [[nodiscard]] const ConstrainedDelaunay2Result& result() const noexcept { return result_; }
 
  private:
-  // 0: inserted (or zero length); 1: crosses a constraint; 2: aborted (budget).
-  int insert_segment(std::uint32_t a, std::uint32_t b);
+  enum class Insertion : std::uint8_t { inserted, crosses_constraint, failed };
+  // Where segment a -> b leaves the fan of triangles around a (see find_exit).
+  struct FanExit {
+    std::uint32_t existing;     // a half-edge a -> x on the segment (x = b or x inside ab)
+    std::uint32_t on_segment;   // that x when it lies strictly inside ab
+    std::uint32_t first_cross;  // else: the half-edge a -> x of the triangle ab enters
+  };
+  // An edge of the cavity boundary: the cavity-side half-edge u -> v, the half-edge outside it
+  // (or -1 on the hull) and whether it is a constraint.
+  struct BoundaryEdge {
+    std::uint32_t u, v;
+    std::int32_t outside;
+    std::uint8_t constrained;
+  };
+
+  void triangulate(std::span<const Vec2<T>> points,
+                   std::span<const std::array<std::uint32_t, 2>> constraints);
+  void load_delaunay(const Delaunay2Result& d);
+  Insertion insert_segment(std::uint32_t a, std::uint32_t b);
+  [[nodiscard]] FanExit find_exit(std::uint32_t a, std::uint32_t b) const;
+  void mark_constrained(std::uint32_t e);
+  Insertion collect_crossed(std::uint32_t a, std::uint32_t b, std::uint32_t first_cross,
+                            std::uint32_t& end);
+  void collect_cavity_boundary();
+  void retriangulate_side(std::uint32_t a, std::uint32_t end,
+                          const std::vector<std::uint32_t>& side);
+  [[nodiscard]] bool replace_cavity(std::uint32_t a, std::uint32_t end);
   void mark_inside();
+  void write_result();
 
   Delaunay2<T> delaunay_;
   std::span<const Vec2<T>> points_;
   ConstrainedDelaunay2Result result_;
+  // The triangulation while constraints go in, as half-edges: tris_[3t + i] is vertex i of
+  // triangle t, halfedges_[3t + i] the opposite of the half-edge v[i] -> v[i+1] (-1: hull).
+  std::vector<std::uint32_t> tris_;
+  std::vector<std::int32_t> halfedges_;
+  std::vector<std::uint8_t> constrained_;   // per half-edge
+  std::vector<std::uint8_t> inside_;        // per triangle
   std::vector<std::uint32_t> vertex_edge_;  // an outgoing half-edge per vertex
   std::vector<std::uint8_t> in_cavity_;
   std::vector<std::uint32_t> cavity_, left_, right_, new_tris_;
+  std::vector<BoundaryEdge> boundary_;
 };
 
 /// Constrained Delaunay triangulation (one call over ConstrainedDelaunay2).

@@ -4,10 +4,10 @@
 // 13.42-13.51. Incremental insertion in BRIO/Hilbert order with Lawson flips, every decision an
 // exact orient2d/incircle (core/predicates.hpp); method: docs/notes/delaunay.md. No input point
 // lies strictly inside any triangle's circumcircle.
-// Output (Delaunay2Result), delaunator-style index buffers:
-//   triangles[3t + i]  vertex i of triangle t (input point indices), counter-clockwise.
-//   halfedges[3t + i]  the half-edge opposite to half-edge 3t + i (which runs from vertex i to
-//                      vertex (i + 1) % 3 of t), or -1 on the hull.
+// Output (Delaunay2Result; the index layout of docs/notes/api.md, as hull/hull3.hpp):
+//   triangles[t]       input point indices, counter-clockwise.
+//   adjacency[t][i]    the triangle across edge (v[i], v[(i + 1) % 3]) of t; kNoTriangle on
+//                      the hull.
 //   hull               the hull vertices counter-clockwise, starting at the smallest index; every
 //                      input point on the hull boundary is listed (collinear ones included).
 //   duplicate_of[i]    i for a point that is a vertex, else the index of the vertex with exactly
@@ -30,6 +30,7 @@
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -37,24 +38,27 @@
 
 namespace locus {
 
+/// adjacency[t][i] of an edge on the hull (no triangle beyond it).
+inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
+
 /// The result of a 2D Delaunay triangulation (see the top of delaunay2.hpp for the layout).
 struct Delaunay2Result {
   Status status = Status::empty_input;
-  int dimension = -1;                       ///< 2, 1 (collinear), 0 (one point), -1 (nothing)
-  std::vector<std::uint32_t> triangles;     ///< 3 vertex indices per triangle, CCW
-  std::vector<std::int32_t> halfedges;      ///< opposite half-edge, -1 on the hull
+  int dimension = -1;  ///< 2, 1 (collinear), 0 (one point), -1 (nothing)
+  std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise
+  std::vector<std::array<std::uint32_t, 3>> adjacency;  ///< across edge (v[i], v[i+1])
   std::vector<std::uint32_t> hull;          ///< CCW hull vertices (dimension 1: sorted on line)
   std::vector<std::uint32_t> duplicate_of;  ///< per input point: itself, or the kept equal point
   std::size_t duplicate_count = 0;          ///< number of i with duplicate_of[i] != i
 
-  [[nodiscard]] std::size_t triangle_count() const noexcept { return triangles.size() / 3; }
+  [[nodiscard]] std::size_t triangle_count() const noexcept { return triangles.size(); }
 };
 
 /// Where a point lies relative to a triangulation.
 enum class Location : std::uint8_t {
-  outside,    ///< strictly outside the hull; `triangle`, `corner`: a hull half-edge it lies beyond
+  outside,    ///< strictly outside the hull, beyond hull edge `corner` of `triangle`
   inside,     ///< strictly inside `triangle`
-  on_edge,    ///< on the half-edge 3 * triangle + corner (interior of the edge)
+  on_edge,    ///< in the interior of edge `corner` (v[corner], v[corner + 1]) of `triangle`
   on_vertex,  ///< equal to vertex `corner` of `triangle`
 };
 
@@ -68,14 +72,6 @@ struct LocateResult {
   int corner = -1;             ///< edge or vertex index within the triangle (0..2)
   std::size_t steps = 0;       ///< triangles visited
 };
-
-/// Half-edge helpers for the delaunator-style layout.
-[[nodiscard]] constexpr std::uint32_t next_halfedge(std::uint32_t e) noexcept {
-  return e % 3 == 2 ? e - 2 : e + 1;
-}
-[[nodiscard]] constexpr std::uint32_t prev_halfedge(std::uint32_t e) noexcept {
-  return e % 3 == 0 ? e + 2 : e - 1;
-}
 
 /// Walks from triangle `start` toward p (visibility walk; exact orient2d decides every step) and
 /// reports where p lies. max_steps = 0 means 4 * triangle_count + 16, which a walk in a Delaunay
@@ -92,8 +88,6 @@ class Delaunay2 {
  public:
   /// Triangulates `points` (copied), replacing any previous state.
   const Delaunay2Result& compute(std::span<const Vec2<T>> points);
-  /// The same for a flat array x0, y0, x1, y1, ... of n points.
-  const Delaunay2Result& compute(const T* xy, std::size_t n);
 
   /// Adds one point (index = points().size() before the call) and restores the Delaunay
   /// property. O(1) expected near the previous point in 2D; when the current triangulation has
@@ -127,12 +121,17 @@ class Delaunay2 {
   bool in_conflict(std::uint32_t p, std::uint32_t e) const noexcept;
   void compact(bool in_place);
   void lower_dimensional(std::span<const Vec2<T>> in);
-  // adj_ read and written as the unsigned half-edge indices the code computes with (kNone =
-  // 0xFFFFFFFF); stored as int32 (kNone = -1) so take_result() hands it over as the halfedges.
-  // Accessing an int32 object through its corresponding unsigned type is allowed.
-  [[nodiscard]] std::uint32_t* adj() noexcept {
-    return reinterpret_cast<std::uint32_t*>(adj_.data());
+  // The triangles are stored in the result's type (compact() hands them over in place) and
+  // addressed as flat half-edge slots 3t + i: std::array<std::uint32_t, 3> is exactly three
+  // uint32 without padding (static_assert in the source).
+  [[nodiscard]] static std::uint32_t* flat(std::vector<std::array<std::uint32_t, 3>>& v) noexcept {
+    return reinterpret_cast<std::uint32_t*>(v.data());
   }
+  [[nodiscard]] std::uint32_t* tri() noexcept { return flat(tri_); }
+  [[nodiscard]] const std::uint32_t* tri() const noexcept {
+    return reinterpret_cast<const std::uint32_t*>(tri_.data());
+  }
+  [[nodiscard]] std::uint32_t* adj() noexcept { return flat(adj_); }
   [[nodiscard]] const std::uint32_t* adj() const noexcept {
     return reinterpret_cast<const std::uint32_t*>(adj_.data());
   }
@@ -140,16 +139,17 @@ class Delaunay2 {
   std::vector<Vec2<T>> points_;  // as given
   std::vector<Vec2<T>> sorted_;  // internal vertex k = points_[orig_[k]], Hilbert order
   std::vector<std::uint32_t> orig_;
-  std::vector<std::uint32_t> tri_;    // with ghost triangles (vertex kGhost at corner 2)
-  std::vector<std::int32_t> adj_;     // opposite half-edge (the surface is closed), see adj()
-  std::vector<std::uint32_t> order_;  // compact(): the ghost triangles
+  // Internally half-edges: slot 3t + i of tri() is vertex i of triangle t, adj()[3t + i] the
+  // half-edge opposite to the one from vertex i to vertex i + 1 (the surface is closed).
+  std::vector<std::array<std::uint32_t, 3>> tri_;  // with ghost triangles (kGhost at corner 2)
+  std::vector<std::array<std::uint32_t, 3>> adj_;  // opposite half-edges
+  std::vector<std::uint32_t> order_;               // compact(): the ghost triangles
   std::vector<std::uint32_t> stack_;
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint64_t> keys_tmp_;
-  std::vector<std::uint32_t> counts_;  // radix sort buckets
-  std::uint32_t nt_ = 0;               // triangles in use in tri_ / adj_ (sized ahead)
-  std::uint32_t last_ = 0;             // a triangle incident to the last inserted vertex
-  std::uint32_t last_out_ = 0;         // the same triangle in result() numbering
+  std::uint32_t nt_ = 0;        // triangles in use in tri_ / adj_ (sized ahead)
+  std::uint32_t last_ = 0;      // a triangle incident to the last inserted vertex
+  std::uint32_t last_out_ = 0;  // the same triangle in result() numbering
   int dimension_ = -1;
   bool dirty_ = false;
   Status status_ = Status::empty_input;
@@ -159,10 +159,6 @@ class Delaunay2 {
 /// Delaunay triangulation of `points` (one call over Delaunay2).
 template <Real T>
 [[nodiscard]] Delaunay2Result delaunay(std::span<const Vec2<T>> points);
-
-/// Delaunay triangulation of n points given as x0, y0, x1, y1, ...
-template <Real T>
-[[nodiscard]] Delaunay2Result delaunay(const T* xy, std::size_t n);
 
 /// The same for any point range (core/point_range.hpp).
 template <PointRange2 R>
@@ -180,8 +176,6 @@ extern template class Delaunay2<float>;
 extern template class Delaunay2<double>;
 extern template Delaunay2Result delaunay<float>(std::span<const Vec2<float>>);
 extern template Delaunay2Result delaunay<double>(std::span<const Vec2<double>>);
-extern template Delaunay2Result delaunay<float>(const float*, std::size_t);
-extern template Delaunay2Result delaunay<double>(const double*, std::size_t);
 extern template LocateResult locate<float>(const Delaunay2Result&, std::span<const Vec2<float>>,
                                            const Vec2<float>&, std::int32_t, std::size_t) noexcept;
 extern template LocateResult locate<double>(const Delaunay2Result&, std::span<const Vec2<double>>,

@@ -6,11 +6,11 @@
 // independent check, slower); every decision is an exact orient3d/insphere (core/predicates.hpp)
 // under a symbolic perturbation, so the output is unique, independent of the input order and the
 // same for both methods: no input point lies strictly inside any tetrahedron's circumsphere.
-// Output (Delaunay3Result): tetrahedra[t].vertices: input indices, orient3d(v0, v1, v2, v3) > 0;
-// neighbors[i]: across the face opposite vertices[i], -1 on the hull. Face i is (v[a], v[b], v[c])
-// with (a, b, c) = kDelaunay3Face[i], ordered so that orient3d(face, v[i]) > 0. hull: the boundary
-// faces, outward normal (b - a) x (c - a) (as hull/hull3.hpp), non-extreme boundary points
-// included as vertices.
+// Output (Delaunay3Result; the index layout of docs/notes/api.md, as hull/hull3.hpp):
+// tetrahedra[t]: input indices v, orient3d(v0, v1, v2, v3) > 0; adjacency[t][i]: the tetrahedron
+// across the face opposite v[i], kNoTetrahedron on the hull. Face i is (v[a], v[b], v[c]) with
+// (a, b, c) = kDelaunay3Face[i], so that orient3d(face, v[i]) > 0. hull: the boundary faces,
+// outward normal (b - a) x (c - a), non-extreme boundary points included as vertices.
 // duplicate_of[i]: i for a vertex, else the smallest index with the same coordinates.
 // dimension 3; 2 coplanar (triangles: the in-plane Delaunay triangulation, normals positive along
 // the first axis, x then y then z, not parallel to the plane); 1 collinear (chain: the distinct
@@ -45,20 +45,18 @@ namespace locus {
 inline constexpr std::array<std::array<int, 3>, 4> kDelaunay3Face = {
     {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}};
 
-/// One tetrahedron of a Delaunay3Result.
-struct Delaunay3Cell {
-  std::array<std::uint32_t, 4> vertices;  ///< input indices, orient3d(v0, v1, v2, v3) > 0
-  std::array<std::int32_t, 4> neighbors;  ///< across the face opposite vertices[i]; -1: hull
-};
+/// adjacency[t][i] of a face on the hull (no tetrahedron beyond it).
+inline constexpr std::uint32_t kNoTetrahedron = 0xFFFFFFFFu;
 
 /// The result of a 3D Delaunay tetrahedralization (see the top of delaunay3.hpp).
 struct Delaunay3Result {
   Status status = Status::empty_input;
-  int dimension = -1;                              ///< 3, 2, 1, 0, or -1 (nothing)
-  std::vector<Delaunay3Cell> tetrahedra;           ///< positively oriented, with adjacency
-  std::vector<std::array<std::uint32_t, 3>> hull;  ///< boundary faces, outward normals
-  std::vector<std::uint32_t> duplicate_of;         ///< per input point: itself or the kept point
-  std::size_t duplicate_count = 0;                 ///< number of i with duplicate_of[i] != i
+  int dimension = -1;                                    ///< 3, 2, 1, 0, or -1 (nothing)
+  std::vector<std::array<std::uint32_t, 4>> tetrahedra;  ///< positively oriented
+  std::vector<std::array<std::uint32_t, 4>> adjacency;   ///< across the face opposite v[i]
+  std::vector<std::array<std::uint32_t, 3>> hull;        ///< boundary faces, outward normals
+  std::vector<std::uint32_t> duplicate_of;  ///< per input point: itself or the kept point
+  std::size_t duplicate_count = 0;          ///< number of i with duplicate_of[i] != i
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< dimension 2: in-plane Delaunay
   std::vector<std::uint32_t> chain;                     ///< dimension 1 (or 0): sorted points
 
@@ -141,8 +139,6 @@ class Delaunay3 {
  public:
   /// Tetrahedralizes `points` (copied), replacing any previous state.
   const Delaunay3Result& compute(std::span<const Vec3<T>> points);
-  /// The same for a flat array x0, y0, z0, x1, ... of n points.
-  const Delaunay3Result& compute(const T* xyz, std::size_t n);
 
   /// Adds one point (index = points().size() before the call) and restores the Delaunay
   /// property: O(1) expected near the previously inserted point. When the current result has
@@ -155,8 +151,7 @@ class Delaunay3 {
 
   /// The tetrahedralization of every point so far (compacted lazily after insert()).
   const Delaunay3Result& result();
-  /// Moves the result out (the internal arrays become the result without a copy) and resets
-  /// the object.
+  /// Moves the result out and resets the object.
   Delaunay3Result take_result();
 
   /// locate() on result(), starting from a tetrahedron of the last inserted point.
@@ -192,8 +187,11 @@ class Delaunay3 {
   std::vector<Vec3<T>> points_;  // as given
   std::vector<Vec3<T>> sorted_;  // internal vertex k = points_[orig_[k]], BRIO/Hilbert order
   std::vector<std::uint32_t> orig_;
-  std::vector<Delaunay3Cell> cells_;  // neighbors hold 4 * cell + face while building
-  std::vector<std::uint32_t> mark_;   // per cell: 2 * epoch (in cavity), 2 * epoch + 1 (not)
+  // Cells in the result's types (compact() hands them over in place): vertices (a ghost cell has
+  // kGhost at corner 3) and, while building, neighbours as codes 4 * cell + face.
+  std::vector<std::array<std::uint32_t, 4>> cell_v_;
+  std::vector<std::array<std::uint32_t, 4>> cell_n_;
+  std::vector<std::uint32_t> mark_;  // per cell: 2 * epoch (in cavity), 2 * epoch + 1 (not)
   std::uint32_t epoch_ = 0;
   std::vector<std::uint32_t> stack_, cavity_, fresh_, free_;
   std::vector<Boundary> boundary_;
@@ -216,7 +214,6 @@ class Delaunay3 {
   Delaunay3Result result_;
 };
 
-/// The same for a vector of points.
 /// The same for any point range (core/point_range.hpp).
 template <PointRange3 R>
 [[nodiscard]] Delaunay3Result delaunay(const R& points, const Delaunay3Options& options = {}) {
