@@ -60,30 +60,31 @@ LOCUS_ALWAYS_INLINE inline PointTriangleLanes<T> point_triangle_at(const V3<T>& 
   const V<T> d = dot(e0, w0), e = dot(e1, w0), g = dot(e2, w1);
   const V<T> ac = a * c, det = ac - b * b;
   const V<T> sn = c * d - b * e, tn = a * e - b * d;
-  // The edge x y's range test counts only where that edge is a candidate (as in the scalar code).
   const M<T> v01 = (tn < T(0)), v02 = (sn < T(0)), v12 = (sn + tn > det);
+  const M<T> inside = (sn >= T(0)) & (tn >= T(0)) & (sn + tn <= det);
+  // Outside: the one edge detail::point_triangle_fast projects onto (its choice, lane by lane).
+  const M<T> use12 = ~inside & v12 & (~(v01 | v02) | (v01 & ~(d < a)) | (v02 & ~(e < c)));
+  const M<T> use02 = ~inside & ~use12 & v02 & (~v01 | ~(d > T(0)));
+  const M<T> to_y = use12 | use02;
+  // The edge x y's range test counts only where that edge is taken (as in the scalar code).
   const M<T> fast = (T(16) * det >= ac) &
                     (a >= kMin<T>)&(c >= kMin<T>)&(ac >= kMin<T>)&(ac <= kMax<T>)&(
                         (((d - d) + (e - e)) + (sn - sn)) + (tn - tn) == T(0)) &
-                    (~v12 | ((f >= kMin<T>)&(f <= kMax<T>)&(g - g == T(0))));
-  const M<T> inside = (sn >= T(0)) & (tn >= T(0)) & (sn + tn <= det);
-  const V<T> s = sn / det, t = tn / det;
-  // Outside: the nearest of the edges whose constraints the plane solution violates (all three
-  // evaluated, the others masked out; ties keep the first in the order o x, o y, x y).
+                    (~use12 | ((f >= kMin<T>)&(f <= kMax<T>)&(g - g == T(0))));
+  const V<T> num = sel<T>(use12, g, sel<T>(use02, e, d));
+  const V<T> den = sel<T>(use12, f, sel<T>(use02, c, a));
   const V<T> zero = a - a, one = zero + T(1);
-  const V<T> l0 = lanes::clamp_minmax<T>(d / a, zero, one);
-  const V<T> l1 = lanes::clamp_minmax<T>(e / c, zero, one);
-  const V<T> l2 = lanes::clamp_minmax<T>(g / f, zero, one);
-  const V3<T> q0v = w0 - l0 * e0, q1v = w0 - l1 * e1, q2v = w1 - l2 * e2;
-  const V<T> q0 = dot(q0v, q0v), q1 = dot(q1v, q1v), q2 = dot(q2v, q2v);
-  const M<T> m1 = v02 & (~v01 | (q1 < q0));
-  const V<T> q01 = sel<T>(m1, q1, q0);
-  const V<T> u = sel<T>(m1, T(1) - l1, T(1) - l0), v = sel<T>(m1, zero, l0);
-  const V<T> w = sel<T>(m1, l1, zero);
-  const M<T> m2 = v12 & (~(v01 | v02) | (q2 < q01));
-  V3<T> rb{sel<T>(m2, zero, u), sel<T>(m2, T(1) - l2, v), sel<T>(m2, l2, w)};
-  rb = lanes::sel<T>(inside, V3<T>{T(1) - s - t, s, t}, rb);
-  const V3<T> cp = rb.x * o + rb.y * x + rb.z * y;
+  // One division serves s (inside) and the edge parameter (outside).
+  const V<T> q = sel<T>(inside, sn, num) / sel<T>(inside, det, den);
+  const V<T> s = q, t = tn / det;
+  const V<T> l = lanes::clamp_minmax<T>(q, zero, one), m = T(1) - l;
+  const V3<T> from = lanes::sel<T>(use12, x, o), to = lanes::sel<T>(to_y, y, x);
+  const V3<T> rb_edge{sel<T>(use12, zero, m), sel<T>(use12, m, sel<T>(use02, zero, l)),
+                      sel<T>(to_y, l, zero)};
+  const V3<T> rb_in{T(1) - s - t, s, t};
+  const V3<T> rb = lanes::sel<T>(inside, rb_in, rb_edge);
+  const V3<T> cp =
+      lanes::sel<T>(inside, rb_in.x * o + rb_in.y * x + rb_in.z * y, m * from + l * to);
   const V3<T> dx = cp - p;
   return {rb, cp, dot(dx, dx), ~fast};
 }

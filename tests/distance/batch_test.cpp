@@ -324,6 +324,16 @@ TYPED_TEST(BatchTest, PointBoxesMatchPerQuery) {
   }
 }
 
+// locus's Vec takes float and double only: a three-component long double vector for the brute
+// force oracle below.
+struct VL {
+  long double x, y, z;
+  VL operator+(const VL& o) const { return {x + o.x, y + o.y, z + o.z}; }
+  VL operator-(const VL& o) const { return {x - o.x, y - o.y, z - o.z}; }
+  friend VL operator*(long double k, const VL& v) { return {k * v.x, k * v.y, k * v.z}; }
+  friend long double dot(const VL& u, const VL& v) { return u.x * v.x + u.y * v.y + u.z * v.z; }
+};
+
 // The fast lanes are not only equal to the per-query code but right: a generic sample against
 // the exact distance computed in long double from the closest pair's definition (a brute-force
 // scan of the six boundary features of two segments, which is exact for disjoint segments up to
@@ -333,15 +343,15 @@ TYPED_TEST(BatchTest, SegmentSegmentAgreesWithBruteForce) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   using L = long double;
-  const auto point_segment = [](const Vec3<L>& p, const Vec3<L>& a, const Vec3<L>& b) {
-    const Vec3<L> d = b - a;
+  const auto point_segment = [](const VL& p, const VL& a, const VL& b) {
+    const VL d = b - a;
     const L dd = dot(d, d);
     L t = dd > 0 ? dot(p - a, d) / dd : L(0);
     t = t < 0 ? L(0) : (t > 1 ? L(1) : t);
-    const Vec3<L> x = a + t * d - p;
+    const VL x = a + t * d - p;
     return dot(x, x);
   };
-  const auto to_l = [](const Vec3<T>& v) { return Vec3<L>{L(v.x), L(v.y), L(v.z)}; };
+  const auto to_l = [](const Vec3<T>& v) { return VL{L(v.x), L(v.y), L(v.z)}; };
   std::vector<Segment3<T>> a, b;
   for (int i = 0; i < 2000; ++i) {
     a.push_back({rng.vec<T, 3>(T(-1), T(1)), rng.vec<T, 3>(T(-1), T(1))});
@@ -351,18 +361,18 @@ TYPED_TEST(BatchTest, SegmentSegmentAgreesWithBruteForce) {
   sqr_distances(std::span<const Segment3<T>>(a), std::span<const Segment3<T>>(b),
                 std::span<T>(out));
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const Vec3<L> p0 = to_l(a[i].p0), p1 = to_l(a[i].p1), q0 = to_l(b[i].p0), q1 = to_l(b[i].p1);
+    const VL p0 = to_l(a[i].p0), p1 = to_l(a[i].p1), q0 = to_l(b[i].p0), q1 = to_l(b[i].p1);
     // Either the segments' interiors have a common perpendicular inside both, or an end point
     // is involved: the minimum over the four end-point queries and the interior solution.
     L best = std::min({point_segment(p0, q0, q1), point_segment(p1, q0, q1),
                        point_segment(q0, p0, p1), point_segment(q1, p0, p1)});
-    const Vec3<L> u = p1 - p0, v = q1 - q0, w = p0 - q0;
+    const VL u = p1 - p0, v = q1 - q0, w = p0 - q0;
     const L A = dot(u, u), B = dot(u, v), C = dot(v, v), D = dot(u, w), E = dot(v, w);
     const L den = A * C - B * B;
     if (den > 1e-12L) {
       const L s = (B * E - C * D) / den, t = (A * E - B * D) / den;
       if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
-        const Vec3<L> x = p0 + s * u - (q0 + t * v);
+        const VL x = p0 + s * u - (q0 + t * v);
         best = std::min(best, dot(x, x));
       }
     }

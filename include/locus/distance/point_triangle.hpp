@@ -34,6 +34,7 @@
 #include <locus/primitives/triangle.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace locus {
@@ -169,42 +170,35 @@ template <class T, int N>
   if (sn >= T(0) && tn >= T(0) && sn + tn <= det) {
     const T s = sn / det, t = tn / det;
     rb = {T(1) - s - t, s, t};
+    cp = rb.x * o + rb.y * x + rb.z * y;
   } else {
-    // Outside: the nearest of the edges whose constraints the plane solution violates (KKT:
-    // t < 0 the edge o x, s < 0 the edge o y, s + t > 1 the edge x y), each an exact clamped
-    // projection; ties keep the first in that order. Branches: on mixed input they cost less
-    // than evaluating all three edges (measured). The clamp bounds are computed (0 = a - a for
-    // finite a) so that each clamp compiles to a max and a min instruction.
-    const T zero = a - a, one = zero + T(1);
-    T best = zero;
-    bool have = false;
-    if (tn < T(0)) {
-      const T l = clamp_minmax(d / a, zero, one);
-      best = sqr_length(w0 - l * e0);
-      rb = {T(1) - l, l, zero};
-      have = true;
-    }
-    if (sn < T(0)) {
-      const T l = clamp_minmax(e / c, zero, one);
-      const T q = sqr_length(w0 - l * e1);
-      if (!have || q < best) {
-        best = q;
-        rb = {T(1) - l, zero, l};
-        have = true;
-      }
-    }
-    if (sn + tn > det) {
+    // Outside: ONE exact clamped projection onto the edge that holds the minimum (KKT; the rule
+    // and why it is exact: docs/notes/distance.md). One violated constraint (t < 0: the edge o x,
+    // s < 0: o y, s + t > 1: x y) names its edge; at a corner region the edge along which moving
+    // away from the corner descends, else either edge, which then clamps to the corner: at o the
+    // edge o x when d > 0 (else o y), at x the edge o x when d < a (else x y), at y the edge o y
+    // when e < c (else x y).
+    const bool v01 = (tn < T(0)), v02 = (sn < T(0)), v12 = (sn + tn > det);
+    const bool use12 = v12 & ((!(v01 | v02)) | (v01 & !(d < a)) | (v02 & !(e < c)));
+    const T zero = a - a, one = zero + T(1);  // computed bounds: the clamp becomes max and min
+    if (use12) {
       const Vec<T, N> e2 = y - x, w1 = p - x;
       const T f = dot(e2, e2), g = dot(e2, w1);
       if (!(f >= lo && f <= hi && g - g == T(0))) [[unlikely]]
         return false;
-      const T l = clamp_minmax(g / f, zero, one);
-      const T q = sqr_length(w1 - l * e2);
-      if (!have || q < best) rb = {zero, T(1) - l, l};
+      const T l = clamp_minmax(g / f, zero, one), m = T(1) - l;
+      rb = {zero, m, l};
+      cp = m * x + l * y;  // rb.x o + rb.y x + rb.z y without its zero term (the same value)
+    } else if (v02 & ((!v01) | !(d > T(0)))) {
+      const T l = clamp_minmax(e / c, zero, one), m = T(1) - l;
+      rb = {m, zero, l};
+      cp = m * o + l * y;
+    } else {
+      const T l = clamp_minmax(d / a, zero, one), m = T(1) - l;
+      rb = {m, l, zero};
+      cp = m * o + l * x;
     }
   }
-  // The point from the (rotated) vertices: a vertex or an edge point is still exact.
-  cp = rb.x * o + rb.y * x + rb.z * y;
   sqr = sqr_length(cp - p);
   return true;
 }
@@ -269,7 +263,10 @@ template <Real T, int N>
                                                                const Triangle<T, N>& tri) noexcept {
   const detail::PointTriangleCore<T, N> r = detail::point_triangle(p, tri);
   if (!r.finite) return non_finite_distance<T, N, NoParam, Vec3<T>>();
-  return detail::make_distance(p, r.closest, NoParam{}, r.bary, true);
+  // r.sqr is sqr_length(closest - p): make_distance's sum of squares, already computed.
+  constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
+  const T len = r.sqr > lo && r.sqr < hi ? std::sqrt(r.sqr) : length(p - r.closest);
+  return {len, r.sqr, {p, r.closest}, NoParam{}, r.bary, true};
 }
 
 /// The swapped query: closest[0] and param_a (barycentric) belong to the triangle.

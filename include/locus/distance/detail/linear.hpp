@@ -551,7 +551,10 @@ template <class T, int N, class LA, class LB>
     if (!r.finite) return non_finite_distance<T, N, T, T>();
     // sqr = 0 with distinct points: 2D segments meeting (segment_pair).
     if (r.sqr == T(0)) return {T(0), T(0), r.closest, r.s, r.t, r.unique};
-    return make_distance(r.closest[0], r.closest[1], r.s, r.t, r.unique);
+    // r.sqr is make_distance's sum of squares, already computed.
+    constexpr T lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
+    const T len = r.sqr > lo && r.sqr < hi ? std::sqrt(r.sqr) : length(r.closest[0] - r.closest[1]);
+    return {len, r.sqr, r.closest, r.s, r.t, r.unique};
   }
   if (!finite_input(a) || !finite_input(b)) return non_finite_distance<T, N, T, T>();
   if constexpr (std::is_same_v<LA, LB>) {
