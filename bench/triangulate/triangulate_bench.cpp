@@ -154,9 +154,7 @@ void BM_ConstrainedDelaunay(benchmark::State& state) {
   locus::bench::HeapPeak peak;
   for (auto _ : state) {
     const auto r = locus::triangulate_polygon(p.points, p.ends);
-    // All triangles of the hull (inside[] marks the polygon's). When the CDT result becomes
-    // std::vector<std::array<std::uint32_t, 3>>, drop the "/ 3" (the one line to change).
-    n = r.triangles.size() / 3;
+    n = r.triangles.size();  // all triangles of the hull; inside[] marks the polygon's
     benchmark::DoNotOptimize(r.triangles.data());
   }
   report(state, which, n, peak);

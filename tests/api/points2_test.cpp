@@ -30,6 +30,9 @@
 #include <locus/primitives/aligned_box.hpp>
 #include <locus/primitives/polygon.hpp>
 #include <locus/primitives/polyline.hpp>
+#include <locus/triangulate/ear_clipping.hpp>
+#include <locus/triangulate/monotone.hpp>
+#include <locus/triangulate/trapezoid_decomposition.hpp>
 
 #include <gtest/gtest.h>
 
@@ -101,6 +104,22 @@ TYPED_TEST(PointRange2Test, HullsAndTriangulations) {
   expect_same(poly, "triangulate_polygon", [&](const auto& p) {
     const ConstrainedDelaunay2Result r = triangulate_polygon(p, ring_ends);
     return digest(r.status, r.triangles, r.inside);
+  });
+  expect_same(poly, "triangulate_ear_clipping", [&](const auto& p) {
+    const PolygonTriangulation r = triangulate_ear_clipping(p, ring_ends);
+    return digest(r.status, r.triangles);
+  });
+  expect_same(poly, "triangulate_monotone", [&](const auto& p) {
+    const PolygonTriangulation r = triangulate_monotone(p, ring_ends);
+    return digest(r.status, r.triangles);
+  });
+  expect_same(poly, "monotone_decomposition", [&](const auto& p) {
+    const MonotoneDecomposition r = monotone_decomposition(p, ring_ends);
+    return digest(r.status, r.diagonals);
+  });
+  expect_same(poly, "trapezoid_decomposition", [&](const auto& p) {
+    const TrapezoidDecomposition r = trapezoid_decomposition(p, ring_ends);
+    return digest(r.status, static_cast<double>(r.trapezoids.size()));
   });
 }
 
