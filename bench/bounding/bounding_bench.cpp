@@ -182,18 +182,28 @@ std::vector<locus::Vec<double, D>> scaled_input(int k) {
   return p;
 }
 
-void BM_min_circle_locus_scaled(benchmark::State& state) {
+// One run of a reusable ball solver on the input scaled by 2^k (D = 2: circle, 3: sphere).
+template <int D, class Solver>
+void run_scaled(benchmark::State& state) {
   const int k = static_cast<int>(state.range(0));
-  const auto pts = scaled_input<2>(k);
-  locus::MinCircle2<double> solver;
+  const auto pts = scaled_input<D>(k);
+  Solver solver;
   double r = 0;
   for (auto _ : state) {
     const auto res = solver.compute(pts);
-    r = res.circle.radius;
+    if constexpr (D == 2) {
+      r = res.circle.radius;
+    } else {
+      r = res.sphere.radius;
+    }
     sink = r;
   }
   state.SetLabel("radius/2^k=" + std::to_string(std::ldexp(r, -k)));
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+}
+
+void BM_min_circle_locus_scaled(benchmark::State& state) {
+  run_scaled<2, locus::MinCircle2<double>>(state);
 }
 BENCHMARK(BM_min_circle_locus_scaled)
     ->Arg(-500)
@@ -204,17 +214,7 @@ BENCHMARK(BM_min_circle_locus_scaled)
     ->Unit(benchmark::kMillisecond);
 
 void BM_min_sphere_locus_scaled(benchmark::State& state) {
-  const int k = static_cast<int>(state.range(0));
-  const auto pts = scaled_input<3>(k);
-  locus::MinSphere3<double> solver;
-  double r = 0;
-  for (auto _ : state) {
-    const auto res = solver.compute(pts);
-    r = res.sphere.radius;
-    sink = r;
-  }
-  state.SetLabel("radius/2^k=" + std::to_string(std::ldexp(r, -k)));
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+  run_scaled<3, locus::MinSphere3<double>>(state);
 }
 BENCHMARK(BM_min_sphere_locus_scaled)
     ->Arg(-500)

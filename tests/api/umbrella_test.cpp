@@ -13,11 +13,16 @@
 #include <locus/io.hpp>
 #include <locus/locus.hpp>
 #include <locus/measure.hpp>
+#include <locus/mesh.hpp>
 #include <locus/numeric.hpp>
 #include <locus/primitives.hpp>
+#include <locus/triangulate.hpp>
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace {
@@ -38,6 +43,16 @@ TEST(Umbrella, EveryAreaIsReachableThroughItsUmbrella) {
   const auto roots = real_roots(Polynomial<double>{-2.0, 0.0, 1.0});  // numeric
   ASSERT_EQ(roots.roots.size(), 2u);
   EXPECT_DOUBLE_EQ(roots.roots[1].value * roots.roots[1].value, 2.0);
+  const std::vector<Vec2d> quad(square.begin(), square.begin() + 4);
+  const std::array<std::uint32_t, 1> ring_ends{4};
+  const PolygonTriangulation tri = triangulate_ear_clipping(quad, ring_ends);  // triangulate
+  EXPECT_EQ(tri.status, Status::ok);
+  EXPECT_EQ(tri.triangles.size(), 2u);
+  PolygonMesh<double> mesh;  // mesh
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::array<std::uint32_t, 4> face{0, 1, 2, 3};
+  add_face(mesh, std::span<const std::uint32_t>(face));
+  EXPECT_EQ(fan_triangles(mesh).size(), 2u);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <locus/intersection/line_segment.hpp>
 #include <locus/intersection/ray_ray.hpp>
 #include <locus/intersection/ray_segment.hpp>
+#include <locus/intersection/result.hpp>
 #include <locus/intersection/segment_segment.hpp>
 
 #include <cmath>

@@ -4,6 +4,7 @@
 
 #include <locus/triangulate/ear_clipping.hpp>
 #include <locus/triangulate/monotone.hpp>
+#include <locus/triangulate/polygon_triangulation.hpp>
 #include <locus/triangulate/trapezoid_decomposition.hpp>
 
 #include "polygons.hpp"
