@@ -10,6 +10,7 @@
 
 #include <locus/intersection/triangle_triangle.hpp>
 
+#include "mesh/triangle_oracle.hpp"
 #include "support/scale_covariance.hpp"
 #include "support/typed.hpp"
 
@@ -29,77 +30,9 @@ template <class T>
 class TriangleTriangle : public ::testing::Test {};
 TYPED_TEST_SUITE(TriangleTriangle, locus_test::RealTypes);
 
-// Reduced row echelon form of m (rows x cols) over the rationals; returns the rank.
-int rref(std::vector<std::vector<mpq_class>>& m, int cols) {
-  const int rows = static_cast<int>(m.size());
-  int r = 0;
-  for (int c = 0; c < cols && r < rows; ++c) {
-    int piv = -1;
-    for (int i = r; i < rows; ++i) {
-      if (sgn(m[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)]) != 0) {
-        piv = i;
-        break;
-      }
-    }
-    if (piv < 0) continue;
-    std::swap(m[static_cast<std::size_t>(piv)], m[static_cast<std::size_t>(r)]);
-    auto& pr = m[static_cast<std::size_t>(r)];
-    const mpq_class p = pr[static_cast<std::size_t>(c)];
-    for (auto& x : pr) x /= p;
-    for (int i = 0; i < rows; ++i) {
-      if (i == r) continue;
-      auto& row = m[static_cast<std::size_t>(i)];
-      const mpq_class f = row[static_cast<std::size_t>(c)];
-      if (sgn(f) == 0) continue;
-      for (std::size_t j = 0; j < row.size(); ++j) row[j] -= f * pr[j];
-    }
-    ++r;
-  }
-  return r;
-}
-
-// The exact oracle (see the top of the file).
 template <class T>
 bool oracle(const Triangle3<T>& a, const Triangle3<T>& b) {
-  // Columns: l0 l1 l2 m0 m1 m2; rows x y z, sum l, sum m; right-hand side (0 0 0 1 1).
-  mpq_class A[5][6];
-  for (int i = 0; i < 3; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      A[k][i] = mpq_class(static_cast<double>(a[i][k]));
-      A[k][3 + i] = -mpq_class(static_cast<double>(b[i][k]));
-    }
-    A[3][i] = 1;
-    A[3][3 + i] = 0;
-    A[4][i] = 0;
-    A[4][3 + i] = 1;
-  }
-  const mpq_class rhs[5] = {0, 0, 0, 1, 1};
-  for (int mask = 1; mask < 64; ++mask) {
-    std::vector<int> cols;
-    for (int c = 0; c < 6; ++c) {
-      if (mask & (1 << c)) cols.push_back(c);
-    }
-    const int k = static_cast<int>(cols.size());
-    if (k > 5) continue;
-    std::vector<std::vector<mpq_class>> m(5, std::vector<mpq_class>(static_cast<std::size_t>(k + 1)));
-    for (int r = 0; r < 5; ++r) {
-      for (int j = 0; j < k; ++j) {
-        m[static_cast<std::size_t>(r)][static_cast<std::size_t>(j)] =
-            A[r][cols[static_cast<std::size_t>(j)]];
-      }
-      m[static_cast<std::size_t>(r)][static_cast<std::size_t>(k)] = rhs[r];
-    }
-    auto aug = m;
-    const int rank_aug = rref(aug, k + 1);
-    const int rank = rref(m, k);  // m is reduced on its first k columns only
-    if (rank != k || rank_aug != k) continue;  // dependent columns or inconsistent
-    bool nonneg = true;
-    for (int j = 0; j < k; ++j) {
-      if (sgn(m[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)]) < 0) nonneg = false;
-    }
-    if (nonneg) return true;
-  }
-  return false;
+  return locus_test::triangles_meet_exact(a, b);
 }
 
 template <class T>
@@ -205,7 +138,8 @@ TYPED_TEST(TriangleTriangle, OneUlpPerturbations) {
     const bool base = oracle(a, b);
     ASSERT_EQ(intersects(a, b), base) << trial;
     for (int axis = 0; axis < 3; ++axis) {
-      for (const T dir : {-std::numeric_limits<T>::infinity(), std::numeric_limits<T>::infinity()}) {
+      for (const T dir :
+           {-std::numeric_limits<T>::infinity(), std::numeric_limits<T>::infinity()}) {
         Triangle3<T> c = b;
         c.v0[axis] = std::nextafter(c.v0[axis], dir);
         const bool want = oracle(a, c);
@@ -228,9 +162,9 @@ TYPED_TEST(TriangleTriangle, CoplanarOverlapAndTouch) {
   const Triangle3<T> edge{{4, 0, 0}, {0, 4, 0}, {4, 4, 0}};
   const T gap = std::nextafter(T(4), T(5));
   const Triangle3<T> apart{{gap, 0, 0}, {6, 0, 0}, {6, 2, 0}};
-  for (const auto& [b, want] : {std::pair{overlap, true}, std::pair{nested, true},
-                                std::pair{vertex, true}, std::pair{edge, true},
-                                std::pair{apart, false}}) {
+  for (const auto& [b, want] :
+       {std::pair{overlap, true}, std::pair{nested, true}, std::pair{vertex, true},
+        std::pair{edge, true}, std::pair{apart, false}}) {
     ASSERT_EQ(oracle(a, b), want);
     expect_all_orders(a, b, want);
   }

@@ -138,7 +138,8 @@ template <Real T>
 /// All three vertices of u strictly on one side of the plane of t (t non-degenerate or not:
 /// orient3d of a degenerate t is zero, which never rejects).
 template <Real T>
-[[nodiscard]] inline bool separated_by_plane(const Triangle3<T>& t, const Triangle3<T>& u) noexcept {
+[[nodiscard]] inline bool separated_by_plane(const Triangle3<T>& t,
+                                             const Triangle3<T>& u) noexcept {
   const int s0 = to_int(orient3d(t.v0, t.v1, t.v2, u.v0));
   const int s1 = to_int(orient3d(t.v0, t.v1, t.v2, u.v1));
   const int s2 = to_int(orient3d(t.v0, t.v1, t.v2, u.v2));
