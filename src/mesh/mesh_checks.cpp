@@ -121,13 +121,25 @@ bool pair_interpenetrates(const Tri& s, const Tri& t, std::span<const Vec3<T>> p
          orient2d(drop(pu, axis), drop(pw, axis), drop(pb, axis));
 }
 
+// The side of plane abc that q is on: exact orient3d when limit == 0, else zero within distance
+// `limit` of the plane (distance rounded in double).
 template <Real T>
-bool face_planar(std::span<const std::uint32_t> c, std::span<const Vec3<T>> p) {
+Sign plane_side(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Vec3<T>& q,
+                double limit) {
+  if (limit == 0) return orient3d(a, b, c, q);
+  const Vec3<double> ad = vec_cast<double>(a);
+  const Vec3<double> n = cross(vec_cast<double>(b) - ad, vec_cast<double>(c) - ad);
+  const double d = dot(n, vec_cast<double>(q) - ad) / length(n);
+  return std::abs(d) <= limit ? Sign::zero : (d > 0 ? Sign::positive : Sign::negative);
+}
+
+template <Real T>
+bool face_planar(std::span<const std::uint32_t> c, std::span<const Vec3<T>> p, double limit) {
   if (c.size() == 3) return true;
   std::array<std::size_t, 3> t{};
   if (!non_collinear_triple(c, p, t)) return true;  // collinear: degenerate, not non-planar
   for (const std::uint32_t v : c) {
-    if (orient3d(p[c[t[0]]], p[c[t[1]]], p[c[t[2]]], p[v]) != Sign::zero) return false;
+    if (plane_side(p[c[t[0]]], p[c[t[1]]], p[c[t[2]]], p[v], limit) != Sign::zero) return false;
   }
   return true;
 }
@@ -354,7 +366,8 @@ MeshSelfIntersections self_intersections(const PolygonMesh<T>& mesh) {
 }
 
 template <Real T>
-MeshClassification classify_mesh(const VetMesh& m, std::span<const Vec3<T>> p) {
+MeshClassification classify_mesh(const VetMesh& m, std::span<const Vec3<T>> p,
+                                 T coplanarity_tolerance) {
   MeshClassification r;
   LOCUS_ASSERT(p.size() >= m.vertex_capacity(), "too few positions");
   r.topology = check_topology(m);
@@ -365,8 +378,26 @@ MeshClassification classify_mesh(const VetMesh& m, std::span<const Vec3<T>> p) {
   r.intersections = self_intersections(m, p);
   r.status = r.intersections.status;
   if (r.status != Status::ok) return r;
+  // The tolerance is relative to the diagonal of the bounding box of the live vertices.
+  double limit = 0;
+  if (coplanarity_tolerance > 0) {
+    Vec3<double> lo{}, hi{};
+    bool first = true;
+    for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) {
+      if (!m.has_vertex(v)) continue;
+      const Vec3<double> q = vec_cast<double>(p[v]);
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = first ? q[k] : std::min(lo[k], q[k]);
+        hi[k] = first ? q[k] : std::max(hi[k], q[k]);
+      }
+      first = false;
+    }
+    limit = static_cast<double>(coplanarity_tolerance) * length(hi - lo);
+  }
   for (std::uint32_t f = 0; f < m.face_capacity(); ++f) {
-    if (m.has_face(f) && !face_planar(m.face_vertices(f), p)) r.non_planar_faces.push_back(f);
+    if (m.has_face(f) && !face_planar(m.face_vertices(f), p, limit)) {
+      r.non_planar_faces.push_back(f);
+    }
   }
   const MeshTopology& t = r.topology;
   const bool is_mesh = m.face_count() > 0 && t.isolated_vertices.empty() &&
@@ -387,7 +418,14 @@ MeshClassification classify_mesh(const VetMesh& m, std::span<const Vec3<T>> p) {
     const auto c = m.face_vertices(f);
     std::array<std::size_t, 3> t3{};
     if (!non_collinear_triple(c, p, t3)) return false;
-    const int axis = detail::tri3::projection_axis(p[c[t3[0]]], p[c[t3[1]]], p[c[t3[2]]]);
+    // Project along the dominant normal component: a face that is flat only up to rounding
+    // stays well shaped there (a near edge-on projection could fold it).
+    const Vec3<double> a = vec_cast<double>(p[c[t3[0]]]);
+    const Vec3<double> nrm =
+        cross(vec_cast<double>(p[c[t3[1]]]) - a, vec_cast<double>(p[c[t3[2]]]) - a);
+    int axis = 2;
+    if (std::abs(nrm.x) > std::abs(nrm[axis])) axis = 0;
+    if (std::abs(nrm.y) > std::abs(nrm[axis])) axis = 1;
     if (!face_convex(c, p, axis)) return false;
     tri = {p[c[t3[0]]], p[c[t3[1]]], p[c[t3[2]]]};
     if (flipped[f]) std::swap(tri[1], tri[2]);
@@ -406,7 +444,7 @@ MeshClassification classify_mesh(const VetMesh& m, std::span<const Vec3<T>> p) {
     }
     // Any vertex of the other face off the plane tells the edge's bend.
     for (const std::uint32_t v : m.face_vertices(fs[1])) {
-      const Sign s = orient3d(tri[0], tri[1], tri[2], p[v]);
+      const Sign s = plane_side(tri[0], tri[1], tri[2], p[v], limit);
       if (s == Sign::positive) seen_positive = 1;
       if (s == Sign::negative) seen_negative = 1;
       if (s != Sign::zero) break;
@@ -418,22 +456,22 @@ MeshClassification classify_mesh(const VetMesh& m, std::span<const Vec3<T>> p) {
 }
 
 template <Real T>
-MeshClassification classify_mesh(const PolygonMesh<T>& mesh) {
+MeshClassification classify_mesh(const PolygonMesh<T>& mesh, T coplanarity_tolerance) {
   const VetMeshBuild b = make_vet_mesh(mesh);
   if (b.status != Status::ok) {
     MeshClassification r;
     r.status = b.status;
     return r;
   }
-  return classify_mesh(b.mesh, std::span<const Vec3<T>>(mesh.vertices));
+  return classify_mesh(b.mesh, std::span<const Vec3<T>>(mesh.vertices), coplanarity_tolerance);
 }
 
-#define LOCUS_MESH_CHECKS_INSTANTIATE(T)                                                       \
-  template MeshOrientation make_consistent<T>(PolygonMesh<T>&);                                \
+#define LOCUS_MESH_CHECKS_INSTANTIATE(T)                                                          \
+  template MeshOrientation make_consistent<T>(PolygonMesh<T>&);                                   \
   template MeshSelfIntersections self_intersections<T>(const VetMesh&, std::span<const Vec3<T>>); \
-  template MeshSelfIntersections self_intersections<T>(const PolygonMesh<T>&);                \
-  template MeshClassification classify_mesh<T>(const VetMesh&, std::span<const Vec3<T>>);     \
-  template MeshClassification classify_mesh<T>(const PolygonMesh<T>&);
+  template MeshSelfIntersections self_intersections<T>(const PolygonMesh<T>&);                    \
+  template MeshClassification classify_mesh<T>(const VetMesh&, std::span<const Vec3<T>>, T);      \
+  template MeshClassification classify_mesh<T>(const PolygonMesh<T>&, T);
 LOCUS_MESH_CHECKS_INSTANTIATE(float)
 LOCUS_MESH_CHECKS_INSTANTIATE(double)
 

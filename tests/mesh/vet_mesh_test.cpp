@@ -227,10 +227,12 @@ TEST(VetMesh, FlipFaceReversesAndKeepsAdjacency) {
   EXPECT_TRUE(m.face_uses_edge_forward(f, e));
   m.flip_face(f);
   const auto c = m.face_vertices(f);
-  EXPECT_EQ(std::vector<std::uint32_t>(c.begin(), c.end()), (std::vector<std::uint32_t>{3, 2, 1, 0}));
+  EXPECT_EQ(std::vector<std::uint32_t>(c.begin(), c.end()),
+            (std::vector<std::uint32_t>{3, 2, 1, 0}));
   EXPECT_FALSE(m.face_uses_edge_forward(f, e));
   EXPECT_EQ(m.edge_face_count(e), 2u);
-  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(m.face_edges(f)[i], m.find_edge(c[i], c[(i + 1) % 4]));
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(m.face_edges(f)[i], m.find_edge(c[i], c[(i + 1) % 4]));
 }
 
 template <class T>

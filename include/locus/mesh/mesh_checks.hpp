@@ -23,7 +23,10 @@
 // classify_mesh (book 9.3): mesh = no isolated vertex or edge, no degenerate or non-planar face
 // (exact), no self-intersection; polyhedron = mesh, connected, closed, every edge in exactly two
 // faces, orientable; polytope = polyhedron with convex faces and every edge convex for one
-// orientation (local convexity of a closed embedded surface gives global convexity).
+// orientation (local convexity of a closed embedded surface gives global convexity). Planarity
+// and edge convexity are exact by default; rounded coordinates (a dodecahedron's pentagons, the
+// two triangles of a planar quad) are then rarely exactly flat, so coplanarity_tolerance t > 0
+// treats points within t * (bounding-box diagonal) of a plane as on it.
 // Status: ok, empty_input (no vertex), invalid_input / degenerate_input (make_vet_mesh's),
 // non_finite_input (a NaN or infinite coordinate: geometric parts are skipped).
 
@@ -61,16 +64,16 @@ struct MeshComponents {
 
 struct MeshOrientation {
   Status status = Status::empty_input;
-  bool orientable = false;                       ///< every component is orientable
-  std::vector<std::uint32_t> flipped_faces;      ///< face ids to reverse, increasing
+  bool orientable = false;                               ///< every component is orientable
+  std::vector<std::uint32_t> flipped_faces;              ///< face ids to reverse, increasing
   std::vector<std::uint32_t> non_orientable_components;  ///< face component ids (Möbius-like)
-  MeshComponents components;                     ///< the face components used
+  MeshComponents components;                             ///< the face components used
 };
 
 struct MeshSelfIntersections {
   Status status = Status::empty_input;
   std::vector<std::array<std::uint32_t, 2>> face_pairs;  ///< (f, g), f < g, sorted
-  std::vector<std::uint32_t> degenerate_faces;            ///< all vertices collinear
+  std::vector<std::uint32_t> degenerate_faces;           ///< all vertices collinear
 };
 
 enum class MeshKind : std::uint8_t { not_a_mesh, mesh, polyhedron, polytope };
@@ -108,19 +111,23 @@ template <Real T>
 template <Real T>
 [[nodiscard]] MeshSelfIntersections self_intersections(const PolygonMesh<T>& mesh);
 
+/// coplanarity_tolerance: 0 (exact) or relative to the bounding-box diagonal (see the top).
 template <Real T>
 [[nodiscard]] MeshClassification classify_mesh(const VetMesh& mesh,
-                                               std::span<const Vec3<T>> positions);
+                                               std::span<const Vec3<T>> positions,
+                                               T coplanarity_tolerance = T(0));
 template <Real T>
-[[nodiscard]] MeshClassification classify_mesh(const PolygonMesh<T>& mesh);
+[[nodiscard]] MeshClassification classify_mesh(const PolygonMesh<T>& mesh,
+                                               T coplanarity_tolerance = T(0));
 
-#define LOCUS_MESH_CHECKS_EXTERN(T)                                                            \
-  extern template MeshOrientation make_consistent<T>(PolygonMesh<T>&);                         \
-  extern template MeshSelfIntersections self_intersections<T>(const VetMesh&,                  \
-                                                              std::span<const Vec3<T>>);      \
-  extern template MeshSelfIntersections self_intersections<T>(const PolygonMesh<T>&);         \
-  extern template MeshClassification classify_mesh<T>(const VetMesh&, std::span<const Vec3<T>>); \
-  extern template MeshClassification classify_mesh<T>(const PolygonMesh<T>&);
+#define LOCUS_MESH_CHECKS_EXTERN(T)                                                             \
+  extern template MeshOrientation make_consistent<T>(PolygonMesh<T>&);                          \
+  extern template MeshSelfIntersections self_intersections<T>(const VetMesh&,                   \
+                                                              std::span<const Vec3<T>>);        \
+  extern template MeshSelfIntersections self_intersections<T>(const PolygonMesh<T>&);           \
+  extern template MeshClassification classify_mesh<T>(const VetMesh&, std::span<const Vec3<T>>, \
+                                                      T);                                       \
+  extern template MeshClassification classify_mesh<T>(const PolygonMesh<T>&, T);
 LOCUS_MESH_CHECKS_EXTERN(float)
 LOCUS_MESH_CHECKS_EXTERN(double)
 #undef LOCUS_MESH_CHECKS_EXTERN

@@ -7,16 +7,16 @@
 // (mesh_checks.hpp verifies it in the tests). Platonic solids have unit circumradius and their
 // centre at the origin: tetrahedron_mesh (4 triangles), hexahedron_mesh (6 squares),
 // octahedron_mesh (8 triangles), dodecahedron_mesh (12 pentagons; dodecahedron_triangle_mesh
-// fans each into 3), icosahedron_mesh (20 triangles). The convex solids' faces are oriented with the exact orient3d against the
-// centre, so rounding in the coordinates cannot flip one.
+// fans each into 3), icosahedron_mesh (20 triangles). The convex solids' faces are oriented with
+// the exact orient3d against the centre, so rounding in the coordinates cannot flip one.
 // uv_sphere_mesh(radius, slices, stacks): poles on z, triangles; icosphere_mesh(radius, levels):
 // the icosahedron with each triangle split in four `levels` times, new vertices pushed onto the
-// sphere (20 * 4^levels faces). torus_mesh(R, r, major, minor): about the z axis, radius R to the tube
-// centre, tube radius r (R > r > 0 for a ring torus), triangles, genus 1. cylinder_mesh(radius,
-// height, slices) and cone_mesh(radius, height, slices): axis z from -height/2 to height/2 (the cone's
-// apex on top), side triangles, each cap one `slices`-gon face. Segment counts below the
-// minimum (3 around, 2 stacks, 0 levels) are raised to it. Coordinates are computed in double
-// and rounded to T. Cost: linear in the output.
+// sphere (20 * 4^levels faces). torus_mesh(R, r, major, minor): about the z axis, radius R to the
+// tube centre, tube radius r (R > r > 0 for a ring torus), triangles, genus 1.
+// cylinder_mesh(radius, height, slices) and cone_mesh(radius, height, slices): axis z from
+// -height/2 to height/2 (the cone's apex on top), side triangles, each cap one `slices`-gon face.
+// Segment counts below the minimum (3 around, 2 stacks, 0 levels) are raised to it. Coordinates are
+// computed in double and rounded to T. Cost: linear in the output.
 
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
@@ -102,8 +102,8 @@ inline PolygonMesh<T> triangles_of(const std::vector<Vec3<double>>& pts) {
 
 /// The vertex at the given spherical angles (z up).
 inline Vec3<double> spherical(double radius, double azimuth, double polar) {
-  return {radius * std::sin(polar) * std::cos(azimuth), radius * std::sin(polar) * std::sin(azimuth),
-          radius * std::cos(polar)};
+  return {radius * std::sin(polar) * std::cos(azimuth),
+          radius * std::sin(polar) * std::sin(azimuth), radius * std::cos(polar)};
 }
 
 template <Real T>
@@ -118,8 +118,7 @@ inline void add_tri(PolygonMesh<T>& m, std::uint32_t a, std::uint32_t b, std::ui
 template <Real T = double>
 [[nodiscard]] PolygonMesh<T> tetrahedron_mesh() {
   const double s = 1 / std::sqrt(3.0);
-  return detail::platonic::triangles_of<T>(
-      {{s, s, s}, {s, -s, -s}, {-s, s, -s}, {-s, -s, s}});
+  return detail::platonic::triangles_of<T>({{s, s, s}, {s, -s, -s}, {-s, s, -s}, {-s, -s, s}});
 }
 
 /// Regular hexahedron (cube): 8 vertices, 6 squares.
@@ -133,10 +132,9 @@ template <Real T = double>
   for (int axis = 0; axis < 3; ++axis) {
     const int b1 = 1 << ((axis + 1) % 3), b2 = 1 << ((axis + 2) % 3);
     for (const int side : {0, 1 << axis}) {
-      const std::array<std::uint32_t, 4> q{static_cast<std::uint32_t>(side),
-                                           static_cast<std::uint32_t>(side | b1),
-                                           static_cast<std::uint32_t>(side | b1 | b2),
-                                           static_cast<std::uint32_t>(side | b2)};
+      const std::array<std::uint32_t, 4> q{
+          static_cast<std::uint32_t>(side), static_cast<std::uint32_t>(side | b1),
+          static_cast<std::uint32_t>(side | b1 | b2), static_cast<std::uint32_t>(side | b2)};
       add_face(m, std::span<const std::uint32_t>(q));
     }
   }
@@ -162,7 +160,8 @@ template <Real T = double>
 [[nodiscard]] PolygonMesh<T> dodecahedron_mesh() {
   const double phi = std::numbers::phi, s = 1 / std::sqrt(3.0);
   std::vector<Vec3<double>> p;
-  for (int i = 0; i < 8; ++i) p.push_back(Vec3<double>{i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0} * s);
+  for (int i = 0; i < 8; ++i)
+    p.push_back(Vec3<double>{i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0} * s);
   for (const double a : {-1 / phi, 1 / phi}) {
     for (const double b : {-phi, phi}) {
       p.push_back(Vec3<double>{0, a, b} * s);
@@ -191,7 +190,8 @@ template <Real T = double>
     std::vector<std::pair<double, std::uint32_t>> ring;
     for (int k = 0; k < 5; ++k) {
       const Vec3<double>& q = p[by_dot[static_cast<std::size_t>(k)].second];
-      ring.push_back({std::atan2(dot(q, e2), dot(q, e1)), by_dot[static_cast<std::size_t>(k)].second});
+      ring.push_back(
+          {std::atan2(dot(q, e2), dot(q, e1)), by_dot[static_cast<std::size_t>(k)].second});
     }
     std::sort(ring.begin(), ring.end());
     std::array<std::uint32_t, 5> face{};
@@ -278,7 +278,7 @@ template <Real T = double>
 /// Ring torus about the z axis (see the top of the header).
 template <Real T = double>
 [[nodiscard]] PolygonMesh<T> torus_mesh(T major_radius, T minor_radius, int major_segments,
-                                   int minor_segments) {
+                                        int minor_segments) {
   const int nu = std::max(major_segments, 3), nv = std::max(minor_segments, 3);
   const double pi = std::numbers::pi, R = static_cast<double>(major_radius);
   const double r = static_cast<double>(minor_radius);
@@ -291,7 +291,9 @@ template <Real T = double>
     }
   }
   PolygonMesh<T> m = detail::platonic::from_points<T>(p);
-  const auto at = [&](int i, int j) { return static_cast<std::uint32_t>((i % nu) * nv + (j % nv)); };
+  const auto at = [&](int i, int j) {
+    return static_cast<std::uint32_t>((i % nu) * nv + (j % nv));
+  };
   // (u, v) increasing is counter-clockwise seen from outside: d/du x d/dv points out.
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {

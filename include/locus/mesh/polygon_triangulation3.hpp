@@ -41,7 +41,7 @@ template <Real T>
 struct PolygonTriangulation3 {
   Status status = Status::empty_input;
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into points, CCW about normal
-  Vec3<T> normal{};    ///< the Newell normal of the outer ring (not normalised)
+  Vec3<T> normal{};       ///< the Newell normal of the outer ring (not normalised)
   int dropped_axis = -1;  ///< the coordinate dropped by the projection (0 x, 1 y, 2 z)
 };
 
@@ -86,8 +86,7 @@ template <Real T>
     const Vec3<T>& p = points[i];
     flat[i] = axis == 0 ? Vec2<T>{p.y, p.z} : (axis == 1 ? Vec2<T>{p.z, p.x} : Vec2<T>{p.x, p.y});
   }
-  PolygonTriangulation tri =
-      triangulate_ear_clipping(std::span<const Vec2<T>>(flat), ring_ends);
+  PolygonTriangulation tri = triangulate_ear_clipping(std::span<const Vec2<T>>(flat), ring_ends);
   out.status = tri.status;
   out.triangles = std::move(tri.triangles);
   // Ear clipping returns counter-clockwise triangles in the (right-handed) projection, i.e.

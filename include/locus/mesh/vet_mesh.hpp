@@ -176,7 +176,9 @@ class VetMesh {
     std::uint32_t size;   // 0: removed
   };
 
-  static std::uint32_t size32(const auto& v) noexcept { return static_cast<std::uint32_t>(v.size()); }
+  static std::uint32_t size32(const auto& v) noexcept {
+    return static_cast<std::uint32_t>(v.size());
+  }
   std::uint32_t get_edge(std::uint32_t a, std::uint32_t b);
   void unlink_edge(std::uint32_t e);
   void link_corner(std::uint32_t c);
@@ -218,7 +220,8 @@ template <Real T>
 /// The live faces of vet (in id order) over the given positions (one per vertex id, at least
 /// vertex_capacity() of them); dangling edges are not representable and are dropped.
 template <Real T>
-[[nodiscard]] PolygonMesh<T> to_polygon_mesh(const VetMesh& vet, std::span<const Vec3<T>> positions) {
+[[nodiscard]] PolygonMesh<T> to_polygon_mesh(const VetMesh& vet,
+                                             std::span<const Vec3<T>> positions) {
   LOCUS_ASSERT(positions.size() >= vet.vertex_capacity(), "too few positions");
   PolygonMesh<T> out;
   out.vertices.assign(positions.begin(), positions.end());
