@@ -221,11 +221,16 @@ TYPED_TEST(MeshChecks, GeneratorsAreClosedOrientedPolytopes) {
   using T = TypeParam;
   const T tol = 64 * std::numeric_limits<T>::epsilon();
   const std::vector<std::pair<PolygonMesh<T>, bool>> solids = {
-      {tetrahedron_mesh<T>(), true},        {hexahedron_mesh<T>(), true},
-      {octahedron_mesh<T>(), true},         {icosahedron_mesh<T>(), true},
-      {icosphere_mesh<T>(T(1), 2), true},   {cylinder_mesh<T>(T(1), T(3), 9), true},
-      {cone_mesh<T>(T(1), T(2), 7), true},  {dodecahedron_mesh<T>(), false},
-      {dodecahedron_triangle_mesh<T>(), false}, {uv_sphere_mesh<T>(T(2), 12, 7), false}};
+      {tetrahedron_mesh<T>(), true},
+      {hexahedron_mesh<T>(), true},
+      {octahedron_mesh<T>(), true},
+      {icosahedron_mesh<T>(), true},
+      {icosphere_mesh<T>(T(1), 2), true},
+      {cylinder_mesh<T>(T(1), T(3), 9), true},
+      {cone_mesh<T>(T(1), T(2), 7), true},
+      {dodecahedron_mesh<T>(), false},
+      {dodecahedron_triangle_mesh<T>(), false},
+      {uv_sphere_mesh<T>(T(2), 12, 7), false}};
   for (const auto& [m, exact] : solids) {
     SCOPED_TRACE(face_count(m));
     expect_closed_manifold(m, 2, MeshKind::polytope, tol);
@@ -248,8 +253,9 @@ TYPED_TEST(MeshChecks, TorusHasGenusOneAndIsNotConvex) {
 // polyhedron, no longer a polytope.
 TYPED_TEST(MeshChecks, DepressionIsPolyhedronNotPolytope) {
   using T = TypeParam;
-  const PolygonMesh<T> m = make<T>({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}, {1, 1, 0.5}},
-                                   {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 4}, {2, 3, 4}, {3, 1, 4}});
+  const PolygonMesh<T> m =
+      make<T>({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}, {1, 1, 0.5}},
+              {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 4}, {2, 3, 4}, {3, 1, 4}});
   expect_closed_manifold(m, 2, MeshKind::polyhedron);
   // Pulled outwards instead: a convex polytope again.
   PolygonMesh<T> out = m;
@@ -279,9 +285,9 @@ TYPED_TEST(MeshChecks, IsolatedVertexAndEdge) {
 // share one vertex are two face components but one vertex component.
 TYPED_TEST(MeshChecks, InterpenetrationAndVertexTouching) {
   using T = TypeParam;
-  const PolygonMesh<T> x = make<T>({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1},
-                                    {3, 3, 0}},
-                                   {{0, 1, 2}, {3, 4, 5}});
+  const PolygonMesh<T> x =
+      make<T>({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0}},
+              {{0, 1, 2}, {3, 4, 5}});
   const MeshSelfIntersections si = self_intersections(x);
   ASSERT_EQ(si.status, Status::ok);
   EXPECT_EQ(si.face_pairs, (std::vector<std::array<std::uint32_t, 2>>{{0, 1}}));
@@ -411,8 +417,9 @@ TYPED_TEST(MeshChecks, RandomFlipsAreUndone) {
   using T = TypeParam;
   Rng rng;
   SCOPED_TRACE(rng.trace());
-  const std::vector<PolygonMesh<T>> solids = {icosphere_mesh<T>(T(1), 2), torus_mesh<T>(T(3), T(1), 12, 6),
-                                              dodecahedron_mesh<T>(), cylinder_mesh<T>(T(1), T(2), 8)};
+  const std::vector<PolygonMesh<T>> solids = {
+      icosphere_mesh<T>(T(1), 2), torus_mesh<T>(T(3), T(1), 12, 6), dodecahedron_mesh<T>(),
+      cylinder_mesh<T>(T(1), T(2), 8)};
   for (int trial = 0; trial < 40; ++trial) {
     const PolygonMesh<T>& original = solids[static_cast<std::size_t>(trial) % solids.size()];
     PolygonMesh<T> m = original;
@@ -493,8 +500,8 @@ TYPED_TEST(MeshChecks, SelfIntersectionsMatchBruteForce) {
 // sides, a vertex-sharing pair crossing through the shared vertex) and the reported cases.
 TYPED_TEST(MeshChecks, SharedVertexRules) {
   using T = TypeParam;
-  const std::vector<Vec3<double>> p{{0, 0, 0}, {2, 0, 0}, {1, 2, 0}, {1, -2, 0}, {1, 1, 0},
-                                    {1, 1, 1}, {-1, -1, 1}, {-1, 1, -1}};
+  const std::vector<Vec3<double>> p{{0, 0, 0}, {2, 0, 0}, {1, 2, 0},   {1, -2, 0},
+                                    {1, 1, 0}, {1, 1, 1}, {-1, -1, 1}, {-1, 1, -1}};
   const auto pairs = [&](std::vector<std::vector<std::uint32_t>> f) {
     const PolygonMesh<T> m = make<T>(p, f);
     const auto got = self_intersections(m).face_pairs;
@@ -527,12 +534,14 @@ TYPED_TEST(MeshChecks, DegenerateInput) {
   nan.vertices[1].y = std::numeric_limits<T>::quiet_NaN();
   EXPECT_EQ(classify_mesh(nan).status, Status::non_finite_input);
   // A collinear triangle: listed as degenerate, not a mesh.
-  PolygonMesh<T> flat = make<T>({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {0, 1, 0}}, {{0, 1, 2}, {0, 1, 3}});
+  PolygonMesh<T> flat =
+      make<T>({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {0, 1, 0}}, {{0, 1, 2}, {0, 1, 3}});
   const MeshClassification c = classify_mesh(flat);
   EXPECT_EQ(c.intersections.degenerate_faces, (std::vector<std::uint32_t>{0}));
   EXPECT_EQ(c.kind, MeshKind::not_a_mesh);
   // A non-planar quad: not a mesh (figure 9.3's planar faces), listed.
-  const PolygonMesh<T> warped = make<T>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.25}}, {{0, 1, 2, 3}});
+  const PolygonMesh<T> warped =
+      make<T>({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.25}}, {{0, 1, 2, 3}});
   EXPECT_EQ(classify_mesh(warped).non_planar_faces, (std::vector<std::uint32_t>{0}));
 }
 
