@@ -76,8 +76,8 @@ TYPED_TEST(Platonic, FiveSolidsAreRegularAndOutward) {
     const auto edges = edges_of(m);
     EXPECT_EQ(edges.size(), x.e);
     std::map<std::uint32_t, std::size_t> degree;
-    const double len = std::sqrt(double(sqr_length(m.vertices[edges.begin()->first] -
-                                                   m.vertices[edges.begin()->second])));
+    const double len = std::sqrt(
+        double(sqr_length(m.vertices[edges.begin()->first] - m.vertices[edges.begin()->second])));
     for (const auto& [a, b] : edges) {
       ++degree[a];
       ++degree[b];

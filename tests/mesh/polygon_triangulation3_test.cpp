@@ -49,7 +49,8 @@ Q3 ring_area(std::span<const Vec3<T>> pts) {
   Q3 s{0, 0, 0};
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const Q3 c = cross(q(pts[i]), q(pts[(i + 1) % pts.size()]));
-    for (int k = 0; k < 3; ++k) s[static_cast<std::size_t>(k)] += c[static_cast<std::size_t>(k)] / 2;
+    for (int k = 0; k < 3; ++k)
+      s[static_cast<std::size_t>(k)] += c[static_cast<std::size_t>(k)] / 2;
   }
   return s;
 }
@@ -80,16 +81,19 @@ void expect_valid(std::span<const Vec3<T>> pts, std::span<const std::uint32_t> e
   for (std::size_t k = 1; k < ends.size(); ++k) {
     const Q3 h = ring_area(pts.subspan(ends[k - 1], ends[k] - ends[k - 1]));
     const int same = sgn(dot(h, outer)) > 0 ? 1 : -1;
-    for (int i = 0; i < 3; ++i) want[static_cast<std::size_t>(i)] -= same * h[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 3; ++i)
+      want[static_cast<std::size_t>(i)] -= same * h[static_cast<std::size_t>(i)];
   }
   Q3 sum{0, 0, 0};
   for (const auto& t : r.triangles) {
     const Q3 a = q(pts[t[0]]);
     const Q3 n = cross(sub(q(pts[t[1]]), a), sub(q(pts[t[2]]), a));
     EXPECT_GT(sgn(dot(n, outer)), 0);
-    for (int i = 0; i < 3; ++i) sum[static_cast<std::size_t>(i)] += n[static_cast<std::size_t>(i)] / 2;
+    for (int i = 0; i < 3; ++i)
+      sum[static_cast<std::size_t>(i)] += n[static_cast<std::size_t>(i)] / 2;
   }
-  for (int i = 0; i < 3; ++i) EXPECT_EQ(sum[static_cast<std::size_t>(i)], want[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(sum[static_cast<std::size_t>(i)], want[static_cast<std::size_t>(i)]);
 }
 
 TYPED_TEST(PolygonTri3, RandomStarPolygonsInTiltedPlanes) {
