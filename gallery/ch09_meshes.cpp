@@ -126,7 +126,7 @@ bool fig_9_5(SvgWriter& w) {
 // 9.6: a non-convex polygon in a tilted plane, triangulated by projection on the dominant
 // coordinate plane (Newell normal) and ear clipping; drawn in the view of the plane.
 bool fig_9_6(SvgWriter& w) {
-  const std::vector<Vec2d> flat{{0, 0},   {4, 0.6}, {6.5, 0}, {7, 3},   {5, 2.2},
+  const std::vector<Vec2d> flat{{0, 0},   {4, 0.6}, {6.5, 0}, {7, 3},     {5, 2.2},
                                 {4, 4.6}, {2.6, 2}, {1, 4.2}, {-0.6, 2.4}};
   std::vector<Vec3d> pts;
   for (const Vec2d& p : flat) pts.push_back({p.x, p.y * 0.8, 0.6 * p.y + 0.1 * p.x});
@@ -205,12 +205,11 @@ bool fig_9_9(SvgWriter& w) {
   const MeshClassification cl = classify_mesh(b.mesh, std::span<const Vec3d>(m.vertices));
   if (cl.kind != MeshKind::not_a_mesh || cl.topology.isolated_edges.size() != 1) return false;
   const std::uint32_t bad = cl.topology.isolated_edges[0];
-  draw_edges(w, b.mesh, m.vertices, flat_view, [&](std::uint32_t e) {
-    return e == bad ? pen(c::red, 2.6) : pen(c::blue, 1.0);
-  });
+  draw_edges(w, b.mesh, m.vertices, flat_view,
+             [&](std::uint32_t e) { return e == bad ? pen(c::red, 2.6) : pen(c::blue, 1.0); });
   const auto ends = b.mesh.edge_vertices(bad);
-  label(w, flat_view((m.vertices[ends[0]] + m.vertices[ends[1]]) * 0.5), "isolated edge", c::red,
-        8, 4);
+  label(w, flat_view((m.vertices[ends[0]] + m.vertices[ends[1]]) * 0.5), "isolated edge", c::red, 8,
+        4);
   return true;
 }
 
@@ -228,8 +227,9 @@ bool fig_9_10(SvgWriter& w) {
   for (std::size_t f = 0; f < 2; ++f) {  // both outlined, whichever side they show
     w.polyline(face_points(m, face(m, f), v, {0, 0}), pen(c::black, 1.2), true);
   }
-  label(w, v(m.vertices[4]), "faces " + std::to_string(si.face_pairs[0][0]) + " and " +
-                                 std::to_string(si.face_pairs[0][1]) + " interpenetrate",
+  label(w, v(m.vertices[4]),
+        "faces " + std::to_string(si.face_pairs[0][0]) + " and " +
+            std::to_string(si.face_pairs[0][1]) + " interpenetrate",
         c::red, 6, 4);
   return true;
 }

@@ -83,7 +83,7 @@ TYPED_TEST(TriangleTriangle, IntegerGridDegeneracies) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int hits = 0, coplanar = 0, degenerate = 0;
-  for (int trial = 0; trial < 4000; ++trial) {
+  for (int trial = 0; trial < 2500; ++trial) {
     const int hi = trial % 2 == 0 ? 2 : 4;
     Triangle3<T> a = grid_triangle<T>(rng, 0, hi), b = grid_triangle<T>(rng, 0, hi);
     if (trial % 3 == 0) {  // put both in the plane z = 1
@@ -104,9 +104,9 @@ TYPED_TEST(TriangleTriangle, IntegerGridDegeneracies) {
     expect_all_orders(a, b, want);
     if (::testing::Test::HasFailure()) return;
   }
-  EXPECT_GT(hits, 400);
-  EXPECT_GT(coplanar, 400);
-  EXPECT_GT(degenerate, 50);
+  EXPECT_GT(hits, 250);
+  EXPECT_GT(coplanar, 250);
+  EXPECT_GT(degenerate, 30);
 }
 
 // Touching configurations and their one-ulp perturbations both ways: the exact answer flips
@@ -116,7 +116,7 @@ TYPED_TEST(TriangleTriangle, OneUlpPerturbations) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int flips = 0;
-  for (int trial = 0; trial < 600; ++trial) {
+  for (int trial = 0; trial < 300; ++trial) {
     Triangle3<T> a, b;
     for (int i = 0; i < 3; ++i) a[i] = rng.template vec<T, 3>(T(-1), T(1));
     // b touches a: one vertex of b is a vertex of a, or b's vertex is the midpoint-ish point of
@@ -149,7 +149,7 @@ TYPED_TEST(TriangleTriangle, OneUlpPerturbations) {
       }
     }
   }
-  EXPECT_GT(flips, 100);
+  EXPECT_GT(flips, 50);
 }
 
 TYPED_TEST(TriangleTriangle, CoplanarOverlapAndTouch) {

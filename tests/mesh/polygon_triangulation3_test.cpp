@@ -210,6 +210,10 @@ TYPED_TEST(PolygonTri3, DegenerateAndInvalidInput) {
                      Vec3<T>{0, 0, 1}),
             Sign::negative);
   EXPECT_EQ(r.dropped_axis, 2);
+  // Any point range, without spelling T; with ring ends too.
+  EXPECT_EQ(triangulate_polygon3(down).triangles, r.triangles);
+  const std::vector<std::uint32_t> one{3};
+  EXPECT_EQ(triangulate_polygon3(down, one, T(0)).triangles, r.triangles);
   EXPECT_LT(r.normal.z, 0);
 }
 

@@ -81,10 +81,16 @@ std::optional<mpq_class> max_over_common_points(const locus::Triangle3<T>& a,
       for (std::size_t j = 0; j < uk; ++j) m[static_cast<std::size_t>(r)][j] = A[r][cols[j]];
       m[static_cast<std::size_t>(r)][uk] = rhs[r];
     }
-    auto aug = m;
-    const int rank_aug = rref(aug, k + 1);
+    // Columns are reduced in order, so the columns of A_S hold rank(A_S) pivots and the right-
+    // hand side one more when the system is inconsistent.
+    if ((mask & 7) == 0 || (mask & 56) == 0) continue;  // sum l = sum m = 1 needs both kinds
     const int rank = rref(m, k);
-    if (rank != k || rank_aug != k) continue;  // dependent columns or inconsistent
+    if (rank != k) continue;  // dependent columns
+    bool consistent = true;
+    for (std::size_t r = uk; r < 5; ++r) {
+      if (sgn(m[r][uk]) != 0) consistent = false;
+    }
+    if (!consistent) continue;
     bool nonneg = true;
     mpq_class value = 0;
     for (std::size_t j = 0; j < uk; ++j) {

@@ -89,7 +89,7 @@ void expect_matches(const VetMesh& m, const Model& model) {
 TEST(VetMesh, RandomInsertRemoveMatchesModel) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
-  for (int trial = 0; trial < 20; ++trial) {
+  for (int trial = 0; trial < 12; ++trial) {
     VetMesh m;
     Model model;
     const int nv = rng.uniform_int(4, 30);

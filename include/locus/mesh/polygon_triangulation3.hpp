@@ -19,6 +19,7 @@
 // invalid_topology); degenerate_input also when n = 0 (collinear or zero-area outer ring),
 // then with no triangles. Cost: O(n) plus the ear clipping.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -142,6 +143,21 @@ template <Real T>
     T planarity_tolerance = std::sqrt(std::numeric_limits<T>::epsilon())) {
   const std::array<std::uint32_t, 1> ends{static_cast<std::uint32_t>(points.size())};
   return triangulate_polygon3(points, std::span<const std::uint32_t>(ends), planarity_tolerance);
+}
+
+/// The same for any point range (core/point_range.hpp).
+template <PointRange3 R>
+[[nodiscard]] PolygonTriangulation3<range_scalar_t<R>> triangulate_polygon3(
+    const R& points, std::span<const std::uint32_t> ring_ends,
+    range_scalar_t<R> planarity_tolerance =
+        std::sqrt(std::numeric_limits<range_scalar_t<R>>::epsilon())) {
+  return triangulate_polygon3(point_span(points), ring_ends, planarity_tolerance);
+}
+template <PointRange3 R>
+[[nodiscard]] PolygonTriangulation3<range_scalar_t<R>> triangulate_polygon3(
+    const R& points, range_scalar_t<R> planarity_tolerance =
+                         std::sqrt(std::numeric_limits<range_scalar_t<R>>::epsilon())) {
+  return triangulate_polygon3(point_span(points), planarity_tolerance);
 }
 
 }  // namespace locus

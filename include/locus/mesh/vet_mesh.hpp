@@ -3,9 +3,10 @@
 // VetMesh: the vertex-edge-face adjacency table of book section 9.3.1 (row mesh.vet, figures
 // 9.7, 9.15) for general polygon faces (triangles the common case). Topology only: positions
 // stay in the caller's array (PolygonMesh::vertices), indexed by the same vertex ids.
-// Ids are std::uint32_t. A vertex exists once inserted or referenced by a face or edge; an edge
-// {a, b} (a != b, unordered, one per vertex pair) exists once inserted or used by a face; face f
-// is its vertex cycle v0 v1 ... v(k-1) (k >= 3, distinct ids) with edge i = {vi, v(i+1 mod k)}.
+// Ids are std::uint32_t indexing flat arrays (vertex id v costs v + 1 records). A vertex exists
+// once inserted or referenced by a face or edge; an edge {a, b} (a != b, unordered, one per
+// vertex pair) exists once inserted or used by a face; face f is its vertex cycle v0 v1 ...
+// v(k-1) (k >= 3, distinct ids) with edge i = {vi, v(i+1 mod k)}.
 // Storage is flat: per-vertex and per-edge records, the faces' corners in one pool (a corner
 // knows its face, its edge and the next corner on the same edge), a doubly linked list of edges
 // around each vertex, and an open-addressing hash (vertex pair -> edge). insert_face and
@@ -32,6 +33,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <vector>
 
