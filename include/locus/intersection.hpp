@@ -18,3 +18,4 @@
 #include <locus/intersection/segment_polygon.hpp>
 #include <locus/intersection/segment_polyline.hpp>
 #include <locus/intersection/segment_segment.hpp>
+#include <locus/intersection/triangle_triangle.hpp>
