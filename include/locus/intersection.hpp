@@ -6,15 +6,21 @@
 // umbrella (cmake/check_layering.cmake checks it, and that the list is complete).
 
 #include <locus/intersection/line_line.hpp>
+#include <locus/intersection/line_plane.hpp>
 #include <locus/intersection/line_polygon.hpp>
 #include <locus/intersection/line_polyline.hpp>
 #include <locus/intersection/line_ray.hpp>
 #include <locus/intersection/line_segment.hpp>
+#include <locus/intersection/line_triangle.hpp>
+#include <locus/intersection/ray_plane.hpp>
 #include <locus/intersection/ray_polygon.hpp>
 #include <locus/intersection/ray_polyline.hpp>
 #include <locus/intersection/ray_ray.hpp>
 #include <locus/intersection/ray_segment.hpp>
+#include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/result.hpp>
+#include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/segment_polygon.hpp>
 #include <locus/intersection/segment_polyline.hpp>
 #include <locus/intersection/segment_segment.hpp>
+#include <locus/intersection/segment_triangle.hpp>
