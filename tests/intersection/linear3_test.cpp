@@ -120,8 +120,8 @@ struct Worst {
 
 template <class T, class A>
 void check_plane(const A& a, const Plane3<T>& pl, Worst* worst = nullptr) {
-  SCOPED_TRACE(describe(a) + ", plane n = " + str(pl.normal) + " c = " +
-               std::to_string(double(pl.constant)));
+  SCOPED_TRACE(describe(a) + ", plane n = " + str(pl.normal) +
+               " c = " + std::to_string(double(pl.constant)));
   const LinearPlaneIntersection<T> r = intersection(a, pl);
   const ex::QLin ql = ex::ql(a);
   const ex::QResult e = ex::plane(ql, ex::q(pl.normal), mpq_class(double(pl.constant)));
@@ -138,8 +138,9 @@ void check_plane(const A& a, const Plane3<T>& pl, Worst* worst = nullptr) {
     double bound = 8 * eps * std::max(ex::qmax_abs(e.point[i]), m);
     const mpq_class nd = ex::qdot(ex::q(pl.normal), ql.d);
     if (e.kind == ex::QKind::point && nd != 0) {
-      const double sine = std::abs(nd.get_d()) / std::sqrt(ex::qdot(ex::q(pl.normal), ex::q(pl.normal)).get_d() *
-                                                           ex::qdot(ql.d, ql.d).get_d());
+      const double sine =
+          std::abs(nd.get_d()) / std::sqrt(ex::qdot(ex::q(pl.normal), ex::q(pl.normal)).get_d() *
+                                           ex::qdot(ql.d, ql.d).get_d());
       bound += 0x1p-100 * ex::qmax_abs(e.point[i] - ql.o) / sine;
     }
     const double pe = err(r.point[k], e.point[i]);
@@ -205,7 +206,8 @@ TYPED_TEST(IntersectionLinear3, PlaneIntegerDegeneracies) {
       const Plane3<T> pl{n, T(rng.uniform_int(-3, 3))};
       const A a = Make<A>::from(g(2), g(2));
       check_plane<T>(a, pl);
-      ++kinds[static_cast<int>(ex::plane(ex::ql(a), ex::q(n), mpq_class(double(pl.constant))).kind)];
+      ++kinds[static_cast<int>(
+          ex::plane(ex::ql(a), ex::q(n), mpq_class(double(pl.constant))).kind)];
       if (::testing::Test::HasFatalFailure()) return;
     }
   });
@@ -230,8 +232,7 @@ TYPED_TEST(IntersectionLinear3, PlaneNearParallel) {
       // A direction in the plane (rounded), so the component is parallel within a few ulps.
       const Vec3<T> d = cross(n, rng.unit<T, 3>());
       Vec3<T> q = p;
-      for (int k = 0; k < 3; ++k)
-        q[k] = std::nextafter(q[k], rng.uniform_int(0, 1) ? T(4) : T(-4));
+      for (int k = 0; k < 3; ++k) q[k] = std::nextafter(q[k], rng.uniform_int(0, 1) ? T(4) : T(-4));
       check_plane<T>(Make<A>::from(q, q + d), pl);
       check_plane<T>(Make<A>::from(p, p + d), pl);
       if (::testing::Test::HasFatalFailure()) return;
@@ -258,8 +259,8 @@ void check_triangle(const A& a, const Triangle3<T>& tri, Worst* worst = nullptr)
   EXPECT_EQ(intersects(a, tri), e.kind != ex::QKind::empty);
   ASSERT_EQ(r.count, e.count);
   const double eps = double(eps_v<T>);
-  const double m = std::max({coord_max(a), double(max_abs(tri.v0)), double(max_abs(tri.v1)),
-                             double(max_abs(tri.v2))});
+  const double m = std::max(
+      {coord_max(a), double(max_abs(tri.v0)), double(max_abs(tri.v1)), double(max_abs(tri.v2))});
   const double dm = ex::qmax_abs(ql.d);
   // 1 / sin(angle) between the component and the plane (1 when coplanar: the crossings are
   // then with edges in the plane, conditioned like the 2D case).
@@ -393,7 +394,8 @@ TYPED_TEST(IntersectionLinear3, ExactMotionsAndScaling) {
                          rng.uniform_int(0, 1) ? T(1) : T(-1)};
       const Vec3<T> shift{T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4)),
                           T(rng.uniform_int(-4, 4))};
-      static constexpr int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {1, 0, 2}, {0, 2, 1}, {2, 1, 0}};
+      static constexpr int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1},
+                                      {1, 0, 2}, {0, 2, 1}, {2, 1, 0}};
       const auto motion = [&](const Vec3<T>& p) {
         Vec3<T> q{};
         for (int k = 0; k < 3; ++k) q[k] = flip[k] * p[P[perm][k]];
@@ -537,7 +539,7 @@ TYPED_TEST(IntersectionLinear3, PlaneSidePredicatesAgainstExact) {
       n = g(), p = g(), d = g(), a = g(), b = g();
       c = T(rng.uniform_int(-3, 3));
       if (i % 8 == 2) a = p + T(rng.uniform_int(-2, 2)) * d;  // the edge meets the line
-    } else if (i % 4 == 3) {  // tiny and huge magnitudes
+    } else if (i % 4 == 3) {                                  // tiny and huge magnitudes
       const int e = rng.uniform_int(-60, 60);
       n = locus_test::scaled(n, e), d = locus_test::scaled(d, -e);
       c = dot(n, p);

@@ -71,7 +71,9 @@ T grid(double x) {
 
 template <class T>
 Mesh<T> octahedron() {
-  Mesh<T> m{"octahedron", {{3, 0, 0}, {-3, 0, 0}, {0, 3, 0}, {0, -3, 0}, {0, 0, 3}, {0, 0, -3}}, {},
+  Mesh<T> m{"octahedron",
+            {{3, 0, 0}, {-3, 0, 0}, {0, 3, 0}, {0, -3, 0}, {0, 0, 3}, {0, 0, -3}},
+            {},
             true};
   m.f = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
   return m;
@@ -80,9 +82,9 @@ Mesh<T> octahedron() {
 template <class T>
 Mesh<T> icosahedron(int subdivisions, Rng* radii) {
   const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Vec3<double>> v = {{-1, g, 0}, {1, g, 0},  {-1, -g, 0}, {1, -g, 0},
-                                 {0, -1, g}, {0, 1, g},  {0, -1, -g}, {0, 1, -g},
-                                 {g, 0, -1}, {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Vec3<double>> v = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                                 {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                                 {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
   std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                                        {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                                        {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
@@ -198,10 +200,10 @@ void run_mesh(const Mesh<T>& m, Rng& rng, long budget, Tally& tally) {
       if (m.convex) tally.doubles += (line > 2) + (from_outside > 2);
       if (from_inside != 1 || seg_inside != 1 || line % 2 || from_outside % 2 ||
           (m.convex && line > 2)) {
-        ADD_FAILURE() << m.name << ": target (" << target.x << ", " << target.y << ", "
-                      << target.z << "), inside " << in.x << " " << in.y << " " << in.z
-                      << ", outside " << out.x << " " << out.y << " " << out.z << ": hits "
-                      << from_inside << " " << seg_inside << " " << line << " " << from_outside;
+        ADD_FAILURE() << m.name << ": target (" << target.x << ", " << target.y << ", " << target.z
+                      << "), inside " << in.x << " " << in.y << " " << in.z << ", outside " << out.x
+                      << " " << out.y << " " << out.z << ": hits " << from_inside << " "
+                      << seg_inside << " " << line << " " << from_outside;
         return;
       }
     }

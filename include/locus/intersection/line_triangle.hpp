@@ -2,7 +2,8 @@
 #pragma once
 // Intersection of a line and a triangle in 3D: intersects() and intersection() on the closed
 // triangle, and watertight_hit() for meshes; row int3.linear-triangle, book section 11.2.
-// Parameters: Line3 t in R (origin + t direction); on the triangle param_b = (s, t) of point_at(tri, st) = v0 + s (v1 - v0)
+// Parameters: Line3 t in R (origin + t direction); on the triangle param_b = (s, t) of
+// point_at(tri, st) = v0 + s (v1 - v0)
 // + t (v2 - v0), barycentrics (1 - s - t, s, t); normal N = (v1 - v0) x (v2 - v0).
 // intersection() (LinearTriangleIntersection<T>): empty; point (a crossing, on the boundary
 // included); when the line lies in the triangle's plane, the overlap: segment (ends by
@@ -41,14 +42,15 @@ template <Real T>
 /// The common set of a line and the closed triangle (see the header comment).
 template <Real T>
 [[nodiscard]] inline LinearTriangleIntersection<T> intersection(const Line3<T>& a,
-                                                               const Triangle3<T>& t) noexcept {
+                                                                const Triangle3<T>& t) noexcept {
   namespace l3 = detail::linear3;
   return l3::cast_tri<T>(l3::triangle<true>(l3::as_lin(a), l3::as_tri(t)));
 }
 
 /// The watertight hit of a line on a triangle of a mesh (see the header comment).
 template <Real T>
-[[nodiscard]] inline TriangleHit<T> watertight_hit(const Line3<T>& a, const Triangle3<T>& t) noexcept {
+[[nodiscard]] inline TriangleHit<T> watertight_hit(const Line3<T>& a,
+                                                   const Triangle3<T>& t) noexcept {
   namespace l3 = detail::linear3;
   return l3::cast_hit<T>(l3::hit(l3::as_lin(a), l3::as_tri(t)));
 }
@@ -62,7 +64,7 @@ template <Real T>
 /// Swapped arguments: swapped(intersection(a, t)).
 template <Real T>
 [[nodiscard]] inline Intersection<T, 3, Vec2<T>, T, 2> intersection(const Triangle3<T>& t,
-                                                                   const Line3<T>& a) noexcept {
+                                                                    const Line3<T>& a) noexcept {
   return swapped(intersection(a, t));
 }
 

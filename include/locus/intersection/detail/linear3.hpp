@@ -42,11 +42,11 @@ using LinearTriangleIntersection = Intersection<T, 3, T, Vec2<T>, 2>;
 /// ray_triangle.hpp): whether it hits, from which side, where.
 template <Real T>
 struct TriangleHit {
-  bool hit = false;         ///< the component hits the triangle (watertight rule)
-  bool front = false;       ///< hit from the side the normal (v1 - v0) x (v2 - v0) points to
-  T t = T(0);               ///< parameter on the component
-  Vec3<T> barycentric{};    ///< (b0, b1, b2), sum 1, the point is b0 v0 + b1 v1 + b2 v2
-  Vec3<T> point{};          ///< the hit point
+  bool hit = false;       ///< the component hits the triangle (watertight rule)
+  bool front = false;     ///< hit from the side the normal (v1 - v0) x (v2 - v0) points to
+  T t = T(0);             ///< parameter on the component
+  Vec3<T> barycentric{};  ///< (b0, b1, b2), sum 1, the point is b0 v0 + b1 v1 + b2 v2
+  Vec3<T> point{};        ///< the hit point
   [[nodiscard]] constexpr explicit operator bool() const noexcept { return hit; }
 };
 
@@ -80,9 +80,7 @@ template <Real T>
   return finite(l.o) && finite(l.d) && finite(l.q);
 }
 /// True when the component is a single point (zero direction, or a zero-length segment).
-[[nodiscard]] inline bool is_point(const Lin& l) noexcept {
-  return l.hi ? l.o == l.q : l.d == V{};
-}
+[[nodiscard]] inline bool is_point(const Lin& l) noexcept { return l.hi ? l.o == l.q : l.d == V{}; }
 /// The point at parameter t (a segment interpolates between its exact end points).
 [[nodiscard]] inline V at(const Lin& l, double t) noexcept {
   if (l.hi) {
@@ -229,12 +227,12 @@ struct Crossing {
   double t;
 };
 
-[[nodiscard]] inline Crossing construct_crossing(const Lin& l, const Tri& tri,
-                                                 const Sign (&s)[3], Sign sigma) noexcept {
+[[nodiscard]] inline Crossing construct_crossing(const Lin& l, const Tri& tri, const Sign (&s)[3],
+                                                 Sign sigma) noexcept {
   // f_i = det[d; v_i - o; v_{i+1} - o] is proportional to the barycentric of v_{i+2}.
   // A power-of-two rescaling (exact) keeps the cubic f_i inside the exponent range.
-  const double m = std::max({max_abs(l.o), max_abs(l.d), max_abs(tri.v[0]), max_abs(tri.v[1]),
-                       max_abs(tri.v[2])});
+  const double m = std::max(
+      {max_abs(l.o), max_abs(l.d), max_abs(tri.v[0]), max_abs(tri.v[1]), max_abs(tri.v[2])});
   int ex = 0;
   (void)std::frexp(m, &ex);
   const double k = std::ldexp(1.0, -ex);
@@ -316,7 +314,8 @@ using TriResult = Intersection<double, 3, double, Vec2<double>, 2>;
 
 /// A projection that keeps the triangle non-degenerate: drops axis k (exact coordinates).
 [[nodiscard]] inline Vec2<double> drop(const V& p, int k) noexcept {
-  return k == 0 ? Vec2<double>{p.y, p.z} : (k == 1 ? Vec2<double>{p.z, p.x} : Vec2<double>{p.x, p.y});
+  return k == 0 ? Vec2<double>{p.y, p.z}
+                : (k == 1 ? Vec2<double>{p.z, p.x} : Vec2<double>{p.x, p.y});
 }
 
 /// The axis whose projection keeps the (non-degenerate) triangle non-degenerate, preferring the
@@ -333,7 +332,8 @@ using TriResult = Intersection<double, 3, double, Vec2<double>, 2>;
 /// Barycentric (s, t) of a point of the triangle's plane, from the projection dropping axis k.
 [[nodiscard]] inline Vec2<double> st_of(const Tri& tri, const V& p, int k) noexcept {
   for (int i = 0; i < 3; ++i)
-    if (p == tri.v[i]) return i == 0 ? Vec2<double>{0, 0} : (i == 1 ? Vec2<double>{1, 0} : Vec2<double>{0, 1});
+    if (p == tri.v[i])
+      return i == 0 ? Vec2<double>{0, 0} : (i == 1 ? Vec2<double>{1, 0} : Vec2<double>{0, 1});
   const Vec2<double> a = drop(tri.v[0], k), b = drop(tri.v[1], k), c = drop(tri.v[2], k),
                      x = drop(p, k);
   const double area = orient2d_value(a, b, c);
@@ -368,8 +368,9 @@ template <bool Construct>
     if (!any || t > tmax) tmax = t, pmax = p, stmax = st;
     any = true;
   };
-  const linear2::Lin l2 = l.hi ? linear2::Lin{drop(l.o, k), drop(l.q, k), drop(l.o, k), true, true}
-                               : linear2::Lin{Vec2<double>{}, drop(l.d, k), drop(l.o, k), l.lo, false};
+  const linear2::Lin l2 =
+      l.hi ? linear2::Lin{drop(l.o, k), drop(l.q, k), drop(l.o, k), true, true}
+           : linear2::Lin{Vec2<double>{}, drop(l.d, k), drop(l.o, k), l.lo, false};
   if (l.lo && in_triangle2(t2, drop(l.o, k))) add(0.0, l.o, st_of(tri, l.o, k));
   if (l.hi && in_triangle2(t2, drop(l.q, k))) add(1.0, l.q, st_of(tri, l.q, k));
   for (int i = 0; i < 3; ++i) {
@@ -381,8 +382,9 @@ template <bool Construct>
       const V& b = tri.v[(i + 1) % 3];
       const V p = u == 0.0 ? a : (u == 1.0 ? b : a + u * (b - a));
       // (s, t) along edge i, with exact zeros off the edge.
-      const Vec2<double> st = i == 0 ? Vec2<double>{u, 0.0}
-                                     : (i == 1 ? Vec2<double>{1.0 - u, u} : Vec2<double>{0.0, 1.0 - u});
+      const Vec2<double> st =
+          i == 0 ? Vec2<double>{u, 0.0}
+                 : (i == 1 ? Vec2<double>{1.0 - u, u} : Vec2<double>{0.0, 1.0 - u});
       add(x.param_a[static_cast<std::size_t>(j)], p, st);
     }
   }
