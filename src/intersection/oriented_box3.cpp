@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
-// Separating-axis test of two oriented boxes (include/locus/intersection/oriented_box_oriented_box.hpp).
+// Separating-axis test of two oriented boxes
+// (include/locus/intersection/oriented_box_oriented_box.hpp).
 
 #include <locus/core/vec.hpp>
 #include <locus/intersection/oriented_box_oriented_box.hpp>
@@ -15,7 +16,8 @@ bool oriented_boxes_meet(const OrientedBox3<T>& a_, const OrientedBox3<T>& b_,
   const V ca = vec_cast<double>(a_.center), cb = vec_cast<double>(b_.center);
   const V ea = vec_cast<double>(a_.extent), eb = vec_cast<double>(b_.extent);
   V A[3], B[3];
-  for (int k = 0; k < 3; ++k) A[k] = vec_cast<double>(a_.axis[k]), B[k] = vec_cast<double>(b_.axis[k]);
+  for (int k = 0; k < 3; ++k)
+    A[k] = vec_cast<double>(a_.axis[k]), B[k] = vec_cast<double>(b_.axis[k]);
   bool finite = is_finite(ca) && is_finite(cb) && is_finite(ea) && is_finite(eb);
   for (int k = 0; k < 3; ++k) finite = finite && is_finite(A[k]) && is_finite(B[k]);
   if (!finite || !(ea.x >= 0 && ea.y >= 0 && ea.z >= 0 && eb.x >= 0 && eb.y >= 0 && eb.z >= 0))
@@ -58,7 +60,7 @@ bool oriented_boxes_meet(const OrientedBox3<T>& a_, const OrientedBox3<T>& b_,
 
 template bool oriented_boxes_meet<float>(const OrientedBox3<float>&, const OrientedBox3<float>&,
                                          float) noexcept;
-template bool oriented_boxes_meet<double>(const OrientedBox3<double>&,
-                                          const OrientedBox3<double>&, double) noexcept;
+template bool oriented_boxes_meet<double>(const OrientedBox3<double>&, const OrientedBox3<double>&,
+                                          double) noexcept;
 
 }  // namespace locus::detail::box3

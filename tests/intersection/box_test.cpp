@@ -231,7 +231,8 @@ std::array<Vec3<T>, 3> signed_permutation(Rng& rng) {
   static constexpr int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {1, 0, 2}, {0, 2, 1}, {2, 1, 0}};
   const int p = rng.uniform_int(0, 5);
   std::array<Vec3<T>, 3> a{};
-  for (int k = 0; k < 3; ++k) a[static_cast<std::size_t>(k)][P[p][k]] = rng.uniform_int(0, 1) ? T(1) : T(-1);
+  for (int k = 0; k < 3; ++k)
+    a[static_cast<std::size_t>(k)][P[p][k]] = rng.uniform_int(0, 1) ? T(1) : T(-1);
   return a;
 }
 
@@ -329,7 +330,8 @@ TYPED_TEST(IntersectionBoxes, PlaneBoxSidesAgainstExact) {
     ++sides[expected + 1];
     touching += (expected == 0 && (lo == 0 || hi == 0)) ? 1 : 0;
     // The same box as an oriented box with the coordinate axes: the same answer (exact frame).
-    const OrientedBox3<T> ob{(box.min + box.max) * T(0.5), {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+    const OrientedBox3<T> ob{(box.min + box.max) * T(0.5),
+                             {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
                              (box.max - box.min) * T(0.5)};
     if (grid && ob.center * T(2) == box.min + box.max) {
       EXPECT_EQ(side_of_plane(ob, pl), side_of_plane(box, pl)) << i;
@@ -355,7 +357,8 @@ TYPED_TEST(IntersectionBoxes, OrientedBoxPlaneStableCases) {
     // Exact: the projected radius of the slab box against the centre's value, with margin.
     const ex::Q3 qn = ex::q(n);
     mpq_class r = 0;
-    for (int k = 0; k < 3; ++k) r += abs(ex::qdot(qn, ex::q(axes[static_cast<std::size_t>(k)]))) * mpq_class(double(e[k]));
+    for (int k = 0; k < 3; ++k)
+      r += abs(ex::qdot(qn, ex::q(axes[static_cast<std::size_t>(k)]))) * mpq_class(double(e[k]));
     const mpq_class v = ex::qdot(qn, ex::q(box.center)) - mpq_class(double(pl.constant));
     const mpq_class margin = abs(abs(v) - r);
     if (margin < mpq_class(1e-9)) continue;
@@ -374,7 +377,8 @@ TYPED_TEST(IntersectionBoxes, AlignedBoxPairsExact) {
   int meet = 0;
   for (int i = 0; i < 5000; ++i) {
     const auto g = [&] {
-      return Vec3<T>{T(rng.uniform_int(-3, 3)), T(rng.uniform_int(-3, 3)), T(rng.uniform_int(-3, 3))};
+      return Vec3<T>{T(rng.uniform_int(-3, 3)), T(rng.uniform_int(-3, 3)),
+                     T(rng.uniform_int(-3, 3))};
     };
     const Vec3<T> p = g(), q = g(), r = g(), s = g();
     const AlignedBox3<T> a{cwise_min(p, q), cwise_max(p, q)}, b{cwise_min(r, s), cwise_max(r, s)};
@@ -577,8 +581,10 @@ TYPED_TEST(IntersectionBoxes, NonFiniteInput) {
     EXPECT_EQ(intersection(Ray3<T>{{bad, 0, 0}, {1, 0, 0}}, box).kind, Kind::empty);
     EXPECT_EQ(intersection(Ray3<T>{{-1, 0.5, 0.5}, {bad, 0, 0}}, box).kind, Kind::empty);
     EXPECT_EQ(intersection(Segment3<T>{{-1, 0.5, 0.5}, {2, bad, 0.5}}, box).kind, Kind::empty);
-    EXPECT_EQ(intersection(Line3<T>{{-1, 0.5, 0.5}, {1, 0, 0}}, AlignedBox3<T>{{bad, 0, 0}, {1, 1, 1}}).kind,
-              Kind::empty);
+    EXPECT_EQ(
+        intersection(Line3<T>{{-1, 0.5, 0.5}, {1, 0, 0}}, AlignedBox3<T>{{bad, 0, 0}, {1, 1, 1}})
+            .kind,
+        Kind::empty);
     EXPECT_EQ(side_of_plane(box, Plane3<T>{{bad, 0, 1}, 0}), Sign::zero);
     EXPECT_FALSE(intersects(box, Plane3<T>{{0, 0, 1}, bad}));
   }

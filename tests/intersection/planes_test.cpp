@@ -69,8 +69,8 @@ Kind expected(const std::vector<Plane3<T>>& pl) {
 
 template <class T>
 void check(const std::vector<Plane3<T>>& pl, double* worst = nullptr) {
-  const PlanesIntersection<T> r = pl.size() == 2 ? intersection(pl[0], pl[1])
-                                                 : intersection(pl[0], pl[1], pl[2]);
+  const PlanesIntersection<T> r =
+      pl.size() == 2 ? intersection(pl[0], pl[1]) : intersection(pl[0], pl[1], pl[2]);
   const bool meets = pl.size() == 2 ? intersects(pl[0], pl[1]) : intersects(pl[0], pl[1], pl[2]);
   const Kind k = expected(pl);
   ASSERT_EQ(to_string(r.kind), to_string(k));
@@ -101,8 +101,8 @@ void check(const std::vector<Plane3<T>>& pl, double* worst = nullptr) {
                           mpq_class(double(q.normal.y)) * mpq_class(double(p.y)) +
                           mpq_class(double(q.normal.z)) * mpq_class(double(p.z)) -
                           mpq_class(double(q.constant));
-      const double scale = length(vec_cast<double>(q.normal)) * double(max_abs(p)) +
-                           std::abs(double(q.constant));
+      const double scale =
+          length(vec_cast<double>(q.normal)) * double(max_abs(p)) + std::abs(double(q.constant));
       const double res = std::abs(v.get_d()) / (eps * std::max(scale, 1e-300));
       EXPECT_LE(res, 16.0 / sine) << "point " << i;
       if (worst) *worst = std::max(*worst, res * sine);
@@ -122,21 +122,21 @@ void check(const std::vector<Plane3<T>>& pl, double* worst = nullptr) {
 TYPED_TEST(IntersectionPlanes, BookTableOfConfigurations) {
   using T = TypeParam;
   using P = Plane3<T>;
-  const P x0{{1, 0, 0}, 0}, x1{{1, 0, 0}, 1}, x0b{{2, 0, 0}, 0}, y0{{0, 1, 0}, 0},
-      z0{{0, 0, 1}, 0}, d{{1, 1, 0}, 0}, d1{{1, 1, 0}, 3};
+  const P x0{{1, 0, 0}, 0}, x1{{1, 0, 0}, 1}, x0b{{2, 0, 0}, 0}, y0{{0, 1, 0}, 0}, z0{{0, 0, 1}, 0},
+      d{{1, 1, 0}, 0}, d1{{1, 1, 0}, 3};
   const struct {
     std::vector<P> pl;
     Kind kind;
   } cases[] = {
-      {{x0, y0}, Kind::line},          // two crossing planes
-      {{x0, x1}, Kind::empty},         // parallel, distinct
-      {{x0, x0b}, Kind::plane},        // coincident (different scaling of the same plane)
-      {{x0, y0, z0}, Kind::point},     // three independent normals
-      {{x0, y0, d}, Kind::line},       // a pencil: three planes through the z axis
-      {{x0, y0, d1}, Kind::empty},     // a prism: three lines parallel to z
-      {{x0, x0b, y0}, Kind::line},     // two coincident, one crossing
-      {{x0, x0b, x1}, Kind::empty},    // two coincident, one parallel
-      {{x0, x1, y0}, Kind::empty},     // two parallel distinct, one crossing
+      {{x0, y0}, Kind::line},                    // two crossing planes
+      {{x0, x1}, Kind::empty},                   // parallel, distinct
+      {{x0, x0b}, Kind::plane},                  // coincident (different scaling of the same plane)
+      {{x0, y0, z0}, Kind::point},               // three independent normals
+      {{x0, y0, d}, Kind::line},                 // a pencil: three planes through the z axis
+      {{x0, y0, d1}, Kind::empty},               // a prism: three lines parallel to z
+      {{x0, x0b, y0}, Kind::line},               // two coincident, one crossing
+      {{x0, x0b, x1}, Kind::empty},              // two coincident, one parallel
+      {{x0, x1, y0}, Kind::empty},               // two parallel distinct, one crossing
       {{x0, x1, P{{1, 0, 0}, 2}}, Kind::empty},  // three parallel distinct
       {{x0, x0b, P{{-3, 0, 0}, 0}}, Kind::plane},  // three coincident
   };
@@ -182,8 +182,8 @@ TYPED_TEST(IntersectionPlanes, RandomPlanesResiduals) {
   for (int i = 0; i < 6000; ++i) {
     std::vector<Plane3<T>> pl;
     for (int k = 0; k < 2 + i % 2; ++k)
-      pl.push_back(plane_from_point_normal(rng.vec<T, 3>(-1, 1),
-                                           rng.unit<T, 3>() * T(std::ldexp(1.0, rng.uniform_int(-20, 20)))));
+      pl.push_back(plane_from_point_normal(
+          rng.vec<T, 3>(-1, 1), rng.unit<T, 3>() * T(std::ldexp(1.0, rng.uniform_int(-20, 20)))));
     check<T>(pl, &worst);
     if (::testing::Test::HasFatalFailure()) return;
   }

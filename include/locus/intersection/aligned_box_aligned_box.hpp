@@ -32,8 +32,8 @@ template <Real T>
 
 /// The common box of two closed aligned boxes, or std::nullopt (exact).
 template <Real T>
-[[nodiscard]] constexpr std::optional<AlignedBox3<T>> intersection(const AlignedBox3<T>& a,
-                                                                   const AlignedBox3<T>& b) noexcept {
+[[nodiscard]] constexpr std::optional<AlignedBox3<T>> intersection(
+    const AlignedBox3<T>& a, const AlignedBox3<T>& b) noexcept {
   if (!intersects(a, b)) return std::nullopt;
   return AlignedBox3<T>{cwise_max(a.min, b.min), cwise_min(a.max, b.max)};
 }

@@ -29,8 +29,8 @@ namespace detail::box3 {
 template <Real T>
 [[nodiscard]] inline bool valid(const OrientedBox3<T>& b, const Plane3<T>& p) noexcept {
   return is_finite(b.center) && is_finite(b.axis[0]) && is_finite(b.axis[1]) &&
-         is_finite(b.axis[2]) && is_finite(b.extent) && b.extent.x >= T(0) &&
-         b.extent.y >= T(0) && b.extent.z >= T(0) && !is_degenerate(p);
+         is_finite(b.axis[2]) && is_finite(b.extent) && b.extent.x >= T(0) && b.extent.y >= T(0) &&
+         b.extent.z >= T(0) && !is_degenerate(p);
 }
 }  // namespace detail::box3
 

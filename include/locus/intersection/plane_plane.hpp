@@ -67,8 +67,8 @@ template <Real T>
 [[nodiscard]] inline bool parallel(const V& a, const V& b) noexcept {
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    if (turn2d(Vec2<double>{}, Vec2<double>{a[i], a[j]}, Vec2<double>{}, Vec2<double>{b[i], b[j]}) !=
-        Sign::zero)
+    if (turn2d(Vec2<double>{}, Vec2<double>{a[i], a[j]}, Vec2<double>{},
+               Vec2<double>{b[i], b[j]}) != Sign::zero)
       return false;
   }
   return true;
@@ -153,7 +153,8 @@ template <Real T>
   PlanesIntersection<T> o;
   o.kind = r.kind;
   o.count = r.count;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(r.count); ++i) o.point[i] = vec_cast<T>(r.point[i]);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(r.count); ++i)
+    o.point[i] = vec_cast<T>(r.point[i]);
   return o;
 }
 

@@ -152,7 +152,8 @@ template <Real T>
 }
 
 template <Real T>
-[[nodiscard]] inline Result aligned(const Lin& l, const AlignedBox3<T>& b, bool construct) noexcept {
+[[nodiscard]] inline Result aligned(const Lin& l, const AlignedBox3<T>& b,
+                                    bool construct) noexcept {
   return construct ? clip<true>(l, vec_cast<double>(b.min), vec_cast<double>(b.max))
                    : clip<false>(l, vec_cast<double>(b.min), vec_cast<double>(b.max));
 }
@@ -176,11 +177,12 @@ template <Real T>
 }
 
 template <Real T>
-[[nodiscard]] inline Result oriented(const Lin& l, const OrientedBox3<T>& b, bool construct) noexcept {
+[[nodiscard]] inline Result oriented(const Lin& l, const OrientedBox3<T>& b,
+                                     bool construct) noexcept {
   Result r;
   const V e = vec_cast<double>(b.extent);
-  if (!linear3::finite(l) || !linear3::finite(e) || !is_finite(b.center) ||
-      !is_finite(b.axis[0]) || !is_finite(b.axis[1]) || !is_finite(b.axis[2]))
+  if (!linear3::finite(l) || !linear3::finite(e) || !is_finite(b.center) || !is_finite(b.axis[0]) ||
+      !is_finite(b.axis[1]) || !is_finite(b.axis[2]))
     return r;
   Lin m = l;
   m.o = to_box(b, l.o);
