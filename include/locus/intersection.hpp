@@ -9,6 +9,7 @@
 #include <locus/intersection/aligned_box_plane.hpp>
 #include <locus/intersection/aligned_box_sphere.hpp>
 #include <locus/intersection/line_aligned_box.hpp>
+#include <locus/intersection/line_disk.hpp>
 #include <locus/intersection/line_line.hpp>
 #include <locus/intersection/line_oriented_box.hpp>
 #include <locus/intersection/line_plane.hpp>
@@ -22,6 +23,7 @@
 #include <locus/intersection/oriented_box_sphere.hpp>
 #include <locus/intersection/plane_plane.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
+#include <locus/intersection/ray_disk.hpp>
 #include <locus/intersection/ray_oriented_box.hpp>
 #include <locus/intersection/ray_plane.hpp>
 #include <locus/intersection/ray_polygon.hpp>
@@ -31,6 +33,7 @@
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/result.hpp>
 #include <locus/intersection/segment_aligned_box.hpp>
+#include <locus/intersection/segment_disk.hpp>
 #include <locus/intersection/segment_oriented_box.hpp>
 #include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/segment_polygon.hpp>
