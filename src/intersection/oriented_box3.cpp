@@ -18,10 +18,14 @@ bool oriented_boxes_meet(const OrientedBox3<T>& a_, const OrientedBox3<T>& b_,
   V A[3], B[3];
   for (int k = 0; k < 3; ++k)
     A[k] = vec_cast<double>(a_.axis[k]), B[k] = vec_cast<double>(b_.axis[k]);
-  bool finite = is_finite(ca) && is_finite(cb) && is_finite(ea) && is_finite(eb);
-  for (int k = 0; k < 3; ++k) finite = finite && is_finite(A[k]) && is_finite(B[k]);
-  if (!finite || !(ea.x >= 0 && ea.y >= 0 && ea.z >= 0 && eb.x >= 0 && eb.y >= 0 && eb.z >= 0))
-    return false;
+  // Finiteness and non-negative extents are checked only before answering "meet": NaN compares
+  // false, so non-finite data never reports a separation by itself, and a separated pair is
+  // answered without the checks.
+  const auto valid = [&] {
+    bool ok = is_finite(ca) && is_finite(cb) && is_finite(ea) && is_finite(eb);
+    for (int k = 0; k < 3; ++k) ok = ok && is_finite(A[k]) && is_finite(B[k]);
+    return ok && ea.x >= 0 && ea.y >= 0 && ea.z >= 0 && eb.x >= 0 && eb.y >= 0 && eb.z >= 0;
+  };
   const double cutoff = 1.0 - double(parallel_tolerance);
   const V D = cb - ca;
   double C[3][3], absC[3][3], AD[3];
@@ -43,7 +47,7 @@ bool oriented_boxes_meet(const OrientedBox3<T>& a_, const OrientedBox3<T>& b_,
     if (std::abs(dot(B[j], D)) > ra + eb[j]) return false;
   }
   // (Nearly) parallel axes: the cross-product axes are degenerate; the face axes decide.
-  if (parallel) return true;
+  if (parallel) return valid();
   // Edge-edge axes A_i x B_j.
   for (int i = 0; i < 3; ++i) {
     const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
@@ -55,7 +59,7 @@ bool oriented_boxes_meet(const OrientedBox3<T>& a_, const OrientedBox3<T>& b_,
       if (r > ra + rb) return false;
     }
   }
-  return true;
+  return valid();
 }
 
 template bool oriented_boxes_meet<float>(const OrientedBox3<float>&, const OrientedBox3<float>&,

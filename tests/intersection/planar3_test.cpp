@@ -186,8 +186,8 @@ TYPED_TEST(IntersectionPlanar3, PolygonExactFrameGrid) {
       const auto r = intersection(a, poly);
       if (r.kind == Kind::point) {
         const Vec2<T> st = r.param_b[0];
-        boundary += (st.x == 0 || st.y == 0 || st.x == 4 || st.y == 4 ||
-                     (st.x == 2 && st.y >= 2) || (st.y == 2 && st.x >= 2));
+        boundary += (st.x == 0 || st.y == 0 || st.x == 4 || st.y == 4 || (st.x == 2 && st.y >= 2) ||
+                     (st.y == 2 && st.x >= 2));
       }
       if (::testing::Test::HasFatalFailure()) return;
     }
@@ -269,9 +269,10 @@ TYPED_TEST(IntersectionPlanar3, DiskAgainstExact) {
       ASSERT_EQ(r.kind, rho <= rr ? Kind::point : Kind::empty) << i;
       if (r.kind == Kind::point) {
         ++hits;
-        EXPECT_TRUE(locus_test::vec_near(point_at(d, r.param_b[0]), r.point[0],
-                                         T(64 * eps_v<T> * 4)));
-        EXPECT_TRUE(locus_test::vec_near(point_at(a, r.param_a[0]), r.point[0], T(64 * eps_v<T> * 4)));
+        EXPECT_TRUE(
+            locus_test::vec_near(point_at(d, r.param_b[0]), r.point[0], T(64 * eps_v<T> * 4)));
+        EXPECT_TRUE(
+            locus_test::vec_near(point_at(a, r.param_a[0]), r.point[0], T(64 * eps_v<T> * 4)));
       }
     }
   });

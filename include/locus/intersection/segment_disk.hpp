@@ -33,7 +33,7 @@ template <Real T>
 /// The common set of a segment and the closed disk (see the header comment).
 template <Real T>
 [[nodiscard]] inline LinearPlanarIntersection<T> intersection(const Segment3<T>& a,
-                                                             const Disk3<T>& d) noexcept {
+                                                              const Disk3<T>& d) noexcept {
   return detail::planar3::cast<T>(detail::planar3::disk<true>(detail::linear3::as_lin(a), d));
 }
 
@@ -46,7 +46,7 @@ template <Real T>
 /// Swapped arguments: swapped(intersection(a, d)).
 template <Real T>
 [[nodiscard]] inline Intersection<T, 3, Vec2<T>, T, 2> intersection(const Disk3<T>& d,
-                                                                   const Segment3<T>& a) noexcept {
+                                                                    const Segment3<T>& a) noexcept {
   return swapped(intersection(a, d));
 }
 

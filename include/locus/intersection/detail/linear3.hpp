@@ -280,18 +280,46 @@ struct Crossing {
 }
 
 /// The watertight hit (see ray_triangle.hpp).
+/// The three edge determinants f_i = det[d; v_i - o; v_{i+1} - o] by one floating-point filter
+/// (the differences v_k - o shared; d = q - o rounded for a segment, which Shewchuk's orient3d
+/// bound covers as well): 1 / -1 where the bound decides, 2 where it does not (and on
+/// non-finite values).
+inline void filtered_edge_signs(const Lin& l, const Tri& tri, int (&out)[3]) noexcept {
+  const V d = l.hi ? l.q - l.o : l.d;
+  const V a[3] = {tri.v[0] - l.o, tri.v[1] - l.o, tri.v[2] - l.o};
+  for (int i = 0; i < 3; ++i) {
+    const V& x = a[i];
+    const V& y = a[(i + 1) % 3];
+    const double p0 = x.y * y.z, q0 = x.z * y.y, p1 = x.z * y.x, q1 = x.x * y.z, p2 = x.x * y.y,
+                 q2 = x.y * y.x;
+    const double v = d.x * (p0 - q0) + d.y * (p1 - q1) + d.z * (p2 - q2);
+    const double perm = std::abs(d.x) * (std::abs(p0) + std::abs(q0)) +
+                        std::abs(d.y) * (std::abs(p1) + std::abs(q1)) +
+                        std::abs(d.z) * (std::abs(p2) + std::abs(q2));
+    out[i] = (perm > 0x1p-960 && perm < 0x1p1000 && std::abs(v) > 7.772e-16 * perm)
+                 ? (v > 0 ? 1 : -1)
+                 : 2;
+  }
+}
+
 [[nodiscard]] inline TriangleHit<double> hit(const Lin& l, const Tri& tri) noexcept {
   TriangleHit<double> h;
+  // Fast rejection: two decided signs that differ mean a miss. (A decided sign implies finite
+  // data: any infinite or NaN coordinate makes its perm infinite or NaN.)
+  int f[3];
+  filtered_edge_signs(l, tri, f);
+  if ((f[0] != 2 && f[1] != 2 && f[0] != f[1]) || (f[1] != 2 && f[2] != 2 && f[1] != f[2]) ||
+      (f[0] != 2 && f[2] != 2 && f[0] != f[2]))
+    return h;
   if (!finite(l) || !finite(tri) || is_point(l)) return h;
-  Sign s[3];
+  Sign s[3], exact[3];
   for (int i = 0; i < 3; ++i) {
-    s[i] = perturbed_edge_side(l, tri.v[i], tri.v[(i + 1) % 3]);
+    exact[i] = f[i] != 2 ? static_cast<Sign>(f[i]) : edge_side(l, tri.v[i], tri.v[(i + 1) % 3]);
+    s[i] = exact[i] != Sign::zero ? exact[i] : perturbed_edge_side(l, tri.v[i], tri.v[(i + 1) % 3]);
     if (s[i] == Sign::zero || s[i] != s[0]) return h;
   }
   const Sign sigma = s[0];  // = sign(dot(d, N)) (the unperturbed signs agree or vanish)
   if (!crossing_in_domain(l, tri, sigma)) return h;
-  Sign exact[3];
-  for (int i = 0; i < 3; ++i) exact[i] = edge_side(l, tri.v[i], tri.v[(i + 1) % 3]);
   const Crossing c = construct_crossing(l, tri, exact, sigma);
   h.hit = true;
   h.front = sigma == Sign::negative;

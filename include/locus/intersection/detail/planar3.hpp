@@ -95,9 +95,9 @@ template <bool Construct, class Inside, class Coplanar>
     if (s0 != Sign::zero) return r;  // parallel, off the plane
     // In the plane: the 2D problem in frame coordinates (rounded).
     const V2 o2 = to_frame(f, l.o);
-    const linear2::Lin l2 = l.hi ? linear2::Lin{o2, to_frame(f, l.q), o2, true, true}
-                                 : linear2::Lin{V2{}, V2{dot(l.d, f.u), dot(l.d, f.v)}, o2,
-                                                l.lo, false};
+    const linear2::Lin l2 =
+        l.hi ? linear2::Lin{o2, to_frame(f, l.q), o2, true, true}
+             : linear2::Lin{V2{}, V2{dot(l.d, f.u), dot(l.d, f.v)}, o2, l.lo, false};
     double t0 = 0, t1 = 0;
     if (!coplanar(l2, t0, t1)) return r;
     r.kind = t0 == t1 ? Kind::point : Kind::segment;
