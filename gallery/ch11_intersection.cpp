@@ -106,8 +106,8 @@ bool fig_11_2(SvgWriter& w) {
   point(w, ray.origin, "P", c::red);
   point(w, r.point[0], "", c::black);
   label(w, r.point[0] + Vec3d{0.3, 0, 0},
-        "b = (" + fmt(h.barycentric.x) + ", " + fmt(h.barycentric.y) + ", " +
-            fmt(h.barycentric.z) + ")" + (h.front ? ", front" : ", back"),
+        "b = (" + fmt(h.barycentric.x) + ", " + fmt(h.barycentric.y) + ", " + fmt(h.barycentric.z) +
+            ")" + (h.front ? ", front" : ", back"),
         c::black);
   return true;
 }
