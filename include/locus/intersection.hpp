@@ -5,17 +5,39 @@
 // include/locus/intersection/ (not detail/). For users: nothing inside the library includes an
 // umbrella (cmake/check_layering.cmake checks it, and that the list is complete).
 
+#include <locus/intersection/aligned_box_aligned_box.hpp>
+#include <locus/intersection/aligned_box_plane.hpp>
+#include <locus/intersection/aligned_box_sphere.hpp>
+#include <locus/intersection/line_aligned_box.hpp>
+#include <locus/intersection/line_disk.hpp>
 #include <locus/intersection/line_line.hpp>
+#include <locus/intersection/line_oriented_box.hpp>
+#include <locus/intersection/line_plane.hpp>
 #include <locus/intersection/line_polygon.hpp>
 #include <locus/intersection/line_polyline.hpp>
 #include <locus/intersection/line_ray.hpp>
 #include <locus/intersection/line_segment.hpp>
+#include <locus/intersection/line_triangle.hpp>
+#include <locus/intersection/oriented_box_oriented_box.hpp>
+#include <locus/intersection/oriented_box_plane.hpp>
+#include <locus/intersection/oriented_box_sphere.hpp>
+#include <locus/intersection/plane_plane.hpp>
+#include <locus/intersection/ray_aligned_box.hpp>
+#include <locus/intersection/ray_disk.hpp>
+#include <locus/intersection/ray_oriented_box.hpp>
+#include <locus/intersection/ray_plane.hpp>
 #include <locus/intersection/ray_polygon.hpp>
 #include <locus/intersection/ray_polyline.hpp>
 #include <locus/intersection/ray_ray.hpp>
 #include <locus/intersection/ray_segment.hpp>
+#include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/result.hpp>
+#include <locus/intersection/segment_aligned_box.hpp>
+#include <locus/intersection/segment_disk.hpp>
+#include <locus/intersection/segment_oriented_box.hpp>
+#include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/segment_polygon.hpp>
 #include <locus/intersection/segment_polyline.hpp>
 #include <locus/intersection/segment_segment.hpp>
+#include <locus/intersection/segment_triangle.hpp>
 #include <locus/intersection/triangle_triangle.hpp>

@@ -18,12 +18,21 @@
 // a single vertex acts as a point (edge 0); zero-length edges act as points.
 // The swapped overload (Polygon2, Segment2) returns swapped(): parameters exchanged, same order.
 // Cost: O(n) for the edges, O(k log k) to order k pieces; allocates the result.
+// 3D (row int3.linear-polygon, book section 11.3, figure 11.3): intersects() / intersection() of
+// a Segment3 with a PlanarPolygon3, the FILLED polygon in its frame (LinearPlanarIntersection<T>,
+// detail/planar3.hpp): the side of the plane {dot(normal, X - origin) = 0} is exact; a crossing
+// point is rounded, mapped to frame coordinates (param_b) and tested exactly against the closed
+// polygon. A segment in the plane: the 2D problem in frame coordinates (rounded), reported as the
+// segment (or point) between its first and last common points (pieces between may leave a
+// non-convex polygon: use the 2D query in the frame for them).
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/linear2.hpp>
 #include <locus/intersection/detail/linear_polyline2.hpp>
+#include <locus/intersection/detail/planar3.hpp>
 #include <locus/intersection/result.hpp>
+#include <locus/primitives/planar_polygon.hpp>
 #include <locus/primitives/polygon.hpp>
 #include <locus/primitives/segment.hpp>
 
@@ -56,6 +65,32 @@ template <Real T>
 template <Real T>
 [[nodiscard]] inline PolylineIntersection2<T> intersection(const Polygon2<T>& p,
                                                            const Segment2<T>& a) {
+  return swapped(intersection(a, p));
+}
+
+/// Whether a segment meets the filled planar polygon (3D; see the header comment).
+template <Real T>
+[[nodiscard]] inline bool intersects(const Segment3<T>& a, const PlanarPolygon3<T>& p) noexcept {
+  return detail::planar3::polygon<false>(detail::linear3::as_lin(a), p).kind != Kind::empty;
+}
+
+/// The common set of a segment and the filled planar polygon (3D; see the header comment).
+template <Real T>
+[[nodiscard]] inline LinearPlanarIntersection<T> intersection(const Segment3<T>& a,
+                                                              const PlanarPolygon3<T>& p) noexcept {
+  return detail::planar3::cast<T>(detail::planar3::polygon<true>(detail::linear3::as_lin(a), p));
+}
+
+/// Swapped arguments (3D): intersects(a, p).
+template <Real T>
+[[nodiscard]] inline bool intersects(const PlanarPolygon3<T>& p, const Segment3<T>& a) noexcept {
+  return intersects(a, p);
+}
+
+/// Swapped arguments (3D): swapped(intersection(a, p)).
+template <Real T>
+[[nodiscard]] inline Intersection<T, 3, Vec2<T>, T, 2> intersection(const PlanarPolygon3<T>& p,
+                                                                    const Segment3<T>& a) noexcept {
   return swapped(intersection(a, p));
 }
 

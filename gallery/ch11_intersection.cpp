@@ -1,0 +1,390 @@
+// SPDX-License-Identifier: BSL-1.0
+// Gallery, chapter 11 (intersection in 3D). Every intersection point, parameter, hit, side and
+// separating-axis answer shown is computed by a locus::intersection / intersects / side_of_plane
+// query on the literal inputs; the 3D scenes are projected through the SvgWriter camera.
+// Figures: linear component and plane (11.1), line and triangle with barycentrics (11.2), two
+// and three planes (11.23, 11.24), slabs and boxes (11.61-11.73).
+#include "gallery.hpp"
+
+#include <locus/intersection/aligned_box_aligned_box.hpp>
+#include <locus/intersection/aligned_box_plane.hpp>
+#include <locus/intersection/aligned_box_sphere.hpp>
+#include <locus/intersection/line_aligned_box.hpp>
+#include <locus/intersection/line_oriented_box.hpp>
+#include <locus/intersection/line_plane.hpp>
+#include <locus/intersection/line_triangle.hpp>
+#include <locus/intersection/oriented_box_oriented_box.hpp>
+#include <locus/intersection/oriented_box_plane.hpp>
+#include <locus/intersection/plane_plane.hpp>
+#include <locus/intersection/ray_aligned_box.hpp>
+#include <locus/intersection/ray_triangle.hpp>
+#include <locus/intersection/segment_plane.hpp>
+#include <locus/io/svg_primitives.hpp>
+#include <locus/primitives/aligned_box.hpp>
+#include <locus/primitives/oriented_box.hpp>
+#include <locus/primitives/plane.hpp>
+#include <locus/primitives/sphere.hpp>
+#include <locus/primitives/triangle.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace locus_gallery {
+namespace {
+
+using namespace locus;
+namespace c = colour;
+
+std::string fmt(double x, int prec = 2) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*f", prec, x);
+  return buf;
+}
+
+// A square patch of the plane around `at` (half size h).
+void plane_patch(SvgWriter& w, const Plane3<double>& pl, const Vec3d& at, double h,
+                 const char* colour) {
+  const auto f = plane_frame(pl);
+  if (!f) return;
+  const Vec3d o = project(pl, at);
+  closed(w,
+         std::vector<Vec3d>{o + (-h) * f->u + (-h) * f->v, o + h * f->u + (-h) * f->v,
+                            o + h * f->u + h * f->v, o + (-h) * f->u + h * f->v},
+         filled(colour, 0.10, 1));
+}
+
+void draw_box(SvgWriter& w, const AlignedBox3<double>& b, const SvgStyle& s) {
+  std::array<Vec3d, 8> c8{};
+  for (int k = 0; k < 8; ++k)
+    c8[static_cast<std::size_t>(k)] = {(k & 1) ? b.max.x : b.min.x, (k & 2) ? b.max.y : b.min.y,
+                                       (k & 4) ? b.max.z : b.min.z};
+  box_edges(w, c8, s);
+}
+void draw_box(SvgWriter& w, const OrientedBox3<double>& b, const SvgStyle& s) {
+  box_edges(w, corners(b), s);
+}
+
+// ---- linear components against planes and triangles -----------------------------------------
+
+// 11.1: a line crossing a plane at P = origin + t direction.
+bool fig_11_1(SvgWriter& w) {
+  w.set_camera(camera({7, -5, 3}, {0, 0, 0.5}));
+  const Plane3<double> pl{{0.1, 0.2, 1.0}, 0.3};
+  const Line3<double> l{{-1.2, 0.4, 2.2}, {0.8, -0.2, -1.0}};
+  const auto r = intersection(l, pl);
+  if (r.kind != Kind::point) return false;
+  plane_patch(w, pl, r.point[0], 1.8, c::blue);
+  w.segment(point_at(l, -0.6), point_at(l, 3.0), pen(c::red));
+  w.arrow(l.origin, l.origin + l.direction, pen(c::red, 2));
+  point(w, l.origin, "P", c::red);
+  label(w, l.origin + l.direction, "d", c::red);
+  point(w, r.point[0], "X = P + t d, t = " + fmt(r.param_a[0]), c::black);
+  w.arrow(r.point[0], r.point[0] + 0.8 * normalize(pl.normal), pen(c::blue));
+  label(w, r.point[0] + 0.8 * normalize(pl.normal), "n", c::blue);
+  return true;
+}
+
+// 11.2: a ray through a triangle: the hit point, its barycentrics and the watertight hit's side.
+bool fig_11_2(SvgWriter& w) {
+  w.set_camera(camera({4, -7, 5}, {1, 1, 0}));
+  const Triangle3<double> t{{-1, -1, 0}, {3, 0, 0.4}, {0, 3, 0.2}};
+  const Ray3<double> ray{{0.2, 0.4, 3}, {0.3, 0.2, -1}};
+  const auto r = intersection(ray, t);
+  const TriangleHit<double> h = watertight_hit(ray, t);
+  if (r.kind != Kind::point || !h.hit) return false;
+  closed(w, std::vector<Vec3d>{t.v0, t.v1, t.v2}, filled(c::blue, 0.15));
+  point(w, t.v0, "V0", c::blue);
+  point(w, t.v1, "V1", c::blue);
+  point(w, t.v2, "V2", c::blue);
+  for (const Vec3d& v : {t.v0, t.v1, t.v2}) w.segment(r.point[0], v, dashed(c::gray, 1));
+  w.arrow(ray.origin, r.point[0], pen(c::red, 2));
+  w.segment(r.point[0], point_at(ray, r.param_a[0] + 0.8), dashed(c::red, 1.2));
+  point(w, ray.origin, "P", c::red);
+  point(w, r.point[0], "", c::black);
+  label(w, r.point[0] + Vec3d{0.3, 0, 0},
+        "b = (" + fmt(h.barycentric.x) + ", " + fmt(h.barycentric.y) + ", " + fmt(h.barycentric.z) +
+            ")" + (h.front ? ", front" : ", back"),
+        c::black);
+  return true;
+}
+
+// 11.23: two planes meet in a line.
+bool fig_11_23(SvgWriter& w) {
+  w.set_camera(camera({6, -6, 4}, {0, 0, 0}));
+  const Plane3<double> a{{0, 0, 1}, 0}, b{{1, 0, 1}, 0.4};
+  const auto r = intersection(a, b);
+  if (r.kind != Kind::line) return false;
+  plane_patch(w, a, r.point[0], 1.6, c::blue);
+  plane_patch(w, b, r.point[0], 1.6, c::green);
+  const Vec3d d = r.point[1] - r.point[0];
+  w.segment(r.point[0] - 2.0 * d, r.point[0] + 2.0 * d, pen(c::red, 2.5));
+  label(w, r.point[0] + 2.0 * d, "line of intersection", c::red);
+  return true;
+}
+
+// 11.24: the configurations of three planes (the book's table 11.1), each classified by
+// intersection(a, b, c).
+bool fig_11_24(SvgWriter& w) {
+  const Plane3<double> x0{{1, 0, 0}, 0}, x1{{1, 0, 0}, 1.2}, y0{{0, 1, 0}, 0}, z0{{0, 0, 1}, 0},
+      d{{1, 1, 0}, 0}, d1{{1, 1, 0}, 1.4}, x2{{1, 0, 0}, -1.2};
+  const std::array<std::array<Plane3<double>, 3>, 6> cases = {
+      {{x0, y0, z0}, {x0, y0, d}, {x0, y0, d1}, {x0, x1, y0}, {x2, x0, x1}, {x0, x0, y0}}};
+  const char* names[] = {"(a) ", "(b) ", "(c) ", "(d) ", "(e) ", "(f) "};
+  w.set_camera(camera({7, -9, 6}, {9, 0, 0}));
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto& p = cases[i];
+    const auto r = intersection(p[0], p[1], p[2]);
+    const Vec3d shift{double(i % 3) * 6.0, double(i / 3) * 7.0, 0};
+    const char* cols[] = {c::blue, c::green, c::orange};
+    for (int k = 0; k < 3; ++k) {
+      const Plane3<double> moved{p[static_cast<std::size_t>(k)].normal,
+                                 p[static_cast<std::size_t>(k)].constant +
+                                     dot(p[static_cast<std::size_t>(k)].normal, shift)};
+      plane_patch(w, moved, shift, 1.5, cols[k]);
+    }
+    if (r.kind == Kind::point) point(w, r.point[0] + shift, "", c::red);
+    if (r.kind == Kind::line) {
+      const Vec3d a = r.point[0] + shift, b = r.point[1] + shift;
+      w.segment(a - 1.5 * (b - a), a + 1.5 * (b - a), pen(c::red, 2.5));
+    }
+    label(w, shift + Vec3d{0, 0, -2.4}, std::string(names[i]) + std::string(to_string(r.kind)),
+          c::black);
+  }
+  return true;
+}
+
+// ---- slabs and boxes --------------------------------------------------------------------------
+
+// 11.61: a line through an axis-aligned box: entry and exit points.
+bool fig_11_61(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 5}, {0.5, 0.5, 0.5}));
+  const AlignedBox3<double> b{{0, 0, 0}, {2, 1.5, 1}};
+  const Line3<double> l{{-1, 0.2, 0.2}, {1, 0.4, 0.25}};
+  const auto r = intersection(l, b);
+  if (r.kind != Kind::segment) return false;
+  draw_box(w, b, pen(c::blue));
+  w.segment(point_at(l, -0.5), point_at(l, 4.5), pen(c::gray));
+  w.segment(r.point[0], r.point[1], pen(c::red, 3));
+  point(w, r.point[0], "t0 = " + fmt(r.param_a[0]), c::red);
+  point(w, r.point[1], "t1 = " + fmt(r.param_a[1]), c::red);
+  return true;
+}
+
+// 11.62: the box as the intersection of three slabs (each drawn as its two bounding planes).
+bool fig_11_62(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 5}, {0.5, 0.5, 0.5}));
+  const AlignedBox3<double> b{{0, 0, 0}, {1, 1, 1}};
+  const char* cols[] = {c::red, c::green, c::blue};
+  for (int k = 0; k < 3; ++k) {
+    Vec3d n{};
+    n[k] = 1;
+    for (const double v : {b.min[k], b.max[k]}) {
+      // The slab's planes, verified to touch the box (side_of_plane zero).
+      const Plane3<double> pl{n, v};
+      if (side_of_plane(b, pl) != Sign::zero) return false;
+      plane_patch(w, pl, Vec3d{0.5, 0.5, 0.5}, 0.95, cols[k]);
+    }
+  }
+  draw_box(w, b, pen(c::black, 2));
+  return true;
+}
+
+// 11.63 / 11.64: slab clipping of rays seen down the z axis: each slab clips the ray to an
+// interval; the box is hit when the intervals overlap.
+bool fig_11_64(SvgWriter& w) {
+  w.set_camera(camera({0.5, 0.5, 10}, {0.5, 0.5, 0}));
+  const AlignedBox3<double> b{{0, 0, 0}, {2, 1, 1}};
+  w.segment(Vec3d{0, -1.5, 0.5}, Vec3d{0, 2.5, 0.5}, dashed(c::gray));
+  w.segment(Vec3d{2, -1.5, 0.5}, Vec3d{2, 2.5, 0.5}, dashed(c::gray));
+  w.segment(Vec3d{-1.5, 0, 0.5}, Vec3d{3.5, 0, 0.5}, dashed(c::gray));
+  w.segment(Vec3d{-1.5, 1, 0.5}, Vec3d{3.5, 1, 0.5}, dashed(c::gray));
+  draw_box(w, b, pen(c::blue, 2));
+  const std::array<Ray3<double>, 2> rays = {Ray3<double>{{-1.2, -1.0, 0.5}, {1, 0.8, 0}},
+                                            Ray3<double>{{-1.2, 0.4, 0.5}, {1, 1.6, 0}}};
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const auto r = intersection(rays[i], b);
+    w.arrow(rays[i].origin, point_at(rays[i], 3.5), pen(i == 0 ? c::red : c::orange));
+    point(w, rays[i].origin, i == 0 ? "hits" : "misses", i == 0 ? c::red : c::orange);
+    if (r.kind == Kind::segment) {
+      w.segment(r.point[0], r.point[1], pen(c::red, 4));
+      point(w, r.point[0], "entry", c::red);
+      point(w, r.point[1], "exit", c::red);
+    }
+    if ((i == 0) != (r.kind != Kind::empty)) return false;
+  }
+  return true;
+}
+
+// 11.65: an oriented box: centre, axes and extents.
+bool fig_11_65(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 5}, {0, 0, 0}));
+  const double s = std::sqrt(0.5);
+  const OrientedBox3<double> b{{0, 0, 0}, {{s, s, 0}, {-s, s, 0}, {0, 0, 1}}, {1.5, 0.8, 0.6}};
+  draw_box(w, b, pen(c::blue));
+  const char* names[] = {"a0 e0", "a1 e1", "a2 e2"};
+  for (int k = 0; k < 3; ++k) {
+    const Vec3d tip = b.center + b.extent[k] * b.axis[k];
+    w.arrow(b.center, tip, pen(c::red));
+    label(w, tip, names[k], c::red);
+  }
+  point(w, b.center, "C", c::black);
+  return true;
+}
+
+// 11.66: clipping a line against an oriented box (oriented slabs).
+bool fig_11_66(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 5}, {0, 0, 0}));
+  const double s = std::sqrt(0.5);
+  const OrientedBox3<double> b{{0, 0, 0}, {{s, s, 0}, {-s, s, 0}, {0, 0, 1}}, {1.5, 0.8, 0.6}};
+  const Line3<double> l{{-2, -1.2, -0.3}, {1, 0.7, 0.2}};
+  const auto r = intersection(l, b);
+  if (r.kind != Kind::segment) return false;
+  draw_box(w, b, pen(c::blue));
+  w.segment(point_at(l, -0.5), point_at(l, 4.5), pen(c::gray));
+  w.segment(r.point[0], r.point[1], pen(c::red, 3));
+  point(w, r.point[0], "t0 = " + fmt(r.param_a[0]), c::red);
+  point(w, r.point[1], "t1 = " + fmt(r.param_a[1]), c::red);
+  return true;
+}
+
+// 11.67 / 11.68: a plane against an aligned box: only the two corners at the ends of the
+// diagonal most aligned with the normal matter; their exact sides classify the box.
+bool fig_11_67(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 4}, {0.5, 0.5, 0.5}));
+  const AlignedBox3<double> b{{0, 0, 0}, {1.5, 1, 1}};
+  const Plane3<double> pl{{0.4, 0.3, 1.0}, 0.9};
+  const Sign s = side_of_plane(b, pl);
+  if (s != Sign::zero) return false;
+  draw_box(w, b, pen(c::blue));
+  plane_patch(w, pl, Vec3d{0.75, 0.5, 0.5}, 1.4, c::green);
+  const Vec3d lo = b.min, hi = b.max;  // the normal has positive components
+  w.segment(lo, hi, dashed(c::red, 1.5));
+  point(w, lo, "Vmin: " + fmt(signed_value(pl, lo)), c::red);
+  point(w, hi, "Vmax: " + fmt(signed_value(pl, hi)), c::red);
+  label(w, Vec3d{0, 1, 1.4}, "side_of_plane = 0 (meets)", c::black);
+  return true;
+}
+
+// 11.68: the same box against parallel planes on either side and through a corner.
+bool fig_11_68(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 4}, {0.5, 0.5, 0.5}));
+  const AlignedBox3<double> b{{0, 0, 0}, {1, 1, 1}};
+  draw_box(w, b, pen(c::blue));
+  const Vec3d n{1, 1, 1};
+  const std::array<double, 3> cs = {-0.6, 3.0, 3.6};
+  const char* cols[] = {c::green, c::orange, c::purple};
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const Plane3<double> pl{n, cs[i]};
+    plane_patch(w, pl, Vec3d{0.5, 0.5, 0.5}, 1.0, cols[i]);
+    const Sign s = side_of_plane(b, pl);
+    label(w, project(pl, Vec3d{0.5, 0.5, 0.5}) + Vec3d{0.4, -0.4, 0},
+          s == Sign::zero ? "touches" : (s == Sign::positive ? "box on + side" : "box on - side"),
+          cols[i]);
+  }
+  w.segment(b.min, b.max, dashed(c::red));
+  return side_of_plane(b, Plane3<double>{n, 3.0}) == Sign::zero;
+}
+
+// 11.69 / 11.70: a plane against an oriented box; the extreme corners along the normal.
+bool fig_11_69(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 4}, {0, 0, 0}));
+  const double s = std::sqrt(0.5);
+  const OrientedBox3<double> b{{0, 0, 0}, {{s, s, 0}, {-s, s, 0}, {0, 0, 1}}, {1.2, 0.6, 0.5}};
+  const Plane3<double> pl{{0.2, -0.3, 1.0}, 0.3};
+  if (side_of_plane(b, pl) != Sign::zero) return false;
+  draw_box(w, b, pen(c::blue));
+  plane_patch(w, pl, Vec3d{0, 0, 0}, 1.6, c::green);
+  label(w, Vec3d{0, 0, 1.8}, "side_of_plane = 0 (meets)", c::black);
+  return true;
+}
+
+// 11.71: two aligned boxes and their common box.
+bool fig_11_71(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 5}, {1, 1, 0.5}));
+  const AlignedBox3<double> a{{0, 0, 0}, {1.5, 1.2, 1}}, b{{0.8, 0.6, 0.4}, {2.2, 1.8, 1.5}};
+  const auto r = intersection(a, b);
+  if (!r) return false;
+  draw_box(w, a, pen(c::blue));
+  draw_box(w, b, pen(c::green));
+  draw_box(w, *r, pen(c::red, 2.5));
+  label(w, r->max, "common box", c::red);
+  return true;
+}
+
+// 11.72: the separating-axis schematic: two oriented boxes, their projections on a face axis
+// of the first, and whether intersects() finds them separated.
+bool fig_11_72(SvgWriter& w) {
+  w.set_camera(camera({0, 0, 10}, {1.5, 0, 0}));
+  const double s = std::sqrt(0.5);
+  const OrientedBox3<double> a{{0, 0, 0}, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {1, 0.6, 0.5}};
+  const OrientedBox3<double> b{{2.9, 0.6, 0}, {{s, s, 0}, {-s, s, 0}, {0, 0, 1}}, {1, 0.5, 0.5}};
+  const bool meet = intersects(a, b);
+  draw_box(w, a, pen(c::blue));
+  draw_box(w, b, pen(c::green));
+  // Projections onto the x axis (a's first face normal): radii r_a, r_b and the centre distance.
+  const double ra = a.extent.x;
+  double rb = 0;
+  for (int k = 0; k < 3; ++k) rb += b.extent[k] * std::abs(b.axis[k].x);
+  const double y = -1.6;
+  w.segment(Vec3d{-ra, y, 0}, Vec3d{ra, y, 0}, pen(c::blue, 4));
+  w.segment(Vec3d{b.center.x - rb, y - 0.2, 0}, Vec3d{b.center.x + rb, y - 0.2, 0},
+            pen(c::green, 4));
+  label(w, Vec3d{-1, y - 0.7, 0},
+        "|D.L| = " + fmt(b.center.x) + " vs rA + rB = " + fmt(ra + rb) +
+            (meet ? ": overlap on every axis" : ": separated"),
+        c::black);
+  return !meet;
+}
+
+// 11.73: an aligned box and spheres: Arvo's squared distance against r^2 (exact).
+bool fig_11_73(SvgWriter& w) {
+  w.set_camera(camera({0.5, 0.5, 10}, {1, 0.5, 0}));
+  const AlignedBox3<double> b{{0, 0, 0}, {2, 1, 1}};
+  draw_box(w, b, pen(c::blue, 2));
+  const std::array<Sphere3<double>, 3> ss = {Sphere3<double>{{3, 2, 0.5}, 1.6},
+                                             Sphere3<double>{{-1, 0.5, 0.5}, 1.0},
+                                             Sphere3<double>{{3.5, -1, 0.5}, 1.0}};
+  for (const auto& sp : ss) {
+    const bool m = intersects(b, sp);
+    std::vector<Vec3d> ring;
+    for (int k = 0; k <= 64; ++k) {
+      const double a = 2 * std::numbers::pi * k / 64;
+      ring.push_back(sp.center + sp.radius * Vec3d{std::cos(a), std::sin(a), 0});
+    }
+    w.polyline(ring, pen(m ? c::red : c::gray));
+    const Vec3d q = cwise_min(cwise_max(sp.center, b.min), b.max);
+    w.segment(sp.center, q, dashed(c::gray));
+    point(w, sp.center, m ? "meets" : "misses", m ? c::red : c::gray);
+  }
+  // A sphere tangent to the face x = 2 meets the closed box (decided exactly).
+  return intersects(b, Sphere3<double>{{3, 0.5, 0.5}, 1.0}) && intersects(b, ss[0]) &&
+         !intersects(b, ss[2]);
+}
+
+}  // namespace
+
+std::vector<Figure> chapter11_intersection_figures() {
+  return {
+      {"11.1", "intersection(Line3, Plane3)", fig_11_1},
+      {"11.2", "intersection(Ray3, Triangle3), watertight_hit", fig_11_2},
+      {"11.23", "intersection(Plane3, Plane3)", fig_11_23},
+      {"11.24", "intersection(Plane3, Plane3, Plane3) (every configuration)", fig_11_24},
+      {"11.61", "intersection(Line3, AlignedBox3)", fig_11_61},
+      {"11.62", "side_of_plane(AlignedBox3, Plane3) (slab planes)", fig_11_62},
+      {"11.64", "intersection(Ray3, AlignedBox3) (slab clipping)", fig_11_64},
+      {"11.65", "OrientedBox3, corners", fig_11_65},
+      {"11.66", "intersection(Line3, OrientedBox3)", fig_11_66},
+      {"11.67", "side_of_plane(AlignedBox3, Plane3)", fig_11_67},
+      {"11.68", "side_of_plane(AlignedBox3, Plane3) (extreme corners)", fig_11_68},
+      {"11.69", "side_of_plane(OrientedBox3, Plane3)", fig_11_69},
+      {"11.71", "intersection(AlignedBox3, AlignedBox3)", fig_11_71},
+      {"11.72", "intersects(OrientedBox3, OrientedBox3) (separating axes)", fig_11_72},
+      {"11.73", "intersects(AlignedBox3, Sphere3)", fig_11_73},
+  };
+}
+
+}  // namespace locus_gallery

@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Shared engine of a 3D linear component against a planar region given by a frame (origin, u,
+// v, normal) and a closed 2D region in frame coordinates: a planar polygon (PlanarPolygon3) or
+// a disk (Disk3); row int3.linear-polygon. Internal: include a pair header. The region's plane is
+// { X : dot(normal, X - origin) = 0 } as given; sides of it are exact signs; the crossing point
+// is rounded, then expressed in frame coordinates and tested against the 2D region.
+
+#include <locus/core/plane_side.hpp>
+#include <locus/core/predicates.hpp>
+#include <locus/core/scalar.hpp>
+#include <locus/core/vec.hpp>
+#include <locus/intersection/detail/linear2.hpp>
+#include <locus/intersection/detail/linear3.hpp>
+#include <locus/intersection/result.hpp>
+#include <locus/primitives/circle.hpp>
+#include <locus/primitives/planar_polygon.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <span>
+
+namespace locus {
+
+/// The result of intersection() of a Line3, Ray3 or Segment3 with a PlanarPolygon3 or a Disk3:
+/// param_a on the component, param_b the frame coordinates (s, t) of point_at(region, st).
+template <Real T>
+using LinearPlanarIntersection = Intersection<T, 3, T, Vec2<T>, 2>;
+
+namespace detail::planar3 {
+
+using V = Vec3<double>;
+using V2 = Vec2<double>;
+using linear3::Lin;
+using Result = Intersection<double, 3, double, V2, 2>;
+
+struct Frame {
+  V o, u, v, n;
+};
+
+/// Exact sign of dot(n, x - p0): the six products n_k x_k - n_k p0_k.
+[[nodiscard]] inline Sign side(const Frame& f, const V& x) noexcept {
+  const V w = x - f.o;
+  const double t0 = f.n.x * w.x, t1 = f.n.y * w.y, t2 = f.n.z * w.z;
+  const double val = (t0 + t1) + t2, mag = std::abs(t0) + std::abs(t1) + std::abs(t2);
+  // Differences, products and two additions: at most 5 roundings of 2^-53 relative to mag.
+  if (mag > 0x1p-960 && mag < 0x1p1000 && std::abs(val) > 6e-16 * mag)
+    return val > 0 ? Sign::positive : Sign::negative;
+  ExactMonomial m[6];
+  for (int k = 0; k < 3; ++k) {
+    m[2 * k] = {1, 0, 2, {f.n[k], x[k], 0, 0}};
+    m[2 * k + 1] = {-1, 0, 2, {f.n[k], f.o[k], 0, 0}};
+  }
+  return static_cast<Sign>(exact_sign_of_sum(m));
+}
+
+[[nodiscard]] inline V2 to_frame(const Frame& f, const V& x) noexcept {
+  const V w = x - f.o;
+  return {dot(w, f.u), dot(w, f.v)};
+}
+
+/// The component against the region: inside(st) tests a frame point (closed region);
+/// coplanar(l2, tmin, tmax, ...) gives the extreme common parameters of a 2D component.
+template <bool Construct, class Inside, class Coplanar>
+[[nodiscard]] inline Result run(const Lin& l, const Frame& f, Inside&& inside,
+                                Coplanar&& coplanar) noexcept {
+  Result r;
+  if (!linear3::finite(l) || !linear3::finite(f.o) || !linear3::finite(f.u) ||
+      !linear3::finite(f.v) || !linear3::finite(f.n) || f.n == V{})
+    return r;
+  const auto point = [&](const V& x, double t) {
+    const V2 st = to_frame(f, x);
+    if (!inside(st)) return r;
+    Result p;
+    p.kind = Kind::point;
+    p.count = 1;
+    p.point[0] = x;
+    p.param_a[0] = t;
+    p.param_b[0] = st;
+    return p;
+  };
+  const Sign s0 = side(f, l.o);
+  if (linear3::is_point(l)) return s0 == Sign::zero ? point(l.o, 0.0) : r;
+  Sign s1 = Sign::zero, sd = Sign::zero;
+  if (l.hi) {
+    s1 = side(f, l.q);
+    sd = s0 == s1 ? Sign::zero : (s1 > s0 ? Sign::positive : Sign::negative);
+    if (s0 == s1 && s0 != Sign::zero) return r;
+  } else {
+    sd = sign_of_dot(f.n, l.d);
+  }
+  const bool in_plane = l.hi ? (s0 == Sign::zero && s1 == Sign::zero) : (sd == Sign::zero);
+  if (in_plane) {
+    if (s0 != Sign::zero) return r;  // parallel, off the plane
+    // In the plane: the 2D problem in frame coordinates (rounded).
+    const V2 o2 = to_frame(f, l.o);
+    const linear2::Lin l2 =
+        l.hi ? linear2::Lin{o2, to_frame(f, l.q), o2, true, true}
+             : linear2::Lin{V2{}, V2{dot(l.d, f.u), dot(l.d, f.v)}, o2, l.lo, false};
+    double t0 = 0, t1 = 0;
+    if (!coplanar(l2, t0, t1)) return r;
+    r.kind = t0 == t1 ? Kind::point : Kind::segment;
+    r.count = t0 == t1 ? 1 : 2;
+    const double ts[2] = {t0, t1};
+    for (int i = 0; i < r.count; ++i) {
+      const V x = linear3::at(l, ts[i]);
+      r.point[static_cast<std::size_t>(i)] = x;
+      r.param_a[static_cast<std::size_t>(i)] = ts[i];
+      r.param_b[static_cast<std::size_t>(i)] = to_frame(f, x);
+    }
+    return r;
+  }
+  if (s0 == Sign::zero) return point(l.o, 0.0);
+  if (l.hi && s1 == Sign::zero) return point(l.q, 1.0);
+  if (l.lo && s0 == sd) return r;  // moving away from the plane
+  (void)Construct;
+  double t;
+  if (l.hi) {
+    const double f0 = dot_accurate(f.n, l.o - f.o), f1 = dot_accurate(f.n, l.q - f.o);
+    t = std::clamp(f0 / (f0 - f1), 0.0, 1.0);
+  } else {
+    t = linear3::clamp_param(l, -dot_accurate(f.n, l.o - f.o) / dot_accurate(f.n, l.d));
+  }
+  return point(linear3::at(l, t), t);
+}
+
+/// Whether a frame point lies in the closed polygon (exact on the rounded point): on an edge,
+/// or inside by the crossing number.
+template <Real T>
+[[nodiscard]] inline bool in_polygon(std::span<const Vec2<T>> poly, const V2& p) noexcept {
+  const std::size_t n = poly.size();
+  if (n == 0) return false;
+  bool in = false;
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const V2 a = vec_cast<double>(poly[j]), b = vec_cast<double>(poly[i]);
+    if (orient2d(a, b, p) == Sign::zero && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+        std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
+      return true;
+    if ((a.y > p.y) != (b.y > p.y)) {
+      // The edge crosses the horizontal through p: to the right of p iff orient2d agrees.
+      const Sign o = orient2d(a, b, p);
+      if ((b.y > a.y) == (o == Sign::positive)) in = !in;
+    }
+  }
+  return in;
+}
+
+/// A 2D component against the closed polygon: the extreme parameters of the common points
+/// (edge crossings and the component's end points inside).
+template <Real T>
+[[nodiscard]] inline bool polygon_span(std::span<const Vec2<T>> poly, const linear2::Lin& l,
+                                       double& tmin, double& tmax) noexcept {
+  bool any = false;
+  const auto add = [&](double t) {
+    if (!any || t < tmin) tmin = t;
+    if (!any || t > tmax) tmax = t;
+    any = true;
+  };
+  if (l.lo && in_polygon(poly, l.o)) add(0.0);
+  if (l.hi && in_polygon(poly, l.b)) add(1.0);
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const V2 a = vec_cast<double>(poly[i]), b = vec_cast<double>(poly[(i + 1) % n]);
+    const linear2::Result x = linear2::intersect<true>(l, linear2::Lin{a, b, a, true, true});
+    for (int j = 0; j < x.count; ++j) add(x.param_a[static_cast<std::size_t>(j)]);
+  }
+  return any;
+}
+
+/// A 2D component against the closed disk |x| <= r (frame centred at the disk's centre):
+/// the roots of |o + t d|^2 = r^2 clipped to the domain (rounded).
+[[nodiscard]] inline bool disk_span(double r, const linear2::Lin& l, double& tmin,
+                                    double& tmax) noexcept {
+  const V2 d = l.b - l.a;
+  const double a = dot(d, d), b = dot(l.o, d), c = dot(l.o, l.o) - r * r;
+  const double disc = b * b - a * c;
+  if (a == 0 || disc < 0) return false;
+  const double s = std::sqrt(disc);
+  // Stable roots: q = -(b + sign(b) s); t = q / a and c / q.
+  const double q = -(b + std::copysign(s, b));
+  double t0 = q / a, t1 = q != 0 ? c / q : t0;
+  if (t0 > t1) std::swap(t0, t1);
+  if (l.lo) t0 = std::max(t0, 0.0);
+  if (l.hi) t1 = std::min(t1, 1.0);
+  if (t0 > t1) return false;
+  tmin = t0, tmax = t1;
+  return true;
+}
+
+template <Real T>
+[[nodiscard]] inline LinearPlanarIntersection<T> cast(const Result& r) noexcept {
+  LinearPlanarIntersection<T> o;
+  o.kind = r.kind;
+  o.count = r.count;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(r.count); ++i) {
+    o.point[i] = vec_cast<T>(r.point[i]);
+    o.param_a[i] = static_cast<T>(r.param_a[i]);
+    o.param_b[i] = vec_cast<T>(r.param_b[i]);
+  }
+  return o;
+}
+
+template <bool Construct, Real T>
+[[nodiscard]] inline Result polygon(const Lin& l, const PlanarPolygon3<T>& p) noexcept {
+  const Frame f{vec_cast<double>(p.frame.origin), vec_cast<double>(p.frame.u),
+                vec_cast<double>(p.frame.v), vec_cast<double>(p.frame.normal)};
+  const std::span<const Vec2<T>> v(p.polygon.vertices);
+  for (const Vec2<T>& q : v)
+    if (!is_finite(q)) return {};
+  return run<Construct>(
+      l, f, [&](const V2& st) { return in_polygon(v, st); },
+      [&](const linear2::Lin& l2, double& t0, double& t1) { return polygon_span(v, l2, t0, t1); });
+}
+
+template <bool Construct, Real T>
+[[nodiscard]] inline Result disk(const Lin& l, const Disk3<T>& d) noexcept {
+  const CircleAxes<T> ax = in_plane_axes(d);
+  const Frame f{vec_cast<double>(d.center), vec_cast<double>(ax.u), vec_cast<double>(ax.v),
+                vec_cast<double>(d.normal)};
+  const double r = double(d.radius);
+  if (!std::isfinite(r) || r < 0 || ax.u == Vec3<T>{}) return {};
+  return run<Construct>(
+      l, f, [&](const V2& st) { return dot(st, st) <= r * r; },
+      [&](const linear2::Lin& l2, double& t0, double& t1) { return disk_span(r, l2, t0, t1); });
+}
+
+}  // namespace detail::planar3
+}  // namespace locus

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Intersection of a line and an aligned box in 3D: intersects() (the book's test) and
+// intersection() (find: the part of the line inside the solid box); row int3.boxes, book
+// section 11.12.1 (slab clipping, figures 11.61-11.63).
+// Parameters: Line3 t in R (origin + t direction). Result (LinearBoxIntersection<T>,
+// intersection/detail/box3.hpp): empty; point (the component touches the box, or is a point inside
+// it); segment (entry and exit points, by increasing param_a); param_b is NoParam. The box is
+// closed (faces included). Method: slabs. Each axis with a nonzero direction component gives an
+// entry and an exit parameter t = (face - o_k) / d_k; an axis with a zero component (exactly) only
+// asks face_min <= o_k <= face_max, so no 0/0 or inf - inf arises (NaN-free for axis-parallel
+// directions). The largest entry and smallest exit are chosen by EXACT comparisons of these
+// ratios (sign of (a - o_i) d_j - (b - o_j) d_i, core/exact_sum.hpp), as are the domain
+// limits (t >= 0 for rays, t <= 1 for segments), so a ray starting on a face, grazing an edge or
+// touching a face from outside is decided exactly on the data as given.
+// Points: the face coordinate of an entry/exit point is the face's exactly, the others are
+// rounded (eps relative) and clamped into the box; an end point or origin inside the box is
+// returned exactly. Degenerate: a zero direction (zero-length segment) acts as its point; an
+// empty box (min > max on an axis; a negative extent) or NaN/Inf input gives kind empty. The
+// swapped overload returns swapped(). Cost: about 20 flops and six comparisons when the filters
+// decide.
+
+#include <locus/core/scalar.hpp>
+#include <locus/intersection/detail/box3.hpp>
+#include <locus/intersection/result.hpp>
+#include <locus/primitives/aligned_box.hpp>
+#include <locus/primitives/line.hpp>
+
+namespace locus {
+
+/// Whether a line meets the closed box (see the header comment).
+template <Real T>
+[[nodiscard]] inline bool intersects(const Line3<T>& a, const AlignedBox3<T>& b) noexcept {
+  namespace bx = detail::box3;
+  return bx::aligned(detail::linear3::as_lin(a), b, false).kind != Kind::empty;
+}
+
+/// The part of a line inside the closed box (see the header comment).
+template <Real T>
+[[nodiscard]] inline LinearBoxIntersection<T> intersection(const Line3<T>& a,
+                                                           const AlignedBox3<T>& b) noexcept {
+  namespace bx = detail::box3;
+  return bx::cast<T>(bx::aligned(detail::linear3::as_lin(a), b, true));
+}
+
+/// Swapped arguments: intersects(a, b).
+template <Real T>
+[[nodiscard]] inline bool intersects(const AlignedBox3<T>& b, const Line3<T>& a) noexcept {
+  return intersects(a, b);
+}
+
+/// Swapped arguments: swapped(intersection(a, b)).
+template <Real T>
+[[nodiscard]] inline Intersection<T, 3, NoParam, T, 2> intersection(const AlignedBox3<T>& b,
+                                                                    const Line3<T>& a) noexcept {
+  return swapped(intersection(a, b));
+}
+
+}  // namespace locus

@@ -1,0 +1,325 @@
+// SPDX-License-Identifier: BSL-1.0
+// Row int3.linear-polygon: Line3, Ray3 and Segment3 against a filled PlanarPolygon3 and a Disk3,
+// float and double. Oracle (GMP rationals): the crossing X of the component with the plane
+// {dot(normal, X - origin) = 0} of the data as given, its frame coordinates
+// ((X - origin).u, (X - origin).v), and the closed region test in rationals (crossing number
+// with exact boundary detection; |st|^2 <= r^2). The library rounds X before the 2D test, so
+// random cases are compared where the exact frame point is farther than 1e-9 from the region's
+// boundary; exact frames (the xy plane, axis-aligned) on integer grids are compared always,
+// including touching vertices and edges. In-plane components: the span of common parameters
+// against a rational slab clip (axis-aligned square) and the chord's end points on the circle.
+// Also: points on the component and in the plane, swap symmetry, degenerate and NaN input.
+
+#include <locus/intersection/line_disk.hpp>
+#include <locus/intersection/line_polygon.hpp>
+#include <locus/intersection/ray_disk.hpp>
+#include <locus/intersection/ray_polygon.hpp>
+#include <locus/intersection/segment_disk.hpp>
+#include <locus/intersection/segment_polygon.hpp>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "intersection/linear3_oracle.hpp"
+#include "support/typed.hpp"
+
+namespace {
+
+using namespace locus;
+using locus_test::Rng;
+namespace ex = locus_test::exact3;
+
+template <class T>
+class IntersectionPlanar3 : public ::testing::Test {};
+TYPED_TEST_SUITE(IntersectionPlanar3, locus_test::RealTypes);
+
+template <class P>
+struct Make;
+template <class T>
+struct Make<Line3<T>> {
+  static Line3<T> from(const Vec3<T>& p, const Vec3<T>& q) { return {p, q - p}; }
+};
+template <class T>
+struct Make<Ray3<T>> {
+  static Ray3<T> from(const Vec3<T>& p, const Vec3<T>& q) { return {p, q - p}; }
+};
+template <class T>
+struct Make<Segment3<T>> {
+  static Segment3<T> from(const Vec3<T>& p, const Vec3<T>& q) { return {p, q}; }
+};
+template <class T, class F>
+void for_each_linear(F&& f) {
+  f.template operator()<Line3<T>>();
+  f.template operator()<Ray3<T>>();
+  f.template operator()<Segment3<T>>();
+}
+
+struct QFrame {
+  ex::Q3 o, u, v, n;
+};
+
+// The exact crossing (kind 0 none, 1 point, 2 in the plane) and its frame coordinates.
+struct QCross {
+  int kind = 0;
+  mpq_class t, s2, t2;
+};
+inline QCross cross_plane(const ex::QLin& l, const QFrame& f) {
+  const mpq_class v0 = ex::qdot(f.n, l.o - f.o), nd = ex::qdot(f.n, l.d);
+  if (nd == 0) return {v0 == 0 ? 2 : 0, 0, 0, 0};
+  const mpq_class t = -v0 / nd;
+  if (!ex::in_domain(l, t)) return {};
+  const ex::Q3 x = l.o + t * l.d - f.o;
+  return {1, t, ex::qdot(x, f.u), ex::qdot(x, f.v)};
+}
+
+// Closed polygon test in rationals, and the distance (double) to its boundary.
+inline bool q_in_polygon(const std::vector<std::pair<mpq_class, mpq_class>>& p, const mpq_class& x,
+                         const mpq_class& y, double& dist) {
+  bool in = false, on = false;
+  dist = 1e300;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+    const auto& a = p[j];
+    const auto& b = p[i];
+    const mpq_class ex_ = b.first - a.first, ey = b.second - a.second;
+    const mpq_class cr = ex_ * (y - a.second) - ey * (x - a.first);
+    const mpq_class len2 = ex_ * ex_ + ey * ey;
+    const mpq_class s = (ex_ * (x - a.first) + ey * (y - a.second)) / len2;
+    double d;
+    if (s < 0)
+      d = std::hypot(mpq_class(x - a.first).get_d(), mpq_class(y - a.second).get_d());
+    else if (s > 1)
+      d = std::hypot(mpq_class(x - b.first).get_d(), mpq_class(y - b.second).get_d());
+    else
+      d = std::abs(cr.get_d()) / std::sqrt(len2.get_d());
+    dist = std::min(dist, d);
+    if (cr == 0 && s >= 0 && s <= 1) on = true;
+    if ((a.second > y) != (b.second > y)) {
+      const mpq_class xi = a.first + (y - a.second) * ex_ / ey;
+      if (xi > x) in = !in;
+    }
+  }
+  return on || in;
+}
+
+template <class T>
+PlanarPolygon3<T> star_polygon(Rng& rng, const PlaneFrame3<T>& f, int n) {
+  PlanarPolygon3<T> p{f, {}};
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * 3.141592653589793 * k / n, r = rng.uniform<double>(0.3, 1.2);
+    p.polygon.vertices.push_back({T(r * std::cos(a)), T(r * std::sin(a))});
+  }
+  return p;
+}
+
+template <class T, class A>
+void check_polygon(const A& a, const PlanarPolygon3<T>& poly, bool exact, int& compared) {
+  const ex::QLin ql = ex::ql(a);
+  const QFrame qf{ex::q(poly.frame.origin), ex::q(poly.frame.u), ex::q(poly.frame.v),
+                  ex::q(poly.frame.normal)};
+  const QCross c = cross_plane(ql, qf);
+  const auto r = intersection(a, poly);
+  EXPECT_EQ(intersects(a, poly), r.kind != Kind::empty);
+  const auto s = intersection(poly, a);
+  EXPECT_EQ(s.kind, r.kind);
+  if (c.kind == 2) return;  // in the plane: PolygonInPlane
+  if (c.kind == 0) {
+    EXPECT_EQ(r.kind, Kind::empty);
+    return;
+  }
+  std::vector<std::pair<mpq_class, mpq_class>> qp;
+  for (const auto& v : poly.polygon.vertices)
+    qp.push_back({mpq_class(double(v.x)), mpq_class(double(v.y))});
+  double dist = 0;
+  const bool in = q_in_polygon(qp, c.s2, c.t2, dist);
+  if (!exact && dist < (std::is_same_v<T, float> ? 1e-5 : 1e-9)) return;
+  ++compared;
+  ASSERT_EQ(r.kind, in ? Kind::point : Kind::empty);
+  if (!in) return;
+  const double eps = double(eps_v<T>);
+  const double m = std::max({1.0, ex::qmax_abs(ql.o), ex::qmax_abs(ql.d)});
+  EXPECT_NEAR(double(r.param_b[0].x), c.s2.get_d(), 64 * eps * m);
+  EXPECT_NEAR(double(r.param_b[0].y), c.t2.get_d(), 64 * eps * m);
+  EXPECT_NEAR(double(r.param_a[0]), c.t.get_d(), 64 * eps * m / ex::qmax_abs(ql.d));
+  EXPECT_EQ(s.param_a[0], r.param_b[0]);
+  EXPECT_EQ(s.param_b[0], r.param_a[0]);
+}
+
+TYPED_TEST(IntersectionPlanar3, PolygonRandomAgainstExact) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  int compared = 0, hits = 0;
+  for_each_linear<T>([&]<class A>() {
+    for (int i = 0; i < 2000; ++i) {
+      const auto f = plane_frame(rng.vec<T, 3>(-1, 1), rng.unit<T, 3>());
+      ASSERT_TRUE(f.has_value());
+      const PlanarPolygon3<T> poly = star_polygon<T>(rng, *f, 3 + i % 7);
+      const A a = Make<A>::from(rng.vec<T, 3>(-2, 2), rng.vec<T, 3>(-2, 2));
+      check_polygon<T>(a, poly, false, compared);
+      hits += intersects(a, poly) ? 1 : 0;
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  });
+  EXPECT_GT(compared, 4000);  // the components that cross the plane
+  EXPECT_GT(hits, 300);
+}
+
+// The xy plane with its exact frame: integer-grid components through vertices and edges of an
+// integer polygon: every decision exact, no margin.
+TYPED_TEST(IntersectionPlanar3, PolygonExactFrameGrid) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const PlaneFrame3<T> f{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  // A non-convex "L".
+  const PlanarPolygon3<T> poly{f, Polygon2<T>{{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}}}};
+  int compared = 0, boundary = 0;
+  for_each_linear<T>([&]<class A>() {
+    for (int i = 0; i < 3000; ++i) {
+      const auto g = [&](int z) {
+        return Vec3<T>{T(rng.uniform_int(-1, 5)), T(rng.uniform_int(-1, 5)), T(z)};
+      };
+      const A a = Make<A>::from(g(-rng.uniform_int(1, 2)), g(rng.uniform_int(1, 2)));
+      check_polygon<T>(a, poly, true, compared);
+      const auto r = intersection(a, poly);
+      if (r.kind == Kind::point) {
+        const Vec2<T> st = r.param_b[0];
+        boundary += (st.x == 0 || st.y == 0 || st.x == 4 || st.y == 4 || (st.x == 2 && st.y >= 2) ||
+                     (st.y == 2 && st.x >= 2));
+      }
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  });
+  EXPECT_GT(compared, 4000);
+  EXPECT_GT(boundary, 200);
+}
+
+// Components in the polygon's plane: the span of common parameters (axis-aligned square: the
+// rational slab interval).
+TYPED_TEST(IntersectionPlanar3, PolygonInPlane) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const PlaneFrame3<T> f{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const PlanarPolygon3<T> sq{f, Polygon2<T>{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}}};
+  int kinds[3] = {0, 0, 0};
+  for_each_linear<T>([&]<class A>() {
+    for (int i = 0; i < 2000; ++i) {
+      const auto g = [&] {
+        return Vec3<T>{T(rng.uniform_int(-8, 8)) / 4, T(rng.uniform_int(-8, 8)) / 4, T(1)};
+      };
+      const A a = Make<A>::from(g(), g());
+      const ex::QLin ql = ex::ql(a);
+      // Exact slab clip of the square |x|, |y| <= 1.
+      bool lo_inf = !ql.lo, hi_inf = !ql.hi, empty = false;
+      mpq_class lo = 0, hi = 1;
+      const mpq_class o[2] = {ql.o.x, ql.o.y}, d[2] = {ql.d.x, ql.d.y};
+      bool moving = false;
+      for (int k = 0; k < 2; ++k) {
+        if (d[k] == 0) {
+          if (o[k] < -1 || o[k] > 1) empty = true;
+          continue;
+        }
+        moving = true;
+        mpq_class ta = (-1 - o[k]) / d[k], tb = (1 - o[k]) / d[k];
+        if (ta > tb) std::swap(ta, tb);
+        if (lo_inf || ta > lo) lo = ta, lo_inf = false;
+        if (hi_inf || tb < hi) hi = tb, hi_inf = false;
+      }
+      const auto r = intersection(a, sq);
+      if (!moving) continue;  // a point: covered by the grid test
+      const int kind = empty || lo > hi ? 0 : (lo == hi ? 1 : 2);
+      ++kinds[kind];
+      ASSERT_EQ(r.kind == Kind::empty ? 0 : (r.kind == Kind::point ? 1 : 2), kind) << i;
+      if (kind == 2) {
+        const double tol = 4 * double(eps_v<T>) * 16;  // params of |o|, |d| <= 2, bounded
+        EXPECT_NEAR(double(r.param_a[0]), lo.get_d(), tol);
+        EXPECT_NEAR(double(r.param_a[1]), hi.get_d(), tol);
+      }
+    }
+  });
+  EXPECT_GT(kinds[0], 300);
+  EXPECT_GT(kinds[1], 20);
+  EXPECT_GT(kinds[2], 1000);
+}
+
+TYPED_TEST(IntersectionPlanar3, DiskAgainstExact) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  int compared = 0, hits = 0;
+  for_each_linear<T>([&]<class A>() {
+    for (int i = 0; i < 3000; ++i) {
+      const Disk3<T> d{rng.vec<T, 3>(-1, 1), rng.unit<T, 3>(), rng.uniform<T>(T(0.2), T(1.5))};
+      const A a = Make<A>::from(rng.vec<T, 3>(-2, 2), rng.vec<T, 3>(-2, 2));
+      const CircleAxes<T> ax = in_plane_axes(d);
+      const ex::QLin ql = ex::ql(a);
+      const QFrame qf{ex::q(d.center), ex::q(ax.u), ex::q(ax.v), ex::q(d.normal)};
+      const QCross c = cross_plane(ql, qf);
+      const auto r = intersection(a, d);
+      EXPECT_EQ(intersects(a, d), r.kind != Kind::empty);
+      EXPECT_EQ(intersection(d, a).kind, r.kind);
+      if (c.kind != 1) continue;
+      const double rr = double(d.radius);
+      const double rho = std::sqrt(mpq_class(c.s2 * c.s2 + c.t2 * c.t2).get_d());
+      if (std::abs(rho - rr) < (std::is_same_v<T, float> ? 1e-4 : 1e-9)) continue;
+      ++compared;
+      ASSERT_EQ(r.kind, rho <= rr ? Kind::point : Kind::empty) << i;
+      if (r.kind == Kind::point) {
+        ++hits;
+        EXPECT_TRUE(
+            locus_test::vec_near(point_at(d, r.param_b[0]), r.point[0], T(64 * eps_v<T> * 4)));
+        EXPECT_TRUE(
+            locus_test::vec_near(point_at(a, r.param_a[0]), r.point[0], T(64 * eps_v<T> * 4)));
+      }
+    }
+  });
+  EXPECT_GT(compared, 5000);
+  EXPECT_GT(hits, 500);
+}
+
+// A component in the disk's plane: the chord, its ends on the circle.
+TYPED_TEST(IntersectionPlanar3, DiskChords) {
+  using T = TypeParam;
+  const Disk3<T> d{{1, 2, 3}, {0, 0, 2}, 2};
+  const auto r = intersection(Line3<T>{{-5, 2, 3}, {1, 0, 0}}, d);
+  ASSERT_EQ(r.kind, Kind::segment);
+  EXPECT_NEAR(double(r.point[0].x), -1.0, 8 * double(eps_v<T>));
+  EXPECT_NEAR(double(r.point[1].x), 3.0, 8 * double(eps_v<T>));
+  EXPECT_EQ(intersection(Line3<T>{{-5, 4, 3}, {1, 0, 0}}, d).kind, Kind::point);  // tangent
+  EXPECT_EQ(intersection(Ray3<T>{{1, 2, 3}, {0, 1, 0}}, d).kind, Kind::segment);
+  EXPECT_EQ(intersection(Segment3<T>{{5, 2, 3}, {4, 2, 3}}, d).kind, Kind::empty);
+  // Transversal through the centre and through the rim (exact frame coordinates here).
+  const auto c = intersection(Segment3<T>{{1, 2, 0}, {1, 2, 6}}, d);
+  ASSERT_EQ(c.kind, Kind::point);
+  EXPECT_EQ(c.point[0], (Vec3<T>{1, 2, 3}));
+  EXPECT_EQ(c.param_a[0], T(0.5));
+  EXPECT_TRUE(intersects(Segment3<T>{{3, 2, 0}, {3, 2, 6}}, d));
+  EXPECT_FALSE(intersects(Segment3<T>{{3.5, 2, 0}, {3.5, 2, 6}}, d));
+}
+
+TYPED_TEST(IntersectionPlanar3, DegenerateAndNonFinite) {
+  using T = TypeParam;
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  const PlaneFrame3<T> f{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const PlanarPolygon3<T> sq{f, Polygon2<T>{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}}};
+  const Disk3<T> d{{0, 0, 0}, {0, 0, 1}, 1};
+  const Segment3<T> through{{0, 0, -1}, {0, 0, 1}};
+  ASSERT_TRUE(intersects(through, sq));
+  ASSERT_TRUE(intersects(through, d));
+  EXPECT_FALSE(intersects(Segment3<T>{{0, 0, nan}, {0, 0, 1}}, sq));
+  EXPECT_FALSE(intersects(Segment3<T>{{0, 0, nan}, {0, 0, 1}}, d));
+  EXPECT_FALSE(intersects(through, Disk3<T>{{0, 0, 0}, {0, 0, 0}, 1}));
+  EXPECT_FALSE(intersects(through, Disk3<T>{{0, 0, 0}, {0, 0, 1}, -1}));
+  EXPECT_FALSE(intersects(through, PlanarPolygon3<T>{f, Polygon2<T>{}}));
+  PlanarPolygon3<T> bad = sq;
+  bad.polygon.vertices[1].x = nan;
+  EXPECT_FALSE(intersects(through, bad));
+  // A zero direction acts as its point.
+  EXPECT_EQ(intersection(Ray3<T>{{0.5, 0.5, 0}, {0, 0, 0}}, sq).kind, Kind::point);
+  EXPECT_EQ(intersection(Ray3<T>{{0.5, 0.5, 1}, {0, 0, 0}}, d).kind, Kind::empty);
+}
+
+}  // namespace
