@@ -106,8 +106,8 @@ int slope_sign(const Conic& k, const V& p, const DirP& d) noexcept {
       const P x = P::var(p.x), y = P::var(p.y);
       const P a = P::var(k.q[0]), b = P::var(k.q[1]), c = P::var(k.q[2]);
       // grad Q . d = (2 a x + b y + d) dx + (b x + 2 c y + e) dy
-      return ((a * x * d.x).times_pow2(1) + b * (y * d.x + x * d.y) +
-              (c * y * d.y).times_pow2(1) + P::var(k.q[3]) * d.x + P::var(k.q[4]) * d.y)
+      return ((a * x * d.x).times_pow2(1) + b * (y * d.x + x * d.y) + (c * y * d.y).times_pow2(1) +
+              P::var(k.q[3]) * d.x + P::var(k.q[4]) * d.y)
           .sign();
     }
   }
@@ -247,8 +247,7 @@ double curve_param(const Conic& k, const V& p) noexcept {
       return std::atan2(p.y - k.c.y, p.x - k.c.x);
     case Form::ellipse: {
       const V w = p - k.c;
-      return std::atan2(dot(k.u1, w) / (length(k.u1) * k.e1),
-                        dot(k.u0, w) / (length(k.u0) * k.e0));
+      return std::atan2(dot(k.u1, w) / (length(k.u1) * k.e1), dot(k.u0, w) / (length(k.u0) * k.e0));
     }
     case Form::general:
       return 0.0;
@@ -470,8 +469,7 @@ RegionRelation circle_relation(V c0, double r0, V c1, double r1) noexcept {
   const CircleSigns s = circle_signs(c0, r0, c1, r1);
   if (s.out > 0) return RegionRelation::separated;
   if (s.out == 0) return RegionRelation::touching;
-  if (s.in < 0)
-    return r0 > r1 ? RegionRelation::a_contains_b : RegionRelation::b_contains_a;
+  if (s.in < 0) return r0 > r1 ? RegionRelation::a_contains_b : RegionRelation::b_contains_a;
   if (s.in == 0)
     return r0 > r1 ? RegionRelation::a_contains_b_touching : RegionRelation::b_contains_a_touching;
   return RegionRelation::overlapping;
@@ -479,7 +477,8 @@ RegionRelation circle_relation(V c0, double r0, V c1, double r1) noexcept {
 
 namespace {
 /// The angular overlap of two arcs of one circle: pieces [lo, hi] as offsets from a's start.
-int arc_overlap(const ArcD& a, double b_start, double b_sweep, double lo[2], double hi[2]) noexcept {
+int arc_overlap(const ArcD& a, double b_start, double b_sweep, double lo[2],
+                double hi[2]) noexcept {
   double delta = std::fmod(b_start - a.start, two_pi);
   if (delta < 0.0) delta += two_pi;
   int n = 0;
@@ -515,8 +514,10 @@ void arc_pieces(R6& r, const ArcD& a, double b_start, double b_sweep, bool a_fir
       r.multiplicity[k] = any_arc ? 0 : 1;
     }
   }
-  r.kind = any_arc ? Kind::arc : r.count == 0 ? Kind::empty : r.count == 1 ? Kind::point
-                                                                        : Kind::points;
+  r.kind = any_arc        ? Kind::arc
+           : r.count == 0 ? Kind::empty
+           : r.count == 1 ? Kind::point
+                          : Kind::points;
 }
 
 }  // namespace
@@ -653,7 +654,8 @@ Quad in_frame(const Conic& k, const V& centre, const V& e0v, const V& e1v) noexc
   const V w = centre - k.c;
   for (int i = 0; i < 2; ++i) {
     const double ki = dot(v[i], w) / g[i], mi = dot(v[i], e0v) / g[i], ni = dot(v[i], e1v) / g[i];
-    const double terms[6] = {mi * mi, 2.0 * mi * ni, ni * ni, 2.0 * ki * mi, 2.0 * ki * ni, ki * ki};
+    const double terms[6] = {mi * mi,       2.0 * mi * ni, ni * ni,
+                             2.0 * ki * mi, 2.0 * ki * ni, ki * ki};
     for (int j = 0; j < 6; ++j) {
       q.c[j] += terms[j];
       q.mag[j] += std::abs(terms[j]);

@@ -112,8 +112,8 @@ template <class L, class C>
 struct Check {
   const L& l;
   const C& c;
-  double bound;      // on-both-curves bound
-  double along;      // error allowed along the line, relative to the oracle's parameter
+  double bound;  // on-both-curves bound
+  double along;  // error allowed along the line, relative to the oracle's parameter
 };
 
 /// The library's answer against the oracle, residuals, parameters, swap, intersects.
@@ -140,9 +140,9 @@ void check_pair(const L& l, const C& c, double k_on, double k_along) {
     // Conditioning: an error of eps m^2 in the squared half chord H^2 moves a root by
     // eps m^2 / (H |d|), H = |t2 - t1| |d| / 2 (a near-tangency); sqrt(eps) m at a tangency.
     const double gap = ex.count == 2 ? std::abs(ex.t[1] - ex.t[0]) * length(d) : m;
-    const double tol_t = ex.mult[i] == 2
-                             ? 4.0 * std::sqrt(eps) * m / length(d)
-                             : k_along * eps * m / length(d) * (1.0 + 2.0 * m / std::max(gap, 1e-300));
+    const double tol_t =
+        ex.mult[i] == 2 ? 4.0 * std::sqrt(eps) * m / length(d)
+                        : k_along * eps * m / length(d) * (1.0 + 2.0 * m / std::max(gap, 1e-300));
     EXPECT_NEAR(double(r.param_a[k]), ex.t[i], tol_t);
   }
   // Swapped overload.
@@ -272,9 +272,7 @@ TYPED_TEST(LinearQuadratic, ScalingAndRigidMotions) {
                         {dyadic<T>(rng, 80, 2), dyadic<T>(rng, 80, 2)}};
     const auto r = intersection(s, c);
     for (int k : {-kmax, -3, 5, kmax}) {
-      const auto sc = [k](Vec2<T> v) {
-        return Vec2<T>{std::ldexp(v.x, k), std::ldexp(v.y, k)};
-      };
+      const auto sc = [k](Vec2<T> v) { return Vec2<T>{std::ldexp(v.x, k), std::ldexp(v.y, k)}; };
       const auto q = intersection(Segment2<T>{sc(s.p0), sc(s.p1)},
                                   Circle2<T>{sc(c.center), std::ldexp(c.radius, k)});
       ASSERT_EQ(q.kind, r.kind);
@@ -325,19 +323,21 @@ TYPED_TEST(LinearQuadratic, CircleDegenerateInput) {
   EXPECT_FALSE(intersects(Segment2<T>{{T(1), T(1)}, {T(1), T(1)}}, Circle2<T>{{T(0), T(0)}, T(1)}));
   // Non-finite anywhere: empty, never a NaN point.
   for (T bad : {nan, inf, -inf}) {
-    EXPECT_EQ(intersection(Line2<T>{{bad, T(0)}, {T(1), T(0)}}, Circle2<T>{{T(0), T(0)}, T(1)}).kind,
-              Kind::empty);
-    EXPECT_EQ(intersection(Line2<T>{{T(0), T(0)}, {bad, T(0)}}, Circle2<T>{{T(0), T(0)}, T(1)}).kind,
-              Kind::empty);
+    EXPECT_EQ(
+        intersection(Line2<T>{{bad, T(0)}, {T(1), T(0)}}, Circle2<T>{{T(0), T(0)}, T(1)}).kind,
+        Kind::empty);
+    EXPECT_EQ(
+        intersection(Line2<T>{{T(0), T(0)}, {bad, T(0)}}, Circle2<T>{{T(0), T(0)}, T(1)}).kind,
+        Kind::empty);
     EXPECT_EQ(intersection(x_axis, Circle2<T>{{T(0), bad}, T(1)}).kind, Kind::empty);
     EXPECT_EQ(intersection(x_axis, Circle2<T>{{T(0), T(0)}, bad}).kind, Kind::empty);
-    EXPECT_EQ(intersection(Segment2<T>{{T(0), T(0)}, {bad, T(1)}}, Circle2<T>{{T(0), T(0)}, T(1)})
-                  .kind,
-              Kind::empty);
-    EXPECT_EQ(intersection(x_axis, Ellipse2<T>{{T(0), T(0)}, {{T(1), T(0)}, {T(0), T(1)}},
-                                               {bad, T(1)}})
-                  .kind,
-              Kind::empty);
+    EXPECT_EQ(
+        intersection(Segment2<T>{{T(0), T(0)}, {bad, T(1)}}, Circle2<T>{{T(0), T(0)}, T(1)}).kind,
+        Kind::empty);
+    EXPECT_EQ(
+        intersection(x_axis, Ellipse2<T>{{T(0), T(0)}, {{T(1), T(0)}, {T(0), T(1)}}, {bad, T(1)}})
+            .kind,
+        Kind::empty);
     EXPECT_EQ(intersection(x_axis, QuadraticCurve2<T>{T(1), T(0), T(1), T(0), T(0), bad}).kind,
               Kind::empty);
     EXPECT_EQ(intersection(x_axis, Arc2<T>{{{T(0), T(0)}, T(1)}, bad, T(1)}).kind, Kind::empty);
@@ -367,7 +367,8 @@ TYPED_TEST(LinearQuadratic, ArcFigure7_1) {
   SCOPED_TRACE(rng.trace());
   for (int it = 0; it < 300; ++it) {
     const Arc2<T> a{{rng.vec<T, 2>(T(-2), T(2)), rng.uniform<T>(T(0.5), T(2))},
-                    rng.uniform<T>(T(-7), T(7)), rng.uniform<T>(T(0), T(6))};
+                    rng.uniform<T>(T(-7), T(7)),
+                    rng.uniform<T>(T(0), T(6))};
     const Segment2<T> s{rng.vec<T, 2>(T(-4), T(4)), rng.vec<T, 2>(T(-4), T(4))};
     const auto ra = intersection(s, a);
     const auto rc = intersection(s, a.circle);
@@ -384,8 +385,8 @@ TYPED_TEST(LinearQuadratic, ArcFigure7_1) {
       const auto k = static_cast<std::size_t>(i);
       double off = std::fmod(double(rc.param_b[k]) - double(a.start), 2 * pi_v<double>);
       if (off < 0) off += 2 * pi_v<double>;
-      const bool inside = off < double(a.sweep) - 1e-4, outside = off > double(a.sweep) + 1e-4 &&
-                                                                      off < 2 * pi_v<double> - 1e-4;
+      const bool inside = off<double(a.sweep) - 1e-4, outside = off> double(a.sweep) + 1e-4 &&
+                          off < 2 * pi_v<double> - 1e-4;
       bool found = false;
       for (int j = 0; j < ra.count; ++j)
         found = found || ra.point[static_cast<std::size_t>(j)] == rc.point[k];
@@ -421,8 +422,8 @@ TYPED_TEST(LinearQuadratic, EllipsesAgainstExactOracle) {
   SCOPED_TRACE(rng.trace());
   for (int it = 0; it < 400; ++it) {
     const Ellipse2<T> e = random_ellipse<T>(rng);
-    const double ratio = double(std::max(e.extent[0], e.extent[1]) /
-                                std::min(e.extent[0], e.extent[1]));
+    const double ratio =
+        double(std::max(e.extent[0], e.extent[1]) / std::min(e.extent[0], e.extent[1]));
     const Vec2<T> p{dyadic<T>(rng, 64, 3), dyadic<T>(rng, 64, 3)};
     Vec2<T> q{dyadic<T>(rng, 64, 3), dyadic<T>(rng, 64, 3)};
     if (q == p) q.y += T(1);
@@ -463,8 +464,8 @@ TYPED_TEST(LinearQuadratic, EllipseDegenerate) {
 
 template <class T>
 double quad_residual(const QuadraticCurve2<T>& k, const Vec2<double>& p, double& scale) {
-  const double a = double(k.a), b = double(k.b), c = double(k.c), d = double(k.d),
-               e = double(k.e), f = double(k.f);
+  const double a = double(k.a), b = double(k.b), c = double(k.c), d = double(k.d), e = double(k.e),
+               f = double(k.f);
   scale = std::abs(a * p.x * p.x) + std::abs(b * p.x * p.y) + std::abs(c * p.y * p.y) +
           std::abs(d * p.x) + std::abs(e * p.y) + std::abs(f);
   return std::abs(a * p.x * p.x + b * p.x * p.y + c * p.y * p.y + d * p.x + e * p.y + f);

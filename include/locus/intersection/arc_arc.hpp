@@ -6,15 +6,15 @@
 // s, s in [0, sweep] (primitives/arc.hpp).
 // Result (ArcIntersection2<T>, intersection/result.hpp): empty; point / points (crossings,
 // multiplicity 1, or a tangency, multiplicity 2); on a common circle the overlap: kind arc, three
-// points per piece (start, middle, end by increasing angle on the first argument; two pieces when both arcs exceed a half turn and overlap at both ends),
-// multiplicity 0; kind point / points when the arcs only share end points; coincident when both
-// are whole circles. Method: circle_circle.hpp (count, tangency and the common circle decided
-// exactly, the same bound), then membership of each point's computed angle in the arc: an arc's
-// end points are cos/sin of its angles, not polynomial in the input, so a point within a few ulps
-// of an arc end may fall either way (figure 7.1's side-of-chord test has the same limit).
-// Degenerate: sweep >= 2 pi is the whole circle; a negative or non-finite sweep, a negative
-// radius, any NaN/Inf: empty. Swapping the arguments gives the same set.
-// Cost: that of circle_circle.hpp plus an fmod per point; no allocation.
+// points per piece (start, middle, end by increasing angle on the first argument; two pieces when
+// both arcs exceed a half turn and overlap at both ends), multiplicity 0; kind point / points when
+// the arcs only share end points; coincident when both are whole circles. Method: circle_circle.hpp
+// (count, tangency and the common circle decided exactly, the same bound), then membership of each
+// point's computed angle in the arc: an arc's end points are cos/sin of its angles, not polynomial
+// in the input, so a point within a few ulps of an arc end may fall either way (figure 7.1's
+// side-of-chord test has the same limit). Degenerate: sweep >= 2 pi is the whole circle; a negative
+// or non-finite sweep, a negative radius, any NaN/Inf: empty. Swapping the arguments gives the same
+// set. Cost: that of circle_circle.hpp plus an fmod per point; no allocation.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/conic2.hpp>

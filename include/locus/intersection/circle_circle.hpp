@@ -29,7 +29,7 @@ namespace locus {
 /// The common points of two circles (see the header comment).
 template <Real T>
 [[nodiscard]] inline CurvePairIntersection2<T> intersection(const Circle2<T>& a,
-                                                           const Circle2<T>& b) noexcept {
+                                                            const Circle2<T>& b) noexcept {
   namespace c = detail::conic2;
   return c::cast<T>(c::circle_circle(vec_cast<double>(a.center), double(a.radius),
                                      vec_cast<double>(b.center), double(b.radius)));

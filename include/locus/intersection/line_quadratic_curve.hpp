@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Intersection of a line and a general quadratic curve in the plane: intersects() (the book's test) and
-// intersection() (find); row int2.linear-quadratic, book section 7.2 (figure 7.1).
-// Parameters: Line2 t in R (origin + t direction); on the quadratic curve 0 (a general conic has no parametrisation).
-// Result (LinearCurveIntersection2<T>): empty; point (a crossing, or a tangency with multiplicity
-// 2); points (two, by increasing param_a); or the component itself, kind line (count 2:
-// parameters 0 and 1), when it lies on the curve (a line component of a degenerate conic).
-// Exact decisions: q(t) = Q(o + t d) = A t^2 + B t + C; the signs of A, B, C, of q and q' at a
-// segment's p1 and of B^2 - 4 A C are polynomials in the coefficients and coordinates (degree 6)
-// evaluated exactly (core/exact_poly.hpp): the count, tangency, the linear case A = 0 (a
+// Intersection of a line and a general quadratic curve in the plane: intersects() (the book's test)
+// and intersection() (find); row int2.linear-quadratic, book section 7.2 (figure 7.1). Parameters:
+// Line2 t in R (origin + t direction); on the quadratic curve 0 (a general conic has no
+// parametrisation). Result (LinearCurveIntersection2<T>): empty; point (a crossing, or a tangency
+// with multiplicity 2); points (two, by increasing param_a); or the component itself, kind line
+// (count 2: parameters 0 and 1), when it lies on the curve (a line component of a degenerate
+// conic). Exact decisions: q(t) = Q(o + t d) = A t^2 + B t + C; the signs of A, B, C, of q and q'
+// at a segment's p1 and of B^2 - 4 A C are polynomials in the coefficients and coordinates (degree
+// 6) evaluated exactly (core/exact_poly.hpp): the count, tangency, the linear case A = 0 (a
 // direction along an asymptote or a parabola's axis) and containment are exact for the curve as
 // given. Constructed points: the stable quadratic root form t = q/A, C/q with q = -(B + sign(B)
 // sqrt(B^2 - 4AC))/2, in double (no scaling: coefficients of mixed degree). Bound: each root t is
@@ -21,26 +21,28 @@
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/conic2.hpp>
 #include <locus/intersection/result.hpp>
-#include <locus/primitives/quadratic_curve.hpp>
 #include <locus/primitives/line.hpp>
+#include <locus/primitives/quadratic_curve.hpp>
 
 namespace locus {
 
 /// The common points of a line and a general quadratic curve (see the header comment).
 template <Real T>
-[[nodiscard]] inline LinearCurveIntersection2<T> intersection(const Line2<T>& a,
-                                                             const QuadraticCurve2<T>& b) noexcept {
-  return detail::conic2::cast<T>(detail::conic2::linear_conic(detail::conic2::as_lin(a), detail::conic2::as_conic(b)));
+[[nodiscard]] inline LinearCurveIntersection2<T> intersection(
+    const Line2<T>& a, const QuadraticCurve2<T>& b) noexcept {
+  return detail::conic2::cast<T>(
+      detail::conic2::linear_conic(detail::conic2::as_lin(a), detail::conic2::as_conic(b)));
 }
 
 /// The same with the arguments exchanged: swapped() of the other order.
 template <Real T>
 [[nodiscard]] inline LinearCurveIntersection2<T> intersection(const QuadraticCurve2<T>& a,
-                                                             const Line2<T>& b) noexcept {
+                                                              const Line2<T>& b) noexcept {
   return swapped(intersection(b, a));
 }
 
-/// Whether a line and a general quadratic curve have a common point (exact but for the cases the header names).
+/// Whether a line and a general quadratic curve have a common point (exact but for the cases the
+/// header names).
 template <Real T>
 [[nodiscard]] inline bool intersects(const Line2<T>& a, const QuadraticCurve2<T>& b) noexcept {
   return intersection(a, b).kind != Kind::empty;

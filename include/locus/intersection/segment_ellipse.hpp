@@ -2,8 +2,8 @@
 #pragma once
 // Intersection of a segment and a ellipse in the plane: intersects() (the book's test) and
 // intersection() (find); row int2.linear-quadratic, book section 7.2 (figure 7.1).
-// Parameters: Segment2 t in [0, 1] ((1 - t) p0 + t p1); on the ellipse the angle a of point_at(e, a) (axes expected
-// orthonormal, extents positive; the curve is the zero set of evaluate(e, .)).
+// Parameters: Segment2 t in [0, 1] ((1 - t) p0 + t p1); on the ellipse the angle a of point_at(e,
+// a) (axes expected orthonormal, extents positive; the curve is the zero set of evaluate(e, .)).
 // Result (LinearCurveIntersection2<T>): empty; point (a crossing, or a tangency with
 // multiplicity 2); points (two, by increasing param_a). Exact decisions: with alpha_i = u_i.(o -
 // c), beta_i = u_i.d, the discriminant of q(t) is 4 e0^2 e1^2 (e1^2 beta0^2 + e0^2 beta1^2 -
@@ -28,14 +28,15 @@ namespace locus {
 /// The common points of a segment and a ellipse (see the header comment).
 template <Real T>
 [[nodiscard]] inline LinearCurveIntersection2<T> intersection(const Segment2<T>& a,
-                                                             const Ellipse2<T>& b) noexcept {
-  return detail::conic2::cast<T>(detail::conic2::linear_conic(detail::conic2::as_lin(a), detail::conic2::as_conic(b)));
+                                                              const Ellipse2<T>& b) noexcept {
+  return detail::conic2::cast<T>(
+      detail::conic2::linear_conic(detail::conic2::as_lin(a), detail::conic2::as_conic(b)));
 }
 
 /// The same with the arguments exchanged: swapped() of the other order.
 template <Real T>
 [[nodiscard]] inline LinearCurveIntersection2<T> intersection(const Ellipse2<T>& a,
-                                                             const Segment2<T>& b) noexcept {
+                                                              const Segment2<T>& b) noexcept {
   return swapped(intersection(b, a));
 }
 

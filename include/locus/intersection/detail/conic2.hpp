@@ -67,11 +67,11 @@ template <Real T>
 enum class Form : std::uint8_t { circle, ellipse, general };
 struct Conic {
   Form form = Form::general;
-  V c{};                       ///< centre (circle, ellipse)
-  double r = 0;                ///< radius (circle)
-  V u0{}, u1{};                ///< axes (ellipse)
-  double e0 = 0, e1 = 0;       ///< extents (ellipse)
-  double q[6] = {};            ///< a, b, c, d, e, f (general)
+  V c{};                  ///< centre (circle, ellipse)
+  double r = 0;           ///< radius (circle)
+  V u0{}, u1{};           ///< axes (ellipse)
+  double e0 = 0, e1 = 0;  ///< extents (ellipse)
+  double q[6] = {};       ///< a, b, c, d, e, f (general)
 };
 
 template <Real T>
@@ -133,7 +133,8 @@ using R6 = CurveIntersection2<double, 6>;
 
 /// The result in T (points and parameters rounded once more for float).
 template <Real T, int C>
-[[nodiscard]] constexpr CurveIntersection2<T, C> cast(const CurveIntersection2<double, C>& r) noexcept {
+[[nodiscard]] constexpr CurveIntersection2<T, C> cast(
+    const CurveIntersection2<double, C>& r) noexcept {
   CurveIntersection2<T, C> s;
   s.kind = r.kind;
   s.count = r.count;
