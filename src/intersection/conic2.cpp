@@ -790,6 +790,147 @@ R4 frame_conic(const Conic& a, const Frame& fr, const Conic& b) noexcept {
 
 }  // namespace
 
+namespace {
+
+/// Two general conics (neither an ellipse): the resultant in y, R(x) of degree <= 4, after a
+/// rotation making both y^2 coefficients large; each real root x gives y from the first conic
+/// (the root of its quadratic in y where the second is nearer zero).
+R4 general_pair(const Conic& ka, const Conic& kb) noexcept {
+  R4 r;
+  if (ka.form != Form::general || kb.form != Form::general) return r;
+  // Proportional coefficients (exact): the same curve.
+  bool proportional = true;
+  for (int i = 0; i < 6 && proportional; ++i)
+    for (int j = i + 1; j < 6 && proportional; ++j)
+      proportional =
+          (P::var(ka.q[i]) * P::var(kb.q[j]) - P::var(ka.q[j]) * P::var(kb.q[i])).sign() == 0;
+  if (proportional) {
+    r.kind = Kind::coincident;
+    return r;
+  }
+  const auto normalised = [](const Conic& k) {
+    Quad q{};
+    double m = 0.0;
+    for (int i = 0; i < 6; ++i) m = std::max(m, std::abs(k.q[i]));
+    const double s = pow2_inv(m);
+    for (int i = 0; i < 6; ++i) {
+      q.c[i] = s * k.q[i];
+      q.mag[i] = std::abs(q.c[i]);
+    }
+    return q;
+  };
+  const Quad qa0 = normalised(ka), qb0 = normalised(kb);
+  double best = -1.0, bc = 1.0, bs = 0.0;
+  // Angles offset from multiples of pi/8 so that axis-symmetric figures (common points
+  // sharing an abscissa) are not aligned with the elimination direction.
+  for (int i = 0; i < 8; ++i) {
+    const double ang = 0.3927 * 0.61803398875 + i * (pi / 8.0);
+    const double cs = std::cos(ang), sn = std::sin(ang);
+    const double v =
+        std::min(std::abs(rotated(qa0, cs, sn).c[2]), std::abs(rotated(qb0, cs, sn).c[2]));
+    if (v > best) {
+      best = v;
+      bc = cs;
+      bs = sn;
+    }
+  }
+  const Quad qa = rotated(qa0, bc, bs), qb = rotated(qb0, bc, bs);
+  // Polynomials in x of degree <= 4 as fixed arrays (low to high): no allocation.
+  using Pd = std::array<double, 5>;
+  const auto mul = [](const Pd& x, const Pd& y) {
+    Pd o{};
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; i + j < 5; ++j) o[z(i + j)] += x[z(i)] * y[z(j)];
+    return o;
+  };
+  const auto add = [](const Pd& x, const Pd& y, double sy) {
+    Pd o{};
+    for (int i = 0; i < 5; ++i) o[z(i)] = x[z(i)] + sy * y[z(i)];
+    return o;
+  };
+  const auto parts = [](const Quad& q, bool absolute, Pd& a2, Pd& a1, Pd& a0) {
+    const auto f = [absolute](double x) { return absolute ? std::abs(x) : x; };
+    a2 = {f(q.c[2]), 0, 0, 0, 0};
+    a1 = {f(q.c[4]), f(q.c[1]), 0, 0, 0};
+    a0 = {f(q.c[5]), f(q.c[3]), f(q.c[0]), 0, 0};
+  };
+  Pd a2, a1, a0, b2, b1, b0;
+  parts(qa, false, a2, a1, a0);
+  parts(qb, false, b2, b1, b0);
+  const Pd s1 = add(mul(a2, b0), mul(a0, b2), -1.0);
+  const Pd res =
+      add(mul(s1, s1),
+          mul(add(mul(a2, b1), mul(a1, b2), -1.0), add(mul(a1, b0), mul(a0, b1), -1.0)), -1.0);
+  Pd m2, m1, m0, n2, n1, n0;
+  parts(qa, true, m2, m1, m0);
+  parts(qb, true, n2, n1, n0);
+  const Pd t1 = add(mul(m2, n0), mul(m0, n2), 1.0);
+  const Pd mag =
+      add(mul(t1, t1), mul(add(mul(m2, n1), mul(m1, n2), 1.0), add(mul(m1, n0), mul(m0, n1), 1.0)),
+          1.0);
+  std::array<double, 5> k{}, err{};
+  double tot = 0.0;
+  for (std::size_t i = 0; i < 5; ++i) tot += mag[i];
+  for (std::size_t i = 0; i < 5; ++i) {
+    k[i] = res[i];
+    err[i] = 64.0 * u * tot;
+  }
+  bool all_small = true;
+  for (std::size_t i = 0; i < 5; ++i) all_small = all_small && std::abs(k[i]) <= err[i];
+  if (all_small) {
+    // A shared component (e.g. a common line of two line pairs): see the pair header.
+    r.kind = Kind::coincident;
+    return r;
+  }
+  // Trailing coefficients within their bound are the resultant's genuine degree drop.
+  int deg = 4;
+  while (deg > 0 && std::abs(k[z(deg)]) <= err[z(deg)]) --deg;
+  RootOptions opt = near_roots();
+  opt.coefficient_error = std::span<const double>(err.data(), static_cast<std::size_t>(deg) + 1);
+  RootsResult<double> roots;
+  if (deg == 4)
+    roots = solve_quartic(k[0], k[1], k[2], k[3], k[4], opt);
+  else if (deg == 3)
+    roots = solve_cubic(k[0], k[1], k[2], k[3], opt);
+  else if (deg == 2)
+    roots = solve_quadratic(k[0], k[1], k[2], opt);
+  else if (deg == 1)
+    roots = solve_linear(k[0], k[1], opt);
+  if (roots.status != Status::ok) return r;
+  const auto qval = [](const Quad& q, double x, double y) { return value_at(q, x, y); };
+  for (int i = 0; i < roots.count && r.count < 4; ++i) {
+    const double x = roots.roots[z(i)].value;
+    // y from the first conic's quadratic c y^2 + (b x + e) y + (a x^2 + d x + f) = 0.
+    const double c2 = qa.c[2], c1 = qa.c[1] * x + qa.c[4],
+                 c0 = qa.c[0] * x * x + qa.c[3] * x + qa.c[5];
+    double ys[2];
+    int ny = 0;
+    if (c2 != 0.0) {
+      const double disc = std::max(c1 * c1 - 4.0 * c2 * c0, 0.0);
+      const double qq = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+      if (qq != 0.0) {
+        ys[ny++] = qq / c2;
+        ys[ny++] = c0 / qq;
+      } else {
+        ys[ny++] = -c1 / (2.0 * c2);
+      }
+    } else if (c1 != 0.0) {
+      ys[ny++] = -c0 / c1;
+    }
+    if (ny == 0) continue;
+    double y = ys[0];
+    if (ny == 2 && std::abs(qval(qb, x, ys[1])) < std::abs(qval(qb, x, ys[0]))) y = ys[1];
+    const V p{bc * x - bs * y, bs * x + bc * y};
+    const auto j = z(r.count++);
+    r.point[j] = p;
+    r.multiplicity[j] = roots.roots[z(i)].multiplicity;
+  }
+  r.kind = r.count == 0 ? Kind::empty : r.count == 1 ? Kind::point : Kind::points;
+  return r;
+}
+
+}  // namespace
+
 R4 conic_conic(const Conic& a, const Conic& b) noexcept {
   R4 r;
   if (!valid_conic(a) || !valid_conic(b)) return r;
@@ -818,9 +959,7 @@ R4 conic_conic(const Conic& a, const Conic& b) noexcept {
     const R4 s = frame_conic(b, f, a);
     return swapped(s);
   }
-  // Neither is in axis form: unsupported here (the pair headers convert bounded general conics
-  // to ellipses first).
-  return r;
+  return general_pair(a, b);
 }
 
 RegionRelation ellipse_relation(const Conic& a, const Conic& b) noexcept {

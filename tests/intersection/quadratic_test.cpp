@@ -15,6 +15,7 @@
 #include <locus/intersection/circle_quadratic_curve.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/ellipse_quadratic_curve.hpp>
+#include <locus/intersection/quadratic_curve_quadratic_curve.hpp>
 
 #include <cmath>
 #include <limits>
@@ -38,7 +39,8 @@ T dyadic(Rng& rng, int range, int bits) {
   return static_cast<T>(std::ldexp(double(rng.uniform_int(-range, range)), -bits));
 }
 
-// ---- circles: the exact oracle -------------------------------------------------------------------
+// ---- circles: the exact oracle
+// -------------------------------------------------------------------
 
 struct CircleAnswer {
   Kind kind;
@@ -73,8 +75,8 @@ void check_circles(const Circle2<T>& a, const Circle2<T>& b) {
   ASSERT_EQ(r.kind, ex.kind);
   EXPECT_EQ(relation(a, b), ex.rel);
   EXPECT_EQ(intersects(a, b), ex.kind != Kind::empty);
-  const double m = std::max({double(max_abs(a.center)), double(max_abs(b.center)),
-                             double(a.radius), double(b.radius)});
+  const double m = std::max(
+      {double(max_abs(a.center)), double(max_abs(b.center)), double(a.radius), double(b.radius)});
   const double eps = double(eps_v<T>);
   EXPECT_EQ(r.count, ex.kind == Kind::points ? 2 : ex.kind == Kind::point ? 1 : 0);
   for (int i = 0; i < r.count; ++i) {
@@ -97,16 +99,16 @@ void check_circles(const Circle2<T>& a, const Circle2<T>& b) {
   for (int i = 0; i < r.count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     // Near tangency (two close points, gap apart) the conditioning is eps m^2 / gap.
-    const double gap =
-        r.count == 2 ? double(max_abs(r.point[0] - r.point[1])) : m;
+    const double gap = r.count == 2 ? double(max_abs(r.point[0] - r.point[1])) : m;
     const double tol = r.multiplicity[k] == 2 ? 4 * std::sqrt(eps) * m
                                               : 16 * eps * m * (1 + 2 * m / std::max(gap, 1e-300));
     bool found = false;
     for (int j = 0; j < s.count; ++j) {
       const auto l = static_cast<std::size_t>(j);
-      found = found || (double(max_abs(s.point[l] - r.point[k])) <= tol &&
-                        double(max_abs(point_at(b, s.param_a[l]) - r.point[k])) <= tol + 16 * eps * m &&
-                        double(max_abs(point_at(a, s.param_b[l]) - r.point[k])) <= tol + 16 * eps * m);
+      found =
+          found || (double(max_abs(s.point[l] - r.point[k])) <= tol &&
+                    double(max_abs(point_at(b, s.param_a[l]) - r.point[k])) <= tol + 16 * eps * m &&
+                    double(max_abs(point_at(a, s.param_b[l]) - r.point[k])) <= tol + 16 * eps * m);
     }
     EXPECT_TRUE(found) << "a " << a.center.x << " " << a.center.y << " " << a.radius << " b "
                        << b.center.x << " " << b.center.y << " " << b.radius << " point "
@@ -139,7 +141,8 @@ TYPED_TEST(Quadratic, CircleTangenciesFigure7_6) {
   for (int it = 0; it < 300; ++it) {
     const Vec2<T> c0{T(rng.uniform_int(-40, 40)), T(rng.uniform_int(-40, 40))};
     const int k = rng.uniform_int(1, 4);
-    Vec2<T> u{T(3 * k * (rng.uniform_int(0, 1) ? 1 : -1)), T(4 * k * (rng.uniform_int(0, 1) ? 1 : -1))};
+    Vec2<T> u{T(3 * k * (rng.uniform_int(0, 1) ? 1 : -1)),
+              T(4 * k * (rng.uniform_int(0, 1) ? 1 : -1))};
     if (rng.uniform_int(0, 1)) u = {u.y, u.x};
     const T len = T(5 * k);
     const T r0 = T(rng.uniform_int(1, 5 * k - 1));
@@ -160,9 +163,9 @@ TYPED_TEST(Quadratic, CircleTangenciesFigure7_6) {
     EXPECT_EQ(relation(a, Circle2<T>{c0 + u, len - r0 + T(1)}), RegionRelation::overlapping);
     // One ulp either way.
     for (T dir : {T(-1), T(1)}) {
-      const Circle2<T> moved{{std::nextafter(outside.center.x, outside.center.x + dir * T(100)),
-                              outside.center.y},
-                             outside.radius};
+      const Circle2<T> moved{
+          {std::nextafter(outside.center.x, outside.center.x + dir * T(100)), outside.center.y},
+          outside.radius};
       check_circles(a, moved);
       check_circles(a, Circle2<T>{big.center, std::nextafter(big.radius, big.radius + dir)});
     }
@@ -232,7 +235,8 @@ TYPED_TEST(Quadratic, CircleDegenerate) {
   }
 }
 
-// ---- arcs ----------------------------------------------------------------------------------------
+// ---- arcs
+// ----------------------------------------------------------------------------------------
 
 TYPED_TEST(Quadratic, Arcs) {
   using T = TypeParam;
@@ -276,9 +280,11 @@ TYPED_TEST(Quadratic, Arcs) {
   SCOPED_TRACE(rng.trace());
   for (int it = 0; it < 500; ++it) {
     const Arc2<T> a{{rng.vec<T, 2>(T(-2), T(2)), rng.uniform<T>(T(0.5), T(2))},
-                    rng.uniform<T>(T(-4), T(4)), rng.uniform<T>(T(0), T(6))};
+                    rng.uniform<T>(T(-4), T(4)),
+                    rng.uniform<T>(T(0), T(6))};
     const Arc2<T> b{{rng.vec<T, 2>(T(-2), T(2)), rng.uniform<T>(T(0.5), T(2))},
-                    rng.uniform<T>(T(-4), T(4)), rng.uniform<T>(T(0), T(6))};
+                    rng.uniform<T>(T(-4), T(4)),
+                    rng.uniform<T>(T(0), T(6))};
     const auto ab = intersection(a, b);
     const auto cc = intersection(a.circle, b.circle);
     EXPECT_LE(ab.count, cc.count);
@@ -312,8 +318,10 @@ long double implicit_value(const Circle2<T>& c, long double x, long double y) {
 }
 template <class T>
 void point_ld(const Ellipse2<T>& e, long double th, long double& x, long double& y) {
-  x = e.center.x + e.extent[0] * std::cos(th) * e.axis[0].x + e.extent[1] * std::sin(th) * e.axis[1].x;
-  y = e.center.y + e.extent[0] * std::cos(th) * e.axis[0].y + e.extent[1] * std::sin(th) * e.axis[1].y;
+  x = e.center.x + e.extent[0] * std::cos(th) * e.axis[0].x +
+      e.extent[1] * std::sin(th) * e.axis[1].x;
+  y = e.center.y + e.extent[0] * std::cos(th) * e.axis[0].y +
+      e.extent[1] * std::sin(th) * e.axis[1].y;
 }
 
 /// Number of sign changes of b along a (crossings), or -1 when the sampling cannot tell
@@ -340,13 +348,15 @@ int crossings_oracle(const Ellipse2<T>& a, const B& b) {
 template <class T>
 Ellipse2<T> rand_ellipse(Rng& rng) {
   const Vec2<T> u = rng.unit<T, 2>();
-  return {rng.vec<T, 2>(T(-2), T(2)), {u, perp(u)},
+  return {rng.vec<T, 2>(T(-2), T(2)),
+          {u, perp(u)},
           {rng.uniform<T>(T(0.4), T(3)), rng.uniform<T>(T(0.4), T(3))}};
 }
 
 template <class T, class A, class B>
 double on_curve(const A& a, const B& b, const Vec2<T>& p) {
-  return double(std::max(std::abs(implicit_value(a, p.x, p.y)), std::abs(implicit_value(b, p.x, p.y))));
+  return double(
+      std::max(std::abs(implicit_value(a, p.x, p.y)), std::abs(implicit_value(b, p.x, p.y))));
 }
 
 TYPED_TEST(Quadratic, EllipsesAgainstSamplingOracle) {
@@ -382,8 +392,8 @@ TYPED_TEST(Quadratic, EllipsesAgainstSamplingOracle) {
     } else {
       const bool b_in_a = implicit_value(a, b.center.x, b.center.y) < 0,
                  a_in_b = implicit_value(b, a.center.x, a.center.y) < 0;
-      EXPECT_EQ(rel, b_in_a && !a_in_b   ? RegionRelation::a_contains_b
-                     : a_in_b && !b_in_a ? RegionRelation::b_contains_a
+      EXPECT_EQ(rel, b_in_a && !a_in_b    ? RegionRelation::a_contains_b
+                     : a_in_b && !b_in_a  ? RegionRelation::b_contains_a
                      : !a_in_b && !b_in_a ? RegionRelation::separated
                                           : rel);
     }
@@ -475,6 +485,58 @@ TYPED_TEST(Quadratic, EllipseDegenerate) {
   ASSERT_EQ(p.kind, Kind::point);
   EXPECT_EQ(p.point[0], (Vec2<T>{T(4), T(0)}));
   EXPECT_EQ(intersection(Circle2<T>{{T(4), T(1)}, T(0)}, e0).kind, Kind::empty);
+}
+
+// General pairs (neither an ellipse): the resultant path.
+TYPED_TEST(Quadratic, GeneralQuadraticPairs) {
+  using T = TypeParam;
+  // Hyperbola x^2 - y^2 = 1 and parabola y = x^2 - 3: x^2 = 2 (y = -1) and x^2 = 5 (y = 2).
+  const QuadraticCurve2<T> hyp{T(1), T(0), T(-1), T(0), T(0), T(-1)};
+  const QuadraticCurve2<T> par{T(1), T(0), T(0), T(0), T(-1), T(-3)};
+  const auto r = intersection(hyp, par);
+  ASSERT_EQ(r.kind, Kind::points);
+  ASSERT_EQ(r.count, 4);
+  const double s2 = std::sqrt(2.0), s5 = std::sqrt(5.0);
+  const Vec2<double> expect[4] = {{-s5, 2}, {-s2, -1}, {s2, -1}, {s5, 2}};
+  for (const Vec2<double>& e : expect) {
+    bool found = false;
+    for (int i = 0; i < 4; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      found = found || max_abs(vec_cast<double>(r.point[k]) - e) <= 1e3 * double(eps_v<T>);
+      EXPECT_EQ(r.multiplicity[k], 1);
+    }
+    EXPECT_TRUE(found) << e.x << " " << e.y;
+  }
+  EXPECT_EQ(intersection(par, hyp).count, 4);
+  // xy = 1 and y = x^2: only (1, 1) (x^3 = 1).
+  const auto one = intersection(QuadraticCurve2<T>{T(0), T(1), T(0), T(0), T(0), T(-1)},
+                                QuadraticCurve2<T>{T(1), T(0), T(0), T(0), T(-1), T(0)});
+  ASSERT_EQ(one.kind, Kind::point);
+  EXPECT_LE(max_abs(one.point[0] - Vec2<T>{T(1), T(1)}), T(64) * eps_v<T>);
+  // A parabola tangent to a line pair: y = x^2 and (y + 1 - 2x)(y + 1 + 2x) = 0 touch at (+-1, 1).
+  // (y + 1)^2 - 4 x^2 = y^2 + 2y + 1 - 4x^2.
+  const auto tang = intersection(QuadraticCurve2<T>{T(1), T(0), T(0), T(0), T(-1), T(0)},
+                                 QuadraticCurve2<T>{T(-4), T(0), T(1), T(0), T(2), T(1)});
+  ASSERT_EQ(tang.count, 2);
+  EXPECT_EQ(tang.multiplicity[0], 2);
+  EXPECT_EQ(tang.multiplicity[1], 2);
+  // Proportional coefficients: the same curve. Two line pairs sharing the line y = x: a
+  // shared component (coincident, documented).
+  EXPECT_EQ(intersection(hyp, QuadraticCurve2<T>{T(-2), T(0), T(2), T(0), T(0), T(2)}).kind,
+            Kind::coincident);
+  EXPECT_EQ(intersection(QuadraticCurve2<T>{T(1), T(0), T(-1), T(0), T(0), T(0)},
+                         QuadraticCurve2<T>{T(0), T(1), T(-1), T(0), T(0), T(0)})
+                .kind,
+            Kind::coincident);
+  // An ellipse given as a general curve uses the ellipse frame.
+  const auto ell = intersection(QuadraticCurve2<T>{T(1), T(0), T(4), T(0), T(0), T(-16)}, par);
+  EXPECT_EQ(ell.count, 4);
+  EXPECT_EQ(intersection(par, QuadraticCurve2<T>{T(1), T(0), T(4), T(0), T(0), T(-16)}).count, 4);
+  // Non-finite: empty.
+  EXPECT_EQ(intersection(hyp, QuadraticCurve2<T>{std::numeric_limits<T>::quiet_NaN(), T(0), T(0),
+                                                 T(0), T(-1), T(0)})
+                .kind,
+            Kind::empty);
 }
 
 }  // namespace
