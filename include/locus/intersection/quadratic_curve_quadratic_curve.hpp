@@ -34,12 +34,12 @@ namespace locus {
 /// The common points of two quadratic curves (see the header comment).
 template <Real T>
 [[nodiscard]] inline CurvePairIntersection2<T> intersection(const QuadraticCurve2<T>& a,
-                                                           const QuadraticCurve2<T>& b) noexcept {
+                                                            const QuadraticCurve2<T>& b) noexcept {
   namespace c = detail::conic2;
   const c::Conic ka = c::as_conic(a), kb = c::as_conic(b);
-  if (!is_finite(a.a) || !is_finite(a.b) || !is_finite(a.c) || !is_finite(a.d) ||
-      !is_finite(a.e) || !is_finite(a.f) || !is_finite(b.a) || !is_finite(b.b) ||
-      !is_finite(b.c) || !is_finite(b.d) || !is_finite(b.e) || !is_finite(b.f))
+  if (!is_finite(a.a) || !is_finite(a.b) || !is_finite(a.c) || !is_finite(a.d) || !is_finite(a.e) ||
+      !is_finite(a.f) || !is_finite(b.a) || !is_finite(b.b) || !is_finite(b.c) || !is_finite(b.d) ||
+      !is_finite(b.e) || !is_finite(b.f))
     return {};
   // Equal or proportional curves first (exact), then an ellipse as the frame when there is one.
   const auto general = c::conic_conic(ka, kb);
