@@ -487,6 +487,48 @@ TYPED_TEST(Quadratic, EllipseDegenerate) {
   EXPECT_EQ(intersection(Circle2<T>{{T(4), T(1)}, T(0)}, e0).kind, Kind::empty);
 }
 
+// Rigid motions (axis swap, sign flip, integer translation) and power-of-two scaling leave
+// ellipse pairs' counts, multiplicities and relation unchanged; points move with the data.
+TYPED_TEST(Quadratic, EllipseMotionsAndScaling) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int it = 0; it < 200; ++it) {
+    const Ellipse2<T> a = rand_ellipse<T>(rng), b = rand_ellipse<T>(rng);
+    if (crossings_oracle(a, b) < 0) continue;  // near-tangent: counts may legitimately merge
+    const auto r = intersection(a, b);
+    const RegionRelation rel = relation(a, b);
+    for (int mo = 0; mo < 4; ++mo) {
+      const auto f = [mo](Vec2<T> v, bool is_axis) {
+        if (mo == 0) return Vec2<T>{v.y, v.x};
+        if (mo == 1) return Vec2<T>{-v.x, v.y};
+        if (mo == 2) return is_axis ? v : Vec2<T>{v.x + T(3), v.y - T(2)};
+        return is_axis ? v : Vec2<T>{std::ldexp(v.x, 5), std::ldexp(v.y, 5)};
+      };
+      const auto g = [&](const Ellipse2<T>& e) {
+        Ellipse2<T> o{f(e.center, false), {f(e.axis[0], true), f(e.axis[1], true)}, e.extent};
+        if (mo == 3) o.extent = {std::ldexp(e.extent[0], 5), std::ldexp(e.extent[1], 5)};
+        return o;
+      };
+      const auto q = intersection(g(a), g(b));
+      ASSERT_EQ(q.count, r.count) << "motion " << mo;
+      EXPECT_EQ(relation(g(a), g(b)), rel);
+      int mr = 0, mq = 0;
+      for (int i = 0; i < r.count; ++i) {
+        mr += r.multiplicity[static_cast<std::size_t>(i)];
+        mq += q.multiplicity[static_cast<std::size_t>(i)];
+        // Each moved point is near one of the new points.
+        const Vec2<T> moved = f(r.point[static_cast<std::size_t>(i)], false);
+        T best = std::numeric_limits<T>::infinity();
+        for (int j = 0; j < q.count; ++j)
+          best = std::min(best, max_abs(q.point[static_cast<std::size_t>(j)] - moved));
+        EXPECT_LE(best, std::sqrt(eps_v<T>) * T(mo == 3 ? 32 * 8 : 8));
+      }
+      EXPECT_EQ(mq, mr);
+    }
+  }
+}
+
 // General pairs (neither an ellipse): the resultant path.
 TYPED_TEST(Quadratic, GeneralQuadraticPairs) {
   using T = TypeParam;
