@@ -83,8 +83,7 @@ bool fig_7_5(SvgWriter& w) {
   const auto r = intersection(e, parabola);
   draw_ellipse(w, e, c::blue);
   w.curve([](double x) { return Vec2d{x, x * x - 3}; }, -2.6, 2.6, 100, pen(c::orange, 2));
-  for (int i = 0; i < r.count; ++i)
-    point(w, r.point[static_cast<std::size_t>(i)], "", c::red);
+  for (int i = 0; i < r.count; ++i) point(w, r.point[static_cast<std::size_t>(i)], "", c::red);
   w.text(Vec2d{-4, -3.6}, std::to_string(r.count) + " points (ellipse-quadratic curve)",
          text_style(c::black, 0, 0));
   return r.count == 4;

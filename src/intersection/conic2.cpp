@@ -31,15 +31,6 @@ std::size_t z(int i) noexcept { return static_cast<std::size_t>(i); }
 // ---------------------------------------------------------------------------------------------
 // Exact signs of q(t) = Q(o + t d) = A t^2 + B t + C (each up to a positive factor).
 
-/// The direction of l as exact polynomials (a segment's p1 - p0 is a difference, never rounded).
-struct DirP {
-  P x, y;
-};
-DirP dir_poly(const Lin& l) noexcept {
-  if (l.hi) return {P::diff(l.p1.x, l.o.x), P::diff(l.p1.y, l.o.y)};
-  return {P::var(l.d.x), P::var(l.d.y)};
-}
-
 bool valid_conic(const Conic& k) noexcept {
   switch (k.form) {
     case Form::circle:
@@ -56,25 +47,71 @@ bool valid_conic(const Conic& k) noexcept {
   return false;
 }
 
+/// A rounded value with an absolute error bound (running error analysis), the floating-point
+/// filter of the exact signs below: same operations as ExactPoly, sign() 2 when undecided.
+struct Fd {
+  double v = 0.0, e = 0.0;
+  static Fd var(double x) noexcept { return {x, 0.0}; }
+  static Fd diff(double x, double y) noexcept {
+    const double d = x - y;
+    return {d, u * std::abs(d)};
+  }
+  [[nodiscard]] Fd times_pow2(int k) const noexcept { return {std::ldexp(v, k), std::ldexp(e, k)}; }
+  friend Fd operator+(const Fd& a, const Fd& b) noexcept {
+    const double s = a.v + b.v;
+    return {s, a.e + b.e + u * std::abs(s)};
+  }
+  friend Fd operator-(const Fd& a, const Fd& b) noexcept {
+    const double s = a.v - b.v;
+    return {s, a.e + b.e + u * std::abs(s)};
+  }
+  friend Fd operator*(const Fd& a, const Fd& b) noexcept {
+    const double p = a.v * b.v;
+    // Underflow makes a product's rounding absolute: at most 2^-1075.
+    const double tiny = (a.v != 0.0 && b.v != 0.0) ? 0x1p-1074 : 0.0;
+    return {p, std::abs(a.v) * b.e + std::abs(b.v) * a.e + a.e * b.e + u * std::abs(p) + tiny};
+  }
+  [[nodiscard]] int sign() const noexcept {
+    if (!std::isfinite(v) || !std::isfinite(e)) return 2;
+    // The bound itself is rounded (a few dozen operations deep): 2^-40 covers it.
+    const double bound = e * (1.0 + 0x1p-40);
+    if (v > bound) return 1;
+    if (-v > bound) return -1;
+    return v == 0.0 && e == 0.0 ? 0 : 2;
+  }
+};
+
+/// The direction of l as exact polynomials (a segment's p1 - p0 is a difference, never rounded).
+template <class N>
+struct DirP {
+  N x, y;
+};
+template <class N>
+DirP<N> dir_poly(const Lin& l) noexcept {
+  if (l.hi) return {N::diff(l.p1.x, l.o.x), N::diff(l.p1.y, l.o.y)};
+  return {N::var(l.d.x), N::var(l.d.y)};
+}
+
 /// Sign of Q at p (circle: |p - c|^2 - r^2; ellipse: e0^2 e1^2 times evaluate(); general: Q).
-int value_sign(const Conic& k, const V& p) noexcept {
+template <class N>
+int value_sign_t(const Conic& k, const V& p) noexcept {
   switch (k.form) {
     case Form::circle: {
-      const P wx = P::diff(p.x, k.c.x), wy = P::diff(p.y, k.c.y);
-      return (wx * wx + wy * wy - P::var(k.r) * P::var(k.r)).sign();
+      const N wx = N::diff(p.x, k.c.x), wy = N::diff(p.y, k.c.y);
+      return (wx * wx + wy * wy - N::var(k.r) * N::var(k.r)).sign();
     }
     case Form::ellipse: {
-      const P wx = P::diff(p.x, k.c.x), wy = P::diff(p.y, k.c.y);
-      const P a0 = P::var(k.u0.x) * wx + P::var(k.u0.y) * wy;
-      const P a1 = P::var(k.u1.x) * wx + P::var(k.u1.y) * wy;
-      const P e0 = P::var(k.e0), e1 = P::var(k.e1);
+      const N wx = N::diff(p.x, k.c.x), wy = N::diff(p.y, k.c.y);
+      const N a0 = N::var(k.u0.x) * wx + N::var(k.u0.y) * wy;
+      const N a1 = N::var(k.u1.x) * wx + N::var(k.u1.y) * wy;
+      const N e0 = N::var(k.e0), e1 = N::var(k.e1);
       return (e1 * e1 * a0 * a0 + e0 * e0 * a1 * a1 - e0 * e0 * e1 * e1).sign();
     }
     case Form::general: {
-      const P x = P::var(p.x), y = P::var(p.y);
-      const P a = P::var(k.q[0]), b = P::var(k.q[1]), c = P::var(k.q[2]);
-      return (a * x * x + b * x * y + c * y * y + P::var(k.q[3]) * x + P::var(k.q[4]) * y +
-              P::var(k.q[5]))
+      const N x = N::var(p.x), y = N::var(p.y);
+      const N a = N::var(k.q[0]), b = N::var(k.q[1]), c = N::var(k.q[2]);
+      return (a * x * x + b * x * y + c * y * y + N::var(k.q[3]) * x + N::var(k.q[4]) * y +
+              N::var(k.q[5]))
           .sign();
     }
   }
@@ -87,49 +124,51 @@ struct Signs {
   int a, b0, c0, disc, b1, c1;
 };
 
-int slope_sign(const Conic& k, const V& p, const DirP& d) noexcept {
+template <class N>
+int slope_sign_t(const Conic& k, const V& p, const DirP<N>& d) noexcept {
   switch (k.form) {
     case Form::circle: {
-      const P wx = P::diff(p.x, k.c.x), wy = P::diff(p.y, k.c.y);
+      const N wx = N::diff(p.x, k.c.x), wy = N::diff(p.y, k.c.y);
       return (d.x * wx + d.y * wy).sign();
     }
     case Form::ellipse: {
-      const P wx = P::diff(p.x, k.c.x), wy = P::diff(p.y, k.c.y);
-      const P a0 = P::var(k.u0.x) * wx + P::var(k.u0.y) * wy;
-      const P a1 = P::var(k.u1.x) * wx + P::var(k.u1.y) * wy;
-      const P b0 = P::var(k.u0.x) * d.x + P::var(k.u0.y) * d.y;
-      const P b1 = P::var(k.u1.x) * d.x + P::var(k.u1.y) * d.y;
-      const P e0 = P::var(k.e0), e1 = P::var(k.e1);
+      const N wx = N::diff(p.x, k.c.x), wy = N::diff(p.y, k.c.y);
+      const N a0 = N::var(k.u0.x) * wx + N::var(k.u0.y) * wy;
+      const N a1 = N::var(k.u1.x) * wx + N::var(k.u1.y) * wy;
+      const N b0 = N::var(k.u0.x) * d.x + N::var(k.u0.y) * d.y;
+      const N b1 = N::var(k.u1.x) * d.x + N::var(k.u1.y) * d.y;
+      const N e0 = N::var(k.e0), e1 = N::var(k.e1);
       return (e1 * e1 * a0 * b0 + e0 * e0 * a1 * b1).sign();
     }
     case Form::general: {
-      const P x = P::var(p.x), y = P::var(p.y);
-      const P a = P::var(k.q[0]), b = P::var(k.q[1]), c = P::var(k.q[2]);
+      const N x = N::var(p.x), y = N::var(p.y);
+      const N a = N::var(k.q[0]), b = N::var(k.q[1]), c = N::var(k.q[2]);
       // grad Q . d = (2 a x + b y + d) dx + (b x + 2 c y + e) dy
       return ((a * x * d.x).times_pow2(1) + b * (y * d.x + x * d.y) + (c * y * d.y).times_pow2(1) +
-              P::var(k.q[3]) * d.x + P::var(k.q[4]) * d.y)
+              N::var(k.q[3]) * d.x + N::var(k.q[4]) * d.y)
           .sign();
     }
   }
   return 0;
 }
 
-Signs signs(const Conic& k, const Lin& l) noexcept {
-  const DirP d = dir_poly(l);
+template <class N>
+Signs signs_t(const Conic& k, const Lin& l) noexcept {
+  const DirP<N> d = dir_poly<N>(l);
   Signs s{};
-  s.c0 = value_sign(k, l.o);
-  s.b0 = slope_sign(k, l.o, d);
+  s.c0 = value_sign_t<N>(k, l.o);
+  s.b0 = slope_sign_t<N>(k, l.o, d);
   if (l.hi) {
-    s.c1 = value_sign(k, l.p1);
-    s.b1 = slope_sign(k, l.p1, d);
+    s.c1 = value_sign_t<N>(k, l.p1);
+    s.b1 = slope_sign_t<N>(k, l.p1, d);
   }
   switch (k.form) {
     case Form::circle: {
       // B^2 - 4 A C = 4 (r^2 |d|^2 - (d x w)^2).
-      const P wx = P::diff(l.o.x, k.c.x), wy = P::diff(l.o.y, k.c.y);
-      const P r = P::var(k.r);
-      const P dd = d.x * d.x + d.y * d.y;
-      const P cr = d.x * wy - d.y * wx;
+      const N wx = N::diff(l.o.x, k.c.x), wy = N::diff(l.o.y, k.c.y);
+      const N r = N::var(k.r);
+      const N dd = d.x * d.x + d.y * d.y;
+      const N cr = d.x * wy - d.y * wx;
       s.a = dd.sign();
       s.disc = (r * r * dd - cr * cr).sign();
       break;
@@ -137,31 +176,44 @@ Signs signs(const Conic& k, const Lin& l) noexcept {
     case Form::ellipse: {
       // B^2 - 4 A C = 4 e0^2 e1^2 (e1^2 beta0^2 + e0^2 beta1^2 - K^2),
       // K = alpha0 beta1 - alpha1 beta0 = (u0 x u1)(w x d) (Binet-Cauchy).
-      const P wx = P::diff(l.o.x, k.c.x), wy = P::diff(l.o.y, k.c.y);
-      const P b0 = P::var(k.u0.x) * d.x + P::var(k.u0.y) * d.y;
-      const P b1 = P::var(k.u1.x) * d.x + P::var(k.u1.y) * d.y;
-      const P e0 = P::var(k.e0), e1 = P::var(k.e1);
-      const P aa = e1 * e1 * b0 * b0 + e0 * e0 * b1 * b1;
-      const P kk = (P::var(k.u0.x) * P::var(k.u1.y) - P::var(k.u0.y) * P::var(k.u1.x)) *
+      const N wx = N::diff(l.o.x, k.c.x), wy = N::diff(l.o.y, k.c.y);
+      const N b0 = N::var(k.u0.x) * d.x + N::var(k.u0.y) * d.y;
+      const N b1 = N::var(k.u1.x) * d.x + N::var(k.u1.y) * d.y;
+      const N e0 = N::var(k.e0), e1 = N::var(k.e1);
+      const N aa = e1 * e1 * b0 * b0 + e0 * e0 * b1 * b1;
+      const N kk = (N::var(k.u0.x) * N::var(k.u1.y) - N::var(k.u0.y) * N::var(k.u1.x)) *
                    (wx * d.y - wy * d.x);
       s.a = aa.sign();
       s.disc = (aa - kk * kk).sign();
       break;
     }
     case Form::general: {
-      const P ox = P::var(l.o.x), oy = P::var(l.o.y);
-      const P a = P::var(k.q[0]), b = P::var(k.q[1]), c = P::var(k.q[2]);
-      const P qa = a * d.x * d.x + b * d.x * d.y + c * d.y * d.y;
-      const P qb = (a * ox * d.x).times_pow2(1) + b * (ox * d.y + oy * d.x) +
-                   (c * oy * d.y).times_pow2(1) + P::var(k.q[3]) * d.x + P::var(k.q[4]) * d.y;
-      const P qc = a * ox * ox + b * ox * oy + c * oy * oy + P::var(k.q[3]) * ox +
-                   P::var(k.q[4]) * oy + P::var(k.q[5]);
+      const N ox = N::var(l.o.x), oy = N::var(l.o.y);
+      const N a = N::var(k.q[0]), b = N::var(k.q[1]), c = N::var(k.q[2]);
+      const N qa = a * d.x * d.x + b * d.x * d.y + c * d.y * d.y;
+      const N qb = (a * ox * d.x).times_pow2(1) + b * (ox * d.y + oy * d.x) +
+                   (c * oy * d.y).times_pow2(1) + N::var(k.q[3]) * d.x + N::var(k.q[4]) * d.y;
+      const N qc = a * ox * ox + b * ox * oy + c * oy * oy + N::var(k.q[3]) * ox +
+                   N::var(k.q[4]) * oy + N::var(k.q[5]);
       s.a = qa.sign();
       s.disc = (qb * qb - (qa * qc).times_pow2(2)).sign();
       break;
     }
   }
   return s;
+}
+
+/// Sign of Q at p: filtered, exact when the filter cannot decide.
+int value_sign(const Conic& k, const V& p) noexcept {
+  const int s = value_sign_t<Fd>(k, p);
+  return s != 2 ? s : value_sign_t<P>(k, p);
+}
+
+/// The signs of a linear component against a conic: filtered, exact when undecided.
+Signs signs(const Conic& k, const Lin& l) noexcept {
+  const Signs f = signs_t<Fd>(k, l);
+  if (f.a != 2 && f.b0 != 2 && f.c0 != 2 && f.disc != 2 && f.b1 != 2 && f.c1 != 2) return f;
+  return signs_t<P>(k, l);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -492,8 +492,12 @@ void check_quad(const L& l, const QuadraticCurve2<T>& k) {
     const Vec2<double> p = vec_cast<double>(r.point[j]);
     double s = 0;
     const double res = quad_residual(k, p, s);
+    // Rounding X (o + t d, coordinates of magnitude up to m) adds |grad Q| eps m.
+    const double gx = std::abs(2 * double(k.a) * p.x + double(k.b) * p.y + double(k.d)),
+                 gy = std::abs(double(k.b) * p.x + 2 * double(k.c) * p.y + double(k.e));
+    const double ml = std::max(mag(l), double(max_abs(p)));
     if (ex.mult[i] == 1) {
-      EXPECT_LE(res, 64.0 * eps * s + 1e-300);
+      EXPECT_LE(res, 64.0 * eps * (s + (gx + gy) * ml) + 1e-300);
     }
     EXPECT_LE(line_distance(l, p), 8 * eps * std::max(mag(l), max_abs(p)));
   }

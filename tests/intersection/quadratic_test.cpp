@@ -82,8 +82,8 @@ void check_circles(const Circle2<T>& a, const Circle2<T>& b) {
   for (int i = 0; i < r.count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     EXPECT_EQ(r.multiplicity[k], ex.kind == Kind::point ? 2 : 1);
-    EXPECT_LE(circle_dist(a, r.point[k]), 8 * eps * m);
-    EXPECT_LE(circle_dist(b, r.point[k]), 8 * eps * m);
+    EXPECT_LE(circle_dist(a, r.point[k]), 16 * eps * m);
+    EXPECT_LE(circle_dist(b, r.point[k]), 16 * eps * m);
     if (a.radius > T(0)) {
       EXPECT_LE(double(max_abs(point_at(a, r.param_a[k]) - r.point[k])), 16 * eps * m);
     }

@@ -43,7 +43,19 @@ class ExactPoly {
  public:
   static constexpr int capacity = 320;
 
-  ExactPoly() noexcept = default;
+  ExactPoly() noexcept {}  // the terms stay uninitialised: only the first size() are read
+  /// Copies only the live terms (an ExactPoly is large; most are short).
+  ExactPoly(const ExactPoly& o) noexcept : n_(o.n_), ok_(o.ok_) {
+    for (int i = 0; i < n_; ++i)
+      t_[static_cast<std::size_t>(i)] = o.t_[static_cast<std::size_t>(i)];
+  }
+  ExactPoly& operator=(const ExactPoly& o) noexcept {
+    n_ = o.n_;
+    ok_ = o.ok_;
+    for (int i = 0; i < n_; ++i)
+      t_[static_cast<std::size_t>(i)] = o.t_[static_cast<std::size_t>(i)];
+    return *this;
+  }
   /// The exact value x (the zero polynomial when x == 0).
   [[nodiscard]] static ExactPoly var(double x) noexcept {
     ExactPoly p;

@@ -12,7 +12,7 @@
 // crossing / tangent inside / nested, so relation() and the count never use a tolerance.
 // Constructed points: after exact power-of-two scaling, the foot c0 + a u/|u| with a = (|u| +
 // (r0 - r1)(r0 + r1)/|u|)/2 and the half chord sqrt((r0 - a)(r0 + a)); a tangency point is
-// c0 +- r0 u/|u|. Bound: each point within 8 eps m of both circles (m = the largest |coordinate|
+// c0 +- r0 u/|u|. Bound: each point within 16 eps m of both circles (m = the largest |coordinate|
 // and radius; eps of T); its position along the circles degrades to sqrt(eps) m near tangency.
 // Degenerate: radius 0 is a point circle (met when on the other circle, as a tangency; two equal
 // point circles: point); a negative radius or any NaN/Inf: kind empty, relation undecided.

@@ -13,7 +13,8 @@
 // given. Constructed points: the stable quadratic root form t = q/A, C/q with q = -(B + sign(B)
 // sqrt(B^2 - 4AC))/2, in double (no scaling: coefficients of mixed degree). Bound: each root t is
 // that of a q whose coefficients are perturbed by a few eps of their terms' magnitudes; tests
-// check |Q(X)| <= 64 eps S(X) (S the sum of |terms| of Q at X) away from tangency. Degenerate:
+// check |Q(X)| <= 64 eps (S(X) + |grad Q(X)|_1 m) (S the sum of |terms| of Q at X, m the
+// largest |coordinate| of the component and X) away from tangency. Degenerate:
 // any NaN/Inf: empty; all coefficients zero: the component lies on the "curve" (the plane);
 // a zero direction acts as its origin. The swapped overload returns swapped().
 // Cost: about 250 exact-sign terms (segments), decided by a float filter unless near zero.
