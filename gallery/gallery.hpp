@@ -39,18 +39,19 @@ struct Figure {
 };
 
 // The per-file tables, in book order.
-std::vector<Figure> chapter2_linear_figures();      // ch02_linear.cpp: 2.2, 2.3, 2.9
-std::vector<Figure> chapter3_vector_figures();      // ch03_vectors.cpp: 3.1-3.17
-std::vector<Figure> chapter3_affine_figures();      // ch03_affine.cpp: 3.19-3.42
-std::vector<Figure> chapter4_transform_figures();   // ch04_transforms.cpp: 4.1-4.25
-std::vector<Figure> chapter4_projection_figures();  // ch04_projections.cpp: 4.26-4.34
-std::vector<Figure> chapter5_primitive_figures();   // ch05_primitives.cpp: 5.1-5.16
-std::vector<Figure> chapter5_curve_figures();       // ch05_curves.cpp: 5.17, 5.18
-std::vector<Figure> chapter6_distance_figures();    // ch06_distance.cpp: distance in 2D, 6.1-6.23
-std::vector<Figure> chapter6_gjk_figures();         // ch06_gjk.cpp: GJK, 6.24-6.29
-std::vector<Figure> chapter9_mesh_figures();        // ch09_meshes.cpp: 9.5-9.17
-std::vector<Figure> chapter9_surface_figures();     // ch09_surfaces.cpp: 9.22-9.26
-std::vector<Figure> chapter10_distance_figures();   // ch10_distance.cpp: distance in 3D
+std::vector<Figure> chapter2_linear_figures();        // ch02_linear.cpp: 2.2, 2.3, 2.9
+std::vector<Figure> chapter3_vector_figures();        // ch03_vectors.cpp: 3.1-3.17
+std::vector<Figure> chapter3_affine_figures();        // ch03_affine.cpp: 3.19-3.42
+std::vector<Figure> chapter4_transform_figures();     // ch04_transforms.cpp: 4.1-4.25
+std::vector<Figure> chapter4_projection_figures();    // ch04_projections.cpp: 4.26-4.34
+std::vector<Figure> chapter5_primitive_figures();     // ch05_primitives.cpp: 5.1-5.16
+std::vector<Figure> chapter5_curve_figures();         // ch05_curves.cpp: 5.17, 5.18
+std::vector<Figure> chapter6_distance_figures();      // ch06_distance.cpp: distance in 2D, 6.1-6.23
+std::vector<Figure> chapter6_gjk_figures();           // ch06_gjk.cpp: GJK, 6.24-6.29
+std::vector<Figure> chapter7_intersection_figures();  // ch07_intersection.cpp: 7.1, 7.5-7.10
+std::vector<Figure> chapter9_mesh_figures();          // ch09_meshes.cpp: 9.5-9.17
+std::vector<Figure> chapter9_surface_figures();       // ch09_surfaces.cpp: 9.22-9.26
+std::vector<Figure> chapter10_distance_figures();     // ch10_distance.cpp: distance in 3D
 std::vector<Figure> chapter11_intersection_figures();  // ch11_intersection.cpp: 11.1-11.73
 std::vector<Figure> chapter13_figures();               // ch13_hull_delaunay.cpp: 13.2-13.11
 std::vector<Figure> chapter13_polytri_figures();       // ch13_triangulate.cpp: 13.53-13.70

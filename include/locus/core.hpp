@@ -11,6 +11,7 @@
 #include <locus/core/basis.hpp>
 #include <locus/core/crossing.hpp>
 #include <locus/core/error_free.hpp>
+#include <locus/core/exact_poly.hpp>
 #include <locus/core/exact_sum.hpp>
 #include <locus/core/frame.hpp>
 #include <locus/core/linear_system.hpp>

@@ -110,6 +110,42 @@ template <Real T>
   return r;
 }
 
+/// The result of intersection() between a curve and a linear component or a curve (circle,
+/// arc, ellipse, quadratic curve; rows int2.linear-quadratic, int2.quadratic): an Intersection
+/// plus the multiplicity of each isolated point (1 a crossing, 2 a tangency, 3 or 4 a higher
+/// contact; 0 for the points describing a segment, ray, line or arc). Parameters are T: the
+/// linear parameter, the angle on a circle or arc, the angle parameter on an ellipse, 0 on a
+/// general quadratic curve (it has no parametrisation).
+template <Real T, int Capacity>
+struct CurveIntersection2 : Intersection<T, 2, T, T, Capacity> {
+  std::array<int, Capacity> multiplicity{};  ///< of point[i] (see above)
+};
+
+/// The same answer for the swapped query: parameters exchanged, multiplicities kept.
+template <Real T, int C>
+[[nodiscard]] constexpr CurveIntersection2<T, C> swapped(
+    const CurveIntersection2<T, C>& r) noexcept {
+  CurveIntersection2<T, C> s = r;
+  s.param_a = r.param_b;
+  s.param_b = r.param_a;
+  return s;
+}
+
+/// How two closed regions (disks, elliptical regions) lie relative to each other: the test
+/// queries of book section 7.5 (figures 7.6-7.9). "touching" variants meet only at boundary
+/// points of even multiplicity (tangencies), with the interiors disjoint (touching) or nested.
+enum class RegionRelation : std::uint8_t {
+  separated,              ///< disjoint, boundaries apart
+  touching,               ///< interiors disjoint, boundaries tangent
+  overlapping,            ///< boundaries cross: neither contains the other
+  a_contains_b,           ///< b inside a, boundaries apart
+  b_contains_a,           ///< a inside b, boundaries apart
+  a_contains_b_touching,  ///< b inside a, boundaries tangent
+  b_contains_a_touching,  ///< a inside b, boundaries tangent
+  equal,                  ///< the same region
+  undecided,              ///< degenerate or non-finite input
+};
+
 /// A readable name of the kind ("empty", "point", ...), for messages and the CLI.
 [[nodiscard]] constexpr std::string_view to_string(Kind k) noexcept {
   switch (k) {
