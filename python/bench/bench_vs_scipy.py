@@ -67,6 +67,12 @@ def main():
         best(lambda: locus.convex_hull(p3), rep), "scipy.spatial.ConvexHull",
         f"same vertex set: {same}")
 
+    c3 = rng.random((n, 3))
+    same = set(locus.convex_hull(c3).vertices.tolist()) == set(spatial.ConvexHull(c3).vertices.tolist())
+    row(f"convex hull 3D, {n} points uniform in a cube", best(lambda: spatial.ConvexHull(c3), rep),
+        best(lambda: locus.convex_hull(c3), rep), "scipy.spatial.ConvexHull",
+        f"same vertex set: {same}")
+
     # Delaunay 3D (n / 10 points: Qhull's 3D Delaunay of 10^6 points takes minutes)
     m = n // 10
     q3 = rng.random((m, 3))
