@@ -120,7 +120,7 @@ ArrayView view_array(py::handle obj, const char* fn, const char* name, int ndim,
     std::string want = "(n";
     for (int i = 1; i < ndim; ++i) want += ", k";
     fail(fn, std::string(name) + " must be a " + std::to_string(ndim) + "-d array " + want +
-                 "), got shape with ndim " + std::to_string(a.ndim()));
+                 (ndim == 1 ? ",)" : ")") + ", got an array with ndim " + std::to_string(a.ndim()));
   }
   auto shape_str = [&] {
     std::string s = "(";
