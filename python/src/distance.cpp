@@ -83,6 +83,7 @@ py::array batch(py::handle a_obj, py::handle b_obj, const char* fn, const char* 
 static_assert(sizeof(Triangle3<double>) == 9 * sizeof(double));
 static_assert(sizeof(Segment3<float>) == 6 * sizeof(float));
 static_assert(sizeof(AlignedBox3<double>) == 6 * sizeof(double));
+static_assert(sizeof(OrientedBox3<float>) == 15 * sizeof(float));
 
 }  // namespace
 
@@ -123,6 +124,16 @@ or one against many. Returns an (n,) array.)doc");
       py::arg("points"), py::arg("boxes"),
       R"doc(Squared distances between points ((n, 3) or (3,)) and solid axis-aligned boxes
 ((n, 2, 3) or (2, 3), rows min, max). Returns an (n,) array.)doc");
+  m.def(
+      "point_oriented_box_sqr_distances",
+      [](py::handle points, py::handle boxes) {
+        return batch<Vec3, OrientedBox3>(points, boxes, "point_oriented_box_sqr_distances",
+                                         "points", 1, "boxes", 5);
+      },
+      py::arg("points"), py::arg("boxes"),
+      R"doc(Squared distances between points ((n, 3) or (3,)) and solid oriented boxes
+((n, 5, 3) or (5, 3), rows center, axis0, axis1, axis2 (unit, orthogonal), extent (half
+sides)). Returns an (n,) array.)doc");
 }
 
 }  // namespace locus::python

@@ -181,6 +181,23 @@ def test_batched_distances_one_to_many_equal_pairwise(rng, dtype):
     assert np.allclose(pb, ref, rtol=1e-6, atol=0)
 
 
+@pytest.mark.parametrize("dtype", DTYPES)
+def test_point_oriented_box_distance(rng, dtype):
+    # oracle: the point in the box's frame, clamped to the extents (numpy, float64)
+    q, _ = np.linalg.qr(rng.standard_normal((3, 3)))
+    box = np.concatenate([[rng.standard_normal(3)], q.T, [[0.5, 1.0, 2.0]]]).astype(dtype)
+    pts = (rng.standard_normal((2000, 3)) * 3).astype(dtype)
+    got = locus.point_oriented_box_sqr_distances(pts, box)
+    b = box.astype(np.float64)
+    local = (pts.astype(np.float64) - b[0]) @ b[1:4].T
+    ref = np.sum((local - np.clip(local, -b[4], b[4])) ** 2, axis=1)
+    slack = 64 * np.finfo(dtype).eps * np.maximum(ref, np.abs(local).max() ** 2)
+    assert np.all(np.abs(got - ref) <= slack)
+    assert (ref == 0).any() and (ref > 0).any()
+    many = locus.point_oriented_box_sqr_distances(pts, np.broadcast_to(box, (2000, 5, 3)))
+    assert np.array_equal(many, got)
+
+
 def test_svg_writer(tmp_path, rng):
     p = rng.random((20, 2))
     d = locus.delaunay(p)
