@@ -73,19 +73,11 @@ std::span<const Vec<T, N>> as_points(const ArrayView& v) {
   return {static_cast<const Vec<T, N>*>(v.array.data()), v.rows};
 }
 
-/// Calls f.template operator()<T, N>(span) for the (n, 2) or (n, 3) points in `obj`.
+/// Calls f.template operator()<T, N>(span) for the (n, 2) or (n, 3) points in `obj` (finiteness
+/// is left to the algorithm, which reports non_finite_input).
 template <class F>
-decltype(auto) with_points(py::handle obj, const char* fn, std::initializer_list<int> dims, F&& f,
-                           bool finite = false) {
+decltype(auto) with_points(py::handle obj, const char* fn, std::initializer_list<int> dims, F&& f) {
   const ArrayView v = view_array(obj, fn, "points", 2, dims);
-  if (finite) {
-    if (v.is_float)
-      check_finite(static_cast<const float*>(v.array.data()), v.rows * std::size_t(v.last), fn,
-                   "points");
-    else
-      check_finite(static_cast<const double*>(v.array.data()), v.rows * std::size_t(v.last), fn,
-                   "points");
-  }
   if (v.is_float) {
     if (v.last == 2) return f.template operator()<float, 2>(as_points<float, 2>(v));
     return f.template operator()<float, 3>(as_points<float, 3>(v));
