@@ -23,3 +23,7 @@ LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build)
 LOCUS_TEST_PACKAGES=(libgtest-dev libgmp-dev libbenchmark-dev libeigen3-dev)
 # The fuzz step of scripts/test only: clang with libFuzzer's runtime (-fsanitize=fuzzer).
 LOCUS_FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
+# The Python step of scripts/test: the pybind11 module and its tests (numpy in and out, scipy
+# and shapely as oracles, Dask for the scale-out example), all for Debian's /usr/bin/python3.
+LOCUS_PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-scipy python3-shapely
+                       python3-pytest python3-dask python3-distributed)

@@ -1,0 +1,184 @@
+# Type stubs of the locus extension module (python/src/*.cpp). Installed next to the module.
+# Points are (n, 2) or (n, 3) float64/float32 arrays (anything numpy converts to them); results
+# are Result objects (status 'ok' or 'limit_exceeded' plus the fields listed) or numpy arrays.
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+KIND_NAMES: tuple[str, ...]
+
+_Points = npt.ArrayLike
+_Floats = npt.NDArray[np.floating[Any]]
+_Indices = npt.NDArray[np.uint32]
+
+class Result:
+    status: str
+
+class Hull2Result(Result):
+    dimension: int
+    indices: _Indices
+
+class Hull3Result(Result):
+    dimension: int
+    triangles: _Indices
+    vertices: _Indices
+    polygon: _Indices
+
+class Delaunay2Result(Result):
+    dimension: int
+    triangles: _Indices
+    adjacency: _Indices
+    hull: _Indices
+    duplicate_of: _Indices
+
+class Delaunay3Result(Result):
+    dimension: int
+    tetrahedra: _Indices
+    adjacency: _Indices
+    hull: _Indices
+    duplicate_of: _Indices
+    triangles: _Indices
+    chain: _Indices
+
+class ConstrainedDelaunayResult(Result):
+    dimension: int
+    triangles: _Indices
+    adjacency: _Indices
+    hull: _Indices
+    duplicate_of: _Indices
+    constrained: npt.NDArray[np.uint8]
+    rejected: _Indices
+
+class TriangulationResult(Result):
+    triangles: _Indices
+
+class MinCircleResult(Result):
+    center: _Floats
+    radius: float
+    support: _Indices
+
+class MinSphereResult(Result):
+    center: _Floats
+    radius: float
+    support: _Indices
+
+class MinRectResult(Result):
+    center: _Floats
+    axes: _Floats
+    extents: _Floats
+    area: float
+    perimeter: float
+    edge: _Indices
+
+class MinBoxResult(Result):
+    center: _Floats
+    axes: _Floats
+    extents: _Floats
+    volume: float
+    certified: bool
+
+class LineFitResult(Result):
+    origin: _Floats
+    direction: _Floats
+    rms: float
+
+class PlaneFitResult(Result):
+    normal: _Floats
+    constant: float
+    rms: float
+
+class SphereFitResult(Result):
+    center: _Floats
+    radius: float
+    rms: float
+    iterations: int
+
+class GaussianFitResult(Result):
+    mean: _Floats
+    covariance: _Floats
+    axes: _Floats
+    extents: _Floats
+    rms: float
+
+class RootsResult(Result):
+    roots: _Floats
+    multiplicities: npt.NDArray[np.int32]
+
+class GjkResult(Result):
+    contact: str
+    distance: float
+    closest: _Floats
+    normal: _Floats
+    iterations: int
+
+class PenetrationResult(Result):
+    contact: str
+    depth: float
+    normal: _Floats
+    closest: _Floats
+    iterations: int
+
+class SegmentIntersections(Result):
+    kind: npt.NDArray[np.uint8]
+    count: npt.NDArray[np.int8]
+    points: _Floats
+    param_a: _Floats
+    param_b: _Floats
+
+def _input_address(points: _Points) -> tuple[int, bool]: ...
+def convex_hull(points: _Points, keep_collinear: bool = False) -> Hull2Result | Hull3Result: ...
+def delaunay(points: _Points) -> Delaunay2Result | Delaunay3Result: ...
+def constrained_delaunay(points: _Points, constraints: npt.ArrayLike) -> ConstrainedDelaunayResult: ...
+def triangulate_polygon(
+    points: _Points, ring_ends: npt.ArrayLike | None = None, method: str = "cdt"
+) -> TriangulationResult: ...
+def min_circle(points: _Points) -> MinCircleResult: ...
+def min_sphere(points: _Points) -> MinSphereResult: ...
+def min_rect(points: _Points, perimeter: bool = False) -> MinRectResult: ...
+def min_box(points: _Points) -> MinBoxResult: ...
+def fit_line(points: _Points) -> LineFitResult: ...
+def fit_plane(points: _Points) -> PlaneFitResult: ...
+def fit_circle(points: _Points, algebraic: bool = False) -> SphereFitResult: ...
+def fit_sphere(points: _Points, algebraic: bool = False) -> SphereFitResult: ...
+def fit_gaussian(points: _Points) -> GaussianFitResult: ...
+def polynomial_roots(
+    coefficients: npt.ArrayLike, lo: float = ..., hi: float = ..., exact: bool = True
+) -> RootsResult: ...
+def point_in_polygon(
+    points: _Points, polygon: _Points, ring_ends: npt.ArrayLike | None = None
+) -> npt.NDArray[np.int8]: ...
+def point_in_polyhedron(
+    points: _Points, vertices: _Points, triangles: npt.ArrayLike
+) -> npt.NDArray[np.int8]: ...
+def point_triangle_sqr_distances(points: _Points, triangles: npt.ArrayLike) -> _Floats: ...
+def segment_segment_sqr_distances(a: npt.ArrayLike, b: npt.ArrayLike) -> _Floats: ...
+def segment_triangle_sqr_distances(segments: npt.ArrayLike, triangles: npt.ArrayLike) -> _Floats: ...
+def point_box_sqr_distances(points: _Points, boxes: npt.ArrayLike) -> _Floats: ...
+def point_oriented_box_sqr_distances(points: _Points, boxes: npt.ArrayLike) -> _Floats: ...
+def gjk_distance(a: _Points, b: _Points) -> GjkResult: ...
+def penetration(a: _Points, b: _Points) -> PenetrationResult: ...
+def segment_intersections(a: npt.ArrayLike, b: npt.ArrayLike) -> SegmentIntersections: ...
+
+class SvgWriter:
+    def __init__(
+        self,
+        max_width: float = 480.0,
+        max_height: float = 480.0,
+        margin: float = 24.0,
+        background: str = "white",
+        title: str = "",
+    ) -> None: ...
+    def set_view(self, lo: npt.ArrayLike, hi: npt.ArrayLike) -> None: ...
+    def point(self, p: npt.ArrayLike, **style: Any) -> None: ...
+    def points(self, points: _Points, **style: Any) -> None: ...
+    def segment(self, a: npt.ArrayLike, b: npt.ArrayLike, **style: Any) -> None: ...
+    def polyline(self, points: _Points, closed: bool = False, **style: Any) -> None: ...
+    def polygon(self, points: _Points, **style: Any) -> None: ...
+    def triangles(self, points: _Points, triangles: npt.ArrayLike, **style: Any) -> None: ...
+    def circle(self, center: npt.ArrayLike, radius: float, **style: Any) -> None: ...
+    def text(self, p: npt.ArrayLike, text: str, **style: Any) -> None: ...
+    def __len__(self) -> int: ...
+    def to_string(self) -> str: ...
+    def write(self, path: str) -> None: ...
