@@ -17,7 +17,7 @@ ensure_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 # The toolchain every build needs.
-LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build)
+LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build libcli11-dev)
 # Test and benchmark dependencies: GoogleTest, GMP rationals (exact oracle), Google Benchmark,
 # Eigen (test/benchmark oracle for the numerics).
 LOCUS_TEST_PACKAGES=(libgtest-dev libgmp-dev libbenchmark-dev libeigen3-dev)
