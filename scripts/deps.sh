@@ -23,3 +23,7 @@ LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build libcli11-dev)
 LOCUS_TEST_PACKAGES=(libgtest-dev libgmp-dev libbenchmark-dev libeigen3-dev)
 # The fuzz step of scripts/test only: clang with libFuzzer's runtime (-fsanitize=fuzzer).
 LOCUS_FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
+# Peer libraries of the benchmarks (scripts/bench, scripts/bench_table), compared in the same run.
+LOCUS_BENCH_PEER_PACKAGES=(libcgal-dev libqhull-dev libboost-dev libccd-dev libfcl-dev libassimp-dev)
+# The gallery's browser check (gallery/browser_check.sh, a CTest test): headless Chromium.
+LOCUS_BROWSER_PACKAGES=(chromium)
