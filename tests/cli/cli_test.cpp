@@ -10,6 +10,7 @@
 #include <locus/bounding/min_circle.hpp>
 #include <locus/bounding/min_rect2.hpp>
 #include <locus/bounding/min_sphere.hpp>
+#include <locus/delaunay/constrained_delaunay2.hpp>
 #include <locus/delaunay/delaunay2.hpp>
 #include <locus/delaunay/delaunay3.hpp>
 #include <locus/distance/point_mesh.hpp>
@@ -19,9 +20,13 @@
 #include <locus/fit/sphere_fit.hpp>
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
+#include <locus/io/geojson.hpp>
 #include <locus/io/mesh_io.hpp>
 #include <locus/io/point_list.hpp>
+#include <locus/io/wkt.hpp>
 #include <locus/numeric/roots.hpp>
+#include <locus/triangulate/ear_clipping.hpp>
+#include <locus/triangulate/monotone.hpp>
 
 #include "support/typed.hpp"
 
@@ -249,6 +254,8 @@ TEST_F(Cli, UsageErrorsExitWith2) {
                                "roots 1 abc",
                                "roots 1 0 -1 --interval 2 1",
                                "mesh",
+                               "cdt " + pts,
+                               "triangulate " + pts + " --method nope",
                                "mesh convert " + path("a.obj"),
                                "mesh convert " + path("a.obj") + " " + path("b.obj") + " --to x"};
   for (const std::string& args : cases) {
@@ -258,13 +265,15 @@ TEST_F(Cli, UsageErrorsExitWith2) {
   }
 }
 
-// One line on stderr: "locus: <file>:<line>: <reason>".
+// One line on stderr: "locus: <file>:<line>: <reason>" (line 0: "locus: <file>: <reason>").
 void expect_bad_input(const Outcome& r, const std::string& file, int line,
                       const std::string& reason) {
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
-  const std::string where = "locus: " + file + (line > 0 ? ":" + std::to_string(line) : "") + ": ";
+  // "file:line: " for point lists and meshes, "file:line:column: " for WKT and GeoJSON.
+  const std::string where = "locus: " + file + (line > 0 ? ":" + std::to_string(line) : "");
   EXPECT_EQ(r.err.rfind(where, 0), 0u) << r.err;
+  EXPECT_EQ(r.err.substr(where.size(), 1), ":") << r.err;
   EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(r.err.back(), '\n');
@@ -592,6 +601,110 @@ TEST_F(Cli, MeshConvertRoundTripsAndInfoAndCheckReport) {
   spit(path("degen.obj"), std::string(cube_obj) + "f 1 2 1\n");
   f = fields(run("mesh check " + path("degen.obj")).out);
   EXPECT_EQ(f["degenerate_faces"], std::vector<std::string>{"1"});
+}
+
+// A random star-shaped polygon around the origin with a square hole, and a triangle beside it.
+locus::Geometry2<double> random_multipolygon(locus_test::Rng& rng) {
+  locus::Geometry2<double> g;
+  g.type = locus::GeometryType::multi_polygon;
+  locus::RingPolygon2<double> star;
+  const int n = 40;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.14159265358979 * (i + rng.uniform(0.0, 0.8)) / n;
+    const double r = rng.uniform(2.0, 5.0);
+    star.points.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  star.ring_ends.push_back(std::uint32_t(star.points.size()));
+  for (const Vec2d& p : {Vec2d{-1, -1}, Vec2d{-1, 1}, Vec2d{1, 1}, Vec2d{1, -1}}) {
+    star.points.push_back(p);
+  }
+  star.ring_ends.push_back(std::uint32_t(star.points.size()));
+  g.polygons.push_back(star);
+  locus::RingPolygon2<double> tri;
+  tri.points = {{10, 0}, {12, 0}, {11, rng.uniform(1.0, 3.0)}};
+  tri.ring_ends = {3};
+  g.polygons.push_back(tri);
+  return g;
+}
+
+TEST_F(Cli, PolygonTriangulationsMatchTheLibrary) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const auto g = random_multipolygon(rng);
+  const auto wkt = locus::write_wkt_string(g);
+  ASSERT_EQ(wkt.status, Status::ok) << wkt.message;
+  spit(path("poly.wkt"), wkt.data + "\n");
+  const auto json = locus::write_geojson_string(g);
+  ASSERT_EQ(json.status, Status::ok) << json.message;
+  spit(path("poly.geojson"), json.data);
+  // The points as the files hold them (read back by the library's own reader).
+  const auto read = locus::parse_wkt<double>(wkt.data);
+  ASSERT_EQ(read.status, Status::ok);
+  std::vector<Vec2d> pts;
+  std::vector<std::uint32_t> ends;
+  for (const auto& p : read.geometries.at(0).polygons) {
+    const auto base = std::uint32_t(pts.size());
+    pts.insert(pts.end(), p.points.begin(), p.points.end());
+    for (const std::uint32_t e : p.ring_ends) ends.push_back(base + e);
+  }
+  // cdt: every ring at once, the triangles inside.
+  const auto cdt =
+      locus::triangulate_polygon(std::span<const Vec2d>(pts), std::span<const std::uint32_t>(ends));
+  ASSERT_EQ(cdt.status, Status::ok);
+  std::vector<std::array<std::uint32_t, 3>> inside;
+  for (std::size_t t = 0; t < cdt.triangles.size(); ++t) {
+    if (cdt.inside[t]) inside.push_back(cdt.triangles[t]);
+  }
+  for (const char* file : {"poly.wkt", "poly.geojson"}) {
+    const Outcome r = run(std::string("cdt ") + path(file));
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(index_rows<3>(r.out), inside) << file;
+  }
+  EXPECT_EQ(index_rows<3>(run("cdt " + path("poly.wkt") + " --all").out), cdt.triangles);
+  // triangulate: each polygon on its own, indices offset by the polygon's first point.
+  for (const std::string method : {"ear", "monotone"}) {
+    std::vector<std::array<std::uint32_t, 3>> expected;
+    std::uint32_t base = 0;
+    for (const auto& p : read.geometries.at(0).polygons) {
+      const auto t =
+          method == "ear"
+              ? locus::triangulate_ear_clipping(std::span<const Vec2d>(p.points),
+                                                std::span<const std::uint32_t>(p.ring_ends))
+              : locus::triangulate_monotone(std::span<const Vec2d>(p.points),
+                                            std::span<const std::uint32_t>(p.ring_ends));
+      ASSERT_EQ(t.status, Status::ok);
+      for (const auto& tri : t.triangles) {
+        expected.push_back({base + tri[0], base + tri[1], base + tri[2]});
+      }
+      base += std::uint32_t(p.points.size());
+    }
+    const Outcome r =
+        run("triangulate - --format geojson --method " + method + " --svg " + path("t.svg"),
+            path("poly.geojson"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(index_rows<3>(r.out), expected) << method;
+    EXPECT_NE(slurp(path("t.svg")).find("<svg"), std::string::npos);
+  }
+  const Outcome m = run("triangulate " + path("poly.wkt") + " -o " + path("poly.off"));
+  ASSERT_EQ(m.code, 0) << m.err;
+  const auto mesh = locus::read_mesh<double>(path("poly.off"));
+  ASSERT_EQ(mesh.status, Status::ok);
+  EXPECT_EQ(mesh.mesh.vertices.size(), pts.size());
+  // Bad files: the reader's line and column; crossing rings refused.
+  const std::string bad = path("bad.wkt");
+  spit(bad, "POLYGON ((0 0, 1 0, 1 1, 0 0))\nPOLYGON ((0 0, 1 0, 1 x, 0 0))\n");
+  for (const char* cmd : {"cdt ", "triangulate "}) {
+    const Outcome r = run(cmd + bad);
+    expect_bad_input(r, bad, 2, "");
+    EXPECT_EQ(r.err.rfind("locus: " + bad + ":2:", 0), 0u) << r.err;
+  }
+  const std::string bow = path("bow.wkt");
+  spit(bow, "POLYGON ((0 0, 4 4, 4 0, 0 4, 0 0))\n");
+  expect_bad_input(run("cdt " + bow), bow, 0, "cross");
+  expect_bad_input(run("triangulate " + bow), bow, 0, "invalid_topology");
+  const std::string points_only = path("points.wkt");
+  spit(points_only, "MULTIPOINT ((0 0), (1 1))\n");
+  expect_bad_input(run("cdt " + points_only), points_only, 0, "no polygon");
 }
 
 }  // namespace

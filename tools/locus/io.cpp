@@ -3,8 +3,10 @@
 
 #include "io.hpp"
 
+#include <locus/io/geojson.hpp>
 #include <locus/io/mesh_io.hpp>
 #include <locus/io/point_list.hpp>
+#include <locus/io/wkt.hpp>
 
 #include <unistd.h>
 
@@ -22,7 +24,7 @@ namespace locus_cli {
 
 namespace {
 
-constexpr const char* formats_help = "csv, txt, tsv, xyz, obj, off, ply or stl";
+constexpr const char* formats_help = "csv, txt, tsv, xyz, obj, off, ply, stl, wkt or geojson";
 
 std::string lower(std::string s) {
   for (char& ch : s) {
@@ -136,6 +138,37 @@ locus::PolygonMesh<double> load_mesh(const std::string& path, const std::string&
   auto r = locus::parse_mesh<double>(bytes, mf, display_name(path));
   if (r.status != locus::Status::ok) throw InputError(r.message);
   return std::move(r.mesh);
+}
+
+std::vector<PolygonInput> load_polygons(const Common& c) {
+  std::string f = lower(c.format);
+  if (f.empty()) {
+    const std::string name = lower(c.input);
+    const auto ends_with = [&name](std::string_view e) {
+      return name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0;
+    };
+    if (ends_with(".wkt")) f = "wkt";
+    if (ends_with(".json") || ends_with(".geojson")) f = "geojson";
+  }
+  if (f == "json") f = "geojson";
+  if (f != "wkt" && f != "geojson") {
+    throw UsageError(c.input + ": give a WKT (.wkt) or GeoJSON (.json .geojson) file, or " +
+                     "--format wkt|geojson");
+  }
+  const std::string bytes = slurp(c.input);
+  const std::string name = display_name(c.input);
+  auto r = f == "wkt" ? locus::parse_wkt<double>(bytes, name)
+                      : locus::parse_geojson<double>(bytes, name);
+  if (r.status != locus::Status::ok) {
+    throw InputError(r.message.empty() ? name + ": " + std::string(locus::to_string(r.status))
+                                       : r.message);
+  }
+  std::vector<PolygonInput> polygons;
+  for (auto& g : r.geometries) {
+    for (auto& p : g.polygons) polygons.push_back(std::move(p));
+  }
+  if (polygons.empty()) throw InputError(name + ": no polygon in the file");
+  return polygons;
 }
 
 bool is_mesh_name(const std::string& path, const std::string& format) {

@@ -6,6 +6,7 @@
 // Every subcommand (cmd_*.cpp) goes through these functions, so formats and messages are alike.
 
 #include <locus/core/vec.hpp>
+#include <locus/io/geometry.hpp>
 #include <locus/io/svg.hpp>
 #include <locus/mesh/polygon_mesh.hpp>
 
@@ -63,11 +64,12 @@ void add_common(CLI::App* sub, Common& c, bool svg, std::string_view input_help)
                                                    const std::string& format);
 
 /// A polygon with holes: ring k is points[ring_ends[k-1] .. ring_ends[k]); ring 0 the outer
-/// boundary (the layout of triangulate/polygon_triangulation.hpp).
-struct PolygonInput {
-  std::vector<Vec2d> points;
-  std::vector<std::uint32_t> ring_ends;
-};
+/// boundary (io/geometry.hpp; the layout of triangulate/polygon_triangulation.hpp).
+using PolygonInput = locus::RingPolygon2<double>;
+
+/// The polygons of a WKT (.wkt) or GeoJSON (.json .geojson) file, in file order (every POLYGON
+/// and each member of a MULTIPOLYGON; other geometries are skipped); none is an InputError.
+[[nodiscard]] std::vector<PolygonInput> load_polygons(const Common& c);
 
 /// Whether a file name or --format names a mesh format.
 [[nodiscard]] bool is_mesh_name(const std::string& path, const std::string& format = {});
