@@ -11,6 +11,9 @@
 #include "fuzz/csv_fuzz.hpp"
 #include "support/typed.hpp"
 
+#include <unistd.h>
+
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -284,6 +287,23 @@ TEST(PointList, FormatsDimensionsAndRefusals) {
   EXPECT_EQ((locus::write_points_string<double, 2>(ok, PointListFormat::xyz).status),
             Status::invalid_input);
   EXPECT_EQ((locus::write_points_string<double, 2>(ok, PointListFormat::csv).data), "x,y\n1,2\n");
+}
+
+TEST(PointList, WritesAnyPointRangeWithoutTemplateArguments) {
+  const std::vector<locus::Vec2f> v = {{1.5f, -2.0f}, {0.0f, 3.0f}};
+  const std::array<locus::Vec3d, 2> a = {locus::Vec3d{1, 2, 3}, locus::Vec3d{-0.0, 0.5, 7}};
+  const auto wv = locus::write_points_string(v, PointListFormat::csv);
+  ASSERT_EQ(wv.status, Status::ok);
+  const auto rv = locus::parse_points<float, 2>(wv.data, PointListFormat::csv);
+  ASSERT_EQ(rv.status, Status::ok);
+  EXPECT_TRUE(same_bits(std::vector<locus::Vec2f>(v), rv.points));
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("locus_point_list_range_" + std::to_string(::getpid()) + ".xyz");
+  ASSERT_EQ(locus::write_points(path, a).status, Status::ok);
+  const auto ra = locus::read_points<double, 3>(path);
+  std::filesystem::remove(path);
+  ASSERT_EQ(ra.status, Status::ok) << ra.message;
+  EXPECT_TRUE(same_bits(std::vector<locus::Vec3d>(a.begin(), a.end()), ra.points));
 }
 
 std::string slurp(const std::filesystem::path& p) {

@@ -20,10 +20,12 @@
 // input size for double; no size is ever taken from the file); time O(input).
 // point_list_dimension(): the number of fields of the first data line (CSV; 3 for XYZ with 3 or
 // more columns), 0 when there is none, to pick N before reading.
-// Writing: CSV with a header "x,y[,z]" and comma-separated rows, XYZ as "x y z" rows; numbers in
-// the shortest form that reads back exactly (std::to_chars), so a round trip is bit-exact
-// (-0.0 stays -0.0). A non-finite point is refused (non_finite_input), as is XYZ for 2D points.
+// Writing (a span, or any point range of core/point_range.hpp): CSV with a header "x,y[,z]" and
+// comma-separated rows, XYZ as "x y z" rows; numbers in the shortest form that reads back
+// exactly (std::to_chars), so a round trip is bit-exact (-0.0 stays -0.0). A non-finite point is
+// refused (non_finite_input), as is XYZ for 2D points.
 
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
@@ -86,5 +88,18 @@ template <Real T, int N>
 template <Real T, int N>
 [[nodiscard]] PointListWriteResult write_points_string(std::span<const Vec<T, N>> points,
                                                        PointListFormat format);
+
+/// The same for any 2D or 3D point range (core/point_range.hpp), without template arguments.
+template <PointRange R>
+requires(range_dimension_v<R> == 2 || range_dimension_v<R> == 3) [[nodiscard]] PointListWriteResult
+    write_points(const std::filesystem::path& path, const R& points,
+                 PointListFormat format = PointListFormat::from_extension) {
+  return write_points<range_scalar_t<R>, range_dimension_v<R>>(path, point_span(points), format);
+}
+template <PointRange R>
+requires(range_dimension_v<R> == 2 || range_dimension_v<R> == 3) [[nodiscard]] PointListWriteResult
+    write_points_string(const R& points, PointListFormat format) {
+  return write_points_string<range_scalar_t<R>, range_dimension_v<R>>(point_span(points), format);
+}
 
 }  // namespace locus
