@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
-// libFuzzer target: the GeoJSON reader (property in geo_fuzz.hpp). Built by tests/fuzz/CMakeLists.txt.
+// libFuzzer target: the GeoJSON reader (property in geo_fuzz.hpp). Built by
+// tests/fuzz/CMakeLists.txt.
 
 #include "geo_fuzz.hpp"
 
