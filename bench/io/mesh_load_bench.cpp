@@ -8,10 +8,11 @@
 // both readers get the same files).
 // Assimp runs with no post-processing step (flags 0: its cheapest load, which leaves STL as
 // 3 unshared corners per triangle) and, for STL, also with aiProcess_JoinIdenticalVertices
-// (assimp_join: the same indexed mesh locus returns, equal corners merged). Counters: Mtri/s (10^6 triangles per second), peak_MB (largest heap
-// growth during the load, every malloc of the process counted: support/heap_peak.hpp) and
-// mesh_MB (the loaded PolygonMesh<float>'s own arrays: 12 bytes per vertex, 4 per index and per
-// face offset), so peak_MB / mesh_MB is the memory overhead of a load.
+// (assimp_join: the same indexed mesh locus returns, equal corners merged). Counters: Mtri/s (10^6
+// triangles per second), peak_MB (largest heap growth during the load, every malloc of the process
+// counted: support/heap_peak.hpp) and mesh_MB (the loaded PolygonMesh<float>'s own arrays: 12 bytes
+// per vertex, 4 per index and per face offset), so peak_MB / mesh_MB is the memory overhead of a
+// load.
 //
 // Build and run:
 //   cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DLOCUS_BENCH_PEERS=ON
@@ -25,6 +26,7 @@
 
 #include "support/heap_peak.hpp"
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -32,12 +34,11 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
-#include <unistd.h>
 
 #if defined(LOCUS_HAVE_ASSIMP)
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 #endif
 
 namespace {
@@ -81,12 +82,10 @@ struct Files {
                      m.face_offsets.size() * 4) /
               (1024.0 * 1024.0);
     using F = locus::MeshFormat;
-    const std::pair<const char*, F> out[] = {{"mesh.obj", F::obj},
-                                             {"mesh.off", F::off},
-                                             {"ascii.ply", F::ply_ascii},
-                                             {"binary.ply", F::ply_binary_le},
-                                             {"ascii.stl", F::stl_ascii},
-                                             {"binary.stl", F::stl_binary}};
+    const std::pair<const char*, F> out[] = {
+        {"mesh.obj", F::obj},        {"mesh.off", F::off},
+        {"ascii.ply", F::ply_ascii}, {"binary.ply", F::ply_binary_le},
+        {"ascii.stl", F::stl_ascii}, {"binary.stl", F::stl_binary}};
     for (const auto& [name, format] : out) {
       const auto w = locus::write_mesh(dir / name, m, format);
       if (w.status != locus::Status::ok) {
@@ -106,7 +105,7 @@ const Files& files() {
   return f;
 }
 
-constexpr const char* names[] = {"mesh.obj",  "mesh.off",   "ascii.ply",
+constexpr const char* names[] = {"mesh.obj",   "mesh.off",  "ascii.ply",
                                  "binary.ply", "ascii.stl", "binary.stl"};
 
 void set_counters(benchmark::State& state, const locus::bench::HeapPeak& peak, std::size_t tris) {
