@@ -47,6 +47,7 @@ class WktReader : public Errors {
 
   std::vector<Geometry2<T>> run() {
     std::vector<Geometry2<T>> out;
+    if (s_.substr(0, 3) == "\xEF\xBB\xBF") i_ = 3;  // a UTF-8 byte-order mark
     skip();
     if (at_end()) {
       failure.status = Status::empty_input;

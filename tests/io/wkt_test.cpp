@@ -221,6 +221,9 @@ TYPED_TEST(WktTest, FlattensCollectionsAndDropsEmptyMembers) {
   EXPECT_EQ(r.geometries[3].points.size(), 2u);
   EXPECT_TRUE(r.geometries[4].empty());
   EXPECT_EQ(locus::parse_wkt<T>("GEOMETRYCOLLECTION EMPTY").geometries.size(), 0u);
+  const auto bom = locus::parse_wkt<T>("\xEF\xBB\xBFPOINT (1 2)\r\n");
+  ASSERT_EQ(bom.status, Status::ok) << bom.message;
+  EXPECT_EQ(bom.geometries[0].points[0], (Vec2<T>{1, 2}));
 }
 
 // ---- malformed input: status and position ---------------------------------------------------

@@ -12,13 +12,13 @@
 // that locus uses appearing twice is an error. "type" names are case-sensitive, as RFC 7946
 // says. Positions: [x, y] or [x, y, z] (z dropped); 1 or 4+ numbers are errors. Empty
 // "coordinates" arrays give the empty forms. Numbers are read correctly rounded to T.
-// Rings: at least 4 positions, the last equal to the first (x and y bit for bit), which is
+// Rings: at least 4 positions, the last equal to the first (x and y, compared with ==), which is
 // dropped; at least 3 distinct points; line strings at least 2 positions. Rings are reported
 // in the orientation read (RFC 7946 asks for counter-clockwise outer rings but old files do
 // not follow it; orient_rings() normalises).
 // Errors: parse_error for bad JSON, truncated text, a wrong type or structure, unclosed rings,
 // too few points; non_finite_input for a number overflowing T; both with line, column and
-// byte offset (io/geometry.hpp). Memory: a token array of about 24 bytes per JSON value plus
+// byte offset (io/geometry.hpp). Memory: a token array of 32 bytes per JSON value plus
 // the geometries, so proportional to the input; O(input) time.
 // Writing: write_geojson_string(geometry) gives a geometry object; write_geojson_string(list)
 // and write_geojson(path, list) a FeatureCollection with one Feature ("properties": null) per

@@ -5,13 +5,14 @@
 // (flattened into its members, nesting at most 32 deep). Compiled for float and double.
 // Reading: parse_wkt(text) or read_wkt(path): one or more geometries separated by white space
 // (a file with one geometry per line reads as a list). Keywords in any case; spaces, tabs, LF
-// and CRLF anywhere between tokens. EMPTY wherever a geometry or a member may stand (empty
-// members of a multi- geometry and EMPTY rings are dropped). MULTIPOINT members with or without
-// parentheses. LINEARRING (JTS) reads as a LINESTRING, its points as written.
+// and CRLF anywhere between tokens; an optional UTF-8 byte-order mark. EMPTY wherever a
+// geometry or a member may stand (empty members of a multi- geometry and EMPTY rings are
+// dropped). MULTIPOINT members with or without parentheses. LINEARRING (JTS) reads as a
+// LINESTRING, its points as written.
 // Dimensions: "Z", "M", "ZM" (also attached: POINTZ) announce 3, 3, 4 numbers per point, of
 // which x and y are kept; without a keyword every point of a geometry has 2, 3 or 4 numbers
 // (the same count throughout), extra ones dropped. Coordinates are read correctly rounded to T.
-// Rings: the closing point must repeat the first (x and y bit for bit) and is dropped; a ring
+// Rings: the closing point must repeat the first (x and y equal) and is dropped; a ring
 // needs at least 3 distinct points, a line string at least 2 points. Rings keep the orientation
 // they were written in (orient_rings() normalises). SRID=n; (EWKT) and other keywords
 // (CIRCULARSTRING, TIN, ...) are parse errors naming the word.
