@@ -134,8 +134,9 @@ locus::PolygonMesh<double> load_mesh(const std::string& path, const std::string&
   if (mf == locus::MeshFormat::from_extension) {
     throw UsageError(path + ": unknown mesh format (give --format: obj, off, ply or stl)");
   }
-  const std::string bytes = slurp(path);
-  auto r = locus::parse_mesh<double>(bytes, mf, display_name(path));
+  // A file goes through read_mesh(), which maps it instead of copying it.
+  auto r = path == "-" ? locus::parse_mesh<double>(slurp(path), mf, display_name(path))
+                       : locus::read_mesh<double>(path, mf);
   if (r.status != locus::Status::ok) throw InputError(r.message);
   return std::move(r.mesh);
 }
