@@ -17,7 +17,7 @@ ensure_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 # The toolchain every build needs.
-LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build)
+LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build libcli11-dev)
 # Test and benchmark dependencies: GoogleTest, GMP rationals (exact oracle), Google Benchmark,
 # Eigen (test/benchmark oracle for the numerics).
 LOCUS_TEST_PACKAGES=(libgtest-dev libgmp-dev libbenchmark-dev libeigen3-dev)
@@ -27,3 +27,7 @@ LOCUS_FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
 # and shapely as oracles, Dask for the scale-out example), all for Debian's /usr/bin/python3.
 LOCUS_PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-scipy python3-shapely
                        python3-pytest python3-dask python3-distributed)
+# Peer libraries of the benchmarks (scripts/bench, scripts/bench_table), compared in the same run.
+LOCUS_BENCH_PEER_PACKAGES=(libcgal-dev libqhull-dev libboost-dev libccd-dev libfcl-dev libassimp-dev)
+# The gallery's browser check (gallery/browser_check.sh, a CTest test): headless Chromium.
+LOCUS_BROWSER_PACKAGES=(chromium)

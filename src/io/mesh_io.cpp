@@ -7,8 +7,17 @@
 
 #include <cstdio>
 #include <fstream>
+#include <limits>
+#include <memory>
 #include <string>
 #include <system_error>
+
+#if defined(__linux__)
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <unistd.h>
+#define LOCUS_MESH_IO_MMAP 1
+#endif
 
 namespace locus {
 
@@ -99,20 +108,40 @@ MeshReadResult<T> read_mesh(const std::filesystem::path& path, MeshFormat format
   std::error_code ec;
   const bool regular = std::filesystem::is_regular_file(path, ec);
   const std::uintmax_t size = regular ? std::filesystem::file_size(path, ec) : 0;
-  std::string bytes;
-  bool read = false;
-  if (regular && !ec) {
-    std::ifstream in(path, std::ios::binary);
-    bytes.resize(static_cast<std::size_t>(size));
-    read = in && in.read(bytes.data(), static_cast<std::streamsize>(size)) &&
-           in.gcount() == static_cast<std::streamsize>(size);
+  if (!regular || ec) {
+    r.status = Status::io_error;
+    r.message = name + ": cannot read the file";
+    return r;
   }
+#if defined(LOCUS_MESH_IO_MMAP)
+  // Mapped read-only, the file's bytes are the page cache's: no private copy, no zero fill.
+  if (size > 0 && size <= std::numeric_limits<std::size_t>::max()) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+      const auto n = static_cast<std::size_t>(size);
+      void* map = ::mmap(nullptr, n, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+      ::close(fd);
+      if (map != MAP_FAILED) {
+        MeshReadResult<T> out =
+            parse_mesh<T>(std::string_view(static_cast<const char*>(map), n), format, name);
+        ::munmap(map, n);
+        return out;
+      }
+    }
+  }
+#endif
+  // Without a mapping, read into a buffer that is not zero-filled first.
+  const auto n = static_cast<std::size_t>(size);
+  std::unique_ptr<char[]> bytes(new char[n > 0 ? n : 1]);
+  std::ifstream in(path, std::ios::binary);
+  const bool read = in && in.read(bytes.get(), static_cast<std::streamsize>(n)) &&
+                    in.gcount() == static_cast<std::streamsize>(n);
   if (!read) {
     r.status = Status::io_error;
     r.message = name + ": cannot read the file";
     return r;
   }
-  return parse_mesh<T>(bytes, format, name);
+  return parse_mesh<T>(std::string_view(bytes.get(), n), format, name);
 }
 
 template <Real T>

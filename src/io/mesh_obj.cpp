@@ -5,6 +5,7 @@
 
 #include <locus/io/mesh_io.hpp>
 
+#include <cstring>
 #include <string>
 
 namespace locus::mesh_io {
@@ -39,6 +40,29 @@ Resolve resolve(std::string_view field, std::uint64_t count, IndexCheck& check, 
   return Resolve::ok;
 }
 
+// Reserves the arrays from a first pass that counts the v and f lines (a memchr per line), so
+// that they are allocated once: no copies while growing, no spare capacity (faces are assumed
+// triangles; n-gons grow the index array). Bounded by the number of lines, so by the input.
+template <Real T>
+void reserve_for(std::string_view text, PolygonMesh<T>& m) {
+  std::size_t nv = 0, nf = 0;
+  const char* p = text.data();
+  const char* const end = p + text.size();
+  while (p < end) {
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+    if (end - p >= 2 && (p[1] == ' ' || p[1] == '\t')) {
+      nv += p[0] == 'v';
+      nf += p[0] == 'f';
+    }
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    if (nl == nullptr) break;
+    p = static_cast<const char*>(nl) + 1;
+  }
+  m.vertices.reserve(nv);
+  m.face_offsets.reserve(nf + 1);
+  m.face_indices.reserve(3 * nf);
+}
+
 }  // namespace
 
 template <Real T>
@@ -47,12 +71,14 @@ Parsed<T> read_obj(std::string_view text) {
   PolygonMesh<T>& m = p.mesh;
   std::uint64_t vt_count = 0, vn_count = 0;
   IndexCheck check_v, check_vt, check_vn;
+  reserve_for(text, m);
   LineReader lines(text);
   std::string_view raw;
+  const std::size_t first_nul = text.find('\0');  // found once; its line is the error
   while (lines.next(raw)) {
     const std::size_t ln = lines.line_number();
     const std::size_t at = lines.line_start();
-    if (raw.find('\0') != std::string_view::npos) {
+    if (first_nul != std::string_view::npos && first_nul < at + raw.size()) {
       p.fail(Status::parse_error, ln, at, "NUL byte: not a text file");
       return p;
     }

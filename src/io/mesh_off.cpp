@@ -17,11 +17,13 @@ Parsed<T> read_off(std::string_view text) {
   LineReader lines(text);
   std::string_view line;
   bool nul = false;
+  // The first NUL byte, found once (a line holding it is an error).
+  const std::size_t first_nul = text.find('\0');
   // The next line with content, comments removed.
   const auto next_content = [&]() {
     std::string_view raw;
     while (lines.next(raw)) {
-      if (raw.find('\0') != std::string_view::npos) {
+      if (first_nul != std::string_view::npos && first_nul < lines.line_start() + raw.size()) {
         nul = true;
         return false;
       }
@@ -132,6 +134,9 @@ Parsed<T> read_off(std::string_view text) {
   }
   m.face_offsets.reserve(
       static_cast<std::size_t>(std::min<std::uint64_t>(nf, lines.remaining() / 8)) + 1);
+  // Triangles are the common case; an index takes at least 2 bytes of text.
+  m.face_indices.reserve(
+      static_cast<std::size_t>(std::min<std::uint64_t>(3 * nf, lines.remaining() / 2)));
   for (std::uint64_t f = 0; f < nf; ++f) {
     if (!next_content()) {
       eof("expected " + std::to_string(nf) + " faces, found " + std::to_string(f));

@@ -308,7 +308,12 @@ Parsed<T> read_ply(std::string_view bytes) {
       }
       const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
       if (is_vertex) m.vertices.reserve(static_cast<std::size_t>(e.count));
-      if (is_face) m.face_offsets.reserve(static_cast<std::size_t>(e.count) + 1);
+      if (is_face) {
+        m.face_offsets.reserve(static_cast<std::size_t>(e.count) + 1);
+        // Triangles are the common case; an index takes at least 2 bytes of text.
+        m.face_indices.reserve(
+            static_cast<std::size_t>(std::min<std::uint64_t>(3 * e.count, tok.remaining() / 2)));
+      }
       std::vector<int> roles;
       for (const Property& q : e.props) roles.push_back(role(e, q));
       for (std::uint64_t r = 0; r < e.count; ++r) {
@@ -401,7 +406,11 @@ Parsed<T> read_ply(std::string_view bytes) {
     }
     const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
     if (is_vertex) m.vertices.reserve(static_cast<std::size_t>(e.count));
-    if (is_face) m.face_offsets.reserve(static_cast<std::size_t>(e.count) + 1);
+    if (is_face) {
+      m.face_offsets.reserve(static_cast<std::size_t>(e.count) + 1);
+      // Triangles are the common case; an index takes at least 1 byte.
+      m.face_indices.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(3 * e.count, left)));
+    }
     std::vector<int> roles;
     for (const Property& q : e.props) roles.push_back(role(e, q));
     for (std::uint64_t r = 0; r < e.count; ++r) {

@@ -9,7 +9,7 @@
 #include <bit>
 #include <cstring>
 #include <string>
-#include <unordered_map>
+#include <vector>
 
 namespace locus::mesh_io {
 
@@ -25,34 +25,65 @@ struct Key {
 };
 
 template <Real T>
-struct KeyHash {
-  std::size_t operator()(const Key<T>& k) const noexcept {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (const auto x : k.b) {
-      h ^= static_cast<std::uint64_t>(x);
-      h *= 0xff51afd7ed558ccdull;
-      h ^= h >> 32;
-    }
-    return static_cast<std::size_t>(h);
+std::size_t hash_key(const Key<T>& k) noexcept {
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (const auto x : k.b) {
+    h ^= static_cast<std::uint64_t>(x);
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 32;
   }
-};
+  return static_cast<std::size_t>(h);
+}
 
-// Gives each distinct corner position one vertex index, in order of first appearance.
+// Gives each distinct corner position one vertex index, in order of first appearance. An
+// open-addressing table of vertex indices (linear probing, at most half full, 4 bytes a slot):
+// no allocation per vertex, and the keys are the mesh's own vertices.
 template <Real T>
 class Welder {
  public:
-  explicit Welder(PolygonMesh<T>& m, std::size_t expect) : m_(m) { map_.reserve(expect); }
+  // expect: the number of triangles; a closed mesh has about half as many vertices.
+  Welder(PolygonMesh<T>& m, std::size_t expect) : m_(m) {
+    std::size_t cap = 16;
+    while (cap < expect) cap <<= 1;
+    slots_.assign(cap, 0);
+    m_.vertices.reserve(expect / 2 + 4);
+  }
   std::uint32_t index(const Vec3<T>& v) {
-    const Key<T> k{
-        {std::bit_cast<Bits<T>>(v.x), std::bit_cast<Bits<T>>(v.y), std::bit_cast<Bits<T>>(v.z)}};
-    const auto [it, inserted] = map_.try_emplace(k, static_cast<std::uint32_t>(m_.vertices.size()));
-    if (inserted) m_.vertices.push_back(v);
-    return it->second;
+    const Key<T> k = key(v);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = hash_key(k) & mask;; i = (i + 1) & mask) {
+      const std::uint32_t s = slots_[i];
+      if (s == 0) break;
+      if (key(m_.vertices[s - 1]) == k) return s - 1;
+    }
+    const auto id = static_cast<std::uint32_t>(m_.vertices.size());
+    m_.vertices.push_back(v);
+    if (2 * m_.vertices.size() > slots_.size()) {
+      rehash(2 * slots_.size());
+    } else {
+      place(id);
+    }
+    return id;
   }
 
  private:
+  static Key<T> key(const Vec3<T>& v) noexcept {
+    return Key<T>{
+        {std::bit_cast<Bits<T>>(v.x), std::bit_cast<Bits<T>>(v.y), std::bit_cast<Bits<T>>(v.z)}};
+  }
+  void place(std::uint32_t id) noexcept {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = hash_key(key(m_.vertices[id])) & mask;
+    while (slots_[i] != 0) i = (i + 1) & mask;
+    slots_[i] = id + 1;
+  }
+  void rehash(std::size_t cap) {
+    slots_.assign(cap, 0);
+    for (std::size_t id = 0; id < m_.vertices.size(); ++id) place(static_cast<std::uint32_t>(id));
+  }
+
   PolygonMesh<T>& m_;
-  std::unordered_map<Key<T>, std::uint32_t, KeyHash<T>> map_;
+  std::vector<std::uint32_t> slots_;
 };
 
 // Little-endian 32-bit words, independent of the host's byte order.
@@ -147,7 +178,16 @@ void read_ascii(std::string_view text, Parsed<T>& p) {
     return true;
   };
   if (!expect("solid", "")) return;
-  Welder<T> weld(m, lines.remaining() / 128);
+  // A reservation hint: "facet" starts and ends each triangle (lower case, as writers spell it;
+  // other spellings only lose the hint). 'f' occurs in nothing else of a valid file but names.
+  std::size_t facets = 0;
+  for (std::size_t at = text.find("facet"); at != std::string_view::npos;
+       at = text.find("facet", at + 5)) {
+    ++facets;
+  }
+  Welder<T> weld(m, facets / 2);
+  m.face_offsets.reserve(facets / 2 + 1);
+  m.face_indices.reserve(3 * (facets / 2));
   while (true) {
     if (!next()) {
       fail("unexpected end of file: expected 'facet' or 'endsolid'");

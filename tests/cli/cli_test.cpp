@@ -1,0 +1,710 @@
+// SPDX-License-Identifier: BSL-1.0
+// End-to-end tests of the locus command (tools/locus, docs/cli.md): the built binary runs on
+// files written here into a fresh temporary directory, and its output must equal the library's
+// result on the same input, bit for bit (numbers are printed in the shortest form that reads
+// back exactly). Bad files exit 1 with one stderr line naming the file and line; usage errors
+// exit 2; --help lists the subcommands. The command works in double only, so these tests are
+// not typed; the library's float paths are tested in each area.
+
+#include <locus/bounding/min_box3.hpp>
+#include <locus/bounding/min_circle.hpp>
+#include <locus/bounding/min_rect2.hpp>
+#include <locus/bounding/min_sphere.hpp>
+#include <locus/delaunay/constrained_delaunay2.hpp>
+#include <locus/delaunay/delaunay2.hpp>
+#include <locus/delaunay/delaunay3.hpp>
+#include <locus/distance/point_mesh.hpp>
+#include <locus/fit/circle_fit.hpp>
+#include <locus/fit/line_fit.hpp>
+#include <locus/fit/plane_fit.hpp>
+#include <locus/fit/sphere_fit.hpp>
+#include <locus/hull/hull2.hpp>
+#include <locus/hull/hull3.hpp>
+#include <locus/io/geojson.hpp>
+#include <locus/io/mesh_io.hpp>
+#include <locus/io/point_list.hpp>
+#include <locus/io/wkt.hpp>
+#include <locus/numeric/roots.hpp>
+#include <locus/triangulate/ear_clipping.hpp>
+#include <locus/triangulate/monotone.hpp>
+
+#include "support/typed.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using locus::Status;
+using locus::Vec2d;
+using locus::Vec3d;
+
+struct Outcome {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void spit(const fs::path& p, const std::string& s) {
+  std::ofstream out(p, std::ios::binary);
+  out << s;
+}
+
+// A fresh directory per test, removed at the end.
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+#ifndef LOCUS_CLI_PATH
+    GTEST_SKIP() << "the locus tool is not built (LOCUS_BUILD_TOOLS=OFF)";
+#endif
+    static std::atomic<int> counter{0};
+    dir_ = fs::temp_directory_path() /
+           ("locus_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    if (!dir_.empty()) fs::remove_all(dir_, ec);
+  }
+
+  [[nodiscard]] std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Runs `locus <args>` (args are shell words; paths here have no spaces), optionally with a
+  // file on standard input.
+  Outcome run(const std::string& args, const std::string& stdin_file = {}) const {
+    Outcome r;
+#ifdef LOCUS_CLI_PATH
+    const std::string out = path("stdout.txt"), err = path("stderr.txt");
+    std::string cmd =
+        std::string("'") + LOCUS_CLI_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
+    if (!stdin_file.empty()) cmd += " <'" + stdin_file + "'";
+    const int s = std::system(cmd.c_str());
+    r.code = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+#else
+    (void)args;
+    (void)stdin_file;
+#endif
+    return r;
+  }
+
+  template <int N>
+  std::string write_points(const std::string& name, const std::vector<locus::Vec<double, N>>& p) {
+    const std::string f = path(name);
+    EXPECT_EQ((locus::write_points<double, N>(f, p).status), Status::ok);
+    return f;
+  }
+
+  fs::path dir_;
+};
+
+double to_double(const std::string& s) {
+  double v = 0;
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  EXPECT_TRUE(r.ec == std::errc() && r.ptr == s.data() + s.size()) << "not a number: " << s;
+  return v;
+}
+
+std::vector<std::string> words(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> w;
+  for (std::string s; in >> s;) w.push_back(s);
+  return w;
+}
+
+// "key v1 v2 ..." lines.
+std::map<std::string, std::vector<std::string>> fields(const std::string& text) {
+  std::map<std::string, std::vector<std::string>> m;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    auto w = words(line);
+    if (w.empty()) continue;
+    const std::string key = w.front();
+    w.erase(w.begin());
+    m[key] = w;
+  }
+  return m;
+}
+
+template <int N>
+locus::Vec<double, N> vec_field(const std::map<std::string, std::vector<std::string>>& f,
+                                const std::string& key) {
+  locus::Vec<double, N> v{};
+  const auto it = f.find(key);
+  EXPECT_TRUE(it != f.end() && it->second.size() == std::size_t(N)) << key;
+  if (it == f.end() || it->second.size() != std::size_t(N)) return v;
+  for (int i = 0; i < N; ++i) v[i] = to_double(it->second[std::size_t(i)]);
+  return v;
+}
+
+double num_field(const std::map<std::string, std::vector<std::string>>& f, const std::string& key) {
+  const auto it = f.find(key);
+  EXPECT_TRUE(it != f.end() && it->second.size() == 1u) << key;
+  return it == f.end() || it->second.empty() ? 0.0 : to_double(it->second[0]);
+}
+
+std::string shortest(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+template <int N>
+bool same(const locus::Vec<double, N>& a, const locus::Vec<double, N>& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// Rows of unsigned integers, one per line ('#' lines skipped).
+template <std::size_t K>
+std::vector<std::array<std::uint32_t, K>> index_rows(const std::string& text) {
+  std::vector<std::array<std::uint32_t, K>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const auto w = words(line);
+    EXPECT_EQ(w.size(), K) << line;
+    std::array<std::uint32_t, K> r{};
+    for (std::size_t k = 0; k < K && k < w.size(); ++k) r[k] = std::uint32_t(std::stoul(w[k]));
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+std::vector<std::uint32_t> support_of(const std::map<std::string, std::vector<std::string>>& f) {
+  std::vector<std::uint32_t> s;
+  if (f.count("support")) {
+    for (const auto& w : f.at("support")) s.push_back(std::uint32_t(std::stoul(w)));
+  }
+  return s;
+}
+
+std::vector<Vec2d> random_points2(locus_test::Rng& rng, int n) {
+  std::vector<Vec2d> p;
+  for (int i = 0; i < n; ++i) p.push_back(rng.vec<double, 2>(-10.0, 10.0));
+  p.push_back(p[3]);  // a duplicate
+  return p;
+}
+
+std::vector<Vec3d> random_points3(locus_test::Rng& rng, int n) {
+  std::vector<Vec3d> p;
+  for (int i = 0; i < n; ++i) p.push_back(rng.vec<double, 3>(-10.0, 10.0));
+  return p;
+}
+
+const char* const cube_obj =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+TEST_F(Cli, HelpListsEverySubcommandWithAnExample) {
+  const Outcome r = run("--help");
+  EXPECT_EQ(r.code, 0);
+  const char* const subs[] = {"hull",      "hull3",     "delaunay", "delaunay3",
+                              "mincircle", "minsphere", "minrect",  "minbox",
+                              "distance",  "roots",     "fit",      "mesh"};
+  for (const char* s : subs) {
+    EXPECT_NE(r.out.find(std::string("  ") + s + " "), std::string::npos) << s;
+    const Outcome h = run(std::string(s) + " --help");
+    EXPECT_EQ(h.code, 0) << s;
+    EXPECT_NE(h.out.find("Example:"), std::string::npos) << s;
+  }
+  for (const char* s : {"info", "check", "convert"}) {
+    const Outcome h = run(std::string("mesh ") + s + " --help");
+    EXPECT_EQ(h.code, 0) << s;
+    EXPECT_NE(h.out.find("Example:"), std::string::npos) << s;
+  }
+  EXPECT_EQ(run("--version").code, 0);
+}
+
+TEST_F(Cli, UsageErrorsExitWith2) {
+  const std::string pts = write_points<2>("p.csv", {{0, 0}, {1, 0}, {0, 1}});
+  spit(path("p.dat"), "0,0\n1,0\n0,1\n");
+  spit(path("c.xyz"), "0 0 0\n1 0 0\n0 1 0\n");
+  const std::string cases[] = {"",
+                               "nonsense",
+                               "hull",
+                               "hull " + pts + " --no-such-option",
+                               "hull " + path("p.dat"),
+                               "hull " + pts + " --format bogus",
+                               "hull " + path("c.xyz"),
+                               "hull " + pts + " -o " + path("out.xyz"),
+                               "fit cone " + pts,
+                               "fit plane " + pts + " --svg " + path("f.svg"),
+                               "roots",
+                               "roots 1 abc",
+                               "roots 1 0 -1 --interval 2 1",
+                               "mesh",
+                               "cdt " + pts,
+                               "triangulate " + pts + " --method nope",
+                               "mesh convert " + path("a.obj"),
+                               "mesh convert " + path("a.obj") + " " + path("b.obj") + " --to x"};
+  for (const std::string& args : cases) {
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 2) << "locus " << args << "\n" << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+}
+
+// One line on stderr: "locus: <file>:<line>: <reason>" (line 0: "locus: <file>: <reason>").
+void expect_bad_input(const Outcome& r, const std::string& file, int line,
+                      const std::string& reason) {
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  // "file:line: " for point lists and meshes, "file:line:column: " for WKT and GeoJSON.
+  const std::string where = "locus: " + file + (line > 0 ? ":" + std::to_string(line) : "");
+  EXPECT_EQ(r.err.rfind(where, 0), 0u) << r.err;
+  EXPECT_EQ(r.err.substr(where.size(), 1), ":") << r.err;
+  EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.back(), '\n');
+}
+
+TEST_F(Cli, BadFilesExitWith1NamingFileAndLine) {
+  const std::string bad = path("bad.csv");
+  spit(bad, "x,y\n0,0\n1,1\n2,abc\n3,3\n");
+  for (const char* cmd : {"hull", "delaunay", "mincircle", "minrect", "fit line"}) {
+    expect_bad_input(run(std::string(cmd) + " " + bad), bad, 4, "bad number 'abc' in field 2");
+  }
+  expect_bad_input(run("hull -", bad), "<stdin>", 4, "bad number 'abc'");
+  const std::string nan = path("nan.xyz");
+  spit(nan, "0 0 0\n1 nan 0\n");
+  for (const char* cmd : {"hull3", "delaunay3", "minsphere", "minbox", "fit plane"}) {
+    expect_bad_input(run(std::string(cmd) + " " + nan), nan, 2, "non-finite coordinate 'nan'");
+  }
+  const std::string three = path("three.csv");
+  spit(three, "1,2,3\n");
+  expect_bad_input(run("hull " + three), three, 1, "expected 2 fields, found 3");
+  const std::string obj = path("bad.obj");
+  spit(obj, "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
+  expect_bad_input(run("mesh info " + obj), obj, 3, "index");
+  expect_bad_input(run("mesh check " + obj), obj, 3, "index");
+  expect_bad_input(run("hull3 " + obj), obj, 3, "index");
+  const std::string pts = write_points<3>("q.csv", {{0, 0, 0}});
+  expect_bad_input(run("distance " + pts + " --mesh " + obj), obj, 3, "index");
+  // Files that cannot be read, and input the algorithm refuses.
+  expect_bad_input(run("hull " + path("missing.csv")), path("missing.csv"), 0, "cannot read");
+  const std::string empty = path("empty.csv");
+  spit(empty, "x,y\n");
+  expect_bad_input(run("hull " + empty), empty, 0, "empty_input");
+  const std::string open = path("open.obj");
+  spit(open, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  expect_bad_input(run("distance " + pts + " --mesh " + open + " --signed"), open, 0, "not closed");
+  const Outcome zero = run("roots -- 0 0");  // the zero polynomial: no file to name
+  EXPECT_EQ(zero.code, 1);
+  EXPECT_EQ(std::count(zero.err.begin(), zero.err.end(), '\n'), 1) << zero.err;
+}
+
+TEST_F(Cli, HullMatchesTheLibrary) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const auto pts = random_points2(rng, 300);
+  const std::string f = write_points<2>("pts.csv", pts);
+  const auto lib = locus::convex_hull(pts);
+  ASSERT_EQ(lib.status, Status::ok);
+  Outcome r = run("hull " + f + " --indices");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::uint32_t> idx;
+  for (const auto& row : index_rows<1>(r.out)) idx.push_back(row[0]);
+  EXPECT_EQ(idx, lib.indices);
+  // The default output is the hull's points as CSV, the same bits; also from stdin and to -o.
+  std::vector<Vec2d> expected;
+  for (const std::uint32_t i : lib.indices) expected.push_back(pts[i]);
+  for (const Outcome& q : {run("hull " + f), run("hull - --format csv", f)}) {
+    ASSERT_EQ(q.code, 0) << q.err;
+    const auto back = locus::parse_points<double, 2>(q.out, locus::PointListFormat::csv);
+    ASSERT_EQ(back.status, Status::ok) << back.message;
+    ASSERT_EQ(back.points.size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i)
+      EXPECT_TRUE(same<2>(back.points[i], expected[i]));
+  }
+  r = run("hull " + f + " -o " + path("hull.csv") + " --json --svg " + path("hull.svg"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto file = locus::read_points<double, 2>(path("hull.csv"));
+  ASSERT_EQ(file.status, Status::ok);
+  EXPECT_EQ(file.points.size(), expected.size());
+  EXPECT_EQ(r.out.rfind("{\"command\": \"hull\"", 0), 0u) << r.out;
+  std::string json_idx;
+  for (std::size_t i = 0; i < lib.indices.size(); ++i) {
+    json_idx += (i ? "," : "") + std::to_string(lib.indices[i]);
+  }
+  EXPECT_NE(r.out.find("\"indices\": [" + json_idx + "]"), std::string::npos) << r.out;
+  EXPECT_NE(slurp(path("hull.svg")).find("<svg"), std::string::npos);
+  // --collinear keeps the points inside hull edges.
+  const std::string sq = write_points<2>("sq.csv", {{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}});
+  EXPECT_EQ(index_rows<1>(run("hull " + sq + " --indices").out).size(), 4u);
+  EXPECT_EQ(index_rows<1>(run("hull " + sq + " --indices --collinear").out).size(), 5u);
+}
+
+TEST_F(Cli, Hull3AndDelaunayMatchTheLibrary) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const auto p3 = random_points3(rng, 200);
+  const std::string f3 = write_points<3>("p3.xyz", p3);
+  const auto h = locus::convex_hull(p3);
+  ASSERT_EQ(h.dimension, 3);
+  Outcome r = run("hull3 " + f3);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(index_rows<3>(r.out), h.triangles);
+  // As a mesh file: each face's corners are the input points of the library's triangle.
+  r = run("hull3 " + f3 + " -o " + path("hull.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto mesh = locus::read_mesh<double>(path("hull.ply"));
+  ASSERT_EQ(mesh.status, Status::ok) << mesh.message;
+  ASSERT_EQ(locus::face_count(mesh.mesh), h.triangles.size());
+  EXPECT_EQ(mesh.mesh.vertices.size(), h.vertices.size());
+  for (std::size_t t = 0; t < h.triangles.size(); ++t) {
+    const auto face = locus::face(mesh.mesh, t);
+    for (std::size_t k = 0; k < 3; ++k) {
+      EXPECT_TRUE(same<3>(mesh.mesh.vertices[face[k]], p3[h.triangles[t][k]]));
+    }
+  }
+  const auto d3 = locus::delaunay(std::span<const Vec3d>(p3));
+  r = run("delaunay3 " + f3);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(index_rows<4>(r.out), d3.tetrahedra);
+
+  const auto p2 = random_points2(rng, 200);
+  const std::string f2 = write_points<2>("p2.csv", p2);
+  const auto d2 = locus::delaunay(p2);
+  r = run("delaunay " + f2 + " --svg " + path("d.svg"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(index_rows<3>(r.out), d2.triangles);
+  EXPECT_NE(slurp(path("d.svg")).find("<svg"), std::string::npos);
+  r = run("delaunay " + f2 + " -o " + path("d.obj"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto dm = locus::read_mesh<double>(path("d.obj"));
+  ASSERT_EQ(dm.status, Status::ok);
+  EXPECT_EQ(locus::face_count(dm.mesh), d2.triangles.size());
+  EXPECT_EQ(dm.mesh.vertices.size(), p2.size() - d2.duplicate_count);
+}
+
+TEST_F(Cli, BoundingShapesMatchTheLibraryBitForBit) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const auto p2 = random_points2(rng, 500);
+  const std::string f2 = write_points<2>("p2.csv", p2);
+  const auto c = locus::min_circle(p2);
+  Outcome r = run("mincircle " + f2 + " --svg " + path("c.svg"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto f = fields(r.out);
+  EXPECT_TRUE(same<2>(vec_field<2>(f, "center"), c.circle.center));
+  EXPECT_TRUE(same(num_field(f, "radius"), c.circle.radius));
+  EXPECT_EQ(support_of(f),
+            std::vector<std::uint32_t>(c.support.begin(), c.support.begin() + c.support_count));
+  EXPECT_NE(slurp(path("c.svg")).find("<circle"), std::string::npos);
+
+  for (const bool perimeter : {false, true}) {
+    const auto m = locus::min_rect(
+        p2, perimeter ? locus::RectCriterion::perimeter : locus::RectCriterion::area);
+    r = run("minrect " + f2 + (perimeter ? " --perimeter" : ""));
+    ASSERT_EQ(r.code, 0) << r.err;
+    f = fields(r.out);
+    EXPECT_TRUE(same<2>(vec_field<2>(f, "center"), m.rectangle.center));
+    EXPECT_TRUE(same<2>(vec_field<2>(f, "axis0"), m.rectangle.axis[0]));
+    EXPECT_TRUE(same<2>(vec_field<2>(f, "axis1"), m.rectangle.axis[1]));
+    EXPECT_TRUE(same<2>(vec_field<2>(f, "extent"), m.rectangle.extent));
+    EXPECT_TRUE(same(num_field(f, "area"), m.area));
+    EXPECT_TRUE(same(num_field(f, "perimeter"), m.perimeter));
+  }
+
+  const auto p3 = random_points3(rng, 300);
+  const std::string f3 = write_points<3>("p3.csv", p3);
+  const auto s = locus::min_sphere(p3);
+  r = run("minsphere " + f3);
+  ASSERT_EQ(r.code, 0) << r.err;
+  f = fields(r.out);
+  EXPECT_TRUE(same<3>(vec_field<3>(f, "center"), s.sphere.center));
+  EXPECT_TRUE(same(num_field(f, "radius"), s.sphere.radius));
+  EXPECT_EQ(support_of(f),
+            std::vector<std::uint32_t>(s.support.begin(), s.support.begin() + s.support_count));
+  const auto b = locus::min_box(p3);
+  r = run("minbox " + f3 + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"volume\": " + shortest(b.volume)), std::string::npos) << r.out;
+  r = run("minbox " + f3);
+  f = fields(r.out);
+  EXPECT_TRUE(same<3>(vec_field<3>(f, "center"), b.box.center));
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(same<3>(vec_field<3>(f, "axis" + std::to_string(i)), b.box.axis[i]));
+  }
+  EXPECT_TRUE(same<3>(vec_field<3>(f, "extent"), b.box.extent));
+  EXPECT_TRUE(same(num_field(f, "volume"), b.volume));
+}
+
+TEST_F(Cli, RootsAndFitsMatchTheLibrary) {
+  // (x - 1)(x - 2)(x - 3) highest first; the same constant term first; a triple root.
+  const std::vector<double> c = {-6, 11, -6, 1};
+  const auto lib = locus::real_roots(std::span<const double>(c));
+  ASSERT_EQ(lib.roots.size(), 3u);
+  for (const std::string& args :
+       {std::string("roots 1 -6 11 -6"), std::string("roots --low-first -- -6 11 -6 1")}) {
+    const Outcome r = run(args);
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::istringstream in(r.out);
+    for (const auto& root : lib.roots) {
+      std::string v;
+      int m = 0;
+      in >> v >> m;
+      EXPECT_TRUE(same(to_double(v), root.value)) << v;
+      EXPECT_EQ(m, root.multiplicity);
+    }
+  }
+  const Outcome t = run("roots -- -1 3 -3 1");
+  EXPECT_EQ(t.out, "1 3\n");
+  EXPECT_EQ(run("roots 1 0 1").out, "");  // no real root
+  EXPECT_EQ(run("roots 1 -6 11 -6 --interval 1.5 2.5").out, "2 1\n");
+
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  std::vector<Vec2d> arc;
+  for (int i = 0; i < 50; ++i) {
+    const double a = rng.uniform(0.0, 2.0);
+    arc.push_back({3 + 2 * std::cos(a) + rng.uniform(-0.01, 0.01), -1 + 2 * std::sin(a)});
+  }
+  const std::string fa = write_points<2>("arc.csv", arc);
+  const auto circle = locus::fit_circle(arc);
+  Outcome r = run("fit circle " + fa + " --svg " + path("fit.svg"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto f = fields(r.out);
+  EXPECT_TRUE(same<2>(vec_field<2>(f, "center"), circle.circle.center));
+  EXPECT_TRUE(same(num_field(f, "radius"), circle.circle.radius));
+  const auto line2 = locus::fit_line(std::span<const Vec2d>(arc));
+  r = run("fit line " + fa);
+  f = fields(r.out);
+  EXPECT_TRUE(same<2>(vec_field<2>(f, "origin"), line2.line.origin));
+  EXPECT_TRUE(same<2>(vec_field<2>(f, "direction"), line2.line.direction));
+
+  const auto p3 = random_points3(rng, 100);
+  const std::string f3 = write_points<3>("p3.xyz", p3);
+  const auto plane = locus::fit_plane(p3);
+  r = run("fit plane " + f3);
+  ASSERT_EQ(r.code, 0) << r.err;
+  f = fields(r.out);
+  EXPECT_TRUE(same<3>(vec_field<3>(f, "normal"), plane.plane.normal));
+  EXPECT_TRUE(same(num_field(f, "constant"), plane.plane.constant));
+  const auto line3 = locus::fit_line(std::span<const Vec3d>(p3));
+  f = fields(run("fit line " + f3).out);
+  EXPECT_TRUE(same<3>(vec_field<3>(f, "direction"), line3.line.direction));
+  const auto sphere = locus::fit_sphere_algebraic(std::span<const Vec3d>(p3));
+  f = fields(run("fit sphere " + f3 + " --algebraic").out);
+  EXPECT_TRUE(same<3>(vec_field<3>(f, "center"), sphere.sphere.center));
+  EXPECT_TRUE(same(num_field(f, "radius"), sphere.sphere.radius));
+}
+
+TEST_F(Cli, DistanceToAMeshMatchesTheLibrary) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  spit(path("cube.obj"), cube_obj);
+  const auto mesh = locus::read_mesh<double>(path("cube.obj"));
+  ASSERT_EQ(mesh.status, Status::ok);
+  const auto tris = locus::fan_triangles(mesh.mesh);
+  const locus::MeshDistanceTree<double> tree(std::span<const Vec3d>(mesh.mesh.vertices),
+                                             std::span<const std::array<std::uint32_t, 3>>(tris));
+  std::vector<Vec3d> q;
+  for (int i = 0; i < 40; ++i) q.push_back(rng.vec<double, 3>(-1.0, 2.0));
+  const std::string fq = write_points<3>("q.csv", q);
+  const Outcome r = run("distance " + fq + " --mesh " + path("cube.obj") + " --signed");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream in(r.out);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "signed_distance,x,y,z,face");
+  for (const Vec3d& p : q) {
+    ASSERT_TRUE(std::getline(in, line));
+    std::replace(line.begin(), line.end(), ',', ' ');
+    const auto w = words(line);
+    ASSERT_EQ(w.size(), 5u);
+    const auto d = locus::distance(p, tree);
+    EXPECT_TRUE(same(to_double(w[0]), locus::signed_distance(p, tree)));
+    EXPECT_TRUE(same<3>(Vec3d{to_double(w[1]), to_double(w[2]), to_double(w[3])}, d.closest[1]));
+    EXPECT_EQ(std::stoul(w[4]), d.param_b.triangle / 2);  // two fan triangles per square face
+  }
+}
+
+TEST_F(Cli, MeshConvertRoundTripsAndInfoAndCheckReport) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  locus::PolygonMesh<double> m;
+  for (int i = 0; i < 60; ++i) m.vertices.push_back(rng.vec<double, 3>(-1e3, 1e3));
+  for (int f = 0; f < 40; ++f) {
+    std::vector<std::uint32_t> face(std::size_t(rng.uniform_int(3, 7)));
+    for (auto& v : face) v = std::uint32_t(rng.uniform_int(0, 59));
+    locus::add_face(m, std::span<const std::uint32_t>(face));
+  }
+  ASSERT_EQ(locus::write_mesh(path("a.obj"), m).status, Status::ok);
+  ASSERT_EQ(run("mesh convert " + path("a.obj") + " " + path("b.ply")).code, 0);
+  ASSERT_EQ(run("mesh convert " + path("b.ply") + " " + path("c.obj")).code, 0);
+  ASSERT_EQ(run("mesh convert " + path("c.obj") + " " + path("d.txt") + " --to ply-ascii").code, 0);
+  for (const char* name : {"b.ply", "c.obj"}) {
+    const auto back = locus::read_mesh<double>(path(name));
+    ASSERT_EQ(back.status, Status::ok) << back.message;
+    ASSERT_EQ(back.mesh.vertices.size(), m.vertices.size());
+    for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+      EXPECT_TRUE(same<3>(back.mesh.vertices[i], m.vertices[i]));
+    }
+    EXPECT_EQ(back.mesh.face_offsets, m.face_offsets);
+    EXPECT_EQ(back.mesh.face_indices, m.face_indices);
+  }
+  const auto ascii = locus::read_mesh<double>(path("d.txt"), locus::MeshFormat::ply);
+  ASSERT_EQ(ascii.status, Status::ok);
+  EXPECT_NE(slurp(path("d.txt")).find("format ascii 1.0"), std::string::npos);
+
+  spit(path("cube.obj"), cube_obj);
+  auto f = fields(run("mesh info " + path("cube.obj")).out);
+  EXPECT_EQ(f["vertices"], std::vector<std::string>{"8"});
+  EXPECT_EQ(f["faces"], std::vector<std::string>{"6"});
+  EXPECT_EQ(f["triangles"], std::vector<std::string>{"12"});
+  EXPECT_EQ(f["bbox_max"], (std::vector<std::string>{"1", "1", "1"}));
+  f = fields(run("mesh check " + path("cube.obj")).out);
+  EXPECT_EQ(f["closed"], std::vector<std::string>{"yes"});
+  EXPECT_EQ(f["clean"], std::vector<std::string>{"yes"});
+  EXPECT_EQ(f["euler_characteristic"], std::vector<std::string>{"2"});
+  EXPECT_EQ(f["edges"], std::vector<std::string>{"12"});
+  // Defects made on purpose: a missing face (4 boundary edges), a flipped face (its 4 edges
+  // disagree with the neighbours), a repeated face (its edges used 3 times), an extra vertex.
+  const std::string open = std::string(cube_obj).substr(0, std::string(cube_obj).rfind("f 4"));
+  spit(path("open.obj"), open);
+  f = fields(run("mesh check " + path("open.obj")).out);
+  EXPECT_EQ(f["boundary_edges"], std::vector<std::string>{"4"});
+  EXPECT_EQ(f["closed"], std::vector<std::string>{"no"});
+  EXPECT_EQ(f["clean"], std::vector<std::string>{"yes"});
+  spit(path("flip.obj"), open + "f 8 5 1 4\n");
+  f = fields(run("mesh check " + path("flip.obj")).out);
+  EXPECT_EQ(f["inconsistent_edges"], std::vector<std::string>{"4"});
+  EXPECT_EQ(f["closed"], std::vector<std::string>{"yes"});
+  EXPECT_EQ(f["clean"], std::vector<std::string>{"no"});
+  spit(path("dup.obj"), std::string(cube_obj) + "f 1 4 3 2\nv 5 5 5\n");
+  f = fields(run("mesh check " + path("dup.obj")).out);
+  EXPECT_EQ(f["duplicate_faces"], std::vector<std::string>{"1"});
+  EXPECT_EQ(f["non_manifold_edges"], std::vector<std::string>{"4"});
+  EXPECT_EQ(f["unreferenced_vertices"], std::vector<std::string>{"1"});
+  spit(path("degen.obj"), std::string(cube_obj) + "f 1 2 1\n");
+  f = fields(run("mesh check " + path("degen.obj")).out);
+  EXPECT_EQ(f["degenerate_faces"], std::vector<std::string>{"1"});
+}
+
+// A random star-shaped polygon around the origin with a square hole, and a triangle beside it.
+locus::Geometry2<double> random_multipolygon(locus_test::Rng& rng) {
+  locus::Geometry2<double> g;
+  g.type = locus::GeometryType::multi_polygon;
+  locus::RingPolygon2<double> star;
+  const int n = 40;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.14159265358979 * (i + rng.uniform(0.0, 0.8)) / n;
+    const double r = rng.uniform(2.0, 5.0);
+    star.points.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  star.ring_ends.push_back(std::uint32_t(star.points.size()));
+  for (const Vec2d& p : {Vec2d{-1, -1}, Vec2d{-1, 1}, Vec2d{1, 1}, Vec2d{1, -1}}) {
+    star.points.push_back(p);
+  }
+  star.ring_ends.push_back(std::uint32_t(star.points.size()));
+  g.polygons.push_back(star);
+  locus::RingPolygon2<double> tri;
+  tri.points = {{10, 0}, {12, 0}, {11, rng.uniform(1.0, 3.0)}};
+  tri.ring_ends = {3};
+  g.polygons.push_back(tri);
+  return g;
+}
+
+TEST_F(Cli, PolygonTriangulationsMatchTheLibrary) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const auto g = random_multipolygon(rng);
+  const auto wkt = locus::write_wkt_string(g);
+  ASSERT_EQ(wkt.status, Status::ok) << wkt.message;
+  spit(path("poly.wkt"), wkt.data + "\n");
+  const auto json = locus::write_geojson_string(g);
+  ASSERT_EQ(json.status, Status::ok) << json.message;
+  spit(path("poly.geojson"), json.data);
+  // The points as the files hold them (read back by the library's own reader).
+  const auto read = locus::parse_wkt<double>(wkt.data);
+  ASSERT_EQ(read.status, Status::ok);
+  std::vector<Vec2d> pts;
+  std::vector<std::uint32_t> ends;
+  for (const auto& p : read.geometries.at(0).polygons) {
+    const auto base = std::uint32_t(pts.size());
+    pts.insert(pts.end(), p.points.begin(), p.points.end());
+    for (const std::uint32_t e : p.ring_ends) ends.push_back(base + e);
+  }
+  // cdt: every ring at once, the triangles inside.
+  const auto cdt =
+      locus::triangulate_polygon(std::span<const Vec2d>(pts), std::span<const std::uint32_t>(ends));
+  ASSERT_EQ(cdt.status, Status::ok);
+  std::vector<std::array<std::uint32_t, 3>> inside;
+  for (std::size_t t = 0; t < cdt.triangles.size(); ++t) {
+    if (cdt.inside[t]) inside.push_back(cdt.triangles[t]);
+  }
+  for (const char* file : {"poly.wkt", "poly.geojson"}) {
+    const Outcome r = run(std::string("cdt ") + path(file));
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(index_rows<3>(r.out), inside) << file;
+  }
+  EXPECT_EQ(index_rows<3>(run("cdt " + path("poly.wkt") + " --all").out), cdt.triangles);
+  // triangulate: each polygon on its own, indices offset by the polygon's first point.
+  for (const std::string method : {"ear", "monotone"}) {
+    std::vector<std::array<std::uint32_t, 3>> expected;
+    std::uint32_t base = 0;
+    for (const auto& p : read.geometries.at(0).polygons) {
+      const auto t =
+          method == "ear"
+              ? locus::triangulate_ear_clipping(std::span<const Vec2d>(p.points),
+                                                std::span<const std::uint32_t>(p.ring_ends))
+              : locus::triangulate_monotone(std::span<const Vec2d>(p.points),
+                                            std::span<const std::uint32_t>(p.ring_ends));
+      ASSERT_EQ(t.status, Status::ok);
+      for (const auto& tri : t.triangles) {
+        expected.push_back({base + tri[0], base + tri[1], base + tri[2]});
+      }
+      base += std::uint32_t(p.points.size());
+    }
+    const Outcome r =
+        run("triangulate - --format geojson --method " + method + " --svg " + path("t.svg"),
+            path("poly.geojson"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(index_rows<3>(r.out), expected) << method;
+    EXPECT_NE(slurp(path("t.svg")).find("<svg"), std::string::npos);
+  }
+  const Outcome m = run("triangulate " + path("poly.wkt") + " -o " + path("poly.off"));
+  ASSERT_EQ(m.code, 0) << m.err;
+  const auto mesh = locus::read_mesh<double>(path("poly.off"));
+  ASSERT_EQ(mesh.status, Status::ok);
+  EXPECT_EQ(mesh.mesh.vertices.size(), pts.size());
+  // Bad files: the reader's line and column; crossing rings refused.
+  const std::string bad = path("bad.wkt");
+  spit(bad, "POLYGON ((0 0, 1 0, 1 1, 0 0))\nPOLYGON ((0 0, 1 0, 1 x, 0 0))\n");
+  for (const char* cmd : {"cdt ", "triangulate "}) {
+    const Outcome r = run(cmd + bad);
+    expect_bad_input(r, bad, 2, "");
+    EXPECT_EQ(r.err.rfind("locus: " + bad + ":2:", 0), 0u) << r.err;
+  }
+  const std::string bow = path("bow.wkt");
+  spit(bow, "POLYGON ((0 0, 4 4, 4 0, 0 4, 0 0))\n");
+  expect_bad_input(run("cdt " + bow), bow, 0, "cross");
+  expect_bad_input(run("triangulate " + bow), bow, 0, "invalid_topology");
+  const std::string points_only = path("points.wkt");
+  spit(points_only, "MULTIPOINT ((0 0), (1 1))\n");
+  expect_bad_input(run("cdt " + points_only), points_only, 0, "no polygon");
+}
+
+}  // namespace

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The subcommands of the locus command, one registration function per family (cmd_*.cpp).
+// A later area adds its family here and in main.cpp (docs/cli.md).
+
+#include <CLI/CLI.hpp>
+
+namespace locus_cli {
+
+void register_hull(CLI::App& app);      // hull, hull3 (cmd_hull.cpp)
+void register_delaunay(CLI::App& app);  // delaunay, delaunay3 (cmd_delaunay.cpp)
+void register_polygon(CLI::App& app);   // cdt, triangulate (cmd_polygon.cpp)
+void register_bounding(CLI::App& app);  // mincircle, minsphere, minrect, minbox (cmd_bounding.cpp)
+void register_distance(CLI::App& app);  // distance (cmd_distance.cpp)
+void register_numeric(CLI::App& app);   // roots, fit (cmd_numeric.cpp)
+void register_mesh(CLI::App& app);      // mesh info|check|convert (cmd_mesh.cpp)
+
+}  // namespace locus_cli
