@@ -34,7 +34,7 @@ template <Real T>
 template <Real T>
 [[nodiscard]] inline LinearPlanarIntersection<T> intersection(const Line3<T>& a,
                                                               const Disk3<T>& d) noexcept {
-  return detail::planar3::cast<T>(detail::planar3::disk<true>(detail::linear3::as_lin(a), d));
+  return intersection_cast<T>(detail::planar3::disk<true>(detail::linear3::as_lin(a), d));
 }
 
 /// Swapped arguments: intersects(a, d).

@@ -44,7 +44,7 @@ template <Real T>
 [[nodiscard]] inline LinearTriangleIntersection<T> intersection(const Line3<T>& a,
                                                                 const Triangle3<T>& t) noexcept {
   namespace l3 = detail::linear3;
-  return l3::cast_tri<T>(l3::triangle<true>(l3::as_lin(a), l3::as_tri(t)));
+  return intersection_cast<T>(l3::triangle<true>(l3::as_lin(a), l3::as_tri(t)));
 }
 
 /// The watertight hit of a line on a triangle of a mesh (see the header comment).

@@ -148,16 +148,6 @@ using R = Intersection<double, 3, NoParam, NoParam, 3>;
   return {};
 }
 
-template <Real T>
-[[nodiscard]] inline PlanesIntersection<T> cast(const R& r) noexcept {
-  PlanesIntersection<T> o;
-  o.kind = r.kind;
-  o.count = r.count;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(r.count); ++i)
-    o.point[i] = vec_cast<T>(r.point[i]);
-  return o;
-}
-
 }  // namespace detail::planes
 
 /// Whether two planes meet (exact: not parallel, or coincident).
@@ -174,7 +164,7 @@ template <Real T>
 [[nodiscard]] inline PlanesIntersection<T> intersection(const Plane3<T>& a,
                                                         const Plane3<T>& b) noexcept {
   namespace d = detail::planes;
-  return d::cast<T>(d::two(d::as_plane(a), d::as_plane(b)));
+  return intersection_cast<T>(d::two(d::as_plane(a), d::as_plane(b)));
 }
 
 /// Whether three planes have a common point (exact).
@@ -190,7 +180,7 @@ template <Real T>
 [[nodiscard]] inline PlanesIntersection<T> intersection(const Plane3<T>& a, const Plane3<T>& b,
                                                         const Plane3<T>& c) noexcept {
   namespace d = detail::planes;
-  return d::cast<T>(d::three(d::as_plane(a), d::as_plane(b), d::as_plane(c)));
+  return intersection_cast<T>(d::three(d::as_plane(a), d::as_plane(b), d::as_plane(c)));
 }
 
 }  // namespace locus

@@ -40,7 +40,7 @@ template <Real T>
 [[nodiscard]] inline LinearBoxIntersection<T> intersection(const Ray3<T>& a,
                                                            const AlignedBox3<T>& b) noexcept {
   namespace bx = detail::box3;
-  return bx::cast<T>(bx::aligned(detail::linear3::as_lin(a), b, true));
+  return intersection_cast<T>(bx::aligned(detail::linear3::as_lin(a), b, true));
 }
 
 /// Swapped arguments: intersects(a, b).

@@ -42,7 +42,7 @@ template <Real T>
 [[nodiscard]] inline LinearBoxIntersection<T> intersection(const Ray3<T>& a,
                                                            const OrientedBox3<T>& b) noexcept {
   namespace bx = detail::box3;
-  return bx::cast<T>(bx::oriented(detail::linear3::as_lin(a), b, true));
+  return intersection_cast<T>(bx::oriented(detail::linear3::as_lin(a), b, true));
 }
 
 /// Swapped arguments: intersects(a, b).

@@ -33,6 +33,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -73,6 +74,52 @@ struct Intersection {
   /// True when the arguments meet (kind != empty).
   [[nodiscard]] constexpr explicit operator bool() const noexcept { return kind != Kind::empty; }
 };
+
+namespace detail {
+/// A parameter type with its scalar replaced by U (tags such as NoParam stay as they are).
+template <class P, class U>
+struct RebindParam {
+  using type = P;
+};
+template <Real S, class U>
+requires std::is_arithmetic_v<S>
+struct RebindParam<S, U> {
+  using type = U;
+};
+template <class S, int K, class U>
+struct RebindParam<Vec<S, K>, U> {
+  using type = Vec<U, K>;
+};
+template <class U, class P>
+[[nodiscard]] constexpr typename RebindParam<P, U>::type cast_param(const P& p) noexcept {
+  if constexpr (std::is_arithmetic_v<P>) {
+    return static_cast<U>(p);
+  } else if constexpr (requires { vec_cast<U>(p); }) {
+    return vec_cast<U>(p);
+  } else {
+    return p;
+  }
+}
+}  // namespace detail
+
+/// The same intersection in scalar type U: every point and parameter rounded once (the
+/// queries compute in double and return the caller's T through this).
+template <Real U, class T, int N, class PA, class PB, int C>
+[[nodiscard]] constexpr Intersection<U, N, typename detail::RebindParam<PA, U>::type,
+                                     typename detail::RebindParam<PB, U>::type, C>
+intersection_cast(const Intersection<T, N, PA, PB, C>& r) noexcept {
+  Intersection<U, N, typename detail::RebindParam<PA, U>::type,
+               typename detail::RebindParam<PB, U>::type, C>
+      o;
+  o.kind = r.kind;
+  o.count = r.count;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(C); ++i) {
+    o.point[i] = vec_cast<U>(r.point[i]);
+    o.param_a[i] = detail::cast_param<U>(r.param_a[i]);
+    o.param_b[i] = detail::cast_param<U>(r.param_b[i]);
+  }
+  return o;
+}
 
 /// The same answer for the swapped query intersection(b, a): parameters exchanged.
 template <class T, int N, class PA, class PB, int C>

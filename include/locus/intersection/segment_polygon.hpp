@@ -78,7 +78,7 @@ template <Real T>
 template <Real T>
 [[nodiscard]] inline LinearPlanarIntersection<T> intersection(const Segment3<T>& a,
                                                               const PlanarPolygon3<T>& p) noexcept {
-  return detail::planar3::cast<T>(detail::planar3::polygon<true>(detail::linear3::as_lin(a), p));
+  return intersection_cast<T>(detail::planar3::polygon<true>(detail::linear3::as_lin(a), p));
 }
 
 /// Swapped arguments (3D): intersects(a, p).

@@ -140,18 +140,6 @@ template <bool Construct>
 }
 
 template <Real T>
-[[nodiscard]] inline LinearBoxIntersection<T> cast(const Result& r) noexcept {
-  LinearBoxIntersection<T> o;
-  o.kind = r.kind;
-  o.count = r.count;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(r.count); ++i) {
-    o.point[i] = vec_cast<T>(r.point[i]);
-    o.param_a[i] = static_cast<T>(r.param_a[i]);
-  }
-  return o;
-}
-
-template <Real T>
 [[nodiscard]] inline Result aligned(const Lin& l, const AlignedBox3<T>& b,
                                     bool construct) noexcept {
   return construct ? clip<true>(l, vec_cast<double>(b.min), vec_cast<double>(b.max))

@@ -136,15 +136,9 @@ template <Real T, int C>
 [[nodiscard]] constexpr CurveIntersection2<T, C> cast(
     const CurveIntersection2<double, C>& r) noexcept {
   CurveIntersection2<T, C> s;
-  s.kind = r.kind;
-  s.count = r.count;
-  for (int i = 0; i < C; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    s.point[k] = vec_cast<T>(r.point[k]);
-    s.param_a[k] = static_cast<T>(r.param_a[k]);
-    s.param_b[k] = static_cast<T>(r.param_b[k]);
-    s.multiplicity[k] = r.multiplicity[k];
-  }
+  static_cast<Intersection<T, 2, T, T, C>&>(s) =
+      intersection_cast<T>(static_cast<const Intersection<double, 2, double, double, C>&>(r));
+  s.multiplicity = r.multiplicity;
   return s;
 }
 

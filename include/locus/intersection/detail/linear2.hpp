@@ -314,25 +314,6 @@ template <bool Construct>
   return r;
 }
 
-template <Real T>
-[[nodiscard]] constexpr LinearIntersection2<T> cast(const Result& r) noexcept {
-  if constexpr (std::is_same_v<T, double>) {
-    return r;
-  } else {
-    LinearIntersection2<T> o;
-    o.kind = r.kind;
-    o.count = r.count;
-    for (int i = 0; i < r.count; ++i) {
-      o.point[static_cast<std::size_t>(i)] = vec_cast<T>(r.point[static_cast<std::size_t>(i)]);
-      o.param_a[static_cast<std::size_t>(i)] =
-          static_cast<T>(r.param_a[static_cast<std::size_t>(i)]);
-      o.param_b[static_cast<std::size_t>(i)] =
-          static_cast<T>(r.param_b[static_cast<std::size_t>(i)]);
-    }
-    return o;
-  }
-}
-
 /// intersects(a, b) for any two of Line2, Ray2, Segment2.
 template <class A, class B>
 [[nodiscard]] inline bool test(const A& a, const B& b) noexcept {
@@ -342,7 +323,7 @@ template <class A, class B>
 /// intersection(a, b) for any two of Line2, Ray2, Segment2, in T.
 template <Real T, class A, class B>
 [[nodiscard]] inline LinearIntersection2<T> find(const A& a, const B& b) noexcept {
-  return cast<T>(intersect<true>(as_lin(a), as_lin(b)));
+  return intersection_cast<T>(intersect<true>(as_lin(a), as_lin(b)));
 }
 
 }  // namespace detail::linear2

@@ -469,18 +469,5 @@ template <bool Construct>
   return r;
 }
 
-template <Real T>
-[[nodiscard]] inline LinearTriangleIntersection<T> cast_tri(const TriResult& r) noexcept {
-  LinearTriangleIntersection<T> o;
-  o.kind = r.kind;
-  o.count = r.count;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(r.count); ++i) {
-    o.point[i] = vec_cast<T>(r.point[i]);
-    o.param_a[i] = static_cast<T>(r.param_a[i]);
-    o.param_b[i] = vec_cast<T>(r.param_b[i]);
-  }
-  return o;
-}
-
 }  // namespace detail::linear3
 }  // namespace locus

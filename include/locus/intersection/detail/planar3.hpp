@@ -188,19 +188,6 @@ template <Real T>
   return true;
 }
 
-template <Real T>
-[[nodiscard]] inline LinearPlanarIntersection<T> cast(const Result& r) noexcept {
-  LinearPlanarIntersection<T> o;
-  o.kind = r.kind;
-  o.count = r.count;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(r.count); ++i) {
-    o.point[i] = vec_cast<T>(r.point[i]);
-    o.param_a[i] = static_cast<T>(r.param_a[i]);
-    o.param_b[i] = vec_cast<T>(r.param_b[i]);
-  }
-  return o;
-}
-
 template <bool Construct, Real T>
 [[nodiscard]] inline Result polygon(const Lin& l, const PlanarPolygon3<T>& p) noexcept {
   const Frame f{vec_cast<double>(p.frame.origin), vec_cast<double>(p.frame.u),
