@@ -22,6 +22,10 @@
 #include <string>
 #include <vector>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/stat.h>
+#endif
+
 namespace {
 
 using locus::MeshFormat;
@@ -215,6 +219,45 @@ TYPED_TEST(MeshIoTest, FilesByExtension) {
   const auto e = locus::read_mesh<T>(dir / "empty.obj");
   EXPECT_EQ(e.status, Status::ok) << e.message;
   EXPECT_EQ(locus::read_mesh<T>(dir / "empty.obj", MeshFormat::ply).status, Status::parse_error);
+  std::filesystem::remove_all(dir);
+}
+
+// read_mesh reads regular files only, taking the type from the open descriptor: a FIFO without
+// a writer must not block (it is opened non-blocking), a device has no length to read up to; a
+// symbolic link to a regular file is followed.
+TYPED_TEST(MeshIoTest, SpecialFilesGiveAnIoError) {
+  using T = TypeParam;
+  locus_test::Rng rng;
+  const PolygonMesh<T> m = random_mesh<T>(rng, 12, 8);
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("locus_mesh_io_special_" + std::to_string(sizeof(T)) + "_" +
+                    std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  std::filesystem::create_directories(dir);
+  const auto expect_refused = [](const std::filesystem::path& path) {
+    const auto r = locus::read_mesh<T>(path, MeshFormat::obj);
+    EXPECT_EQ(r.status, Status::io_error) << path;
+    EXPECT_EQ(r.message, path.string() + ": cannot read the file (not a regular file)");
+  };
+  if (std::filesystem::exists("/dev/null")) expect_refused("/dev/null");
+  if (std::filesystem::exists("/dev/zero")) expect_refused("/dev/zero");
+  expect_refused(dir);
+#if defined(__unix__) || defined(__APPLE__)
+  const auto fifo = dir / "fifo.obj";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expect_refused(fifo);
+#endif
+  ASSERT_EQ(locus::write_mesh(dir / "a.off", m).status, Status::ok);
+  std::error_code ec;
+  std::filesystem::create_symlink(dir / "a.off", dir / "link.off", ec);
+  if (!ec) {
+    const auto r = locus::read_mesh<T>(dir / "link.off");
+    ASSERT_EQ(r.status, Status::ok) << r.message;
+    expect_same_mesh(m, r.mesh);
+  }
+  const auto missing = locus::read_mesh<T>(dir / "missing.off");
+  EXPECT_EQ(missing.status, Status::io_error);
+  EXPECT_EQ(missing.message.rfind((dir / "missing.off").string() + ": cannot open the file", 0), 0u)
+      << missing.message;
   std::filesystem::remove_all(dir);
 }
 
