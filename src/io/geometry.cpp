@@ -157,17 +157,6 @@ template Status check_geometry(const Geometry2<double>&) noexcept;
 
 namespace geo_io {
 
-bool read_file(const std::filesystem::path& path, std::string& bytes) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec) || ec) return false;
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) return false;
-  std::ifstream in(path, std::ios::binary);
-  bytes.resize(static_cast<std::size_t>(size));
-  return in && in.read(bytes.data(), static_cast<std::streamsize>(size)) &&
-         in.gcount() == static_cast<std::streamsize>(size);
-}
-
 bool write_file(const std::filesystem::path& path, std::string_view text) {
   std::ofstream out(path, std::ios::binary);
   return out && out.write(text.data(), static_cast<std::streamsize>(text.size())) && out.flush();

@@ -90,18 +90,15 @@ const char* close_ring(std::vector<Vec2<T>>& points, std::size_t begin) {
   return nullptr;
 }
 
-/// The whole content of a file; false when it cannot be read.
-bool read_file(const std::filesystem::path& path, std::string& bytes);
-
 /// Writes text to a file; false when it cannot be written.
 bool write_file(const std::filesystem::path& path, std::string_view text);
 
 /// io_error result for an unreadable file.
 template <Real T>
-GeometryReadResult<T> unreadable(const std::filesystem::path& path) {
+GeometryReadResult<T> unreadable(const std::filesystem::path& path, std::string_view reason) {
   GeometryReadResult<T> r;
   r.status = Status::io_error;
-  r.message = path.string() + ": cannot read the file";
+  r.message = path.string() + ": " + std::string(reason);
   return r;
 }
 

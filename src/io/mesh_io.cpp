@@ -3,6 +3,7 @@
 
 #include <locus/io/mesh_io.hpp>
 
+#include "file_bytes.hpp"
 #include "mesh_detail.hpp"
 
 #include <algorithm>
@@ -16,167 +17,14 @@
 #include <string>
 #include <system_error>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#define LOCUS_MESH_IO_POSIX 1
-#endif
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 namespace locus {
 
-namespace {
-
-// The bytes of a file, read into a buffer that is not zero-filled first. The file is read as it
-// is when opened: at most the size fstat reports then; if it shrinks meanwhile, the bytes read
-// are kept (the parser then reports the truncation), and if it grows, the rest is not read. No
-// mapping, so a file truncated by another process gives short reads rather than SIGBUS.
-struct FileBytes {
-  std::unique_ptr<char[]> data;
-  std::size_t size = 0;
-  std::string error;  // empty when read
-};
-
-// A buffer of n bytes, nullptr when it cannot be allocated.
-std::unique_ptr<char[]> uninitialised_buffer(std::size_t n) noexcept {
-  try {
-    return std::make_unique_for_overwrite<char[]>(n);
-  } catch (const std::bad_alloc&) {
-    return nullptr;
-  }
-}
-
-std::string size_error(std::uintmax_t size) {
-  return "cannot allocate " + std::to_string(size) + " bytes to read the file";
-}
-
-#if defined(LOCUS_MESH_IO_POSIX)
-// The buffer's pages are first touched by read(), one page fault each; at 4 KiB a page the faults
-// cost several times the copy itself (bench/results/io.md). Transparent huge pages cut them
-// 512-fold, so the 2 MiB-aligned interior of a buffer of 4 MiB or more is advised to use them
-// (such blocks are the allocator's own mappings). Advice only: ignored where unsupported.
-void advise_huge_pages([[maybe_unused]] char* p, [[maybe_unused]] std::size_t n) noexcept {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t huge = std::uintptr_t(1) << 21;
-  if (n < 2 * huge) return;
-  const auto first = reinterpret_cast<std::uintptr_t>(p);
-  const std::uintptr_t begin = (first + huge - 1) & ~(huge - 1);
-  const std::uintptr_t end = (first + n) & ~(huge - 1);
-  if (end > begin) (void)::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#endif
-}
-
-FileBytes read_file_bytes(const std::filesystem::path& path) {
-  FileBytes out;
-  // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer. The type is taken
-  // from the open descriptor, so the file checked is the file read.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) {
-    out.error = "cannot open the file (" + std::generic_category().message(errno) + ")";
-    return out;
-  }
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) {
-    out.error = "cannot read the file (" + std::generic_category().message(errno) + ")";
-    return out;
-  }
-  // A directory, FIFO, socket or device has no length to read up to (/dev/zero has no end).
-  if (!S_ISREG(st.st_mode)) {
-    out.error = "cannot read the file (not a regular file)";
-    return out;
-  }
-  const auto size = static_cast<std::uintmax_t>(st.st_size);
-  if (st.st_size < 0 || size > std::uintmax_t(std::numeric_limits<std::ptrdiff_t>::max())) {
-    out.error = size_error(size);
-    return out;
-  }
-  const auto n = static_cast<std::size_t>(size);
-  out.data = uninitialised_buffer(n);
-  if (!out.data) {
-    out.error = size_error(size);
-    return out;
-  }
-  advise_huge_pages(out.data.get(), n);
-  // Linux moves at most 0x7ffff000 bytes a call; any call may return fewer than asked.
-  constexpr std::size_t chunk = std::size_t(1) << 30;
-  while (out.size < n) {
-    const std::size_t want = std::min(n - out.size, chunk);
-    const ::ssize_t got = ::read(fd, out.data.get() + out.size, want);
-    if (got < 0) {
-      if (errno == EINTR) continue;
-      out.error = "cannot read the file (" + std::generic_category().message(errno) + ")";
-      return out;
-    }
-    if (got == 0) break;  // the file shrank since fstat
-    out.size += static_cast<std::size_t>(got);
-  }
-  return out;
-}
-#else
-FileBytes read_file_bytes(const std::filesystem::path& path) {
-  FileBytes out;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec) || ec) {
-    out.error = "cannot read the file (missing, or not a regular file)";
-    return out;
-  }
-  std::FILE* file = std::fopen(path.string().c_str(), "rb");
-  if (file == nullptr) {
-    out.error = "cannot open the file";
-    return out;
-  }
-  struct Closer {
-    std::FILE* file;
-    ~Closer() { std::fclose(file); }
-  } closer{file};
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size > std::uintmax_t(std::numeric_limits<std::ptrdiff_t>::max())) {
-    out.error = ec ? "cannot read the file" : size_error(size);
-    return out;
-  }
-  const auto n = static_cast<std::size_t>(size);
-  out.data = uninitialised_buffer(n);
-  if (!out.data) {
-    out.error = size_error(size);
-    return out;
-  }
-  while (out.size < n) {
-    const std::size_t got = std::fread(out.data.get() + out.size, 1, n - out.size, file);
-    out.size += got;
-    if (got == 0) break;  // end of file (the file shrank) or an error, told apart below
-  }
-  if (std::ferror(file)) out.error = "cannot read the file";
-  return out;
-}
-#endif
-
-}  // namespace
-
 MeshFormat mesh_format_from_name(std::string_view name) noexcept {
-  const std::size_t dot = name.rfind('.');
-  const std::size_t sep = name.find_last_of("/\\");
-  if (dot == std::string_view::npos || (sep != std::string_view::npos && dot < sep)) {
-    return MeshFormat::from_extension;
-  }
-  const std::string_view ext = name.substr(dot + 1);
-  if (ext.size() != 3) return MeshFormat::from_extension;
-  char e[3];
-  for (int i = 0; i < 3; ++i) {
-    const char c = ext[std::size_t(i)];
-    e[i] = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
-  }
-  const std::string_view x(e, 3);
-  if (x == "obj") return MeshFormat::obj;
-  if (x == "off") return MeshFormat::off;
-  if (x == "ply") return MeshFormat::ply;
-  if (x == "stl") return MeshFormat::stl;
+  using io_detail::has_extension;
+  if (has_extension(name, "obj")) return MeshFormat::obj;
+  if (has_extension(name, "off")) return MeshFormat::off;
+  if (has_extension(name, "ply")) return MeshFormat::ply;
+  if (has_extension(name, "stl")) return MeshFormat::stl;
   return MeshFormat::from_extension;
 }
 
@@ -241,13 +89,13 @@ MeshReadResult<T> read_mesh(const std::filesystem::path& path, MeshFormat format
       return r;
     }
   }
-  const FileBytes file = read_file_bytes(path);
+  const io_detail::FileBytes file = io_detail::read_file_bytes(path);
   if (!file.error.empty()) {
     r.status = Status::io_error;
     r.message = name + ": " + file.error;
     return r;
   }
-  return parse_mesh<T>(std::string_view(file.data.get(), file.size), format, name);
+  return parse_mesh<T>(file.bytes(), format, name);
 }
 
 template <Real T>

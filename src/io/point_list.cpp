@@ -4,6 +4,7 @@
 
 #include <locus/io/point_list.hpp>
 
+#include "file_bytes.hpp"
 #include "mesh_detail.hpp"
 
 #include <array>
@@ -196,21 +197,11 @@ void append_row(std::string& out, const Vec<T, N>& p, char sep) {
 }  // namespace
 
 PointListFormat point_list_format_from_name(std::string_view name) noexcept {
-  const std::size_t dot = name.rfind('.');
-  const std::size_t sep = name.find_last_of("/\\");
-  if (dot == std::string_view::npos || (sep != std::string_view::npos && dot < sep)) {
-    return PointListFormat::from_extension;
+  using io_detail::has_extension;
+  if (has_extension(name, "csv") || has_extension(name, "txt") || has_extension(name, "tsv")) {
+    return PointListFormat::csv;
   }
-  const std::string_view ext = name.substr(dot + 1);
-  if (ext.size() != 3) return PointListFormat::from_extension;
-  char e[3];
-  for (int i = 0; i < 3; ++i) {
-    const char c = ext[std::size_t(i)];
-    e[i] = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
-  }
-  const std::string_view x(e, 3);
-  if (x == "csv" || x == "txt" || x == "tsv") return PointListFormat::csv;
-  if (x == "xyz") return PointListFormat::xyz;
+  if (has_extension(name, "xyz")) return PointListFormat::xyz;
   return PointListFormat::from_extension;
 }
 
@@ -286,23 +277,13 @@ PointListReadResult<T, N> read_points(const std::filesystem::path& path, PointLi
       return r;
     }
   }
-  std::error_code ec;
-  const bool regular = std::filesystem::is_regular_file(path, ec);
-  const std::uintmax_t size = regular ? std::filesystem::file_size(path, ec) : 0;
-  std::string bytes;
-  bool read = false;
-  if (regular && !ec) {
-    std::ifstream in(path, std::ios::binary);
-    bytes.resize(static_cast<std::size_t>(size));
-    read = in && in.read(bytes.data(), static_cast<std::streamsize>(size)) &&
-           in.gcount() == static_cast<std::streamsize>(size);
-  }
-  if (!read) {
+  const io_detail::FileBytes file = io_detail::read_file_bytes(path);
+  if (!file.error.empty()) {
     r.status = Status::io_error;
-    r.message = name + ": cannot read the file";
+    r.message = name + ": " + file.error;
     return r;
   }
-  return parse_points<T, N>(bytes, format, name);
+  return parse_points<T, N>(file.bytes(), format, name);
 }
 
 template <Real T, int N>

@@ -6,6 +6,7 @@
 
 #include <locus/io/wkt.hpp>
 
+#include "file_bytes.hpp"
 #include "geometry_detail.hpp"
 
 #include <array>
@@ -468,9 +469,9 @@ GeometryReadResult<T> parse_wkt(std::string_view text, std::string_view name) {
 
 template <Real T>
 GeometryReadResult<T> read_wkt(const std::filesystem::path& path) {
-  std::string bytes;
-  if (!geo_io::read_file(path, bytes)) return geo_io::unreadable<T>(path);
-  return parse_wkt<T>(bytes, path.string());
+  const io_detail::FileBytes file = io_detail::read_file_bytes(path);
+  if (!file.error.empty()) return geo_io::unreadable<T>(path, file.error);
+  return parse_wkt<T>(file.bytes(), path.string());
 }
 
 template <Real T>
