@@ -41,7 +41,7 @@ std::string_view trim(std::string_view s) noexcept {
 
 // The fields of one line: the first three kept, all counted (a line is never stored whole).
 struct Fields {
-  std::array<std::string_view, 3> field{};
+  std::array<std::string_view, 6> field{};  // the most any N reads (6: rays, read only)
   std::size_t count = 0;
   std::size_t first_empty = 0;  // 1-based index of the first empty field, 0 when none
 };
@@ -358,5 +358,15 @@ LOCUS_POINT_LIST_INSTANTIATE(float, 3)
 LOCUS_POINT_LIST_INSTANTIATE(double, 2)
 LOCUS_POINT_LIST_INSTANTIATE(double, 3)
 #undef LOCUS_POINT_LIST_INSTANTIATE
+
+// Six-column CSV records (rays: origin, direction; the locus raycast command): reading only.
+#define LOCUS_POINT_LIST_INSTANTIATE_READ(T, N)                                            \
+  template PointListReadResult<T, N> parse_points<T, N>(std::string_view, PointListFormat, \
+                                                        std::string_view);                 \
+  template PointListReadResult<T, N> read_points<T, N>(const std::filesystem::path&,       \
+                                                       PointListFormat);
+LOCUS_POINT_LIST_INSTANTIATE_READ(float, 6)
+LOCUS_POINT_LIST_INSTANTIATE_READ(double, 6)
+#undef LOCUS_POINT_LIST_INSTANTIATE_READ
 
 }  // namespace locus

@@ -20,10 +20,14 @@
 #include <locus/fit/sphere_fit.hpp>
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
+#include <locus/intersection/ray_triangle.hpp>
 #include <locus/io/geojson.hpp>
 #include <locus/io/mesh_io.hpp>
 #include <locus/io/point_list.hpp>
 #include <locus/io/wkt.hpp>
+#include <locus/mesh/mesh_checks.hpp>
+#include <locus/mesh/platonic.hpp>
+#include <locus/mesh/vet_mesh.hpp>
 #include <locus/numeric/roots.hpp>
 #include <locus/triangulate/ear_clipping.hpp>
 #include <locus/triangulate/monotone.hpp>
@@ -219,16 +223,16 @@ const char* const cube_obj =
 TEST_F(Cli, HelpListsEverySubcommandWithAnExample) {
   const Outcome r = run("--help");
   EXPECT_EQ(r.code, 0);
-  const char* const subs[] = {"hull",      "hull3",     "delaunay", "delaunay3",
-                              "mincircle", "minsphere", "minrect",  "minbox",
-                              "distance",  "roots",     "fit",      "mesh"};
+  const char* const subs[] = {"hull",      "hull3",   "delaunay", "delaunay3", "mincircle",
+                              "minsphere", "minrect", "minbox",   "distance",  "roots",
+                              "fit",       "mesh",    "raycast"};
   for (const char* s : subs) {
     EXPECT_NE(r.out.find(std::string("  ") + s + " "), std::string::npos) << s;
     const Outcome h = run(std::string(s) + " --help");
     EXPECT_EQ(h.code, 0) << s;
     EXPECT_NE(h.out.find("Example:"), std::string::npos) << s;
   }
-  for (const char* s : {"info", "check", "convert"}) {
+  for (const char* s : {"info", "check", "orient", "generate", "convert"}) {
     const Outcome h = run(std::string("mesh ") + s + " --help");
     EXPECT_EQ(h.code, 0) << s;
     EXPECT_NE(h.out.find("Example:"), std::string::npos) << s;
@@ -257,7 +261,17 @@ TEST_F(Cli, UsageErrorsExitWith2) {
                                "cdt " + pts,
                                "triangulate " + pts + " --method nope",
                                "mesh convert " + path("a.obj"),
-                               "mesh convert " + path("a.obj") + " " + path("b.obj") + " --to x"};
+                               "mesh convert " + path("a.obj") + " " + path("b.obj") + " --to x",
+                               "mesh generate cube",
+                               "mesh generate sphere -o " + path("s.obj"),
+                               "mesh generate icosphere --levels 9 -o " + path("s.obj"),
+                               "mesh generate uvsphere --radius -1 -o " + path("s.obj"),
+                               "mesh generate torus --minor-radius 2 -o " + path("s.obj"),
+                               "mesh generate cube -o " + path("s.csv"),
+                               "mesh orient " + path("a.obj"),
+                               "mesh check " + path("a.obj") + " --tolerance -1",
+                               "raycast " + path("a.obj"),
+                               "raycast " + path("a.obj") + " " + path("c.xyz")};
   for (const std::string& args : cases) {
     const Outcome r = run(args);
     EXPECT_EQ(r.code, 2) << "locus " << args << "\n" << r.err;
@@ -577,30 +591,9 @@ TEST_F(Cli, MeshConvertRoundTripsAndInfoAndCheckReport) {
   EXPECT_EQ(f["bbox_max"], (std::vector<std::string>{"1", "1", "1"}));
   f = fields(run("mesh check " + path("cube.obj")).out);
   EXPECT_EQ(f["closed"], std::vector<std::string>{"yes"});
-  EXPECT_EQ(f["clean"], std::vector<std::string>{"yes"});
+  EXPECT_EQ(f["kind"], std::vector<std::string>{"polytope"});
   EXPECT_EQ(f["euler_characteristic"], std::vector<std::string>{"2"});
   EXPECT_EQ(f["edges"], std::vector<std::string>{"12"});
-  // Defects made on purpose: a missing face (4 boundary edges), a flipped face (its 4 edges
-  // disagree with the neighbours), a repeated face (its edges used 3 times), an extra vertex.
-  const std::string open = std::string(cube_obj).substr(0, std::string(cube_obj).rfind("f 4"));
-  spit(path("open.obj"), open);
-  f = fields(run("mesh check " + path("open.obj")).out);
-  EXPECT_EQ(f["boundary_edges"], std::vector<std::string>{"4"});
-  EXPECT_EQ(f["closed"], std::vector<std::string>{"no"});
-  EXPECT_EQ(f["clean"], std::vector<std::string>{"yes"});
-  spit(path("flip.obj"), open + "f 8 5 1 4\n");
-  f = fields(run("mesh check " + path("flip.obj")).out);
-  EXPECT_EQ(f["inconsistent_edges"], std::vector<std::string>{"4"});
-  EXPECT_EQ(f["closed"], std::vector<std::string>{"yes"});
-  EXPECT_EQ(f["clean"], std::vector<std::string>{"no"});
-  spit(path("dup.obj"), std::string(cube_obj) + "f 1 4 3 2\nv 5 5 5\n");
-  f = fields(run("mesh check " + path("dup.obj")).out);
-  EXPECT_EQ(f["duplicate_faces"], std::vector<std::string>{"1"});
-  EXPECT_EQ(f["non_manifold_edges"], std::vector<std::string>{"4"});
-  EXPECT_EQ(f["unreferenced_vertices"], std::vector<std::string>{"1"});
-  spit(path("degen.obj"), std::string(cube_obj) + "f 1 2 1\n");
-  f = fields(run("mesh check " + path("degen.obj")).out);
-  EXPECT_EQ(f["degenerate_faces"], std::vector<std::string>{"1"});
 }
 
 // A random star-shaped polygon around the origin with a square hole, and a triangle beside it.
@@ -705,6 +698,339 @@ TEST_F(Cli, PolygonTriangulationsMatchTheLibrary) {
   const std::string points_only = path("points.wkt");
   spit(points_only, "MULTIPOINT ((0 0), (1 1))\n");
   expect_bad_input(run("cdt " + points_only), points_only, 0, "no polygon");
+}
+
+// A Moebius strip of n quads split in triangles: one face component, non-orientable.
+locus::PolygonMesh<double> moebius(int n) {
+  locus::PolygonMesh<double> m;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.14159265358979 * i / n, w = a / 2;
+    for (const double s : {-0.3, 0.3}) {
+      m.vertices.push_back({(2 + s * std::cos(w)) * std::cos(a),
+                            (2 + s * std::cos(w)) * std::sin(a), s * std::sin(w)});
+    }
+  }
+  const auto u = [](int k) { return static_cast<std::uint32_t>(k); };
+  for (int i = 0; i < n; ++i) {
+    // Row 0 of the last column joins row 1 of the first (the half twist).
+    const std::uint32_t a = u(2 * i), b = u(2 * i + 1);
+    const std::uint32_t c = i + 1 < n ? u(2 * i + 2) : 1u, d = i + 1 < n ? u(2 * i + 3) : 0u;
+    locus::add_face(m, std::span<const std::uint32_t>(std::array{a, b, d}));
+    locus::add_face(m, std::span<const std::uint32_t>(std::array{a, d, c}));
+  }
+  return m;
+}
+
+// The icosphere with faces reversed at random (seeded), and a second, far copy of a cube.
+locus::PolygonMesh<double> scrambled_mesh(locus_test::Rng& rng) {
+  locus::PolygonMesh<double> m = locus::icosphere_mesh<double>(1.0, 1);
+  const locus::PolygonMesh<double> cube = locus::hexahedron_mesh<double>();
+  const auto base = static_cast<std::uint32_t>(m.vertices.size());
+  for (const Vec3d& v : cube.vertices) m.vertices.push_back(v + Vec3d{5, 0, 0});
+  for (std::size_t f = 0; f < locus::face_count(cube); ++f) {
+    std::vector<std::uint32_t> face;
+    for (const std::uint32_t v : locus::face(cube, f)) face.push_back(v + base);
+    locus::add_face(m, std::span<const std::uint32_t>(face));
+  }
+  for (std::size_t f = 0; f < locus::face_count(m); ++f) {
+    if (rng.uniform_int(0, 2) == 0) {
+      std::reverse(m.face_indices.begin() + m.face_offsets[f],
+                   m.face_indices.begin() + m.face_offsets[f + 1]);
+    }
+  }
+  return m;
+}
+
+// `mesh check` prints what classify_mesh() finds on the same file (face ids of the table
+// mapped back to input faces), and exits 0 whatever it finds.
+TEST_F(Cli, MeshCheckReportsTheLibraryClassification) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  spit(path("cube.obj"), cube_obj);
+  const std::string open = std::string(cube_obj).substr(0, std::string(cube_obj).rfind("f 4"));
+  spit(path("open.obj"), open);
+  spit(path("flip.obj"), open + "f 8 5 1 4\n");
+  spit(path("dup.obj"), std::string(cube_obj) + "f 1 4 3 2\nv 5 5 5\n");
+  spit(path("degen.obj"), std::string(cube_obj) + "f 1 2 1\n");
+  // Two triangles crossing each other, and a bow-tie at vertex 1.
+  spit(path("cross.obj"),
+       "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0.5 0.5 -1\nv 0.5 0.5 1\nv 3 3 0\n"
+       "f 1 2 3\nf 4 5 6\n");
+  spit(path("bowtie.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n");
+  spit(path("empty.obj"), "# nothing\n");
+  ASSERT_EQ(locus::write_mesh(path("moebius.obj"), moebius(12)).status, Status::ok);
+  ASSERT_EQ(locus::write_mesh(path("scrambled.obj"), scrambled_mesh(rng)).status, Status::ok);
+  ASSERT_EQ(locus::write_mesh(path("dodeca.obj"), locus::dodecahedron_mesh<double>()).status,
+            Status::ok);
+  // Random polygon soup: self-intersections, non-manifold edges, skipped faces.
+  locus::PolygonMesh<double> soup;
+  for (int i = 0; i < 30; ++i) soup.vertices.push_back(rng.vec<double, 3>(-10.0, 10.0));
+  for (int f = 0; f < 25; ++f) {
+    std::vector<std::uint32_t> face(std::size_t(rng.uniform_int(3, 4)));
+    for (auto& v : face) v = std::uint32_t(rng.uniform_int(0, 29));
+    locus::add_face(soup, std::span<const std::uint32_t>(face));
+  }
+  ASSERT_EQ(locus::write_mesh(path("soup.obj"), soup).status, Status::ok);
+  const char* const names[] = {"cube.obj",    "open.obj",      "flip.obj",   "dup.obj",
+                               "degen.obj",   "cross.obj",     "bowtie.obj", "empty.obj",
+                               "moebius.obj", "scrambled.obj", "dodeca.obj", "soup.obj"};
+  for (const char* name : names) {
+    for (const double tol : {0.0, 1e-12}) {
+      SCOPED_TRACE(std::string(name) + " tolerance " + shortest(tol));
+      const auto in = locus::read_mesh<double>(path(name));
+      ASSERT_EQ(in.status, Status::ok) << in.message;
+      const locus::VetMeshBuild b = locus::make_vet_mesh(in.mesh);
+      const auto c = locus::classify_mesh(b.mesh, std::span<const Vec3d>(in.mesh.vertices), tol);
+      std::vector<std::uint32_t> input_face(b.mesh.face_capacity(), 0);
+      std::size_t skipped = 0;
+      for (std::size_t i = 0; i < b.face_ids.size(); ++i) {
+        if (b.face_ids[i] == locus::VetMesh::npos) {
+          ++skipped;
+        } else {
+          input_face[b.face_ids[i]] = std::uint32_t(i);
+        }
+      }
+      const std::string args = "mesh check " + path(name) + " --tolerance " + shortest(tol);
+      const Outcome r = run(args);
+      ASSERT_EQ(r.code, 0) << r.err;
+      auto f = fields(r.out);
+      const auto n = [&](const std::string& key) {
+        return f.count(key) && f[key].size() == 1 ? f[key][0] : std::string("?");
+      };
+      const auto yes = [](bool v) { return std::string(v ? "yes" : "no"); };
+      EXPECT_EQ(n("vertices"), std::to_string(in.mesh.vertices.size()));
+      EXPECT_EQ(n("faces"), std::to_string(locus::face_count(in.mesh)));
+      EXPECT_EQ(n("edges"), std::to_string(b.mesh.edge_count()));
+      EXPECT_EQ(n("skipped_faces"), std::to_string(skipped));
+      EXPECT_EQ(n("isolated_vertices"), std::to_string(c.topology.isolated_vertices.size()));
+      EXPECT_EQ(n("isolated_edges"), std::to_string(c.topology.isolated_edges.size()));
+      EXPECT_EQ(n("boundary_edges"), std::to_string(c.topology.boundary_edges.size()));
+      EXPECT_EQ(n("non_manifold_edges"), std::to_string(c.topology.non_manifold_edges.size()));
+      EXPECT_EQ(n("non_manifold_vertices"),
+                std::to_string(c.topology.non_manifold_vertices.size()));
+      EXPECT_EQ(n("face_components"),
+                std::to_string(c.orientation.components.face_component_count));
+      EXPECT_EQ(n("vertex_components"),
+                std::to_string(c.orientation.components.vertex_component_count));
+      EXPECT_EQ(n("faces_to_flip"), std::to_string(c.orientation.flipped_faces.size()));
+      EXPECT_EQ(n("non_orientable_components"),
+                std::to_string(c.orientation.non_orientable_components.size()));
+      EXPECT_EQ(n("self_intersections"), std::to_string(c.intersections.face_pairs.size()));
+      EXPECT_EQ(n("degenerate_faces"), std::to_string(c.intersections.degenerate_faces.size()));
+      EXPECT_EQ(n("non_planar_faces"), std::to_string(c.non_planar_faces.size()));
+      EXPECT_EQ(n("euler_characteristic"), std::to_string(c.euler_characteristic));
+      EXPECT_EQ(n("closed"), yes(c.topology.closed));
+      EXPECT_EQ(n("manifold"), yes(c.topology.manifold));
+      EXPECT_EQ(n("orientable"), yes(c.orientation.orientable));
+      EXPECT_EQ(n("convex"), yes(c.convex));
+      // The JSON lists the intersecting pairs as input face indices.
+      const Outcome j = run(args + " --json");
+      ASSERT_EQ(j.code, 0) << j.err;
+      std::string pairs = "\"self_intersection_pairs\": [";
+      for (std::size_t k = 0; k < c.intersections.face_pairs.size(); ++k) {
+        const auto& [a, g] = c.intersections.face_pairs[k];
+        pairs += (k ? ",[" : "[") + std::to_string(input_face[a]) + "," +
+                 std::to_string(input_face[g]) + "]";
+      }
+      EXPECT_NE(j.out.find(pairs + "]"), std::string::npos) << j.out;
+    }
+  }
+  // Independent facts about the fixtures (not the library's word).
+  const auto kind = [&](const std::string& name, const std::string& extra = {}) {
+    return fields(run("mesh check " + path(name) + extra).out)["kind"];
+  };
+  using W = std::vector<std::string>;
+  EXPECT_EQ(kind("cube.obj"), W{"polytope"});
+  EXPECT_EQ(kind("open.obj"), W{"mesh"});
+  EXPECT_EQ(kind("cross.obj"), W{"not_a_mesh"});
+  EXPECT_EQ(kind("dodeca.obj", " --tolerance 1e-12"), W{"polytope"});
+  EXPECT_EQ(fields(run("mesh check " + path("moebius.obj")).out)["orientable"], W{"no"});
+  EXPECT_EQ(fields(run("mesh check " + path("flip.obj")).out)["faces_to_flip"], W{"1"});
+  EXPECT_EQ(fields(run("mesh check " + path("degen.obj")).out)["skipped_faces"], W{"1"});
+  EXPECT_EQ(fields(run("mesh check " + path("dup.obj")).out)["non_manifold_edges"], W{"4"});
+  EXPECT_EQ(fields(run("mesh check " + path("dup.obj")).out)["isolated_vertices"], W{"1"});
+  EXPECT_EQ(fields(run("mesh check " + path("cross.obj")).out)["self_intersections"], W{"1"});
+  EXPECT_EQ(fields(run("mesh check " + path("bowtie.obj")).out)["non_manifold_vertices"], W{"1"});
+}
+
+TEST_F(Cli, MeshOrientMatchesMakeConsistent) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  ASSERT_EQ(locus::write_mesh(path("s.obj"), scrambled_mesh(rng)).status, Status::ok);
+  ASSERT_EQ(locus::write_mesh(path("m.obj"), moebius(9)).status, Status::ok);
+  for (const char* name : {"s.obj", "m.obj"}) {
+    SCOPED_TRACE(name);
+    auto in = locus::read_mesh<double>(path(name));
+    ASSERT_EQ(in.status, Status::ok);
+    const locus::MeshOrientation expected = locus::make_consistent(in.mesh);
+    const Outcome r = run("mesh orient " + path(name) + " -o " + path("out.ply"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto f = fields(r.out);
+    EXPECT_EQ(f["flipped_faces"],
+              std::vector<std::string>{std::to_string(expected.flipped_faces.size())});
+    EXPECT_EQ(f["non_orientable_components"],
+              std::vector<std::string>{std::to_string(expected.non_orientable_components.size())});
+    EXPECT_EQ(f["orientable"], std::vector<std::string>{expected.orientable ? "yes" : "no"});
+    const auto out = locus::read_mesh<double>(path("out.ply"));
+    ASSERT_EQ(out.status, Status::ok) << out.message;
+    ASSERT_EQ(out.mesh.vertices.size(), in.mesh.vertices.size());
+    for (std::size_t i = 0; i < in.mesh.vertices.size(); ++i) {
+      EXPECT_TRUE(same<3>(out.mesh.vertices[i], in.mesh.vertices[i]));
+    }
+    EXPECT_EQ(out.mesh.face_offsets, in.mesh.face_offsets);
+    EXPECT_EQ(out.mesh.face_indices, in.mesh.face_indices);
+    // Independently: the written orientable mesh needs no more flips.
+    const Outcome again = run("mesh check " + path("out.ply"));
+    EXPECT_EQ(fields(again.out)["faces_to_flip"], std::vector<std::string>{"0"});
+  }
+  EXPECT_EQ(fields(run("mesh orient " + path("m.obj") + " -o " + path("o.obj")).out)["orientable"],
+            std::vector<std::string>{"no"});
+  // A face repeating a vertex: bad input, nothing written.
+  spit(path("degen.obj"), std::string(cube_obj) + "f 1 2 1\n");
+  expect_bad_input(run("mesh orient " + path("degen.obj") + " -o " + path("d.obj")),
+                   path("degen.obj"), 0, "repeats a vertex");
+  EXPECT_FALSE(fs::exists(path("d.obj")));
+}
+
+TEST_F(Cli, MeshGenerateWritesTheLibraryMeshes) {
+  const std::pair<std::string, locus::PolygonMesh<double>> cases[] = {
+      {"tetrahedron", locus::tetrahedron_mesh<double>()},
+      {"cube", locus::hexahedron_mesh<double>()},
+      {"octahedron", locus::octahedron_mesh<double>()},
+      {"dodecahedron", locus::dodecahedron_mesh<double>()},
+      {"dodecahedron --triangles", locus::dodecahedron_triangle_mesh<double>()},
+      {"icosahedron", locus::icosahedron_mesh<double>()},
+      {"uvsphere", locus::uv_sphere_mesh<double>(1.0, 32, 16)},
+      {"uvsphere --radius 2.5 --slices 7 --stacks 5", locus::uv_sphere_mesh<double>(2.5, 7, 5)},
+      {"icosphere --radius 0.75 --levels 3", locus::icosphere_mesh<double>(0.75, 3)},
+      {"torus", locus::torus_mesh<double>(1.0, 0.25, 32, 16)},
+      {"torus --major-radius 3 --minor-radius 1.25 --major-segments 9 --minor-segments 5",
+       locus::torus_mesh<double>(3.0, 1.25, 9, 5)},
+      {"cylinder --radius 0.5 --height 3 --slices 11", locus::cylinder_mesh<double>(0.5, 3.0, 11)},
+      {"cone --slices 2", locus::cone_mesh<double>(1.0, 2.0, 2)}};
+  for (const auto& [args, expected] : cases) {
+    SCOPED_TRACE(args);
+    for (const char* ext : {".obj", ".ply"}) {
+      const Outcome r = run("mesh generate " + args + " -o " + path(std::string("g") + ext));
+      ASSERT_EQ(r.code, 0) << r.err;
+      auto f = fields(r.out);
+      EXPECT_EQ(f["vertices"], std::vector<std::string>{std::to_string(expected.vertices.size())});
+      EXPECT_EQ(f["faces"], std::vector<std::string>{std::to_string(locus::face_count(expected))});
+      const auto m = locus::read_mesh<double>(path(std::string("g") + ext));
+      ASSERT_EQ(m.status, Status::ok) << m.message;
+      ASSERT_EQ(m.mesh.vertices.size(), expected.vertices.size());
+      for (std::size_t i = 0; i < expected.vertices.size(); ++i) {
+        EXPECT_TRUE(same<3>(m.mesh.vertices[i], expected.vertices[i])) << i;
+      }
+      EXPECT_EQ(m.mesh.face_offsets, expected.face_offsets);
+      EXPECT_EQ(m.mesh.face_indices, expected.face_indices);
+    }
+    // Independently of the generator's word: each written mesh is closed and orientable.
+    auto f = fields(run("mesh check " + path("g.obj") + " --tolerance 1e-12").out);
+    EXPECT_EQ(f["closed"], std::vector<std::string>{"yes"});
+    EXPECT_EQ(f["orientable"], std::vector<std::string>{"yes"});
+    EXPECT_EQ(f["faces_to_flip"], std::vector<std::string>{"0"});
+  }
+  const Outcome j = run("mesh generate cube --json -o " + path("c.off"));
+  EXPECT_EQ(j.code, 0);
+  EXPECT_NE(j.out.find("\"faces\": 6"), std::string::npos) << j.out;
+}
+
+// The library's answer for one ray: the smallest t over the watertight hits, lowest index.
+struct ExpectedHit {
+  bool hit = false;
+  double t = 0;
+  std::size_t triangle = 0;
+  Vec3d b{};
+};
+ExpectedHit library_hit(const locus::Ray3d& ray, const locus::PolygonMesh<double>& m) {
+  const auto tris = locus::fan_triangles(m);
+  ExpectedHit e;
+  for (std::size_t k = 0; k < tris.size(); ++k) {
+    const auto& p = m.vertices;
+    const auto h =
+        locus::watertight_hit(ray, locus::Triangle3d{p[tris[k][0]], p[tris[k][1]], p[tris[k][2]]});
+    if (h.hit && (!e.hit || h.t < e.t)) e = {true, h.t, k, h.barycentric};
+  }
+  return e;
+}
+
+TEST_F(Cli, RaycastMatchesWatertightHitsBitForBit) {
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  locus::PolygonMesh<double> mesh = locus::icosphere_mesh<double>(2.0, 2);
+  ASSERT_EQ(locus::write_mesh(path("sphere.obj"), mesh).status, Status::ok);
+  std::vector<locus::Ray3d> rays;
+  std::string csv = "ox,oy,oz,dx,dy,dz\n";
+  const auto add = [&](const Vec3d& o, const Vec3d& d) {
+    rays.push_back({o, d});
+    csv += shortest(o.x) + "," + shortest(o.y) + "," + shortest(o.z) + "," + shortest(d.x) + "," +
+           shortest(d.y) + "," + shortest(d.z) + "\n";
+  };
+  for (int i = 0; i < 60; ++i) add(rng.vec<double, 3>(-4.0, 4.0), rng.unit<double, 3>());
+  // From the centre through every vertex (shared by 5 or 6 triangles): exactly one hit each.
+  for (std::size_t v = 0; v < mesh.vertices.size(); v += 7) add({0, 0, 0}, mesh.vertices[v]);
+  add({0, 0, 0}, {0, 0, 0});  // zero direction: no hit
+  add({9, 9, 9}, {1, 1, 1});  // pointing away
+  spit(path("rays.csv"), csv);
+  const Outcome r = run("raycast " + path("sphere.obj") + " " + path("rays.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::vector<std::string>> lines;
+  {
+    std::istringstream in(r.out);
+    for (std::string line; std::getline(in, line);) {
+      if (!line.empty() && line[0] != '#') lines.push_back(words(line));
+    }
+  }
+  ASSERT_EQ(lines.size(), rays.size());
+  std::size_t hits = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    SCOPED_TRACE(i);
+    const ExpectedHit e = library_hit(rays[i], mesh);
+    if (!e.hit) {
+      EXPECT_EQ(lines[i], std::vector<std::string>{"0"});
+      continue;
+    }
+    ++hits;
+    const std::vector<std::string> want = {"1",
+                                           shortest(e.t),
+                                           std::to_string(e.triangle),
+                                           shortest(e.b.x),
+                                           shortest(e.b.y),
+                                           shortest(e.b.z)};
+    EXPECT_EQ(lines[i], want);
+  }
+  // Independently: rays from the centre leave the closed sphere exactly once; the last two miss.
+  for (std::size_t i = 60; i + 2 < rays.size(); ++i) EXPECT_EQ(lines[i][0], "1") << i;
+  EXPECT_EQ(lines[rays.size() - 2], std::vector<std::string>{"0"});
+  EXPECT_EQ(lines[rays.size() - 1], std::vector<std::string>{"0"});
+  // Rays on standard input, -o and --json.
+  const Outcome j =
+      run("raycast " + path("sphere.obj") + " - --json -o " + path("hits.txt"), path("rays.csv"));
+  ASSERT_EQ(j.code, 0) << j.err;
+  EXPECT_EQ(slurp(path("hits.txt")), r.out);
+  EXPECT_NE(j.out.find("\"hits\": " + std::to_string(hits)), std::string::npos) << j.out;
+  EXPECT_NE(j.out.find("\"rays\": " + std::to_string(rays.size())), std::string::npos);
+  // Polygon faces: triangle indices count fan triangles (the cube's quads give 2 each).
+  spit(path("cube.obj"), cube_obj);
+  spit(path("one.csv"), "0.25 0.75 -1 0 0 1\n");
+  const auto cube = locus::read_mesh<double>(path("cube.obj"));
+  const ExpectedHit e = library_hit({{0.25, 0.75, -1}, {0, 0, 1}}, cube.mesh);
+  ASSERT_TRUE(e.hit);
+  EXPECT_EQ(fields(run("raycast " + path("cube.obj") + " " + path("one.csv")).out)["1"],
+            (std::vector<std::string>{shortest(e.t), std::to_string(e.triangle), shortest(e.b.x),
+                                      shortest(e.b.y), shortest(e.b.z)}));
+  EXPECT_EQ(e.t, 1.0);
+  // Bad rays: the reader's line; bad mesh: its line.
+  spit(path("bad.csv"), "ox,oy,oz,dx,dy,dz\n0,0,0,1,0,0\n0,0,x,1,0,0\n");
+  expect_bad_input(run("raycast " + path("cube.obj") + " " + path("bad.csv")), path("bad.csv"), 3,
+                   "bad number 'x' in field 3");
+  spit(path("five.csv"), "0,0,0,1,0\n");
+  expect_bad_input(run("raycast " + path("cube.obj") + " " + path("five.csv")), path("five.csv"), 1,
+                   "expected 6 fields, found 5");
+  spit(path("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
+  expect_bad_input(run("raycast " + path("bad.obj") + " " + path("one.csv")), path("bad.obj"), 3,
+                   "index");
 }
 
 }  // namespace

@@ -1,15 +1,20 @@
 // SPDX-License-Identifier: BSL-1.0
-// locus mesh info|check|convert: mesh files (io/mesh_io.hpp). `check` reports what can be
-// computed from the indexed faces alone (counts, edges, duplicates, orientation); the
-// topological checks of mesh/ (components, manifold vertices, self-intersection) join it when
-// that area lands.
+// locus mesh info|check|orient|generate|convert: mesh files (io/mesh_io.hpp). `check` reports
+// the checks of mesh/mesh_checks.hpp (topology, components, orientation, self-intersections,
+// classification), `orient` applies make_consistent(), `generate` writes a mesh of
+// mesh/platonic.hpp. The tool computes none of these itself.
 
 #include "commands.hpp"
 #include "io.hpp"
 
 #include <locus/io/mesh_io.hpp>
+#include <locus/mesh/mesh_checks.hpp>
+#include <locus/mesh/platonic.hpp>
+#include <locus/mesh/vet_mesh.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <iostream>
 #include <memory>
 
 namespace locus_cli {
@@ -72,109 +77,208 @@ void run_info(const Common& c) {
   emit(c, text, j);
 }
 
-struct Report {
-  std::size_t unreferenced = 0;  // vertices no face uses
-  std::size_t degenerate = 0;    // faces repeating a vertex
-  std::size_t duplicate = 0;     // faces with the vertex set of an earlier face
-  std::size_t edges = 0;         // undirected edges
-  std::size_t boundary = 0;      // edges used by one face
-  std::size_t non_manifold = 0;  // edges used by more than two faces
-  std::size_t inconsistent = 0;  // edges used twice in the same direction
-  std::int64_t euler = 0;        // V (used) - E + F
+struct CheckOptions {
+  Common common;
+  double tolerance = 0;  // --tolerance: classify_mesh's coplanarity tolerance
 };
 
-Report check_mesh(const locus::PolygonMesh<double>& m) {
-  Report r;
-  const std::size_t faces = locus::face_count(m);
-  std::vector<std::uint8_t> used(m.vertices.size(), 0);
-  // Directed edges (a, b) as (min, max, direction), sorted to group the uses of each edge.
-  struct Edge {
-    std::uint32_t lo, hi;
-    bool forward;
-    bool operator<(const Edge& o) const noexcept {
-      return lo != o.lo ? lo < o.lo : hi != o.hi ? hi < o.hi : forward < o.forward;
-    }
-  };
-  std::vector<Edge> edges;
-  std::vector<std::vector<std::uint32_t>> keys;
-  keys.reserve(faces);
-  for (std::size_t f = 0; f < faces; ++f) {
-    const auto v = locus::face(m, f);
-    std::vector<std::uint32_t> key(v.begin(), v.end());
-    std::sort(key.begin(), key.end());
-    if (std::adjacent_find(key.begin(), key.end()) != key.end()) ++r.degenerate;
-    keys.push_back(std::move(key));
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      used[v[k]] = 1;
-      const std::uint32_t a = v[k], b = v[(k + 1) % v.size()];
-      if (a != b) edges.push_back({std::min(a, b), std::max(a, b), a < b});
-    }
+const char* kind_name(locus::MeshKind k) {
+  switch (k) {
+    case locus::MeshKind::not_a_mesh:
+      return "not_a_mesh";
+    case locus::MeshKind::mesh:
+      return "mesh";
+    case locus::MeshKind::polyhedron:
+      return "polyhedron";
+    case locus::MeshKind::polytope:
+      return "polytope";
   }
-  std::sort(keys.begin(), keys.end());
-  for (std::size_t i = 1; i < keys.size(); ++i) r.duplicate += keys[i] == keys[i - 1] ? 1 : 0;
-  std::sort(edges.begin(), edges.end());
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i, forward = 0;
-    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) {
-      forward += edges[j].forward ? 1 : 0;
-      ++j;
-    }
-    const std::size_t uses = j - i;
-    ++r.edges;
-    if (uses == 1) ++r.boundary;
-    if (uses > 2) ++r.non_manifold;
-    if (uses == 2 && forward != 1) ++r.inconsistent;
-    i = j;
-  }
-  std::size_t used_count = 0;
-  for (const std::uint8_t u : used) used_count += u;
-  r.unreferenced = m.vertices.size() - used_count;
-  r.euler = static_cast<std::int64_t>(used_count) - static_cast<std::int64_t>(r.edges) +
-            static_cast<std::int64_t>(faces);
-  return r;
+  return "not_a_mesh";
 }
 
-void run_check(const Common& c) {
+// The adjacency table of a mesh read from a file; faces repeating a vertex are skipped (and
+// counted), other defects of the index structure are bad input.
+locus::VetMeshBuild vet_table(const locus::PolygonMesh<double>& m, const std::string& input) {
+  locus::VetMeshBuild b = locus::make_vet_mesh(m);
+  if (b.status == locus::Status::invalid_input) {
+    throw InputError(input + ": invalid face structure (a face with fewer than 3 vertices)");
+  }
+  return b;
+}
+
+// Everything comes from mesh/mesh_checks.hpp: classify_mesh() runs check_topology(),
+// orient_consistently() (with connected_components()) and self_intersections(), then the
+// planarity and convexity tests. Face ids of the table are mapped back to input face indices.
+void run_check(const CheckOptions& o) {
+  const Common& c = o.common;
+  if (!(o.tolerance >= 0) || !std::isfinite(o.tolerance)) {
+    throw UsageError("--tolerance must be a finite number >= 0");
+  }
   const locus::PolygonMesh<double> m = load_mesh(c.input, c.format);
-  // The reader refuses out-of-range indices and non-finite coordinates; this states it.
-  const bool valid = locus::check_polygon_mesh(m) == locus::Status::ok;
-  Report r;
+  const locus::VetMeshBuild b = vet_table(m, c.input);
+  std::vector<std::uint32_t> input_face(b.mesh.face_capacity(), locus::VetMesh::npos);
+  std::size_t skipped = 0;
+  for (std::size_t i = 0; i < b.face_ids.size(); ++i) {
+    if (b.face_ids[i] == locus::VetMesh::npos) {
+      ++skipped;
+    } else {
+      input_face[b.face_ids[i]] = static_cast<std::uint32_t>(i);
+    }
+  }
+  locus::MeshClassification r;
   {
     Progress p("mesh check", locus::face_count(m));
-    r = check_mesh(m);
+    r = locus::classify_mesh(b.mesh, std::span<const Vec3d>(m.vertices), o.tolerance);
   }
-  const bool closed = r.boundary == 0 && r.non_manifold == 0 && locus::face_count(m) > 0;
-  const bool clean = valid && r.unreferenced == 0 && r.degenerate == 0 && r.duplicate == 0 &&
-                     r.non_manifold == 0 && r.inconsistent == 0;
-  auto line = [](const char* k, std::size_t v) {
-    return std::string(k) + ' ' + std::to_string(v) + '\n';
-  };
-  std::string text = std::string("indices ") + (valid ? "valid" : "invalid") + '\n' +
-                     line("vertices", m.vertices.size()) + line("faces", locus::face_count(m)) +
-                     line("edges", r.edges) + line("unreferenced_vertices", r.unreferenced) +
-                     line("degenerate_faces", r.degenerate) + line("duplicate_faces", r.duplicate) +
-                     line("boundary_edges", r.boundary) +
-                     line("non_manifold_edges", r.non_manifold) +
-                     line("inconsistent_edges", r.inconsistent) + "euler_characteristic " +
-                     std::to_string(r.euler) + '\n' + "closed " + (closed ? "yes" : "no") + '\n';
+  const locus::MeshTopology& t = r.topology;
+  const locus::MeshOrientation& orient = r.orientation;
+  std::vector<std::array<std::uint32_t, 2>> pairs;
+  for (const auto& [f, g] : r.intersections.face_pairs) {
+    pairs.push_back({input_face[f], input_face[g]});
+  }
+  const auto count = [](const auto& v) { return static_cast<std::int64_t>(v.size()); };
+  const auto yes = [](bool v) { return std::string(v ? "yes" : "no"); };
+  const std::pair<const char*, std::int64_t> counts[] = {
+      {"vertices", static_cast<std::int64_t>(m.vertices.size())},
+      {"faces", static_cast<std::int64_t>(locus::face_count(m))},
+      {"edges", static_cast<std::int64_t>(b.mesh.edge_count())},
+      {"skipped_faces", static_cast<std::int64_t>(skipped)},
+      {"isolated_vertices", count(t.isolated_vertices)},
+      {"isolated_edges", count(t.isolated_edges)},
+      {"boundary_edges", count(t.boundary_edges)},
+      {"non_manifold_edges", count(t.non_manifold_edges)},
+      {"non_manifold_vertices", count(t.non_manifold_vertices)},
+      {"face_components", orient.components.face_component_count},
+      {"vertex_components", orient.components.vertex_component_count},
+      {"faces_to_flip", count(orient.flipped_faces)},
+      {"non_orientable_components", count(orient.non_orientable_components)},
+      {"self_intersections", count(pairs)},
+      {"degenerate_faces", count(r.intersections.degenerate_faces)},
+      {"non_planar_faces", count(r.non_planar_faces)},
+      {"euler_characteristic", r.euler_characteristic}};
+  std::string text;
   JsonObject j;
-  j.str("command", "mesh check")
-      .boolean("valid_indices", valid)
-      .integer("vertices", static_cast<std::int64_t>(m.vertices.size()))
-      .integer("faces", static_cast<std::int64_t>(locus::face_count(m)))
-      .integer("edges", static_cast<std::int64_t>(r.edges))
-      .integer("unreferenced_vertices", static_cast<std::int64_t>(r.unreferenced))
-      .integer("degenerate_faces", static_cast<std::int64_t>(r.degenerate))
-      .integer("duplicate_faces", static_cast<std::int64_t>(r.duplicate))
-      .integer("boundary_edges", static_cast<std::int64_t>(r.boundary))
-      .integer("non_manifold_edges", static_cast<std::int64_t>(r.non_manifold))
-      .integer("inconsistent_edges", static_cast<std::int64_t>(r.inconsistent))
-      .integer("euler_characteristic", r.euler)
-      .boolean("closed", closed)
-      .boolean("clean", clean);
+  j.str("command", "mesh check");
+  for (const auto& [k, v] : counts) {
+    text += std::string(k) + ' ' + std::to_string(v) + '\n';
+    j.integer(k, v);
+  }
+  const std::pair<const char*, bool> flags[] = {{"closed", t.closed},
+                                                {"manifold", t.manifold},
+                                                {"orientable", orient.orientable},
+                                                {"convex", r.convex}};
+  for (const auto& [k, v] : flags) {
+    text += std::string(k) + ' ' + yes(v) + '\n';
+    j.boolean(k, v);
+  }
+  text += std::string("kind ") + kind_name(r.kind) + '\n';
+  j.str("kind", kind_name(r.kind));
+  j.raw("self_intersection_pairs",
+        json_index_rows<2>(std::span<const std::array<std::uint32_t, 2>>(pairs)));
   add_box(bounding_box(m), text, j);
-  text += std::string("clean ") + (clean ? "yes" : "no") + '\n';
   emit(c, text, j);
+}
+
+void run_orient(const Common& c) {
+  if (c.output.empty() || !is_mesh_name(c.output)) {
+    throw UsageError("mesh orient needs -o with a mesh file (.obj .off .ply .stl)");
+  }
+  locus::PolygonMesh<double> m = load_mesh(c.input, c.format);
+  (void)vet_table(m, c.input);
+  const locus::MeshOrientation r = locus::make_consistent(m);
+  if (r.status == locus::Status::degenerate_input) {
+    throw InputError(c.input + ": a face repeats a vertex (mesh check counts them)");
+  }
+  require_ok(r.status == locus::Status::empty_input ? locus::Status::ok : r.status, c.input);
+  (void)emit_mesh(c, m);
+  const std::string text =
+      "flipped_faces " + std::to_string(r.flipped_faces.size()) + "\nface_components " +
+      std::to_string(r.components.face_component_count) + "\nnon_orientable_components " +
+      std::to_string(r.non_orientable_components.size()) + "\norientable " +
+      (r.orientable ? "yes" : "no") + '\n';
+  JsonObject j;
+  j.str("command", "mesh orient")
+      .integer("flipped_faces", static_cast<std::int64_t>(r.flipped_faces.size()))
+      .integer("face_components", r.components.face_component_count)
+      .integer("non_orientable_components",
+               static_cast<std::int64_t>(r.non_orientable_components.size()))
+      .boolean("orientable", r.orientable)
+      .raw("flipped", json_indices(r.flipped_faces))
+      .raw("non_orientable", json_indices(r.non_orientable_components));
+  if (c.json) {
+    emit_json(c, j);
+  } else {
+    std::cout << text << std::flush;
+  }
+}
+
+struct GenerateOptions {
+  std::string shape, output;
+  double radius = 1, height = 2, major_radius = 1, minor_radius = 0.25;
+  int slices = 32, stacks = 16, levels = 2, major_segments = 32, minor_segments = 16;
+  bool triangles = false;
+  bool json = false;
+};
+
+locus::PolygonMesh<double> generate(const GenerateOptions& o) {
+  const auto positive = [](double v, const char* name) {
+    if (!(v > 0) || !std::isfinite(v)) {
+      throw UsageError(std::string(name) + " must be a finite number > 0");
+    }
+  };
+  const std::string& s = o.shape;
+  if (s == "tetrahedron") return locus::tetrahedron_mesh<double>();
+  if (s == "cube") return locus::hexahedron_mesh<double>();
+  if (s == "octahedron") return locus::octahedron_mesh<double>();
+  if (s == "dodecahedron") {
+    return o.triangles ? locus::dodecahedron_triangle_mesh<double>()
+                       : locus::dodecahedron_mesh<double>();
+  }
+  if (s == "icosahedron") return locus::icosahedron_mesh<double>();
+  positive(o.radius, "--radius");
+  if (s == "uvsphere") return locus::uv_sphere_mesh<double>(o.radius, o.slices, o.stacks);
+  if (s == "icosphere") {
+    if (o.levels < 0 || o.levels > 8) throw UsageError("--levels must be 0 to 8");
+    return locus::icosphere_mesh<double>(o.radius, o.levels);
+  }
+  if (s == "torus") {
+    positive(o.minor_radius, "--minor-radius");
+    if (!(o.major_radius > o.minor_radius) || !std::isfinite(o.major_radius)) {
+      throw UsageError("--major-radius must be finite and larger than --minor-radius");
+    }
+    return locus::torus_mesh<double>(o.major_radius, o.minor_radius, o.major_segments,
+                                     o.minor_segments);
+  }
+  positive(o.height, "--height");
+  if (s == "cylinder") return locus::cylinder_mesh<double>(o.radius, o.height, o.slices);
+  return locus::cone_mesh<double>(o.radius, o.height, o.slices);
+}
+
+void run_generate(const GenerateOptions& o) {
+  if (!is_mesh_name(o.output)) {
+    throw UsageError("mesh generate needs -o with a mesh file (.obj .off .ply .stl)");
+  }
+  constexpr int max_segments = 1 << 12;
+  for (const int n : {o.slices, o.stacks, o.major_segments, o.minor_segments}) {
+    if (n > max_segments) throw UsageError("segment counts are at most 4096");
+  }
+  const locus::PolygonMesh<double> m = generate(o);
+  Common c;
+  c.output = o.output;
+  c.json = o.json;
+  (void)emit_mesh(c, m);
+  const std::string text = "vertices " + std::to_string(m.vertices.size()) + "\nfaces " +
+                           std::to_string(locus::face_count(m)) + '\n';
+  JsonObject j;
+  j.str("command", "mesh generate")
+      .str("shape", o.shape)
+      .integer("vertices", static_cast<std::int64_t>(m.vertices.size()))
+      .integer("faces", static_cast<std::int64_t>(locus::face_count(m)));
+  if (o.json) {
+    emit_json(c, j);
+  } else {
+    std::cout << text << std::flush;
+  }
 }
 
 struct ConvertOptions {
@@ -215,9 +319,11 @@ void run_convert(const ConvertOptions& o) {
 }  // namespace
 
 void register_mesh(CLI::App& app) {
-  CLI::App* mesh = app.add_subcommand("mesh", "mesh files: info, check, convert");
+  CLI::App* mesh = app.add_subcommand("mesh", "mesh files: info, check, orient, generate, convert");
   mesh->require_subcommand(1);
-  mesh->footer("Example:\n  locus mesh info bunny.ply\n  locus mesh convert bunny.ply bunny.obj");
+  mesh->footer(
+      "Example:\n  locus mesh info bunny.ply\n  locus mesh check bunny.ply\n"
+      "  locus mesh generate icosphere --levels 3 -o sphere.obj");
   {
     auto o = std::make_shared<Common>();
     CLI::App* sub = mesh->add_subcommand("info", "counts and bounding box of a mesh file");
@@ -228,16 +334,63 @@ void register_mesh(CLI::App& app) {
     sub->callback([o] { run_info(*o); });
   }
   {
+    auto o = std::make_shared<CheckOptions>();
+    CLI::App* sub = mesh->add_subcommand("check", "validity checks of a mesh file (book 9.3)");
+    add_common(sub, o->common, false, "a mesh (.obj .off .ply .stl)");
+    sub->add_option("--tolerance", o->tolerance,
+                    "coplanarity tolerance for planar faces and convex edges, relative to the "
+                    "bounding-box diagonal (default 0: exact)");
+    sub->footer(
+        "Reports the checks of mesh/mesh_checks.hpp: faces skipped because they repeat a vertex,\n"
+        "isolated vertices, boundary (1 face) and non-manifold (3+ faces) edges, non-manifold\n"
+        "vertices (bow-ties), face and vertex components, faces to flip for a consistent\n"
+        "orientation, non-orientable components, self-intersecting face pairs (exact), faces\n"
+        "with collinear vertices, non-planar faces, the Euler characteristic, closed, manifold,\n"
+        "orientable, convex and the kind: not_a_mesh, mesh, polyhedron or polytope.\n"
+        "Exit code 0 whatever it finds (a report is not a failure); 1 for an unreadable file.\n"
+        "Example:\n  locus mesh check scan.stl\n  locus mesh check part.obj --tolerance 1e-9 "
+        "--json");
+    sub->callback([o] { run_check(*o); });
+  }
+  {
     auto o = std::make_shared<Common>();
-    CLI::App* sub = mesh->add_subcommand("check", "defects of a mesh file");
+    CLI::App* sub = mesh->add_subcommand("orient", "orient the faces of a mesh consistently");
     add_common(sub, *o, false, "a mesh (.obj .off .ply .stl)");
     sub->footer(
-        "Reports index validity, unreferenced vertices, faces repeating a vertex, duplicate\n"
-        "faces, boundary edges (used once), non-manifold edges (used 3+ times), edges whose two\n"
-        "faces disagree in orientation, the Euler characteristic and the bounding box.\n"
-        "Exit code 0 whatever it finds (the report says `clean yes|no`).\n"
-        "Example:\n  locus mesh check scan.stl");
-    sub->callback([o] { run_check(*o); });
+        "Writes the mesh (-o, required) with the faces of each component reordered to agree\n"
+        "with its lowest-numbered face (make_consistent). Faces of a non-orientable component\n"
+        "(Moebius-like) are left as they are; the report counts the flipped faces and those\n"
+        "components. Faces repeating a vertex are bad input (exit 1).\n"
+        "Example:\n  locus mesh orient scan.obj -o fixed.obj");
+    sub->callback([o] { run_orient(*o); });
+  }
+  {
+    auto o = std::make_shared<GenerateOptions>();
+    CLI::App* sub = mesh->add_subcommand("generate", "write a Platonic solid or tessellation");
+    sub->add_option("shape", o->shape, "the shape")
+        ->required()
+        ->check(CLI::IsMember({"tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron",
+                               "uvsphere", "icosphere", "torus", "cylinder", "cone"}));
+    sub->add_option("-o,--output", o->output, "the mesh file to write (.obj .off .ply .stl)")
+        ->required();
+    sub->add_option("--radius", o->radius, "sphere, cylinder and cone radius (default 1)");
+    sub->add_option("--height", o->height, "cylinder and cone height along z (default 2)");
+    sub->add_option("--slices", o->slices, "segments around z (default 32, at least 3)");
+    sub->add_option("--stacks", o->stacks, "uvsphere segments pole to pole (default 16)");
+    sub->add_option("--levels", o->levels, "icosphere subdivisions, 0 to 8 (default 2)");
+    sub->add_option("--major-radius", o->major_radius, "torus: to the tube centre (default 1)");
+    sub->add_option("--minor-radius", o->minor_radius, "torus: tube radius (default 0.25)");
+    sub->add_option("--major-segments", o->major_segments, "torus: around z (default 32)");
+    sub->add_option("--minor-segments", o->minor_segments, "torus: around the tube (default 16)");
+    sub->add_flag("--triangles", o->triangles, "dodecahedron: fan each pentagon into triangles");
+    sub->add_flag("--json", o->json, "print a JSON summary on stdout");
+    sub->footer(
+        "Meshes of mesh/platonic.hpp, faces counter-clockwise seen from outside, closed and\n"
+        "manifold. Platonic solids have unit circumradius about the origin; spheres are about\n"
+        "the origin, the torus about the z axis, cylinder and cone along z from -height/2 to\n"
+        "height/2. Counts below the minimum (3 around, 2 stacks) are raised to it.\n"
+        "Example:\n  locus mesh generate torus --major-radius 2 --minor-radius 0.5 -o torus.obj");
+    sub->callback([o] { run_generate(*o); });
   }
   {
     auto o = std::make_shared<ConvertOptions>();

@@ -116,6 +116,18 @@ void add_common(CLI::App* sub, Common& c, bool svg, std::string_view input_help)
 std::vector<Vec2d> load_points2(const Common& c) { return load_points<2>(c); }
 std::vector<Vec3d> load_points3(const Common& c) { return load_points<3>(c); }
 
+std::vector<locus::Vec<double, 6>> load_rows6(const std::string& path) {
+  const auto pf =
+      path == "-" ? locus::PointListFormat::csv : locus::point_list_format_from_name(path);
+  if (pf != locus::PointListFormat::csv) {
+    throw UsageError(path + ": give a CSV file (.csv .txt .tsv) of six numbers per row");
+  }
+  const std::string bytes = slurp(path);
+  auto r = locus::parse_points<double, 6>(bytes, pf, display_name(path));
+  if (r.status != locus::Status::ok) throw InputError(r.message);
+  return std::move(r.points);
+}
+
 int input_dimension(const Common& c) {
   const auto pf = point_format(c.input, c.format);
   if (pf == locus::PointListFormat::from_extension || pf == locus::PointListFormat::xyz) return 3;

@@ -56,6 +56,10 @@ void add_common(CLI::App* sub, Common& c, bool svg, std::string_view input_help)
 /// Points from a point list (.csv .txt .tsv; 3D also .xyz and the vertices of a mesh file).
 [[nodiscard]] std::vector<Vec2d> load_points2(const Common& c);
 [[nodiscard]] std::vector<Vec3d> load_points3(const Common& c);
+/// Rows of six numbers from a CSV file (.csv .txt .tsv, or standard input for "-"), read by the
+/// library's point-list reader (io/point_list.hpp, N = 6): its header, separator, comment and
+/// error rules; used for rays "ox,oy,oz,dx,dy,dz".
+[[nodiscard]] std::vector<locus::Vec<double, 6>> load_rows6(const std::string& path);
 /// The dimension of the input's points (2 or 3; mesh files are 3D).
 [[nodiscard]] int input_dimension(const Common& c);
 

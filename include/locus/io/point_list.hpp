@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Point lists: read and write 2D and 3D points as CSV or XYZ text (row mesh.io, CSV/XYZ part).
-// Compiled once for float and double, N = 2 and 3.
+// Compiled once for float and double, N = 2 and 3; reading also N = 6 (CSV rows of six
+// numbers, e.g. rays ox,oy,oz,dx,dy,dz).
 //
 // CSV (.csv .txt .tsv): one point per line, exactly N fields. The separator is fixed by the
 // first non-blank line: ';' if it holds one, else ',' if it holds one, else runs of whitespace
