@@ -88,14 +88,10 @@ std::vector<std::uint32_t> input_index(const VetMeshBuild& b) {
 }
 
 py::array edge_pairs(const VetMesh& mesh, const std::vector<std::uint32_t>& edges) {
-  std::vector<std::uint32_t> out;
-  for (const std::uint32_t e : edges) {
-    const auto ends = mesh.edge_vertices(e);
-    out.push_back(ends[0]);
-    out.push_back(ends[1]);
-  }
-  const auto rows = static_cast<py::ssize_t>(edges.size());
-  return to_numpy(std::move(out), {rows, py::ssize_t(2)});
+  std::vector<std::array<std::uint32_t, 2>> out;
+  for (const std::uint32_t e : edges) out.push_back(mesh.edge_vertices(e));
+  std::sort(out.begin(), out.end());  // by vertex pair, not by internal edge id
+  return to_numpy(std::move(out));
 }
 
 py::array face_list(const std::vector<std::uint32_t>& ids, const std::vector<std::uint32_t>& inv) {
@@ -121,6 +117,12 @@ py::array face_pairs(const std::vector<std::array<std::uint32_t, 2>>& pairs,
 py::array u32(std::vector<std::uint32_t> v) {
   const auto rows = static_cast<py::ssize_t>(v.size());
   return to_numpy(std::move(v), {rows});
+}
+
+/// An id list, increasing.
+py::array sorted_u32(std::vector<std::uint32_t> v) {
+  std::sort(v.begin(), v.end());
+  return u32(std::move(v));
 }
 
 const char* kind_name(MeshKind k) {
@@ -228,8 +230,8 @@ void bind_mesh(py::module_& m) {
         out.attr("face_count") = b.mesh.face_count();
         out.attr("boundary_edges") = edge_pairs(b.mesh, c.topology.boundary_edges);
         out.attr("non_manifold_edges") = edge_pairs(b.mesh, c.topology.non_manifold_edges);
-        out.attr("non_manifold_vertices") = u32(c.topology.non_manifold_vertices);
-        out.attr("isolated_vertices") = u32(c.topology.isolated_vertices);
+        out.attr("non_manifold_vertices") = sorted_u32(c.topology.non_manifold_vertices);
+        out.attr("isolated_vertices") = sorted_u32(c.topology.isolated_vertices);
         out.attr("components") = c.orientation.components.face_component_count;
         std::vector<std::uint32_t> comp(f.count());
         for (std::size_t i = 0; i < comp.size(); ++i)
@@ -322,7 +324,7 @@ convex faces). NaN coordinates raise ValueError. Near-linear on surface meshes.)
         out.attr("flipped") = flipped;
         out.attr("orientable") = o.orientable;
         out.attr("face_component") = u32(std::move(comp));
-        out.attr("non_orientable_components") = u32(std::move(bad));
+        out.attr("non_orientable_components") = sorted_u32(std::move(bad));
         return out;
       },
       py::arg("faces"), py::arg("vertex_count") = py::none(),
