@@ -165,6 +165,11 @@ class RayHits(Result):
     point: _Floats
     front: npt.NDArray[np.bool_]
 
+class BoxHits(Result):
+    hit: npt.NDArray[np.bool_]
+    t_enter: _Floats
+    t_exit: _Floats
+
 class CurveIntersections(Result):
     kind: npt.NDArray[np.uint8]
     count: npt.NDArray[np.int8]
@@ -235,6 +240,8 @@ def ray_triangle_hits(
     triangles: npt.ArrayLike,
     faces: npt.ArrayLike | None = None,
 ) -> RayHits: ...
+def ray_box_hits(origins: _Points, directions: _Points, boxes: npt.ArrayLike) -> BoxHits: ...
+def segment_box_hits(segments: npt.ArrayLike, boxes: npt.ArrayLike) -> BoxHits: ...
 def circle_circle(
     c0: npt.ArrayLike, r0: npt.ArrayLike, c1: npt.ArrayLike, r1: npt.ArrayLike
 ) -> CurveIntersections: ...

@@ -5,7 +5,9 @@
 // C-contiguous float64); NaN or infinite coordinates raise ValueError.
 #include "common.hpp"
 
+#include <locus/intersection/ray_aligned_box.hpp>
 #include <locus/intersection/ray_triangle.hpp>
+#include <locus/intersection/segment_aligned_box.hpp>
 #include <locus/intersection/triangle_triangle.hpp>
 
 #include <limits>
@@ -32,6 +34,32 @@ py::array_t<double> f64(py::handle obj, const char* fn, const char* name,
   auto out = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
   if (!out) fail(fn, std::string("cannot convert ") + name + " to float64");
   check_finite(out.data(), static_cast<std::size_t>(out.size()), fn, name);
+  return out;
+}
+
+/// hit, t_enter, t_exit of n linear components against n boxes (min, max rows).
+template <class Lin>
+py::object box_hits(const Lin* lin, const AlignedBox3<double>* box, std::size_t n) {
+  const auto rows = static_cast<py::ssize_t>(n);
+  py::array_t<bool> hit(rows);
+  py::array_t<double> t0(rows), t1(rows);
+  bool* h = hit.mutable_data();
+  double* a = t0.mutable_data();
+  double* b = t1.mutable_data();
+  {
+    py::gil_scoped_release nogil;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto r = intersection(lin[i], box[i]);
+      h[i] = r.kind != Kind::empty;
+      a[i] = r.count > 0 ? r.param_a[0] : nan;
+      b[i] = r.count > 1 ? r.param_a[1] : a[i];
+    }
+  }
+  py::object out = new_result("BoxHits", Status::ok);
+  out.attr("hit") = hit;
+  out.attr("t_enter") = t0;
+  out.attr("t_exit") = t1;
   return out;
 }
 
@@ -143,6 +171,47 @@ closed mesh hits exactly one of the triangles there; edge-on and degenerate tria
 hit; zero directions never hit. Ties in t go to the lowest triangle index. RayHits: hit (bool),
 t (NaN where no hit), triangle (int64, -1 where no hit), barycentric ((n, 3): weights of v0, v1,
 v2), point ((n, 3)), front (hit from the side (v1 - v0) x (v2 - v0) points to).)doc");
+
+  m.def(
+      "ray_box_hits",
+      [](py::handle origins, py::handle directions, py::handle boxes) -> py::object {
+        const char* fn = "ray_box_hits";
+        const auto o = f64(origins, fn, "origins", {3}, "(n, 3)");
+        const auto d = f64(directions, fn, "directions", {3}, "(n, 3)");
+        const auto b = f64(boxes, fn, "boxes", {2, 3}, "(n, 2, 3): rows min, max");
+        if (o.shape(0) != d.shape(0) || o.shape(0) != b.shape(0))
+          fail(fn, "origins, directions and boxes must have the same number of rows");
+        const auto n = static_cast<std::size_t>(o.shape(0));
+        std::vector<Ray3<double>> rays(n);
+        const auto* po = reinterpret_cast<const Vec3<double>*>(o.data());
+        const auto* pd = reinterpret_cast<const Vec3<double>*>(d.data());
+        for (std::size_t i = 0; i < n; ++i) rays[i] = {po[i], pd[i]};
+        return box_hits(rays.data(), reinterpret_cast<const AlignedBox3<double>*>(b.data()), n);
+      },
+      py::arg("origins"), py::arg("directions"), py::arg("boxes"),
+      R"doc(Part of each ray origins[i] + t directions[i] (t >= 0) inside the closed box boxes[i]
+((n, 2, 3): rows min, max), by slab clipping with exact comparisons of the slab parameters.
+
+BoxHits: hit (bool), t_enter, t_exit (NaN where no hit; equal when the ray only touches the
+box). A zero direction acts as its origin point; an empty box (min > max) is never hit.)doc");
+
+  m.def(
+      "segment_box_hits",
+      [](py::handle segments, py::handle boxes) -> py::object {
+        const char* fn = "segment_box_hits";
+        const auto s = f64(segments, fn, "segments", {2, 3}, "(n, 2, 3): rows p0, p1");
+        const auto b = f64(boxes, fn, "boxes", {2, 3}, "(n, 2, 3): rows min, max");
+        if (s.shape(0) != b.shape(0))
+          fail(fn, "segments and boxes must have the same number of rows");
+        return box_hits(reinterpret_cast<const Segment3<double>*>(s.data()),
+                        reinterpret_cast<const AlignedBox3<double>*>(b.data()),
+                        static_cast<std::size_t>(s.shape(0)));
+      },
+      py::arg("segments"), py::arg("boxes"),
+      R"doc(Part of each segment p0 + t (p1 - p0), t in [0, 1], inside the closed box boxes[i]
+((n, 2, 3): rows min, max); exact decisions as in ray_box_hits.
+
+BoxHits: hit (bool), t_enter, t_exit (NaN where no hit).)doc");
 }
 
 }  // namespace locus::python

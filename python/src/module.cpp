@@ -86,6 +86,7 @@ for _name, _doc in [
     ("OrientationResult", "orient_consistently: faces, flipped, orientable, face_component, "
                           "non_orientable_components."),
     ("RayHits", "ray_triangle_hits: hit, t, triangle, barycentric, point, front."),
+    ("BoxHits", "ray_box_hits / segment_box_hits: hit, t_enter, t_exit."),
     ("CurveIntersections", "circle_circle: kind, count, points, multiplicity."),
 ]:
     _make(_name, _doc)

@@ -153,3 +153,72 @@ def test_bad_input():
         locus.ray_triangle_hits(o, o, np.zeros((3, 3)), [[0, 1, 3]])
     with pytest.raises(ValueError, match="shape"):
         locus.ray_triangle_hits(o, o, np.zeros((3, 3)))
+
+
+def exact_slab(o, d, lo, hi, t_max):
+    """[t0, t1] (Fractions) of o + t d inside the box for t in [0, t_max], or None; d holds
+    Fractions (a segment's p1 - p0, exact)."""
+    t0, t1 = Fraction(0), t_max
+    for k in range(3):
+        ok, dk, a, b = F(o[k]), d[k], F(lo[k]), F(hi[k])
+        if dk == 0:
+            if ok < a or ok > b:
+                return None
+            continue
+        u, w = (a - ok) / dk, (b - ok) / dk
+        if u > w:
+            u, w = w, u
+        t0 = max(t0, u)
+        t1 = w if t1 is None else min(t1, w)
+    if t1 is not None and t0 > t1:
+        return None
+    return t0, t1
+
+
+def close(x, t):
+    return abs(Fraction(float(x)) - t) <= (abs(t) + 1) * Fraction(1, 2**44)
+
+
+@pytest.mark.parametrize("segment", [False, True])
+def test_box_hits_exact(rng, segment):
+    n = 400
+    c = rng.random((n, 3)) * 2 - 1
+    e = rng.random((n, 3)) * 0.6
+    boxes = np.stack([c - e, c + e], axis=1)
+    o = rng.random((n, 3)) * 4 - 2
+    d = rng.normal(size=(n, 3))
+    # axis-parallel directions and rays starting on a face, exactly
+    d[:40, 1:] = 0
+    o[40:80] = boxes[40:80, 0]
+    p1 = o + d
+    if segment:
+        r = locus.segment_box_hits(np.stack([o, p1], axis=1), boxes)
+    else:
+        r = locus.ray_box_hits(o, d, boxes)
+    for i in range(n):
+        di = [F(p1[i, k]) - F(o[i, k]) if segment else F(d[i, k]) for k in range(3)]
+        want = exact_slab(o[i], di, boxes[i, 0], boxes[i, 1], Fraction(1) if segment else None)
+        assert r.hit[i] == (want is not None), i
+        if want is None:
+            assert np.isnan(r.t_enter[i]) and np.isnan(r.t_exit[i])
+        else:
+            assert close(r.t_enter[i], want[0]) and close(r.t_exit[i], want[1]), i
+    assert r.hit[40:80].all() and r.hit.any() and not r.hit.all()
+
+
+def test_box_hits_touching_and_bad_input():
+    box = np.array([[[0, 0, 0], [1, 1, 1.0]]] * 3)
+    o = np.array([[-1, 1, 0.5], [-1, 1 + 2.0**-52, 0.5], [0.5, 0.5, 0.5]])
+    d = np.array([[1, 0, 0], [1, 0, 0], [0, 0, 0.0]])
+    r = locus.ray_box_hits(o, d, box)
+    assert r.hit.tolist() == [True, False, True]     # grazing a face counts; just above: no
+    assert r.t_enter[0] == 1 and r.t_exit[0] == 2
+    assert r.t_enter[2] == r.t_exit[2] == 0          # a zero direction: its origin
+    empty = np.array([[[1, 0, 0], [0, 1, 1.0]]])
+    assert not locus.ray_box_hits([[0.5, 0.5, -1]], [[0, 0, 1.0]], empty).hit[0]
+    with pytest.raises(ValueError, match="non_finite_input"):
+        locus.ray_box_hits(o, d, np.where(box == 1, np.nan, box))
+    with pytest.raises(ValueError, match="same number"):
+        locus.ray_box_hits(o, d, box[:2])
+    with pytest.raises(ValueError, match="shape"):
+        locus.segment_box_hits(o, box)

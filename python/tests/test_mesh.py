@@ -354,7 +354,8 @@ def test_stub_fields_of_new_results():
     v, f = locus.tetrahedron()
     for r in (locus.check_mesh(v, f), locus.orient_consistently(f),
               locus.ray_triangle_hits(np.zeros((1, 3)), np.ones((1, 3)), v[f]),
-              locus.circle_circle([[0, 0]], [1], [[1, 0]], [1])):
+              locus.circle_circle([[0, 0]], [1], [[1, 0]], [1]),
+              locus.ray_box_hits(np.zeros((1, 3)), np.ones((1, 3)), np.ones((1, 2, 3)))):
         assert set(vars(r)) == fields[type(r).__name__] | {"status"}
 
 
