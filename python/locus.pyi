@@ -245,6 +245,9 @@ def segment_box_hits(segments: npt.ArrayLike, boxes: npt.ArrayLike) -> BoxHits: 
 def circle_circle(
     c0: npt.ArrayLike, r0: npt.ArrayLike, c1: npt.ArrayLike, r1: npt.ArrayLike
 ) -> CurveIntersections: ...
+def segment_circle(
+    segments: npt.ArrayLike, centers: npt.ArrayLike, radii: npt.ArrayLike
+) -> CurveIntersections: ...
 
 class SvgWriter:
     def __init__(

@@ -87,7 +87,7 @@ for _name, _doc in [
                           "non_orientable_components."),
     ("RayHits", "ray_triangle_hits: hit, t, triangle, barycentric, point, front."),
     ("BoxHits", "ray_box_hits / segment_box_hits: hit, t_enter, t_exit."),
-    ("CurveIntersections", "circle_circle: kind, count, points, multiplicity."),
+    ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make

@@ -87,3 +87,57 @@ def test_bad_input():
         locus.circle_circle(None, r, c, r)
     e = locus.circle_circle(np.zeros((0, 2)), np.zeros(0), np.zeros((0, 2)), np.zeros(0))
     assert e.count.shape == (0,) and e.points.shape == (0, 2, 2)
+
+
+def exact_segment_circle_count(p0, p1, c, r):
+    """Distinct roots in [0, 1] of q(t) = |p0 + t (p1 - p0) - c|^2 - r^2, exactly."""
+    d = [F(p1[k]) - F(p0[k]) for k in range(2)]
+    w = [F(p0[k]) - F(c[k]) for k in range(2)]
+    A = d[0] ** 2 + d[1] ** 2
+    B = 2 * (d[0] * w[0] + d[1] * w[1])
+    C = w[0] ** 2 + w[1] ** 2 - F(r) ** 2
+    if A == 0:
+        return 1 if C == 0 else 0
+    D = B * B - 4 * A * C
+    if D < 0:
+        return 0
+
+    def ge(s, bound):  # (-B + s sqrt(D)) / (2A) >= bound
+        K = 2 * A * bound + B
+        return (K <= 0 or D >= K * K) if s > 0 else (K <= 0 and D <= K * K)
+
+    def le(s, bound):  # (-B + s sqrt(D)) / (2A) <= bound
+        K = 2 * A * bound + B
+        return (K >= 0 and D <= K * K) if s > 0 else (K >= 0 or D >= K * K)
+
+    signs = [1] if D == 0 else [-1, 1]
+    return sum(1 for s in signs if ge(s, 0) and le(s, 1))
+
+
+def test_segment_circle_exact(rng):
+    n = 600
+    p0, p1 = rng.random((n, 2)) * 4 - 2, rng.random((n, 2)) * 4 - 2
+    c, rad = rng.random((n, 2)) - 0.5, rng.random(n) * 1.5
+    p1[:50] = p0[:50]                               # zero-length segments
+    r = locus.segment_circle(np.stack([p0, p1], axis=1), c, rad)
+    for i in range(n):
+        count = exact_segment_circle_count(p0[i], p1[i], c[i], rad[i])
+        assert r.count[i] == count, i
+        for j in range(count):
+            q = r.points[i, j]
+            assert abs(np.linalg.norm(q - c[i]) - rad[i]) <= 1e-12
+        if count == 2:
+            along = (r.points[i] - p0[i]) @ (p1[i] - p0[i])
+            assert along[0] <= along[1]
+    assert {0, 1, 2} <= set(r.count.tolist())
+    # tangent and end-point cases on integers
+    seg = np.array([[[-2, 1], [2, 1]], [[0, 0], [1, 0]], [[0, 0], [3, 0]], [[1, 0], [1, 0]]], float)
+    r = locus.segment_circle(seg, np.zeros((4, 2)), np.ones(4))
+    assert r.count.tolist() == [1, 1, 1, 1] and r.multiplicity[0, 0] == 2
+    assert np.array_equal(r.points[2, 0], [1, 0])
+    with pytest.raises(ValueError, match="shape"):
+        locus.segment_circle(np.zeros((2, 2)), np.zeros((2, 2)), np.ones(2))
+    with pytest.raises(ValueError, match="negative radius"):
+        locus.segment_circle(seg, np.zeros((4, 2)), -np.ones(4))
+    with pytest.raises(ValueError, match="non_finite_input"):
+        locus.segment_circle(seg, np.full((4, 2), np.inf), np.ones(4))
