@@ -224,4 +224,5 @@ PYBIND11_MODULE(locus, m) {
   bind_mesh(m);
   bind_intersection3(m);
   bind_intersection2(m);
+  bind_io(m);
 }

@@ -368,3 +368,27 @@ def test_all_pairs_touch_in_a_fan():
     r = assert_matches_oracle(v, f)
     assert len(r.self_intersections) == 0 and r.boundary_edges.shape == (k, 2)
     assert not r.closed and r.manifold and r.kind == "mesh"
+
+
+def test_read_points(tmp_path, rng):
+    p = rng.random((20, 3)) * 2.0**rng.integers(-30, 30, size=(20, 1))
+    csv = tmp_path / "p.csv"
+    csv.write_text("x,y,z\n" + "".join(f"{a!r},{b!r},{c!r}\n" for a, b, c in p))
+    q = locus.read_points(str(csv))
+    assert q.shape == (20, 3) and np.array_equal(q, p)   # repr round-trips exactly
+    two = tmp_path / "p.txt"
+    two.write_text("".join(f"{a!r},{b!r}\n" for a, b, _ in p))
+    assert np.array_equal(locus.read_points(str(two)), p[:, :2])
+    xyz = tmp_path / "p.xyz"
+    xyz.write_text("".join(f"{a!r} {b!r} {c!r}\n" for a, b, c in p))
+    assert np.array_equal(locus.read_points(str(xyz)), p)
+    bad = tmp_path / "bad.csv"
+    bad.write_text("1,2\n3,x\n")
+    with pytest.raises(ValueError, match="parse_error"):
+        locus.read_points(str(bad))
+    with pytest.raises(ValueError, match="io_error"):
+        locus.read_points(str(tmp_path / "missing.csv"))
+    with pytest.raises(ValueError, match="invalid_input"):
+        locus.read_points(str(csv), 4)
+    with pytest.raises(ValueError, match="unknown format"):
+        locus.read_points(str(csv), 0, "wkt")
