@@ -12,6 +12,9 @@ KIND_NAMES: tuple[str, ...]
 _Points = npt.ArrayLike
 _Floats = npt.NDArray[np.floating[Any]]
 _Indices = npt.NDArray[np.uint32]
+# Mesh faces: an (m, k) integer array, or a list of index sequences (polygons of mixed sizes).
+_Faces = npt.NDArray[np.uint32] | list[npt.NDArray[np.uint32]]
+_Mesh = tuple[_Floats, _Faces]
 
 class Result:
     status: str
@@ -127,6 +130,52 @@ class SegmentIntersections(Result):
     param_a: _Floats
     param_b: _Floats
 
+class MeshCheck(Result):
+    kind: str
+    closed: bool
+    manifold: bool
+    orientable: bool
+    convex: bool
+    euler_characteristic: int
+    vertex_count: int
+    edge_count: int
+    face_count: int
+    boundary_edges: _Indices
+    non_manifold_edges: _Indices
+    non_manifold_vertices: _Indices
+    isolated_vertices: _Indices
+    components: int
+    face_component: _Indices
+    self_intersections: _Indices
+    degenerate_faces: _Indices
+    non_planar_faces: _Indices
+
+class OrientationResult(Result):
+    faces: _Faces
+    flipped: npt.NDArray[np.bool_]
+    orientable: bool
+    face_component: _Indices
+    non_orientable_components: _Indices
+
+class RayHits(Result):
+    hit: npt.NDArray[np.bool_]
+    t: _Floats
+    triangle: npt.NDArray[np.int64]
+    barycentric: _Floats
+    point: _Floats
+    front: npt.NDArray[np.bool_]
+
+class BoxHits(Result):
+    hit: npt.NDArray[np.bool_]
+    t_enter: _Floats
+    t_exit: _Floats
+
+class CurveIntersections(Result):
+    kind: npt.NDArray[np.uint8]
+    count: npt.NDArray[np.int8]
+    points: _Floats
+    multiplicity: npt.NDArray[np.int8]
+
 def _input_address(points: _Points) -> tuple[int, bool]: ...
 def convex_hull(points: _Points, keep_collinear: bool = False) -> Hull2Result | Hull3Result: ...
 def delaunay(points: _Points) -> Delaunay2Result | Delaunay3Result: ...
@@ -160,6 +209,46 @@ def point_oriented_box_sqr_distances(points: _Points, boxes: npt.ArrayLike) -> _
 def gjk_distance(a: _Points, b: _Points) -> GjkResult: ...
 def penetration(a: _Points, b: _Points) -> PenetrationResult: ...
 def segment_intersections(a: npt.ArrayLike, b: npt.ArrayLike) -> SegmentIntersections: ...
+def check_mesh(
+    vertices: _Points, faces: npt.ArrayLike, coplanarity_tolerance: float = 0.0
+) -> MeshCheck: ...
+def self_intersections(vertices: _Points, faces: npt.ArrayLike) -> _Indices: ...
+def orient_consistently(
+    faces: npt.ArrayLike, vertex_count: int | None = None
+) -> OrientationResult: ...
+def tetrahedron() -> _Mesh: ...
+def hexahedron() -> _Mesh: ...
+def octahedron() -> _Mesh: ...
+def dodecahedron(triangulate: bool = False) -> _Mesh: ...
+def icosahedron() -> _Mesh: ...
+def uv_sphere(radius: float = 1.0, slices: int = 16, stacks: int = 8) -> _Mesh: ...
+def icosphere(radius: float = 1.0, levels: int = 2) -> _Mesh: ...
+def torus(
+    major_radius: float = 1.0,
+    minor_radius: float = 0.25,
+    major_segments: int = 32,
+    minor_segments: int = 16,
+) -> _Mesh: ...
+def cylinder(radius: float = 1.0, height: float = 2.0, slices: int = 16) -> _Mesh: ...
+def cone(radius: float = 1.0, height: float = 2.0, slices: int = 16) -> _Mesh: ...
+def read_mesh(path: str, format: str = "") -> _Mesh: ...
+def write_mesh(path: str, vertices: _Points, faces: npt.ArrayLike, format: str = "") -> None: ...
+def read_points(path: str, dimension: int = 0, format: str = "") -> _Floats: ...
+def triangles_intersect(a: npt.ArrayLike, b: npt.ArrayLike) -> npt.NDArray[np.bool_]: ...
+def ray_triangle_hits(
+    origins: _Points,
+    directions: _Points,
+    triangles: npt.ArrayLike,
+    faces: npt.ArrayLike | None = None,
+) -> RayHits: ...
+def ray_box_hits(origins: _Points, directions: _Points, boxes: npt.ArrayLike) -> BoxHits: ...
+def segment_box_hits(segments: npt.ArrayLike, boxes: npt.ArrayLike) -> BoxHits: ...
+def circle_circle(
+    c0: npt.ArrayLike, r0: npt.ArrayLike, c1: npt.ArrayLike, r1: npt.ArrayLike
+) -> CurveIntersections: ...
+def segment_circle(
+    segments: npt.ArrayLike, centers: npt.ArrayLike, radii: npt.ArrayLike
+) -> CurveIntersections: ...
 
 class SvgWriter:
     def __init__(

@@ -129,5 +129,9 @@ void bind_distance(py::module_& m);
 void bind_gjk(py::module_& m);
 void bind_intersection(py::module_& m);
 void bind_svg(py::module_& m);
+void bind_mesh(py::module_& m);
+void bind_intersection3(py::module_& m);
+void bind_intersection2(py::module_& m);
+void bind_io(py::module_& m);
 
 }  // namespace locus::python

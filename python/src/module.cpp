@@ -79,6 +79,15 @@ for _name, _doc in [
     ("GjkResult", "gjk_distance: contact, distance, closest (2, N), normal, iterations."),
     ("PenetrationResult", "penetration: contact, depth, normal, closest (2, N), iterations."),
     ("SegmentIntersections", "segment_intersections: kind, count, points, param_a, param_b."),
+    ("MeshCheck", "check_mesh: kind, closed, manifold, orientable, convex, euler_characteristic, "
+                  "counts, boundary_edges, non_manifold_edges / _vertices, isolated_vertices, "
+                  "components, face_component, self_intersections, degenerate_faces, "
+                  "non_planar_faces."),
+    ("OrientationResult", "orient_consistently: faces, flipped, orientable, face_component, "
+                          "non_orientable_components."),
+    ("RayHits", "ray_triangle_hits: hit, t, triangle, barycentric, point, front."),
+    ("BoxHits", "ray_box_hits / segment_box_hits: hit, t_enter, t_exit."),
+    ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make
@@ -212,4 +221,8 @@ PYBIND11_MODULE(locus, m) {
   bind_gjk(m);
   bind_intersection(m);
   bind_svg(m);
+  bind_mesh(m);
+  bind_intersection3(m);
+  bind_intersection2(m);
+  bind_io(m);
 }

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: BSL-1.0
+// 2D curve intersections over arrays: circle_circle (intersection/circle_circle.hpp: the count
+// decided exactly, points constructed). Inputs are converted to float64 (read in place when they
+// already are C-contiguous float64); NaN, infinite or negative radii raise ValueError.
+#include "common.hpp"
+
+#include <locus/intersection/circle_circle.hpp>
+#include <locus/intersection/segment_circle.hpp>
+
+#include <limits>
+#include <string>
+
+namespace locus::python {
+
+namespace {
+
+py::array_t<double> f64(py::handle obj, const char* fn, const char* name, int ndim, int cols) {
+  if (obj.is_none()) fail(fn, std::string(name) + " is None");
+  py::array a = py::array::ensure(obj);
+  if (!a) fail(fn, std::string(name) + " is not convertible to a numpy array");
+  const char kind = a.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    fail(fn, std::string(name) + " must hold real numbers, not dtype " +
+                 std::string(py::str(a.dtype())));
+  if (a.ndim() != ndim || (ndim == 2 && a.shape(1) != cols))
+    fail(fn, std::string(name) + " must have shape " + (ndim == 1 ? "(n,)" : "(n, 2)"));
+  auto out = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (!out) fail(fn, std::string("cannot convert ") + name + " to float64");
+  check_finite(out.data(), static_cast<std::size_t>(out.size()), fn, name);
+  return out;
+}
+
+/// CurveIntersections of n queries q(i) (an intersection() result with kind, count, point,
+/// multiplicity).
+template <class Q>
+py::object curve_results(std::size_t count_n, Q&& q) {
+  const auto n = static_cast<py::ssize_t>(count_n);
+  py::array_t<std::uint8_t> kind(n);
+  py::array_t<std::int8_t> count(n);
+  py::array_t<double> pts({n, py::ssize_t(2), py::ssize_t(2)});
+  py::array_t<std::int8_t> mult({n, py::ssize_t(2)});
+  std::uint8_t* k = kind.mutable_data();
+  std::int8_t* c = count.mutable_data();
+  std::int8_t* mu = mult.mutable_data();
+  double* p = pts.mutable_data();
+  {
+    py::gil_scoped_release nogil;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t i = 0; i < count_n; ++i) {
+      const auto r = q(i);
+      k[i] = static_cast<std::uint8_t>(r.kind);
+      c[i] = static_cast<std::int8_t>(r.count);
+      for (std::size_t j = 0; j < 2; ++j) {
+        const bool has = static_cast<int>(j) < r.count;
+        p[4 * i + 2 * j] = has ? r.point[j].x : nan;
+        p[4 * i + 2 * j + 1] = has ? r.point[j].y : nan;
+        mu[2 * i + j] = static_cast<std::int8_t>(has ? r.multiplicity[j] : 0);
+      }
+    }
+  }
+  py::object out = new_result("CurveIntersections", Status::ok);
+  out.attr("kind") = kind;
+  out.attr("count") = count;
+  out.attr("points") = pts;
+  out.attr("multiplicity") = mult;
+  return out;
+}
+
+}  // namespace
+
+void bind_intersection2(py::module_& m) {
+  m.def(
+      "circle_circle",
+      [](py::handle c0, py::handle r0, py::handle c1, py::handle r1) -> py::object {
+        const char* fn = "circle_circle";
+        const auto pc0 = f64(c0, fn, "c0", 2, 2), pc1 = f64(c1, fn, "c1", 2, 2);
+        const auto pr0 = f64(r0, fn, "r0", 1, 0), pr1 = f64(r1, fn, "r1", 1, 0);
+        const py::ssize_t n = pc0.shape(0);
+        if (pc1.shape(0) != n || pr0.shape(0) != n || pr1.shape(0) != n)
+          fail(fn, "c0, r0, c1, r1 must have the same length n");
+        for (const auto* r : {&pr0, &pr1})
+          for (py::ssize_t i = 0; i < n; ++i)
+            if (r->data()[i] < 0)
+              fail(fn, "invalid_input: negative radius at entry " + std::to_string(i));
+        const auto* a = reinterpret_cast<const Vec2<double>*>(pc0.data());
+        const auto* b = reinterpret_cast<const Vec2<double>*>(pc1.data());
+        const double* ra = pr0.data();
+        const double* rb = pr1.data();
+        return curve_results(static_cast<std::size_t>(n), [&](std::size_t i) {
+          return intersection(Circle2<double>{a[i], ra[i]}, Circle2<double>{b[i], rb[i]});
+        });
+      },
+      py::arg("c0"), py::arg("r0"), py::arg("c1"), py::arg("r1"),
+      R"doc(Common points of n pairs of circles (c0[i], r0[i]) and (c1[i], r1[i]): centres (n, 2),
+radii (n,) >= 0.
+
+The count is decided exactly (separated, tangent, crossing, nested, equal); points are
+constructed. CurveIntersections: kind (codes, names in locus.KIND_NAMES: 0 empty, 1 point (a
+tangency), 2 points (two crossings, point 0 right of c0 -> c1), 11 coincident (equal circles,
+count 0)), count (0..2), points ((n, 2, 2), NaN where unused), multiplicity ((n, 2): 1 crossing,
+2 tangency, 0 unused).)doc");
+
+  m.def(
+      "segment_circle",
+      [](py::handle segments, py::handle centers, py::handle radii) -> py::object {
+        const char* fn = "segment_circle";
+        py::array sa = py::array::ensure(segments);
+        if (!sa || sa.ndim() != 3 || sa.shape(1) != 2 || sa.shape(2) != 2)
+          fail(fn, "segments must have shape (n, 2, 2): n segments (p0, p1) in 2D");
+        const auto s2 = f64(sa.reshape({sa.shape(0), py::ssize_t(4)}), fn, "segments", 2, 4);
+        const auto c = f64(centers, fn, "centers", 2, 2);
+        const auto r = f64(radii, fn, "radii", 1, 0);
+        const py::ssize_t n = s2.shape(0);
+        if (c.shape(0) != n || r.shape(0) != n)
+          fail(fn, "segments, centers and radii must have the same length n");
+        for (py::ssize_t i = 0; i < n; ++i)
+          if (r.data()[i] < 0)
+            fail(fn, "invalid_input: negative radius at entry " + std::to_string(i));
+        const auto* ps = reinterpret_cast<const Segment2<double>*>(s2.data());
+        const auto* pc = reinterpret_cast<const Vec2<double>*>(c.data());
+        const double* pr = r.data();
+        return curve_results(static_cast<std::size_t>(n), [&](std::size_t i) {
+          return intersection(ps[i], Circle2<double>{pc[i], pr[i]});
+        });
+      },
+      py::arg("segments"), py::arg("centers"), py::arg("radii"),
+      R"doc(Common points of n segments (n, 2, 2) (rows p0, p1) and circles (centers (n, 2), radii
+(n,) >= 0).
+
+The count is decided exactly (tangency included); points are constructed, by increasing
+parameter along the segment. CurveIntersections: kind (0 empty, 1 point, 2 points), count,
+points ((n, 2, 2), NaN where unused), multiplicity (1 crossing, 2 tangency).)doc");
+}
+
+}  // namespace locus::python
