@@ -344,3 +344,42 @@ TEST(PointListFuzzCorpus, EveryCommittedInputKeepsTheReaderProperty) {
 }
 
 }  // namespace
+
+namespace {
+
+// Rows of six fields (ray files of `locus raycast`: origin and direction): read only. The
+// values come from an independent printer and parser; a fifth or seventh field, or a bad
+// number, is parse_error on its own line.
+TYPED_TEST(PointListTest, SixColumnRowsReadAsPrintfPrintsThem) {
+  using T = TypeParam;
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const auto pts = awkward_points<T, 6>(rng, 200);
+  const int digits = std::numeric_limits<T>::max_digits10;
+  std::string text = "ox,oy,oz,dx,dy,dz\n";
+  std::vector<locus::Vec<T, 6>> expected;
+  for (const auto& p : pts) {
+    locus::Vec<T, 6> e{};
+    for (int i = 0; i < 6; ++i) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.*g", digits, double(p[i]));
+      e[i] = strto<T>(buf);
+      text += buf;
+      text += i < 5 ? "," : "\n";
+    }
+    expected.push_back(e);
+  }
+  const auto r = locus::parse_points<T, 6>(text, PointListFormat::csv);
+  ASSERT_EQ(r.status, Status::ok) << r.message;
+  EXPECT_TRUE(same_bits(expected, r.points));
+
+  const char* const bad[] = {"1,2,3,4,5,6\n1,2,3,4,5\n", "1,2,3,4,5,6\n1,2,3,4,5,6,7\n",
+                             "1,2,3,4,5,6\n1,2,3,4,x,6\n", "1,2,3,4,5,6\n1,2,3,4,5,nan\n"};
+  for (const char* b : bad) {
+    const auto e = locus::parse_points<T, 6>(b, PointListFormat::csv);
+    EXPECT_EQ(e.status, Status::parse_error) << b;
+    EXPECT_EQ(e.line, 2u) << b << ": " << e.message;
+  }
+}
+
+}  // namespace
