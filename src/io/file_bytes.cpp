@@ -26,7 +26,6 @@ namespace locus::io_detail {
 
 namespace {
 
-
 // A buffer of n bytes, nullptr when it cannot be allocated.
 std::unique_ptr<char[]> uninitialised_buffer(std::size_t n) noexcept {
   try {

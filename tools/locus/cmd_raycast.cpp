@@ -16,8 +16,8 @@ namespace locus_cli {
 namespace {
 
 struct RaycastOptions {
-  Common common;      // input: the mesh
-  std::string rays;   // the rays file
+  Common common;     // input: the mesh
+  std::string rays;  // the rays file
 };
 
 struct Hit {
