@@ -32,6 +32,12 @@
 #include <locus/triangulate/ear_clipping.hpp>
 #include <locus/triangulate/monotone.hpp>
 
+// tools/locus/CMakeLists.txt defines the path of the built tool; tests/CMakeLists.txt builds
+// this area only with LOCUS_BUILD_TOOLS.
+#ifndef LOCUS_CLI_PATH
+#error "LOCUS_CLI_PATH (the locus tool) is not defined"
+#endif
+#include "support/files.hpp"
 #include "support/typed.hpp"
 
 #include <sys/wait.h>
@@ -63,10 +69,7 @@ struct Outcome {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using locus_test::slurp;
 
 void spit(const fs::path& p, const std::string& s) {
   std::ofstream out(p, std::ios::binary);
@@ -77,9 +80,6 @@ void spit(const fs::path& p, const std::string& s) {
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-#ifndef LOCUS_CLI_PATH
-    GTEST_SKIP() << "the locus tool is not built (LOCUS_BUILD_TOOLS=OFF)";
-#endif
     static std::atomic<int> counter{0};
     dir_ = fs::temp_directory_path() /
            ("locus_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
@@ -96,7 +96,6 @@ class Cli : public ::testing::Test {
   // file on standard input.
   Outcome run(const std::string& args, const std::string& stdin_file = {}) const {
     Outcome r;
-#ifdef LOCUS_CLI_PATH
     const std::string out = path("stdout.txt"), err = path("stderr.txt");
     std::string cmd =
         std::string("'") + LOCUS_CLI_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
@@ -105,10 +104,6 @@ class Cli : public ::testing::Test {
     r.code = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
     r.out = slurp(out);
     r.err = slurp(err);
-#else
-    (void)args;
-    (void)stdin_file;
-#endif
     return r;
   }
 

@@ -5,6 +5,7 @@
 // what the clang-only fuzz step found.
 
 #include "fuzz/mesh_fuzz.hpp"
+#include "support/files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,10 +16,7 @@
 
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using locus_test::slurp;
 
 TEST(MeshFuzzCorpus, EveryCommittedInputKeepsTheReaderProperty) {
   const std::filesystem::path root = std::filesystem::path(LOCUS_SOURCE_DIR) / "tests" / "fuzz";

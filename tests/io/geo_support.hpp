@@ -4,6 +4,8 @@
 // cover the awkward doubles and floats (subnormals, the largest finite values, -0, random bit
 // patterns), and a bit-exact comparison (tests/fuzz/geo_fuzz.hpp).
 
+#include <locus/io/geometry.hpp>
+
 #include "fuzz/geo_fuzz.hpp"
 #include "support/typed.hpp"
 

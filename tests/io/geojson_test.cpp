@@ -10,6 +10,7 @@
 #include <locus/io/geojson.hpp>
 
 #include "geo_support.hpp"
+#include "support/files.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -30,10 +31,7 @@ template <class T>
 class GeoJsonTest : public ::testing::Test {};
 TYPED_TEST_SUITE(GeoJsonTest, locus_test::RealTypes);
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using locus_test::slurp;
 
 TYPED_TEST(GeoJsonTest, RoundTripIsBitExact) {
   using T = TypeParam;

@@ -9,6 +9,7 @@
 #include <locus/io/point_list.hpp>
 
 #include "fuzz/csv_fuzz.hpp"
+#include "support/files.hpp"
 #include "support/typed.hpp"
 
 #include <unistd.h>
@@ -306,10 +307,7 @@ TEST(PointList, WritesAnyPointRangeWithoutTemplateArguments) {
   EXPECT_TRUE(same_bits(std::vector<locus::Vec3d>(a.begin(), a.end()), ra.points));
 }
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using locus_test::slurp;
 
 TEST(PointListFuzzCorpus, EveryCommittedInputKeepsTheReaderProperty) {
   const std::filesystem::path root = std::filesystem::path(LOCUS_SOURCE_DIR) / "tests" / "fuzz";

@@ -10,6 +10,7 @@
 #include <locus/io/wkt.hpp>
 
 #include "geo_support.hpp"
+#include "support/files.hpp"
 
 #include <gmpxx.h>
 
@@ -37,10 +38,7 @@ template <class T>
 class WktTest : public ::testing::Test {};
 TYPED_TEST_SUITE(WktTest, locus_test::RealTypes);
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using locus_test::slurp;
 
 TYPED_TEST(WktTest, RoundTripIsBitExact) {
   using T = TypeParam;
