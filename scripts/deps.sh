@@ -21,8 +21,9 @@ LOCUS_BUILD_PACKAGES=(g++ cmake ninja-build libcli11-dev)
 # Test and benchmark dependencies: GoogleTest, GMP rationals (exact oracle), Google Benchmark,
 # Eigen (test/benchmark oracle for the numerics).
 LOCUS_TEST_PACKAGES=(libgtest-dev libgmp-dev libbenchmark-dev libeigen3-dev)
-# The fuzz step of scripts/test only: clang with libFuzzer's runtime (-fsanitize=fuzzer).
-LOCUS_FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev)
+# Clang with its sanitizer and libFuzzer runtimes: the sanitizer build and the fuzz step of
+# scripts/test.
+LOCUS_CLANG_PACKAGES=(clang-14 libclang-rt-14-dev)
 # The Python step of scripts/test: the pybind11 module and its tests (numpy in and out, scipy
 # and shapely as oracles, Dask for the scale-out example), all for Debian's /usr/bin/python3.
 LOCUS_PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-scipy python3-shapely

@@ -969,8 +969,8 @@ GjkDistance<T, N> gjk_distance(const SupportMap<T, N>& a, const SupportMap<T, N>
                                const GjkOptions<T, N>& opt) noexcept {
   GjkDistance<T, N> r;
   r.status = Status::ok;
-  constexpr T nan = std::numeric_limits<T>::quiet_NaN();
-  const auto non_finite = [&r, nan](Status s) {
+  static constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+  const auto non_finite = [&r](Status s) {
     r.status = s;
     r.distance = r.sqr_distance = nan;
     r.closest = {splat<T, N>(nan), splat<T, N>(nan)};
@@ -1030,8 +1030,8 @@ Penetration<T, N> penetration(const SupportMap<T, N>& a, const SupportMap<T, N>&
                               const GjkOptions<T, N>& opt) noexcept {
   Penetration<T, N> r;
   r.status = Status::ok;
-  constexpr T nan = std::numeric_limits<T>::quiet_NaN();
-  const auto non_finite = [&r, nan](Status s) {
+  static constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+  const auto non_finite = [&r](Status s) {
     r.status = s;
     r.depth = nan;
     r.closest = {splat<T, N>(nan), splat<T, N>(nan)};

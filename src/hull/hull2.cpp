@@ -147,7 +147,7 @@ void ConvexHull2<T>::compute(std::span<const Vec2<T>> points, const Hull2Options
       for (int k = 0; k < 4; ++k) lo[k] = ext_min[k], hi[k] = ext_max[k];
       for (std::size_t i = b0; i < b1; ++i) {
         const Vec2<T> p = points[i];
-        finite &= (std::abs(p.x) <= big) & (std::abs(p.y) <= big);
+        finite &= std::abs(p.x) <= big && std::abs(p.y) <= big;
         const double x = static_cast<double>(p.x), y = static_cast<double>(p.y);
         const double v[4] = {y, x, x + y, x - y};
         for (int k = 0; k < 4; ++k) {

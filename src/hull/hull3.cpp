@@ -104,7 +104,7 @@ void ConvexHull3<T>::compute(std::span<const Vec3<T>> points, const Hull3Options
   bool finite = true;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3<T> p = points[i];
-    finite &= (std::abs(p.x) <= big) & (std::abs(p.y) <= big) & (std::abs(p.z) <= big);
+    finite &= std::abs(p.x) <= big && std::abs(p.y) <= big && std::abs(p.z) <= big;
     if (!filter) continue;
     const double x = static_cast<double>(p.x), y = static_cast<double>(p.y),
                  z = static_cast<double>(p.z);

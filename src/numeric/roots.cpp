@@ -63,13 +63,6 @@ inline int compensated_sign(const double* a, int n, double x, double* value) noe
 
 inline int sgn(double v) noexcept { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 
-/// Sign of p(x): Horner when its error bound allows, else compensated Horner.
-inline int sign_at(const double* a, int n, double x, const Eval& e) noexcept {
-  if (std::abs(e.v) > gamma(2 * n + 1) * e.abs_sum) return sgn(e.v);
-  double dummy;
-  return compensated_sign(a, n, x, &dummy);
-}
-
 inline constexpr int refine_budget = 2200;  // bisection alone needs < 2100 steps on doubles
 
 /// The root of p in the open bracket (lo, hi), p monotone there, sign(p(lo)) = s_lo != 0,

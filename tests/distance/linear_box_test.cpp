@@ -317,7 +317,8 @@ TYPED_TEST(LinearBoxTest, DegenerateAndNonFinite) {
   EXPECT_TRUE(dist::is_nan_result(distance(Segment3<T>{{0, 0, 0}, {1, 0, 0}}, bad)));
   // Swapped overloads are the swap, bit for bit.
   const Segment3<T> sg{{3, 0.5, 2}, {-1, 4, 2}};
-  const auto a = distance(sg, box), b = distance(box, sg);
+  const auto a = distance(sg, box);
+  const auto b = distance(box, sg);
   EXPECT_EQ(a.sqr_distance, b.sqr_distance);
   EXPECT_EQ(a.closest[0], b.closest[1]);
   EXPECT_EQ(a.param_b, b.param_a);

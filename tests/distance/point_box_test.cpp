@@ -93,7 +93,7 @@ void oracles() {
     const auto box = random_aabb<T, N>(rng, S);
     mpq_class e = 0;
     for (int i = 0; i < N; ++i) {
-      const mpq_class x(double(p[i])), lo(double(box.min[i])), hi(double(box.max[i]));
+      const mpq_class x{double(p[i])}, lo{double(box.min[i])}, hi{double(box.max[i])};
       if (x < lo) e += (lo - x) * (lo - x);
       if (x > hi) e += (x - hi) * (x - hi);
     }

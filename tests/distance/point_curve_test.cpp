@@ -176,7 +176,8 @@ std::pair<LD, LD> ld_domain(const Curve& c) {
 
 template <class T, int N, class Curve>
 LD oracle_curve(const Vec<T, N>& p, const Curve& c) {
-  const auto [a, b] = ld_domain(c);
+  const auto domain = ld_domain(c);
+  const LD a = domain.first, b = domain.second;  // clang 14 cannot capture bindings
   // Clamped: a + (b - a) * n / n (and a bracket's end) can round one ulp beyond b, where no
   // basis function is 1 and ld_point returned the origin (seed 11: |p| = 10.58 taken for the
   // distance 11.95 to the end of the curve).

@@ -263,7 +263,8 @@ TYPED_TEST(PointFrustumTest, DegenerateAndNonFinite) {
   EXPECT_TRUE(dist::is_nan_result(distance(Vec2<T>{0, 0}, b2)));
   EXPECT_TRUE(dist::is_nan_result(distance(Vec2<T>{nan, 0}, f2)));
   // Swap.
-  const auto a = distance(V{3, -2, 7}, flat), b = distance(flat, V{3, -2, 7});
+  const auto a = distance(V{3, -2, 7}, flat);
+  const auto b = distance(flat, V{3, -2, 7});
   EXPECT_EQ(a.sqr_distance, b.sqr_distance);
   EXPECT_EQ(a.closest[1], b.closest[0]);
   EXPECT_EQ(a.param_b, b.param_a);

@@ -312,7 +312,8 @@ std::array<LD, 4> ld_domain(const S& s) {
 template <class T, class S>
 LD oracle_surface(const Vec3<T>& p, const S& s) {
   constexpr bool tri = std::is_same_v<S, BezierTriangle<T, 3>>;
-  const auto [a, b, c, d] = ld_domain(s);
+  const std::array<LD, 4> domain = ld_domain(s);
+  const LD a = domain[0], b = domain[1], c = domain[2], d = domain[3];  // lambdas capture these
   const VL pl = to_ld(p);
   const auto clampd = [&](LD& u, LD& v) {
     if constexpr (tri) {

@@ -55,7 +55,7 @@ struct Side<locus::Frustum3<T>> {
     o.right = r * f.right;
     return o;
   }
-  static P scaled(const P& f, T k) { return scaled_frustum(f, k); }
+  static P scaled(const P& f, T factor) { return scaled_frustum(f, factor); }
 };
 
 template <class T>
@@ -79,7 +79,7 @@ struct Side<locus::Frustum2<T>> {
     o.left = r * f.left;
     return o;
   }
-  static P scaled(const P& f, T k) { return scaled_frustum(f, k); }
+  static P scaled(const P& f, T factor) { return scaled_frustum(f, factor); }
 };
 
 }  // namespace locus_test::dist

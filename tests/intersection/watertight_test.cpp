@@ -32,15 +32,15 @@ using namespace locus;
 using locus_test::Rng;
 
 #if defined(__SANITIZE_ADDRESS__)
-constexpr bool sanitized = true;
+[[maybe_unused]] constexpr bool sanitized = true;
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-constexpr bool sanitized = true;
+[[maybe_unused]] constexpr bool sanitized = true;
 #else
-constexpr bool sanitized = false;
+[[maybe_unused]] constexpr bool sanitized = false;
 #endif
 #else
-constexpr bool sanitized = false;
+[[maybe_unused]] constexpr bool sanitized = false;
 #endif
 
 long ray_budget() {
