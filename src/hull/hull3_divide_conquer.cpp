@@ -295,13 +295,15 @@ class DivideConquer3 {
     keys_.clear();
     for (std::size_t k = 0; k < nband; ++k) {
       const Step& s = band_[k];
-      keys_.push_back({std::uint64_t(s.in_a ? s.a : s.b) << 32 | s.c, static_cast<std::uint32_t>(k)});
+      keys_.push_back(
+          {std::uint64_t(s.in_a ? s.a : s.b) << 32 | s.c, static_cast<std::uint32_t>(k)});
     }
     std::sort(keys_.begin(), keys_.end());
     for (std::size_t k = 0; k < nband; ++k) {
       const Step& s = band_[k];
       const std::uint64_t rev = std::uint64_t(s.c) << 32 | (s.in_a ? s.a : s.b);
-      const auto it = std::lower_bound(keys_.begin(), keys_.end(), std::make_pair(rev, std::uint32_t(0)));
+      const auto it =
+          std::lower_bound(keys_.begin(), keys_.end(), std::make_pair(rev, std::uint32_t(0)));
       if (it != keys_.end() && it->first == rev) twin_[k] = it->second;
     }
     const std::uint32_t kept = ++stamp_;

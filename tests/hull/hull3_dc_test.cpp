@@ -129,9 +129,8 @@ void compare(const std::vector<Vec3<T>>& p) {
   EXPECT_TRUE(valid(p, dc, p.size() <= 200));
   const auto fd = facets(p, dc), fr = facets(p, ref);
   EXPECT_EQ(fd, fr);
-  const bool simplicial = std::all_of(fd.begin(), fd.end(), [](const auto& f) {
-    return f.size() == 3;
-  });
+  const bool simplicial =
+      std::all_of(fd.begin(), fd.end(), [](const auto& f) { return f.size() == 3; });
   if (simplicial) {
     EXPECT_EQ(canonical(dc), canonical(ref));
   }
@@ -163,8 +162,8 @@ TYPED_TEST(Hull3Dc, Figure13_40TwoIcosahedra) {
 // Figure 13.41: a pyramid and a segment behind it (a flat sub-problem at the merge).
 TYPED_TEST(Hull3Dc, Figure13_41PyramidAndSegment) {
   using T = TypeParam;
-  const double xyz[][3] = {{0, 0, 3},   {-4, 0, 0},  {4, 0, 0},   {0, 0, 4},    {2, 2, 0},
-                           {2, -2, 0},  {-2, -2, 0}, {-2, 2, 0},  {-1, 0, 3.5}, {1, 0, 3.5}};
+  const double xyz[][3] = {{0, 0, 3},  {-4, 0, 0},  {4, 0, 0},  {0, 0, 4},    {2, 2, 0},
+                           {2, -2, 0}, {-2, -2, 0}, {-2, 2, 0}, {-1, 0, 3.5}, {1, 0, 3.5}};
   std::vector<Vec3<T>> pts;
   for (const auto& c : xyz) pts.push_back({T(c[0]), T(c[1]), T(c[2])});
   compare(pts);
@@ -258,8 +257,7 @@ TYPED_TEST(Hull3Dc, IntegerGrids) {
   for (const int n : {10, 30, 100, 300, 2000}) {
     std::vector<Vec3<T>> pts;
     for (int i = 0; i < n; ++i)
-      pts.push_back({T(rng.uniform_int(0, 6)), T(rng.uniform_int(0, 6)),
-                     T(rng.uniform_int(0, 6))});
+      pts.push_back({T(rng.uniform_int(0, 6)), T(rng.uniform_int(0, 6)), T(rng.uniform_int(0, 6))});
     SCOPED_TRACE(n);
     compare(pts);
   }
