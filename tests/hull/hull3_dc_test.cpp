@@ -215,7 +215,7 @@ TYPED_TEST(Hull3Dc, RandomCube) {
   using T = TypeParam;
   locus_test::Rng rng;
   SCOPED_TRACE(rng.trace());
-  for (const int n : {4, 5, 6, 9, 12, 17, 33, 64, 100, 250, 3000}) {
+  for (const int n : {4, 5, 6, 9, 12, 17, 33, 64, 100, 250, 2000}) {
     const int reps = n <= 100 ? 6 : 1;
     for (int rep = 0; rep < reps; ++rep) {
       std::vector<Vec3<T>> pts;
@@ -231,7 +231,7 @@ TYPED_TEST(Hull3Dc, SphereSurface) {
   using T = TypeParam;
   locus_test::Rng rng;
   SCOPED_TRACE(rng.trace());
-  for (const int n : {20, 150, 2000}) {
+  for (const int n : {20, 150, 1500}) {
     std::vector<Vec3<T>> pts;
     while (pts.size() < static_cast<std::size_t>(n)) {
       const Vec3<double> d = rng.vec<double, 3>(-1.0, 1.0);
