@@ -817,7 +817,12 @@ std::vector<Tri> canonical_triangles(const Hull3Result& r) {
 // original hull are "old": edges between old faces dashed, edges between new (band) faces
 // dotted, edges where old meets new solid.
 bool fig_13_40(SvgWriter& w) {
-  const std::vector<Vec3d> a = icosahedron({0, 0, 0}, 0.8), b = icosahedron({3.0, 0.6, 1.2}, 0.8);
+  // The right one turned about a generic axis: a translated copy would give parallel edges,
+  // hence coplanar quadruples on the band, where the method falls back to the incremental hull.
+  const Vec3d right{3.0, 0.6, 1.2};
+  const std::vector<Vec3d> a = icosahedron({0, 0, 0}, 0.8),
+                           b = map_points(rotation(right, Vec3d{1, 2, 3}, 0.7),
+                                          icosahedron(right, 0.8));
   std::vector<Vec3d> all = a;
   all.insert(all.end(), b.begin(), b.end());
   const Hull3Result ha = convex_hull(a), hb = convex_hull(b);

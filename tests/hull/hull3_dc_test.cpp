@@ -141,21 +141,34 @@ class Hull3Dc : public ::testing::Test {};
 TYPED_TEST_SUITE(Hull3Dc, locus_test::RealTypes);
 
 // Figure 13.40: two icosahedra (golden ratio ~ 13/8) side by side; the merge wraps a band of
-// triangles between them. Also with the right one shifted so both share the plane x = 1.
+// triangles between them. The right one turned about a generic axis (the lexicographic halves
+// are the two icosahedra, merged by one wrap), or only translated (parallel edges: coplanar
+// quadruples on the band), also overlapping in x.
 TYPED_TEST(Hull3Dc, Figure13_40TwoIcosahedra) {
   using T = TypeParam;
   const double g = 1.625;
+  const double l = std::sqrt(14.0), u[3] = {1 / l, 2 / l, 3 / l};
+  const double c = std::cos(0.7), s = std::sin(0.7);
   for (const double shift : {3.0, 2.0, 0.5}) {
-    std::vector<Vec3<T>> pts;
-    for (const double dx : {0.0, shift})
-      for (const double s1 : {-1.0, 1.0})
-        for (const double s2 : {-g, g}) {
-          pts.push_back({T(dx), T(s1), T(s2)});
-          pts.push_back({T(s1 + dx), T(s2), T(0)});
-          pts.push_back({T(s2 + dx), T(0), T(s1)});
-        }
-    SCOPED_TRACE(shift);
-    compare(pts);
+    for (const bool turn : {false, true}) {
+      std::vector<Vec3<T>> pts;
+      for (const double dx : {0.0, shift})
+        for (const double s1 : {-1.0, 1.0})
+          for (const double s2 : {-g, g})
+            for (const auto& q :
+                 {Vec3<double>{0, s1, s2}, Vec3<double>{s1, s2, 0}, Vec3<double>{s2, 0, s1}}) {
+              Vec3<double> r = q;
+              if (turn && dx != 0) {  // Rodrigues: c q + s (u x q) + (1 - c)(u . q) u
+                const double d = (u[0] * q.x + u[1] * q.y + u[2] * q.z) * (1 - c);
+                r = {c * q.x + s * (u[1] * q.z - u[2] * q.y) + d * u[0],
+                     c * q.y + s * (u[2] * q.x - u[0] * q.z) + d * u[1],
+                     c * q.z + s * (u[0] * q.y - u[1] * q.x) + d * u[2]};
+              }
+              pts.push_back({T(r.x + dx), T(r.y), T(r.z)});
+            }
+      SCOPED_TRACE(::testing::Message() << "shift " << shift << " turn " << turn);
+      compare(pts);
+    }
   }
 }
 
