@@ -228,8 +228,8 @@ TYPED_TEST(Hull3Dc, RandomCube) {
   using T = TypeParam;
   locus_test::Rng rng;
   SCOPED_TRACE(rng.trace());
-  for (const int n : {4, 5, 6, 9, 12, 17, 33, 64, 100, 250, 2000}) {
-    const int reps = n <= 100 ? 6 : 1;
+  for (const int n : {4, 5, 6, 9, 12, 17, 33, 64, 100, 250, 1500}) {
+    const int reps = n <= 100 ? 4 : 1;
     for (int rep = 0; rep < reps; ++rep) {
       std::vector<Vec3<T>> pts;
       for (int i = 0; i < n; ++i) pts.push_back(rng.vec<T, 3>(T(-1), T(1)));
@@ -244,7 +244,7 @@ TYPED_TEST(Hull3Dc, SphereSurface) {
   using T = TypeParam;
   locus_test::Rng rng;
   SCOPED_TRACE(rng.trace());
-  for (const int n : {20, 150, 1500}) {
+  for (const int n : {20, 150, 1000}) {
     std::vector<Vec3<T>> pts;
     while (pts.size() < static_cast<std::size_t>(n)) {
       const Vec3<double> d = rng.vec<double, 3>(-1.0, 1.0);
