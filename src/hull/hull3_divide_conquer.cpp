@@ -12,6 +12,8 @@
 
 #include <locus/hull/hull3.hpp>
 
+#include <locus/config.hpp>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -76,7 +78,9 @@ class DivideConquer3 {
     const Sub root = recurse(s.data(), s.size());
     out.triangles.clear();
     out.adjacency.clear();
-    if (!root.full) return;  // cannot happen: the caller found four non-coplanar points
+    // The caller found four non-coplanar points, so the root's hull is 3D.
+    LOCUS_ASSERT(root.full, "divide_and_conquer: a 3D set gave a flat hull");
+    if (!root.full) return;
     // Collect the root's faces (a flood over the adjacency) and renumber them.
     std::vector<std::uint32_t> map(faces_.size(), kNil), stack{vface_[root.verts[0]]};
     map[stack[0]] = 0;
