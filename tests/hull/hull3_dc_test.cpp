@@ -281,6 +281,27 @@ TYPED_TEST(Hull3Dc, IntegerGrids) {
   compare(slabs);
 }
 
+// A half whose hull meets the merged hull in one vertex only (a thin cluster far out on the
+// axis of a wide ring: every face of it is hidden but the apex), on either side.
+TYPED_TEST(Hull3Dc, HalfTouchingInOneVertex) {
+  using T = TypeParam;
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (const double sx : {1.0, -1.0}) {
+    std::vector<Vec3<T>> pts{{T(-100 * sx), T(0), T(0)}};
+    for (int i = 0; i < 15; ++i)
+      pts.push_back({T((-99 + rng.uniform(-0.5, 0.5)) * sx), T(rng.uniform(-0.01, 0.01)),
+                     T(rng.uniform(-0.01, 0.01))});
+    for (int i = 0; i < 16; ++i) {
+      const double t = 0.39269908169872414 * i + rng.uniform(-0.1, 0.1);  // 2 pi / 16
+      pts.push_back({T(sx * rng.uniform(0.0, 1.0)), T(50 * std::cos(t)), T(50 * std::sin(t))});
+    }
+    SCOPED_TRACE(sx);
+    compare(pts);
+    EXPECT_EQ(hull(pts, Hull3Method::divide_and_conquer).vertices.size(), 17u);
+  }
+}
+
 // Many exact duplicates in shuffled order: the smallest index represents each point.
 TYPED_TEST(Hull3Dc, Duplicates) {
   using T = TypeParam;
