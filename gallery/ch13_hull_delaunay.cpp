@@ -800,16 +800,37 @@ void hull_wireframe(SvgWriter& w, const std::vector<Vec3d>& v, const std::vector
   }
 }
 
-// 13.40: (a) two icosahedra (locus::convex_hull of each); (b) the hull of their union. Its faces
-// that are faces of an original hull are "old": edges between old faces dashed, edges between
-// new faces dotted, edges where old meets new solid.
+// Triangles rotated to start at their smallest index, sorted: equal hulls, equal lists.
+std::vector<Tri> canonical_triangles(const Hull3Result& r) {
+  std::vector<Tri> out;
+  for (Tri t : r.triangles) {
+    while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+    out.push_back(t);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// 13.40: (a) two icosahedra (locus::convex_hull of each); (b) the hull of their union by the
+// divide-and-conquer method (the lexicographic halves are the two icosahedra, merged by wrapping
+// the band of new faces), checked against the incremental hull. Its faces that are faces of an
+// original hull are "old": edges between old faces dashed, edges between new (band) faces
+// dotted, edges where old meets new solid.
 bool fig_13_40(SvgWriter& w) {
-  const std::vector<Vec3d> a = icosahedron({0, 0, 0}, 0.8), b = icosahedron({3.0, 0.6, 1.2}, 0.8);
+  // The right one turned about a generic axis: a translated copy would give parallel edges,
+  // hence coplanar quadruples on the band, where the method falls back to the incremental hull.
+  const Vec3d right{3.0, 0.6, 1.2};
+  const std::vector<Vec3d> a = icosahedron({0, 0, 0}, 0.8),
+                           b = map_points(rotation(right, Vec3d{1, 2, 3}, 0.7),
+                                          icosahedron(right, 0.8));
   std::vector<Vec3d> all = a;
   all.insert(all.end(), b.begin(), b.end());
-  const Hull3Result ha = convex_hull(a), hb = convex_hull(b), hu = convex_hull(all);
-  for (const Hull3Result* r : {&ha, &hb, &hu})
+  const Hull3Result ha = convex_hull(a), hb = convex_hull(b);
+  const Hull3Result hu = convex_hull(all, Hull3Options{Hull3Method::divide_and_conquer});
+  const Hull3Result hi = convex_hull(all, Hull3Options{Hull3Method::incremental});
+  for (const Hull3Result* r : {&ha, &hb, &hu, &hi})
     if (r->status != Status::ok || r->dimension != 3) return false;
+  if (canonical_triangles(hu) != canonical_triangles(hi)) return false;
   w.set_camera(camera({3, -14, 4}, {4.5, 0, 0.6}));
   hull_wireframe(w, a, ha.triangles, {0, 0, 0}, c::blue);
   hull_wireframe(w, b, hb.triangles, {0, 0, 0}, c::green);
@@ -855,11 +876,20 @@ bool fig_13_40(SvgWriter& w) {
 // along the segment: the points a, b where it changes are interpolated from orient3d_value. The
 // faces no point of the segment sees bound the terminator (red): two cycles through vertex 2.
 // (a) side view; (b) the scene rotated (locus::rotation_about_x) to look from behind the segment.
+// The merge of a hull with a segment (a flat half) is where the divide-and-conquer method hulls
+// the two vertex sets incrementally: its hull of pyramid and segment is checked against the
+// incremental one.
 bool fig_13_41(SvgWriter& w) {
   const std::vector<Vec3d> pyr{{0, 0, 2}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
   const Vec3d s0{-3.5, 0, -1}, s1{3.5, 0, -1};
   const Hull3Result h = convex_hull(pyr);
   if (h.status != Status::ok || h.dimension != 3) return false;
+  std::vector<Vec3d> both = pyr;
+  both.push_back(s0);
+  both.push_back(s1);
+  const Hull3Result hd = convex_hull(both, Hull3Options{Hull3Method::divide_and_conquer});
+  const Hull3Result hi = convex_hull(both, Hull3Options{Hull3Method::incremental});
+  if (hd.status != Status::ok || hd.vertices != hi.vertices) return false;
   std::vector<double> ts;
   std::vector<bool> seen;
   for (const Tri& t : h.triangles) {
@@ -1508,8 +1538,13 @@ std::vector<Figure> chapter13_figures() {
        fig_13_38},
       {"13.39", "convex_hull (3D) of the hull and of hull + P; orient3d face visibility",
        fig_13_39},
-      {"13.40", "convex_hull (3D) of each icosahedron and of their union", fig_13_40},
-      {"13.41", "convex_hull (3D); orient3d / orient3d_value along the segment; rotation_about_x",
+      {"13.40",
+       "convex_hull (3D) of each icosahedron; of their union by divide_and_conquer (the band "
+       "merge), checked against incremental",
+       fig_13_40},
+      {"13.41",
+       "convex_hull (3D); orient3d / orient3d_value along the segment; rotation_about_x; "
+       "divide_and_conquer checked against incremental",
        fig_13_41},
       {"13.42", "delaunay of all points; convex_hull, delaunay of the hull vertices", fig_13_42},
       {"13.43", "delaunay, angle_between", fig_13_43},

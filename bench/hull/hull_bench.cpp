@@ -278,12 +278,21 @@ void register_all() {
     Set3 s;
     std::size_t n;
   };
-  const C3 c3[] = {{"cube_1e6", Set3::cube, 1000000}, {"sphere_1e5", Set3::sphere, 100000}};
+  const C3 c3[] = {{"cube_1e6", Set3::cube, 1000000},
+                   {"sphere_1e5", Set3::sphere, 100000},
+                   {"sphere_1e4", Set3::sphere, 10000}};
   for (const C3& c : c3) {
     const std::string tag = std::string("/") + c.name;
     benchmark::RegisterBenchmark(("hull3/locus_quickhull" + tag).c_str(), BM_hull3_locus, c.s, c.n,
                                  Hull3Method::quickhull)
         ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("hull3/locus_divide_and_conquer" + tag).c_str(), BM_hull3_locus,
+                                 c.s, c.n, Hull3Method::divide_and_conquer)
+        ->Unit(benchmark::kMillisecond);
+    if (c.n <= 10000)  // O(n h): the divide-and-conquer method against the book's incremental one
+      benchmark::RegisterBenchmark(("hull3/locus_incremental" + tag).c_str(), BM_hull3_locus, c.s,
+                                   c.n, Hull3Method::incremental)
+          ->Unit(benchmark::kMillisecond);
 #if defined(LOCUS_HAVE_QHULL)
     benchmark::RegisterBenchmark(("hull3/qhull" + tag).c_str(), BM_hull3_qhull, c.s, c.n)
         ->Unit(benchmark::kMillisecond);

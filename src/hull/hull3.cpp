@@ -547,24 +547,28 @@ int ConvexHull3<T>::build(std::span<const std::uint32_t> ids, Hull3Method method
   // Orient the simplex so that s[3] is behind face (s0, s1, s2).
   if (orient3d(pts_[s[0]], pts_[s[1]], pts_[s[2]], pts_[s[3]]) == Sign::positive)
     std::swap(s[1], s[2]);
-  faces_.clear();
-  free_.clear();
-  if (method == Hull3Method::quickhull)
-    quickhull(ids, s);
-  else
-    incremental(ids, s);
-  // Compact.
-  map_.assign(faces_.size(), kNone);
-  for (std::uint32_t f = 0; f < faces_.size(); ++f)
-    if (faces_[f].alive) {
-      map_[f] = static_cast<std::uint32_t>(out.triangles.size());
-      out.triangles.push_back({faces_[f].v[0], faces_[f].v[1], faces_[f].v[2]});
-    }
-  out.adjacency.resize(out.triangles.size());
-  for (std::uint32_t f = 0; f < faces_.size(); ++f)
-    if (faces_[f].alive)
-      for (int e = 0; e < 3; ++e)
-        out.adjacency[map_[f]][e] = faces_[f].adj[e] == kNone ? kNone : map_[faces_[f].adj[e]];
+  if (method == Hull3Method::divide_and_conquer) {
+    divide_conquer(ids, out);  // src/hull/hull3_divide_conquer.cpp
+  } else {
+    faces_.clear();
+    free_.clear();
+    if (method == Hull3Method::quickhull)
+      quickhull(ids, s);
+    else
+      incremental(ids, s);
+    // Compact.
+    map_.assign(faces_.size(), kNone);
+    for (std::uint32_t f = 0; f < faces_.size(); ++f)
+      if (faces_[f].alive) {
+        map_[f] = static_cast<std::uint32_t>(out.triangles.size());
+        out.triangles.push_back({faces_[f].v[0], faces_[f].v[1], faces_[f].v[2]});
+      }
+    out.adjacency.resize(out.triangles.size());
+    for (std::uint32_t f = 0; f < faces_.size(); ++f)
+      if (faces_[f].alive)
+        for (int e = 0; e < 3; ++e)
+          out.adjacency[map_[f]][e] = faces_[f].adj[e] == kNone ? kNone : map_[faces_[f].adj[e]];
+  }
   // Extreme-point test: a vertex is a corner of the polytope iff its incident triangles span at
   // least three planes; walking its fan, count the changes of plane between neighbours
   // (coplanarity of neighbouring triangles is one exact orient3d per edge).

@@ -374,6 +374,14 @@ TEST_F(Cli, Hull3AndDelaunayMatchTheLibrary) {
   Outcome r = run("hull3 " + f3);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(index_rows<3>(r.out), h.triangles);
+  // --method: the divide-and-conquer hull, as the library computes it; an unknown method is a
+  // usage error.
+  const auto hd =
+      locus::convex_hull(p3, locus::Hull3Options{locus::Hull3Method::divide_and_conquer});
+  r = run("hull3 " + f3 + " --method divide-conquer");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(index_rows<3>(r.out), hd.triangles);
+  EXPECT_EQ(run("hull3 " + f3 + " --method gift-wrap").code, 2);
   // As a mesh file: each face's corners are the input points of the library's triangle.
   r = run("hull3 " + f3 + " -o " + path("hull.ply"));
   ASSERT_EQ(r.code, 0) << r.err;

@@ -53,14 +53,19 @@ void run_hull(const HullOptions& o) {
 
 struct Hull3Opts {
   Common c;
+  std::string method = "quickhull";
 };
 
 void run_hull3(const Hull3Opts& o) {
   const std::vector<Vec3d> pts = load_points3(o.c);
+  locus::Hull3Options opt;
+  opt.method = o.method == "incremental"      ? locus::Hull3Method::incremental
+               : o.method == "divide-conquer" ? locus::Hull3Method::divide_and_conquer
+                                              : locus::Hull3Method::quickhull;
   locus::Hull3Result r;
   {
     Progress p("convex hull", pts.size());
-    r = locus::convex_hull(std::span<const Vec3d>(pts));
+    r = locus::convex_hull(std::span<const Vec3d>(pts), opt);
   }
   require_ok(r.status, o.c.input + ": convex hull");
   JsonObject j;
@@ -109,10 +114,14 @@ void register_hull(CLI::App& app) {
     auto o = std::make_shared<Hull3Opts>();
     CLI::App* sub = app.add_subcommand("hull3", "3D convex hull of a point or mesh file");
     add_common(sub, o->c, false, "3D points (.csv .txt .tsv .xyz, or a mesh's vertices)");
+    sub->add_option("--method", o->method,
+                    "quickhull (default), incremental or divide-conquer: the same hull")
+        ->check(CLI::IsMember({"quickhull", "incremental", "divide-conquer"}));
     sub->footer(
         "Prints the hull's triangles (input indices, counter-clockwise seen from outside), one\n"
         "per line; -o hull.obj (.off .ply .stl) writes the hull as a mesh instead.\n"
-        "Example:\n  locus hull3 cloud.xyz -o hull.obj");
+        "Example:\n  locus hull3 cloud.xyz -o hull.obj\n"
+        "  locus hull3 cloud.xyz --method divide-conquer");
     sub->callback([o] { run_hull3(*o); });
   }
 }

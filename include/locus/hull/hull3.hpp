@@ -19,7 +19,11 @@
 // within orient3d's range (core/predicates.hpp).
 // Methods (Hull3Options::method; details: docs/notes/hull.md): quickhull (default; a filter,
 // then QuickHull: expected O(n log n), also with every point on the hull); incremental (the
-// book's, every face tested: O(n h); used as an oracle).
+// book's, every face tested: O(n h); used as an oracle); divide_and_conquer (lexicographic
+// halves merged by wrapping a band of triangles from a bridge edge, figures 13.40-13.41; a merge
+// that meets a coplanarity or a sub-hull of dimension < 3 hulls the two vertex sets
+// incrementally instead). All three give the same vertices, and the same triangles wherever no
+// four vertices are coplanar.
 // Bad input: empty -> Status::empty_input; NaN/Inf -> Status::non_finite_input; more than
 // 2^32 - 2 points -> Status::invalid_input. Memory O(n); ConvexHull3 keeps its buffers.
 
@@ -40,8 +44,9 @@ namespace locus {
 
 /// Algorithm used by convex_hull (3D).
 enum class Hull3Method : std::uint8_t {
-  quickhull,    ///< filter + QuickHull with exact predicates (fastest)
-  incremental,  ///< the book's incremental method, O(n h) (oracle)
+  quickhull,           ///< filter + QuickHull with exact predicates (fastest)
+  incremental,         ///< the book's incremental method, O(n h) (oracle)
+  divide_and_conquer,  ///< recursive halves merged by wrapping (Preparata-Hong)
 };
 
 /// Options of convex_hull (3D).
@@ -88,6 +93,8 @@ class ConvexHull3 {
   std::uint32_t new_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   void add_outside(std::uint32_t f, std::uint32_t q);
   void planar(std::span<const std::uint32_t> ids, const std::uint32_t s[3], Hull3Result& out);
+  // src/hull/hull3_divide_conquer.cpp: the triangles and adjacency of a 3D hull into out.
+  void divide_conquer(std::span<const std::uint32_t> ids, Hull3Result& out);
 
   const Vec3<T>* pts_ = nullptr;
   std::size_t n_ = 0;
