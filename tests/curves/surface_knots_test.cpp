@@ -158,8 +158,8 @@ TYPED_TEST(SurfaceKnotsTest, InsertionAndRefinementKeepTheSurface) {
         // The B-spline functions directly (the same code path as the NURBS ones with w = 1).
         const auto bs = refine_knots_v(as_bspline(s), std::span<const T>(kv));
         ASSERT_EQ(bs.status, Status::ok);
-        EXPECT_TRUE(curve_oracle::near_q(point_at(insert_knot_u(bs.surface, tu, 2), u, v), e,
-                                         double(tl)));
+        EXPECT_TRUE(
+            curve_oracle::near_q(point_at(insert_knot_u(bs.surface, tu, 2), u, v), e, double(tl)));
       }
     }
   }
@@ -230,7 +230,8 @@ TYPED_TEST(SurfaceKnotsTest, BezierExtractionMatchesTheSurface) {
     for (int pa = 0; pa < g.count_u; ++pa)
       for (int pb = 0; pb < g.count_v; ++pb) {
         const auto ua = static_cast<std::size_t>(pa), vb = static_cast<std::size_t>(pb);
-        const RationalBezierPatch<T, 3>& p = g.patches[ua * static_cast<std::size_t>(g.count_v) + vb];
+        const RationalBezierPatch<T, 3>& p =
+            g.patches[ua * static_cast<std::size_t>(g.count_v) + vb];
         ASSERT_EQ(p.rows, s.degree_u + 1);
         ASSERT_EQ(p.cols, s.degree_v + 1);
         for (T w : p.weights) EXPECT_GT(w, T(0));
@@ -251,8 +252,7 @@ TYPED_TEST(SurfaceKnotsTest, BezierExtractionMatchesTheSurface) {
       ASSERT_EQ(bg.patches.size(), g.patches.size());
       for (std::size_t k = 0; k < g.patches.size(); ++k)
         for (std::size_t c = 0; c < g.patches[k].control.size(); ++c)
-          EXPECT_TRUE(
-              locus_test::vec_near(bg.patches[k].control[c], g.patches[k].control[c], tl));
+          EXPECT_TRUE(locus_test::vec_near(bg.patches[k].control[c], g.patches[k].control[c], tl));
     }
   }
 }
@@ -270,10 +270,10 @@ TYPED_TEST(SurfaceKnotsTest, PowerOfTwoScaleCovariance) {
     NurbsSurface<T, 3> big = s;
     for (auto& p : big.control) p = f * p;
     for (auto& w : big.weights) w *= T(4);  // a common weight factor cancels exactly too
-    const auto r1 = refine_knots_v(refine_knots_u(s, std::span<const T>(ku)).surface,
-                                   std::span<const T>(kv));
-    const auto r2 = refine_knots_v(refine_knots_u(big, std::span<const T>(ku)).surface,
-                                   std::span<const T>(kv));
+    const auto r1 =
+        refine_knots_v(refine_knots_u(s, std::span<const T>(ku)).surface, std::span<const T>(kv));
+    const auto r2 =
+        refine_knots_v(refine_knots_u(big, std::span<const T>(ku)).surface, std::span<const T>(kv));
     ASSERT_EQ(r1.status, Status::ok);
     ASSERT_EQ(r2.status, Status::ok);
     ASSERT_EQ(r1.surface.control.size(), r2.surface.control.size());
@@ -290,7 +290,13 @@ TYPED_TEST(SurfaceKnotsTest, RefinedCylinderStaysExact) {
   using T = TypeParam;
   const T r = T(1.5), h = T(3);
   const NurbsCurve2<T> circle = to_nurbs(Circle2<T>{{T(0), T(0)}, r});
-  NurbsSurface<T, 3> s{2, 1, static_cast<int>(circle.control.size()), 2, {}, {}, circle.knots,
+  NurbsSurface<T, 3> s{2,
+                       1,
+                       static_cast<int>(circle.control.size()),
+                       2,
+                       {},
+                       {},
+                       circle.knots,
                        {T(0), T(0), T(1), T(1)}};
   for (std::size_t i = 0; i < circle.control.size(); ++i)
     for (T z : {T(0), h}) {
@@ -299,8 +305,8 @@ TYPED_TEST(SurfaceKnotsTest, RefinedCylinderStaysExact) {
     }
   ASSERT_EQ(validate(s), Status::ok);
   const std::vector<T> ku{T(0.1), T(0.3), T(0.3), T(0.8)}, kv{T(0.5)};
-  const auto ref = refine_knots_v(refine_knots_u(s, std::span<const T>(ku)).surface,
-                                  std::span<const T>(kv));
+  const auto ref =
+      refine_knots_v(refine_knots_u(s, std::span<const T>(ku)).surface, std::span<const T>(kv));
   ASSERT_EQ(ref.status, Status::ok);
   EXPECT_EQ(ref.surface.cols, 3);
   const RationalPatchGrid<T, 3> g = to_bezier(ref.surface);
