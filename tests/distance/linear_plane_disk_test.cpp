@@ -91,8 +91,8 @@ LD disk_oracle(const Vec3<T>& o_, const Vec3<T>& d_, bool lo, bool hi, const Dis
   const VL o = vec_cast<LD>(o_), m = vec_cast<LD>(d_);
   const LD mm = sqr_length(m);
   if (mm == 0) return std::sqrt(sqr_to_disk(o, d));
-  // g(tc) <= |o - c| + r and g(t) >= |L(t) - c| - r, so at the minimiser |L(t*) - c| <= |o - c| + 2 r
-  // and |t* - tc| |m| <= |o - c| + 2 r (tc: the parameter nearest the centre).
+  // g(tc) <= |o - c| + r and g(t) >= |L(t) - c| - r, so at the minimiser |L(t*) - c| <= |o - c| + 2
+  // r and |t* - tc| |m| <= |o - c| + 2 r (tc: the parameter nearest the centre).
   const VL w = o - vec_cast<LD>(d.center);
   const LD tc = -dot(w, m) / mm, R = (std::sqrt(sqr_length(w)) + 2 * LD(d.radius)) / std::sqrt(mm);
   LD a = lo ? std::max(LD(0), tc - R - 1) : tc - R - 1;
@@ -175,8 +175,8 @@ TYPED_TEST(LinearPlaneDiskTest, PlaneAgainstExactRationals) {
     Vec3<T> o = dyadic_vec<T>(rng), d = dyadic_vec<T>(rng);
     T c = dyadic<T>(rng);
     if (i % 3 == 1) d = cross(n, dyadic_vec<T>(rng));  // parallel (or zero)
-    if (i % 5 == 2) c = dot(n, o);                      // origin in the plane (exact dyadics)
-    if (i % 7 == 3) d = Vec3<T>{};                      // a point
+    if (i % 5 == 2) c = dot(n, o);                     // origin in the plane (exact dyadics)
+    if (i % 7 == 3) d = Vec3<T>{};                     // a point
     const Plane3<T> p{n, c};
     const Line3<T> line{o, d};
     const Ray3<T> ray{o, d};
@@ -191,7 +191,8 @@ TYPED_TEST(LinearPlaneDiskTest, PlaneAgainstExactRationals) {
     const T nn = T(sqr_length(n));
     for (const auto& [got, want] : {std::pair{rl.sqr_distance, el}, std::pair{rr.sqr_distance, er},
                                     std::pair{rs.sqr_distance, es}}) {
-      EXPECT_NEAR(double(got), want.sqr.get_d(), double(locus_test::tol(T(64), scale * scale / nn)));
+      EXPECT_NEAR(double(got), want.sqr.get_d(),
+                  double(locus_test::tol(T(64), scale * scale / nn)));
       if (want.sqr == 0) {
         EXPECT_EQ(got, T(0));  // crossings are decided exactly
       }
@@ -201,10 +202,12 @@ TYPED_TEST(LinearPlaneDiskTest, PlaneAgainstExactRationals) {
     EXPECT_EQ(rs.unique, es.unique);
     // Closest points: on their objects and at the returned parameters.
     for (const auto* r : {&rl, &rr, &rs}) {
-      EXPECT_NEAR(signed_distance(r->closest[1], p), T(0), locus_test::tol(T(64), scale / std::sqrt(nn)));
+      EXPECT_NEAR(signed_distance(r->closest[1], p), T(0),
+                  locus_test::tol(T(64), scale / std::sqrt(nn)));
       EXPECT_TRUE(locus_test::vec_near(point_at(*plane_frame(p), r->param_b), r->closest[1],
                                        locus_test::tol(T(64), scale)));
-      EXPECT_NEAR(length(r->closest[0] - r->closest[1]), r->distance, locus_test::tol(T(64), scale));
+      EXPECT_NEAR(length(r->closest[0] - r->closest[1]), r->distance,
+                  locus_test::tol(T(64), scale));
     }
     EXPECT_TRUE(locus_test::vec_near(point_at(line, rl.param_a), rl.closest[0],
                                      locus_test::tol(T(64), scale)));

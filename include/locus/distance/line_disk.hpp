@@ -65,8 +65,8 @@ template <Real T, class Lin>
   const LinearView<T, 3> v = view(lin);
   // A direction parallel to the plane whose projection crosses the open disk: a whole piece of
   // the component is at the same (minimal) distance from the disk.
-  const Sign along = v.bounded_hi ? sign_of_dot_diff(d.normal, v.end, v.origin)
-                                  : sign_of_dot(d.normal, v.dir);
+  const Sign along =
+      v.bounded_hi ? sign_of_dot_diff(d.normal, v.end, v.origin) : sign_of_dot(d.normal, v.dir);
   if (along == Sign::zero && !(v.dir == Vec3<T>{})) {
     using C = compute_t<T>;
     const Vec3<C> w = vec_cast<C>(v.origin) - vec_cast<C>(d.center), m = vec_cast<C>(v.dir);
