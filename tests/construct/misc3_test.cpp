@@ -153,8 +153,7 @@ TYPED_TEST(Misc3Test, AngleSpecialCases) {
   // where acos of the rounded cosine would lose about half the digits).
   const T tiny = std::ldexp(T(1), -20);
   const T want = static_cast<T>(std::atan(double(tiny)));
-  EXPECT_NEAR(angle_between(flat, Line3<T>{{}, {T(3), T(4), T(5) * tiny}}), want,
-              tol(T(8), want));
+  EXPECT_NEAR(angle_between(flat, Line3<T>{{}, {T(3), T(4), T(5) * tiny}}), want, tol(T(8), want));
 }
 
 TYPED_TEST(Misc3Test, PlaneConstructions) {
