@@ -115,7 +115,7 @@ TYPED_TEST(SurfaceKnotsTest, InsertionAndRefinementKeepTheSurface) {
   using T = TypeParam;
   locus_test::Rng rng(21);
   SCOPED_TRACE(rng.trace());
-  for (int trial = 0; trial < 16; ++trial) {
+  for (int trial = 0; trial < 12; ++trial) {
     const bool rational = trial % 2 == 1;
     const NurbsSurface<T, 3> s = random_nurbs<T>(rng, trial % 4 < 2, !rational);
     ASSERT_EQ(validate(s), Status::ok);
@@ -149,17 +149,20 @@ TYPED_TEST(SurfaceKnotsTest, InsertionAndRefinementKeepTheSurface) {
     }
     EXPECT_EQ(ref.rows, expect_rows);
     const T tl = knot_tol(s, 7);
-    for (int k = 0; k < 10; ++k) {
+    // The B-spline functions directly (the same code path as the NURBS ones with w = 1).
+    BSplineSurface<T, 3> bs{};
+    if (!rational) {
+      const auto rb = refine_knots_v(as_bspline(s), std::span<const T>(kv));
+      ASSERT_EQ(rb.status, Status::ok);
+      bs = insert_knot_u(rb.surface, tu, 2);
+    }
+    for (int k = 0; k < 6; ++k) {
       const T u = grid_param(rng, a), v = grid_param(rng, b);
       const auto e = exact_at(s, u, v);
       EXPECT_TRUE(curve_oracle::near_q(point_at(ins, u, v), e, double(tl))) << u << " " << v;
       EXPECT_TRUE(curve_oracle::near_q(point_at(ref, u, v), e, double(tl))) << u << " " << v;
       if (!rational) {
-        // The B-spline functions directly (the same code path as the NURBS ones with w = 1).
-        const auto bs = refine_knots_v(as_bspline(s), std::span<const T>(kv));
-        ASSERT_EQ(bs.status, Status::ok);
-        EXPECT_TRUE(
-            curve_oracle::near_q(point_at(insert_knot_u(bs.surface, tu, 2), u, v), e, double(tl)));
+        EXPECT_TRUE(curve_oracle::near_q(point_at(bs, u, v), e, double(tl)));
       }
     }
   }
@@ -171,7 +174,7 @@ TYPED_TEST(SurfaceKnotsTest, FullMultiplicityInterpolatesARow) {
   using T = TypeParam;
   locus_test::Rng rng(22);
   SCOPED_TRACE(rng.trace());
-  for (int trial = 0; trial < 10; ++trial) {
+  for (int trial = 0; trial < 6; ++trial) {
     const NurbsSurface<T, 3> n = random_nurbs<T>(rng, trial % 2 == 0, true);
     const BSplineSurface<T, 3> s = as_bspline(n);
     const ParamDomain<T> a = domain_u(s), b = domain_v(s);
@@ -199,9 +202,9 @@ TYPED_TEST(SurfaceKnotsTest, FullMultiplicityInterpolatesARow) {
     for (int i = 0; i < c.rows; ++i)
       cc.control.push_back(c.control[static_cast<std::size_t>(i * c.cols + col)]);
     const T tl = knot_tol(n, 3);
-    for (int k = 0; k <= 8; ++k) {
-      const T v = b.min + (b.max - b.min) * static_cast<T>(k) / T(8);
-      const T u = a.min + (a.max - a.min) * static_cast<T>(k) / T(8);
+    for (int k = 0; k <= 4; ++k) {
+      const T v = b.min + (b.max - b.min) * static_cast<T>(k) / T(4);
+      const T u = a.min + (a.max - a.min) * static_cast<T>(k) / T(4);
       EXPECT_TRUE(curve_oracle::near_q(point_at(rc, v), exact_at(n, t, v), double(tl)));
       EXPECT_TRUE(curve_oracle::near_q(point_at(cc, u), exact_at(n, u, tv), double(tl)));
     }
@@ -214,7 +217,7 @@ TYPED_TEST(SurfaceKnotsTest, BezierExtractionMatchesTheSurface) {
   using T = TypeParam;
   locus_test::Rng rng(23);
   SCOPED_TRACE(rng.trace());
-  for (int trial = 0; trial < 12; ++trial) {
+  for (int trial = 0; trial < 8; ++trial) {
     const NurbsSurface<T, 3> s = random_nurbs<T>(rng, trial % 3 == 0, trial % 2 == 0);
     const RationalPatchGrid<T, 3> g = to_bezier(s);
     ASSERT_EQ(g.status, Status::ok);
@@ -235,7 +238,7 @@ TYPED_TEST(SurfaceKnotsTest, BezierExtractionMatchesTheSurface) {
         ASSERT_EQ(p.rows, s.degree_u + 1);
         ASSERT_EQ(p.cols, s.degree_v + 1);
         for (T w : p.weights) EXPECT_GT(w, T(0));
-        for (int k = 0; k < 3; ++k) {
+        for (int k = 0; k < 2; ++k) {
           const T lu = static_cast<T>(rng.uniform_int(0, 4)) / T(4);
           const T lv = static_cast<T>(rng.uniform_int(0, 4)) / T(4);
           const T u = g.breaks_u[ua] + lu * (g.breaks_u[ua + 1] - g.breaks_u[ua]);

@@ -127,7 +127,7 @@ TYPED_TEST(LinearPlaneDiskTest, Harness) {
   using T = TypeParam;
   const T S = 10;
   dist::Options<T> opt;
-  opt.cases = 60 / kCaseScale;
+  opt.cases = 40 / kCaseScale;
   const auto plane = [&](Rng& rng) {
     const Vec3<T> n = rng.unit<T, 3>() * rng.uniform<T>(T(0.1), T(10));
     return plane_from_point_normal(rng.vec<T, 3>(-S, S), n);
