@@ -11,9 +11,11 @@
 #include <locus/distance/line_aligned_box.hpp>
 #include <locus/distance/line_circle.hpp>
 #include <locus/distance/line_curve.hpp>
+#include <locus/distance/line_disk.hpp>
 #include <locus/distance/line_ellipse.hpp>
 #include <locus/distance/line_line.hpp>
 #include <locus/distance/line_oriented_box.hpp>
+#include <locus/distance/line_plane.hpp>
 #include <locus/distance/line_polyline.hpp>
 #include <locus/distance/line_quadratic_curve.hpp>
 #include <locus/distance/line_ray.hpp>

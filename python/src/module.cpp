@@ -225,4 +225,5 @@ PYBIND11_MODULE(locus, m) {
   bind_intersection3(m);
   bind_intersection2(m);
   bind_io(m);
+  bind_misc3(m);
 }

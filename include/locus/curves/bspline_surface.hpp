@@ -12,7 +12,9 @@
 // partials() returns {point, du, dv, duv} from the non-zero basis functions and their first
 // derivatives in each direction (O((du+1)(dv+1)) terms). normal_at() (N = 3) is
 // normalize(du x dv) with the collapsed-edge fallback of bezier_surface.hpp (the limit normal
-// from the interior; the zero vector when none exists).
+// from the interior; the zero vector when none exists). insert_knot_u/v (Boehm) and
+// refine_knots_u/v run the curve insertion of bspline.hpp on every column / row; to_bezier()
+// splits the surface into a grid of Bézier patches (section 9.4 and 5.5 knot insertion).
 //
 // Bad input: validate() returns invalid_input for rows * cols != control.size() and the knot
 // codes of validate_knots() for each direction, non_finite_input for NaN/Inf control points.
@@ -29,6 +31,7 @@
 #include <locus/curves/bspline.hpp>
 #include <locus/primitives/aligned_box.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -182,18 +185,18 @@ template <class T, int N>
   return bounding_box(s.control.data(), s.control.size());
 }
 
-/// Inserts the knot t (clamped to the u domain) `times` times along u; the surface is unchanged.
-/// An inconsistent shape is returned unchanged.
-template <class T, int N>
-[[nodiscard]] BSplineSurface<T, N> insert_knot_u(const BSplineSurface<T, N>& s, T t,
-                                                 int times = 1) {
-  if (!detail::tensor_shape_ok(s)) return s;
+namespace detail {
+
+/// Maps every column (the control points P_0j .. P_{rows-1}j with knots_u) through the curve
+/// function f and reassembles the net; f must return the same knots for every column.
+template <class T, int N, class F>
+[[nodiscard]] BSplineSurface<T, N> map_columns(const BSplineSurface<T, N>& s, const F& f) {
   const auto rows = static_cast<std::size_t>(s.rows), cols = static_cast<std::size_t>(s.cols);
   BSplineSurface<T, N> r = s;
   BSplineCurve<T, N> col{s.degree_u, std::vector<Vec<T, N>>(rows), s.knots_u};
   for (std::size_t j = 0; j < cols; ++j) {
     for (std::size_t i = 0; i < rows; ++i) col.control[i] = s.control[i * cols + j];
-    const BSplineCurve<T, N> c = insert_knot(col, t, times);
+    const BSplineCurve<T, N> c = f(col);
     if (j == 0) {
       r.rows = static_cast<int>(c.control.size());
       r.knots_u = c.knots;
@@ -204,17 +207,15 @@ template <class T, int N>
   return r;
 }
 
-/// Inserts the knot t (clamped to the v domain) `times` times along v; the surface is unchanged.
-template <class T, int N>
-[[nodiscard]] BSplineSurface<T, N> insert_knot_v(const BSplineSurface<T, N>& s, T t,
-                                                 int times = 1) {
-  if (!detail::tensor_shape_ok(s)) return s;
+/// The same for every row (P_i0 .. P_i{cols-1} with knots_v).
+template <class T, int N, class F>
+[[nodiscard]] BSplineSurface<T, N> map_rows(const BSplineSurface<T, N>& s, const F& f) {
   const auto rows = static_cast<std::size_t>(s.rows), cols = static_cast<std::size_t>(s.cols);
   BSplineSurface<T, N> r = s;
   BSplineCurve<T, N> row{s.degree_v, std::vector<Vec<T, N>>(cols), s.knots_v};
   for (std::size_t i = 0; i < rows; ++i) {
     for (std::size_t j = 0; j < cols; ++j) row.control[j] = s.control[i * cols + j];
-    const BSplineCurve<T, N> c = insert_knot(row, t, times);
+    const BSplineCurve<T, N> c = f(row);
     if (i == 0) {
       r.cols = static_cast<int>(c.control.size());
       r.knots_v = c.knots;
@@ -223,6 +224,95 @@ template <class T, int N>
     for (std::size_t j = 0; j < c.control.size(); ++j)
       r.control[i * c.control.size() + j] = c.control[j];
   }
+  return r;
+}
+
+/// ok when every knot is finite and inside [lo, hi]; non_finite_input / invalid_input otherwise.
+template <class T>
+[[nodiscard]] Status check_new_knots(std::span<const T> knots, T lo, T hi) noexcept {
+  for (T k : knots)
+    if (!is_finite(k)) return Status::non_finite_input;
+  for (T k : knots)
+    if (!(k >= lo && k <= hi)) return Status::invalid_input;
+  return Status::ok;
+}
+
+/// Inserts the (sorted) knots one by one into the curve (Boehm, bspline.hpp).
+template <class T, int N>
+[[nodiscard]] BSplineCurve<T, N> refine_curve(const BSplineCurve<T, N>& c,
+                                              const std::vector<T>& sorted) {
+  BSplineCurve<T, N> r = c;
+  for (T k : sorted) r = insert_knot(r, k);
+  return r;
+}
+
+template <class T>
+[[nodiscard]] std::vector<T> sorted_knots(std::span<const T> knots) {
+  std::vector<T> k(knots.begin(), knots.end());
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+}  // namespace detail
+
+/// Inserts the knot t (clamped to the u domain) `times` times along u by inserting it into every
+/// column (insert_knot of bspline.hpp); the surface is unchanged. An inconsistent shape is
+/// returned unchanged.
+template <class T, int N>
+[[nodiscard]] BSplineSurface<T, N> insert_knot_u(const BSplineSurface<T, N>& s, T t,
+                                                 int times = 1) {
+  if (!detail::tensor_shape_ok(s)) return s;
+  return detail::map_columns(
+      s, [t, times](const BSplineCurve<T, N>& c) { return insert_knot(c, t, times); });
+}
+
+/// Inserts the knot t (clamped to the v domain) `times` times along v (every row).
+template <class T, int N>
+[[nodiscard]] BSplineSurface<T, N> insert_knot_v(const BSplineSurface<T, N>& s, T t,
+                                                 int times = 1) {
+  if (!detail::tensor_shape_ok(s)) return s;
+  return detail::map_rows(
+      s, [t, times](const BSplineCurve<T, N>& c) { return insert_knot(c, t, times); });
+}
+
+/// A refined surface (refine_knots_u/v): status ok and the refined surface, or the problem and
+/// the input surface unchanged.
+template <class S>
+struct SurfaceRefinement {
+  Status status = Status::empty_input;
+  S surface;
+};
+
+/// Knot refinement along u: inserts every value of `knots` (any order, repeats allowed) once;
+/// the surface is unchanged. status: validate(s), else non_finite_input for a NaN/Inf knot,
+/// invalid_input for a knot outside the u domain (nothing is inserted then). A knot whose
+/// multiplicity has reached degree_u is skipped (the surface already interpolates there).
+template <class T, int N>
+[[nodiscard]] SurfaceRefinement<BSplineSurface<T, N>> refine_knots_u(const BSplineSurface<T, N>& s,
+                                                                     std::span<const T> knots) {
+  SurfaceRefinement<BSplineSurface<T, N>> r{validate(s), s};
+  if (r.status != Status::ok) return r;
+  const ParamDomain<T> d = domain_u(s);
+  r.status = detail::check_new_knots(knots, d.min, d.max);
+  if (r.status != Status::ok || knots.empty()) return r;
+  const std::vector<T> k = detail::sorted_knots(knots);
+  r.surface = detail::map_columns(
+      s, [&k](const BSplineCurve<T, N>& c) { return detail::refine_curve(c, k); });
+  return r;
+}
+
+/// Knot refinement along v (see refine_knots_u).
+template <class T, int N>
+[[nodiscard]] SurfaceRefinement<BSplineSurface<T, N>> refine_knots_v(const BSplineSurface<T, N>& s,
+                                                                     std::span<const T> knots) {
+  SurfaceRefinement<BSplineSurface<T, N>> r{validate(s), s};
+  if (r.status != Status::ok) return r;
+  const ParamDomain<T> d = domain_v(s);
+  r.status = detail::check_new_knots(knots, d.min, d.max);
+  if (r.status != Status::ok || knots.empty()) return r;
+  const std::vector<T> k = detail::sorted_knots(knots);
+  r.surface =
+      detail::map_rows(s, [&k](const BSplineCurve<T, N>& c) { return detail::refine_curve(c, k); });
   return r;
 }
 

@@ -15,17 +15,22 @@
 // or the quotient is not finite, every field of the result is NaN (never a finite but meaningless
 // point), and normal_at() returns the zero vector. weight_at() exposes W. Everything else
 // (clamping, NaN parameters, knot checks, normal fallback) is as in bspline_surface.hpp.
+// Knot insertion, refinement and to_bezier() work on the homogeneous B-spline surface
+// (w P, w) with the code of bspline_surface.hpp and project back; new weights are convex
+// combinations of old ones. to_bezier() gives rational patches (RationalBezierPatch).
 // Cost: that of the B-spline surface with one more coordinate.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/curves/bspline_surface.hpp>
+#include <locus/curves/nurbs.hpp>
 #include <locus/primitives/aligned_box.hpp>
 
 #include <cstddef>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace locus {
@@ -160,6 +165,129 @@ template <class T, int N>
 [[nodiscard]] NurbsSurface<T, N> to_nurbs(const BSplineSurface<T, N>& s) {
   return {s.degree_u, s.degree_v, s.rows, s.cols, s.control, std::vector<T>(s.control.size(), T(1)),
           s.knots_u,  s.knots_v};
+}
+
+/// The homogeneous B-spline surface with control points (w P, w) (N + 1 coordinates).
+template <class T, int N>
+[[nodiscard]] BSplineSurface<T, N + 1> to_homogeneous(const NurbsSurface<T, N>& s) {
+  BSplineSurface<T, N + 1> h{s.degree_u, s.degree_v, s.rows, s.cols, {}, s.knots_u, s.knots_v};
+  h.control.reserve(s.control.size());
+  for (std::size_t k = 0; k < s.control.size() && k < s.weights.size(); ++k)
+    h.control.push_back(detail::nurbs_homogeneous_point(s.control[k], s.weights[k]));
+  return h;
+}
+
+namespace detail {
+
+/// The NURBS surface of a homogeneous net: P = A / w (NaN where w == 0), weights w.
+template <class T, int N>
+[[nodiscard]] NurbsSurface<T, N> from_homogeneous(const BSplineSurface<T, N + 1>& h) {
+  NurbsSurface<T, N> r{h.degree_u, h.degree_v, h.rows, h.cols, {}, {}, h.knots_u, h.knots_v};
+  r.control.reserve(h.control.size());
+  r.weights.reserve(h.control.size());
+  for (const auto& p : h.control) {
+    r.control.push_back(nurbs_project<T, N>(p));
+    r.weights.push_back(p[N]);
+  }
+  return r;
+}
+
+}  // namespace detail
+
+/// Inserts t (clamped to the u domain) `times` times along u; the surface is unchanged. An
+/// inconsistent shape is returned unchanged.
+template <class T, int N>
+[[nodiscard]] NurbsSurface<T, N> insert_knot_u(const NurbsSurface<T, N>& s, T t, int times = 1) {
+  if (!detail::nurbs_surface_shape_ok(s)) return s;
+  return detail::from_homogeneous<T, N>(insert_knot_u(to_homogeneous(s), t, times));
+}
+
+/// Inserts t (clamped to the v domain) `times` times along v; the surface is unchanged.
+template <class T, int N>
+[[nodiscard]] NurbsSurface<T, N> insert_knot_v(const NurbsSurface<T, N>& s, T t, int times = 1) {
+  if (!detail::nurbs_surface_shape_ok(s)) return s;
+  return detail::from_homogeneous<T, N>(insert_knot_v(to_homogeneous(s), t, times));
+}
+
+/// Knot refinement along u; status and rules as refine_knots_u of bspline_surface.hpp, with
+/// validate() of the NURBS surface first.
+template <class T, int N>
+[[nodiscard]] SurfaceRefinement<NurbsSurface<T, N>> refine_knots_u(const NurbsSurface<T, N>& s,
+                                                                   std::span<const T> knots) {
+  SurfaceRefinement<NurbsSurface<T, N>> r{validate(s), s};
+  if (r.status != Status::ok) return r;
+  const auto h = refine_knots_u(to_homogeneous(s), knots);
+  r.status = h.status;
+  if (h.status == Status::ok) r.surface = detail::from_homogeneous<T, N>(h.surface);
+  return r;
+}
+
+/// Knot refinement along v (see refine_knots_u).
+template <class T, int N>
+[[nodiscard]] SurfaceRefinement<NurbsSurface<T, N>> refine_knots_v(const NurbsSurface<T, N>& s,
+                                                                   std::span<const T> knots) {
+  SurfaceRefinement<NurbsSurface<T, N>> r{validate(s), s};
+  if (r.status != Status::ok) return r;
+  const auto h = refine_knots_v(to_homogeneous(s), knots);
+  r.status = h.status;
+  if (h.status == Status::ok) r.surface = detail::from_homogeneous<T, N>(h.surface);
+  return r;
+}
+
+/// A rational tensor-product Bézier patch on [0, 1]^2: control and weights row-major as in
+/// BezierPatch, S = sum B_i(u) B_j(v) w_ij P_ij / sum B_i(u) B_j(v) w_ij.
+template <class T, int N>
+struct RationalBezierPatch {
+  int rows;
+  int cols;
+  std::vector<Vec<T, N>> control;
+  std::vector<T> weights;
+};
+
+/// S(u, v) of a rational patch ((u, v) clamped to [0, 1]^2): de Casteljau on (w P, w), then the
+/// projection; NaN for a bad shape or where the weight sum is 0.
+template <class T, int N>
+[[nodiscard]] Vec<T, N> point_at(const RationalBezierPatch<T, N>& p, T u, T v) {
+  if (p.weights.size() != p.control.size()) return detail::curve_nan<T, N>();
+  BezierPatch<T, N + 1> h{p.rows, p.cols, {}};
+  h.control.reserve(p.control.size());
+  for (std::size_t k = 0; k < p.control.size(); ++k)
+    h.control.push_back(detail::nurbs_homogeneous_point(p.control[k], p.weights[k]));
+  return detail::nurbs_project<T, N>(point_at(h, u, v));
+}
+
+/// A NURBS surface as a grid of rational Bézier patches; layout as BezierPatchGrid.
+template <class T, int N>
+struct RationalPatchGrid {
+  Status status = Status::empty_input;
+  int count_u;
+  int count_v;
+  std::vector<RationalBezierPatch<T, N>> patches;
+  std::vector<T> breaks_u;
+  std::vector<T> breaks_v;
+};
+
+/// Splits the surface into rational Bézier patches (to_bezier of the homogeneous surface);
+/// status is validate(s), the grid is empty unless ok.
+template <class T, int N>
+[[nodiscard]] RationalPatchGrid<T, N> to_bezier(const NurbsSurface<T, N>& s) {
+  RationalPatchGrid<T, N> g{validate(s), 0, 0, {}, {}, {}};
+  if (g.status != Status::ok) return g;
+  BezierPatchGrid<T, N + 1> h = to_bezier(to_homogeneous(s));
+  g.status = h.status;
+  g.count_u = h.count_u;
+  g.count_v = h.count_v;
+  g.breaks_u = std::move(h.breaks_u);
+  g.breaks_v = std::move(h.breaks_v);
+  for (const auto& hp : h.patches) {
+    RationalBezierPatch<T, N> p{hp.rows, hp.cols, {}, {}};
+    for (const auto& c : hp.control) {
+      p.control.push_back(detail::nurbs_project<T, N>(c));
+      p.weights.push_back(c[N]);
+    }
+    g.patches.push_back(std::move(p));
+  }
+  return g;
 }
 
 }  // namespace locus
