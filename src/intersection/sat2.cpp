@@ -166,9 +166,7 @@ int clip(const Sym* in, int k, const Line& c, Sym* out, int cap) noexcept {
     if (side(b, p) == 0) return p;
   for (const V& p : {b.p, b.q})
     if (side(a, p) == 0) return p;
-  const auto canon = [](const Line& l) {
-    return lex_lt(l.q, l.p) ? Line{l.q, l.p} : l;
-  };
+  const auto canon = [](const Line& l) { return lex_lt(l.q, l.p) ? Line{l.q, l.p} : l; };
   Line m = canon(a), n = canon(b);
   if (lex_lt(n.p, m.p) || (n.p == m.p && lex_lt(n.q, m.q))) std::swap(m, n);
   const double v0 = turn2d_value(n.p, n.q, n.p, m.p), v1 = turn2d_value(n.p, n.q, n.p, m.q);
@@ -513,16 +511,15 @@ Contact2<T> first_contact(std::span<const Vec2<T>> a, const Vec2<T>& va_,
 
 template bool test<float>(std::span<const Vec2<float>>, std::span<const Vec2<float>>) noexcept;
 template bool test<double>(std::span<const Vec2<double>>, std::span<const Vec2<double>>) noexcept;
-template Kind find<float>(std::span<const Vec2<float>>, std::span<const Vec2<float>>,
-                          Vec2<float>*, int&, Sym*) noexcept;
+template Kind find<float>(std::span<const Vec2<float>>, std::span<const Vec2<float>>, Vec2<float>*,
+                          int&, Sym*) noexcept;
 template Kind find<double>(std::span<const Vec2<double>>, std::span<const Vec2<double>>,
                            Vec2<double>*, int&, Sym*) noexcept;
 template Contact2<float> first_contact<float>(std::span<const Vec2<float>>, const Vec2<float>&,
                                               std::span<const Vec2<float>>, const Vec2<float>&,
                                               float) noexcept;
-template Contact2<double> first_contact<double>(std::span<const Vec2<double>>,
-                                                const Vec2<double>&,
-                                                std::span<const Vec2<double>>,
-                                                const Vec2<double>&, double) noexcept;
+template Contact2<double> first_contact<double>(std::span<const Vec2<double>>, const Vec2<double>&,
+                                                std::span<const Vec2<double>>, const Vec2<double>&,
+                                                double) noexcept;
 
 }  // namespace locus::detail::sat2

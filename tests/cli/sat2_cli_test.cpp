@@ -53,8 +53,8 @@ TEST(CliSat, StationaryAndMovingMatchTheLibrary) {
   const std::vector<Vec2d> a{{0, 0}, {3, 0.1}, {2.5, 2}, {0.2, 1.7}};
   const std::vector<Vec2d> b{{1.3, 0.7}, {4, 1}, {3.3, 3.1}};
   const std::string fa = (dir / "a.csv").string(), fb = (dir / "b.csv").string();
-  ASSERT_EQ(locus::write_points<double, 2>(fa, a).status, locus::Status::ok);
-  ASSERT_EQ(locus::write_points<double, 2>(fb, b).status, locus::Status::ok);
+  ASSERT_EQ((locus::write_points<double, 2>(fa, a).status), locus::Status::ok);
+  ASSERT_EQ((locus::write_points<double, 2>(fb, b).status), locus::Status::ok);
   const auto run = [&](const std::string& args) {
     const std::string out = (dir / "out.txt").string();
     const std::string cmd = std::string("'") + LOCUS_CLI_PATH + "' sat '" + fa + "' --other '" +
@@ -74,7 +74,7 @@ TEST(CliSat, StationaryAndMovingMatchTheLibrary) {
   }
   std::vector<Vec2d> far = b;
   for (Vec2d& p : far) p += Vec2d{6, 0};
-  ASSERT_EQ(locus::write_points<double, 2>(fb, far).status, locus::Status::ok);
+  ASSERT_EQ((locus::write_points<double, 2>(fb, far).status), locus::Status::ok);
   const auto c = locus::first_contact_convex_polygons(a, Vec2d{0.5, 0}, far, Vec2d{-1, 0}, 10.0);
   const auto mv = run("--va 0.5 0 --vb -1 0 --tmax 10");
   ASSERT_GE(mv.size(), 2u);
@@ -82,8 +82,10 @@ TEST(CliSat, StationaryAndMovingMatchTheLibrary) {
   EXPECT_EQ(to_double(mv[1][1]), c.time);
   ASSERT_EQ(mv.size(), 2u + static_cast<std::size_t>(c.count));
   for (int i = 0; i < c.count; ++i) {
-    EXPECT_EQ(to_double(mv[2 + static_cast<std::size_t>(i)][1]), c.point[static_cast<std::size_t>(i)].x);
-    EXPECT_EQ(to_double(mv[2 + static_cast<std::size_t>(i)][2]), c.point[static_cast<std::size_t>(i)].y);
+    EXPECT_EQ(to_double(mv[2 + static_cast<std::size_t>(i)][1]),
+              c.point[static_cast<std::size_t>(i)].x);
+    EXPECT_EQ(to_double(mv[2 + static_cast<std::size_t>(i)][2]),
+              c.point[static_cast<std::size_t>(i)].y);
   }
   std::error_code ec;
   fs::remove_all(dir, ec);

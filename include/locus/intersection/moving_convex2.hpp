@@ -40,10 +40,10 @@ namespace locus {
 /// The first contact of two moving polygons (see the header comment).
 template <Real T>
 struct Contact2 {
-  Kind kind = Kind::empty;            ///< empty, point, segment, or polygon (overlap at time 0)
-  int count = 0;                      ///< entries of point: 0, 1 or 2
-  T time = T(0);                      ///< the first time of contact in [0, tmax]
-  std::array<Vec2<T>, 2> point{};     ///< the contact set at `time`
+  Kind kind = Kind::empty;         ///< empty, point, segment, or polygon (overlap at time 0)
+  int count = 0;                   ///< entries of point: 0, 1 or 2
+  T time = T(0);                   ///< the first time of contact in [0, tmax]
+  std::array<Vec2<T>, 2> point{};  ///< the contact set at `time`
   /// True when the polygons meet during [0, tmax].
   [[nodiscard]] constexpr explicit operator bool() const noexcept { return kind != Kind::empty; }
 };
@@ -69,8 +69,7 @@ template <Real T>
 [[nodiscard]] inline Contact2<T> first_contact_convex_polygons(std::span<const Vec2<T>> a,
                                                                const Vec2<T>& va,
                                                                std::span<const Vec2<T>> b,
-                                                               const Vec2<T>& vb,
-                                                               T tmax) noexcept {
+                                                               const Vec2<T>& vb, T tmax) noexcept {
   return detail::sat2::first_contact<T>(a, va, b, vb, tmax);
 }
 
@@ -90,9 +89,8 @@ requires std::same_as<range_point_t<RA>, range_point_t<RB>>
 [[nodiscard]] inline bool intersects_convex_polygons(const RA& a, const range_point_t<RA>& va,
                                                      const RB& b, const range_point_t<RA>& vb,
                                                      range_scalar_t<RA> tmax) noexcept {
-  return detail::sat2::first_contact<range_scalar_t<RA>>(point_span(a), va, point_span(b), vb,
-                                                         tmax)
-      .kind != Kind::empty;
+  return detail::sat2::first_contact<range_scalar_t<RA>>(point_span(a), va, point_span(b), vb, tmax)
+             .kind != Kind::empty;
 }
 
 /// First contact of two moving triangles.
@@ -139,8 +137,7 @@ template <Real T>
 /// Whether two moving oriented boxes meet during [0, tmax].
 template <Real T>
 [[nodiscard]] inline bool intersects(const OrientedBox2<T>& a, const Vec2<T>& va,
-                                     const OrientedBox2<T>& b, const Vec2<T>& vb,
-                                     T tmax) noexcept {
+                                     const OrientedBox2<T>& b, const Vec2<T>& vb, T tmax) noexcept {
   return first_contact(a, va, b, vb, tmax).kind != Kind::empty;
 }
 
