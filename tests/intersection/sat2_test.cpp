@@ -374,6 +374,47 @@ TYPED_TEST(Sat2, PowerOfTwoScaling) {
   }
 }
 
+TYPED_TEST(Sat2, VertexOrderAndQuarterTurns) {
+  using T = TypeParam;
+  Rng rng(3);
+  SCOPED_TRACE(rng.trace());
+  const double eps = double(std::numeric_limits<T>::epsilon());
+  for (int it = 0; it < 60; ++it) {
+    const auto a = random_convex<T>(rng, it % 2 == 0), b = random_convex<T>(rng, it % 2 == 0);
+    const auto r = convex_polygon_intersection(a, b);
+    // Another first vertex and the opposite order describe the same polygon: the same answer,
+    // bit for bit (decisions are exact, constructions canonical).
+    auto a2 = a;
+    std::rotate(a2.begin(), a2.begin() + static_cast<std::ptrdiff_t>(a2.size() / 2), a2.end());
+    std::reverse(a2.begin(), a2.end());
+    const auto r2 = convex_polygon_intersection(a2, b);
+    ASSERT_EQ(r2.kind, r.kind);
+    ASSERT_EQ(r2.vertices.size(), r.vertices.size());
+    for (std::size_t i = 0; i < r.vertices.size(); ++i) EXPECT_EQ(r2.vertices[i], r.vertices[i]);
+    // A quarter turn (x, y) -> (-y, x) is exact: the same kind, the turned points.
+    const auto turn = [](std::vector<Vec2<T>> p) {
+      for (auto& x : p) x = Vec2<T>{-x.y, x.x};
+      return p;
+    };
+    const auto r3 = convex_polygon_intersection(turn(a), turn(b));
+    ASSERT_EQ(r3.kind, r.kind);
+    ASSERT_EQ(r3.vertices.size(), r.vertices.size());
+    const auto want = turn(r.vertices);
+    const double tol = 12 * eps * max_abs(a, b);
+    for (const auto& g : r3.vertices) {
+      double best = std::numeric_limits<double>::infinity();
+      for (const auto& w : want)
+        best = std::min(best, std::max(std::abs(double(g.x - w.x)), std::abs(double(g.y - w.y))));
+      EXPECT_LE(best, tol);
+    }
+    const Vec2<T> va = rng.vec<T, 2>(T(-1), T(1)), vb = rng.vec<T, 2>(T(-1), T(1));
+    const auto c = first_contact_convex_polygons(a, va, b, vb, T(6));
+    const auto c2 = first_contact_convex_polygons(a2, va, b, vb, T(6));
+    EXPECT_EQ(c2.kind, c.kind);
+    EXPECT_EQ(c2.time, c.time);
+  }
+}
+
 // ---- moving ---------------------------------------------------------------------------------
 
 /// Exact first time from the same projection intervals (the library's axes), or -1 for none.
