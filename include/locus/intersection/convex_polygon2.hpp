@@ -10,10 +10,10 @@
 // its outer side (or, for a segment-like polygon, its own line; docs/notes/intersection2.md);
 // every such side is an exact orient2d over the input coordinates, so intersects() is the exact
 // answer for the floating-point input, symmetric and invariant under power-of-two scaling.
-// Intersection set (kind decided exactly): empty; point or segment when the polygons only touch
-// (then a weakly separating edge line holds the set and its end points are input vertices,
-// exactly); polygon when the interiors overlap: counter-clockwise, starting at the
-// lexicographically smallest vertex, no repeated or straight-angle vertex (all decided exactly).
+// Intersection set (kind decided exactly): empty; point or segment when two regions only touch
+// (a weakly separating edge line holds the set; its end points are input vertices, exactly);
+// polygon when the interiors overlap: counter-clockwise, from the lexicographically smallest
+// vertex, no repeated or straight-angle vertex (decided exactly; rounding may merge close ones).
 // Its vertices are input vertices (exact) or crossings of an edge of each polygon, clipped by
 // Sutherland-Hodgman with symbolic vertices whose sides are exact (core/crossing.hpp) and
 // constructed once from the input: |X - X*|inf <= 6 eps max(|X*|inf, m), m the largest input
