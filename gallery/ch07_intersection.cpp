@@ -2,19 +2,25 @@
 // Gallery, chapter 7: intersection in 2D of linear components and curves. Figure 7.1 (a line
 // against an arc: the circle points and which of them lie on the arc), 7.5 (ellipse and
 // parabola), 7.6 (the three relations of two circles), 7.7-7.9 (contained, transverse and
-// separated ellipses) and 7.10 (two ellipses meeting in four points). Every point and every
-// relation drawn is what intersection() / relation() return; a figure fails when the count or
-// the relation is not the one the configuration has.
+// separated ellipses), 7.10 (two ellipses meeting in four points) and the separating-axis
+// figures 7.12-7.18 (stationary and moving convex polygons). Every point, overlap, contact and
+// relation drawn is what intersection() / relation() / first_contact() return; a figure fails
+// when the count, kind or relation is not the one the configuration has.
 #include "gallery.hpp"
 
+#include <locus/core/predicates.hpp>
 #include <locus/intersection/circle_circle.hpp>
+#include <locus/intersection/convex_polygon2.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/ellipse_quadratic_curve.hpp>
 #include <locus/intersection/line_arc.hpp>
 #include <locus/intersection/line_circle.hpp>
+#include <locus/intersection/moving_convex2.hpp>
 #include <locus/primitives/quadratic_curve.hpp>
 
+#include <array>
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -152,6 +158,184 @@ bool fig_7_10(SvgWriter& w) {
                       RegionRelation::overlapping, 4);
 }
 
+// ---- separating axes (section 7.7) --------------------------------------------------------
+
+using Poly = std::vector<Vec2d>;
+
+/// An edge of p (counter-clockwise) with all of q strictly outside, as {start, end}; checked
+/// with the same exact orient2d the library uses. Empty when there is none.
+std::vector<Vec2d> separating_edge(const Poly& p, const Poly& q) {
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2d a = p[i], b = p[(i + 1) % p.size()];
+    bool all_out = true;
+    for (const Vec2d& x : q) all_out = all_out && orient2d(a, b, x) == Sign::negative;
+    if (all_out) return {a, b};
+  }
+  return {};
+}
+
+/// [min, max] of dot(d, x) over the polygon.
+std::array<double, 2> projection(const Poly& p, const Vec2d& d) {
+  std::array<double, 2> r{dot(d, p[0]), dot(d, p[0])};
+  for (const Vec2d& x : p) r[0] = std::min(r[0], dot(d, x)), r[1] = std::max(r[1], dot(d, x));
+  return r;
+}
+
+void draw_set(SvgWriter& w, const ConvexIntersection2<double>& r) {
+  if (r.kind == Kind::polygon) w.polygon(r.vertices, filled(c::red, 0.45));
+  if (r.kind == Kind::segment) w.segment(r.vertices[0], r.vertices[1], pen(c::red, 4));
+  if (r.kind == Kind::point) point(w, r.vertices[0], "", c::red);
+}
+
+Poly moved(const Poly& p, const Vec2d& v, double t) {
+  Poly q = p;
+  for (Vec2d& x : q) x += t * v;
+  return q;
+}
+
+// 7.12: two separated convex polygons and a separating line (an edge line of the first).
+bool fig_7_12(SvgWriter& w) {
+  const Poly a{{0, 0}, {3, -0.5}, {4, 1.5}, {2, 3}, {0.3, 2.2}};
+  const Poly b{{5.5, 1}, {8, 0.5}, {8.5, 3}, {6, 4}};
+  const auto e = separating_edge(a, b);
+  w.polygon(a, filled(c::blue));
+  w.polygon(b, filled(c::green));
+  if (!e.empty()) w.line(e[0], e[1] - e[0], dashed(c::black, 1.5));
+  w.text(Vec2d{0, -1.8}, "intersects: false; dashed: a separating edge line",
+         text_style(c::black, 0, 0));
+  return !intersects_convex_polygons(a, b) && !e.empty();
+}
+
+// 7.13: (a) nonintersecting and (b) intersecting convex polygons (overlap from intersection).
+bool fig_7_13(SvgWriter& w) {
+  const Poly a{{0, 0}, {3, 0}, {3.5, 2}, {1, 3}};
+  const Poly b{{4.2, 1}, {6.5, 0.5}, {6, 3}};
+  const Poly c2{{8, 0}, {11, 0}, {11.5, 2}, {9, 3}};
+  const Poly d{{10, 1}, {13, 0.5}, {12.5, 3.5}};
+  w.polygon(a, filled(c::blue));
+  w.polygon(b, filled(c::green));
+  w.polygon(c2, filled(c::blue));
+  w.polygon(d, filled(c::green));
+  const auto r0 = convex_polygon_intersection(a, b), r1 = convex_polygon_intersection(c2, d);
+  draw_set(w, r1);
+  w.text(Vec2d{1, -1}, "(a) " + std::string(to_string(r0.kind)), text_style(c::black, 0, 0));
+  w.text(Vec2d{9, -1}, "(b) " + std::string(to_string(r1.kind)), text_style(c::black, 0, 0));
+  return r0.kind == Kind::empty && r1.kind == Kind::polygon;
+}
+
+// 7.14: (a) edge-edge, (b) vertex-edge and (c) vertex-vertex contact: the exact touching sets.
+bool fig_7_14(SvgWriter& w) {
+  const Triangle2d t{{0, 0}, {4, 0}, {0, 4}};
+  const Triangle2d others[3] = {
+      {{1, 3}, {3, 1}, {4, 4}}, {{2, 2}, {5, 3}, {3, 5}}, {{4, 0}, {6, 0}, {6, 2}}};
+  const Kind expect[3] = {Kind::segment, Kind::point, Kind::point};
+  const char* names[3] = {"(a) edge-edge", "(b) vertex-edge", "(c) vertex-vertex"};
+  bool ok = true;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2d off{8.0 * k, 0};
+    const Triangle2d a{t.v0 + off, t.v1 + off, t.v2 + off};
+    const Triangle2d b{others[k].v0 + off, others[k].v1 + off, others[k].v2 + off};
+    const auto r = intersection(a, b);
+    ok = ok && r.kind == expect[k];
+    w.polygon(Poly{a.v0, a.v1, a.v2}, filled(c::blue));
+    w.polygon(Poly{b.v0, b.v1, b.v2}, filled(c::green));
+    if (r.kind == Kind::segment) w.segment(r.point[0], r.point[1], pen(c::red, 4));
+    if (r.kind == Kind::point) point(w, r.point[0], "", c::red);
+    w.text(off + Vec2d{0, -1}, names[k], text_style(c::black, 0, 0));
+  }
+  return ok;
+}
+
+/// Draws the edge normals of p at their edges' midpoints: green where the axis separates p and
+/// q (their projections are disjoint), gray otherwise; returns how many separate.
+int draw_normals(SvgWriter& w, const Poly& p, const Poly& q) {
+  int n = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2d a = p[i], b = p[(i + 1) % p.size()];
+    const Vec2d d = normalize(Vec2d{b.y - a.y, a.x - b.x});
+    const auto pa = projection(p, d), pb = projection(q, d);
+    const bool sep = pa[1] < pb[0] || pb[1] < pa[0];
+    n += sep;
+    w.arrow(0.5 * (a + b), 0.5 * (a + b) + 1.2 * d, pen(sep ? c::green : c::gray, sep ? 2 : 1));
+  }
+  return n;
+}
+
+// 7.15: a separation direction D that is no edge normal; the edge normals that also separate
+// come (a) from one triangle, (b) from both.
+bool fig_7_15(SvgWriter& w) {
+  bool ok = true;
+  const Poly as[2] = {{{0, 0}, {3, 0}, {1, 2.5}}, {{10, 0}, {13, 0}, {11.5, 2}}};
+  const Poly bs[2] = {{{1.5, 2}, {5, 4}, {3.5, 4.5}}, {{13.5, 2.8}, {15, 3.3}, {13.2, 4.2}}};
+  for (int k = 0; k < 2; ++k) {
+    const Poly& a = as[k];
+    const Poly& b = bs[k];
+    w.polygon(a, filled(c::blue));
+    w.polygon(b, filled(c::green));
+    const int na = draw_normals(w, a, b), nb = draw_normals(w, b, a);
+    ok = ok && !intersects_convex_polygons(a, b) && na > 0 && (k == 0 ? nb == 0 : nb > 0);
+    w.text(a[0] + Vec2d{0, -1}, k == 0 ? "(a) same triangle" : "(b) different triangles",
+           text_style(c::black, 0, 0));
+  }
+  return ok;
+}
+
+// 7.16: separated by an edge normal of the first polygon: both projections onto that axis.
+bool fig_7_16(SvgWriter& w) {
+  const Poly a{{0, 0}, {3, 0}, {3.5, 2}, {1.5, 3}};
+  const Poly b{{5, -1}, {7, 0}, {6, 2.5}, {4.5, 1.5}};
+  const auto e = separating_edge(a, b);
+  w.polygon(a, filled(c::blue));
+  w.polygon(b, filled(c::green));
+  if (e.empty()) return false;
+  const Vec2d d = normalize(Vec2d{e[1].y - e[0].y, e[0].x - e[1].x});
+  const Vec2d o{1, -3};  // the axis drawn through o
+  w.line(o, d, dashed(c::gray, 1));
+  const auto pa = projection(a, d), pb = projection(b, d);
+  const double base = dot(d, o);
+  w.segment(o + (pa[0] - base) * d, o + (pa[1] - base) * d, pen(c::blue, 4));
+  w.segment(o + (pb[0] - base) * d, o + (pb[1] - base) * d, pen(c::green, 4));
+  w.segment(e[0], e[1], pen(c::red, 3));
+  return !intersects_convex_polygons(a, b) && (pa[1] < pb[0] || pb[1] < pa[0]);
+}
+
+/// A moving pair: the polygons at time 0 (filled) and at first contact (outlined), the
+/// velocities, the contact set; returns its kind.
+Kind moving_pair(SvgWriter& w, const Poly& a, const Vec2d& va, const Poly& b, const Vec2d& vb,
+                 double tmax) {
+  const auto r = first_contact_convex_polygons(a, va, b, vb, tmax);
+  w.polygon(a, filled(c::blue));
+  w.polygon(b, filled(c::green));
+  w.arrow(a[0], a[0] + va, pen(c::blue, 1.5));
+  w.arrow(b[0], b[0] + vb, pen(c::green, 1.5));
+  const double t = r ? double(r.time) : tmax;
+  w.polyline(moved(a, va, t), dashed(c::blue, 1.5), true);
+  w.polyline(moved(b, vb, t), dashed(c::green, 1.5), true);
+  if (r.kind == Kind::segment) w.segment(r.point[0], r.point[1], pen(c::red, 4));
+  if (r.kind == Kind::point) point(w, r.point[0], "", c::red);
+  const std::string what = r ? std::string(to_string(r.kind)) + " at t = " + std::to_string(t)
+                             : std::string("no contact");
+  w.text(a[0] + Vec2d{0, -1.2}, what, text_style(c::black, 0, 0));
+  return r.kind;
+}
+
+// 7.17: predicted (a) edge-edge contact, (b) vertex-vertex contact, (c) no contact.
+bool fig_7_17(SvgWriter& w) {
+  const Poly sq{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  const auto at = [](const Poly& p, const Vec2d& o) { return moved(p, o, 1.0); };
+  const Kind k0 = moving_pair(w, sq, {0, 0}, at(sq, {5, 0.5}), {-1, 0}, 5);
+  const Kind k1 = moving_pair(w, at(sq, {9, 0}), {0, 0}, at(sq, {13, 4}), {-1, -1}, 5);
+  const Kind k2 = moving_pair(w, at(sq, {18, 0}), {0, 0}, at(sq, {22, 3}), {-1, 0.2}, 5);
+  return k0 == Kind::segment && k1 == Kind::point && k2 == Kind::empty;
+}
+
+// 7.18: edge-edge contact of two moving triangles.
+bool fig_7_18(SvgWriter& w) {
+  const Poly a{{0, 0}, {3, 1}, {1, 3}};
+  const Poly b{{6, 2}, {8, 4}, {4, 4}};
+  return moving_pair(w, a, {0.5, 0.25}, b, {-1, -0.5}, 4) == Kind::segment;
+}
+
 }  // namespace
 
 std::vector<Figure> chapter7_intersection_figures() {
@@ -163,6 +347,13 @@ std::vector<Figure> chapter7_intersection_figures() {
       {"7.8", "intersection(Ellipse2, Ellipse2), relation", fig_7_8},
       {"7.9", "relation(Ellipse2, Ellipse2)", fig_7_9},
       {"7.10", "intersection(Ellipse2, Ellipse2)", fig_7_10},
+      {"7.12", "intersects_convex_polygons", fig_7_12},
+      {"7.13", "convex_polygon_intersection", fig_7_13},
+      {"7.14", "intersection(Triangle2, Triangle2)", fig_7_14},
+      {"7.15", "intersects_convex_polygons (edge normals)", fig_7_15},
+      {"7.16", "intersects_convex_polygons (edge-normal axis)", fig_7_16},
+      {"7.17", "first_contact_convex_polygons", fig_7_17},
+      {"7.18", "first_contact_convex_polygons (triangles)", fig_7_18},
   };
 }
 

@@ -170,6 +170,15 @@ class BoxHits(Result):
     t_enter: _Floats
     t_exit: _Floats
 
+class ConvexIntersection(Result):
+    kind: str
+    vertices: _Floats
+
+class Contact(Result):
+    kind: str
+    time: float | None
+    points: _Floats
+
 class CurveIntersections(Result):
     kind: npt.NDArray[np.uint8]
     count: npt.NDArray[np.int8]
@@ -251,6 +260,11 @@ def circle_circle(
 def segment_circle(
     segments: npt.ArrayLike, centers: npt.ArrayLike, radii: npt.ArrayLike
 ) -> CurveIntersections: ...
+def convex_polygons_intersect(a: npt.ArrayLike, b: npt.ArrayLike) -> bool: ...
+def convex_polygon_intersection(a: npt.ArrayLike, b: npt.ArrayLike) -> ConvexIntersection: ...
+def first_contact(
+    a: npt.ArrayLike, va: npt.ArrayLike, b: npt.ArrayLike, vb: npt.ArrayLike, tmax: float
+) -> Contact: ...
 
 class SvgWriter:
     def __init__(

@@ -13,6 +13,7 @@
 #include <locus/intersection/circle_circle.hpp>
 #include <locus/intersection/circle_ellipse.hpp>
 #include <locus/intersection/circle_quadratic_curve.hpp>
+#include <locus/intersection/convex_polygon2.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/ellipse_quadratic_curve.hpp>
 #include <locus/intersection/line_aligned_box.hpp>
@@ -29,6 +30,7 @@
 #include <locus/intersection/line_ray.hpp>
 #include <locus/intersection/line_segment.hpp>
 #include <locus/intersection/line_triangle.hpp>
+#include <locus/intersection/moving_convex2.hpp>
 #include <locus/intersection/oriented_box_oriented_box.hpp>
 #include <locus/intersection/oriented_box_plane.hpp>
 #include <locus/intersection/oriented_box_sphere.hpp>

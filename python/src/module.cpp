@@ -9,6 +9,8 @@
 
 namespace locus::python {
 
+void bind_sat2(py::module_& m);  // python/src/sat2.cpp
+
 namespace {
 
 py::handle g_module;  // the module (borrowed: it lives as long as the interpreter), set at import
@@ -87,6 +89,8 @@ for _name, _doc in [
                           "non_orientable_components."),
     ("RayHits", "ray_triangle_hits: hit, t, triangle, barycentric, point, front."),
     ("BoxHits", "ray_box_hits / segment_box_hits: hit, t_enter, t_exit."),
+    ("ConvexIntersection", "convex_polygon_intersection: kind, vertices (k, 2)."),
+    ("Contact", "first_contact: kind, time, points (k, 2)."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
 ]:
     _make(_name, _doc)
@@ -226,4 +230,5 @@ PYBIND11_MODULE(locus, m) {
   bind_intersection2(m);
   bind_io(m);
   bind_misc3(m);
+  bind_sat2(m);
 }
