@@ -152,8 +152,8 @@ LOCUS_ALWAYS_INLINE inline unsigned packet_candidates(const typename Bvh<T>::Pac
     const D4 p0 = x[1] * y[2], q0 = x[2] * y[1], p1 = x[2] * y[0], q1 = x[0] * y[2],
              p2 = x[0] * y[1], q2 = x[1] * y[0];
     const D4 v = dx * (p0 - q0) + dy * (p1 - q1) + dz * (p2 - q2);
-    const D4 perm = adx * (absd(p0) + absd(q0)) + ady * (absd(p1) + absd(q1)) +
-                    adz * (absd(p2) + absd(q2));
+    const D4 perm =
+        adx * (absd(p0) + absd(q0)) + ady * (absd(p1) + absd(q1)) + adz * (absd(p2) + absd(q2));
     const L4 dec = (perm > splatd(0x1p-960)) & (perm < splatd(0x1p1000)) &
                    (absd(v) > splatd(7.772e-16) * perm);
     const L4 gt = v > splatd(0.0);
@@ -166,6 +166,12 @@ LOCUS_ALWAYS_INLINE inline unsigned packet_candidates(const typename Bvh<T>::Pac
     if (!reject[j]) m |= 1u << j;
   return m;
 }
+
+#ifdef LOCUS_BVH_STATS
+}  // namespace
+std::size_t g_nodes = 0, g_packets = 0;
+namespace {
+#endif
 
 struct Entry {
   std::uint32_t child, count;
@@ -203,6 +209,9 @@ struct BvhCore {
         continue;
       }
       const typename B::Node& nd = b.nodes_[e.child];
+#ifdef LOCUS_BVH_STATS
+      ++g_nodes;
+#endif
       F4 tn;
       unsigned m = slab4(nd, fr, tb, tn);
       if (!m) continue;
@@ -213,7 +222,19 @@ struct BvhCore {
       if (sorted)  // nearest last, so that it is popped first
         for (int i = 1; i < nh; ++i)
           for (int j = i; j > 0 && hit[j - 1].tn < hit[j].tn; --j) std::swap(hit[j - 1], hit[j]);
-      for (int i = 0; i < nh; ++i) stack[sp++] = hit[i];
+      for (int i = 0; i < nh; ++i) {
+        if (hit[i].count == B::internal_child) {
+          const char* q = reinterpret_cast<const char*>(&b.nodes_[hit[i].child]);
+          __builtin_prefetch(q);
+          __builtin_prefetch(q + 64);
+        } else if (!b.tris_.empty()) {
+          const char* q = reinterpret_cast<const char*>(b.tris_.data() + hit[i].child / 4);
+          __builtin_prefetch(q);
+          __builtin_prefetch(q + 64);
+          __builtin_prefetch(q + 128);
+        }
+        stack[sp++] = hit[i];
+      }
     }
   }
 
@@ -223,6 +244,9 @@ struct BvhCore {
                                             std::uint32_t count, F&& f) {
     const std::uint32_t end = first + count;
     for (std::uint32_t p = first / 4; p * 4 < end; ++p) {
+#ifdef LOCUS_BVH_STATS
+      ++g_packets;
+#endif
       unsigned m = packet_candidates<T>(b.tris_[p], lin.o, lin.d);
       for (std::uint32_t j = 0; j < 4; ++j) {
         const std::uint32_t s = p * 4 + j;
@@ -310,17 +334,21 @@ void any_run(const Bvh<T>& b, const Ray3<T>* rays, std::uint8_t* out, std::size_
   }
 }
 
-LOCUS_LANE_VERSIONS(closest_f, (const Bvh<float>& b, const Ray3<float>* r, MeshHit<float>* o,
-                                std::size_t n, float t),
+LOCUS_LANE_VERSIONS(closest_f,
+                    (const Bvh<float>& b, const Ray3<float>* r, MeshHit<float>* o, std::size_t n,
+                     float t),
                     closest_run<float>(b, r, o, n, t))
-LOCUS_LANE_VERSIONS(closest_d, (const Bvh<double>& b, const Ray3<double>* r, MeshHit<double>* o,
-                                std::size_t n, double t),
+LOCUS_LANE_VERSIONS(closest_d,
+                    (const Bvh<double>& b, const Ray3<double>* r, MeshHit<double>* o, std::size_t n,
+                     double t),
                     closest_run<double>(b, r, o, n, t))
-LOCUS_LANE_VERSIONS(any_f, (const Bvh<float>& b, const Ray3<float>* r, std::uint8_t* o,
-                            std::size_t n, float t),
+LOCUS_LANE_VERSIONS(any_f,
+                    (const Bvh<float>& b, const Ray3<float>* r, std::uint8_t* o, std::size_t n,
+                     float t),
                     any_run<float>(b, r, o, n, t))
-LOCUS_LANE_VERSIONS(any_d, (const Bvh<double>& b, const Ray3<double>* r, std::uint8_t* o,
-                            std::size_t n, double t),
+LOCUS_LANE_VERSIONS(any_d,
+                    (const Bvh<double>& b, const Ray3<double>* r, std::uint8_t* o, std::size_t n,
+                     double t),
                     any_run<double>(b, r, o, n, t))
 
 }  // namespace
@@ -349,6 +377,7 @@ namespace {
 
 struct Prim {
   float lo[3], hi[3], c[3];
+  std::uint32_t id;
 };
 
 struct Bounds {
@@ -359,6 +388,7 @@ struct Bounds {
       hi[a] = std::max(hi[a], h[a]);
     }
   }
+  void grow(const Bounds& b) noexcept { grow(b.lo, b.hi); }
   [[nodiscard]] double area() const noexcept {
     if (!(lo[0] <= hi[0])) return 0.0;
     const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
@@ -368,16 +398,21 @@ struct Bounds {
 
 struct BNode {
   Bounds box;
-  std::uint32_t a = 0, b = 0;  // leaf: [a, a + b) of the order; internal: children a and b
+  std::uint32_t a = 0, b = 0;  // leaf: [a, a + b) of the primitives; internal: children a and b
   bool leaf = true;
 };
 
-std::vector<BNode> build_binary(const std::vector<Prim>& prims, std::vector<std::uint32_t>& order,
-                                int bins, int leaf_size) {
+/// The bin of centroid coordinate c: floor((c - lo) k) clamped to [0, bins - 1].
+inline int bin_of(float c, float lo, float k, int bins) noexcept {
+  return std::min(bins - 1, static_cast<int>((c - lo) * k));
+}
+
+/// Binned SAH (cost counted in packets of four triangles) into a binary tree; reorders prims
+/// into leaf order. Below kSahDepth levels, object medians bound the depth.
+std::vector<BNode> build_binary(std::vector<Prim>& prims, int bins, int leaf_size) {
   std::vector<BNode> nodes;
   const std::uint32_t n = static_cast<std::uint32_t>(prims.size());
-  order.resize(n);
-  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+  nodes.reserve(2 * static_cast<std::size_t>(n / 2 + 1));
   struct Work {
     std::uint32_t b, e, node;
     int depth;
@@ -389,44 +424,54 @@ std::vector<BNode> build_binary(const std::vector<Prim>& prims, std::vector<std:
     Bounds box;
     std::uint32_t count = 0;
   };
-  std::vector<Bin> bin(static_cast<std::size_t>(bins));
-  std::vector<double> right_area(static_cast<std::size_t>(bins));
-  std::vector<std::uint32_t> right_count(static_cast<std::size_t>(bins));
+  const auto nb = static_cast<std::size_t>(bins);
+  std::vector<Bin> bin(3 * nb);
+  std::vector<double> right_area(nb);
+  std::vector<std::uint32_t> right_count(nb);
   while (!work.empty()) {
     const Work w = work.back();
     work.pop_back();
     Bounds box, cb;
     for (std::uint32_t i = w.b; i < w.e; ++i) {
-      const Prim& p = prims[order[i]];
+      const Prim& p = prims[i];
       box.grow(p.lo, p.hi);
       cb.grow(p.c, p.c);
     }
     nodes[w.node].box = box;
     const std::uint32_t cnt = w.e - w.b;
-    if (cnt <= 1) {
+    if (cnt <= 1 || (cnt <= 4 && cnt <= static_cast<std::uint32_t>(leaf_size))) {
       nodes[w.node].a = w.b;
       nodes[w.node].b = cnt;
       continue;
     }
     int best_axis = -1, best_bin = 0;
     double best_cost = std::numeric_limits<double>::infinity();
+    float k[3] = {0, 0, 0};
     if (w.depth < kSahDepth) {
+      for (auto& bb : bin) bb = Bin{};
       for (int a = 0; a < 3; ++a) {
-        const double ext = double(cb.hi[a]) - cb.lo[a];
-        if (!(ext > 0.0)) continue;
-        const double k = bins / ext;
-        for (auto& bb : bin) bb = Bin{};
-        for (std::uint32_t i = w.b; i < w.e; ++i) {
-          const Prim& p = prims[order[i]];
-          const int j = std::min(bins - 1, static_cast<int>((double(p.c[a]) - cb.lo[a]) * k));
-          bin[static_cast<std::size_t>(j)].box.grow(p.lo, p.hi);
-          ++bin[static_cast<std::size_t>(j)].count;
+        // float binning: (c - lo) k lies in [0, bins (1 + 2^-22)]; an extent too small for a
+        // finite k (or none) leaves the axis out.
+        const float ext = cb.hi[a] - cb.lo[a];
+        k[a] = ext > 0x1p-100f ? static_cast<float>(bins) / ext : 0.0f;
+      }
+      for (std::uint32_t i = w.b; i < w.e; ++i) {
+        const Prim& p = prims[i];
+        for (int a = 0; a < 3; ++a) {
+          Bin& bb = bin[static_cast<std::size_t>(a) * nb +
+                        static_cast<std::size_t>(bin_of(p.c[a], cb.lo[a], k[a], bins))];
+          bb.box.grow(p.lo, p.hi);
+          ++bb.count;
         }
+      }
+      for (int a = 0; a < 3; ++a) {
+        if (k[a] == 0.0f) continue;
+        const Bin* ab = &bin[static_cast<std::size_t>(a) * nb];
         Bounds acc;
         std::uint32_t c = 0;
         for (int j = bins - 1; j > 0; --j) {
-          const auto& bb = bin[static_cast<std::size_t>(j)];
-          if (bb.count) acc.grow(bb.box.lo, bb.box.hi);
+          const auto& bb = ab[j];
+          if (bb.count) acc.grow(bb.box);
           c += bb.count;
           right_area[static_cast<std::size_t>(j)] = acc.area();
           right_count[static_cast<std::size_t>(j)] = c;
@@ -434,19 +479,21 @@ std::vector<BNode> build_binary(const std::vector<Prim>& prims, std::vector<std:
         Bounds left;
         c = 0;
         for (int j = 0; j < bins - 1; ++j) {
-          const auto& bb = bin[static_cast<std::size_t>(j)];
-          if (bb.count) left.grow(bb.box.lo, bb.box.hi);
+          const auto& bb = ab[j];
+          if (bb.count) left.grow(bb.box);
           c += bb.count;
           const std::uint32_t rc = right_count[static_cast<std::size_t>(j + 1)];
           if (c == 0 || rc == 0) continue;
-          const double cost = left.area() * c + right_area[static_cast<std::size_t>(j + 1)] * rc;
+          // Cost in packets of four: a leaf tests its triangles four at a time.
+          const double cost = left.area() * ((c + 3) / 4) +
+                              right_area[static_cast<std::size_t>(j + 1)] * ((rc + 3) / 4);
           if (cost < best_cost) best_cost = cost, best_axis = a, best_bin = j;
         }
       }
     }
     const double parent = box.area();
     if (cnt <= static_cast<std::uint32_t>(leaf_size) &&
-        (best_axis < 0 || parent * cnt <= parent + best_cost)) {
+        (best_axis < 0 || parent * ((cnt + 3) / 4) <= parent + best_cost)) {
       nodes[w.node].a = w.b;
       nodes[w.node].b = cnt;
       continue;
@@ -454,26 +501,21 @@ std::vector<BNode> build_binary(const std::vector<Prim>& prims, std::vector<std:
     std::uint32_t mid = w.b;
     if (best_axis >= 0) {
       const int a = best_axis;
-      const double k = bins / (double(cb.hi[a]) - cb.lo[a]);
       const float lo = cb.lo[a];
+      const float ka = k[a];
       mid = static_cast<std::uint32_t>(
-          std::partition(order.begin() + w.b, order.begin() + w.e,
-                         [&](std::uint32_t id) {
-                           return std::min(bins - 1, static_cast<int>(
-                                                         (double(prims[id].c[a]) - lo) * k)) <=
-                                  best_bin;
-                         }) -
-          order.begin());
+          std::partition(prims.begin() + w.b, prims.begin() + w.e,
+                         [&](const Prim& p) { return bin_of(p.c[a], lo, ka, bins) <= best_bin; }) -
+          prims.begin());
     }
     if (mid == w.b || mid == w.e) {  // object median on the widest centroid axis
       int a = 0;
       for (int j = 1; j < 3; ++j)
         if (double(cb.hi[j]) - cb.lo[j] > double(cb.hi[a]) - cb.lo[a]) a = j;
       mid = w.b + cnt / 2;
-      std::nth_element(order.begin() + w.b, order.begin() + mid, order.begin() + w.e,
-                       [&](std::uint32_t x, std::uint32_t y) {
-                         return prims[x].c[a] < prims[y].c[a] ||
-                                (prims[x].c[a] == prims[y].c[a] && x < y);
+      std::nth_element(prims.begin() + w.b, prims.begin() + mid, prims.begin() + w.e,
+                       [&](const Prim& x, const Prim& y) {
+                         return x.c[a] < y.c[a] || (x.c[a] == y.c[a] && x.id < y.id);
                        });
     }
     const std::uint32_t l = static_cast<std::uint32_t>(nodes.size());
@@ -510,9 +552,9 @@ void Bvh<T>::build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool p
       prims[i].hi[a] = detail::round_up(std::ldexp(double(boxes[i].max[a]), -e));
       prims[i].c[a] = 0.5f * prims[i].lo[a] + 0.5f * prims[i].hi[a];
     }
+    prims[i].id = static_cast<std::uint32_t>(i);
   }
-  std::vector<std::uint32_t> order;
-  const std::vector<detail::BNode> bn = detail::build_binary(prims, order, bins, leaf_size);
+  const std::vector<detail::BNode> bn = detail::build_binary(prims, bins, leaf_size);
 
   // Collapse: each 4-wide node takes the children of a binary node, then repeatedly opens its
   // internal child of largest area until it has four.
@@ -540,7 +582,8 @@ void Bvh<T>::build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool p
       int pick = -1;
       double area = -1.0;
       for (int j = 0; j < nl; ++j)
-        if (!bn[list[j]].leaf && bn[list[j]].box.area() > area) pick = j, area = bn[list[j]].box.area();
+        if (!bn[list[j]].leaf && bn[list[j]].box.area() > area)
+          pick = j, area = bn[list[j]].box.area();
       if (pick < 0) break;
       const detail::BNode& p = bn[list[pick]];
       list[pick] = p.a;
@@ -561,7 +604,7 @@ void Bvh<T>::build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool p
           while (ids_.size() % 4) ids_.push_back(MeshHit<T>::none);
         nd.child[j] = static_cast<std::uint32_t>(ids_.size());
         nd.count[j] = c.b;
-        for (std::uint32_t i = c.a; i < c.a + c.b; ++i) ids_.push_back(order[i]);
+        for (std::uint32_t i = c.a; i < c.a + c.b; ++i) ids_.push_back(prims[i].id);
       } else {
         nd.child[j] = static_cast<std::uint32_t>(nodes_.size());
         nd.count[j] = internal_child;
@@ -612,7 +655,8 @@ Bvh<T>::Bvh(std::span<const Vec3<T>> vertices,
     if (ids_[s] == MeshHit<T>::none) continue;
     const auto& t = triangles[ids_[s]];
     for (int k = 0; k < 3; ++k)
-      for (int a = 0; a < 3; ++a) tris_[s / 4].v[k][a][s % 4] = vertices[t[static_cast<std::size_t>(k)]][a];
+      for (int a = 0; a < 3; ++a)
+        tris_[s / 4].v[k][a][s % 4] = vertices[t[static_cast<std::size_t>(k)]][a];
   }
   status_ = Status::ok;
 }
@@ -668,7 +712,8 @@ void split_over_threads(std::size_t n, unsigned threads, F&& f) {
   }
   std::vector<std::thread> pool;
   const std::size_t step = (n + k - 1) / k;
-  for (std::size_t b = step; b < n; b += step) pool.emplace_back([&f, b, n, step] { f(b, std::min(n, b + step)); });
+  for (std::size_t b = step; b < n; b += step)
+    pool.emplace_back([&f, b, n, step] { f(b, std::min(n, b + step)); });
   f(std::size_t(0), std::min(n, step));
   for (auto& t : pool) t.join();
 }
@@ -731,8 +776,7 @@ void Bvh<T>::visit_overlaps_impl(const AlignedBox3<T>& q, void* ctx,
     for (int k = 0; k < 4; ++k) {
       if (nd.count[k] == 0) continue;
       bool meet = true;
-      for (int a = 0; a < 3; ++a)
-        meet = meet && nd.box[a][k] <= hi[a] && lo[a] <= nd.box[a + 3][k];
+      for (int a = 0; a < 3; ++a) meet = meet && nd.box[a][k] <= hi[a] && lo[a] <= nd.box[a + 3][k];
       if (!meet) continue;
       if (nd.count[k] == internal_child) {
         stack[sp++] = nd.child[k];
@@ -750,7 +794,8 @@ void Bvh<T>::visit_overlaps_impl(const AlignedBox3<T>& q, void* ctx,
 
 template <Real T>
 Distance<T, 3, NoParam, MeshPoint<T>> Bvh<T>::nearest(const Vec3<T>& p) const noexcept {
-  if (tris_.empty() || status_ != Status::ok || !is_finite(p)) return detail::mesh_nan_distance<T>();
+  if (tris_.empty() || status_ != Status::ok || !is_finite(p))
+    return detail::mesh_nan_distance<T>();
   Vec3<double> ps{};
   double pm = 0.0;
   for (int a = 0; a < 3; ++a) {

@@ -85,8 +85,7 @@ MeshHit<T> brute_closest(const Soup<T>& s, const Ray3<T>& r, T tmax) {
   for (std::size_t i = 0; i < s.f.size(); ++i) {
     const auto h = watertight_hit(r, tri_of(s, i));
     if (!h.hit || !(h.t <= tmax)) continue;
-    if (!best || h.t < best.t)
-      best = {static_cast<std::uint32_t>(i), h.t, h.barycentric, h.front};
+    if (!best || h.t < best.t) best = {static_cast<std::uint32_t>(i), h.t, h.barycentric, h.front};
   }
   return best;
 }
@@ -158,8 +157,8 @@ TYPED_TEST(BvhTest, BatchesAndEveryInstructionSetAgree) {
     any_want[i] = want[i] ? 1 : 0;
   }
   const detail::BatchIsa saved = detail::batch_isa();
-  for (const auto isa : {detail::BatchIsa::baseline, detail::BatchIsa::avx2,
-                         detail::BatchIsa::x86_64_v4}) {
+  for (const auto isa :
+       {detail::BatchIsa::baseline, detail::BatchIsa::avx2, detail::BatchIsa::x86_64_v4}) {
     (void)detail::set_batch_isa(isa);
     for (unsigned threads : {1u, 3u}) {
       std::vector<MeshHit<T>> got(rays.size());
@@ -214,7 +213,8 @@ TYPED_TEST(BvhTest, WatertightOnClosedMeshes) {
   expect_watertight(icosphere<T>(3.0, 1, &rng), rng, "noisy icosphere");
   const PolygonMesh<double> cube = hexahedron_mesh<double>();
   Soup<T> c;
-  for (const auto& p : cube.vertices) c.v.push_back({grid<T>(2 * p.x), grid<T>(2 * p.y), grid<T>(2 * p.z)});
+  for (const auto& p : cube.vertices)
+    c.v.push_back({grid<T>(2 * p.x), grid<T>(2 * p.y), grid<T>(2 * p.z)});
   c.f = fan_triangles(cube);
   expect_watertight(c, rng, "cube");
 }
@@ -243,8 +243,9 @@ TYPED_TEST(BvhTest, BadInput) {
   const Bvh<T> one(vn, Tris{{0, 1, 2}});
   ASSERT_EQ(one.status(), Status::ok);
   EXPECT_TRUE(one.closest_hit(r));
-  for (const Ray3<T>& bad : {Ray3<T>{{nan, 0, -5}, {0, 0, 1}}, Ray3<T>{{0, 0, -5}, {0, nan, 1}},
-                             Ray3<T>{{0, 0, -5}, {0, 0, inf_v<T>}}, Ray3<T>{{0, 0, -5}, {0, 0, 0}}}) {
+  for (const Ray3<T>& bad :
+       {Ray3<T>{{nan, 0, -5}, {0, 0, 1}}, Ray3<T>{{0, 0, -5}, {0, nan, 1}},
+        Ray3<T>{{0, 0, -5}, {0, 0, inf_v<T>}}, Ray3<T>{{0, 0, -5}, {0, 0, 0}}}) {
     EXPECT_FALSE(one.closest_hit(bad));
     EXPECT_FALSE(one.any_hit(bad));
     EXPECT_TRUE(one.all_hits(bad).empty());
@@ -340,7 +341,8 @@ TYPED_TEST(BvhTest, BoxesOfUserObjects) {
     });
     for (std::uint32_t i = 0; i < boxes.size(); ++i) {
       bool m = true;
-      for (int a = 0; a < 3; ++a) m = m && boxes[i].min[a] <= qb.max[a] && qb.min[a] <= boxes[i].max[a];
+      for (int a = 0; a < 3; ++a)
+        m = m && boxes[i].min[a] <= qb.max[a] && qb.min[a] <= boxes[i].max[a];
       if (m) want.push_back(i);
     }
     std::sort(got.begin(), got.end());

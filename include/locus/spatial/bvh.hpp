@@ -79,7 +79,7 @@ template <Real T>
 class Bvh {
  public:
   /// Four children: boxes in the scaled float frame, lanes lo x, y, z then hi x, y, z.
-  struct alignas(32) Node {
+  struct alignas(64) Node {
     float box[6][4];
     std::uint32_t child[4];  ///< internal: node index; leaf: first slot
     std::uint32_t count[4];  ///< 0: empty; internal_child: a node; else leaf primitive count
@@ -107,8 +107,8 @@ class Bvh {
   /// The input triangle `id` (mesh mode, id < primitive_count()).
   [[nodiscard]] Triangle3<T> triangle(std::uint32_t id) const noexcept;
 
-  [[nodiscard]] MeshHit<T> closest_hit(
-      const Ray3<T>& ray, T tmax = std::numeric_limits<T>::infinity()) const noexcept;
+  [[nodiscard]] MeshHit<T> closest_hit(const Ray3<T>& ray,
+                                       T tmax = std::numeric_limits<T>::infinity()) const noexcept;
   [[nodiscard]] bool any_hit(const Ray3<T>& ray,
                              T tmax = std::numeric_limits<T>::infinity()) const noexcept;
   /// Every hit with t <= tmax into `out` (cleared first), by increasing (t, triangle).
@@ -133,16 +133,18 @@ class Bvh {
   template <class F>
   void visit_ray(const Ray3<T>& ray, T tmax, F&& f) const {
     using Fn = std::remove_reference_t<F>;
-    visit_ray_impl(ray, tmax, const_cast<void*>(static_cast<const void*>(&f)),
-                   [](void* c, std::uint32_t id, T t) -> T { return (*static_cast<Fn*>(c))(id, t); });
+    visit_ray_impl(
+        ray, tmax, const_cast<void*>(static_cast<const void*>(&f)),
+        [](void* c, std::uint32_t id, T t) -> T { return (*static_cast<Fn*>(c))(id, t); });
   }
   /// Calls f(id) for every primitive whose box meets the closed box q (exact on the stored
   /// boxes: the triangle bounds in mesh mode); f returns false to stop.
   template <class F>
   void visit_overlaps(const AlignedBox3<T>& q, F&& f) const {
     using Fn = std::remove_reference_t<F>;
-    visit_overlaps_impl(q, const_cast<void*>(static_cast<const void*>(&f)),
-                        [](void* c, std::uint32_t id) -> bool { return (*static_cast<Fn*>(c))(id); });
+    visit_overlaps_impl(
+        q, const_cast<void*>(static_cast<const void*>(&f)),
+        [](void* c, std::uint32_t id) -> bool { return (*static_cast<Fn*>(c))(id); });
   }
 
   [[nodiscard]] std::span<const Node> nodes() const noexcept { return nodes_; }
@@ -163,12 +165,12 @@ class Bvh {
 
  private:
   std::vector<Node> nodes_;
-  std::vector<std::uint32_t> ids_;      // primitive id of each slot (none: padding)
-  std::vector<Packet> tris_;            // mesh mode: slot s is lane s % 4 of packet s / 4
-  std::vector<AlignedBox3<T>> boxes_;   // primitive box of each slot
-  std::vector<std::uint32_t> slot_;     // slot of each primitive id
+  std::vector<std::uint32_t> ids_;     // primitive id of each slot (none: padding)
+  std::vector<Packet> tris_;           // mesh mode: slot s is lane s % 4 of packet s / 4
+  std::vector<AlignedBox3<T>> boxes_;  // primitive box of each slot
+  std::vector<std::uint32_t> slot_;    // slot of each primitive id
   std::size_t count_ = 0;
-  int scale_exp_ = 0;                   // float boxes hold coordinates * 2^-scale_exp_
+  int scale_exp_ = 0;  // float boxes hold coordinates * 2^-scale_exp_
   Status status_ = Status::empty_input;
 };
 
