@@ -122,15 +122,24 @@ void BM_locus_closest(benchmark::State& st) {
   }
   std::size_t hits = 0;
   for (const auto& h : out) hits += h ? 1 : 0;
-  st.counters["rays/s"] = benchmark::Counter(double(r.size()), benchmark::Counter::kIsIterationInvariantRate);
+  st.counters["rays/s"] =
+      benchmark::Counter(double(r.size()), benchmark::Counter::kIsIterationInvariantRate);
   st.counters["hits"] = double(hits);
   if (edge) st.counters["leaks"] = double(r.size() - hits);
 }
 
 BENCHMARK_TEMPLATE(BM_locus_build, float)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_TEMPLATE(BM_locus_build, double)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_TEMPLATE(BM_locus_closest, float)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_TEMPLATE(BM_locus_closest, double)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_TEMPLATE(BM_locus_closest, float)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK_TEMPLATE(BM_locus_closest, double)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 #if defined(LOCUS_HAVE_EMBREE)
 
@@ -142,16 +151,15 @@ struct Embree {
     scene = rtcNewScene(device);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     const auto& s = ::scene();
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                          s.vf.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), s.vf.size()));
     for (std::size_t i = 0; i < s.vf.size(); ++i)
       for (int a = 0; a < 3; ++a) v[3 * i + static_cast<std::size_t>(a)] = s.vf[i][a];
-    auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
-                                                             RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-                                                             s.tris.size()));
+    auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), s.tris.size()));
     for (std::size_t i = 0; i < s.tris.size(); ++i)
-      for (int k = 0; k < 3; ++k) t[3 * i + static_cast<std::size_t>(k)] = s.tris[i][static_cast<std::size_t>(k)];
+      for (int k = 0; k < 3; ++k)
+        t[3 * i + static_cast<std::size_t>(k)] = s.tris[i][static_cast<std::size_t>(k)];
     rtcCommitGeometry(g);
     rtcAttachGeometry(scene, g);
     rtcReleaseGeometry(g);
@@ -197,7 +205,8 @@ void BM_embree_closest(benchmark::State& st) {
     }
     benchmark::DoNotOptimize(hits);
   }
-  st.counters["rays/s"] = benchmark::Counter(double(r.size()), benchmark::Counter::kIsIterationInvariantRate);
+  st.counters["rays/s"] =
+      benchmark::Counter(double(r.size()), benchmark::Counter::kIsIterationInvariantRate);
   st.counters["hits"] = double(hits);
   if (edge) st.counters["leaks"] = double(r.size() - hits);
 }
