@@ -8,7 +8,8 @@
 // uniform in [-2, 2]^3, aimed at a random vertex moved by up to 0.05 per axis (most hit).
 // Edge rays: from the tube's centre circle at the target's angle (on the grid, inside the solid),
 // aimed at the midpoint or a quarter point of a random edge. Embree: one device with
-// "threads=1", one triangle geometry, default build quality, rtcIntersect1 per ray.
+// "threads=1", one triangle geometry, default build quality, rtcIntersect1 per ray; closest
+// args 0/1 (random/edge rays) on the default scene, 2/3 with RTC_SCENE_FLAG_ROBUST.
 
 #include <benchmark/benchmark.h>
 
@@ -146,9 +147,10 @@ BENCHMARK_TEMPLATE(BM_locus_closest, double)
 struct Embree {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  Embree() {
+  explicit Embree(bool robust = false) {
     device = rtcNewDevice("threads=1");
     scene = rtcNewScene(device);
+    if (robust) rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     const auto& s = ::scene();
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
@@ -179,9 +181,11 @@ void BM_embree_build(benchmark::State& st) {
   }
 }
 
+// Arg: 0 random rays, 1 edge rays; +2: the scene built with RTC_SCENE_FLAG_ROBUST.
 void BM_embree_closest(benchmark::State& st) {
-  const bool edge = st.range(0) != 0;
-  static const Embree e;
+  const bool edge = (st.range(0) & 1) != 0;
+  static const Embree fast(false), robust(true);
+  const Embree& e = st.range(0) >= 2 ? robust : fast;
   const auto& r = rays<float>(edge);
   std::size_t hits = 0;
   for (auto _ : st) {
@@ -212,7 +216,13 @@ void BM_embree_closest(benchmark::State& st) {
 }
 
 BENCHMARK(BM_embree_build)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_embree_closest)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_embree_closest)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 #endif
 

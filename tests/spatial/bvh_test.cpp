@@ -209,7 +209,7 @@ TYPED_TEST(BvhTest, WatertightOnClosedMeshes) {
   using T = TypeParam;
   Rng rng;
   SCOPED_TRACE(rng.trace());
-  expect_watertight(icosphere<T>(3.0, 2, nullptr), rng, "icosphere");
+  expect_watertight(icosphere<T>(3.0, 1, nullptr), rng, "icosphere");
   expect_watertight(icosphere<T>(3.0, 1, &rng), rng, "noisy icosphere");
   const PolygonMesh<double> cube = hexahedron_mesh<double>();
   Soup<T> c;

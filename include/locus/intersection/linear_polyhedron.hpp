@@ -138,8 +138,8 @@ using Result = Intersection<double, 3, double, NoParam, 2>;
 
 inline double param(const Plane& p, const Comp& l) noexcept {
   const double a = -plane_value(p.n, p.c, l.o);
-  const double b = l.hi ? plane_value(p.n, 0.0, l.q) - plane_value(p.n, 0.0, l.o)
-                        : dot_accurate(p.n, l.d);
+  const double b =
+      l.hi ? plane_value(p.n, 0.0, l.q) - plane_value(p.n, 0.0, l.o) : dot_accurate(p.n, l.d);
   return a / b;
 }
 
@@ -280,7 +280,7 @@ template <Real T>
 template <class C, Real T>
 requires(std::is_same_v<C, Line3<T>> || std::is_same_v<C, Ray3<T>> ||
          std::is_same_v<C, Segment3<T>>)
-[[nodiscard]] inline bool intersects(const C& a, const ConvexPolyhedron3<T>& p) noexcept {
+    [[nodiscard]] inline bool intersects(const C& a, const ConvexPolyhedron3<T>& p) noexcept {
   return intersection(a, p).kind != Kind::empty;
 }
 
@@ -288,8 +288,8 @@ requires(std::is_same_v<C, Line3<T>> || std::is_same_v<C, Ray3<T>> ||
 template <class C, Real T>
 requires(std::is_same_v<C, Line3<T>> || std::is_same_v<C, Ray3<T>> ||
          std::is_same_v<C, Segment3<T>>)
-[[nodiscard]] inline Intersection<T, 3, NoParam, T, 2> intersection(
-    const ConvexPolyhedron3<T>& p, const C& a) noexcept {
+    [[nodiscard]] inline Intersection<T, 3, NoParam, T, 2> intersection(
+        const ConvexPolyhedron3<T>& p, const C& a) noexcept {
   return swapped(intersection(a, p));
 }
 
@@ -297,7 +297,7 @@ requires(std::is_same_v<C, Line3<T>> || std::is_same_v<C, Ray3<T>> ||
 template <class C, Real T>
 requires(std::is_same_v<C, Line3<T>> || std::is_same_v<C, Ray3<T>> ||
          std::is_same_v<C, Segment3<T>>)
-[[nodiscard]] inline bool intersects(const ConvexPolyhedron3<T>& p, const C& a) noexcept {
+    [[nodiscard]] inline bool intersects(const ConvexPolyhedron3<T>& p, const C& a) noexcept {
   return intersects(a, p);
 }
 
