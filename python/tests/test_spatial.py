@@ -6,7 +6,7 @@ from fractions import Fraction
 import numpy as np
 
 import locus
-from exact import exact_ray_hit
+from test_intersection3 import exact_ray_hit
 
 
 def test_bvh_path_equals_brute_force_and_exact(rng):
@@ -28,7 +28,7 @@ def test_bvh_path_equals_brute_force_and_exact(rng):
             assert (one.barycentric[0] == big.barycentric[i]).all()
             assert (one.point[0] == big.point[i]).all()
             assert one.front[0] == big.front[i]
-    for i in range(0, len(o), 10):  # exact oracle on a sample
+    for i in range(0, len(o), 50):  # exact oracle on a sample
         best = None
         for k in range(len(tris)):
             t = exact_ray_hit(o[i], d[i], tris[k])
