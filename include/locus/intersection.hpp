@@ -30,6 +30,7 @@
 #include <locus/intersection/line_ray.hpp>
 #include <locus/intersection/line_segment.hpp>
 #include <locus/intersection/line_triangle.hpp>
+#include <locus/intersection/linear_polyhedron.hpp>
 #include <locus/intersection/moving_convex2.hpp>
 #include <locus/intersection/oriented_box_oriented_box.hpp>
 #include <locus/intersection/oriented_box_plane.hpp>

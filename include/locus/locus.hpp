@@ -19,4 +19,5 @@
 #include <locus/mesh.hpp>
 #include <locus/numeric.hpp>
 #include <locus/primitives.hpp>
+#include <locus/spatial.hpp>
 #include <locus/triangulate.hpp>

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // 3D intersection queries over arrays: triangles_intersect (intersection/triangle_triangle.hpp,
 // exact) and ray_triangle_hits (intersection/ray_triangle.hpp watertight_hit, closest hit per
-// ray by brute force). Inputs are converted to float64 (read in place when they already are
+// ray; through the BVH of spatial/bvh.hpp when rays x triangles is large, with the same
+// answers). Inputs are converted to float64 (read in place when they already are
 // C-contiguous float64); NaN or infinite coordinates raise ValueError.
 #include "common.hpp"
 
@@ -9,6 +10,7 @@
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/segment_aligned_box.hpp>
 #include <locus/intersection/triangle_triangle.hpp>
+#include <locus/spatial/bvh.hpp>
 
 #include <limits>
 #include <string>
@@ -131,11 +133,33 @@ orient2d signs, no tolerance; degenerate triangles act as their segment or point
         {
           py::gil_scoped_release nogil;
           const double nan = std::numeric_limits<double>::quiet_NaN();
+          // Large inputs go through a BVH over the triangle soup: the same watertight test on
+          // every candidate, the same closest triangle (ties: lowest index) and t.
+          Bvh<double> bvh;
+          const bool use_bvh = tris.size() >= 16 && n * tris.size() > 4096;
+          if (use_bvh) {
+            std::vector<Vec3<double>> pts;
+            std::vector<std::array<std::uint32_t, 3>> soup;
+            pts.reserve(3 * tris.size());
+            for (const auto& tr : tris) {
+              const auto b = static_cast<std::uint32_t>(pts.size());
+              pts.insert(pts.end(), {tr.v0, tr.v1, tr.v2});
+              soup.push_back({b, b + 1, b + 2});
+            }
+            bvh = Bvh<double>(pts, soup);
+          }
           for (std::size_t i = 0; i < n; ++i) {
             const Ray3<double> ray{po[i], pd[i]};
             TriangleHit<double> best;
             std::int64_t best_k = -1;
-            for (std::size_t k = 0; k < tris.size(); ++k) {
+            if (use_bvh) {
+              const MeshHit<double> mh = bvh.closest_hit(ray);
+              if (mh) {
+                best = watertight_hit(ray, tris[mh.triangle]);
+                best_k = static_cast<std::int64_t>(mh.triangle);
+              }
+            }
+            for (std::size_t k = 0; !use_bvh && k < tris.size(); ++k) {
               const TriangleHit<double> r = watertight_hit(ray, tris[k]);
               if (r.hit && (best_k < 0 || r.t < best.t)) {
                 best = r;
@@ -166,7 +190,8 @@ orient2d signs, no tolerance; degenerate triangles act as their segment or point
       R"doc(Closest watertight hit of each ray origins[i] + t directions[i] (t >= 0) with a set of
 triangles: (m, 3, 3) corner coordinates, or vertices (k, 3) with faces (m, 3).
 
-Brute force, O(n m) (a BVH comes later). Watertight: a ray through a shared edge or vertex of a
+Brute force for small inputs, else through a bounding volume hierarchy (the same answers).
+Watertight: a ray through a shared edge or vertex of a
 closed mesh hits exactly one of the triangles there; edge-on and degenerate triangles are never
 hit; zero directions never hit. Ties in t go to the lowest triangle index. RayHits: hit (bool),
 t (NaN where no hit), triangle (int64, -1 where no hit), barycentric ((n, 3): weights of v0, v1,
