@@ -224,8 +224,7 @@ template MeshSlice<double> slice_mesh(std::span<const Vec3<double>>,
                                       const Plane3<double>&);
 template MeshSlice<float> slice_mesh(std::span<const Vec3<float>>, std::span<const std::uint32_t>,
                                      std::span<const std::uint32_t>, const Plane3<float>&);
-template MeshSlice<double> slice_mesh(std::span<const Vec3<double>>,
-                                      std::span<const std::uint32_t>,
+template MeshSlice<double> slice_mesh(std::span<const Vec3<double>>, std::span<const std::uint32_t>,
                                       std::span<const std::uint32_t>, const Plane3<double>&);
 
 }  // namespace locus

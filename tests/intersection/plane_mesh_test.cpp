@@ -123,11 +123,11 @@ TYPED_TEST(PlaneMesh, CubeThroughVerticesAnalytic) {
     double length, area;
   };
   const Case cases[] = {
-      {{{0, 0, 1}, 0}, 8, 4},                    // through the middle: a square
-      {{{1, 1, 1}, 1}, 6 * r2, 2 * r3},          // through three vertices: a triangle
-      {{{1, 1, 0}, 0}, 4 * r2 + 4, 4 * r2},      // through two opposite edges: a rectangle
-      {{{0, 0, 1}, 1}, 8, 4},                    // the top face in the plane: its boundary
-      {{{1, 1, 1}, 3}, 0, 0},                    // touching a vertex from the negative side
+      {{{0, 0, 1}, 0}, 8, 4},                // through the middle: a square
+      {{{1, 1, 1}, 1}, 6 * r2, 2 * r3},      // through three vertices: a triangle
+      {{{1, 1, 0}, 0}, 4 * r2 + 4, 4 * r2},  // through two opposite edges: a rectangle
+      {{{0, 0, 1}, 1}, 8, 4},                // the top face in the plane: its boundary
+      {{{1, 1, 1}, 3}, 0, 0},                // touching a vertex from the negative side
   };
   for (const Case& c : cases) {
     const MeshSlice<T> s = slice(m, c.p);
@@ -148,7 +148,8 @@ TYPED_TEST(PlaneMesh, CubeThroughVerticesAnalytic) {
 // that vertex exactly; loops closed, length equal to the brute force, sphere: near 2 pi r.
 TYPED_TEST(PlaneMesh, SphereAndTorusThroughVertices) {
   using T = TypeParam;
-  const PolygonMesh<T> meshes[2] = {icosphere_mesh<T>(T(1), 2), torus_mesh<T>(T(2), T(0.75), 24, 12)};
+  const PolygonMesh<T> meshes[2] = {icosphere_mesh<T>(T(1), 2),
+                                    torus_mesh<T>(T(2), T(0.75), 24, 12)};
   Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int mi = 0; mi < 2; ++mi) {
@@ -193,7 +194,8 @@ TYPED_TEST(PlaneMesh, OpenMeshGivesOpenChains) {
   Tris tris;
   for (const auto& t : fan_triangles(sphere)) {
     const double z = (double(sphere.vertices[t[0]].z) + double(sphere.vertices[t[1]].z) +
-                      double(sphere.vertices[t[2]].z)) / 3;
+                      double(sphere.vertices[t[2]].z)) /
+                     3;
     if (z < 0.5) tris.push_back(t);  // the cap above z = 0.5 removed
   }
   const MeshSlice<T> s = slice_mesh(sphere.vertices, Tris(tris), Plane3<T>{{1, 0, 0}, 0});

@@ -108,9 +108,9 @@ void check(const Triangle3<T>& t, const Plane3<T>& p, const std::string& where) 
     ASSERT_EQ(s.point[static_cast<std::size_t>(i)], x);
     bool near = false;
     for (const Q3& y : o.pts) {
-      const double d = std::max({std::abs(double(x.x) - y.x.get_d()),
-                                 std::abs(double(x.y) - y.y.get_d()),
-                                 std::abs(double(x.z) - y.z.get_d())});
+      const double d =
+          std::max({std::abs(double(x.x) - y.x.get_d()), std::abs(double(x.y) - y.y.get_d()),
+                    std::abs(double(x.z) - y.z.get_d())});
       near = near || d <= bound;
     }
     EXPECT_TRUE(near) << "point " << i;
@@ -198,9 +198,9 @@ TYPED_TEST(PlaneTriangle, NonFiniteAndZeroNormal) {
   EXPECT_FALSE(intersects(t, Plane3<T>{{0, 0, 0}, 0}));
   EXPECT_FALSE(intersects(t, Plane3<T>{{0, 0, nan}, 0}));
   EXPECT_FALSE(intersects(t, Plane3<T>{{0, 0, 1}, inf}));
-  EXPECT_EQ(intersection(Triangle3<T>{{nan, 0, 0}, {1, 0, 1}, {0, 1, 1}}, Plane3<T>{{0, 0, 1}, 0})
-                .kind,
-            Kind::empty);
+  EXPECT_EQ(
+      intersection(Triangle3<T>{{nan, 0, 0}, {1, 0, 1}, {0, 1, 1}}, Plane3<T>{{0, 0, 1}, 0}).kind,
+      Kind::empty);
   EXPECT_TRUE(intersects(t, Plane3<T>{{0, 0, 1}, 0}));
 }
 

@@ -120,8 +120,8 @@ Oracle oracle(const Triangle3<T>& ta, const Triangle3<T>& tb) {
 }
 
 double dist_inf(const Vec3<double>& x, const Q3& y) {
-  return std::max({std::abs(x.x - y.x.get_d()), std::abs(x.y - y.y.get_d()),
-                   std::abs(x.z - y.z.get_d())});
+  return std::max(
+      {std::abs(x.x - y.x.get_d()), std::abs(x.y - y.y.get_d()), std::abs(x.z - y.z.get_d())});
 }
 
 // The header's bound for a crossing of an edge with the other triangle's plane, taken over the
@@ -129,10 +129,9 @@ double dist_inf(const Vec3<double>& x, const Q3& y) {
 template <class T>
 double bound(const Triangle3<T>& a, const Triangle3<T>& b) {
   double l = 0, worst = 0, mag = 0;
-  const Triangle3<double> t[2] = {{vec_cast<double>(a.v0), vec_cast<double>(a.v1),
-                                   vec_cast<double>(a.v2)},
-                                  {vec_cast<double>(b.v0), vec_cast<double>(b.v1),
-                                   vec_cast<double>(b.v2)}};
+  const Triangle3<double> t[2] = {
+      {vec_cast<double>(a.v0), vec_cast<double>(a.v1), vec_cast<double>(a.v2)},
+      {vec_cast<double>(b.v0), vec_cast<double>(b.v1), vec_cast<double>(b.v2)}};
   for (int u = 0; u < 2; ++u) {
     for (int i = 0; i < 3; ++i) {
       for (int k = 0; k < 3; ++k) mag = std::max(mag, std::abs(t[u][i][k]));

@@ -80,7 +80,6 @@ extern template MeshSlice<float> slice_mesh(std::span<const Vec3<float>>,
                                             std::span<const std::uint32_t>, const Plane3<float>&);
 extern template MeshSlice<double> slice_mesh(std::span<const Vec3<double>>,
                                              std::span<const std::uint32_t>,
-                                             std::span<const std::uint32_t>,
-                                             const Plane3<double>&);
+                                             std::span<const std::uint32_t>, const Plane3<double>&);
 
 }  // namespace locus

@@ -111,8 +111,8 @@ template <bool Construct>
   if (!detail::plane_side::finite3(n) || !std::isfinite(c) || n == V{}) return r;
   if (is_degenerate(Triangle3<double>{v[0], v[1], v[2]})) {
     const std::array<int, 2> e = extremes(v);
-    const LinearPlaneIntersection<double> k = intersection(Segment3<double>{v[e[0]], v[e[1]]},
-                                                           Plane3<double>{n, c});
+    const LinearPlaneIntersection<double> k =
+        intersection(Segment3<double>{v[e[0]], v[e[1]]}, Plane3<double>{n, c});
     r.kind = k.kind;
     r.count = k.count;
     for (int i = 0; i < k.count; ++i) {

@@ -21,11 +21,11 @@
 // input vertex exactly when it is one; a crossing of edge p -> q with the other plane at
 // t = f(p) / (f(p) - f(q)), f the rounded orient3d (or orient2d when coplanar) values, so
 // |point - X| <= 2^-49 L^3 / |n| / sin(angle) + eps |X| (L the largest edge-vertex distance
-// involved, n the other triangle's normal (b - a) x (c - a), angle between edge and plane, eps of T).
-// Parameters: exact at vertices, interpolated along edges, else projected (rounded).
-// Degenerate triangles act as the segment between their extreme vertices (segment_triangle.hpp;
-// two degenerate ones: 2D segment intersection in an injective coordinate plane).
-// Non-finite input: false / empty. Cost of find: ~20 exact signs plus a few divisions.
+// involved, n the other triangle's normal (b - a) x (c - a), angle between edge and plane, eps of
+// T). Parameters: exact at vertices, interpolated along edges, else projected (rounded). Degenerate
+// triangles act as the segment between their extreme vertices (segment_triangle.hpp; two degenerate
+// ones: 2D segment intersection in an injective coordinate plane). Non-finite input: false / empty.
+// Cost of find: ~20 exact signs plus a few divisions.
 
 #include <locus/config.hpp>
 #include <locus/core/predicates.hpp>
@@ -501,8 +501,9 @@ template <Real T>
       }
     }
   }
-  const LinearIntersection2<double> k = intersection(Segment2<double>{drop(p, axis), drop(q, axis)},
-                                                     Segment2<double>{drop(u, axis), drop(w, axis)});
+  const LinearIntersection2<double> k =
+      intersection(Segment2<double>{drop(p, axis), drop(q, axis)},
+                   Segment2<double>{drop(u, axis), drop(w, axis)});
   r.kind = k.kind;
   r.count = k.count;
   for (std::size_t i = 0; i < static_cast<std::size_t>(k.count); ++i) {
