@@ -252,3 +252,114 @@ TYPED_TEST(PlaneMesh, PowerOfTwoScalingIsExact) {
 }
 
 }  // namespace
+
+// ---- plane vs polygon and polygon vs triangle (plane_polygon.hpp), against brute force over
+// the fan triangles of star-shaped polygons (plane_triangle.hpp, triangle-triangle find).
+
+#include <locus/intersection/plane_polygon.hpp>
+
+namespace {
+
+// A star-shaped polygon (from its first vertex, the centre) in the plane z = x / 4 + y / 2.
+template <class T>
+std::vector<Vec3<T>> star(Rng& rng, int n) {
+  std::vector<Vec3<T>> v;
+  v.push_back({0, 0, 0});
+  for (int i = 0; i < n; ++i) {
+    const double a = 1.5 * std::numbers::pi * (i + rng.uniform(0.1, 0.9)) / n;
+    const double r = rng.uniform(0.3, 1.0);
+    const T x = T(std::round(r * std::cos(a) * 64) / 64),
+            y = T(std::round(r * std::sin(a) * 64) / 64);
+    v.push_back({x, y, x / 4 + y / 2});
+  }
+  return v;
+}
+
+template <class T>
+double pieces_length(const std::vector<Segment3<T>>& s) {
+  double l = 0;
+  for (const auto& g : s) l += length(vec_cast<double>(g.p1) - vec_cast<double>(g.p0));
+  return l;
+}
+
+TYPED_TEST(PlaneMesh, PlaneAgainstPolygonBruteForce) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::vector<Vec3<T>> poly = star<T>(rng, 7);
+    const Plane3<T> p{{T(rng.uniform_int(-3, 3)), T(rng.uniform_int(-3, 3)), 1},
+                      T(rng.uniform_int(-4, 4)) / 8};
+    const auto r = intersection(std::span<const Vec3<T>>(poly), p);
+    ASSERT_EQ(r.status, Status::ok);
+    double want = 0;
+    for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+      const auto s = intersection(Triangle3<T>{poly[0], poly[i], poly[i + 1]}, p);
+      if (s.kind == Kind::segment) {
+        want += length(vec_cast<double>(s.point[1]) - vec_cast<double>(s.point[0]));
+      }
+    }
+    EXPECT_NEAR(pieces_length(r.segments), want, 1e-4) << "trial " << trial;
+    for (const auto& g : r.segments) {
+      EXPECT_LE(std::abs(plane_value(p.normal, p.constant, g.p0)), 1e-5);
+      EXPECT_LE(std::abs(plane_value(p.normal, p.constant, g.p1)), 1e-5);
+    }
+  }
+  // Coplanar; a vertex touching; an edge in the plane from one side.
+  const std::vector<Vec3<T>> sq = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  EXPECT_TRUE(intersection(std::span<const Vec3<T>>(sq), Plane3<T>{{0, 0, 1}, 0}).coplanar);
+  auto t = intersection(std::span<const Vec3<T>>(sq), Plane3<T>{{1, 1, 0}, 2});
+  ASSERT_EQ(t.segments.size(), 1u);
+  EXPECT_EQ(t.segments[0].p0, t.segments[0].p1);
+  t = intersection(std::span<const Vec3<T>>(sq), Plane3<T>{{1, 0, 0}, 1});
+  ASSERT_EQ(t.segments.size(), 1u);
+  EXPECT_NEAR(length(vec_cast<double>(t.segments[0].p1 - t.segments[0].p0)), 1.0, 1e-6);
+  EXPECT_EQ(intersection(std::span<const Vec3<T>>(sq.data(), 2), Plane3<T>{{1, 0, 0}, 1}).status,
+            Status::empty_input);
+}
+
+TYPED_TEST(PlaneMesh, PolygonAgainstTriangleBruteForce) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::vector<Vec3<T>> poly = star<T>(rng, 6);
+    const bool coplanar = trial % 2 == 0;
+    Triangle3<T> tri;
+    for (int i = 0; i < 3; ++i) {
+      const T x = T(rng.uniform_int(-64, 64)) / 64, y = T(rng.uniform_int(-64, 64)) / 64;
+      tri[i] = {x, y, coplanar ? x / 4 + y / 2 : T(rng.uniform_int(-64, 64)) / 64};
+    }
+    if (is_degenerate(tri)) continue;
+    const auto r = intersection(std::span<const Vec3<T>>(poly), tri);
+    ASSERT_EQ(r.status, Status::ok);
+    ASSERT_EQ(r.coplanar, coplanar);
+    double want = 0;
+    for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+      const auto s = intersection(Triangle3<T>{poly[0], poly[i], poly[i + 1]}, tri);
+      if (coplanar && s.kind == Kind::polygon) {
+        Vec3<double> a{};
+        for (int k = 0; k < s.count; ++k) {
+          a += cross(vec_cast<double>(s.point[static_cast<std::size_t>(k)]),
+                     vec_cast<double>(s.point[static_cast<std::size_t>((k + 1) % s.count)]));
+        }
+        want += length(a) / 2;
+      }
+      if (!coplanar && s.kind == Kind::segment) {
+        want += length(vec_cast<double>(s.point[1]) - vec_cast<double>(s.point[0]));
+      }
+    }
+    if (coplanar) {
+      Vec3<double> a{};
+      for (std::size_t k = 0; k < r.polygon.size(); ++k) {
+        a += cross(vec_cast<double>(r.polygon[k]),
+                   vec_cast<double>(r.polygon[(k + 1) % r.polygon.size()]));
+      }
+      EXPECT_NEAR(length(a) / 2, want, 1e-4) << "trial " << trial;
+    } else {
+      EXPECT_NEAR(pieces_length(r.segments), want, 1e-4) << "trial " << trial;
+    }
+  }
+}
+
+}  // namespace
