@@ -154,7 +154,7 @@ TYPED_TEST(PlaneMesh, SphereAndTorusThroughVertices) {
   SCOPED_TRACE(rng.trace());
   for (int mi = 0; mi < 2; ++mi) {
     const PolygonMesh<T>& m = meshes[mi];
-    for (int trial = 0; trial < 12; ++trial) {
+    for (int trial = 0; trial < 6; ++trial) {
       const auto v = m.vertices[static_cast<std::size_t>(
           rng.uniform_int(0, static_cast<int>(m.vertices.size()) - 1))];
       const int axis = trial % 3;

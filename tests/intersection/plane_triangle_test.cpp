@@ -132,7 +132,7 @@ TYPED_TEST(PlaneTriangle, RandomAgainstOracle) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int hits = 0;
-  for (int trial = 0; trial < 400; ++trial) {
+  for (int trial = 0; trial < 150; ++trial) {
     Triangle3<T> t;
     for (int i = 0; i < 3; ++i) t[i] = rng.template vec<T, 3>(T(-1), T(1));
     const Vec3<T> n = rng.template vec<T, 3>(T(-1), T(1));
@@ -140,7 +140,7 @@ TYPED_TEST(PlaneTriangle, RandomAgainstOracle) {
     hits += intersects(t, p);
     check(t, p, "trial " + std::to_string(trial));
   }
-  EXPECT_GT(hits, 40);
+  EXPECT_GT(hits, 15);
 }
 
 TYPED_TEST(PlaneTriangle, IntegerGridDegeneracies) {
@@ -148,7 +148,7 @@ TYPED_TEST(PlaneTriangle, IntegerGridDegeneracies) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int kinds[8] = {};
-  for (int trial = 0; trial < 1500; ++trial) {
+  for (int trial = 0; trial < 400; ++trial) {
     Triangle3<T> t;
     for (int i = 0; i < 3; ++i) {
       for (int k = 0; k < 3; ++k) t[i][k] = static_cast<T>(rng.uniform_int(-2, 2));
@@ -163,9 +163,9 @@ TYPED_TEST(PlaneTriangle, IntegerGridDegeneracies) {
     check(t, p, "trial " + std::to_string(trial));
   }
   // Every kind occurs (vertex touch, edge in the plane, crossing, whole triangle).
-  EXPECT_GT(kinds[static_cast<int>(Kind::point)], 10);
-  EXPECT_GT(kinds[static_cast<int>(Kind::segment)], 10);
-  EXPECT_GT(kinds[static_cast<int>(Kind::polygon)], 3);
+  EXPECT_GT(kinds[static_cast<int>(Kind::point)], 3);
+  EXPECT_GT(kinds[static_cast<int>(Kind::segment)], 3);
+  EXPECT_GT(kinds[static_cast<int>(Kind::polygon)], 0);
 }
 
 // Figure 11.26: the plane z = 0 against a triangle above it touching at a vertex, along an edge,

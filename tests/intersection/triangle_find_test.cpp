@@ -198,7 +198,7 @@ TYPED_TEST(TriangleFind, RandomAgainstOracle) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int hits = 0;
-  for (int trial = 0; trial < 400; ++trial) {
+  for (int trial = 0; trial < 120; ++trial) {
     Triangle3<T> a, b;
     for (int i = 0; i < 3; ++i) {
       a[i] = rng.template vec<T, 3>(T(-1), T(1));
@@ -207,7 +207,7 @@ TYPED_TEST(TriangleFind, RandomAgainstOracle) {
     hits += intersects(a, b);
     check(a, b, "trial " + std::to_string(trial));
   }
-  EXPECT_GT(hits, 40);
+  EXPECT_GT(hits, 15);
 }
 
 // Coplanar random pairs: both in the plane z = x / 2 + y / 4 (exact for these coordinates).
@@ -216,7 +216,7 @@ TYPED_TEST(TriangleFind, CoplanarRandom) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int polys = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  for (int trial = 0; trial < 100; ++trial) {
     Triangle3<T> t[2];
     for (auto& tri : t) {
       for (int i = 0; i < 3; ++i) {
@@ -228,7 +228,7 @@ TYPED_TEST(TriangleFind, CoplanarRandom) {
     polys += intersection(t[0], t[1]).kind == Kind::polygon;
     check(t[0], t[1], "trial " + std::to_string(trial));
   }
-  EXPECT_GT(polys, 30);
+  EXPECT_GT(polys, 10);
 }
 
 // Integer grids: shared edges and vertices, touching, coplanar and degenerate triangles.
@@ -237,7 +237,7 @@ TYPED_TEST(TriangleFind, IntegerGrid) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int kinds[8] = {};
-  for (int trial = 0; trial < 2000; ++trial) {
+  for (int trial = 0; trial < 400; ++trial) {
     Triangle3<T> a, b;
     for (int i = 0; i < 3; ++i) {
       for (int k = 0; k < 3; ++k) {
@@ -251,9 +251,9 @@ TYPED_TEST(TriangleFind, IntegerGrid) {
     ++kinds[static_cast<int>(intersection(a, b).kind)];
     check(a, b, "trial " + std::to_string(trial));
   }
-  EXPECT_GT(kinds[static_cast<int>(Kind::point)], 20);
-  EXPECT_GT(kinds[static_cast<int>(Kind::segment)], 20);
-  EXPECT_GT(kinds[static_cast<int>(Kind::polygon)], 5);
+  EXPECT_GT(kinds[static_cast<int>(Kind::point)], 4);
+  EXPECT_GT(kinds[static_cast<int>(Kind::segment)], 4);
+  EXPECT_GT(kinds[static_cast<int>(Kind::polygon)], 1);
 }
 
 // Figure 11.27: (a) parallel planes, (b) coplanar, (c) crossing, (d) planes cross, triangles not.
