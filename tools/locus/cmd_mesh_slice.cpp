@@ -44,10 +44,9 @@ void run_slice(const SliceOptions& o) {
   const Common& c = o.common;
   const locus::Plane3<double> pl = parse_plane(o.plane);
   const locus::PolygonMesh<double> m = load_mesh(c.input, c.format);
-  const locus::MeshSlice<double> s =
-      locus::slice_mesh(std::span<const Vec3d>(m.vertices),
-                        std::span<const std::uint32_t>(m.face_offsets),
-                        std::span<const std::uint32_t>(m.face_indices), pl);
+  const locus::MeshSlice<double> s = locus::slice_mesh(
+      std::span<const Vec3d>(m.vertices), std::span<const std::uint32_t>(m.face_offsets),
+      std::span<const std::uint32_t>(m.face_indices), pl);
   if (s.status != locus::Status::ok && s.status != locus::Status::empty_input) {
     throw InputError(c.input + ": mesh slice: " + std::string(locus::to_string(s.status)));
   }

@@ -46,8 +46,8 @@ namespace locus {
 template <Real T>
 struct PolygonPlaneIntersection {
   Status status = Status::empty_input;
-  bool coplanar = false;                ///< the whole polygon lies in the plane
-  std::vector<Segment3<T>> segments;    ///< pieces along the common line, in order
+  bool coplanar = false;              ///< the whole polygon lies in the plane
+  std::vector<Segment3<T>> segments;  ///< pieces along the common line, in order
 };
 
 /// The common set of a planar polygon and a triangle (see the header comment).
@@ -162,7 +162,9 @@ template <Real T>
   }
   const pp::V n = vec_cast<double>(plane.normal);
   const auto side = [&](std::size_t i) { return s[i]; };
-  const auto value = [&](std::size_t i) { return plane_value(plane.normal, plane.constant, polygon[i]); };
+  const auto value = [&](std::size_t i) {
+    return plane_value(plane.normal, plane.constant, polygon[i]);
+  };
   for (const pp::Piece& p : pp::pieces(std::span<const pp::V>(v), side, value, cross(n, nn))) {
     r.segments.push_back({vec_cast<T>(p.p0), vec_cast<T>(p.p1)});
   }
@@ -219,7 +221,8 @@ template <Real T>
       next.clear();
       for (std::size_t k = 0; k < poly.size(); ++k) {
         const pp::V &p = poly[k], &q = poly[(k + 1) % poly.size()];
-        const int sp = to_int(orient2d(a, b, drop(p))) * o, sq = to_int(orient2d(a, b, drop(q))) * o;
+        const int sp = to_int(orient2d(a, b, drop(p))) * o,
+                  sq = to_int(orient2d(a, b, drop(q))) * o;
         if (sp >= 0) next.push_back(p);
         if (sp * sq < 0) {
           const double fp = orient2d_value(a, b, drop(p)), fq = orient2d_value(a, b, drop(q));
