@@ -3,7 +3,8 @@
 // separating-axis answer shown is computed by a locus::intersection / intersects / side_of_plane
 // query on the literal inputs; the 3D scenes are projected through the SvgWriter camera.
 // Figures: linear component and plane (11.1), line and triangle with barycentrics (11.2), two
-// and three planes (11.23, 11.24), slabs and boxes (11.61-11.73).
+// and three planes (11.23, 11.24), plane-triangle, triangle-triangle and plane-mesh
+// (11.25-11.27, 11.29), slabs and boxes (11.61-11.73).
 #include "gallery.hpp"
 
 #include <locus/intersection/aligned_box_aligned_box.hpp>
@@ -15,11 +16,15 @@
 #include <locus/intersection/line_triangle.hpp>
 #include <locus/intersection/oriented_box_oriented_box.hpp>
 #include <locus/intersection/oriented_box_plane.hpp>
+#include <locus/intersection/plane_mesh.hpp>
 #include <locus/intersection/plane_plane.hpp>
+#include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/segment_plane.hpp>
+#include <locus/intersection/triangle_triangle.hpp>
 #include <locus/io/svg_primitives.hpp>
+#include <locus/mesh/platonic.hpp>
 #include <locus/primitives/aligned_box.hpp>
 #include <locus/primitives/oriented_box.hpp>
 #include <locus/primitives/plane.hpp>
@@ -153,6 +158,106 @@ bool fig_11_24(SvgWriter& w) {
     }
     label(w, shift + Vec3d{0, 0, -2.4}, std::string(names[i]) + std::string(to_string(r.kind)),
           c::black);
+  }
+  return true;
+}
+
+// ---- plane, triangle and mesh (section 11.5) ---------------------------------------------------
+
+// 11.25: a plane cutting a triangle: the segment from the crossings of the two edges that leave
+// the lone vertex's side.
+bool fig_11_25(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 4}, {1, 1, 0}));
+  const Plane3<double> pl{{0.1, 0.2, 1}, 0.3};
+  const Triangle3<double> t{{0, 0, 1.6}, {2.5, 0.5, -0.6}, {0.4, 2.6, -0.8}};
+  const auto r = intersection(t, pl);
+  if (r.kind != Kind::segment) return false;
+  plane_patch(w, pl, 0.5 * (r.point[0] + r.point[1]), 2.2, c::blue);
+  closed(w, std::vector<Vec3d>{t.v0, t.v1, t.v2}, filled(c::green, 0.25));
+  point(w, t.v0, "V0", c::green);
+  point(w, t.v1, "V1", c::green);
+  point(w, t.v2, "V2", c::green);
+  w.segment(r.point[0], r.point[1], pen(c::red, 2.5));
+  point(w, r.point[0], "", c::red);
+  point(w, r.point[1], "", c::red);
+  return true;
+}
+
+// 11.26: the configurations: no contact, a vertex, an edge, a vertex and a crossing, two
+// crossings, the whole triangle in the plane; each labelled with the computed kind.
+bool fig_11_26(SvgWriter& w) {
+  w.set_camera(camera({8, -10, 7}, {7, 0, 0}));
+  const Plane3<double> z0{{0, 0, 1}, 0};
+  const std::array<Triangle3<double>, 6> ts = {{{{0, 0, 0.5}, {1.5, 0, 1}, {0, 1.5, 1.5}},
+                                                {{0, 0, 0}, {1.5, 0, 1}, {0, 1.5, 1.2}},
+                                                {{0, 0, 0}, {1.5, 0, 0}, {0, 1.5, 1.2}},
+                                                {{0, 0, 0}, {1.5, 0, -1}, {0, 1.5, 1.2}},
+                                                {{0, 0, -1}, {1.5, 0, 1}, {0, 1.5, 1}},
+                                                {{0, 0, 0}, {1.5, 0, 0}, {0, 1.5, 0}}}};
+  const Kind want[] = {Kind::empty,   Kind::point,   Kind::segment,
+                       Kind::segment, Kind::segment, Kind::polygon};
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const Vec3d sh{double(i % 3) * 4.5, double(i / 3) * 4.5, 0};
+    const Triangle3<double> t{ts[i].v0 + sh, ts[i].v1 + sh, ts[i].v2 + sh};
+    const auto r = intersection(t, z0);
+    if (r.kind != want[i]) return false;
+    plane_patch(w, z0, sh + Vec3d{0.6, 0.6, 0}, 1.6, c::blue);
+    closed(w, std::vector<Vec3d>{t.v0, t.v1, t.v2}, filled(c::green, 0.3));
+    if (r.kind == Kind::point) point(w, r.point[0], "", c::red);
+    if (r.kind == Kind::segment) w.segment(r.point[0], r.point[1], pen(c::red, 2.5));
+    if (r.kind == Kind::polygon) {
+      closed(w, std::vector<Vec3d>{r.point[0], r.point[1], r.point[2]}, pen(c::red, 2.5));
+    }
+    label(w, sh + Vec3d{0, 0, -1.6}, std::string(to_string(r.kind)), c::black);
+  }
+  return true;
+}
+
+// 11.27: two triangles: (a) parallel planes, (b) coplanar (the common polygon), (c) crossing
+// (the common segment), (d) the planes cross but the triangles do not meet.
+bool fig_11_27(SvgWriter& w) {
+  w.set_camera(camera({8, -12, 8}, {5, 2, 0}));
+  const Triangle3<double> a{{0, 0, 0}, {3, 0, 0}, {0, 3, 0}};
+  const std::array<Triangle3<double>, 4> bs = {{{{0.5, 0.5, 1}, {3.5, 0.5, 1}, {0.5, 3.5, 1}},
+                                                {{1, 1, 0}, {4, 1, 0}, {1, 4, 0}},
+                                                {{0.5, 0.5, -1}, {0.5, 0.8, 1.2}, {2.5, -0.8, 0}},
+                                                {{3, 3, -1}, {3, 3, 1}, {5, 1.5, 0}}}};
+  const Kind want[] = {Kind::empty, Kind::polygon, Kind::segment, Kind::empty};
+  const char* names[] = {"(a) ", "(b) ", "(c) ", "(d) "};
+  for (std::size_t i = 0; i < bs.size(); ++i) {
+    const Vec3d sh{double(i % 2) * 6.5, double(i / 2) * 6.5, 0};
+    const Triangle3<double> ta{a.v0 + sh, a.v1 + sh, a.v2 + sh};
+    const Triangle3<double> tb{bs[i].v0 + sh, bs[i].v1 + sh, bs[i].v2 + sh};
+    const auto r = intersection(ta, tb);
+    if (r.kind != want[i]) return false;
+    closed(w, std::vector<Vec3d>{ta.v0, ta.v1, ta.v2}, filled(c::blue, 0.2));
+    closed(w, std::vector<Vec3d>{tb.v0, tb.v1, tb.v2}, filled(c::green, 0.2));
+    if (r.kind == Kind::segment) w.segment(r.point[0], r.point[1], pen(c::red, 2.5));
+    if (r.kind == Kind::polygon) {
+      closed(w, std::vector<Vec3d>(r.point.begin(), r.point.begin() + r.count),
+             filled(c::red, 0.5));
+    }
+    label(w, sh + Vec3d{0, 0, -1.6}, std::string(names[i]) + std::string(to_string(r.kind)),
+          c::black);
+  }
+  return true;
+}
+
+// 11.29: a triangle mesh (a torus) sliced by a plane: the closed loops of slice_mesh().
+bool fig_11_29(SvgWriter& w) {
+  w.set_camera(camera({5, -8, 6}, {0, 0, 0}));
+  const PolygonMesh<double> m = torus_mesh<double>(2.0, 0.8, 32, 16);
+  const Plane3<double> pl{{0.3, 0.1, 1}, 0.2};
+  const MeshSlice<double> s = slice_mesh(m.vertices, fan_triangles(m), pl);
+  if (s.status != Status::ok || s.polylines.size() != 2) return false;
+  for (const auto& t : fan_triangles(m)) {
+    closed(w, std::vector<Vec3d>{m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]},
+           pen(c::gray, 0.4));
+  }
+  plane_patch(w, pl, {0, 0, 0.2}, 3.2, c::blue);
+  for (const auto& l : s.polylines) {
+    if (!l.closed) return false;
+    closed(w, l.vertices, pen(c::red, 2.5));
   }
   return true;
 }
@@ -373,6 +478,10 @@ std::vector<Figure> chapter11_intersection_figures() {
       {"11.2", "intersection(Ray3, Triangle3), watertight_hit", fig_11_2},
       {"11.23", "intersection(Plane3, Plane3)", fig_11_23},
       {"11.24", "intersection(Plane3, Plane3, Plane3) (every configuration)", fig_11_24},
+      {"11.25", "intersection(Triangle3, Plane3)", fig_11_25},
+      {"11.26", "intersection(Triangle3, Plane3) (every configuration)", fig_11_26},
+      {"11.27", "intersection(Triangle3, Triangle3)", fig_11_27},
+      {"11.29", "slice_mesh(vertices, triangles, Plane3)", fig_11_29},
       {"11.61", "intersection(Line3, AlignedBox3)", fig_11_61},
       {"11.62", "side_of_plane(AlignedBox3, Plane3) (slab planes)", fig_11_62},
       {"11.64", "intersection(Ray3, AlignedBox3) (slab clipping)", fig_11_64},

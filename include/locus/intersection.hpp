@@ -35,7 +35,10 @@
 #include <locus/intersection/oriented_box_oriented_box.hpp>
 #include <locus/intersection/oriented_box_plane.hpp>
 #include <locus/intersection/oriented_box_sphere.hpp>
+#include <locus/intersection/plane_mesh.hpp>
 #include <locus/intersection/plane_plane.hpp>
+#include <locus/intersection/plane_polygon.hpp>
+#include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/quadratic_curve_quadratic_curve.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
 #include <locus/intersection/ray_arc.hpp>

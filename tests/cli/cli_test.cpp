@@ -20,6 +20,7 @@
 #include <locus/fit/sphere_fit.hpp>
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
+#include <locus/intersection/plane_mesh.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/io/geojson.hpp>
 #include <locus/io/mesh_io.hpp>
@@ -227,7 +228,7 @@ TEST_F(Cli, HelpListsEverySubcommandWithAnExample) {
     EXPECT_EQ(h.code, 0) << s;
     EXPECT_NE(h.out.find("Example:"), std::string::npos) << s;
   }
-  for (const char* s : {"info", "check", "orient", "generate", "convert"}) {
+  for (const char* s : {"info", "check", "orient", "generate", "convert", "slice"}) {
     const Outcome h = run(std::string("mesh ") + s + " --help");
     EXPECT_EQ(h.code, 0) << s;
     EXPECT_NE(h.out.find("Example:"), std::string::npos) << s;
@@ -1037,3 +1038,17 @@ TEST_F(Cli, RaycastMatchesWatertightHitsBitForBit) {
 }
 
 }  // namespace
+
+TEST_F(Cli, MeshSliceMatchesTheLibrary) {
+  spit(path("cube.obj"), cube_obj);
+  const Outcome r = run("mesh slice --plane 0,0,1,-0.5 " + path("cube.obj"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const locus::PolygonMesh<double> m = locus::read_mesh<double>(path("cube.obj")).mesh;
+  const locus::MeshSlice<double> s = locus::slice_mesh(
+      std::span<const Vec3d>(m.vertices), std::span<const std::uint32_t>(m.face_offsets),
+      std::span<const std::uint32_t>(m.face_indices), locus::Plane3<double>{{0, 0, 1}, 0.5});
+  ASSERT_EQ(s.polylines.size(), 1u);
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n')),
+            "closed " + std::to_string(s.polylines[0].vertices.size()));
+  EXPECT_EQ(run("mesh slice --plane 0,0,1 " + path("cube.obj")).code, 2);
+}

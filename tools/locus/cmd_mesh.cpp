@@ -319,7 +319,8 @@ void run_convert(const ConvertOptions& o) {
 }  // namespace
 
 void register_mesh(CLI::App& app) {
-  CLI::App* mesh = app.add_subcommand("mesh", "mesh files: info, check, orient, generate, convert");
+  CLI::App* mesh =
+      app.add_subcommand("mesh", "mesh files: info, check, orient, generate, convert, slice");
   mesh->require_subcommand(1);
   mesh->footer(
       "Example:\n  locus mesh info bunny.ply\n  locus mesh check bunny.ply\n"
@@ -409,6 +410,7 @@ void register_mesh(CLI::App& app) {
         "  locus mesh convert part.obj part.stl --to stl-ascii");
     sub->callback([o] { run_convert(*o); });
   }
+  register_mesh_slice(*mesh);
 }
 
 }  // namespace locus_cli

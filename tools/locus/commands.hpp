@@ -14,7 +14,8 @@ void register_bounding(CLI::App& app);  // mincircle, minsphere, minrect, minbox
 void register_distance(CLI::App& app);  // distance (cmd_distance.cpp)
 void register_numeric(CLI::App& app);   // roots, fit (cmd_numeric.cpp)
 void register_mesh(CLI::App& app);      // mesh info|check|orient|generate|convert (cmd_mesh.cpp)
-void register_raycast(CLI::App& app);   // raycast (cmd_raycast.cpp)
-void register_sat(CLI::App& app);       // sat (cmd_sat.cpp)
+void register_mesh_slice(CLI::App& mesh);  // mesh slice (cmd_mesh_slice.cpp)
+void register_raycast(CLI::App& app);      // raycast (cmd_raycast.cpp)
+void register_sat(CLI::App& app);          // sat (cmd_sat.cpp)
 
 }  // namespace locus_cli

@@ -1,31 +1,46 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Whether two triangles in 3D have a common point: intersects() (the book's test, section
-// 11.5.4, figures 11.25-11.28; row int3.plane-triangle, the triangle-triangle test only). Used
-// by the mesh self-intersection check (mesh/mesh_checks.hpp).
+// Two triangles in 3D: intersects() (the book's test) and intersection() (find); book section
+// 11.5.4, figures 11.27, 11.28; row int3.plane-triangle. Used by mesh/mesh_checks.hpp.
 // Triangles are closed sets: touching at a vertex, along an edge or in a shared plane counts.
-// Every decision is an exact sign (orient3d, orient2d of core/predicates.hpp); there is no
-// tolerance and no constructed point, so the answer is the exact one for the floating-point
-// input and invariant under swapping the arguments, reordering the vertices and scaling by
-// powers of two (inside the predicates' range).
-// Method: a plane rejection first (all three vertices of one triangle strictly on one side of
-// the other's plane: false). Otherwise two closed convex sets whose boundaries are their edges
-// meet iff an edge of one meets the other (docs/notes/mesh.md), so six exact segment-triangle
-// tests decide: a segment not in the triangle's plane meets it iff its end points are not
-// strictly on one side and the three signs orient3d(a, b, edge) are not strictly mixed; a
-// segment in the plane is tested in the coordinate plane, chosen exactly, where the triangle's
-// projection is non-degenerate (orient2d != 0), by end-point containment and segment crossings.
-// Degenerate triangles (collinear or coincident vertices, decided exactly) act as the segment
-// or point they are: they are tested through their edges (segment-segment in 3D: coplanar by
-// orient3d, then in a coordinate plane that is injective on the four points).
-// Non-finite input: false. Cost: 6 orient3d in the common rejection; at most about 40 signs.
+// intersects: every decision is an exact sign (orient3d, orient2d), no tolerance: a plane
+// rejection, then six exact segment-triangle tests (two closed convex sets whose boundaries are
+// their edges meet iff an edge of one meets the other; docs/notes/mesh.md). Invariant under
+// swapping, reordering vertices and power-of-two scaling. Cost: 6 orient3d usually, <= ~40.
+// intersection -> TriangleTriangleIntersection<T> (param_a, param_b: (s, t) of point_at(tri, st)
+// on each triangle): empty, point, segment (ordered along cross(normal a, normal b)) or, when
+// coplanar with a common area, polygon (<= 6 vertices in the order of a's vertices, i.e.
+// counter-clockwise about a's normal). Its kind is decided exactly and agrees with intersects.
+// Not coplanar: each triangle meets the other's plane in an interval of the common line; the
+// end points are compared along it by exact orient3d signs (Guigue-Devillers' observation;
+// docs/notes/intersection3.md), so point vs segment is exact. Coplanar: in the coordinate plane
+// where a projects non-degenerately, a positive-area test by exact separating edges, then
+// Sutherland-Hodgman clipping of a by b's edges on symbolic vertices (input vertex or edge-line
+// crossing) classified by exact orient2d / turn2d signs; zero area gives the point or segment
+// between the extreme common input vertices. Constructed points (in double, rounded once to T): an
+// input vertex exactly when it is one; a crossing of edge p -> q with the other plane at
+// t = f(p) / (f(p) - f(q)), f the rounded orient3d (or orient2d when coplanar) values, so
+// |point - X| <= 2^-49 L^3 / |n| / sin(angle) + eps |X| (L the largest edge-vertex distance
+// involved, n the other triangle's normal (b - a) x (c - a), angle between edge and plane, eps of
+// T). Parameters: exact at vertices, interpolated along edges, else projected (rounded). Degenerate
+// triangles act as the segment between their extreme vertices (segment_triangle.hpp; two degenerate
+// ones: 2D segment intersection in an injective coordinate plane). Non-finite input: false / empty.
+// Cost of find: ~20 exact signs plus a few divisions.
 
+#include <locus/config.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/intersection/plane_triangle.hpp>
+#include <locus/intersection/result.hpp>
+#include <locus/intersection/segment_segment.hpp>
+#include <locus/intersection/segment_triangle.hpp>
 #include <locus/primitives/triangle.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 
 namespace locus {
 
@@ -161,6 +176,368 @@ template <Real T>
     if (detail::tri3::segment_triangle(b[i], b[j], a.v0, a.v1, a.v2)) return true;
   }
   return false;
+}
+
+/// The result of intersection(Triangle3, Triangle3): (s, t) on each triangle; up to 6 points.
+template <Real T>
+using TriangleTriangleIntersection = Intersection<T, 3, Vec2<T>, Vec2<T>, 6>;
+
+namespace detail::tri3 {
+
+using V3 = Vec3<double>;
+using V2 = Vec2<double>;
+using FindResult = Intersection<double, 3, V2, V2, 6>;
+
+/// (s, t) of a point x (in or near the plane of the non-degenerate triangle v), rounded.
+[[nodiscard]] inline V2 st_of(const V3 v[3], const V3& x) noexcept {
+  const V3 e1 = v[1] - v[0], e2 = v[2] - v[0], w = x - v[0];
+  const V3 n = cross(e1, e2);
+  const double nn = dot(n, n);
+  if (!(nn > 0.0)) return {0.0, 0.0};
+  return {dot(cross(w, e2), n) / nn, dot(cross(e1, w), n) / nn};
+}
+
+/// An end point of one triangle's interval on the common line: the crossing of its edge line
+/// p -> q with the other plane; e = sign(side(q) - side(p)) relative to that plane.
+struct End {
+  int p, q, e;
+};
+
+struct Interval {
+  End lo{}, hi{};
+  bool point = false;
+};
+
+/// The interval of a triangle with side signs s (relative to the other plane) along
+/// D = cross(n_a, n_b); flip = +1 for a, -1 for b (whose own direction is -D).
+[[nodiscard]] inline Interval interval(const int s[3], int flip) noexcept {
+  Interval iv;
+  const int a = plane_tri::lone_vertex(s);
+  if (a < 0) {
+    const int z = plane_tri::touching_vertex(s), w = (z + 1) % 3;
+    iv.lo = iv.hi = End{z, w, s[w]};
+    iv.point = true;
+    return iv;
+  }
+  // Along the triangle's own cross(n_self, n_other), dot(., X_c - X_b) has the sign -s[a].
+  const End eb{a, (a + 1) % 3, -s[a]}, ec{a, (a + 2) % 3, -s[a]};
+  const bool b_first = -s[a] * flip > 0;
+  iv.lo = b_first ? eb : ec;
+  iv.hi = b_first ? ec : eb;
+  return iv;
+}
+
+/// sign(dot(D, Y - X)) for X an end of a, Y an end of b (exact).
+template <Real T>
+[[nodiscard]] inline int compare(const Triangle3<T>& a, const End& x, const Triangle3<T>& b,
+                                 const End& y) noexcept {
+  return to_int(orient3d(a[x.p], a[x.q], b[y.p], b[y.q])) * x.e * y.e;
+}
+
+/// The point of an end (vertex exactly when it is one), with its (s, t) on its own triangle.
+inline void construct(const V3 v[3], const int s[3], const double f[3], const End& x, V3& point,
+                      V2& st) noexcept {
+  double t;
+  if (s[x.p] == 0) {
+    t = 0.0;
+  } else if (s[x.q] == 0) {
+    t = 1.0;
+  } else {
+    t = std::clamp(f[x.p] / (f[x.p] - f[x.q]), 0.0, 1.0);
+  }
+  point = t == 0.0 ? v[x.p] : (t == 1.0 ? v[x.q] : v[x.p] + t * (v[x.q] - v[x.p]));
+  st = (1.0 - t) * plane_tri::vertex_st(x.p) + t * plane_tri::vertex_st(x.q);
+}
+
+template <Real T>
+[[nodiscard]] inline FindResult find_crossing(const Triangle3<T>& ta, const Triangle3<T>& tb,
+                                              const int sa[3], const int sb[3]) noexcept {
+  FindResult r;
+  const V3 a[3] = {vec_cast<double>(ta.v0), vec_cast<double>(ta.v1), vec_cast<double>(ta.v2)};
+  const V3 b[3] = {vec_cast<double>(tb.v0), vec_cast<double>(tb.v1), vec_cast<double>(tb.v2)};
+  const Interval ia = interval(sa, 1), ib = interval(sb, -1);
+  // lo = max(lo_a, lo_b), hi = min(hi_a, hi_b); owner 0 = a, 1 = b.
+  const int lo_owner = compare(ta, ia.lo, tb, ib.lo) >= 0 ? 1 : 0;
+  const int hi_owner = compare(ta, ia.hi, tb, ib.hi) >= 0 ? 0 : 1;
+  int len;
+  if (lo_owner == hi_owner) {
+    len = (lo_owner == 0 ? ia.point : ib.point) ? 0 : 1;
+  } else if (lo_owner == 0) {
+    len = compare(ta, ia.lo, tb, ib.hi);
+  } else {
+    len = -compare(ta, ia.hi, tb, ib.lo);
+  }
+  if (len < 0) return r;
+  double fa[3], fb[3];
+  for (int i = 0; i < 3; ++i) {
+    fa[i] = orient3d_value(tb.v0, tb.v1, tb.v2, ta[i]);
+    fb[i] = orient3d_value(ta.v0, ta.v1, ta.v2, tb[i]);
+  }
+  const auto emit = [&](int owner, const End& x) {
+    const auto i = static_cast<std::size_t>(r.count++);
+    if (owner == 0) {
+      construct(a, sa, fa, x, r.point[i], r.param_a[i]);
+      r.param_b[i] = st_of(b, r.point[i]);
+    } else {
+      construct(b, sb, fb, x, r.point[i], r.param_b[i]);
+      r.param_a[i] = st_of(a, r.point[i]);
+    }
+  };
+  const End& lo = lo_owner == 0 ? ia.lo : ib.lo;
+  const End& hi = hi_owner == 0 ? ia.hi : ib.hi;
+  if (len == 0) {
+    r.kind = Kind::point;
+    // Prefer the end that is an input vertex (then the point is exact).
+    const int* sl = lo_owner == 0 ? sa : sb;
+    const bool lo_exact = sl[lo.p] == 0 || sl[lo.q] == 0;
+    if (lo_exact) {
+      emit(lo_owner, lo);
+    } else {
+      emit(hi_owner, hi);
+    }
+    return r;
+  }
+  r.kind = Kind::segment;
+  emit(lo_owner, lo);
+  emit(hi_owner, hi);
+  return r;
+}
+
+// ---- coplanar: symbolic Sutherland-Hodgman in a coordinate plane.
+
+/// A vertex of the clipped polygon: a's vertex i (type 0), b's vertex i (type 1), or the
+/// crossing of a's edge i (a_i -> a_(i+1)) with b's edge line j (type 2).
+struct SymVertex {
+  int type, i, j;
+};
+
+struct Coplanar {
+  V2 a[3], b[3];
+  int ob;  // orientation sign of b in the projection
+
+  // Side of v relative to b's edge line j, positive towards b's interior (exact).
+  [[nodiscard]] int side(const SymVertex& v, int j) const noexcept {
+    const int j1 = (j + 1) % 3;
+    if (v.type == 0) return to_int(orient2d(b[j], b[j1], a[v.i])) * ob;
+    if (v.type == 1) return v.i == j || v.i == j1 ? 0 : 1;
+    if (v.j == j) return 0;
+    // Lines v.j and j of b share a vertex u; w is v.j's other vertex (opposite to line j, so on
+    // b's inner side). The crossing is u + lambda (w - u): its side is sign(lambda), lambda =
+    // g(u) / (g(u) - g(w)), g = orient2d(a_i, a_(i+1), .).
+    const int m = v.j, m1 = (m + 1) % 3;
+    const int u = (m1 == j) ? m1 : m, w = u == m ? m1 : m;
+    const V2 &p = a[v.i], &q = a[(v.i + 1) % 3];
+    return to_int(orient2d(p, q, b[u])) * to_int(turn2d(p, q, b[w], b[u]));
+  }
+};
+
+template <Real T>
+[[nodiscard]] inline FindResult find_coplanar(const Triangle3<T>& ta, const Triangle3<T>& tb,
+                                              int axis) noexcept {
+  FindResult r;
+  const V3 a[3] = {vec_cast<double>(ta.v0), vec_cast<double>(ta.v1), vec_cast<double>(ta.v2)};
+  const V3 b[3] = {vec_cast<double>(tb.v0), vec_cast<double>(tb.v1), vec_cast<double>(tb.v2)};
+  Coplanar c{};
+  for (int i = 0; i < 3; ++i) {
+    c.a[i] = drop(a[i], axis);
+    c.b[i] = drop(b[i], axis);
+  }
+  const int oa = to_int(orient2d(c.a[0], c.a[1], c.a[2]));
+  c.ob = to_int(orient2d(c.b[0], c.b[1], c.b[2]));
+  // Interiors disjoint iff an edge line of one has the other on its closed outer side.
+  bool disjoint = false;
+  for (int i = 0; i < 3 && !disjoint; ++i) {
+    const int i1 = (i + 1) % 3;
+    bool out_b = true, out_a = true;
+    for (int j = 0; j < 3; ++j) {
+      out_b = out_b && to_int(orient2d(c.a[i], c.a[i1], c.b[j])) * oa <= 0;
+      out_a = out_a && to_int(orient2d(c.b[i], c.b[i1], c.a[j])) * c.ob <= 0;
+    }
+    disjoint = out_a || out_b;
+  }
+  if (disjoint) {
+    // Zero area: the common set is the hull of the input vertices lying in the other triangle
+    // (collinear), i.e. the segment between the lexicographic extremes.
+    int lo = -1, hi = -1;
+    V3 pts[6];
+    int owner[6], idx[6], n = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (in_triangle2(c.a[i], c.b[0], c.b[1], c.b[2])) pts[n] = a[i], owner[n] = 0, idx[n++] = i;
+      if (in_triangle2(c.b[i], c.a[0], c.a[1], c.a[2])) pts[n] = b[i], owner[n] = 1, idx[n++] = i;
+    }
+    for (int k = 0; k < n; ++k) {
+      if (lo < 0 || lexicographic_compare(pts[k], pts[lo]) == Sign::negative) lo = k;
+      if (hi < 0 || lexicographic_compare(pts[hi], pts[k]) == Sign::negative) hi = k;
+    }
+    if (n == 0) return r;
+    const auto emit = [&](int k) {
+      const auto i = static_cast<std::size_t>(r.count++);
+      r.point[i] = pts[k];
+      if (owner[k] == 0) {
+        r.param_a[i] = plane_tri::vertex_st(idx[k]);
+        r.param_b[i] = st_of(b, pts[k]);
+      } else {
+        r.param_b[i] = plane_tri::vertex_st(idx[k]);
+        r.param_a[i] = st_of(a, pts[k]);
+      }
+    };
+    emit(lo);
+    if (pts[lo] == pts[hi]) {
+      r.kind = Kind::point;
+    } else {
+      r.kind = Kind::segment;
+      emit(hi);
+    }
+    return r;
+  }
+  // Positive area: clip a (in its own vertex order) by b's three edge half-planes. An edge of
+  // the polygon lies on a's edge i (label i) or on b's edge line j (label 3 + j).
+  SymVertex poly[12], next[12];
+  int label[12], next_label[12];
+  int n = 3;
+  for (int i = 0; i < 3; ++i) poly[i] = {0, i, 0}, label[i] = i;
+  for (int j = 0; j < 3; ++j) {
+    int m = 0;
+    for (int k = 0; k < n; ++k) {
+      const SymVertex &p = poly[k], &q = poly[(k + 1) % n];
+      const int sp = c.side(p, j), sq = c.side(q, j);
+      if (sp >= 0 && m < 12) {
+        next[m] = p;
+        next_label[m++] = (sp == 0 && sq < 0) ? 3 + j : label[k];
+      }
+      if (sp * sq < 0 && m < 12) {
+        SymVertex x;
+        if (label[k] < 3) {
+          x = {2, label[k], j};
+        } else {
+          const int e = label[k] - 3;  // b's lines e and j meet at b's shared vertex
+          x = {1, (e + 1) % 3 == j ? j : e, 0};
+        }
+        next[m] = x;
+        next_label[m++] = sp > 0 ? 3 + j : label[k];
+      }
+    }
+    n = m;
+    std::copy(next, next + m, poly);
+    std::copy(next_label, next_label + m, label);
+  }
+  LOCUS_ASSERT(n >= 3 && n <= 6, "coplanar triangle clipping: unexpected vertex count");
+  n = std::min(n, 6);
+  r.kind = n >= 3 ? Kind::polygon : Kind::empty;
+  for (int k = 0; k < n; ++k) {
+    const SymVertex& v = poly[k];
+    const auto i = static_cast<std::size_t>(r.count++);
+    if (v.type == 0) {
+      r.point[i] = a[v.i];
+      r.param_a[i] = plane_tri::vertex_st(v.i);
+      r.param_b[i] = st_of(b, a[v.i]);
+    } else if (v.type == 1) {
+      r.point[i] = b[v.i];
+      r.param_b[i] = plane_tri::vertex_st(v.i);
+      r.param_a[i] = st_of(a, b[v.i]);
+    } else {
+      const int i0 = v.i, i1 = (v.i + 1) % 3, j0 = v.j, j1 = (v.j + 1) % 3;
+      const double g0 = orient2d_value(c.b[j0], c.b[j1], c.a[i0]);
+      const double g1 = orient2d_value(c.b[j0], c.b[j1], c.a[i1]);
+      const double t = g0 == g1 ? 0.5 : std::clamp(g0 / (g0 - g1), 0.0, 1.0);
+      r.point[i] = a[i0] + t * (a[i1] - a[i0]);
+      r.param_a[i] = (1.0 - t) * plane_tri::vertex_st(i0) + t * plane_tri::vertex_st(i1);
+      r.param_b[i] = st_of(b, r.point[i]);
+    }
+  }
+  return r;
+}
+
+/// A degenerate triangle's segment: its lexicographically extreme vertices.
+template <Real T>
+[[nodiscard]] inline std::array<int, 2> extreme_vertices(const Triangle3<T>& t) noexcept {
+  const V3 v[3] = {vec_cast<double>(t.v0), vec_cast<double>(t.v1), vec_cast<double>(t.v2)};
+  return plane_tri::extremes(v);
+}
+
+/// a degenerate, b not: a's segment against b, parameters mapped to a's (s, t).
+template <Real T>
+[[nodiscard]] inline FindResult find_degenerate(const Triangle3<T>& ta,
+                                                const Triangle3<T>& tb) noexcept {
+  FindResult r;
+  const std::array<int, 2> e = extreme_vertices(ta);
+  const Segment3<double> sa{vec_cast<double>(ta[e[0]]), vec_cast<double>(ta[e[1]])};
+  const Triangle3<double> db{vec_cast<double>(tb.v0), vec_cast<double>(tb.v1),
+                             vec_cast<double>(tb.v2)};
+  const LinearTriangleIntersection<double> k = intersection(sa, db);
+  r.kind = k.kind;
+  r.count = k.count;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(k.count); ++i) {
+    const double t = k.param_a[i];
+    r.point[i] = k.point[i];
+    r.param_a[i] = (1.0 - t) * plane_tri::vertex_st(e[0]) + t * plane_tri::vertex_st(e[1]);
+    r.param_b[i] = k.param_b[i];
+  }
+  return r;
+}
+
+/// Both degenerate: 2D segment intersection in a coordinate plane injective on both segments.
+template <Real T>
+[[nodiscard]] inline FindResult find_two_degenerate(const Triangle3<T>& ta,
+                                                    const Triangle3<T>& tb) noexcept {
+  FindResult r;
+  const std::array<int, 2> ea = extreme_vertices(ta), eb = extreme_vertices(tb);
+  const V3 p = vec_cast<double>(ta[ea[0]]), q = vec_cast<double>(ta[ea[1]]);
+  const V3 u = vec_cast<double>(tb[eb[0]]), w = vec_cast<double>(tb[eb[1]]);
+  if (!segments3(p, q, u, w)) return r;
+  // The same injective projection as segments3 (coplanar now).
+  int axis = projection_axis(p, q, u);
+  if (axis < 0) axis = projection_axis(p, q, w);
+  if (axis < 0) axis = projection_axis(p, u, w);
+  if (axis < 0) axis = projection_axis(q, u, w);
+  if (axis < 0) {
+    const V3 pts[4] = {p, q, u, w};
+    axis = 2;
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) {
+        for (int k = 0; k < 3; ++k) {
+          if (pts[i][k] != pts[j][k]) axis = (k + 1) % 3;
+        }
+      }
+    }
+  }
+  const LinearIntersection2<double> k =
+      intersection(Segment2<double>{drop(p, axis), drop(q, axis)},
+                   Segment2<double>{drop(u, axis), drop(w, axis)});
+  r.kind = k.kind;
+  r.count = k.count;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(k.count); ++i) {
+    const double s = k.param_a[i], t = k.param_b[i];
+    r.point[i] = s == 0.0 ? p : (s == 1.0 ? q : p + s * (q - p));
+    r.param_a[i] = (1.0 - s) * plane_tri::vertex_st(ea[0]) + s * plane_tri::vertex_st(ea[1]);
+    r.param_b[i] = (1.0 - t) * plane_tri::vertex_st(eb[0]) + t * plane_tri::vertex_st(eb[1]);
+  }
+  return r;
+}
+
+template <Real T>
+[[nodiscard]] inline FindResult find(const Triangle3<T>& a, const Triangle3<T>& b) noexcept {
+  if (!intersects(a, b)) return FindResult{};
+  const int axis_a = projection_axis(a.v0, a.v1, a.v2), axis_b = projection_axis(b.v0, b.v1, b.v2);
+  if (axis_a < 0 && axis_b < 0) return find_two_degenerate(a, b);
+  if (axis_a < 0) return find_degenerate(a, b);
+  if (axis_b < 0) return swapped(find_degenerate(b, a));
+  int sa[3], sb[3];
+  for (int i = 0; i < 3; ++i) {
+    sa[i] = to_int(orient3d(b.v0, b.v1, b.v2, a[i]));
+    sb[i] = to_int(orient3d(a.v0, a.v1, a.v2, b[i]));
+  }
+  if (sa[0] == 0 && sa[1] == 0 && sa[2] == 0) return find_coplanar(a, b, axis_a);
+  return find_crossing(a, b, sa, sb);
+}
+
+}  // namespace detail::tri3
+
+/// The common set of two closed triangles in 3D (see the header comment).
+template <Real T>
+[[nodiscard]] inline TriangleTriangleIntersection<T> intersection(const Triangle3<T>& a,
+                                                                  const Triangle3<T>& b) noexcept {
+  return intersection_cast<T>(detail::tri3::find(a, b));
 }
 
 }  // namespace locus
