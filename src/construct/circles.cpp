@@ -92,7 +92,13 @@ Solutions<Circle2<T>, 4> circles_tangent_to(const Line2<T>& l0, const Line2<T>& 
     w[i] = (var(dj.x) * var(dk.y) - var(dj.y) * var(dk.x)).sign();
   }
   const int parallel_pairs = (w[0] == 0) + (w[1] == 0) + (w[2] == 0);
-  if (parallel_pairs == 3) return s;  // all parallel: no circle touches three parallel lines
+  if (parallel_pairs == 3) {
+    // All parallel: no circle touches three distinct parallels; two coincident ones leave the
+    // circles between them and the third (infinitely many), three coincident any circle on them.
+    for (int j = 0; j < 3; ++j)
+      if (cross_at(d[j], o[(j + 1) % 3], o[j]).sign() == 0) s.infinite = true;
+    return s;
+  }
   if (parallel_pairs == 1) {
     // Lines j, k parallel (w[i] == 0): coincident when o_k lies on line j.
     const int i = w[0] == 0 ? 0 : (w[1] == 0 ? 1 : 2);

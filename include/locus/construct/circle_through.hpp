@@ -15,9 +15,9 @@
 // tried in this order; each is a 3x3 linear system in (X, r). When the lines bound a triangle all
 // four exist: the incircle first, then the excircle beyond line 0, 1, 2 (so for the lines of a
 // triangle's edges v0v1, v1v2, v2v0 the excircles opposite v2, v0, v1). Two parallel lines leave
-// the two circles between them tangent to the third line; three parallel lines, or three lines
-// through one point, leave none (count 0). Two coincident lines and a crossing third line give
-// infinitely many (infinite, count 0). Parallel, coincident and concurrent are decided exactly
+// the two circles between them tangent to the third line; three distinct parallel lines, or
+// three lines through one point, leave none (count 0). Two coincident lines give infinitely many
+// (infinite, count 0). Parallel, coincident and concurrent are decided exactly
 // (a pattern is singular exactly when e_i d_i / |d_i| sum to a dependent system; see
 // docs/notes/construct.md). incircle(t) / excircles(t) apply this to the triangle's edge lines.
 //
