@@ -26,12 +26,15 @@ V3 axpy(double s, const V3& a, const V3& b) noexcept {
   return {s * a.x + b.x, s * a.y + b.y, s * a.r + b.r};
 }
 
+/// Pushes the circle of Z; a negative radius is the negated pattern's circle, except when every
+/// radius is 0 (`self_dual`: the negated pattern is the pattern itself, so the root is a copy).
 template <Real T>
 void push_circle(ApolloniusSolutions<T>& out, const V& c0, const V3& z, double s0r0,
-                 const int (&s)[3]) noexcept {
+                 const int (&s)[3], bool self_dual) noexcept {
   double r = z.r - s0r0;
   int sg[3] = {s[0], s[1], s[2]};
   if (r < 0) {
+    if (self_dual) return;
     r = -r;
     for (int& x : sg) x = -x;
   }
@@ -106,7 +109,8 @@ ApolloniusSolutions<T> apollonius(const Circle2<T>& c0, const Circle2<T>& c1,
       const Normalized<double, 2> nd = normalize_with_length(Dd);
       const double al = -ee / nd.length;
       const double be = std::sqrt(std::max(0.0, (1 - al) * (1 + al)));
-      for (double sg : {1.0, -1.0}) push_line(out, C[0], R[0], al * nd.dir + (sg * be) * perp(nd.dir), s);
+      for (double sg : {1.0, -1.0})
+        push_line(out, C[0], R[0], al * nd.dir + (sg * be) * perp(nd.dir), s);
       continue;
     }
     // Independent: the solutions lie on Z = Zp + t q, q = u1 x u2 (B-orthogonal to v1, v2).
@@ -121,14 +125,14 @@ ApolloniusSolutions<T> apollonius(const Circle2<T>& c0, const Circle2<T>& c1,
       const int disc = k1.sign() * k2.sign() * (k1 + k2 - P::constant(1, 1) * g).sign();
       if (disc < 0) continue;
       if (disc == 0) {
-        push_circle(out, C[0], axpy(-qb / (2.0 * qa), q, zp), R[0], s);
+        push_circle(out, C[0], axpy(-qb / (2.0 * qa), q, zp), R[0], s, nfree == 0);
         continue;
       }
       const double sq = std::sqrt(std::max(0.0, qb * qb - 4.0 * qa * qc));
       const double big = -0.5 * (qb + (qb >= 0 ? sq : -sq));  // no cancellation
       const double t1 = big / qa, t2 = big != 0.0 ? qc / big : t1;
-      push_circle(out, C[0], axpy(t1, q, zp), R[0], s);
-      push_circle(out, C[0], axpy(t2, q, zp), R[0], s);
+      push_circle(out, C[0], axpy(t1, q, zp), R[0], s, nfree == 0);
+      push_circle(out, C[0], axpy(t2, q, zp), R[0], s, nfree == 0);
       continue;
     }
     // Parallel to the cone: a tangent line (m = q_xy / q_r), and one finite circle unless
@@ -138,7 +142,8 @@ ApolloniusSolutions<T> apollonius(const Circle2<T>& c0, const Circle2<T>& c1,
       continue;
     }
     push_line(out, C[0], R[0], V{q.x / q.r, q.y / q.r}, s);
-    if (k1.sign() != 0 && (g - k2).sign() != 0) push_circle(out, C[0], axpy(-qc / qb, q, zp), R[0], s);
+    if (k1.sign() != 0 && (g - k2).sign() != 0)
+      push_circle(out, C[0], axpy(-qc / qb, q, zp), R[0], s, nfree == 0);
   }
   return out;
 }

@@ -355,24 +355,24 @@ Solutions<Circle2<T>, 8> circles_of_radius(const Circle2<T>& c0, const Circle2<T
   return s;
 }
 
-#define LOCUS_INSTANTIATE(T)                                                                      \
-  template Solutions<Circle2<T>, 1> circle_through<T>(const Vec2<T>&, const Vec2<T>&,             \
-                                                      const Vec2<T>&) noexcept;                   \
-  template Solutions<Circle2<T>, 4> circles_tangent_to<T>(const Line2<T>&, const Line2<T>&,       \
-                                                          const Line2<T>&) noexcept;              \
-  template Solutions<Circle2<T>, 1> incircle<T>(const Triangle2<T>&) noexcept;                    \
-  template Solutions<Circle2<T>, 3> excircles<T>(const Triangle2<T>&) noexcept;                   \
-  template Solutions<Circle2<T>, 2> circles_of_radius<T>(const Vec2<T>&, const Vec2<T>&,          \
-                                                         T) noexcept;                             \
-  template Solutions<Circle2<T>, 2> circles_of_radius<T>(const Vec2<T>&, const Line2<T>&,         \
-                                                         T) noexcept;                             \
-  template Solutions<Circle2<T>, 4> circles_of_radius<T>(const Line2<T>&, const Line2<T>&,        \
-                                                         T) noexcept;                             \
-  template Solutions<Circle2<T>, 4> circles_of_radius<T>(const Vec2<T>&, const Circle2<T>&,       \
-                                                         T) noexcept;                             \
-  template Solutions<Circle2<T>, 8> circles_of_radius<T>(const Line2<T>&, const Circle2<T>&,      \
-                                                         T) noexcept;                             \
-  template Solutions<Circle2<T>, 8> circles_of_radius<T>(const Circle2<T>&, const Circle2<T>&,    \
+#define LOCUS_INSTANTIATE(T)                                                                   \
+  template Solutions<Circle2<T>, 1> circle_through<T>(const Vec2<T>&, const Vec2<T>&,          \
+                                                      const Vec2<T>&) noexcept;                \
+  template Solutions<Circle2<T>, 4> circles_tangent_to<T>(const Line2<T>&, const Line2<T>&,    \
+                                                          const Line2<T>&) noexcept;           \
+  template Solutions<Circle2<T>, 1> incircle<T>(const Triangle2<T>&) noexcept;                 \
+  template Solutions<Circle2<T>, 3> excircles<T>(const Triangle2<T>&) noexcept;                \
+  template Solutions<Circle2<T>, 2> circles_of_radius<T>(const Vec2<T>&, const Vec2<T>&,       \
+                                                         T) noexcept;                          \
+  template Solutions<Circle2<T>, 2> circles_of_radius<T>(const Vec2<T>&, const Line2<T>&,      \
+                                                         T) noexcept;                          \
+  template Solutions<Circle2<T>, 4> circles_of_radius<T>(const Line2<T>&, const Line2<T>&,     \
+                                                         T) noexcept;                          \
+  template Solutions<Circle2<T>, 4> circles_of_radius<T>(const Vec2<T>&, const Circle2<T>&,    \
+                                                         T) noexcept;                          \
+  template Solutions<Circle2<T>, 8> circles_of_radius<T>(const Line2<T>&, const Circle2<T>&,   \
+                                                         T) noexcept;                          \
+  template Solutions<Circle2<T>, 8> circles_of_radius<T>(const Circle2<T>&, const Circle2<T>&, \
                                                          T) noexcept;
 LOCUS_INSTANTIATE(float)
 LOCUS_INSTANTIATE(double)

@@ -69,8 +69,8 @@ enum class Meet { none, one, two, same };
 
 /// The intersections of the circles (a, ra) and (b, rb) for a decided meet (one or two): right
 /// of a -> b first. Writes out[0 .. n) and returns n.
-inline int circle_circle_points(const Vec2<double>& a, double ra, const Vec2<double>& b,
-                                double rb, Meet m, Vec2<double>* out) noexcept {
+inline int circle_circle_points(const Vec2<double>& a, double ra, const Vec2<double>& b, double rb,
+                                Meet m, Vec2<double>* out) noexcept {
   const Normalized<double, 2> nd = normalize_with_length(b - a);
   const double dd = nd.length;
   const Vec2<double> u = nd.dir;

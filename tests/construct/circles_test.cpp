@@ -83,8 +83,9 @@ int lines_oracle(const Line2<T> (&l)[3], bool& infinite) {
     for (int k = j + 1; k < 3; ++k) {
       const mpq_class cr = mpq_class(l[j].direction.x) * l[k].direction.y -
                            mpq_class(l[j].direction.y) * l[k].direction.x;
-      const mpq_class off = mpq_class(l[j].direction.x) * (mpq_class(l[k].origin.y) - l[j].origin.y) -
-                            mpq_class(l[j].direction.y) * (mpq_class(l[k].origin.x) - l[j].origin.x);
+      const mpq_class off =
+          mpq_class(l[j].direction.x) * (mpq_class(l[k].origin.y) - l[j].origin.y) -
+          mpq_class(l[j].direction.y) * (mpq_class(l[k].origin.x) - l[j].origin.x);
       if (sgn(cr) == 0 && sgn(off) == 0) infinite = true;
     }
   if (infinite) return 0;

@@ -58,7 +58,8 @@ int check(const A& a, const B& b, T r) {
     const auto t = circles_of_radius(b, a, r);
     EXPECT_EQ(t.count, s.count);
     for (int i = 0; i < s.count; ++i)
-      EXPECT_EQ(t.item[static_cast<std::size_t>(i)].center, s.item[static_cast<std::size_t>(i)].center);
+      EXPECT_EQ(t.item[static_cast<std::size_t>(i)].center,
+                s.item[static_cast<std::size_t>(i)].center);
   }
   // Scaling by a power of two scales every solution exactly; rotating by 90 degrees rotates them.
   for (int k : {-9, 7}) {
@@ -101,8 +102,8 @@ TYPED_TEST(ConstructRadius, RandomAgainstOracle) {
     const Vec2<T> p = rng.vec<T, 2>(T(-4), T(4)), q = rng.vec<T, 2>(T(-4), T(4));
     const Line2<T> l0 = random_line<T>(rng), l1 = random_line<T>(rng);
     const Circle2<T> c0 = random_circle<T>(rng), c1 = random_circle<T>(rng);
-    const int n[6] = {check(p, q, r),   check(p, l0, r),  check(l0, l1, r),
-                      check(p, c0, r),  check(l0, c0, r), check(c0, c1, r)};
+    const int n[6] = {check(p, q, r),  check(p, l0, r),  check(l0, l1, r),
+                      check(p, c0, r), check(l0, c0, r), check(c0, c1, r)};
     for (int k : n) ++seen[std::clamp(k, 0, 8)];
     if (this->HasFailure()) return;
   }

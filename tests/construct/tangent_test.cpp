@@ -55,15 +55,17 @@ void check_through(const Vec2<T>& p, const Circle2<T>& c) {
     const Line2<T>& l = s.item[static_cast<std::size_t>(i)];
     expect_tangent(l, c, 32 * eps<T>() * S);
     EXPECT_LE(line_dist(l, p), 32 * eps<T>() * S);
-    EXPECT_LE(residual(Cond::of(l.origin), double(c.center.x), double(c.center.y),
-                       double(c.radius)),
-              32 * eps<T>() * S);
+    EXPECT_LE(
+        residual(Cond::of(l.origin), double(c.center.x), double(c.center.y), double(c.radius)),
+        32 * eps<T>() * S);
   }
   const auto u = tangent_lines(scaled(p, 9), scaled(c, 9));
   ASSERT_EQ(u.count, s.count);
   for (int i = 0; i < s.count; ++i) {
-    EXPECT_EQ(u.item[static_cast<std::size_t>(i)].origin, scaled(s.item[static_cast<std::size_t>(i)].origin, 9));
-    EXPECT_EQ(u.item[static_cast<std::size_t>(i)].direction, s.item[static_cast<std::size_t>(i)].direction);
+    EXPECT_EQ(u.item[static_cast<std::size_t>(i)].origin,
+              scaled(s.item[static_cast<std::size_t>(i)].origin, 9));
+    EXPECT_EQ(u.item[static_cast<std::size_t>(i)].direction,
+              s.item[static_cast<std::size_t>(i)].direction);
   }
   EXPECT_EQ(tangent_lines(rot(p), rot(c)).count, s.count);
 }
@@ -88,20 +90,22 @@ void check_two(const Circle2<T>& a, const Circle2<T>& b) {
   bool inf = false;
   ASSERT_EQ(s.count, oracle_two(a, b, inf));
   EXPECT_EQ(s.infinite, inf);
-  const double S = std::max({double(max_abs(a.center)), double(max_abs(b.center)),
-                             double(a.radius), double(b.radius)});
+  const double S = std::max(
+      {double(max_abs(a.center)), double(max_abs(b.center)), double(a.radius), double(b.radius)});
   for (int i = 0; i < s.count; ++i) {
     const Line2<T>& l = s.item[static_cast<std::size_t>(i)];
     expect_tangent(l, a, 32 * eps<T>() * S);
     expect_tangent(l, b, 32 * eps<T>() * S);
     for (int j = 0; j < i; ++j)  // distinct lines
       EXPECT_FALSE(line_dist(s.item[static_cast<std::size_t>(j)], l.origin) < 1e-3 &&
-                   std::abs(double(perp_dot(s.item[static_cast<std::size_t>(j)].direction, l.direction))) < 1e-3);
+                   std::abs(double(perp_dot(s.item[static_cast<std::size_t>(j)].direction,
+                                            l.direction))) < 1e-3);
   }
   const auto u = tangent_lines(scaled(a, -8), scaled(b, -8));
   ASSERT_EQ(u.count, s.count);
   for (int i = 0; i < s.count; ++i)
-    EXPECT_EQ(u.item[static_cast<std::size_t>(i)].origin, scaled(s.item[static_cast<std::size_t>(i)].origin, -8));
+    EXPECT_EQ(u.item[static_cast<std::size_t>(i)].origin,
+              scaled(s.item[static_cast<std::size_t>(i)].origin, -8));
   EXPECT_EQ(tangent_lines(rot(a), rot(b)).count, s.count);
 }
 
@@ -132,7 +136,8 @@ TYPED_TEST(ConstructTangent, ThroughAPoint) {
   const T nan = std::numeric_limits<T>::quiet_NaN();
   EXPECT_EQ(tangent_lines(Vec2<T>{nan, 0}, c).status, Status::non_finite_input);
   EXPECT_EQ(tangent_lines(Vec2<T>{0, 0}, Circle2<T>{{0, 0}, 0}).status, Status::degenerate_input);
-  EXPECT_EQ(tangent_line_at(Circle2<T>{{0, 0}, -1}, Vec2<T>{1, 0}).status, Status::degenerate_input);
+  EXPECT_EQ(tangent_line_at(Circle2<T>{{0, 0}, -1}, Vec2<T>{1, 0}).status,
+            Status::degenerate_input);
 }
 
 TYPED_TEST(ConstructTangent, TwoCircles) {

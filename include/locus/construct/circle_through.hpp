@@ -53,12 +53,12 @@ template <Real T>
 template <Real T>
 [[nodiscard]] Solutions<Circle2<T>, 3> excircles(const Triangle2<T>& t) noexcept;
 
-#define LOCUS_CONSTRUCT_CIRCLE_THROUGH_EXTERN(T)                                                 \
-  extern template Solutions<Circle2<T>, 1> circle_through<T>(const Vec2<T>&, const Vec2<T>&,     \
-                                                             const Vec2<T>&) noexcept;           \
-  extern template Solutions<Circle2<T>, 4> circles_tangent_to<T>(                                \
-      const Line2<T>&, const Line2<T>&, const Line2<T>&) noexcept;                               \
-  extern template Solutions<Circle2<T>, 1> incircle<T>(const Triangle2<T>&) noexcept;            \
+#define LOCUS_CONSTRUCT_CIRCLE_THROUGH_EXTERN(T)                                                   \
+  extern template Solutions<Circle2<T>, 1> circle_through<T>(const Vec2<T>&, const Vec2<T>&,       \
+                                                             const Vec2<T>&) noexcept;             \
+  extern template Solutions<Circle2<T>, 4> circles_tangent_to<T>(const Line2<T>&, const Line2<T>&, \
+                                                                 const Line2<T>&) noexcept;        \
+  extern template Solutions<Circle2<T>, 1> incircle<T>(const Triangle2<T>&) noexcept;              \
   extern template Solutions<Circle2<T>, 3> excircles<T>(const Triangle2<T>&) noexcept;
 LOCUS_CONSTRUCT_CIRCLE_THROUGH_EXTERN(float)
 LOCUS_CONSTRUCT_CIRCLE_THROUGH_EXTERN(double)

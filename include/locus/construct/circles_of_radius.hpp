@@ -49,13 +49,13 @@ template <Real T>
 [[nodiscard]] Solutions<Circle2<T>, 8> circles_of_radius(const Line2<T>& l, const Circle2<T>& c,
                                                          T r) noexcept;
 template <Real T>
-[[nodiscard]] Solutions<Circle2<T>, 8> circles_of_radius(const Circle2<T>& c0,
-                                                         const Circle2<T>& c1, T r) noexcept;
+[[nodiscard]] Solutions<Circle2<T>, 8> circles_of_radius(const Circle2<T>& c0, const Circle2<T>& c1,
+                                                         T r) noexcept;
 
 /// The swapped-argument overloads (same solutions, same order).
 template <Real T>
-[[nodiscard]] inline Solutions<Circle2<T>, 2> circles_of_radius(const Line2<T>& l,
-                                                                const Vec2<T>& p, T r) noexcept {
+[[nodiscard]] inline Solutions<Circle2<T>, 2> circles_of_radius(const Line2<T>& l, const Vec2<T>& p,
+                                                                T r) noexcept {
   return circles_of_radius(p, l, r);
 }
 template <Real T>
@@ -69,18 +69,18 @@ template <Real T>
   return circles_of_radius(l, c, r);
 }
 
-#define LOCUS_CONSTRUCT_RADIUS_EXTERN(T)                                                         \
-  extern template Solutions<Circle2<T>, 2> circles_of_radius<T>(const Vec2<T>&, const Vec2<T>&,  \
-                                                                T) noexcept;                     \
-  extern template Solutions<Circle2<T>, 2> circles_of_radius<T>(const Vec2<T>&, const Line2<T>&, \
-                                                                T) noexcept;                     \
-  extern template Solutions<Circle2<T>, 4> circles_of_radius<T>(const Line2<T>&,                 \
-                                                                const Line2<T>&, T) noexcept;    \
-  extern template Solutions<Circle2<T>, 4> circles_of_radius<T>(const Vec2<T>&,                  \
-                                                                const Circle2<T>&, T) noexcept;  \
-  extern template Solutions<Circle2<T>, 8> circles_of_radius<T>(const Line2<T>&,                 \
-                                                                const Circle2<T>&, T) noexcept;  \
-  extern template Solutions<Circle2<T>, 8> circles_of_radius<T>(const Circle2<T>&,               \
+#define LOCUS_CONSTRUCT_RADIUS_EXTERN(T)                                                           \
+  extern template Solutions<Circle2<T>, 2> circles_of_radius<T>(const Vec2<T>&, const Vec2<T>&,    \
+                                                                T) noexcept;                       \
+  extern template Solutions<Circle2<T>, 2> circles_of_radius<T>(const Vec2<T>&, const Line2<T>&,   \
+                                                                T) noexcept;                       \
+  extern template Solutions<Circle2<T>, 4> circles_of_radius<T>(const Line2<T>&, const Line2<T>&,  \
+                                                                T) noexcept;                       \
+  extern template Solutions<Circle2<T>, 4> circles_of_radius<T>(const Vec2<T>&, const Circle2<T>&, \
+                                                                T) noexcept;                       \
+  extern template Solutions<Circle2<T>, 8> circles_of_radius<T>(const Line2<T>&,                   \
+                                                                const Circle2<T>&, T) noexcept;    \
+  extern template Solutions<Circle2<T>, 8> circles_of_radius<T>(const Circle2<T>&,                 \
                                                                 const Circle2<T>&, T) noexcept;
 LOCUS_CONSTRUCT_RADIUS_EXTERN(float)
 LOCUS_CONSTRUCT_RADIUS_EXTERN(double)

@@ -42,7 +42,8 @@ template <Real T>
 
 /// The line through p perpendicular to l (figure 8.30).
 template <Real T>
-[[nodiscard]] inline Solutions<Line2<T>, 1> normal_line(const Line2<T>& l, const Vec2<T>& p) noexcept {
+[[nodiscard]] inline Solutions<Line2<T>, 1> normal_line(const Line2<T>& l,
+                                                        const Vec2<T>& p) noexcept {
   Solutions<Line2<T>, 1> s;
   Vec2<T> u{};
   s.status = detail::construct::unit_direction(l, u);
@@ -69,8 +70,8 @@ template <Real T>
 
 namespace detail::construct {
 template <Real T>
-[[nodiscard]] inline Solutions<Line2<T>, 2> offset_pair(const Line2<T>& l, T d, Vec2<T> dir_of_offset,
-                                                        bool same) noexcept {
+[[nodiscard]] inline Solutions<Line2<T>, 2> offset_pair(const Line2<T>& l, T d,
+                                                        Vec2<T> dir_of_offset, bool same) noexcept {
   Solutions<Line2<T>, 2> s;
   Vec2<T> u{};
   s.status = unit_direction(l, u);
@@ -94,12 +95,14 @@ template <Real T>
 }
 /// The lines l shifted by -d and +d along the y axis (figure 8.33).
 template <Real T>
-[[nodiscard]] inline Solutions<Line2<T>, 2> parallel_lines_vertical(const Line2<T>& l, T d) noexcept {
+[[nodiscard]] inline Solutions<Line2<T>, 2> parallel_lines_vertical(const Line2<T>& l,
+                                                                    T d) noexcept {
   return detail::construct::offset_pair(l, d, Vec2<T>{T(0), T(1)}, l.direction.x == T(0));
 }
 /// The lines l shifted by -d and +d along the x axis (figure 8.33).
 template <Real T>
-[[nodiscard]] inline Solutions<Line2<T>, 2> parallel_lines_horizontal(const Line2<T>& l, T d) noexcept {
+[[nodiscard]] inline Solutions<Line2<T>, 2> parallel_lines_horizontal(const Line2<T>& l,
+                                                                      T d) noexcept {
   return detail::construct::offset_pair(l, d, Vec2<T>{T(1), T(0)}, l.direction.y == T(0));
 }
 

@@ -36,7 +36,8 @@ namespace locus {
 
 /// The tangent line at the point of c nearest to p (see the header comment).
 template <Real T>
-[[nodiscard]] Solutions<Line2<T>, 1> tangent_line_at(const Circle2<T>& c, const Vec2<T>& p) noexcept;
+[[nodiscard]] Solutions<Line2<T>, 1> tangent_line_at(const Circle2<T>& c,
+                                                     const Vec2<T>& p) noexcept;
 
 /// The lines through p tangent to c: 0, 1 or 2, decided exactly.
 template <Real T>
@@ -47,12 +48,12 @@ template <Real T>
 [[nodiscard]] Solutions<Line2<T>, 4> tangent_lines(const Circle2<T>& c0,
                                                    const Circle2<T>& c1) noexcept;
 
-#define LOCUS_CONSTRUCT_TANGENT_EXTERN(T)                                                         \
-  extern template Solutions<Line2<T>, 1> tangent_line_at<T>(const Circle2<T>&,                    \
-                                                            const Vec2<T>&) noexcept;             \
-  extern template Solutions<Line2<T>, 2> tangent_lines<T>(const Vec2<T>&,                         \
-                                                          const Circle2<T>&) noexcept;            \
-  extern template Solutions<Line2<T>, 4> tangent_lines<T>(const Circle2<T>&,                      \
+#define LOCUS_CONSTRUCT_TANGENT_EXTERN(T)                                              \
+  extern template Solutions<Line2<T>, 1> tangent_line_at<T>(const Circle2<T>&,         \
+                                                            const Vec2<T>&) noexcept;  \
+  extern template Solutions<Line2<T>, 2> tangent_lines<T>(const Vec2<T>&,              \
+                                                          const Circle2<T>&) noexcept; \
+  extern template Solutions<Line2<T>, 4> tangent_lines<T>(const Circle2<T>&,           \
                                                           const Circle2<T>&) noexcept;
 LOCUS_CONSTRUCT_TANGENT_EXTERN(float)
 LOCUS_CONSTRUCT_TANGENT_EXTERN(double)
