@@ -69,6 +69,9 @@ TYPED_TEST(ConstructCircle, ThroughThreePoints) {
   check_points(Vec2<T>{0, 0}, Vec2<T>{1, 1}, Vec2<T>{3, 3});
   check_points(Vec2<T>{2, 1}, Vec2<T>{2, 1}, Vec2<T>{3, 3});
   check_points(Vec2<T>{0, 0}, Vec2<T>{6, 0}, Vec2<T>{0, 8});
+  // Nearly collinear: the centre runs far away; the bound is relative to |centre|.
+  for (T tiny : {T(1e-3), T(1e-5), T(std::numeric_limits<T>::epsilon() * 4)})
+    check_points(Vec2<T>{-1, 0.5}, Vec2<T>{0.25, T(0.5) + tiny}, Vec2<T>{2, 0.5});
   EXPECT_EQ(circle_through(Vec2<T>{0, 0}, Vec2<T>{6, 0}, Vec2<T>{0, 8}).item[0].radius, T(5));
   const T nan = std::numeric_limits<T>::quiet_NaN();
   EXPECT_EQ(circle_through(Vec2<T>{0, 0}, Vec2<T>{nan, 0}, Vec2<T>{0, 8}).status,
@@ -160,6 +163,8 @@ TYPED_TEST(ConstructCircle, TangentToThreeLines) {
   check_lines(a, Line2<T>{{0, 0}, {1, 1}}, Line2<T>{{2, 2}, {-1, 3}});
   check_lines(a, Line2<T>{{7, 0}, {-2, 0}}, c);
   check_lines(a, Line2<T>{{7, 0}, {-2, 0}}, Line2<T>{{0, 5}, {3, 0}});
+  // Nearly parallel pairs: two of the circles grow huge.
+  for (T tiny : {T(1e-3), T(1e-6)}) check_lines(a, Line2<T>{{0, 2}, {-8, tiny}}, c);
   EXPECT_EQ(circles_tangent_to(a, b, c).count, 4);
   EXPECT_EQ(circles_tangent_to(a, Line2<T>{{0, 2}, {-8, 0}}, c).count, 2);
   EXPECT_TRUE(circles_tangent_to(a, Line2<T>{{7, 0}, {-2, 0}}, Line2<T>{{0, 5}, {3, 0}}).infinite);

@@ -22,10 +22,10 @@
 // docs/notes/construct.md). incircle(t) / excircles(t) apply this to the triangle's edge lines.
 //
 // Bad input: a non-finite coordinate gives status non_finite_input; a zero direction
-// degenerate_input (count 0). Accuracy: centres and radii are rounded; every residual
-// |dist(X, p_i) - r|, |s_i(X)| - r is within 64 eps_T (m + r) k, m the largest input magnitude,
-// k the condition number of the configuration (1 for well-shaped input; it grows as the points
-// become collinear or the lines parallel: notes). Cost: O(1), exact fallback only near degeneracy.
+// degenerate_input (count 0). Accuracy: centres and radii are rounded (double arithmetic);
+// every residual |dist(X, p_i) - r|, |s_i(X)| - r is within 64 eps_T S, S the largest of the
+// input magnitudes, |X| and r (near-collinear points or near-parallel lines put X far away, and
+// S grows with it). Cost: O(1); the exact fallback runs only near a degeneracy.
 
 #include <locus/construct/solutions.hpp>
 #include <locus/core/scalar.hpp>

@@ -22,7 +22,8 @@
 // Bad input: non-finite values give non_finite_input; r <= 0, a circle radius <= 0 or a zero line
 // direction degenerate_input (count 0). Accuracy: centres are rounded; each defining residual
 // (|X - p| - r, |s_l(X)| - r, |X - c| - (c.radius +- r)) is within 64 eps_T S, S the largest
-// input magnitude plus radii, near tangency too (computed in double; float rounded once).
+// of the input magnitudes, the radii and |X|, near tangency too (computed in double; float
+// rounded once).
 // Cost O(1); the exact fallback runs only near a change of the count. Derivations:
 // docs/notes/construct.md.
 
