@@ -118,8 +118,8 @@ bool fig_8_5(SvgWriter& w) {
     const auto t = tangent_lines(p, k);
     given_circle(w, k, "");
     for (int j = 0; j < t.count; ++j)
-      w.segment(at(t, j).origin - 3.0 * at(t, j).direction, at(t, j).origin + 6.0 * at(t, j).direction,
-                pen(c::red, 1.6));
+      w.segment(at(t, j).origin - 3.0 * at(t, j).direction,
+                at(t, j).origin + 6.0 * at(t, j).direction, pen(c::red, 1.6));
     point(w, p, "P");
     caption_count(w, k.center + Vec2d{-2, -3.5}, "tangents", t.count);
     ok = ok && t.count == want[i];
@@ -262,8 +262,7 @@ bool fig_8_21(SvgWriter& w) { return point_circle(w, {{0, 0}, 3}, {3, 0}, 1.2, t
 
 // 8.22-8.26: tangent to a line and a circle. 8.23: the counts vary; 8.24: r too small;
 // 8.25, 8.26: the loci (parallels at distance r, circles R +- r).
-bool line_circle(SvgWriter& w, const Line2d& l, const Circle2d& k, double r, bool loci,
-                 int want) {
+bool line_circle(SvgWriter& w, const Line2d& l, const Circle2d& k, double r, bool loci, int want) {
   const auto s = circles_of_radius(l, k, r);
   given_line(w, l, "");
   given_circle(w, k, "");

@@ -66,6 +66,7 @@ for _name, _doc in [
     ("ConstrainedDelaunayResult", "constrained_delaunay: dimension, triangles, adjacency, hull, "
                                   "duplicate_of, constrained, rejected."),
     ("TriangulationResult", "triangulate_polygon: triangles (indices into points, CCW)."),
+    ("Construction", "construct: circles (k, 3), lines (m, 4), infinite; apollonius: signs."),
     ("MinCircleResult", "min_circle: center, radius, support."),
     ("MinSphereResult", "min_sphere: center, radius, support."),
     ("MinRectResult", "min_rect: center, axes (rows), extents (half sides), area, perimeter, "
@@ -224,5 +225,6 @@ PYBIND11_MODULE(locus, m) {
   bind_mesh(m);
   bind_intersection3(m);
   bind_intersection2(m);
+  bind_construction(m);
   bind_io(m);
 }

@@ -63,8 +63,8 @@ OracleCount oracle(const Circle2<T> (&c)[3]) {
     if (dup) continue;
     mpf_class u[2], v[2];
     for (int i = 1; i < 3; ++i) {
-      u[i - 1] = r[i] * r[i] - r[0] * r[0] - (x[i] * x[i] + y[i] * y[i]) +
-                 (x[0] * x[0] + y[0] * y[0]);
+      u[i - 1] =
+          r[i] * r[i] - r[0] * r[0] - (x[i] * x[i] + y[i] * y[i]) + (x[0] * x[0] + y[0] * y[0]);
       v[i - 1] = 2 * (s[i] * r[i] - s[0] * r[0]);
     }
     const mpf_class x0 = (u[0] * m11 - m01 * u[1]) / det, y0 = (m00 * u[1] - u[0] * m10) / det;
@@ -114,10 +114,10 @@ ApolloniusSolutions<T> check(const Circle2<T>& a, const Circle2<T>& b, const Cir
     const ApolloniusCircle<T>& k = s.circles.item[static_cast<std::size_t>(i)];
     const double Si = std::max({S, double(max_abs(k.circle.center)), double(k.circle.radius)});
     for (int j = 0; j < 3; ++j) {
-      const mpf_class d = dist(Cond::of(in[j].center), double(k.circle.center.x),
-                               double(k.circle.center.y));
-      const mpf_class want =
-          abs(F(double(k.circle.radius)) + k.s[static_cast<std::size_t>(j)] * F(double(in[j].radius)));
+      const mpf_class d =
+          dist(Cond::of(in[j].center), double(k.circle.center.x), double(k.circle.center.y));
+      const mpf_class want = abs(F(double(k.circle.radius)) +
+                                 k.s[static_cast<std::size_t>(j)] * F(double(in[j].radius)));
       EXPECT_LE(std::abs(mpf_class(d - want).get_d()), 256 * eps<T>() * Si * (1 + Si / S))
           << "circle " << i << " input " << j;
     }
@@ -165,7 +165,9 @@ TYPED_TEST(ConstructApollonius, RandomAgainstOracle) {
 TYPED_TEST(ConstructApollonius, DegenerateCases) {
   using T = TypeParam;
   // Three well-separated circles: eight.
-  EXPECT_EQ(check(Circle2<T>{{0, 0}, 1}, Circle2<T>{{8, 0}, 2}, Circle2<T>{{3, 7}, 1.5}).circles.count, 8);
+  EXPECT_EQ(
+      check(Circle2<T>{{0, 0}, 1}, Circle2<T>{{8, 0}, 2}, Circle2<T>{{3, 7}, 1.5}).circles.count,
+      8);
   // c0 and c1 touch (3 = 1 + 2): the patterns through the contact point collapse (exact tie).
   check(Circle2<T>{{0, 0}, 1}, Circle2<T>{{3, 0}, 2}, Circle2<T>{{0, 5}, 1});
   check(Circle2<T>{{0, 0}, 1}, Circle2<T>{{5, 0}, 4}, Circle2<T>{{1, 6}, 2});
@@ -175,14 +177,16 @@ TYPED_TEST(ConstructApollonius, DegenerateCases) {
     bool found = false;
     for (int i = 0; i < s.lines.count; ++i) {
       const auto& l = s.lines.item[static_cast<std::size_t>(i)].line;
-      found = found || (std::abs(double(l.origin.y)) < 1e-5 && std::abs(double(l.direction.y)) < 1e-5);
+      found =
+          found || (std::abs(double(l.origin.y)) < 1e-5 && std::abs(double(l.direction.y)) < 1e-5);
     }
     EXPECT_TRUE(found);
   }
   // Three equal circles with collinear centres: the two lines y = +-1 and no circle touching
   // all three from outside (the oracle's elimination needs non-collinear centres).
   {
-    const auto s = check(Circle2<T>{{0, 0}, 1}, Circle2<T>{{4, 0}, 1}, Circle2<T>{{10, 0}, 1}, false);
+    const auto s =
+        check(Circle2<T>{{0, 0}, 1}, Circle2<T>{{4, 0}, 1}, Circle2<T>{{10, 0}, 1}, false);
     EXPECT_EQ(s.lines.count, 2);
     for (int i = 0; i < s.circles.count; ++i) {
       const auto& k = s.circles.item[static_cast<std::size_t>(i)];
