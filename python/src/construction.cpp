@@ -3,8 +3,8 @@
 // the same kinds and argument order as `locus construct` (docs/cli.md). Points are x y, lines
 // ox oy dx dy, circles cx cy r. Returns a Construction result: circles (k, 3) [cx, cy, r],
 // lines (m, 4) [ox, oy, dx, dy] (unit direction), infinite, and for apollonius the tangency
-// signs circle_signs (k, 3) and line_signs (m, 3) (empty for the other kinds). Bad input (NaN, a zero direction, a bad
-// radius) raises ValueError with the library's status.
+// signs circle_signs (k, 3) and line_signs (m, 3) (empty for the other kinds). Bad input (NaN, a
+// zero direction, a bad radius) raises ValueError with the library's status.
 #include "common.hpp"
 
 #include <locus/construct/apollonius.hpp>
@@ -66,40 +66,53 @@ struct Kind {
 const std::map<std::string, Kind>& kinds() {
   static const std::map<std::string, Kind> table = {
       {"circle3pts", {6, [](Vd v) { return circles(circle_through(P(v, 0), P(v, 2), P(v, 4))); }}},
-      {"circle3lines", {12, [](Vd v) { return circles(circles_tangent_to(L(v, 0), L(v, 4), L(v, 8))); }}},
+      {"circle3lines",
+       {12, [](Vd v) { return circles(circles_tangent_to(L(v, 0), L(v, 4), L(v, 8))); }}},
       {"tangent-at", {5, [](Vd v) { return lines(tangent_line_at(C(v, 0), P(v, 3))); }}},
       {"tangent-through", {5, [](Vd v) { return lines(tangent_lines(P(v, 0), C(v, 2))); }}},
       {"tangent-2circles", {6, [](Vd v) { return lines(tangent_lines(C(v, 0), C(v, 3))); }}},
-      {"circle-2pts-r", {5, [](Vd v) { return circles(circles_of_radius(P(v, 0), P(v, 2), v[4])); }}},
-      {"circle-pt-line-r", {7, [](Vd v) { return circles(circles_of_radius(P(v, 0), L(v, 2), v[6])); }}},
-      {"circle-2lines-r", {9, [](Vd v) { return circles(circles_of_radius(L(v, 0), L(v, 4), v[8])); }}},
-      {"circle-pt-circle-r", {6, [](Vd v) { return circles(circles_of_radius(P(v, 0), C(v, 2), v[5])); }}},
-      {"circle-line-circle-r", {8, [](Vd v) { return circles(circles_of_radius(L(v, 0), C(v, 4), v[7])); }}},
-      {"circle-2circles-r", {7, [](Vd v) { return circles(circles_of_radius(C(v, 0), C(v, 3), v[6])); }}},
+      {"circle-2pts-r",
+       {5, [](Vd v) { return circles(circles_of_radius(P(v, 0), P(v, 2), v[4])); }}},
+      {"circle-pt-line-r",
+       {7, [](Vd v) { return circles(circles_of_radius(P(v, 0), L(v, 2), v[6])); }}},
+      {"circle-2lines-r",
+       {9, [](Vd v) { return circles(circles_of_radius(L(v, 0), L(v, 4), v[8])); }}},
+      {"circle-pt-circle-r",
+       {6, [](Vd v) { return circles(circles_of_radius(P(v, 0), C(v, 2), v[5])); }}},
+      {"circle-line-circle-r",
+       {8, [](Vd v) { return circles(circles_of_radius(L(v, 0), C(v, 4), v[7])); }}},
+      {"circle-2circles-r",
+       {7, [](Vd v) { return circles(circles_of_radius(C(v, 0), C(v, 3), v[6])); }}},
       {"normal", {6, [](Vd v) { return lines(normal_line(L(v, 0), P(v, 4))); }}},
       {"bisector", {4, [](Vd v) { return lines(perpendicular_bisector(P(v, 0), P(v, 2))); }}},
       {"parallel", {5, [](Vd v) { return lines(parallel_lines(L(v, 0), v[4])); }}},
-      {"parallel-vertical", {5, [](Vd v) { return lines(parallel_lines_vertical(L(v, 0), v[4])); }}},
-      {"parallel-horizontal", {5, [](Vd v) { return lines(parallel_lines_horizontal(L(v, 0), v[4])); }}},
-      {"tangent-normal", {7, [](Vd v) { return lines(tangent_lines_normal_to(C(v, 0), L(v, 3))); }}},
-      {"apollonius", {9, [](Vd v) {
-         const auto s = apollonius(C(v, 0), C(v, 3), C(v, 6));
-         Built b = circles(Solutions<Circle2d, 8>{});
-         b.infinite = s.circles.infinite;
-         b.status = s.circles.status;
-         for (int i = 0; i < s.circles.count; ++i) {
-           const auto& k = s.circles.item[static_cast<std::size_t>(i)];
-           b.circles.insert(b.circles.end(), {k.circle.center.x, k.circle.center.y, k.circle.radius});
-           b.csigns.insert(b.csigns.end(), k.s.begin(), k.s.end());
-         }
-         for (int i = 0; i < s.lines.count; ++i) {
-           const auto& l = s.lines.item[static_cast<std::size_t>(i)];
-           b.lines.insert(b.lines.end(), {l.line.origin.x, l.line.origin.y, l.line.direction.x,
-                                          l.line.direction.y});
-           b.lsigns.insert(b.lsigns.end(), l.s.begin(), l.s.end());
-         }
-         return b;
-       }}},
+      {"parallel-vertical",
+       {5, [](Vd v) { return lines(parallel_lines_vertical(L(v, 0), v[4])); }}},
+      {"parallel-horizontal",
+       {5, [](Vd v) { return lines(parallel_lines_horizontal(L(v, 0), v[4])); }}},
+      {"tangent-normal",
+       {7, [](Vd v) { return lines(tangent_lines_normal_to(C(v, 0), L(v, 3))); }}},
+      {"apollonius",
+       {9,
+        [](Vd v) {
+          const auto s = apollonius(C(v, 0), C(v, 3), C(v, 6));
+          Built b = circles(Solutions<Circle2d, 8>{});
+          b.infinite = s.circles.infinite;
+          b.status = s.circles.status;
+          for (int i = 0; i < s.circles.count; ++i) {
+            const auto& k = s.circles.item[static_cast<std::size_t>(i)];
+            b.circles.insert(b.circles.end(),
+                             {k.circle.center.x, k.circle.center.y, k.circle.radius});
+            b.csigns.insert(b.csigns.end(), k.s.begin(), k.s.end());
+          }
+          for (int i = 0; i < s.lines.count; ++i) {
+            const auto& l = s.lines.item[static_cast<std::size_t>(i)];
+            b.lines.insert(b.lines.end(), {l.line.origin.x, l.line.origin.y, l.line.direction.x,
+                                           l.line.direction.y});
+            b.lsigns.insert(b.lsigns.end(), l.s.begin(), l.s.end());
+          }
+          return b;
+        }}},
   };
   return table;
 }

@@ -9,6 +9,8 @@
 
 namespace locus::python {
 
+void bind_construction(py::module_& m);  // construction.cpp
+
 namespace {
 
 py::handle g_module;  // the module (borrowed: it lives as long as the interpreter), set at import

@@ -151,7 +151,7 @@ TYPED_TEST(ConstructApollonius, RandomAgainstOracle) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int hist[9] = {};
-  for (int it = 0; it < 80 && !this->HasFailure(); ++it) {
+  for (int it = 0; it < 50 && !this->HasFailure(); ++it) {
     const auto circ = [&] {
       return Circle2<T>{rng.vec<T, 2>(T(-4), T(4)), rng.uniform<T>(T(0.1), T(2.5))};
     };

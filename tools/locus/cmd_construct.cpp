@@ -71,42 +71,67 @@ Circle2d C(const std::vector<double>& v, int i) { return {P(v, i), v[std::size_t
 const std::map<std::string, Kind>& kinds() {
   using V = const std::vector<double>&;
   static const std::map<std::string, Kind> table = {
-      {"circle3pts", {"p0 p1 p2", 6, [](V v) { return circles(locus::circle_through(P(v, 0), P(v, 2), P(v, 4))); }}},
-      {"circle3lines", {"l0 l1 l2", 12, [](V v) { return circles(locus::circles_tangent_to(L(v, 0), L(v, 4), L(v, 8))); }}},
-      {"tangent-at", {"circle p", 5, [](V v) { return lines(locus::tangent_line_at(C(v, 0), P(v, 3))); }}},
-      {"tangent-through", {"p circle", 5, [](V v) { return lines(locus::tangent_lines(P(v, 0), C(v, 2))); }}},
-      {"tangent-2circles", {"c0 c1", 6, [](V v) { return lines(locus::tangent_lines(C(v, 0), C(v, 3))); }}},
-      {"circle-2pts-r", {"p q r", 5, [](V v) { return circles(locus::circles_of_radius(P(v, 0), P(v, 2), v[4])); }}},
-      {"circle-pt-line-r", {"p l r", 7, [](V v) { return circles(locus::circles_of_radius(P(v, 0), L(v, 2), v[6])); }}},
-      {"circle-2lines-r", {"l0 l1 r", 9, [](V v) { return circles(locus::circles_of_radius(L(v, 0), L(v, 4), v[8])); }}},
-      {"circle-pt-circle-r", {"p circle r", 6, [](V v) { return circles(locus::circles_of_radius(P(v, 0), C(v, 2), v[5])); }}},
-      {"circle-line-circle-r", {"l circle r", 8, [](V v) { return circles(locus::circles_of_radius(L(v, 0), C(v, 4), v[7])); }}},
-      {"circle-2circles-r", {"c0 c1 r", 7, [](V v) { return circles(locus::circles_of_radius(C(v, 0), C(v, 3), v[6])); }}},
+      {"circle3pts",
+       {"p0 p1 p2", 6,
+        [](V v) { return circles(locus::circle_through(P(v, 0), P(v, 2), P(v, 4))); }}},
+      {"circle3lines",
+       {"l0 l1 l2", 12,
+        [](V v) { return circles(locus::circles_tangent_to(L(v, 0), L(v, 4), L(v, 8))); }}},
+      {"tangent-at",
+       {"circle p", 5, [](V v) { return lines(locus::tangent_line_at(C(v, 0), P(v, 3))); }}},
+      {"tangent-through",
+       {"p circle", 5, [](V v) { return lines(locus::tangent_lines(P(v, 0), C(v, 2))); }}},
+      {"tangent-2circles",
+       {"c0 c1", 6, [](V v) { return lines(locus::tangent_lines(C(v, 0), C(v, 3))); }}},
+      {"circle-2pts-r",
+       {"p q r", 5, [](V v) { return circles(locus::circles_of_radius(P(v, 0), P(v, 2), v[4])); }}},
+      {"circle-pt-line-r",
+       {"p l r", 7, [](V v) { return circles(locus::circles_of_radius(P(v, 0), L(v, 2), v[6])); }}},
+      {"circle-2lines-r",
+       {"l0 l1 r", 9,
+        [](V v) { return circles(locus::circles_of_radius(L(v, 0), L(v, 4), v[8])); }}},
+      {"circle-pt-circle-r",
+       {"p circle r", 6,
+        [](V v) { return circles(locus::circles_of_radius(P(v, 0), C(v, 2), v[5])); }}},
+      {"circle-line-circle-r",
+       {"l circle r", 8,
+        [](V v) { return circles(locus::circles_of_radius(L(v, 0), C(v, 4), v[7])); }}},
+      {"circle-2circles-r",
+       {"c0 c1 r", 7,
+        [](V v) { return circles(locus::circles_of_radius(C(v, 0), C(v, 3), v[6])); }}},
       {"normal", {"l p", 6, [](V v) { return lines(locus::normal_line(L(v, 0), P(v, 4))); }}},
-      {"bisector", {"p q", 4, [](V v) { return lines(locus::perpendicular_bisector(P(v, 0), P(v, 2))); }}},
+      {"bisector",
+       {"p q", 4, [](V v) { return lines(locus::perpendicular_bisector(P(v, 0), P(v, 2))); }}},
       {"parallel", {"l d", 5, [](V v) { return lines(locus::parallel_lines(L(v, 0), v[4])); }}},
-      {"parallel-vertical", {"l d", 5, [](V v) { return lines(locus::parallel_lines_vertical(L(v, 0), v[4])); }}},
-      {"parallel-horizontal", {"l d", 5, [](V v) { return lines(locus::parallel_lines_horizontal(L(v, 0), v[4])); }}},
-      {"tangent-normal", {"circle l", 7, [](V v) { return lines(locus::tangent_lines_normal_to(C(v, 0), L(v, 3))); }}},
-      {"apollonius", {"c0 c1 c2", 9, [](V v) {
-         const auto s = locus::apollonius(C(v, 0), C(v, 3), C(v, 6));
-         Out o{"type,a,b,c,d,s0,s1,s2\n", s.circles.count + s.lines.count, s.circles.infinite,
-               s.circles.status};
-         const auto signs = [](const std::array<int, 3>& x) {
-           return std::to_string(x[0]) + ',' + std::to_string(x[1]) + ',' + std::to_string(x[2]);
-         };
-         for (int i = 0; i < s.circles.count; ++i) {
-           const auto& k = s.circles.item[static_cast<std::size_t>(i)];
-           o.text += "circle," + num(k.circle.center.x) + ',' + num(k.circle.center.y) + ',' +
-                     num(k.circle.radius) + ",," + signs(k.s) + '\n';
-         }
-         for (int i = 0; i < s.lines.count; ++i) {
-           const auto& l = s.lines.item[static_cast<std::size_t>(i)];
-           o.text += "line," + num(l.line.origin.x) + ',' + num(l.line.origin.y) + ',' +
-                     num(l.line.direction.x) + ',' + num(l.line.direction.y) + ',' + signs(l.s) + '\n';
-         }
-         return o;
-       }}},
+      {"parallel-vertical",
+       {"l d", 5, [](V v) { return lines(locus::parallel_lines_vertical(L(v, 0), v[4])); }}},
+      {"parallel-horizontal",
+       {"l d", 5, [](V v) { return lines(locus::parallel_lines_horizontal(L(v, 0), v[4])); }}},
+      {"tangent-normal",
+       {"circle l", 7,
+        [](V v) { return lines(locus::tangent_lines_normal_to(C(v, 0), L(v, 3))); }}},
+      {"apollonius",
+       {"c0 c1 c2", 9,
+        [](V v) {
+          const auto s = locus::apollonius(C(v, 0), C(v, 3), C(v, 6));
+          Out o{"type,a,b,c,d,s0,s1,s2\n", s.circles.count + s.lines.count, s.circles.infinite,
+                s.circles.status};
+          const auto signs = [](const std::array<int, 3>& x) {
+            return std::to_string(x[0]) + ',' + std::to_string(x[1]) + ',' + std::to_string(x[2]);
+          };
+          for (int i = 0; i < s.circles.count; ++i) {
+            const auto& k = s.circles.item[static_cast<std::size_t>(i)];
+            o.text += "circle," + num(k.circle.center.x) + ',' + num(k.circle.center.y) + ',' +
+                      num(k.circle.radius) + ",," + signs(k.s) + '\n';
+          }
+          for (int i = 0; i < s.lines.count; ++i) {
+            const auto& l = s.lines.item[static_cast<std::size_t>(i)];
+            o.text += "line," + num(l.line.origin.x) + ',' + num(l.line.origin.y) + ',' +
+                      num(l.line.direction.x) + ',' + num(l.line.direction.y) + ',' + signs(l.s) +
+                      '\n';
+          }
+          return o;
+        }}},
   };
   return table;
 }
@@ -116,12 +141,15 @@ void run_construct(const ConstructOptions& o) {
   if (it == kinds().end()) throw UsageError("construct: unknown kind '" + o.kind + "'");
   const Kind& k = it->second;
   if (static_cast<int>(o.v.size()) != k.n)
-    throw UsageError("construct " + o.kind + ": expects " + std::to_string(k.n) +
-                     " numbers (" + k.args + "), got " + std::to_string(o.v.size()));
+    throw UsageError("construct " + o.kind + ": expects " + std::to_string(k.n) + " numbers (" +
+                     k.args + "), got " + std::to_string(o.v.size()));
   const Out r = k.run(o.v);
   require_ok(r.status, "construct " + o.kind);
   JsonObject j;
-  j.str("command", "construct").str("kind", o.kind).integer("count", r.count).boolean("infinite", r.infinite);
+  j.str("command", "construct")
+      .str("kind", o.kind)
+      .integer("count", r.count)
+      .boolean("infinite", r.infinite);
   emit(o.c, r.text, j);
 }
 

@@ -39,7 +39,7 @@ struct Solutions {
   int count = 0;          ///< number of valid entries of item
   std::array<X, Capacity> item{};
 
-  /// Appends x (programming error past capacity: the constructions are sized for their maximum).
+  /// Appends x; ignored past capacity (never reached: each construction is sized for its maximum).
   constexpr void push(const X& x) noexcept {
     if (count < Capacity) item[static_cast<std::size_t>(count++)] = x;
   }
