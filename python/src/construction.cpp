@@ -7,6 +7,8 @@
 // zero direction, a bad radius) raises ValueError with the library's status.
 #include "common.hpp"
 
+#include <pybind11/stl.h>
+
 #include <locus/construct/apollonius.hpp>
 #include <locus/construct/circle_through.hpp>
 #include <locus/construct/circles_of_radius.hpp>
@@ -14,6 +16,7 @@
 #include <locus/construct/tangent_lines.hpp>
 
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,6 +34,15 @@ struct Built {
   Status status = Status::ok;
 };
 
+// push_back one by one: GCC 12 -O3 misreports -Wstringop-overflow on vector::insert of a list.
+template <class X, class R>
+void add(std::vector<X>& v, const R& values) {
+  for (const auto x : values) v.push_back(x);
+}
+void add(std::vector<double>& v, std::initializer_list<double> values) {
+  for (const double x : values) v.push_back(x);
+}
+
 template <class S>
 Built circles(const S& s) {
   Built b;
@@ -38,7 +50,7 @@ Built circles(const S& s) {
   b.status = s.status;
   for (int i = 0; i < s.count; ++i) {
     const Circle2d& k = s.item[static_cast<std::size_t>(i)];
-    b.circles.insert(b.circles.end(), {k.center.x, k.center.y, k.radius});
+    add(b.circles, {k.center.x, k.center.y, k.radius});
   }
   return b;
 }
@@ -49,7 +61,7 @@ Built lines(const S& s) {
   b.status = s.status;
   for (int i = 0; i < s.count; ++i) {
     const Line2d& l = s.item[static_cast<std::size_t>(i)];
-    b.lines.insert(b.lines.end(), {l.origin.x, l.origin.y, l.direction.x, l.direction.y});
+    add(b.lines, {l.origin.x, l.origin.y, l.direction.x, l.direction.y});
   }
   return b;
 }
@@ -101,15 +113,14 @@ const std::map<std::string, Kind>& kinds() {
           b.status = s.circles.status;
           for (int i = 0; i < s.circles.count; ++i) {
             const auto& k = s.circles.item[static_cast<std::size_t>(i)];
-            b.circles.insert(b.circles.end(),
-                             {k.circle.center.x, k.circle.center.y, k.circle.radius});
-            b.csigns.insert(b.csigns.end(), k.s.begin(), k.s.end());
+            add(b.circles, {k.circle.center.x, k.circle.center.y, k.circle.radius});
+            add(b.csigns, k.s);
           }
           for (int i = 0; i < s.lines.count; ++i) {
             const auto& l = s.lines.item[static_cast<std::size_t>(i)];
-            b.lines.insert(b.lines.end(), {l.line.origin.x, l.line.origin.y, l.line.direction.x,
-                                           l.line.direction.y});
-            b.lsigns.insert(b.lsigns.end(), l.s.begin(), l.s.end());
+            add(b.lines,
+                {l.line.origin.x, l.line.origin.y, l.line.direction.x, l.line.direction.y});
+            add(b.lsigns, l.s);
           }
           return b;
         }}},
