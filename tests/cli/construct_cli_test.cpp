@@ -32,10 +32,12 @@ struct Outcome {
 };
 
 Outcome run(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / ("locus_construct_cli_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("locus_construct_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
-  const std::string cmd = std::string("'") + LOCUS_CLI_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const std::string cmd =
+      std::string("'") + LOCUS_CLI_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
   const int s = std::system(cmd.c_str());
   Outcome r{WIFEXITED(s) ? WEXITSTATUS(s) : -1, locus_test::slurp(out), locus_test::slurp(err)};
   fs::remove_all(dir);
@@ -68,12 +70,13 @@ TEST(CliConstruct, MatchesTheLibrary) {
   ASSERT_EQ(static_cast<int>(rows.size()), lines.count);
   for (int i = 0; i < lines.count; ++i) {
     const auto& l = lines.item[static_cast<std::size_t>(i)];
-    EXPECT_EQ(rows[std::size_t(i)], (std::vector<double>{l.origin.x, l.origin.y, l.direction.x,
-                                                         l.direction.y}));
+    EXPECT_EQ(rows[std::size_t(i)],
+              (std::vector<double>{l.origin.x, l.origin.y, l.direction.x, l.direction.y}));
   }
   const Outcome c = run("construct circle-pt-circle-r -- -1 4 1 1 1 3");
   ASSERT_EQ(c.code, 0) << c.err;
-  const auto circles = locus::circles_of_radius(locus::Vec2d{-1, 4}, locus::Circle2d{{1, 1}, 1}, 3.0);
+  const auto circles =
+      locus::circles_of_radius(locus::Vec2d{-1, 4}, locus::Circle2d{{1, 1}, 1}, 3.0);
   const auto crow = csv_rows(c.out);
   ASSERT_EQ(static_cast<int>(crow.size()), circles.count);
   for (int i = 0; i < circles.count; ++i) {
