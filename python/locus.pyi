@@ -299,3 +299,11 @@ def plane_plane_angles(
 def project_points_to_plane(
     points: _Points, normal: npt.ArrayLike, constant: float
 ) -> npt.NDArray[np.float64]: ...
+class Construction(Result):
+    circles: _Floats
+    lines: _Floats
+    infinite: bool
+    circle_signs: npt.NDArray[np.int32]
+    line_signs: npt.NDArray[np.int32]
+
+def construct(kind: str, args: list[float]) -> Construction: ...

@@ -6,6 +6,7 @@
 
 #include <locus/bounding.hpp>
 #include <locus/config.hpp>
+#include <locus/construct.hpp>
 #include <locus/containment.hpp>
 #include <locus/core.hpp>
 #include <locus/curves.hpp>

@@ -10,6 +10,7 @@
 namespace locus::python {
 
 void bind_sat2(py::module_& m);  // python/src/sat2.cpp
+void bind_construction(py::module_& m);  // construction.cpp
 
 namespace {
 
@@ -68,6 +69,7 @@ for _name, _doc in [
     ("ConstrainedDelaunayResult", "constrained_delaunay: dimension, triangles, adjacency, hull, "
                                   "duplicate_of, constrained, rejected."),
     ("TriangulationResult", "triangulate_polygon: triangles (indices into points, CCW)."),
+    ("Construction", "construct: circles (k, 3), lines (m, 4), infinite; apollonius: signs."),
     ("MinCircleResult", "min_circle: center, radius, support."),
     ("MinSphereResult", "min_sphere: center, radius, support."),
     ("MinRectResult", "min_rect: center, axes (rows), extents (half sides), area, perimeter, "
@@ -228,6 +230,7 @@ PYBIND11_MODULE(locus, m) {
   bind_mesh(m);
   bind_intersection3(m);
   bind_intersection2(m);
+  bind_construction(m);
   bind_io(m);
   bind_misc3(m);
   bind_sat2(m);
