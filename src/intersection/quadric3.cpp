@@ -162,8 +162,8 @@ int cylinder_disc(const Lin& l, const V& c, const V& a, double r) noexcept {
   P trip, axd2;
   for (int i = 0; i < 3; ++i) {
     // d x w: line (d x o - d x c); segment (p1 x p0 - p1 x c + p0 x c).
-    const P dxw = l.hi ? cr(l.q, l.o, i) - cr(l.q, c, i) + cr(l.o, c, i)
-                       : cr(l.d, l.o, i) - cr(l.d, c, i);
+    const P dxw =
+        l.hi ? cr(l.q, l.o, i) - cr(l.q, c, i) + cr(l.o, c, i) : cr(l.d, l.o, i) - cr(l.d, c, i);
     trip += P::var(a[i]) * dxw;
     const P axd = l.hi ? cr(a, l.q, i) - cr(a, l.o, i) : cr(a, l.d, i);
     axd2 += axd * axd;
@@ -477,9 +477,9 @@ bool cylinder_piece(const Lin& l, const V& c, const V& a, double r, Iv& out) noe
   Signs s = signs_of(l, h, false);
   s.disc = cylinder_disc(l, c, a, r);
   Iv pieces[2];
-  const int n = nonpositive_pieces(s, [] { return 0.0; },
-                                   [&](bool tangent) { return cylinder_roots(c, a, r, l, tangent); },
-                                   pieces);
+  const int n = nonpositive_pieces(
+      s, [] { return 0.0; }, [&](bool tangent) { return cylinder_roots(c, a, r, l, tangent); },
+      pieces);
   if (n == 0) return false;
   out = pieces[0];
   return true;
@@ -525,13 +525,15 @@ R hits(const Lin& l, const QuadricD& q) noexcept {
   const QuadricH h{q};
   if (zero_dir(l)) return point_case(l, h(HP{l.o, 1}, HP{l.o, 1}).sign(), info);
   const Signs sg = signs_of(l, h);
-  return emit(l, pick(l, sg, [&](bool t) {
-                if (sg.a == 0) {
-                  const QCoef c = quadric_coef(q, l.o, l.d);
-                  return Roots{-c.c / c.b, -c.c / c.b};
-                }
-                return quadric_roots(q, l, t);
-              }),
+  return emit(l,
+              pick(l, sg,
+                   [&](bool t) {
+                     if (sg.a == 0) {
+                       const QCoef c = quadric_coef(q, l.o, l.d);
+                       return Roots{-c.c / c.b, -c.c / c.b};
+                     }
+                     return quadric_roots(q, l, t);
+                   }),
               info);
 }
 
@@ -593,8 +595,7 @@ R hits(const Lin& l, const CylinderD& c) noexcept {
     // A point: on the surface when on the closed solid and on the side or a cap plane.
     const int side = CylinderH{c.c, c.a, c.r}(HP{l.o, 1}, HP{l.o, 1}).sign();
     const double hh = dot(u, l.o - c.c);
-    if (side > 0 || std::fabs(hh) > 0.5 * c.h || (side < 0 && std::fabs(hh) < 0.5 * c.h))
-      return {};
+    if (side > 0 || std::fabs(hh) > 0.5 * c.h || (side < 0 && std::fabs(hh) < 0.5 * c.h)) return {};
     Iv one[1] = {{0.0, 0.0, side == 0 ? lateral : (hh < 0.0 ? cap_lo : cap_hi), lateral}};
     R r = emit_intervals(l, one, 1, info);
     r.multiplicity[0] = 1;
@@ -653,8 +654,8 @@ R hits(const Lin& l, const ConeD& c) noexcept {
       const QCoef k = quadric_coef(q, m.o, m.d);
       return -k.c / k.b;
     };
-    np = nonpositive_pieces(sg, lin_root,
-                            [&](bool t) { return quadric_roots(q, m, t); }, pieces);
+    np = nonpositive_pieces(
+        sg, lin_root, [&](bool t) { return quadric_roots(q, m, t); }, pieces);
   }
   Iv iv[4];
   int n = 0;

@@ -206,12 +206,15 @@ template <class T, class C>
 void sphere_case(const C& comp, const Sphere3<T>& s) {
   const Sphere3d sd{vec_cast<double>(s.center), double(s.radius)};
   const auto r = intersection(comp, s);
-  const Oracle o = oracle(sphere_fun(sd), qo(comp), qd(comp), is_lo<C>, std::is_same_v<C, Segment3<T>>);
+  const Oracle o =
+      oracle(sphere_fun(sd), qo(comp), qd(comp), is_lo<C>, std::is_same_v<C, Segment3<T>>);
   expect_matches<T>(r, o, 16.0);
   for (int i = 0; i < r.count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const double dist = length(vec_cast<double>(r.point[k]) - sd.center);
-    const double tol = (r.multiplicity[k] == 2 ? 4.0 * std::sqrt(double(eps_v<T>)) : 64.0 * double(eps_v<T>)) * 16.0;
+    const double tol =
+        (r.multiplicity[k] == 2 ? 4.0 * std::sqrt(double(eps_v<T>)) : 64.0 * double(eps_v<T>)) *
+        16.0;
     EXPECT_NEAR(dist, sd.radius, tol);
     EXPECT_NEAR(dot(vec_cast<double>(r.normal[k]), vec_cast<double>(r.point[k]) - sd.center),
                 sd.radius, tol);
@@ -297,15 +300,17 @@ TYPED_TEST(Quadric3Hits, ScalingSwapReverse) {
     const auto r = intersection(sg, s);
     for (int k : {-20, 3, 30}) {
       const T f = std::ldexp(T(1), k);
-      const auto rs = intersection(Segment3<T>{sg.p0 * f, sg.p1 * f}, Sphere3<T>{s.center * f, s.radius * f});
+      const auto rs =
+          intersection(Segment3<T>{sg.p0 * f, sg.p1 * f}, Sphere3<T>{s.center * f, s.radius * f});
       ASSERT_EQ(rs.count, r.count);
-      for (int i = 0; i < r.count; ++i) EXPECT_EQ(rs.param_a[std::size_t(i)], r.param_a[std::size_t(i)]);
+      for (int i = 0; i < r.count; ++i)
+        EXPECT_EQ(rs.param_a[std::size_t(i)], r.param_a[std::size_t(i)]);
     }
     const auto rr = intersection(Segment3<T>{sg.p1, sg.p0}, s);
     ASSERT_EQ(rr.count, r.count);
     for (int i = 0; i < r.count; ++i)
-      EXPECT_NEAR(double(rr.param_a[std::size_t(r.count - 1 - i)]), 1.0 - double(r.param_a[std::size_t(i)]),
-                  1e3 * double(eps_v<T>));
+      EXPECT_NEAR(double(rr.param_a[std::size_t(r.count - 1 - i)]),
+                  1.0 - double(r.param_a[std::size_t(i)]), 1e3 * double(eps_v<T>));
   }
 }
 
@@ -318,8 +323,9 @@ void quadric_case(const C& comp, const Quadric3<T>& q) {
   qd64.b = vec_cast<double>(q.b);
   qd64.c = double(q.c);
   const auto r = intersection(comp, q);
-  expect_matches<T>(r, oracle(quadric_fun(qd64), qo(comp), qd(comp), is_lo<C>, std::is_same_v<C, Segment3<T>>),
-                    64.0);
+  expect_matches<T>(
+      r, oracle(quadric_fun(qd64), qo(comp), qd(comp), is_lo<C>, std::is_same_v<C, Segment3<T>>),
+      64.0);
 }
 
 TYPED_TEST(Quadric3Hits, QuadricAgainstExactOracle) {
@@ -355,13 +361,15 @@ TYPED_TEST(Quadric3Hits, InfiniteCylinderAgainstExactOracle) {
     const Cylinder3<T> c{{rv<T>(rng, -2, 2), rv<T>(rng, -1, 1)}, ri<T>(rng, 1, 3), inf};
     if (c.axis.direction == Vec3<T>{}) continue;
     const Cylinder3d cd{{vec_cast<double>(c.axis.origin), vec_cast<double>(c.axis.direction)},
-                        double(c.radius), double(c.height)};
+                        double(c.radius),
+                        double(c.height)};
     const Vec3<T> o = rv<T>(rng, -4, 4), d = rv<T>(rng, -1, 1), p1 = rv<T>(rng, -4, 4);
     const auto chk = [&](const auto& comp) {
       using C = std::decay_t<decltype(comp)>;
       const auto r = intersection(comp, c);
-      expect_matches<T>(r, oracle(cylinder_fun(cd), qo(comp), qd(comp), is_lo<C>, std::is_same_v<C, Segment3<T>>),
-                        64.0);
+      expect_matches<T>(
+          r, oracle(cylinder_fun(cd), qo(comp), qd(comp), is_lo<C>, std::is_same_v<C, Segment3<T>>),
+          64.0);
     };
     chk(Line3<T>{o, d});
     chk(Ray3<T>{o, d});
@@ -392,23 +400,32 @@ TYPED_TEST(Quadric3Hits, FiniteSolidsAgainstScan) {
     const Vec3<T> axis = normalize(rng.template vec<T, 3>(T(-1), T(1)));
     const Vec3<T> ctr = rng.template vec<T, 3>(T(-1), T(1));
     const Cylinder3<T> cyl{{ctr, axis}, rng.uniform(T(0.5), T(1.5)), rng.uniform(T(1), T(3))};
-    const Cone3<T> cone{ctr, axis, rng.uniform(T(0.3), T(1.2)), rng.uniform(T(-2), T(0.5)), rng.uniform(T(0.6), T(2.5))};
-    const Capsule3<T> cap{{ctr, ctr + rng.template vec<T, 3>(T(-2), T(2))}, rng.uniform(T(0.3), T(1.2))};
-    const Segment3<T> sg{rng.template vec<T, 3>(T(-4), T(4)), rng.template vec<T, 3>(T(-4), T(4))};
-    const auto at = [&](double t) { return vec_cast<double>(sg.p0) + t * (vec_cast<double>(sg.p1) - vec_cast<double>(sg.p0)); };
+    const Cone3<T> cone{ctr, axis, rng.uniform(T(0.3), T(1.2)), rng.uniform(T(-2), T(0.5)),
+                        rng.uniform(T(0.6), T(2.5))};
+    const Capsule3<T> cap{{ctr, ctr + rng.template vec<T, 3>(T(-2), T(2))},
+                          rng.uniform(T(0.3), T(1.2))};
+    // Segments across the solids' neighbourhood (most of them hit).
+    const Vec3<T> p0 = rng.template vec<T, 3>(T(-4), T(4));
+    const Segment3<T> sg{p0, ctr + (ctr - p0) + rng.template vec<T, 3>(T(-1.5), T(1.5))};
+    const auto at = [&](double t) {
+      return vec_cast<double>(sg.p0) + t * (vec_cast<double>(sg.p1) - vec_cast<double>(sg.p0));
+    };
     const auto in_cyl = [&](double t) {
       const Vec3<double> w = at(t) - vec_cast<double>(ctr);
       const double h = dot(w, vec_cast<double>(axis));
-      return std::fabs(h) <= 0.5 * double(cyl.height) && sqr_length(w) - h * h <= sqr(double(cyl.radius));
+      return std::fabs(h) <= 0.5 * double(cyl.height) &&
+             sqr_length(w) - h * h <= sqr(double(cyl.radius));
     };
     const auto in_cone = [&](double t) {
       const Vec3<double> w = at(t) - vec_cast<double>(ctr);
       const double h = dot(w, vec_cast<double>(axis));
       return h >= double(cone.min_height) && h <= double(cone.max_height) &&
-             std::sqrt(std::max(sqr_length(w) - h * h, 0.0)) <= std::fabs(h) * std::tan(double(cone.angle));
+             std::sqrt(std::max(sqr_length(w) - h * h, 0.0)) <=
+                 std::fabs(h) * std::tan(double(cone.angle));
     };
     const auto in_cap = [&](double t) {
-      const Vec3<double> p = at(t), a = vec_cast<double>(cap.segment.p0), b = vec_cast<double>(cap.segment.p1);
+      const Vec3<double> p = at(t), a = vec_cast<double>(cap.segment.p0),
+                         b = vec_cast<double>(cap.segment.p1);
       const double s = std::clamp(dot(p - a, b - a) / sqr_length(b - a), 0.0, 1.0);
       return length(p - (a + s * (b - a))) <= double(cap.radius);
     };
@@ -435,11 +452,13 @@ TYPED_TEST(Quadric3Hits, FiniteSolidsAgainstScan) {
         const double h = dot(w, vec_cast<double>(axis));
         const double rad = std::sqrt(std::max(sqr_length(w) - h * h, 0.0));
         const double tolr = 64.0 * double(eps_v<T>) * 8.0;
-        EXPECT_TRUE(std::fabs(rad - double(cyl.radius)) <= tolr || std::fabs(std::fabs(h) - 0.5 * double(cyl.height)) <= tolr) << t;
+        EXPECT_TRUE(std::fabs(rad - double(cyl.radius)) <= tolr ||
+                    std::fabs(std::fabs(h) - 0.5 * double(cyl.height)) <= tolr)
+            << t;
       }
   }
   EXPECT_GT(compared, tried / 2);
-  EXPECT_GT(nonzero, compared / 4);
+  EXPECT_GT(nonzero, compared / 2);
 }
 
 TYPED_TEST(Quadric3Hits, FiguresCylinderConeCapsule) {
@@ -489,8 +508,10 @@ TYPED_TEST(Quadric3Hits, EllipsoidPointsOnSurface) {
   for (int n = 0; n < 80; ++n) {
     const Vec3<T> u0 = normalize(rng.template vec<T, 3>(T(-1), T(1)));
     const Vec3<T> u1 = normalize(cross(u0, rng.template vec<T, 3>(T(-1), T(1))));
-    const Ellipsoid3<T> e{rng.template vec<T, 3>(T(-1), T(1)), {u0, u1, cross(u0, u1)},
-                          {rng.uniform(T(0.5), T(2)), rng.uniform(T(0.5), T(2)), rng.uniform(T(0.5), T(2))}};
+    const Ellipsoid3<T> e{
+        rng.template vec<T, 3>(T(-1), T(1)),
+        {u0, u1, cross(u0, u1)},
+        {rng.uniform(T(0.5), T(2)), rng.uniform(T(0.5), T(2)), rng.uniform(T(0.5), T(2))}};
     const Line3<T> l{rng.template vec<T, 3>(T(-3), T(3)), rng.template vec<T, 3>(T(-1), T(1))};
     const auto r = intersection(l, e);
     for (int i = 0; i < r.count; ++i) {
@@ -507,20 +528,34 @@ TYPED_TEST(Quadric3Hits, DegenerateInput) {
   const T nan = std::numeric_limits<T>::quiet_NaN();
   const Sphere3<T> s{{T(0), T(0), T(0)}, T(1)};
   EXPECT_EQ(intersection(Line3<T>{{nan, T(0), T(0)}, {T(1), T(0), T(0)}}, s).kind, Kind::empty);
-  EXPECT_EQ(intersection(Line3<T>{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}}, Sphere3<T>{{T(0), T(0), T(0)}, T(-1)}).kind, Kind::empty);
+  EXPECT_EQ(intersection(Line3<T>{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}},
+                         Sphere3<T>{{T(0), T(0), T(0)}, T(-1)})
+                .kind,
+            Kind::empty);
   // A zero direction on the sphere: one point.
   EXPECT_EQ(intersection(Segment3<T>{{T(1), T(0), T(0)}, {T(1), T(0), T(0)}}, s).count, 1);
   EXPECT_EQ(intersection(Segment3<T>{{T(0.5), T(0), T(0)}, {T(0.5), T(0), T(0)}}, s).count, 0);
   // Radius zero: a line through the centre is tangent.
-  const auto z = intersection(Line3<T>{{T(-1), T(0), T(0)}, {T(1), T(0), T(0)}}, Sphere3<T>{{T(0), T(0), T(0)}, T(0)});
+  const auto z = intersection(Line3<T>{{T(-1), T(0), T(0)}, {T(1), T(0), T(0)}},
+                              Sphere3<T>{{T(0), T(0), T(0)}, T(0)});
   ASSERT_EQ(z.count, 1);
   EXPECT_EQ(z.multiplicity[0], 2);
   const T inf = std::numeric_limits<T>::infinity();
-  EXPECT_EQ(intersection(Ray3<T>{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}}, Cylinder3<T>{{{inf, T(0), T(0)}, {T(0), T(0), T(1)}}, T(1), T(2)}).kind, Kind::empty);
-  EXPECT_EQ(intersection(Ray3<T>{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}}, Cone3<T>{{T(0), T(0), T(0)}, {T(0), T(0), T(1)}, nan, T(0), T(1)}).kind, Kind::empty);
-  EXPECT_EQ(intersection(Ray3<T>{{T(0), T(0), T(0)}, {nan, T(0), T(0)}}, Capsule3<T>{{{T(0), T(0), T(0)}, {T(0), T(0), T(1)}}, T(1)}).kind, Kind::empty);
+  EXPECT_EQ(intersection(Ray3<T>{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}},
+                         Cylinder3<T>{{{inf, T(0), T(0)}, {T(0), T(0), T(1)}}, T(1), T(2)})
+                .kind,
+            Kind::empty);
+  EXPECT_EQ(intersection(Ray3<T>{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}},
+                         Cone3<T>{{T(0), T(0), T(0)}, {T(0), T(0), T(1)}, nan, T(0), T(1)})
+                .kind,
+            Kind::empty);
+  EXPECT_EQ(intersection(Ray3<T>{{T(0), T(0), T(0)}, {nan, T(0), T(0)}},
+                         Capsule3<T>{{{T(0), T(0), T(0)}, {T(0), T(0), T(1)}}, T(1)})
+                .kind,
+            Kind::empty);
   // A line on an infinite cylinder's surface.
-  const auto on = intersection(Line3<T>{{T(1), T(0), T(0)}, {T(0), T(0), T(3)}}, Cylinder3<T>{{{T(0), T(0), T(0)}, {T(0), T(0), T(1)}}, T(1), inf});
+  const auto on = intersection(Line3<T>{{T(1), T(0), T(0)}, {T(0), T(0), T(3)}},
+                               Cylinder3<T>{{{T(0), T(0), T(0)}, {T(0), T(0), T(1)}}, T(1), inf});
   EXPECT_EQ(on.kind, Kind::line);
 }
 

@@ -19,8 +19,8 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/quadric3.hpp>
-#include <locus/primitives/ray.hpp>
 #include <locus/primitives/ellipsoid.hpp>
+#include <locus/primitives/ray.hpp>
 
 namespace locus {
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Intersection of a ray and a general quadric X^T A X + b.X + c = 0 (10 coefficients) in 3D: intersects() and intersection() (find);
-// row int3.linear-quadric, book section 11.3 (section 11.3.1).
-// Parameters: Ray3 t >= 0; param_b = (0, 0) (a general quadric has no point_at).
+// Intersection of a ray and a general quadric X^T A X + b.X + c = 0 (10 coefficients) in 3D:
+// intersects() and intersection() (find); row int3.linear-quadric, book section 11.3
+// (section 11.3.1). Parameters: Ray3 t >= 0; param_b = (0, 0) (a general quadric has no point_at).
 // Result (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty; point or
 // points (by increasing param_a), each with the outward unit normal and its multiplicity (2 at a
 // tangency); kind ray (count 2, params 0 and 1) when the ray lies on the surface.
@@ -20,8 +20,8 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/quadric3.hpp>
-#include <locus/primitives/ray.hpp>
 #include <locus/primitives/quadric.hpp>
+#include <locus/primitives/ray.hpp>
 
 namespace locus {
 

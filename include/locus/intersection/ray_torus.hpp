@@ -2,14 +2,13 @@
 #pragma once
 // Intersection of a ray and a torus in 3D: intersects() and intersection() (find);
 // row int3.torus, book section 11.3.5 (figures 11.74-11.77).
-// Parameters: Ray3 t >= 0; param_b = (u, v) of torus.hpp's point_at: u the angle about the axis, v about the tube.
-// Result (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty; point or
-// points (by increasing param_a), each with the outward unit normal and its multiplicity (2 at a
-// tangency); kind ray (count 2, params 0 and 1) when the ray lies on the surface.
-// Method: in a frame at the
-// centre scaled by a power of two to R + r = O(1), the quartic (|X|^2 + R^2 - r^2)^2 -
-// 4 R^2 |X x n|^2 along the line is solved by numeric/roots.hpp's solve_quartic (near mode)
-// with the coefficients' rounding bounds as coefficient_error, so a near-tangent line gives a
+// Parameters: Ray3 t >= 0; param_b = (u, v) of torus.hpp's point_at: u the angle about the axis, v
+// about the tube. Result (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty;
+// point or points (by increasing param_a), each with the outward unit normal and its multiplicity
+// (2 at a tangency); kind ray (count 2, params 0 and 1) when the ray lies on the surface. Method:
+// in a frame at the centre scaled by a power of two to R + r = O(1), the quartic (|X|^2 + R^2 -
+// r^2)^2 - 4 R^2 |X x n|^2 along the line is solved by numeric/roots.hpp's solve_quartic (near
+// mode) with the coefficients' rounding bounds as coefficient_error, so a near-tangent line gives a
 // double root (multiplicity 2) within that bound rather than two spurious points; simple roots
 // are polished by Newton steps on the geometric value. Not exact: tangency and the ends of a
 // ray/segment are decided within ~16 eps relative to the scale (documented bound).

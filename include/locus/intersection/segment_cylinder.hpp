@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Intersection of a segment and a right circular cylinder, finite (caps included) or infinite in 3D: intersects() and intersection() (find);
-// row int3.linear-quadric, book section 11.3 (figures 11.11, 11.12).
-// Parameters: Segment3 t in [0, 1] (p0 + t (p1 - p0)); param_b = (theta, height) of cylinder.hpp's point_at (a cap point: its angle and +-h/2).
-// Result (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty; point or
-// points (by increasing param_a), each with the outward unit normal and its multiplicity (2 at a
-// tangency); kind segment (count 2, params 0 and 1) when the segment lies on the surface.
-// Exact decisions: the
+// Intersection of a segment and a right circular cylinder, finite (caps included) or infinite in
+// 3D: intersects() and intersection() (find); row int3.linear-quadric, book section 11.3
+// (figures 11.11, 11.12). Parameters: Segment3 t in [0, 1] (p0 + t (p1 - p0)); param_b = (theta,
+// height) of cylinder.hpp's point_at (a cap point: its angle and +-h/2). Result
+// (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty; point or points (by
+// increasing param_a), each with the outward unit normal and its multiplicity (2 at a tangency);
+// kind segment (count 2, params 0 and 1) when the segment lies on the surface. Exact decisions: the
 // lateral surface |a x (X - C)|^2 = r^2 |a|^2 is decided exactly (discriminant r^2 |a x d|^2 -
 // [a, d, o - C]^2, ends of a ray/segment, a direction along the axis): exact for the infinite
 // cylinder as given. A finite cylinder is the closed solid: the hits are the ends of the
@@ -20,8 +20,8 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/quadric3.hpp>
-#include <locus/primitives/segment.hpp>
 #include <locus/primitives/cylinder.hpp>
+#include <locus/primitives/segment.hpp>
 
 namespace locus {
 

@@ -2,9 +2,9 @@
 #pragma once
 // Intersection of a segment and an ellipsoid in 3D: intersects() and intersection() (find);
 // row int3.linear-quadric, book section 11.3 (figure 11.9 (a sphere is an ellipsoid)).
-// Parameters: Segment3 t in [0, 1] (p0 + t (p1 - p0)); param_b = (theta, phi) of ellipsoid.hpp's point_at.
-// Result (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty; point or
-// points (by increasing param_a), each with the outward unit normal and its multiplicity (2 at a
+// Parameters: Segment3 t in [0, 1] (p0 + t (p1 - p0)); param_b = (theta, phi) of ellipsoid.hpp's
+// point_at. Result (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty; point
+// or points (by increasing param_a), each with the outward unit normal and its multiplicity (2 at a
 // tangency); kind segment (count 2, params 0 and 1) when the segment lies on the surface.
 // Decisions: the implicit
 // matrix sum u_i u_i^T / e_i^2 and the component moved by -C are rounded once (a few eps
@@ -19,8 +19,8 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/quadric3.hpp>
-#include <locus/primitives/segment.hpp>
 #include <locus/primitives/ellipsoid.hpp>
+#include <locus/primitives/segment.hpp>
 
 namespace locus {
 

@@ -2,9 +2,9 @@
 #pragma once
 // Intersection of a segment and a sphere in 3D: intersects() and intersection() (find);
 // row int3.linear-quadric, book section 11.3 (figures 11.9, 11.10).
-// Parameters: Segment3 t in [0, 1] (p0 + t (p1 - p0)); param_b = (theta, phi) of sphere.hpp's point_at.
-// Result (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty; point or
-// points (by increasing param_a), each with the outward unit normal and its multiplicity (2 at a
+// Parameters: Segment3 t in [0, 1] (p0 + t (p1 - p0)); param_b = (theta, phi) of sphere.hpp's
+// point_at. Result (LinearSurfaceIntersection3<T>, intersection/detail/quadric3.hpp): empty; point
+// or points (by increasing param_a), each with the outward unit normal and its multiplicity (2 at a
 // tangency); kind segment (count 2, params 0 and 1) when the segment lies on the surface.
 // Exact decisions: with the
 // component as a bilinear form (docs/notes/intersection3.md) the count, tangency (multiplicity

@@ -29,7 +29,7 @@ namespace locus {
 /// component lies on the surface the kind is line, ray or segment (count 2: two of its points).
 template <Real T, class PA, class PB>
 struct SurfaceHits3 : Intersection<T, 3, PA, PB, 4> {
-  std::array<Vec3<T>, 4> normal{};      ///< outward unit normal at point[i] (zero if undefined)
+  std::array<Vec3<T>, 4> normal{};    ///< outward unit normal at point[i] (zero if undefined)
   std::array<int, 4> multiplicity{};  ///< 1 at a crossing, 2 at a tangency (or more: torus)
 };
 
