@@ -115,8 +115,7 @@ TYPED_TEST(TorusHits, Figures) {
   using T = TypeParam;
   const Torus3<T> tor{{T(0), T(0), T(0)}, {T(0), T(0), T(1)}, T(4), T(1)};
   // Through the hole along the axis: nothing (figure 11.74).
-  EXPECT_EQ(intersection(Line3<T>{{T(0), T(0), T(-9)}, {T(0), T(0), T(1)}}, tor).kind,
-            Kind::empty);
+  EXPECT_EQ(intersection(Line3<T>{{T(0), T(0), T(-9)}, {T(0), T(0), T(1)}}, tor).kind, Kind::empty);
   // Across the ring in its plane: x = -5, -3, 3, 5 (figure 11.75).
   const auto r = intersection(Line3<T>{{T(-10), T(0), T(0)}, {T(1), T(0), T(0)}}, tor);
   ASSERT_EQ(r.count, 4);
@@ -148,9 +147,8 @@ TYPED_TEST(TorusHits, Figures) {
   EXPECT_EQ(intersection(Line3<T>{{T(-10), T(0), T(0.99)}, {T(1), T(0), T(0)}}, tor).count, 4);
   // Within one ulp of the top: never more than the four intersections, each a tangency or a
   // close pair; never a point off the torus.
-  const auto e = intersection(Line3<T>{{T(-10), T(0), std::nextafter(T(1), T(0))},
-                                       {T(1), T(0), T(0)}},
-                              tor);
+  const auto e =
+      intersection(Line3<T>{{T(-10), T(0), std::nextafter(T(1), T(0))}, {T(1), T(0), T(0)}}, tor);
   int total = 0;
   for (int i = 0; i < e.count; ++i) total += e.multiplicity[std::size_t(i)];
   EXPECT_TRUE(total == 4 || total == 0) << total;
@@ -169,9 +167,9 @@ TYPED_TEST(TorusHits, ScalingReverseSwapDegenerate) {
     const auto r = intersection(sg, tor);
     for (int k : {-12, 9}) {
       const T f = std::ldexp(T(1), k);
-      const auto rs = intersection(Segment3<T>{sg.p0 * f, sg.p1 * f},
-                                   Torus3<T>{tor.center * f, tor.normal, tor.major_radius * f,
-                                             tor.minor_radius * f});
+      const auto rs = intersection(
+          Segment3<T>{sg.p0 * f, sg.p1 * f},
+          Torus3<T>{tor.center * f, tor.normal, tor.major_radius * f, tor.minor_radius * f});
       ASSERT_EQ(rs.count, r.count);
       for (int i = 0; i < r.count; ++i)
         EXPECT_EQ(rs.param_a[std::size_t(i)], r.param_a[std::size_t(i)]);
