@@ -91,7 +91,8 @@ C central(const Frame& f, ConicType type, double a, double c, double d, double f
     r.axis[1] = xmajor ? f.v : -f.u;
     r.extent[0] = std::max(sx, sy);
     r.extent[1] = std::min(sx, sy);
-    const double fc = std::sqrt(std::max((r.extent[0] - r.extent[1]) * (r.extent[0] + r.extent[1]), 0.0));
+    const double fc =
+        std::sqrt(std::max((r.extent[0] - r.extent[1]) * (r.extent[0] + r.extent[1]), 0.0));
     r.focus[0] = r.center + fc * r.axis[0];
     r.focus[1] = r.center - fc * r.axis[0];
     return r;
@@ -166,7 +167,8 @@ C section(const V& normal, double k, const V& vertex, const V& axis, double angl
   // Type: sign((a.N)^2 - sin^2(alpha) |a|^2 |N|^2) (sin rounded once), exact in it.
   const double sn = std::sin(angle), cs = std::cos(angle);
   const P an = dotp(axis, normal);
-  const int ts = (an * an - P::var(sn) * P::var(sn) * dotp(axis, axis) * dotp(normal, normal)).sign();
+  const int ts =
+      (an * an - P::var(sn) * P::var(sn) * dotp(axis, axis) * dotp(normal, normal)).sign();
   const int side = plane_value(normal, k, vertex).sign();
   const Frame f = frame(normal, k, vertex, axis);
   r.normal = f.n;

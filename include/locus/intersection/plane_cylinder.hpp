@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Intersection of a plane and a cylinder (its infinite lateral surface): intersects() and intersection() (find); row
-// int3.plane-quadric, book section 11.5 (figures 11.35-11.41 (circle, ellipse, one line, two lines, empty)).
-// Plane3 {normal N (any length), constant k} is N.X = k. Result PlaneConic3<T>
-// (intersection/detail/plane_quadric3.hpp): the conic type and its parameters, in 3D; axes are
-// unit, normal = N / |N|; point_at(conic, s, branch) samples it. Types here: ellipse (circle when the plane is perpendicular to the axis: exact test N x D = 0), two
+// Intersection of a plane and a cylinder (its infinite lateral surface): intersects() and
+// intersection() (find); row int3.plane-quadric, book section 11.5 (figures 11.35-11.41 (circle,
+// ellipse, one line, two lines, empty)). Plane3 {normal N (any length), constant k} is N.X = k.
+// Result PlaneConic3<T> (intersection/detail/plane_quadric3.hpp): the conic type and its
+// parameters, in 3D; axes are unit, normal = N / |N|; point_at(conic, s, branch) samples it. Types
+// here: ellipse (circle when the plane is perpendicular to the axis: exact test N x D = 0), two
 // parallel lines, one line (tangent plane) or empty when the plane is parallel to the axis
 // (exact test N.D = 0, then the exact sign of (N.C - k)^2 - r^2 |N|^2). The height is ignored:
 // the section of the infinite surface. Ellipse: center on the axis, semi-axes r / |cos theta|
@@ -22,22 +23,25 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/plane_quadric3.hpp>
-#include <locus/primitives/plane.hpp>
 #include <locus/primitives/cylinder.hpp>
+#include <locus/primitives/plane.hpp>
 
 namespace locus {
 
 /// The section of the surface by the plane (see the header comment).
 template <Real T>
-[[nodiscard]] inline PlaneConic3<T> intersection(const Plane3<T>& a, const Cylinder3<T>& b) noexcept {
+[[nodiscard]] inline PlaneConic3<T> intersection(const Plane3<T>& a,
+                                                 const Cylinder3<T>& b) noexcept {
   const Vec3<double> n = vec_cast<double>(a.normal);
   const double k = double(a.constant);
-  return detail::plane_quadric3::cast<T>(detail::plane_quadric3::section(n, k, vec_cast<double>(b.axis.origin), vec_cast<double>(b.axis.direction), double(b.radius)));
+  return detail::plane_quadric3::cast<T>(detail::plane_quadric3::section(
+      n, k, vec_cast<double>(b.axis.origin), vec_cast<double>(b.axis.direction), double(b.radius)));
 }
 
 /// The same with the arguments exchanged (the conic is symmetric in them).
 template <Real T>
-[[nodiscard]] inline PlaneConic3<T> intersection(const Cylinder3<T>& a, const Plane3<T>& b) noexcept {
+[[nodiscard]] inline PlaneConic3<T> intersection(const Cylinder3<T>& a,
+                                                 const Plane3<T>& b) noexcept {
   return intersection(b, a);
 }
 

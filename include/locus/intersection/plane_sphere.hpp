@@ -4,13 +4,14 @@
 // int3.plane-quadric, book section 11.5 (figures 11.32-11.34 (circle, point, empty)).
 // Plane3 {normal N (any length), constant k} is N.X = k. Result PlaneConic3<T>
 // (intersection/detail/plane_quadric3.hpp): the conic type and its parameters, in 3D; axes are
-// unit, normal = N / |N|; point_at(conic, s, branch) samples it. Types here: circle (center, radius extent[0] = extent[1], in-plane axes), point (a tangent plane) or
-// empty. Exact decision: sign((N.C - k)^2 - r^2 |N|^2) on core/exact_poly.hpp (exact for the
-// sphere and plane as given). Parameters rounded: center C - delta n, radius
-// sqrt((r - |delta|)(r + |delta|)) (no cancellation), delta the signed distance of C.
-// Degenerate: NaN/Inf, a zero normal or axis, a negative radius or an angle outside (0, pi/2):
-// type empty. Float input is computed in double. The swapped overload gives the same result.
-// Cost: well under a microsecond (a few exact signs, filtered; trigonometry for the cone).
+// unit, normal = N / |N|; point_at(conic, s, branch) samples it. Types here: circle (center, radius
+// extent[0] = extent[1], in-plane axes), point (a tangent plane) or empty. Exact decision:
+// sign((N.C - k)^2 - r^2 |N|^2) on core/exact_poly.hpp (exact for the sphere and plane as given).
+// Parameters rounded: center C - delta n, radius sqrt((r - |delta|)(r + |delta|)) (no
+// cancellation), delta the signed distance of C. Degenerate: NaN/Inf, a zero normal or axis, a
+// negative radius or an angle outside (0, pi/2): type empty. Float input is computed in double. The
+// swapped overload gives the same result. Cost: well under a microsecond (a few exact signs,
+// filtered; trigonometry for the cone).
 //
 // Parametrisation of the result (see ConicType): circle/ellipse center + e0 cos s axis[0] +
 // e1 sin s axis[1]; hyperbola center +- e0 cosh s axis[0] + e1 sinh s axis[1]; parabola vertex
@@ -31,7 +32,8 @@ template <Real T>
 [[nodiscard]] inline PlaneConic3<T> intersection(const Plane3<T>& a, const Sphere3<T>& b) noexcept {
   const Vec3<double> n = vec_cast<double>(a.normal);
   const double k = double(a.constant);
-  return detail::plane_quadric3::cast<T>(detail::plane_quadric3::section(n, k, vec_cast<double>(b.center), double(b.radius)));
+  return detail::plane_quadric3::cast<T>(
+      detail::plane_quadric3::section(n, k, vec_cast<double>(b.center), double(b.radius)));
 }
 
 /// The same with the arguments exchanged (the conic is symmetric in them).

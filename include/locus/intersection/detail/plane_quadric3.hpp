@@ -32,9 +32,9 @@ enum class ConicType : std::uint8_t {
 };
 
 [[nodiscard]] constexpr std::string_view to_string(ConicType t) noexcept {
-  constexpr std::string_view names[] = {"empty",  "point",   "line",     "parallel_lines",
-                                        "crossing_lines", "circle", "ellipse", "parabola",
-                                        "hyperbola"};
+  constexpr std::string_view names[] = {"empty",          "point",          "line",
+                                        "parallel_lines", "crossing_lines", "circle",
+                                        "ellipse",        "parabola",       "hyperbola"};
   return names[static_cast<int>(t)];
 }
 
