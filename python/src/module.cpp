@@ -87,6 +87,8 @@ for _name, _doc in [
                           "non_orientable_components."),
     ("RayHits", "ray_triangle_hits: hit, t, triangle, barycentric, point, front."),
     ("BoxHits", "ray_box_hits / segment_box_hits: hit, t_enter, t_exit."),
+    ("SurfaceHits", "ray_quadric_hits / ray_torus_hits: count, t, points, normals, uv, "
+                    "multiplicity, on_surface."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
 ]:
     _make(_name, _doc)
@@ -224,5 +226,6 @@ PYBIND11_MODULE(locus, m) {
   bind_mesh(m);
   bind_intersection3(m);
   bind_intersection2(m);
+  bind_quadric3(m);
   bind_io(m);
 }
