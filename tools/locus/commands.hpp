@@ -15,5 +15,6 @@ void register_distance(CLI::App& app);  // distance (cmd_distance.cpp)
 void register_numeric(CLI::App& app);   // roots, fit (cmd_numeric.cpp)
 void register_mesh(CLI::App& app);      // mesh info|check|orient|generate|convert (cmd_mesh.cpp)
 void register_raycast(CLI::App& app);   // raycast (cmd_raycast.cpp)
+void register_surfacehit(CLI::App& app);  // surfacehit (cmd_surfacehit.cpp)
 
 }  // namespace locus_cli
