@@ -15,8 +15,8 @@ namespace locus::python {
 
 namespace {
 
-py::array_t<double> f64(py::handle obj, const char* fn, const char* name, std::vector<py::ssize_t> shape,
-                        const char* shape_text) {
+py::array_t<double> f64(py::handle obj, const char* fn, const char* name,
+                        std::vector<py::ssize_t> shape, const char* shape_text) {
   if (obj.is_none()) fail(fn, std::string(name) + " is None");
   auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
   if (!a) fail(fn, std::string("cannot convert ") + name + " to float64");
@@ -123,7 +123,8 @@ tangency are decided exactly for the coefficients as given.)doc");
         if (!std::isfinite(major_radius) || !std::isfinite(minor_radius))
           fail(fn, "non_finite_input: a radius is NaN or infinite");
         const Torus3<double> tor{{cv.data()[0], cv.data()[1], cv.data()[2]},
-                                 {nv.data()[0], nv.data()[1], nv.data()[2]}, major_radius,
+                                 {nv.data()[0], nv.data()[1], nv.data()[2]},
+                                 major_radius,
                                  minor_radius};
         return surface_hits(fn, origins, directions, 4,
                             [&](const Ray3<double>& r) { return intersection(r, tor); });
