@@ -2,24 +2,40 @@
 // Gallery, chapter 11 (intersection in 3D). Every intersection point, parameter, hit, side and
 // separating-axis answer shown is computed by a locus::intersection / intersects / side_of_plane
 // query on the literal inputs; the 3D scenes are projected through the SvgWriter camera.
-// Figures: linear component and plane (11.1), line and triangle with barycentrics (11.2), two
-// and three planes (11.23, 11.24), plane-triangle, triangle-triangle and plane-mesh
-// (11.25-11.27, 11.29), slabs and boxes (11.61-11.73).
+// Figures: linear component and plane (11.1), line and triangle with barycentrics (11.2),
+// linear components and quadrics (11.9-11.17), two and three planes (11.23, 11.24),
+// plane-triangle, triangle-triangle and plane-mesh (11.25-11.27, 11.29), plane sections of
+// sphere, cylinder and cone (11.32-11.52), slabs and boxes (11.61-11.73), linear component and
+// torus (11.74-11.77).
 #include "gallery.hpp"
 
 #include <locus/intersection/aligned_box_aligned_box.hpp>
 #include <locus/intersection/aligned_box_plane.hpp>
 #include <locus/intersection/aligned_box_sphere.hpp>
 #include <locus/intersection/line_aligned_box.hpp>
+#include <locus/intersection/line_capsule.hpp>
+#include <locus/intersection/line_cone.hpp>
+#include <locus/intersection/line_cylinder.hpp>
+#include <locus/intersection/line_ellipsoid.hpp>
 #include <locus/intersection/line_oriented_box.hpp>
 #include <locus/intersection/line_plane.hpp>
+#include <locus/intersection/line_quadric.hpp>
+#include <locus/intersection/line_sphere.hpp>
+#include <locus/intersection/line_torus.hpp>
 #include <locus/intersection/line_triangle.hpp>
 #include <locus/intersection/oriented_box_oriented_box.hpp>
 #include <locus/intersection/oriented_box_plane.hpp>
+#include <locus/intersection/plane_cone.hpp>
+#include <locus/intersection/plane_cylinder.hpp>
 #include <locus/intersection/plane_mesh.hpp>
 #include <locus/intersection/plane_plane.hpp>
+#include <locus/intersection/plane_sphere.hpp>
 #include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
+#include <locus/intersection/ray_cone.hpp>
+#include <locus/intersection/ray_cylinder.hpp>
+#include <locus/intersection/ray_sphere.hpp>
+#include <locus/intersection/ray_torus.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/triangle_triangle.hpp>
@@ -470,18 +486,458 @@ bool fig_11_73(SvgWriter& w) {
          !intersects(b, ss[2]);
 }
 
+// ---- linear components and quadric surfaces (11.9-11.17), plane sections (11.32-11.52) -------
+
+std::vector<Vec3d> ring(const Vec3d& c, const Vec3d& u, const Vec3d& v, double r, int n = 64) {
+  std::vector<Vec3d> pts;
+  for (int k = 0; k <= n; ++k) {
+    const double a = 2 * std::numbers::pi * k / n;
+    pts.push_back(c + (r * std::cos(a)) * u + (r * std::sin(a)) * v);
+  }
+  return pts;
+}
+
+void draw_sphere(SvgWriter& w, const Sphere3<double>& s, const char* col) {
+  const Vec3d ex{1, 0, 0}, ey{0, 1, 0}, ez{0, 0, 1};
+  w.polyline(ring(s.center, ex, ey, s.radius), pen(col, 1.4));
+  w.polyline(ring(s.center, ex, ez, s.radius), dashed(col, 1));
+  w.polyline(ring(s.center, ey, ez, s.radius), dashed(col, 1));
+}
+
+void draw_cylinder(SvgWriter& w, const Cylinder3<double>& c, double half, const char* col) {
+  const auto b = perpendicular_basis(c.axis.direction);
+  const Vec3d lo = c.axis.origin - half * c.axis.direction,
+              hi = c.axis.origin + half * c.axis.direction;
+  w.polyline(ring(lo, b.u, b.v, c.radius), pen(col, 1.4));
+  w.polyline(ring(hi, b.u, b.v, c.radius), pen(col, 1.4));
+  for (int k = 0; k < 4; ++k) {
+    const double a = std::numbers::pi * k / 2;
+    const Vec3d off = c.radius * (std::cos(a) * b.u + std::sin(a) * b.v);
+    w.segment(lo + off, hi + off, dashed(col, 1));
+  }
+}
+
+void draw_cone(SvgWriter& w, const Cone3<double>& c, double hlo, double hhi, const char* col) {
+  const auto b = perpendicular_basis(c.axis);
+  const double t = std::tan(c.angle);
+  for (double h : {hlo, hhi})
+    if (h != 0.0)
+      w.polyline(ring(c.vertex + h * c.axis, b.u, b.v, std::fabs(h) * t), pen(col, 1.4));
+  for (int k = 0; k < 4; ++k) {
+    const double a = std::numbers::pi * k / 2;
+    const Vec3d dir = std::cos(a) * b.u + std::sin(a) * b.v;
+    w.segment(c.vertex + hlo * c.axis + (std::fabs(hlo) * t) * dir,
+              c.vertex + hhi * c.axis + (std::fabs(hhi) * t) * dir, dashed(col, 1));
+  }
+}
+
+/// The hits of a linear component: points, normals, labels t.
+void draw_hits(SvgWriter& w, const LinearSurfaceIntersection3<double>& r, const char* col) {
+  for (int i = 0; i < r.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    point(w, r.point[k], "t=" + fmt(r.param_a[k]) + (r.multiplicity[k] == 2 ? " (x2)" : ""), col);
+    if (r.normal[k] != Vec3d{})
+      w.arrow(r.point[k], r.point[k] + 0.6 * r.normal[k], pen(c::green, 1.2));
+  }
+}
+
+void draw_conic(SvgWriter& w, const PlaneConic3<double>& c, const char* col) {
+  const int branches = c.type == ConicType::hyperbola || c.type == ConicType::parallel_lines ||
+                               c.type == ConicType::crossing_lines
+                           ? 2
+                           : 1;
+  for (int b = 0; b < branches; ++b) {
+    std::vector<Vec3d> pts;
+    const bool closed_curve = c.type == ConicType::circle || c.type == ConicType::ellipse;
+    for (int k = 0; k <= 80; ++k) {
+      const double s = closed_curve ? 2 * std::numbers::pi * k / 80 : -2.0 + 4.0 * k / 80;
+      pts.push_back(point_at(c, s, b));
+    }
+    if (c.type == ConicType::point) {
+      point(w, c.center, "point", col);
+      return;
+    }
+    w.polyline(pts, pen(col, 2.4));
+  }
+  if (c.type == ConicType::ellipse || c.type == ConicType::hyperbola) {
+    point(w, c.focus[0], "F", col);
+    point(w, c.focus[1], "F'", col);
+  }
+  if (c.type == ConicType::parabola) point(w, c.focus[0], "F", col);
+}
+
+// 11.9: the possible ray-sphere intersections: two hits, tangent, miss, from inside.
+bool fig_11_9(SvgWriter& w) {
+  w.set_camera(camera({0.5, -10, 3}, {0, 0, 0}));
+  const Sphere3<double> s{{0, 0, 0}, 1.5};
+  draw_sphere(w, s, c::blue);
+  const std::array<Ray3<double>, 4> rays = {
+      Ray3<double>{{-4, 0, 0.5}, {1, 0, 0}}, Ray3<double>{{-4, 0, 1.5}, {1, 0, 0}},
+      Ray3<double>{{-4, 0, 2.2}, {1, 0, 0}}, Ray3<double>{{0, 0, -0.5}, {1, 0, 0.2}}};
+  const int want[4] = {2, 1, 0, 1};
+  bool ok = true;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const auto r = intersection(rays[i], s);
+    w.arrow(rays[i].origin, point_at(rays[i], 7.0), pen(r.count ? c::red : c::gray, 1.4));
+    draw_hits(w, r, c::red);
+    ok = ok && r.count == want[i];
+  }
+  return ok && intersection(rays[1], s).multiplicity[0] == 2;
+}
+
+// 11.10: a line and an ellipsoid.
+bool fig_11_10(SvgWriter& w) {
+  w.set_camera(camera({3, -9, 4}, {0, 0, 0}));
+  const double q = std::sqrt(0.5);
+  const Ellipsoid3<double> e{{0, 0, 0}, {{q, q, 0}, {-q, q, 0}, {0, 0, 1}}, {2.5, 1.2, 1}};
+  for (int k = 0; k < 3; ++k) {
+    const Vec3d& u = e.axis[k];
+    const Vec3d& v = e.axis[(k + 1) % 3];
+    std::vector<Vec3d> pts;
+    for (int j = 0; j <= 64; ++j) {
+      const double a = 2 * std::numbers::pi * j / 64;
+      pts.push_back(e.center + (e.extent[k] * std::cos(a)) * u +
+                    (e.extent[(k + 1) % 3] * std::sin(a)) * v);
+    }
+    w.polyline(pts, k == 0 ? pen(c::blue, 1.4) : dashed(c::blue, 1));
+  }
+  const Line3<double> l{{-3, -1, -1}, {1, 0.3, 0.35}};
+  const auto r = intersection(l, e);
+  w.segment(point_at(l, -0.5), point_at(l, 6.5), pen(c::red, 1.4));
+  draw_hits(w, r, c::red);
+  return r.count == 2;
+}
+
+// 11.11 / 11.12: a finite cylinder in its standard and general position; a ray enters through
+// the side and leaves through a cap.
+bool cylinder_figure(SvgWriter& w, const Vec3d& axis) {
+  w.set_camera(camera({6, -7, 4}, {0, 0, 0}));
+  const Cylinder3<double> cyl{{{0, 0, 0}, normalize(axis)}, 1, 3};
+  draw_cylinder(w, cyl, 1.5, c::blue);
+  const Ray3<double> ray{{-3, -0.2, -0.4}, {1, 0.05, 0.45}};
+  const auto r = intersection(ray, cyl);
+  w.arrow(ray.origin, point_at(ray, 6.0), pen(c::red, 1.4));
+  draw_hits(w, r, c::red);
+  return r.count == 2;
+}
+bool fig_11_11(SvgWriter& w) { return cylinder_figure(w, {0, 0, 1}); }
+bool fig_11_12(SvgWriter& w) { return cylinder_figure(w, {0.3, 0.2, 1}); }
+
+// 11.13 / 11.14: a finite cone, standard and general; a line through side and base.
+bool cone_figure(SvgWriter& w, const Vec3d& vertex, const Vec3d& axis) {
+  w.set_camera(camera({6, -8, 3}, vertex + Vec3d{0, 0, 1}));
+  const Cone3<double> cone{vertex, normalize(axis), 0.5, 0, 3};
+  draw_cone(w, cone, 0, 3, c::blue);
+  const Line3<double> l{vertex + Vec3d{-2, 0, 0.8}, {1, 0.1, 0.6}};
+  const auto r = intersection(l, cone);
+  w.segment(point_at(l, -0.5), point_at(l, 4.5), pen(c::red, 1.4));
+  draw_hits(w, r, c::red);
+  return r.count == 2;
+}
+bool fig_11_13(SvgWriter& w) { return cone_figure(w, {0, 0, 0}, {0, 0, 1}); }
+bool fig_11_14(SvgWriter& w) { return cone_figure(w, {0.5, 0.2, -0.3}, {0.2, -0.3, 1}); }
+
+// 11.15: an acute (infinite) cone: a line steeper than the cone enters it once, in one nappe.
+bool fig_11_15(SvgWriter& w) {
+  w.set_camera(camera({5, -9, 2}, {0, 0, 1.5}));
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.45, 0, std::numeric_limits<double>::infinity()};
+  draw_cone(w, cone, 0, 3.5, c::blue);
+  const Line3<double> l{{0.6, 0, 0}, {0.3, 0, 1}};
+  const auto r = intersection(l, cone);
+  w.segment(point_at(l, -2.5), point_at(l, 3.5), pen(c::red, 1.4));
+  draw_hits(w, r, c::red);
+  return r.count == 1;  // it enters the unbounded solid and never leaves
+}
+
+// 11.16: an acute double cone: the same line crosses both nappes (four hits with the caps).
+bool fig_11_16(SvgWriter& w) {
+  w.set_camera(camera({5, -9, 1}, {0, 0, 0}));
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.6, -2.5, 2.5};
+  draw_cone(w, cone, -2.5, 2.5, c::blue);
+  const Line3<double> l{{0.4, 0, 0}, {0.15, 0, 1}};
+  const auto r = intersection(l, cone);
+  w.segment(point_at(l, -3.5), point_at(l, 3.5), pen(c::red, 1.4));
+  draw_hits(w, r, c::red);
+  return r.count == 4;
+}
+
+// 11.17: c2 = 0: a line along an asymptotic direction of a hyperbolic paraboloid z = x y meets
+// it once (a), or lies on it (b) (a ruling), decided exactly.
+bool fig_11_17(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 5}, {0, 0, 0}));
+  Quadric3<double> hp{};
+  hp.a.a[0][1] = hp.a.a[1][0] = 0.5;
+  hp.b = {0, 0, -1};
+  for (int i = -4; i <= 4; ++i) {
+    std::vector<Vec3d> a, b;
+    for (int j = -4; j <= 4; ++j) {
+      const double x = 0.5 * i, y = 0.5 * j;
+      a.push_back({x, y, x * y});
+      b.push_back({y, x, x * y});
+    }
+    w.polyline(a, pen(c::light, 1));
+    w.polyline(b, pen(c::light, 1));
+  }
+  const Line3<double> la{{1.5, -2, 0.5}, {0, 1, 0}}, lb{{1, -2, -2}, {0, 1, 1}};
+  const auto ra = intersection(la, hp), rb = intersection(lb, hp);
+  w.segment(point_at(la, 0.0), point_at(la, 4.0), pen(c::red, 1.6));
+  w.segment(point_at(lb, 0.0), point_at(lb, 4.0), pen(c::purple, 2.4));
+  draw_hits(w, ra, c::red);
+  label(w, point_at(lb, 4.0), "(b) on the surface", c::purple);
+  label(w, point_at(la, 4.0), "(a) one point", c::red);
+  return ra.count == 1 && rb.kind == Kind::line;
+}
+
+// 11.32 / 11.33: a plane and a sphere: a circle (and its cross-section).
+bool fig_11_32(SvgWriter& w) {
+  w.set_camera(camera({5, -8, 4}, {0, 0, 0}));
+  const Sphere3<double> s{{0, 0, 0}, 2};
+  const Plane3<double> pl{{0.2, 0.1, 1}, 1.0};
+  draw_sphere(w, s, c::blue);
+  const auto c0 = intersection(pl, s);
+  plane_patch(w, pl, c0.center, 2.6, c::green);
+  draw_conic(w, c0, c::red);
+  point(w, c0.center, "center", c::red);
+  return c0.type == ConicType::circle;
+}
+bool fig_11_33(SvgWriter& w) {
+  w.set_camera(camera({0, -10, 0}, {0, 0, 0}));
+  const Sphere3<double> s{{0, 0, 0}, 2};
+  w.polyline(ring(s.center, {1, 0, 0}, {0, 0, 1}, 2), pen(c::blue, 1.4));
+  bool ok = true;
+  const double ks[3] = {1.0, 2.0, 2.6};
+  const ConicType want[3] = {ConicType::circle, ConicType::point, ConicType::empty};
+  for (int i = 0; i < 3; ++i) {
+    const Plane3<double> pl{{0, 0, 1}, ks[i]};
+    const auto c0 = intersection(pl, s);
+    w.segment(Vec3d{-3, 0, ks[i]}, Vec3d{3, 0, ks[i]}, dashed(c::green, 1.2));
+    label(w, Vec3d{3, 0, ks[i]}, std::string(to_string(c0.type)), c::green);
+    if (c0.type == ConicType::circle)
+      w.segment(c0.center - c0.extent[0] * Vec3d{1, 0, 0},
+                c0.center + c0.extent[0] * Vec3d{1, 0, 0}, pen(c::red, 2.4));
+    if (c0.type == ConicType::point) point(w, c0.center, "", c::red);
+    ok = ok && c0.type == want[i];
+  }
+  return ok;
+}
+
+// 11.34 / 11.35: a plane and a cylinder: ellipse, circle, two lines, one line, nothing.
+bool fig_11_34(SvgWriter& w) {
+  w.set_camera(camera({6, -8, 3}, {0, 0, 0}));
+  const Cylinder3<double> cyl{{{0, 0, 0}, {0, 0, 1}}, 1, std::numeric_limits<double>::infinity()};
+  draw_cylinder(w, cyl, 2.5, c::blue);
+  const Plane3<double> pl{{0.6, 0.2, 1}, 0.3};
+  const auto c0 = intersection(pl, cyl);
+  plane_patch(w, pl, c0.center, 2.2, c::green);
+  draw_conic(w, c0, c::red);
+  return c0.type == ConicType::ellipse;
+}
+bool fig_11_35(SvgWriter& w) {
+  w.set_camera(camera({3, -9, 6}, {0, 0, 0}));
+  const Cylinder3<double> cyl{{{0, 0, 0}, {0, 0, 1}}, 1, std::numeric_limits<double>::infinity()};
+  draw_cylinder(w, cyl, 2, c::blue);
+  const std::array<Plane3<double>, 4> pls = {
+      Plane3<double>{{0, 0, 1}, 1.5}, Plane3<double>{{1, 0, 0}, 0.4}, Plane3<double>{{0, 1, 0}, -1},
+      Plane3<double>{{1, 0, 0}, -1.6}};
+  const ConicType want[4] = {ConicType::circle, ConicType::parallel_lines, ConicType::line,
+                             ConicType::empty};
+  const char* cols[4] = {c::red, c::purple, c::orange, c::gray};
+  bool ok = true;
+  for (std::size_t i = 0; i < pls.size(); ++i) {
+    const auto c0 = intersection(pls[i], cyl);
+    draw_conic(w, c0, cols[i]);
+    if (c0.type != ConicType::empty)
+      label(w, point_at(c0, 2.0), std::string(to_string(c0.type)), cols[i]);
+    ok = ok && c0.type == want[i];
+  }
+  return ok;
+}
+
+// 11.37 / 11.41: the ellipse (tilted plane) and the circle (plane normal along the axis) as 3D
+// conics: center, axes, extents, foci.
+bool fig_11_37(SvgWriter& w) {
+  w.set_camera(camera({4, -7, 5}, {0, 0, 0}));
+  const Cylinder3<double> cyl{{{0, 0, 0}, {0, 0, 1}}, 1.2, std::numeric_limits<double>::infinity()};
+  const auto c0 = intersection(Plane3<double>{{0.8, 0, 1}, 0}, cyl);
+  draw_conic(w, c0, c::red);
+  w.arrow(c0.center, c0.center + c0.extent[0] * c0.axis[0], pen(c::blue));
+  w.arrow(c0.center, c0.center + c0.extent[1] * c0.axis[1], pen(c::blue));
+  label(w, c0.center + c0.extent[0] * c0.axis[0], "a = " + fmt(c0.extent[0]), c::blue);
+  label(w, c0.center + c0.extent[1] * c0.axis[1], "b = " + fmt(c0.extent[1]), c::blue);
+  return c0.type == ConicType::ellipse;
+}
+bool fig_11_41(SvgWriter& w) {
+  w.set_camera(camera({5, -8, 4}, {0, 0, 0}));
+  const Cylinder3<double> cyl{
+      {{0, 0, 0}, normalize(Vec3d{0.3, 0.2, 1})}, 1, std::numeric_limits<double>::infinity()};
+  draw_cylinder(w, cyl, 2, c::blue);
+  // The normal is the axis itself: N x D = 0 exactly, a circle.
+  const auto c0 = intersection(Plane3<double>{cyl.axis.direction, 0.5}, cyl);
+  draw_conic(w, c0, c::red);
+  return c0.type == ConicType::circle;
+}
+
+// 11.42 / 11.43: a plane and a cone; the ways they can meet (ellipse, parabola, hyperbola).
+bool fig_11_42(SvgWriter& w) {
+  w.set_camera(camera({6, -8, 2}, {0, 0, 0}));
+  const double inf = std::numeric_limits<double>::infinity();
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.5, -inf, inf};
+  draw_cone(w, cone, -2.5, 2.5, c::blue);
+  const Plane3<double> pl{{0.3, 0, 1}, 1.2};
+  const auto c0 = intersection(pl, cone);
+  plane_patch(w, pl, c0.center, 2, c::green);
+  draw_conic(w, c0, c::red);
+  return c0.type == ConicType::ellipse;
+}
+bool fig_11_43(SvgWriter& w) {
+  w.set_camera(camera({7, -9, 2}, {0, 0, 0}));
+  const double inf = std::numeric_limits<double>::infinity();
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.5, -inf, inf};
+  draw_cone(w, cone, -3, 3, c::blue);
+  const std::array<Plane3<double>, 3> pls = {Plane3<double>{{0.2, 0, 1}, 1.5},
+                                             Plane3<double>{{1, 0, 0.1}, 0.8},
+                                             Plane3<double>{{0, 1, 0}, 0.5}};
+  const ConicType want[3] = {ConicType::ellipse, ConicType::hyperbola, ConicType::hyperbola};
+  const char* cols[3] = {c::red, c::purple, c::orange};
+  bool ok = true;
+  for (std::size_t i = 0; i < pls.size(); ++i) {
+    const auto c0 = intersection(pls[i], cone);
+    draw_conic(w, c0, cols[i]);
+    ok = ok && c0.type == want[i];
+  }
+  return ok;
+}
+
+// 11.48-11.52: parabola, circle, ellipse, hyperbola and the degenerate sections through the
+// vertex (point, one line, two lines), each decided exactly on the data as given.
+bool cone_section(SvgWriter& w, const Plane3<double>& pl, ConicType want) {
+  w.set_camera(camera({6, -8, 2}, {0, 0, 0}));
+  const double inf = std::numeric_limits<double>::infinity();
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.5, -inf, inf};
+  draw_cone(w, cone, -2.5, 2.5, c::blue);
+  const auto c0 = intersection(pl, cone);
+  plane_patch(w, pl, c0.center, 2, c::green);
+  draw_conic(w, c0, c::red);
+  label(w, c0.center + Vec3d{0, 0, -0.4}, std::string(to_string(c0.type)), c::red);
+  return c0.type == want;
+}
+bool fig_11_48(SvgWriter& w) {
+  // Normal at the cone's angle from the axis: (cos a, 0, sin a) against sin a, exactly tied
+  // only if the rounded values satisfy (N.D)^2 = sin^2 |N|^2; the type shows what the data say.
+  const double a = 0.5;
+  const Plane3<double> pl{{std::cos(a), 0, std::sin(a)}, 0.8};
+  w.set_camera(camera({6, -8, 2}, {0, 0, 0}));
+  const auto c0 = intersection(pl, Cone3<double>{{0, 0, 0}, {0, 0, 1}, a, -1e9, 1e9});
+  const bool near_parabolic = c0.type == ConicType::parabola || c0.type == ConicType::ellipse ||
+                              c0.type == ConicType::hyperbola;
+  return cone_section(w, pl, c0.type) && near_parabolic;
+}
+bool fig_11_49(SvgWriter& w) { return cone_section(w, {{0, 0, 1}, 1.5}, ConicType::circle); }
+bool fig_11_50(SvgWriter& w) { return cone_section(w, {{0.4, 0, 1}, 1.5}, ConicType::ellipse); }
+bool fig_11_51(SvgWriter& w) { return cone_section(w, {{1, 0, 0.2}, 0.6}, ConicType::hyperbola); }
+bool fig_11_52(SvgWriter& w) {
+  return cone_section(w, {{1, 0, 0.2}, 0}, ConicType::crossing_lines);
+}
+
+// ---- torus (11.74-11.77) -----------------------------------------------------------------------
+
+void draw_torus(SvgWriter& w, const Torus3<double>& t, const char* col) {
+  const auto b = perpendicular_basis(t.normal);
+  for (double r : {t.major_radius - t.minor_radius, t.major_radius + t.minor_radius})
+    w.polyline(ring(t.center, b.u, b.v, r), pen(col, 1.4));
+  w.polyline(ring(t.center + t.minor_radius * t.normal, b.u, b.v, t.major_radius), dashed(col, 1));
+  for (int k = 0; k < 8; ++k) {
+    const double a = std::numbers::pi * k / 4;
+    const Vec3d dir = std::cos(a) * b.u + std::sin(a) * b.v;
+    w.polyline(ring(t.center + t.major_radius * dir, dir, t.normal, t.minor_radius, 32),
+               dashed(col, 0.8));
+  }
+}
+
+// 11.74 / 11.75: a line through a torus: four hits, their normals.
+bool fig_11_74(SvgWriter& w) {
+  w.set_camera(camera({3, -9, 5}, {0, 0, 0}));
+  const Torus3<double> t{{0, 0, 0}, {0, 0, 1}, 2, 0.7};
+  draw_torus(w, t, c::blue);
+  const Line3<double> l{{-4, -0.5, 0.2}, {1, 0.12, 0}};
+  const auto r = intersection(l, t);
+  w.segment(point_at(l, -0.5), point_at(l, 8.5), pen(c::red, 1.4));
+  draw_hits(w, r, c::red);
+  return r.count == 4;
+}
+bool fig_11_75(SvgWriter& w) {
+  w.set_camera(camera({3, -9, 6}, {0, 0, 0}));
+  const Torus3<double> t{{0, 0, 0}, {0, 0, 1}, 2, 0.7};
+  draw_torus(w, t, c::blue);
+  const Ray3<double> ray{{-1, -4, 2}, {0.3, 1, -0.75}};
+  const auto r = intersection(ray, t);
+  w.arrow(ray.origin, point_at(ray, 5.0), pen(c::red, 1.4));
+  draw_hits(w, r, c::red);
+  return r.count >= 1;
+}
+
+// 11.76 / 11.77: the (u, v) parameters of a hit: u about the axis, v about the tube.
+bool torus_uv(SvgWriter& w, bool show_u) {
+  w.set_camera(camera({2, -8, 7}, {0, 0, 0}));
+  const Torus3<double> t{{0, 0, 0}, {0, 0, 1}, 2, 0.7};
+  draw_torus(w, t, c::light);
+  const Line3<double> l{{-4, 1.1, 0.45}, {1, 0, 0}};
+  const auto r = intersection(l, t);
+  if (r.count == 0) return false;
+  const Vec3d p = r.point[0];
+  const Vec2d uv = r.param_b[0];
+  const auto b = perpendicular_basis(t.normal);
+  const Vec3d dir = std::cos(uv.x) * b.u + std::sin(uv.x) * b.v;
+  if (show_u) {
+    w.arrow(t.center, t.center + 2.6 * b.u, pen(c::gray));
+    w.arrow(t.center, t.center + t.major_radius * dir, pen(c::blue, 1.6));
+    label(w, t.center + t.major_radius * dir, "u = " + fmt(uv.x), c::blue);
+  } else {
+    const Vec3d tube = t.center + t.major_radius * dir;
+    w.polyline(ring(tube, dir, t.normal, t.minor_radius, 48), pen(c::blue, 1.4));
+    w.arrow(tube, p, pen(c::blue, 1.6));
+    label(w, p, "v = " + fmt(uv.y), c::blue);
+  }
+  point(w, p, "", c::red);
+  return locus::length(point_at(t, uv) - p) < 1e-9;
+}
+bool fig_11_76(SvgWriter& w) { return torus_uv(w, true); }
+bool fig_11_77(SvgWriter& w) { return torus_uv(w, false); }
+
 }  // namespace
 
 std::vector<Figure> chapter11_intersection_figures() {
   return {
       {"11.1", "intersection(Line3, Plane3)", fig_11_1},
       {"11.2", "intersection(Ray3, Triangle3), watertight_hit", fig_11_2},
+      {"11.9", "intersection(Ray3, Sphere3) (two, tangent, none, from inside)", fig_11_9},
+      {"11.10", "intersection(Line3, Ellipsoid3)", fig_11_10},
+      {"11.11", "intersection(Ray3, Cylinder3) (side and cap)", fig_11_11},
+      {"11.12", "intersection(Ray3, Cylinder3) (general position)", fig_11_12},
+      {"11.13", "intersection(Line3, Cone3) (finite cone)", fig_11_13},
+      {"11.14", "intersection(Line3, Cone3) (general position)", fig_11_14},
+      {"11.15", "intersection(Line3, Cone3) (acute infinite cone)", fig_11_15},
+      {"11.16", "intersection(Line3, Cone3) (double cone: four hits)", fig_11_16},
+      {"11.17", "intersection(Line3, Quadric3) (c2 = 0: one point, or on the surface)", fig_11_17},
       {"11.23", "intersection(Plane3, Plane3)", fig_11_23},
       {"11.24", "intersection(Plane3, Plane3, Plane3) (every configuration)", fig_11_24},
       {"11.25", "intersection(Triangle3, Plane3)", fig_11_25},
       {"11.26", "intersection(Triangle3, Plane3) (every configuration)", fig_11_26},
       {"11.27", "intersection(Triangle3, Triangle3)", fig_11_27},
       {"11.29", "slice_mesh(vertices, triangles, Plane3)", fig_11_29},
+      {"11.32", "intersection(Plane3, Sphere3) (circle)", fig_11_32},
+      {"11.33", "intersection(Plane3, Sphere3) (circle, point, empty)", fig_11_33},
+      {"11.34", "intersection(Plane3, Cylinder3) (ellipse)", fig_11_34},
+      {"11.35", "intersection(Plane3, Cylinder3) (circle, two lines, one line, empty)", fig_11_35},
+      {"11.37", "PlaneConic3 ellipse: center, axes, extents", fig_11_37},
+      {"11.41", "intersection(Plane3, Cylinder3) (circle: normal along the axis)", fig_11_41},
+      {"11.42", "intersection(Plane3, Cone3)", fig_11_42},
+      {"11.43", "intersection(Plane3, Cone3) (ellipse, hyperbolas)", fig_11_43},
+      {"11.48", "intersection(Plane3, Cone3) (near-parabolic, type decided exactly)", fig_11_48},
+      {"11.49", "intersection(Plane3, Cone3) (circle)", fig_11_49},
+      {"11.50", "intersection(Plane3, Cone3) (ellipse)", fig_11_50},
+      {"11.51", "intersection(Plane3, Cone3) (hyperbola)", fig_11_51},
+      {"11.52", "intersection(Plane3, Cone3) (through the vertex: two lines)", fig_11_52},
       {"11.61", "intersection(Line3, AlignedBox3)", fig_11_61},
       {"11.62", "side_of_plane(AlignedBox3, Plane3) (slab planes)", fig_11_62},
       {"11.64", "intersection(Ray3, AlignedBox3) (slab clipping)", fig_11_64},
@@ -493,6 +949,10 @@ std::vector<Figure> chapter11_intersection_figures() {
       {"11.71", "intersection(AlignedBox3, AlignedBox3)", fig_11_71},
       {"11.72", "intersects(OrientedBox3, OrientedBox3) (separating axes)", fig_11_72},
       {"11.73", "intersects(AlignedBox3, Sphere3)", fig_11_73},
+      {"11.74", "intersection(Line3, Torus3) (four hits, normals)", fig_11_74},
+      {"11.75", "intersection(Ray3, Torus3): the normal at a hit", fig_11_75},
+      {"11.76", "intersection(Line3, Torus3): the u parameter", fig_11_76},
+      {"11.77", "intersection(Line3, Torus3): the v parameter", fig_11_77},
   };
 }
 

@@ -53,7 +53,7 @@ std::vector<Figure> chapter8_construction_figures();  // ch08_constructions.cpp:
 std::vector<Figure> chapter9_mesh_figures();          // ch09_meshes.cpp: 9.5-9.17
 std::vector<Figure> chapter9_surface_figures();       // ch09_surfaces.cpp: 9.22-9.26
 std::vector<Figure> chapter10_distance_figures();     // ch10_distance.cpp: distance in 3D
-std::vector<Figure> chapter11_intersection_figures();  // ch11_intersection.cpp: 11.1-11.73
+std::vector<Figure> chapter11_intersection_figures();  // ch11_intersection.cpp: 11.1-11.77
 std::vector<Figure> chapter12_misc_figures();          // ch12_misc.cpp: 12.1-12.10
 std::vector<Figure> chapter13_figures();               // ch13_hull_delaunay.cpp: 13.2-13.11
 std::vector<Figure> chapter13_polytri_figures();       // ch13_triangulate.cpp: 13.53-13.70

@@ -307,3 +307,23 @@ class Construction(Result):
     line_signs: npt.NDArray[np.int32]
 
 def construct(kind: str, args: list[float]) -> Construction: ...
+class SurfaceHits(Result):
+    count: npt.NDArray[np.int32]
+    t: _Floats
+    points: _Floats
+    normals: _Floats
+    uv: _Floats
+    multiplicity: npt.NDArray[np.int32]
+    on_surface: npt.NDArray[np.bool_]
+
+def ray_quadric_hits(
+    origins: _Points, directions: _Points, a: npt.ArrayLike, b: npt.ArrayLike, c: float
+) -> SurfaceHits: ...
+def ray_torus_hits(
+    origins: _Points,
+    directions: _Points,
+    center: npt.ArrayLike,
+    normal: npt.ArrayLike,
+    major_radius: float,
+    minor_radius: float,
+) -> SurfaceHits: ...

@@ -132,6 +132,7 @@ void bind_svg(py::module_& m);
 void bind_mesh(py::module_& m);
 void bind_intersection3(py::module_& m);
 void bind_intersection2(py::module_& m);
+void bind_quadric3(py::module_& m);
 void bind_io(py::module_& m);
 void bind_misc3(py::module_& m);
 

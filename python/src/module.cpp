@@ -93,6 +93,8 @@ for _name, _doc in [
     ("BoxHits", "ray_box_hits / segment_box_hits: hit, t_enter, t_exit."),
     ("ConvexIntersection", "convex_polygon_intersection: kind, vertices (k, 2)."),
     ("Contact", "first_contact: kind, time, points (k, 2)."),
+    ("SurfaceHits", "ray_quadric_hits / ray_torus_hits: count, t, points, normals, uv, "
+                    "multiplicity, on_surface."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
 ]:
     _make(_name, _doc)
@@ -231,6 +233,7 @@ PYBIND11_MODULE(locus, m) {
   bind_intersection3(m);
   bind_intersection2(m);
   bind_construction(m);
+  bind_quadric3(m);
   bind_io(m);
   bind_misc3(m);
   bind_sat2(m);

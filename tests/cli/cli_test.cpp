@@ -21,6 +21,7 @@
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
 #include <locus/intersection/plane_mesh.hpp>
+#include <locus/intersection/ray_torus.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/io/geojson.hpp>
 #include <locus/io/mesh_io.hpp>
@@ -221,7 +222,7 @@ TEST_F(Cli, HelpListsEverySubcommandWithAnExample) {
   EXPECT_EQ(r.code, 0);
   const char* const subs[] = {"hull",      "hull3",   "delaunay", "delaunay3", "mincircle",
                               "minsphere", "minrect", "minbox",   "distance",  "roots",
-                              "fit",       "mesh",    "raycast"};
+                              "fit",       "mesh",    "raycast",  "surfacehit"};
   for (const char* s : subs) {
     EXPECT_NE(r.out.find(std::string("  ") + s + " "), std::string::npos) << s;
     const Outcome h = run(std::string(s) + " --help");
@@ -1035,6 +1036,38 @@ TEST_F(Cli, RaycastMatchesWatertightHitsBitForBit) {
   spit(path("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
   expect_bad_input(run("raycast " + path("bad.obj") + " " + path("one.csv")), path("bad.obj"), 3,
                    "index");
+}
+
+// surfacehit: rays against a sphere and a torus; the lines match the library's answers.
+TEST_F(Cli, SurfacehitMatchesTheLibrary) {
+  spit(path("srays.csv"), "ox,oy,oz,dx,dy,dz\n-9,0,0,1,0,0\n-9,0,1,1,0,0\n0,0,9,0,0,1\n");
+  const Outcome t = run("surfacehit " + path("srays.csv") + " --torus 0,0,0,0,0,1,4,1");
+  ASSERT_EQ(t.code, 0) << t.err;
+  std::vector<std::vector<std::string>> lines;
+  {
+    std::istringstream in(t.out);
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty() && line[0] != '#') lines.push_back(words(line));
+  }
+  ASSERT_EQ(lines.size(), 3u);
+  const locus::Torus3d tor{{0, 0, 0}, {0, 0, 1}, 4, 1};
+  const locus::Ray3d rays[3] = {
+      {{-9, 0, 0}, {1, 0, 0}}, {{-9, 0, 1}, {1, 0, 0}}, {{0, 0, 9}, {0, 0, 1}}};
+  for (int i = 0; i < 3; ++i) {
+    const auto h = locus::intersection(rays[i], tor);
+    std::vector<std::string> want = {std::to_string(h.count)};
+    for (int k = 0; k < h.count; ++k) {
+      want.push_back(shortest(h.param_a[std::size_t(k)]));
+      want.push_back(std::to_string(h.multiplicity[std::size_t(k)]));
+    }
+    EXPECT_EQ(lines[std::size_t(i)], want) << i;
+  }
+  // Independently: across the ring 4 hits, tangent to the top 2 double ones, away none.
+  EXPECT_EQ(lines[0][0], "4");
+  EXPECT_EQ(lines[1][0], "2");
+  EXPECT_EQ(lines[2], std::vector<std::string>{"0"});
+  const Outcome bad = run("surfacehit " + path("srays.csv"));
+  EXPECT_EQ(bad.code, 2);
 }
 
 }  // namespace

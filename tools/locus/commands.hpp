@@ -18,5 +18,6 @@ void register_mesh_slice(CLI::App& mesh);   // mesh slice (cmd_mesh_slice.cpp)
 void register_raycast(CLI::App& app);       // raycast (cmd_raycast.cpp)
 void register_sat(CLI::App& app);           // sat (cmd_sat.cpp)
 void register_construct(CLI::App& app);     // construct <kind> (cmd_construct.cpp)
+void register_surfacehit(CLI::App& app);    // surfacehit (cmd_surfacehit.cpp)
 
 }  // namespace locus_cli

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   locus_cli::register_raycast(app);
   locus_cli::register_sat(app);
   locus_cli::register_construct(app);
+  locus_cli::register_surfacehit(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
