@@ -26,15 +26,13 @@ const Json& expected() {
 }
 
 const Json* field(const Json& obj, const std::string& name) {
-  for (const auto& [k, v] : obj.fields)
-    if (k == name) return &v;
+  for (std::size_t i = 0; i < obj.keys.size(); ++i)
+    if (obj.keys[i] == name) return &obj.values[i];
   return nullptr;
 }
 
 std::vector<std::string> fixture_names() {
-  std::vector<std::string> names;
-  for (const auto& [k, v] : field(expected(), "triangles")->fields) names.push_back(k);
-  return names;
+  return field(expected(), "triangles")->keys;
 }
 
 class EarcutFixtures : public ::testing::TestWithParam<std::string> {};

@@ -109,7 +109,10 @@ struct Json {
   double num = 0;
   std::string str;
   std::vector<Json> items;
-  std::vector<std::pair<std::string, Json>> fields;
+  // An object's members, keys[i] naming values[i] (std::pair<std::string, Json> would need Json
+  // complete inside its own definition, which clang rejects).
+  std::vector<std::string> keys;
+  std::vector<Json> values;
 
   static Json parse(const std::string& s) {
     std::size_t i = 0;
@@ -133,7 +136,8 @@ struct Json {
           Json key = value(s, i);
           ws(s, i);
           ++i;  // ':'
-          j.fields.emplace_back(key.str, value(s, i));
+          j.keys.push_back(key.str);
+          j.values.push_back(value(s, i));
         } else {
           j.items.push_back(value(s, i));
         }
