@@ -4,6 +4,7 @@
 // decomposition and horizontal trapezoids. Every public header of include/locus/triangulate/.
 // For users: nothing inside the library includes an umbrella (cmake/check_layering.cmake).
 
+#include <locus/triangulate/convex_partition.hpp>
 #include <locus/triangulate/ear_clipping.hpp>
 #include <locus/triangulate/monotone.hpp>
 #include <locus/triangulate/polygon_triangulation.hpp>
