@@ -53,8 +53,9 @@ std::vector<Figure> chapter9_mesh_figures();          // ch09_meshes.cpp: 9.5-9.
 std::vector<Figure> chapter9_surface_figures();       // ch09_surfaces.cpp: 9.22-9.26
 std::vector<Figure> chapter10_distance_figures();     // ch10_distance.cpp: distance in 3D
 std::vector<Figure> chapter11_intersection_figures();  // ch11_intersection.cpp: 11.1-11.73
+std::vector<Figure> chapter13_bsp_figures();           // ch13_bsp.cpp: 13.1-13.12
 std::vector<Figure> chapter13_figures();               // ch13_hull_delaunay.cpp: 13.2-13.11
-std::vector<Figure> chapter13_polytri_figures();       // ch13_triangulate.cpp: 13.53-13.70
+std::vector<Figure> chapter13_polytri_figures();       // ch13_triangulate.cpp: 13.53-13.77
 std::vector<Figure> appendix_a_figures();              // chA_numerics.cpp: A.2-A.24
 /// Every figure in book order.
 std::vector<Figure> all_figures();

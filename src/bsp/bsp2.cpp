@@ -148,10 +148,17 @@ Status Bsp2<T>::build(std::span<const Vec2<T>> points, std::span<const std::uint
         for (const Bsp2Fragment<T>& f : task.frags) {
           Sign s0;
           switch (ex.relate(ex.line_of(f.edge), f.end[0], f.end[1], l, s0)) {
-            case Rel::front: ++front; break;
-            case Rel::back: ++back; break;
-            case Rel::straddle: ++splits; break;
-            case Rel::on: break;
+            case Rel::front:
+              ++front;
+              break;
+            case Rel::back:
+              ++back;
+              break;
+            case Rel::straddle:
+              ++splits;
+              break;
+            case Rel::on:
+              break;
           }
         }
         const std::uint64_t cost =
@@ -174,9 +181,15 @@ Status Bsp2<T>::build(std::span<const Vec2<T>> points, std::span<const std::uint
       const LineRef<T> fl = ex.line_of(f.edge);
       Sign s0;
       switch (ex.relate(fl, f.end[0], f.end[1], l, s0)) {
-        case Rel::front: front.frags.push_back(f); break;
-        case Rel::back: back.frags.push_back(f); break;
-        case Rel::on: fragments_.push_back(f); break;
+        case Rel::front:
+          front.frags.push_back(f);
+          break;
+        case Rel::back:
+          back.frags.push_back(f);
+          break;
+        case Rel::on:
+          fragments_.push_back(f);
+          break;
         case Rel::straddle: {
           const Bsp2End<T> c = ex.cut(fl, split_edge);
           Bsp2Fragment<T> f0{f.edge, {f.end[0], c}}, f1{f.edge, {c, f.end[1]}};
@@ -270,15 +283,20 @@ Bsp2SegmentPartition<T> Bsp2<T>::partition(const Vec2<T>& s0, const Vec2<T>& s1)
     const LineRef<T> l = ex.line_of(n.edge);
     Sign side0;
     switch (ex.relate(q, x0, x1, l, side0)) {
-      case Rel::front: self(self, n.front, x0, x1); return;
-      case Rel::back: self(self, n.back, x0, x1); return;
+      case Rel::front:
+        self(self, n.front, x0, x1);
+        return;
+      case Rel::back:
+        self(self, n.back, x0, x1);
+        return;
       case Rel::straddle: {
         const Bsp2End<T> c = ex.cut(q, n.edge);
         self(self, side0 == Sign::positive ? n.front : n.back, x0, c);
         self(self, side0 == Sign::positive ? n.back : n.front, c, x1);
         return;
       }
-      case Rel::on: break;
+      case Rel::on:
+        break;
     }
     // On the splitting line: the overlaps with the node's fragments are coincident; the gaps
     // are off the boundary, so either subtree classifies them (the front one is used).

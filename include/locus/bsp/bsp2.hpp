@@ -43,9 +43,9 @@ inline constexpr std::uint32_t bsp2_none = 0xffffffffu;
 /// One end of a fragment or piece (see the exactness rule at the top of the header).
 template <Real T>
 struct Bsp2End {
-  Vec2<T> point{};                  ///< exact when line == bsp2_none, else rounded
-  std::uint32_t line = bsp2_none;   ///< the edge whose supporting line cuts here, or none
-  std::uint32_t vertex = bsp2_none; ///< the input point index when the end is an input point
+  Vec2<T> point{};                   ///< exact when line == bsp2_none, else rounded
+  std::uint32_t line = bsp2_none;    ///< the edge whose supporting line cuts here, or none
+  std::uint32_t vertex = bsp2_none;  ///< the input point index when the end is an input point
 };
 
 /// A piece of input edge `edge`, ends in the edge's direction.
@@ -57,7 +57,7 @@ struct Bsp2Fragment {
 
 /// A node: children are node indices >= 0 or the leaves bsp2_inside / bsp2_outside.
 struct Bsp2Node {
-  std::uint32_t edge = 0;        ///< splitting line: the supporting line of edges()[edge]
+  std::uint32_t edge = 0;  ///< splitting line: the supporting line of edges()[edge]
   std::int32_t front = 0, back = 0;
   std::uint32_t first = 0, count = 0;  ///< coincident fragments: fragments()[first, first + count)
 };

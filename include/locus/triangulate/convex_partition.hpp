@@ -7,9 +7,9 @@
 // orient2d(prev, v, next) >= 0 at each of its vertices (straight runs keep their middles).
 //  * convex_partition (Hertel-Mehlhorn): triangulate_monotone (every input vertex used; where
 //    it reports invalid_topology, e.g. rings touching at a vertex, triangulate_ear_clipping,
-//    which drops straight-run middles), then each diagonal is removed when both its ends stay convex
-//    in the merged piece (exact orient2d). Every kept diagonal is essential at one end, so for
-//    a polygon without holes the piece count is at most 2r + 1 <= 4 x the minimum (r reflex
+//    which drops straight-run middles), then each diagonal is removed when both its ends stay
+//    convex in the merged piece (exact orient2d). Every kept diagonal is essential at one end, so
+//    for a polygon without holes the piece count is at most 2r + 1 <= 4 x the minimum (r reflex
 //    vertices; the minimum needs at least ceil(r / 2) + 1). Holes allowed. O(n log n).
 //  * min_convex_partition: the minimum number of convex pieces over all partitions by
 //    diagonals (no Steiner points) of a polygon WITHOUT holes, exact. Neither Keil's nor
