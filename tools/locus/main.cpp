@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   locus_cli::register_numeric(app);
   locus_cli::register_mesh(app);
   locus_cli::register_raycast(app);
+  locus_cli::register_partition(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
