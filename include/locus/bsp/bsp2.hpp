@@ -19,7 +19,7 @@
 // node's fragments) minimising split_cost * splits + |front - back|; first_edge takes the
 // first fragment (the book's basic construction). Cost: O(n^2) fragments at worst, O(n log n)
 // typical (balanced); classify O(depth), more when the point lies on splitting lines.
-// Status: as prepare-rings in polygon_triangulation.hpp: ok, empty_input, invalid_input,
+// Status as in triangulate/polygon_triangulation.hpp: ok, empty_input, invalid_input,
 // non_finite_input, degenerate_input (outer ring of zero area: empty tree, all outside).
 // Crossing or overlapping rings are not detected: the answers are then those of the tree built.
 // partition(): pieces in order from s0 to s1, adjacent pieces of one location merged; non-finite
