@@ -26,12 +26,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
   int code = -1;
   std::string out, err;
 };
 
-Run run_locus(const fs::path& dir, const std::string& args) {
+CliRun run_locus(const fs::path& dir, const std::string& args) {
   const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
   const std::string cmd =
       std::string("'") + LOCUS_CLI_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
@@ -72,8 +72,8 @@ TEST(PartitionCli, PiecesMatchTheLibrary) {
       expected.emplace_back(lib.vertices.begin() + b, lib.vertices.begin() + e);
       b = e;
     }
-    const Run r = run_locus(dir, "partition " + (dir / "comb.wkt").string() + " --method " +
-                                     method + " --svg " + (dir / "p.svg").string());
+    const CliRun r = run_locus(dir, "partition " + (dir / "comb.wkt").string() + " --method " +
+                                        method + " --svg " + (dir / "p.svg").string());
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(rows(r.out), expected) << method;
     EXPECT_NE(locus_test::slurp((dir / "p.svg").string()).find("<svg"), std::string::npos);
@@ -82,7 +82,7 @@ TEST(PartitionCli, PiecesMatchTheLibrary) {
     std::ofstream f(dir / "bow.wkt");
     f << "POLYGON ((0 0, 2 2, 2 0, 1 0.5, 0 2, 0 0))\n";
   }
-  const Run bad = run_locus(dir, "partition " + (dir / "bow.wkt").string() + " --method min");
+  const CliRun bad = run_locus(dir, "partition " + (dir / "bow.wkt").string() + " --method min");
   EXPECT_EQ(bad.code, 1);
   EXPECT_NE(bad.err.find("invalid_topology"), std::string::npos) << bad.err;
   std::error_code ec;
