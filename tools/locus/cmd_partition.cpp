@@ -68,8 +68,7 @@ void run_partition(const PartitionOptions& o) {
 
 void register_partition(CLI::App& app) {
   auto o = std::make_shared<PartitionOptions>();
-  CLI::App* sub =
-      app.add_subcommand("partition", "convex partition of polygons (WKT, GeoJSON)");
+  CLI::App* sub = app.add_subcommand("partition", "convex partition of polygons (WKT, GeoJSON)");
   add_common(sub, o->c, true, "a polygon file: WKT (.wkt) or GeoJSON (.json .geojson)");
   sub->add_option("--method", o->method,
                   "hm (Hertel-Mehlhorn, default, holes allowed) or min (minimum, no holes, at "
