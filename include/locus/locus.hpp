@@ -5,6 +5,7 @@
 // or single headers. Nothing inside the library includes it (cmake/check_layering.cmake).
 
 #include <locus/bounding.hpp>
+#include <locus/bsp.hpp>
 #include <locus/config.hpp>
 #include <locus/construct.hpp>
 #include <locus/containment.hpp>

@@ -9,7 +9,7 @@
 
 namespace locus::python {
 
-void bind_sat2(py::module_& m);  // python/src/sat2.cpp
+void bind_sat2(py::module_& m);          // python/src/sat2.cpp
 void bind_construction(py::module_& m);  // construction.cpp
 
 namespace {

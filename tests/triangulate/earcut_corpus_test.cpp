@@ -31,9 +31,7 @@ const Json* field(const Json& obj, const std::string& name) {
   return nullptr;
 }
 
-std::vector<std::string> fixture_names() {
-  return field(expected(), "triangles")->keys;
-}
+std::vector<std::string> fixture_names() { return field(expected(), "triangles")->keys; }
 
 class EarcutFixtures : public ::testing::TestWithParam<std::string> {};
 

@@ -29,10 +29,12 @@ void run_surfacehit(const SurfaceHitOptions& o) {
   const std::vector<locus::Vec<double, 6>> rows = load_rows6(o.rays);
   const auto hits = [&](const locus::Ray3d& ray) -> locus::LinearSurfaceIntersection3<double> {
     if (!o.sphere.empty())
-      return intersection(ray, locus::Sphere3d{{o.sphere[0], o.sphere[1], o.sphere[2]}, o.sphere[3]});
+      return intersection(ray,
+                          locus::Sphere3d{{o.sphere[0], o.sphere[1], o.sphere[2]}, o.sphere[3]});
     if (!o.torus.empty())
       return intersection(ray, locus::Torus3d{{o.torus[0], o.torus[1], o.torus[2]},
-                                              {o.torus[3], o.torus[4], o.torus[5]}, o.torus[6],
+                                              {o.torus[3], o.torus[4], o.torus[5]},
+                                              o.torus[6],
                                               o.torus[7]});
     const auto& q = o.quadric;
     locus::Quadric3d k{};
@@ -61,7 +63,8 @@ void run_surfacehit(const SurfaceHitOptions& o) {
       text += ' ' + num(h.param_a[s]) + ' ' + std::to_string(h.multiplicity[s]);
       results += (k ? ",{" : "{") + std::string("\"t\":") + json_number(h.param_a[s]) +
                  ",\"multiplicity\":" + std::to_string(h.multiplicity[s]) +
-                 ",\"point\":" + json_vec<3>(h.point[s]) + ",\"normal\":" + json_vec<3>(h.normal[s]) +
+                 ",\"point\":" + json_vec<3>(h.point[s]) +
+                 ",\"normal\":" + json_vec<3>(h.normal[s]) +
                  ",\"uv\":" + json_vec<2>(h.param_b[s]) + "}";
     }
     text += '\n';

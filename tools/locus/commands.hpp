@@ -7,17 +7,18 @@
 
 namespace locus_cli {
 
-void register_hull(CLI::App& app);          // hull, hull3 (cmd_hull.cpp)
-void register_delaunay(CLI::App& app);      // delaunay, delaunay3 (cmd_delaunay.cpp)
-void register_polygon(CLI::App& app);       // cdt, triangulate (cmd_polygon.cpp)
-void register_bounding(CLI::App& app);      // mincircle, minsphere, minrect, minbox (cmd_bounding.cpp)
-void register_distance(CLI::App& app);      // distance (cmd_distance.cpp)
-void register_numeric(CLI::App& app);       // roots, fit (cmd_numeric.cpp)
-void register_mesh(CLI::App& app);          // mesh info|check|orient|generate|convert (cmd_mesh.cpp)
-void register_mesh_slice(CLI::App& mesh);   // mesh slice (cmd_mesh_slice.cpp)
-void register_raycast(CLI::App& app);       // raycast (cmd_raycast.cpp)
-void register_sat(CLI::App& app);           // sat (cmd_sat.cpp)
-void register_construct(CLI::App& app);     // construct <kind> (cmd_construct.cpp)
-void register_surfacehit(CLI::App& app);    // surfacehit (cmd_surfacehit.cpp)
+void register_hull(CLI::App& app);      // hull, hull3 (cmd_hull.cpp)
+void register_delaunay(CLI::App& app);  // delaunay, delaunay3 (cmd_delaunay.cpp)
+void register_polygon(CLI::App& app);   // cdt, triangulate (cmd_polygon.cpp)
+void register_bounding(CLI::App& app);  // mincircle, minsphere, minrect, minbox (cmd_bounding.cpp)
+void register_distance(CLI::App& app);  // distance (cmd_distance.cpp)
+void register_numeric(CLI::App& app);   // roots, fit (cmd_numeric.cpp)
+void register_mesh(CLI::App& app);      // mesh info|check|orient|generate|convert (cmd_mesh.cpp)
+void register_mesh_slice(CLI::App& mesh);  // mesh slice (cmd_mesh_slice.cpp)
+void register_raycast(CLI::App& app);      // raycast (cmd_raycast.cpp)
+void register_sat(CLI::App& app);          // sat (cmd_sat.cpp)
+void register_construct(CLI::App& app);    // construct <kind> (cmd_construct.cpp)
+void register_surfacehit(CLI::App& app);   // surfacehit (cmd_surfacehit.cpp)
+void register_partition(CLI::App& app);    // partition (cmd_partition.cpp)
 
 }  // namespace locus_cli
