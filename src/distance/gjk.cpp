@@ -21,7 +21,6 @@ using V = Vec<double, N>;
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// A point of the Minkowski difference y = a - b with its two support points.
 template <int N>

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Private to src/distance/batch*.cpp: W queries at once in the lanes of one SIMD register, for the
-// batched distance queries of include/locus/distance/batch.hpp.
+// Private to the library's SIMD kernels: W queries at once in the lanes of one SIMD register, for
+// the batched distance queries of include/locus/distance/batch.hpp (src/distance/batch*.cpp) and
+// the BVH traversal (src/spatial/bvh.cpp).
 //
 // Lanes<T>::V is a GCC/Clang vector of W = 32 / sizeof(T) values (4 doubles or 8 floats: one AVX
 // register; the compiler splits it into two SSE registers where AVX is not enabled). Arithmetic is
