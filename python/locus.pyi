@@ -351,3 +351,13 @@ def bsp_classify(
 def bsp_partition(
     polygon_rings: _Points | list[_Points], segments: npt.ArrayLike
 ) -> BspPartition: ...
+def bspline_surface_insert_knot(
+    control: npt.ArrayLike,
+    knots_u: npt.ArrayLike,
+    knots_v: npt.ArrayLike,
+    degree_u: int,
+    degree_v: int,
+    t: float,
+    direction: str = "u",
+    times: int = 1,
+) -> tuple[_Floats, _Floats, _Floats]: ...

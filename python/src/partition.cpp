@@ -3,9 +3,11 @@
 // bsp_classify, bsp_partition (bsp/bsp2.hpp). Polygons are given as a list of rings (ring 0 the
 // outer boundary, then the holes, any orientation), concatenated here into the library's points +
 // ring_ends form; float32 runs the float instantiation only when every array is float32.
+// Also bspline_surface_insert_knot (curves/bspline_surface.hpp), registered here with them.
 #include "common.hpp"
 
 #include <locus/bsp/bsp2.hpp>
+#include <locus/curves/bspline_surface.hpp>
 #include <locus/triangulate/convex_partition.hpp>
 
 #include <string>
@@ -249,6 +251,66 @@ points rounded, every decision exact), `location` (int8 per piece: 1 inside, -1 
 boundary in the opposite direction) and `segment` (uint32: the input segment of each piece).
 Raises ValueError for empty or invalid rings, a zero-area outer ring, NaN/Inf coordinates and
 a segment with equal ends.)doc");
+
+  m.def(
+      "bspline_surface_insert_knot",
+      [](py::handle control, py::handle knots_u, py::handle knots_v, int degree_u, int degree_v,
+         double t, std::string direction, int times) -> py::object {
+        const char* fn = "bspline_surface_insert_knot";
+        const ArrayView c = view_array(control, fn, "control", 3, {2, 3});
+        if (direction != "u" && direction != "v")
+          fail(fn, "direction must be 'u' or 'v', not '" + direction + "'");
+        if (times < 1) fail(fn, "times must be at least 1");
+        if (!std::isfinite(t)) fail(fn, "non_finite_input: t is NaN or infinite");
+        auto knots_in = [&]<class T>(py::handle k, const char* name) {
+          const ArrayView kv = view_array(k, fn, name, 1, {});
+          const auto a = as_dtype<T>(kv);
+          return std::vector<T>(a.data(), a.data() + kv.rows);
+        };
+        auto run = [&]<class T, int N>() -> py::object {
+          BSplineSurface<T, N> s{degree_u,
+                                 degree_v,
+                                 static_cast<int>(c.array.shape(0)),
+                                 static_cast<int>(c.array.shape(1)),
+                                 {},
+                                 {},
+                                 {}};
+          const auto ca = as_dtype<T>(c);
+          const auto* p = reinterpret_cast<const Vec<T, N>*>(ca.data());
+          s.control.assign(p, p + static_cast<std::size_t>(ca.size() / N));
+          s.knots_u = knots_in.template operator()<T>(knots_u, "knots_u");
+          s.knots_v = knots_in.template operator()<T>(knots_v, "knots_v");
+          check_status(validate(s), fn, false);
+          {
+            py::gil_scoped_release nogil;
+            const T tt = static_cast<T>(t);
+            s = direction == "u" ? insert_knot_u(s, tt, times) : insert_knot_v(s, tt, times);
+          }
+          std::vector<T> flat(s.control.size() * N);
+          for (std::size_t i = 0; i < s.control.size(); ++i)
+            for (int j = 0; j < N; ++j) flat[i * N + static_cast<std::size_t>(j)] = s.control[i][j];
+          const auto ku = static_cast<py::ssize_t>(s.knots_u.size());
+          const auto kv = static_cast<py::ssize_t>(s.knots_v.size());
+          return py::make_tuple(to_numpy(std::move(flat), {s.rows, s.cols, N}),
+                                to_numpy(std::move(s.knots_u), {ku}),
+                                to_numpy(std::move(s.knots_v), {kv}));
+        };
+        if (c.is_float)
+          return c.last == 2 ? run.template operator()<float, 2>()
+                             : run.template operator()<float, 3>();
+        return c.last == 2 ? run.template operator()<double, 2>()
+                           : run.template operator()<double, 3>();
+      },
+      py::arg("control"), py::arg("knots_u"), py::arg("knots_v"), py::arg("degree_u"),
+      py::arg("degree_v"), py::arg("t"), py::arg("direction") = "u", py::arg("times") = 1,
+      R"doc(Inserts a knot into a tensor-product B-spline surface (Boehm; the surface is unchanged).
+
+control: (rows, cols, N) control net, N = 2 or 3, row i along u, column j along v; knots_u has
+rows + degree_u + 1 values, knots_v cols + degree_v + 1 (the conventions of
+curves/bspline_surface.hpp). t (clamped to the domain) is inserted `times` times along
+direction 'u' (every column) or 'v' (every row); the multiplicity is capped at the degree.
+Returns (control, knots_u, knots_v) of the refined surface, in control's dtype.
+Raises ValueError for inconsistent sizes, bad knot vectors, NaN/Inf, times < 1.)doc");
 }
 
 }  // namespace locus::python

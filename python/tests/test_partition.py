@@ -220,3 +220,63 @@ def test_result_fields_match_stub():
     sq = np.array([[0, 0], [1, 0], [1, 1], [0, 1.0]])
     for r in [locus.convex_partition(sq), locus.bsp_partition(sq, [[[0, 0], [2, 2.0]]])]:
         assert set(vars(r)) == fields[type(r).__name__] | {"status"}
+
+
+def surface_points(control, ku, kv, du, dv, uv):
+    """Tensor-product B-spline evaluation by scipy (independent of locus)."""
+    from scipy.interpolate import BSpline
+    out = []
+    for u, v in uv:
+        col = BSpline(ku, control, du)(u)  # (cols, N): the net collapsed along u
+        out.append(BSpline(kv, col, dv)(v))
+    return np.array(out)
+
+
+def random_knots(rng, n, d):
+    inner = np.sort(rng.uniform(0, 1, n - d - 1))
+    return np.concatenate([np.zeros(d + 1), inner, np.ones(d + 1)])
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_bspline_surface_insert_knot_keeps_surface(rng, dim):
+    for _ in range(10):
+        du, dv = int(rng.integers(1, 4)), int(rng.integers(1, 4))
+        rows, cols = du + int(rng.integers(1, 5)), dv + int(rng.integers(1, 5))
+        control = rng.uniform(-1, 1, (rows, cols, dim))
+        ku, kv = random_knots(rng, rows, du), random_knots(rng, cols, dv)
+        direction = ["u", "v"][int(rng.integers(2))]
+        t, times = float(rng.uniform(0, 1)), int(rng.integers(1, 4))
+        c2, ku2, kv2 = locus.bspline_surface_insert_knot(control, ku, kv, du, dv, t,
+                                                         direction=direction, times=times)
+        d = du if direction == "u" else dv
+        added = min(times, d)  # t is a new knot (probability one); multiplicity capped at d
+        if direction == "u":
+            assert c2.shape == (rows + added, cols, dim) and np.array_equal(kv2, kv)
+            assert np.count_nonzero(ku2 == t) == added and len(ku2) == len(ku) + added
+        else:
+            assert c2.shape == (rows, cols + added, dim) and np.array_equal(ku2, ku)
+            assert np.count_nonzero(kv2 == t) == added and len(kv2) == len(kv) + added
+        uv = rng.uniform(0, 1, (20, 2))
+        np.testing.assert_allclose(surface_points(c2, ku2, kv2, du, dv, uv),
+                                   surface_points(control, ku, kv, du, dv, uv), atol=1e-12)
+
+
+def test_bspline_surface_insert_knot_bad_input(rng):
+    control = rng.uniform(-1, 1, (4, 4, 3))
+    k = random_knots(rng, 4, 2)
+    with pytest.raises(ValueError, match="invalid_input"):
+        locus.bspline_surface_insert_knot(control, k[:-1], k, 2, 2, 0.5)
+    with pytest.raises(ValueError, match="invalid_input"):
+        locus.bspline_surface_insert_knot(control, k[::-1], k, 2, 2, 0.5)
+    with pytest.raises(ValueError, match="non_finite_input"):
+        locus.bspline_surface_insert_knot(control, k, k, 2, 2, np.nan)
+    bad = control.copy()
+    bad[1, 2, 0] = np.inf
+    with pytest.raises(ValueError, match="non_finite_input"):
+        locus.bspline_surface_insert_knot(bad, k, k, 2, 2, 0.5)
+    with pytest.raises(ValueError, match="direction"):
+        locus.bspline_surface_insert_knot(control, k, k, 2, 2, 0.5, direction="w")
+    with pytest.raises(ValueError, match="times"):
+        locus.bspline_surface_insert_knot(control, k, k, 2, 2, 0.5, times=0)
+    with pytest.raises(ValueError, match="3-d array"):
+        locus.bspline_surface_insert_knot(control[0], k, k, 2, 2, 0.5)
