@@ -327,3 +327,37 @@ def ray_torus_hits(
     major_radius: float,
     minor_radius: float,
 ) -> SurfaceHits: ...
+
+# Convex partition and the BSP tree of a polygon (triangulate/convex_partition.hpp, bsp/bsp2.hpp)
+class ConvexPartitionResult(Result):
+    points: _Floats
+    vertices: _Indices
+    piece_ends: _Indices
+    diagonals: _Indices
+    @property
+    def pieces(self) -> list[_Indices]: ...
+
+class BspPartition(Result):
+    pieces: _Floats
+    location: npt.NDArray[np.int8]
+    segment: _Indices
+
+def convex_partition(
+    outer: _Points, holes: list[_Points] | None = None, method: str = "hertel_mehlhorn"
+) -> ConvexPartitionResult: ...
+def bsp_classify(
+    polygon_rings: _Points | list[_Points], points: _Points
+) -> npt.NDArray[np.int8]: ...
+def bsp_partition(
+    polygon_rings: _Points | list[_Points], segments: npt.ArrayLike
+) -> BspPartition: ...
+def bspline_surface_insert_knot(
+    control: npt.ArrayLike,
+    knots_u: npt.ArrayLike,
+    knots_v: npt.ArrayLike,
+    degree_u: int,
+    degree_v: int,
+    t: float,
+    direction: str = "u",
+    times: int = 1,
+) -> tuple[_Floats, _Floats, _Floats]: ...

@@ -11,6 +11,7 @@ namespace locus::python {
 
 void bind_sat2(py::module_& m);          // python/src/sat2.cpp
 void bind_construction(py::module_& m);  // construction.cpp
+void bind_partition(py::module_& m);     // partition.cpp
 
 namespace {
 
@@ -96,9 +97,17 @@ for _name, _doc in [
     ("SurfaceHits", "ray_quadric_hits / ray_torus_hits: count, t, points, normals, uv, "
                     "multiplicity, on_surface."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
+    ("BspPartition", "bsp_partition: pieces (k, 2, 2), location, segment."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make
+
+class ConvexPartitionResult(Result):
+    """convex_partition: points, vertices, piece_ends, diagonals; pieces (index arrays)."""
+    __module__ = "locus"
+    @property
+    def pieces(self):
+        return [self.vertices[s:e] for s, e in zip([0, *self.piece_ends[:-1]], self.piece_ends)]
 )PY";
 
 }  // namespace
@@ -237,4 +246,5 @@ PYBIND11_MODULE(locus, m) {
   bind_io(m);
   bind_misc3(m);
   bind_sat2(m);
+  bind_partition(m);
 }
