@@ -353,7 +353,8 @@ PointsOf<Pred, T> generate(Rng& rng, int kind) {
       // point's differences to the others are then inexact (tails nonzero).
       const double grid = is_double ? 0x1p-40 : 0x1p-10;
       Vec<double, D> base{};
-      for (int k = 0; k < D; ++k) base[k] = 0.5 + grid * rng.uniform_int(0, int(0.5 / grid) - 1);
+      // uniform() draws the grid step count in [0, 0.5 / grid) (2^39 steps overflow an int).
+      for (int k = 0; k < D; ++k) base[k] = 0.5 + grid * std::floor(rng.uniform(0.0, 0.5 / grid));
       if constexpr (Pred::degree <= 3) {
         // Points base + integer combinations of D-1 integer directions (line / plane).
         Vec<double, D> dir[2]{};

@@ -332,11 +332,16 @@ struct Side<locus::Disk3<T>> {
   using P = locus::Disk3<T>;
   using Param = locus::Vec2<T>;  // (s, t) in the disk's plane axes
   static constexpr int k = 2;
-  static constexpr unsigned periodic = 2u;  // the angle u[1]
+  static constexpr unsigned periodic = 0u;
   static constexpr bool rotatable = true;
+  // Cartesian (s, t) over the square around the disk, pulled radially onto the disk outside it:
+  // polar (radius, angle) parameters are singular at the centre, where the compass search stalls
+  // (a line crossing the disk 0.15 from its centre was reported at its distance to the centre).
   static Vec<T, 3> map(const P& d, const T* u, T) {
-    const T rho = d.radius * u[0], a = T(6.283185307179586) * u[1];
-    return point_at(d, Param{rho * std::cos(a), rho * std::sin(a)});
+    T s = d.radius * (T(2) * u[0] - T(1)), t = d.radius * (T(2) * u[1] - T(1));
+    const T rho = std::sqrt(s * s + t * t);
+    if (rho > d.radius) s *= d.radius / rho, t *= d.radius / rho;
+    return point_at(d, Param{s, t});
   }
   static Vec<T, 3> at(const P& d, const Param& st) { return point_at(d, st); }
   static bool param_ok(const P& d, const Param& st, T tol) {

@@ -265,8 +265,9 @@ struct Crossing {
   } else {
     c.point = c.bary.x * tri.v[0] + c.bary.y * tri.v[1] + c.bary.z * tri.v[2];
   }
-  // The component's own end points are exact when they lie on the triangle.
-  if (l.lo && orient3d(tri.v[0], tri.v[1], tri.v[2], l.o) == Sign::zero) {
+  // The component's own input points are exact when they lie on the triangle (its origin also
+  // for a line: the line crosses the plane there).
+  if (orient3d(tri.v[0], tri.v[1], tri.v[2], l.o) == Sign::zero) {
     c.point = l.o;
     c.t = 0.0;
   } else if (l.hi && orient3d(tri.v[0], tri.v[1], tri.v[2], l.q) == Sign::zero) {
