@@ -33,24 +33,6 @@ T surf_tol(int du, int dv, T scale) {
 }
 
 template <class T>
-std::vector<T> knots_for(locus_test::Rng& rng, int n, int d, bool clamped) {
-  for (;;) {
-    std::vector<T> k;
-    T x = static_cast<T>(rng.uniform_int(-4, 4)) / T(4);
-    for (int i = 0; i < n + d + 1; ++i) {
-      k.push_back(x);
-      x += static_cast<T>(rng.uniform_int(0, 2)) / T(4);
-    }
-    if (clamped) {
-      for (int i = 0; i < d; ++i) k[static_cast<std::size_t>(i)] = k[static_cast<std::size_t>(d)];
-      for (int i = n + 1; i < n + d + 1; ++i)
-        k[static_cast<std::size_t>(i)] = k[static_cast<std::size_t>(n)];
-    }
-    if (validate_knots(std::span<const T>(k), d, n) == Status::ok) return k;
-  }
-}
-
-template <class T>
 BSplineSurface<T, 3> random_surface(locus_test::Rng& rng, bool clamped) {
   const int du = rng.uniform_int(0, 3), dv = rng.uniform_int(0, 3);
   const int rows = du + rng.uniform_int(1, 4), cols = dv + rng.uniform_int(1, 4);
@@ -59,8 +41,8 @@ BSplineSurface<T, 3> random_surface(locus_test::Rng& rng, bool clamped) {
           rows,
           cols,
           curve_oracle::dyadic_points<T, 3>(rng, rows * cols),
-          knots_for<T>(rng, rows, du, clamped),
-          knots_for<T>(rng, cols, dv, clamped)};
+          curve_oracle::random_knots<T>(rng, rows, du, clamped),
+          curve_oracle::random_knots<T>(rng, cols, dv, clamped)};
 }
 
 /// Curve of curves: each row as a B-spline curve in v (value and v-derivative at v), then those

@@ -30,28 +30,10 @@ T eval_tol(int d, T scale) {
   return tol(T(8 * (d + 1)), scale);
 }
 
-/// Random valid dyadic knots for n control points of degree d; clamped ends when asked.
-template <class T>
-std::vector<T> random_knots(locus_test::Rng& rng, int n, int d, bool clamped) {
-  for (;;) {
-    std::vector<T> k;
-    double x = rng.uniform_int(-8, 8) / 8.0;
-    for (int i = 0; i < n + d + 1; ++i) {
-      k.push_back(static_cast<T>(x));
-      x += rng.uniform_int(0, 3) / 8.0;
-    }
-    if (clamped) {
-      for (int i = 0; i < d; ++i) k[static_cast<std::size_t>(i)] = k[static_cast<std::size_t>(d)];
-      for (int i = n + 1; i < n + d + 1; ++i)
-        k[static_cast<std::size_t>(i)] = k[static_cast<std::size_t>(n)];
-    }
-    if (validate_knots(std::span<const T>(k), d, n) == Status::ok) return k;
-  }
-}
-
 template <class T, int N>
 BSplineCurve<T, N> random_curve(locus_test::Rng& rng, int d, int n, bool clamped) {
-  return {d, curve_oracle::dyadic_points<T, N>(rng, n), random_knots<T>(rng, n, d, clamped)};
+  return {d, curve_oracle::dyadic_points<T, N>(rng, n),
+          curve_oracle::random_knots<T>(rng, n, d, clamped, 8, 3)};
 }
 
 /// The exact value sum_i N_{i,d}(t) P_i.
@@ -151,7 +133,7 @@ TYPED_TEST(BSplineTest, BasisFunctionsExactPartitionOfUnityAndLocality) {
   for (int trial = 0; trial < 30; ++trial) {
     const int d = rng.uniform_int(0, 5);
     const int n = d + rng.uniform_int(1, 6);
-    const std::vector<T> kv = random_knots<T>(rng, n, d, trial % 3 == 0);
+    const std::vector<T> kv = curve_oracle::random_knots<T>(rng, n, d, trial % 3 == 0, 8, 3);
     const std::span<const T> k(kv);
     const auto kq = curve_oracle::knots_q(kv);
     for (int j = 0; j <= 16; ++j) {

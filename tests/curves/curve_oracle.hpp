@@ -6,7 +6,9 @@
 
 #include <gmpxx.h>
 
+#include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
+#include <locus/curves/bspline.hpp>
 
 #include "support/typed.hpp"
 
@@ -14,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <type_traits>
 #include <vector>
 
@@ -134,6 +137,27 @@ locus::Vec<T, N> dyadic_vec(locus_test::Rng& rng) {
   locus::Vec<T, N> v{};
   for (int c = 0; c < N; ++c) v[c] = static_cast<T>(dyadic(rng));
   return v;
+}
+
+/// Random valid dyadic knots for n control points of degree d: the first a multiple of 1 / den in
+/// [-1, 1], each next one 0 to max_step / den further (repeats included); clamped ends when asked.
+template <class T>
+std::vector<T> random_knots(locus_test::Rng& rng, int n, int d, bool clamped, int den = 4,
+                            int max_step = 2) {
+  for (;;) {
+    std::vector<T> k;
+    double x = rng.uniform_int(-den, den) / double(den);
+    for (int i = 0; i < n + d + 1; ++i) {
+      k.push_back(static_cast<T>(x));
+      x += rng.uniform_int(0, max_step) / double(den);
+    }
+    if (clamped) {
+      for (int i = 0; i < d; ++i) k[static_cast<std::size_t>(i)] = k[static_cast<std::size_t>(d)];
+      for (int i = n + 1; i < n + d + 1; ++i)
+        k[static_cast<std::size_t>(i)] = k[static_cast<std::size_t>(n)];
+    }
+    if (locus::validate_knots(std::span<const T>(k), d, n) == locus::Status::ok) return k;
+  }
 }
 
 template <class T, int N>

@@ -28,24 +28,6 @@ class SurfaceKnotsTest : public ::testing::Test {};
 TYPED_TEST_SUITE(SurfaceKnotsTest, locus_test::RealTypes);
 
 template <class T>
-std::vector<T> random_knots(locus_test::Rng& rng, int n, int d, bool clamped) {
-  for (;;) {
-    std::vector<T> k;
-    T x = static_cast<T>(rng.uniform_int(-4, 4)) / T(4);
-    for (int i = 0; i < n + d + 1; ++i) {
-      k.push_back(x);
-      x += static_cast<T>(rng.uniform_int(0, 2)) / T(4);
-    }
-    if (clamped) {
-      for (int i = 0; i < d; ++i) k[static_cast<std::size_t>(i)] = k[static_cast<std::size_t>(d)];
-      for (int i = n + 1; i < n + d + 1; ++i)
-        k[static_cast<std::size_t>(i)] = k[static_cast<std::size_t>(n)];
-    }
-    if (validate_knots(std::span<const T>(k), d, n) == Status::ok) return k;
-  }
-}
-
-template <class T>
 NurbsSurface<T, 3> random_nurbs(locus_test::Rng& rng, bool clamped, bool unit_weights) {
   const int du = rng.uniform_int(1, 3), dv = rng.uniform_int(1, 3);
   const int rows = du + rng.uniform_int(1, 3), cols = dv + rng.uniform_int(1, 3);
@@ -55,8 +37,8 @@ NurbsSurface<T, 3> random_nurbs(locus_test::Rng& rng, bool clamped, bool unit_we
                        cols,
                        curve_oracle::dyadic_points<T, 3>(rng, rows * cols),
                        {},
-                       random_knots<T>(rng, rows, du, clamped),
-                       random_knots<T>(rng, cols, dv, clamped)};
+                       curve_oracle::random_knots<T>(rng, rows, du, clamped),
+                       curve_oracle::random_knots<T>(rng, cols, dv, clamped)};
   for (int k = 0; k < rows * cols; ++k)
     s.weights.push_back(unit_weights ? T(1) : static_cast<T>(rng.uniform_int(2, 8)) / T(4));
   return s;
