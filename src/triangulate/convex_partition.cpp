@@ -237,16 +237,16 @@ ConvexPartition min_convex_partition(std::span<const Vec2<T>> points,
     r.status = Status::invalid_topology;  // unreachable for a simple polygon
     return r;
   }
-  std::vector<std::array<std::uint32_t, 2>> todo{{0, n - 1}};
-  while (!todo.empty()) {
-    const auto [i, j] = todo.back();
-    todo.pop_back();
+  std::vector<std::array<std::uint32_t, 2>> pending{{0, n - 1}};
+  while (!pending.empty()) {
+    const auto [i, j] = pending.back();
+    pending.pop_back();
     const std::vector<std::uint32_t>& ch = chain[at(i, j)];
     for (std::size_t k = 0; k < ch.size(); ++k) {
       r.vertices.push_back(verts[ch[k]]);
       if (k + 1 < ch.size() && ch[k + 1] > ch[k] + 1) {
         r.diagonals.push_back({verts[ch[k]], verts[ch[k + 1]]});
-        todo.push_back({ch[k], ch[k + 1]});
+        pending.push_back({ch[k], ch[k + 1]});
       }
     }
     r.piece_ends.push_back(static_cast<std::uint32_t>(r.vertices.size()));
