@@ -150,6 +150,10 @@ class MeshCheck(Result):
     degenerate_faces: _Indices
     non_planar_faces: _Indices
 
+class MeshSlice(Result):
+    polylines: list[_Floats]
+    closed: npt.NDArray[np.bool_]
+
 class OrientationResult(Result):
     faces: _Faces
     flipped: npt.NDArray[np.bool_]
@@ -224,6 +228,9 @@ def check_mesh(
     vertices: _Points, faces: npt.ArrayLike, coplanarity_tolerance: float = 0.0
 ) -> MeshCheck: ...
 def self_intersections(vertices: _Points, faces: npt.ArrayLike) -> _Indices: ...
+def slice_mesh(
+    vertices: _Points, faces: npt.ArrayLike, normal: npt.ArrayLike, constant: float
+) -> MeshSlice: ...
 def orient_consistently(
     faces: npt.ArrayLike, vertex_count: int | None = None
 ) -> OrientationResult: ...

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSL-1.0
 // Polygon meshes: check_mesh (mesh/mesh_checks.hpp classify_mesh), self_intersections,
-// orient_consistently, the solids of mesh/platonic.hpp, read_mesh / write_mesh (io/mesh_io.hpp).
+// orient_consistently, the solids of mesh/platonic.hpp, read_mesh / write_mesh (io/mesh_io.hpp),
+// slice_mesh (intersection/plane_mesh.hpp).
 // Faces come as an (m, k) integer array (every face k vertices) or a list of index sequences
 // (polygons of any sizes >= 3); they are returned in the same two forms: an (m, k) uint32 array
 // when every face has k vertices, else a list of 1-d uint32 arrays.
 #include "common.hpp"
 
+#include <locus/intersection/plane_mesh.hpp>
 #include <locus/io/mesh_io.hpp>
 #include <locus/mesh/mesh_checks.hpp>
 #include <locus/mesh/platonic.hpp>
@@ -193,6 +195,36 @@ MeshFormat format_from(const std::string& name, const char* fn) {
   fail(fn, "invalid_input: unknown format '" + name +
                "' (obj, off, ply, ply_ascii, ply_binary_le, ply_binary_be, stl, stl_ascii, "
                "stl_binary)");
+}
+
+template <class T>
+py::object slice_out(const ArrayView& v, const Faces& f, const Vec3<double>& normal,
+                     double constant, const char* fn) {
+  const Plane3<T> plane{Vec3<T>{static_cast<T>(normal.x), static_cast<T>(normal.y),
+                                static_cast<T>(normal.z)},
+                        static_cast<T>(constant)};
+  MeshSlice<T> s;
+  {
+    py::gil_scoped_release nogil;
+    s = slice_mesh<T>(as_points<T, 3>(v), f.offsets, f.indices, plane);
+  }
+  check_status(s.status, fn, false);
+  py::list lines;
+  std::vector<std::uint8_t> closed;
+  for (Polyline3<T>& pl : s.polylines) {
+    const auto k = static_cast<py::ssize_t>(pl.vertices.size());
+    std::vector<T> flat;
+    flat.reserve(pl.vertices.size() * 3);
+    for (const Vec3<T>& q : pl.vertices) flat.insert(flat.end(), {q.x, q.y, q.z});
+    lines.append(to_numpy(std::move(flat), {k, 3}));
+    closed.push_back(pl.closed ? 1 : 0);
+  }
+  py::object out = new_result("MeshSlice", s.status);
+  out.attr("polylines") = lines;
+  out.attr("closed") =
+      to_numpy(std::move(closed), {static_cast<py::ssize_t>(s.polylines.size())}).attr("astype")(
+          "bool");
+  return out;
 }
 
 }  // namespace
@@ -447,6 +479,29 @@ Malformed files raise ValueError with 'parse_error: file:line: reason'; unreadab
       R"doc(Writes a mesh as OBJ, OFF, PLY (binary unless ply_ascii) or STL (binary unless
 stl_ascii), chosen by format or the path's extension. Numbers round-trip exactly (STL binary
 rounds to float32). NaN coordinates raise ValueError.)doc");
+  m.def(
+      "slice_mesh",
+      [](py::handle vertices, py::handle faces, py::handle normal, double constant) {
+        const char* fn = "slice_mesh";
+        const ArrayView v = read_vertices(vertices, fn);
+        const Faces f = read_faces(faces, fn, v.rows);
+        const ArrayView n = view_array(normal, fn, "normal", 1, {3});
+        Vec3<double> nd;
+        for (int k = 0; k < 3; ++k)
+          nd[k] = n.is_float ? double(static_cast<const float*>(n.array.data())[k])
+                             : static_cast<const double*>(n.array.data())[k];
+        return v.is_float ? slice_out<float>(v, f, nd, constant, fn)
+                          : slice_out<double>(v, f, nd, constant, fn);
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("normal"), py::arg("constant"),
+      R"doc(Cross-section of a mesh by the plane {X : normal . X = constant} (book 11.5.5).
+
+vertices (n, 3); faces (m, k) integers or a list of index sequences (polygon faces are split
+into fans). MeshSlice: polylines (list of (k, 3) arrays in the input's dtype), closed (bool per
+polyline: closed loops for a closed manifold mesh, open chains ending on boundary edges). Vertex
+sides are exact; a vertex on the plane counts as on the positive side. Outer loops of an
+outward-oriented solid run counter-clockwise seen from the positive side. NaN coordinates, a
+zero normal or an empty mesh raise ValueError. Cost O(n) expected.)doc");
 }
 
 }  // namespace locus::python

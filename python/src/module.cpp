@@ -88,6 +88,7 @@ for _name, _doc in [
                   "counts, boundary_edges, non_manifold_edges / _vertices, isolated_vertices, "
                   "components, face_component, self_intersections, degenerate_faces, "
                   "non_planar_faces."),
+    ("MeshSlice", "slice_mesh: polylines (list of (k, 3) arrays), closed (bool per polyline)."),
     ("OrientationResult", "orient_consistently: faces, flipped, orientable, face_component, "
                           "non_orientable_components."),
     ("RayHits", "ray_triangle_hits: hit, t, triangle, barycentric, point, front."),
