@@ -200,9 +200,9 @@ MeshFormat format_from(const std::string& name, const char* fn) {
 template <class T>
 py::object slice_out(const ArrayView& v, const Faces& f, const Vec3<double>& normal,
                      double constant, const char* fn) {
-  const Plane3<T> plane{Vec3<T>{static_cast<T>(normal.x), static_cast<T>(normal.y),
-                                static_cast<T>(normal.z)},
-                        static_cast<T>(constant)};
+  const Plane3<T> plane{
+      Vec3<T>{static_cast<T>(normal.x), static_cast<T>(normal.y), static_cast<T>(normal.z)},
+      static_cast<T>(constant)};
   MeshSlice<T> s;
   {
     py::gil_scoped_release nogil;
@@ -221,9 +221,8 @@ py::object slice_out(const ArrayView& v, const Faces& f, const Vec3<double>& nor
   }
   py::object out = new_result("MeshSlice", s.status);
   out.attr("polylines") = lines;
-  out.attr("closed") =
-      to_numpy(std::move(closed), {static_cast<py::ssize_t>(s.polylines.size())}).attr("astype")(
-          "bool");
+  out.attr("closed") = to_numpy(std::move(closed), {static_cast<py::ssize_t>(s.polylines.size())})
+                           .attr("astype")("bool");
   return out;
 }
 
