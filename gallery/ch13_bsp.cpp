@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 // Gallery, chapter 13.1 and 13.5: BSP trees of polygons (13.1-13.12) and booleans through them
-// (13.27-13.31, locus::bsp2_boolean). Every figure draws what locus::Bsp2 computes: the cells are the bounding box cut by the splitting lines of the
-// ancestors (a drawing aid, in floating point); the fragments, split points, leaf labels and
-// segment pieces are the tree's. A figure fails when the tree's status is not ok or a leaf cell
-// is labelled differently from what Bsp2::classify says of an interior point of it.
+// (13.27-13.31, locus::bsp2_boolean). Every figure draws what locus::Bsp2 computes: the cells are
+// the bounding box cut by the splitting lines of the ancestors (a drawing aid, in floating point);
+// the fragments, split points, leaf labels and segment pieces are the tree's. A figure fails when
+// the tree's status is not ok or a leaf cell is labelled differently from what Bsp2::classify says
+// of an interior point of it.
 #include "gallery.hpp"
 
 #include <locus/bsp/bsp2.hpp>
@@ -236,7 +237,6 @@ bool fig_13_12(SvgWriter& w) {
   return ok;
 }
 
-
 // 13.4-13.8: the basic construction of the sample polygon stopped after 1, 2, ... 5 nodes: the
 // cells so far, the fragments stored at the nodes (coloured by node), the fragments still in
 // the lists of the unbuilt subtrees (orange, thin), the split points (red) and the tree with its
@@ -391,8 +391,18 @@ const Operand& holed() {
   return p;
 }
 const Operand& keyhole() {
-  static const Operand p{{{0, 0}, {8, 0}, {8, 6}, {0, 6}, {0, 3}, {3, 3}, {3, 4}, {5, 4}, {5, 2},
-                          {3, 2}, {3, 3}, {0, 3}},
+  static const Operand p{{{0, 0},
+                          {8, 0},
+                          {8, 6},
+                          {0, 6},
+                          {0, 3},
+                          {3, 3},
+                          {3, 4},
+                          {5, 4},
+                          {5, 2},
+                          {3, 2},
+                          {3, 3},
+                          {0, 3}},
                          {12}};
   return p;
 }
