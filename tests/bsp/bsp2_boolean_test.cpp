@@ -258,6 +258,17 @@ TYPED_TEST(Bsp2BooleanTest, Figure13_27TwoTriangles) {
   EXPECT_TRUE(r.points.empty());
 }
 
+TYPED_TEST(Bsp2BooleanTest, OneCallFormOnAnyRange) {
+  using T = TypeParam;
+  const std::vector<Vec2<T>> a{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  const std::array<Vec2<T>, 3> b{{{2, 2}, {6, 2}, {2, 6}}};
+  const std::uint32_t ea[] = {4}, eb[] = {3};
+  const auto r = locus::bsp2_boolean(Bsp2Op::union_, a, ea, b, eb);
+  ASSERT_EQ(r.status, Status::ok);
+  EXPECT_EQ(r.loop_ends.size(), 1u);
+  EXPECT_EQ(locus::bsp2_twice_area(r), 2 * (16.0 + 8.0 - 4.0));  // overlap [2, 4]^2
+}
+
 TYPED_TEST(Bsp2BooleanTest, Figure13_28SharedEdgeOppositeIsASegment) {
   using T = TypeParam;
   const Case<T> c(ring<T>({{0, 0}, {2, 0}, {2, 2}, {0, 2}}),

@@ -22,7 +22,7 @@
 // ends, and up to those roundings in the stored points.
 // Loops: at every point (ends compared exactly) the edges in and out balance, so the edges are
 // chained into closed loops (`loop_edges`, split by `loop_ends` like ring_ends); where several
-// edges leave one point (touching vertices) the one turning most to the right is taken, which
+// edges leave one point (touching vertices) the one turning most to the left is taken, which
 // keeps touching loops apart. `closed` is false if some edge could not be chained (invalid
 // input, e.g. self-crossing rings); those edges stay in `edges` only.
 // Status: an operand whose status is empty_input or degenerate_input is the empty set;
@@ -33,6 +33,7 @@
 #include <locus/bsp/bsp2.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -44,7 +45,8 @@ enum class Bsp2Op : std::uint8_t { intersection, union_, difference, exclusive_o
 /// A directed result edge: a piece of edge `edge` of operand `operand` (0 = a, 1 = b).
 template <Real T>
 struct Bsp2BooleanEdge {
-  std::array<Bsp2End<T>, 2> end{};  ///< in the result's direction; see the header on `line`
+  std::array<Bsp2End<T>, 2> end{};  ///< in the result's direction; `line` as in the header,
+                                    ///< `vertex` always bsp2_none
   std::uint8_t operand = 0;
   bool reversed = false;  ///< direction opposite to the source edge
   std::uint32_t edge = 0;
@@ -69,14 +71,14 @@ template <Real T>
 template <Real T>
 [[nodiscard]] Bsp2BooleanResult<T> bsp2_negation(const Bsp2<T>& a);
 
-/// The one-call form: builds both trees (balanced) from points + ring_ends.
-template <Real T>
-[[nodiscard]] Bsp2BooleanResult<T> bsp2_boolean(Bsp2Op op, std::span<const Vec2<T>> a_points,
-                                                std::span<const std::uint32_t> a_ring_ends,
-                                                std::span<const Vec2<T>> b_points,
-                                                std::span<const std::uint32_t> b_ring_ends) {
-  const Bsp2<T> a(a_points, a_ring_ends), b(b_points, b_ring_ends);
-  return bsp2_boolean(op, a, b);
+/// The one-call form for any point ranges of one scalar type (core/point_range.hpp): builds
+/// both trees (balanced) from points + ring_ends.
+template <PointRange2 RA, PointRange2 RB>
+requires std::same_as<range_scalar_t<RA>, range_scalar_t<RB>>
+[[nodiscard]] auto bsp2_boolean(Bsp2Op op, const RA& a_points,
+                                std::span<const std::uint32_t> a_ring_ends, const RB& b_points,
+                                std::span<const std::uint32_t> b_ring_ends) {
+  return bsp2_boolean(op, make_bsp2(a_points, a_ring_ends), make_bsp2(b_points, b_ring_ends));
 }
 
 /// Twice the signed area enclosed by the result's edges (rounded points), in double.
