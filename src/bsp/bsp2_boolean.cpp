@@ -7,6 +7,9 @@
 #include <locus/core/crossing.hpp>
 #include <locus/core/predicates.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace locus {
@@ -74,18 +77,48 @@ template <Real T>
 void assemble(const Operands<T>& ops, Bsp2BooleanResult<T>& r) {
   const std::size_t k = r.edges.size();
   // Classes of the 2k ends (2i start, 2i+1 end of edge i) by exact equality (union-find).
+  // Only ends whose stored points are close enough to be the same exact point are compared: an
+  // input point is stored exactly; a crossing within a few units in the last place of the
+  // largest coordinate (t in [0, 1] from determinants of relative error 2 eps, then
+  // a + t (b - a) in double, rounded to T), so `reach` bounds every stored crossing's error.
   std::vector<std::uint32_t> parent(2 * k);
   std::iota(parent.begin(), parent.end(), 0u);
   const auto find = [&](std::uint32_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  for (std::uint32_t i = 0; i < 2 * k; ++i)
-    for (std::uint32_t j = 0; j < i; ++j) {
+  double largest = 0;
+  for (const Bsp2<T>* t : ops.tree)
+    for (const Vec2<T>& p : t->points())
+      largest = std::max(
+          {largest, std::abs(static_cast<double>(p.x)), std::abs(static_cast<double>(p.y))});
+  const double reach = 64.0 * static_cast<double>(std::numeric_limits<T>::epsilon()) * largest +
+                       64.0 * static_cast<double>(std::numeric_limits<T>::denorm_min());
+  const auto end_of = [&](std::uint32_t i) -> const Bsp2End<T>& {
+    return r.edges[i / 2].end[i % 2];
+  };
+  const auto radius = [&](std::uint32_t i) { return end_of(i).line == bsp2_none ? 0.0 : reach; };
+  std::vector<std::uint32_t> by_x(2 * k);
+  std::iota(by_x.begin(), by_x.end(), 0u);
+  std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t i, std::uint32_t j) {
+    return end_of(i).point.x < end_of(j).point.x;
+  });
+  for (std::size_t u = 0; u < by_x.size(); ++u) {
+    const std::uint32_t i = by_x[u];
+    const Vec2<T>& pi = end_of(i).point;
+    for (std::size_t v = u + 1; v < by_x.size(); ++v) {
+      const std::uint32_t j = by_x[v];
+      const Vec2<T>& pj = end_of(j).point;
+      const double dx = static_cast<double>(pj.x) - static_cast<double>(pi.x);
+      if (dx > radius(i) + reach) break;
+      const double near = radius(i) + radius(j);
+      if (dx > near || std::abs(static_cast<double>(pj.y) - static_cast<double>(pi.y)) > near)
+        continue;
       if (find(i) == find(j)) continue;
       const Bsp2BooleanEdge<T>&ei = r.edges[i / 2], &ej = r.edges[j / 2];
       if (ops.same_point(ei, ei.end[i % 2], ej, ej.end[j % 2])) parent[find(i)] = find(j);
     }
+  }
   std::vector<std::vector<std::uint32_t>> out(2 * k);
   for (std::uint32_t i = 0; i < k; ++i) out[find(2 * i)].push_back(i);
   std::vector<char> used(k, 0);

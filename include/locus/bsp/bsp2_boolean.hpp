@@ -27,8 +27,9 @@
 // input, e.g. self-crossing rings); those edges stay in `edges` only.
 // Status: an operand whose status is empty_input or degenerate_input is the empty set;
 // non_finite_input or invalid_input of an operand is returned (no edges). Cost: the two
-// partitions (about (n + m) x tree depth, more with splits) plus O(k^2) exact end comparisons
-// for the k result ends. docs/notes/bsp.md.
+// partitions (about (n + m) x tree depth, more with splits), then sorting the 2k result ends
+// and comparing exactly those whose rounded points lie within the crossings' rounding of each
+// other (O(k log k) unless many ends crowd one spot). docs/notes/bsp.md.
 
 #include <locus/bsp/bsp2.hpp>
 
