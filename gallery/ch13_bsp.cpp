@@ -262,7 +262,8 @@ bool construction_state(SvgWriter& w, std::uint32_t nodes) {
   const auto last = t.edges()[t.nodes().back().edge];
   w.text(Vec2d{-1, -1.8},
          "after processing <" + name(last[0]) + ", " + name(last[1]) +
-             ">; lists pending: " + std::to_string(t.pending().size()),
+             ">; lists pending: " + std::to_string(t.pending().size()) + "; splits so far: " +
+             std::to_string(t.fragments().size() + t.pending_fragments().size() - t.edges().size()),
          text_style(c::black, 0, 0));
   draw_tree(w, t, {11, 9}, 0.8, 1.2);
   return ok && !t.pending().empty();
