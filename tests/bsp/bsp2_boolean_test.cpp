@@ -350,7 +350,7 @@ TYPED_TEST(Bsp2BooleanTest, RandomStarPolygonsWithHoles) {
   locus_test::Rng rng;
   SCOPED_TRACE(rng.trace());
   int valid = 0;
-  for (int round = 0; round < 16; ++round) {
+  for (int round = 0; round < 10; ++round) {
     SCOPED_TRACE("round " + std::to_string(round));
     Polygon<T> a =
         locus_test::star_polygon<T>(rng, rng.uniform_int(5, 12), 4, 8, rng.uniform_int(0, 2));
@@ -364,10 +364,10 @@ TYPED_TEST(Bsp2BooleanTest, RandomStarPolygonsWithHoles) {
     const Case<T> c(a, b);
     ASSERT_EQ(c.ta.status(), Status::ok);
     std::vector<Vec2<T>> probes;
-    for (int i = 0; i < 40; ++i) probes.push_back(rng.vec<T, 2>(T(-13), T(13)));
+    for (int i = 0; i < 30; ++i) probes.push_back(rng.vec<T, 2>(T(-13), T(13)));
     check_areas(c, check_all(c, probes));
   }
-  EXPECT_GE(valid, 8);
+  EXPECT_GE(valid, 5);
 }
 
 TYPED_TEST(Bsp2BooleanTest, WithItselfAndNegation) {
@@ -510,7 +510,7 @@ TYPED_TEST(Bsp2BooleanTest, RandomGridShapesWithSharedEdges) {
   std::vector<Vec2<T>> probes;
   for (int i = 0; i < 9; ++i)
     for (int j = 0; j < 9; ++j) probes.push_back({T(i) / 2 + T(0.125), T(j) / 2 + T(0.375)});
-  for (int round = 0; round < 60; ++round) {
+  for (int round = 0; round < 40; ++round) {
     SCOPED_TRACE("round " + std::to_string(round));
     const Case<T> c(grid_shape<T>(rng), grid_shape<T>(rng));
     check_areas(c, check_all(c, probes));
