@@ -43,7 +43,7 @@ namespace locus {
 
 enum class Bsp2Op : std::uint8_t { intersection, union_, difference, exclusive_or };
 
-/// A directed result edge: a piece of edge `edge` of operand `operand` (0 = a, 1 = b).
+/// A directed result edge: a piece of edges()[edge] of the tree of `operand` (0 = a, 1 = b).
 template <Real T>
 struct Bsp2BooleanEdge {
   std::array<Bsp2End<T>, 2> end{};  ///< in the result's direction; `line` as in the header,
