@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
-// Gallery, chapter 13.1: BSP trees of polygons (13.1-13.3, 13.9-13.12). Every figure draws what
-// locus::Bsp2 computes: the cells are the bounding box cut by the splitting lines of the
-// ancestors (a drawing aid, in floating point); the fragments, split points, leaf labels and
-// segment pieces are the tree's. A figure fails when the tree's status is not ok or a leaf cell
-// is labelled differently from what Bsp2::classify says of an interior point of it.
+// Gallery, chapter 13.1 and 13.5: BSP trees of polygons (13.1-13.12) and booleans through them
+// (13.27-13.31, locus::bsp2_boolean). Every figure draws what locus::Bsp2 computes: the cells are
+// the bounding box cut by the splitting lines of the ancestors (a drawing aid, in floating point);
+// the fragments, split points, leaf labels and segment pieces are the tree's. A figure fails when
+// the tree's status is not ok or a leaf cell is labelled differently from what Bsp2::classify says
+// of an interior point of it.
 #include "gallery.hpp"
 
 #include <locus/bsp/bsp2.hpp>
+#include <locus/bsp/bsp2_boolean.hpp>
 
 #include <cstdint>
 #include <string>
@@ -61,6 +63,7 @@ Vec2d centroid(const std::vector<Vec2d>& v) {
 bool draw_cells(SvgWriter& w, const Bsp2<double>& t, std::int32_t node,
                 const std::vector<Vec2d>& cell) {
   if (cell.size() < 3) return true;
+  if (node == bsp2_pending) return true;  // a subtree not built yet (13.4-13.8)
   if (node < 0) {
     const bool in = node == bsp2_inside;
     if (in) w.polygon(cell, filled(c::blue, 0.18, 0.5));
@@ -105,6 +108,11 @@ void draw_fragments(SvgWriter& w, const Bsp2<double>& t) {
 void draw_tree(SvgWriter& w, const Bsp2<double>& t, const Vec2d& at, double dx, double dy) {
   int next = 0;
   const auto place = [&](const auto& self, std::int32_t node, int depth) -> Vec2d {
+    if (node == bsp2_pending) {
+      const Vec2d p = at + Vec2d{dx * next++, -dy * depth};
+      w.text(p, "list", text_style(c::orange, 0, -4, SvgAnchor::middle, 12));
+      return p;
+    }
     if (node < 0) {
       const Vec2d p = at + Vec2d{dx * next++, -dy * depth};
       w.text(p, node == bsp2_inside ? "in" : "out",
@@ -229,6 +237,219 @@ bool fig_13_12(SvgWriter& w) {
   return ok;
 }
 
+// 13.4-13.8: the basic construction of the sample polygon stopped after 1, 2, ... 5 nodes: the
+// cells so far, the fragments stored at the nodes (coloured by node), the fragments still in
+// the lists of the unbuilt subtrees (orange, thin), the split points (red) and the tree with its
+// pending lists.
+bool construction_state(SvgWriter& w, std::uint32_t nodes) {
+  const Sample& s = sample();
+  Bsp2Options o;
+  o.split = Bsp2Split::first_edge;
+  o.max_nodes = nodes;
+  // Bsp2 starts each ring at its lowest vertex, so the first splitter is <0, 1> here (the book's
+  // list happens to start at <9, 0>); the order is the book's: front lists before back lists.
+  const Bsp2<double> t(s.points, s.ends, o);
+  if (t.status() != Status::ok || t.nodes().size() != nodes) return false;
+  const auto name = [](std::uint32_t i) { return std::to_string(i); };
+  const bool ok = draw_cells(w, t, t.root(), box({-1, -1}, {9, 9}));
+  draw_fragments(w, t);
+  for (const auto& f : t.pending_fragments()) {
+    w.arrow(f.end[0].point, f.end[1].point, pen(c::orange, 1.2));
+    for (const auto& e : f.end)
+      if (e.line != bsp2_none) w.point(e.point, dot(c::red, 4.5));
+  }
+  for (std::size_t i = 0; i < s.ends[0]; ++i) label(w, s.points[i], std::to_string(i));
+  const auto last = t.edges()[t.nodes().back().edge];
+  w.text(Vec2d{-1, -1.8},
+         "after processing <" + name(last[0]) + ", " + name(last[1]) +
+             ">; lists pending: " + std::to_string(t.pending().size()) + "; splits so far: " +
+             std::to_string(t.fragments().size() + t.pending_fragments().size() - t.edges().size()),
+         text_style(c::black, 0, 0));
+  draw_tree(w, t, {11, 9}, 0.8, 1.2);
+  return ok && !t.pending().empty();
+}
+bool fig_13_4(SvgWriter& w) { return construction_state(w, 1); }
+bool fig_13_5(SvgWriter& w) { return construction_state(w, 2); }
+bool fig_13_6(SvgWriter& w) { return construction_state(w, 3); }
+bool fig_13_7(SvgWriter& w) { return construction_state(w, 4); }
+bool fig_13_8(SvgWriter& w) { return construction_state(w, 5); }
+
+// Booleans (13.27-13.31): operands drawn as outlines, result edges as arrows, the result's
+// loops filled (even-odd), lower-dimensional parts in red.
+struct Operand {
+  std::vector<Vec2d> points;
+  std::vector<std::uint32_t> ends;
+  Bsp2<double> tree() const { return Bsp2<double>(points, ends); }
+};
+
+std::vector<std::vector<Vec2d>> rings_of(const Operand& p, const Vec2d& shift) {
+  std::vector<std::vector<Vec2d>> out;
+  std::uint32_t b = 0;
+  for (const std::uint32_t e : p.ends) {
+    out.emplace_back();
+    for (std::uint32_t i = b; i < e; ++i) out.back().push_back(p.points[i] + shift);
+    b = e;
+  }
+  return out;
+}
+
+void outline(SvgWriter& w, const Operand& p, const Vec2d& shift, const char* col, bool fill) {
+  const auto r = rings_of(p, shift);
+  const std::vector<std::vector<Vec2d>> holes(r.begin() + 1, r.end());
+  w.polygon(r[0], holes, fill ? filled(col, 0.15, 1.6) : pen(col, 1.6));
+}
+
+void draw_result(SvgWriter& w, const Bsp2BooleanResult<double>& r, const Vec2d& shift,
+                 int operand = -1) {
+  if (operand < 0) {
+    std::vector<std::vector<Vec2d>> loops;
+    std::uint32_t b = 0;
+    for (const std::uint32_t e : r.loop_ends) {
+      loops.emplace_back();
+      for (std::uint32_t i = b; i < e; ++i)
+        loops.back().push_back(r.edges[r.loop_edges[i]].end[0].point + shift);
+      b = e;
+    }
+    if (!loops.empty()) {
+      const std::vector<std::vector<Vec2d>> rest(loops.begin() + 1, loops.end());
+      w.polygon(loops[0], rest, filled(c::gray, 0.45, 0));
+    }
+  }
+  for (const auto& e : r.edges)
+    if (operand < 0 || e.operand == operand)
+      w.arrow(e.end[0].point + shift, e.end[1].point + shift,
+              pen(e.operand == 0 ? c::blue : c::green, 2.4));
+  for (const auto& s : r.segments)
+    w.segment(s.end[0].point + shift, s.end[1].point + shift, pen(c::red, 3.5));
+  for (const auto& p : r.points) w.point(p + shift, dot(c::red, 6));
+}
+
+void caption(SvgWriter& w, const Vec2d& at, const std::string& s) {
+  w.text(at, s, text_style(c::black, 0, 0, SvgAnchor::middle, 13));
+}
+
+// 13.27: two triangles; the edges of A inside B; the edges of B inside A; their union is the
+// boundary of A n B.
+bool fig_13_27(SvgWriter& w) {
+  const Operand a{{{0, 0}, {6, 0}, {3, 6}}, {3}}, b{{{0, 4}, {3, -2}, {6, 4}}, {3}};
+  const auto ta = a.tree(), tb = b.tree();
+  const auto r = bsp2_boolean(Bsp2Op::intersection, ta, tb);
+  if (r.status != Status::ok || !r.closed || r.loop_ends.size() != 1) return false;
+  const char* names[] = {"(a) A and B", "(b) edges of A inside B", "(c) edges of B inside A",
+                         "(d) A n B"};
+  for (int k = 0; k < 4; ++k) {
+    const Vec2d s{8.0 * k, 0};
+    outline(w, a, s, k == 0 ? c::blue : c::light, false);
+    outline(w, b, s, k == 0 ? c::green : c::light, false);
+    if (k == 1) draw_result(w, r, s, 0);
+    if (k == 2) draw_result(w, r, s, 1);
+    if (k == 3) draw_result(w, r, s);
+    caption(w, s + Vec2d{3, -3}, names[k]);
+  }
+  return true;
+}
+
+// 13.28: two squares sharing an edge walked in opposite directions: the book's method reports
+// no intersection (a); the true intersection is the shared edge (b, bsp2_boolean's segments).
+bool fig_13_28(SvgWriter& w) {
+  const Operand a{{{0, 0}, {3, 0}, {3, 3}, {0, 3}}, {4}}, b{{{3, 0}, {6, 0}, {6, 3}, {3, 3}}, {4}};
+  const auto ta = a.tree(), tb = b.tree();
+  const auto r = bsp2_boolean(Bsp2Op::intersection, ta, tb);
+  if (r.status != Status::ok || !r.edges.empty() || r.segments.size() != 1) return false;
+  for (const auto& ring : {std::pair{a, c::blue}, std::pair{b, c::green}})
+    for (std::size_t i = 0; i < 4; ++i)
+      w.arrow(ring.first.points[i], ring.first.points[(i + 1) % 4], pen(ring.second, 2));
+  caption(w, {3, -1.2}, "(a) regularised A n B: no edges");
+  const Vec2d s{9, 0};
+  outline(w, a, s, c::light, false);
+  outline(w, b, s, c::light, false);
+  draw_result(w, r, s);
+  caption(w, s + Vec2d{3, -1.2}, "(b) the true set: a segment");
+  return true;
+}
+
+// 13.29: two polygons whose true intersection is a square plus two segments along which they
+// only touch.
+bool fig_13_29(SvgWriter& w) {
+  const Operand a{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {4}},
+      b{{{1, 0}, {3, 0}, {3, 3}, {0, 3}, {0, 2}, {2, 2}, {2, 1}, {1, 1}}, {8}};
+  const auto ta = a.tree(), tb = b.tree();
+  const auto r = bsp2_boolean(Bsp2Op::intersection, ta, tb);
+  if (r.status != Status::ok || r.loop_ends.size() != 1 || r.segments.size() < 2) return false;
+  outline(w, a, {0, 0}, c::blue, true);
+  outline(w, b, {0, 0}, c::green, true);
+  caption(w, {1.5, -0.8}, "(a) A and B");
+  const Vec2d s{5, 0};
+  outline(w, a, s, c::light, false);
+  outline(w, b, s, c::light, false);
+  draw_result(w, r, s);
+  caption(w, s + Vec2d{1.5, -0.8}, "(b) A n B: a square and two segments");
+  return true;
+}
+
+const Operand& holed() {
+  static const Operand p{{{0, 0}, {8, 0}, {8, 6}, {0, 6}, {3, 2}, {3, 4}, {5, 4}, {5, 2}}, {4, 8}};
+  return p;
+}
+const Operand& keyhole() {
+  static const Operand p{{{0, 0},
+                          {8, 0},
+                          {8, 6},
+                          {0, 6},
+                          {0, 3},
+                          {3, 3},
+                          {3, 4},
+                          {5, 4},
+                          {5, 2},
+                          {3, 2},
+                          {3, 3},
+                          {0, 3}},
+                         {12}};
+  return p;
+}
+
+// 13.30: a polygon with a hole as two rings (a) and as one keyhole ring (b): both trees' cells,
+// which must classify every sample point alike.
+bool fig_13_30(SvgWriter& w) {
+  const auto t1 = holed().tree(), t2 = keyhole().tree();
+  if (t1.status() != Status::ok || t2.status() != Status::ok) return false;
+  bool ok = draw_cells(w, t1, t1.root(), box({-1, -1}, {9, 7}));
+  std::vector<Vec2d> cell2 = box({-1, -1}, {9, 7});
+  for (auto& p : cell2) p = p + Vec2d{11, 0};
+  // The second tree is drawn shifted: its cells come from a shifted copy of the keyhole.
+  Operand k2 = keyhole();
+  for (auto& p : k2.points) p = p + Vec2d{11, 0};
+  const auto t3 = k2.tree();
+  ok = ok && draw_cells(w, t3, t3.root(), cell2);
+  for (const auto& ring : rings_of(holed(), {0, 0})) w.polygon(ring, pen(c::black, 2));
+  const auto& kp = k2.points;
+  for (std::size_t i = 0; i < kp.size(); ++i)
+    w.arrow(kp[i], kp[(i + 1) % kp.size()], pen(c::black, 1.6));
+  for (double x = -0.7; x < 9; x += 0.5)
+    for (double y = -0.7; y < 7; y += 0.5) ok = ok && t1.classify({x, y}) == t2.classify({x, y});
+  caption(w, {4, -1.8}, "(a) two rings");
+  caption(w, {15, -1.8}, "(b) one keyhole ring");
+  return ok;
+}
+
+// 13.31: a rectangle intersected with the keyhole polygon; the bridge inside the rectangle is
+// kept in both directions (a slit of zero width).
+bool fig_13_31(SvgWriter& w) {
+  const Operand rect{{{-1, 1}, {6, 1}, {6, 5}, {-1, 5}}, {4}};
+  const auto ta = rect.tree(), tb = keyhole().tree();
+  const auto r = bsp2_boolean(Bsp2Op::intersection, ta, tb);
+  if (r.status != Status::ok || !r.closed) return false;
+  outline(w, rect, {0, 0}, c::blue, false);
+  const auto& kp = keyhole().points;
+  for (std::size_t i = 0; i < kp.size(); ++i)
+    w.segment(kp[i], kp[(i + 1) % kp.size()], pen(c::green, 1.4));
+  const Vec2d s{11, 0};
+  draw_result(w, r, s);
+  caption(w, {4, -1.2}, "rectangle and keyhole");
+  caption(w, s + Vec2d{3, -1.2}, "their intersection");
+  return true;
+}
+
 }  // namespace
 
 std::vector<Figure> chapter13_bsp_figures() {
@@ -236,10 +457,20 @@ std::vector<Figure> chapter13_bsp_figures() {
       {"13.1", "Bsp2 (balanced), Bsp2::classify", fig_13_1},
       {"13.2", "Bsp2 (first_edge): a node's coincident fragments", fig_13_2},
       {"13.3", "the input of the BSP figures", fig_13_3},
+      {"13.4", "Bsp2 (first_edge, max_nodes 1): construction state", fig_13_4},
+      {"13.5", "Bsp2 (first_edge, max_nodes 2): construction state", fig_13_5},
+      {"13.6", "Bsp2 (first_edge, max_nodes 3): construction state", fig_13_6},
+      {"13.7", "Bsp2 (first_edge, max_nodes 4): construction state", fig_13_7},
+      {"13.8", "Bsp2 (first_edge, max_nodes 5): construction state", fig_13_8},
       {"13.9", "Bsp2 (first_edge): fragments, split points, tree", fig_13_9},
       {"13.10", "Bsp2 (first_edge) of a convex polygon", fig_13_10},
       {"13.11", "Bsp2 (balanced) of a convex polygon", fig_13_11},
       {"13.12", "Bsp2::partition", fig_13_12},
+      {"13.27", "bsp2_boolean (intersection): the pieces of each operand", fig_13_27},
+      {"13.28", "bsp2_boolean (intersection): shared opposite edge as a segment", fig_13_28},
+      {"13.29", "bsp2_boolean (intersection): region plus segments", fig_13_29},
+      {"13.30", "Bsp2 of a polygon with a hole and of its keyhole", fig_13_30},
+      {"13.31", "bsp2_boolean (intersection): rectangle and keyhole", fig_13_31},
   };
 }
 

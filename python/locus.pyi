@@ -335,7 +335,8 @@ def ray_torus_hits(
     minor_radius: float,
 ) -> SurfaceHits: ...
 
-# Convex partition and the BSP tree of a polygon (triangulate/convex_partition.hpp, bsp/bsp2.hpp)
+# Convex partition and the BSP tree of a polygon (triangulate/convex_partition.hpp, bsp/bsp2.hpp,
+# bsp/bsp2_boolean.hpp)
 class ConvexPartitionResult(Result):
     points: _Floats
     vertices: _Indices
@@ -349,6 +350,14 @@ class BspPartition(Result):
     location: npt.NDArray[np.int8]
     segment: _Indices
 
+class BspBoolean(Result):
+    edges: _Floats
+    operand: npt.NDArray[np.uint8]
+    loops: list[_Floats]
+    closed: bool
+    segments: _Floats
+    points: _Floats
+
 def convex_partition(
     outer: _Points, holes: list[_Points] | None = None, method: str = "hertel_mehlhorn"
 ) -> ConvexPartitionResult: ...
@@ -358,6 +367,9 @@ def bsp_classify(
 def bsp_partition(
     polygon_rings: _Points | list[_Points], segments: npt.ArrayLike
 ) -> BspPartition: ...
+def bsp_boolean(
+    op: str, a: _Points | list[_Points], b: _Points | list[_Points]
+) -> BspBoolean: ...
 def bspline_surface_insert_knot(
     control: npt.ArrayLike,
     knots_u: npt.ArrayLike,

@@ -99,6 +99,7 @@ for _name, _doc in [
                     "multiplicity, on_surface."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
     ("BspPartition", "bsp_partition: pieces (k, 2, 2), location, segment."),
+    ("BspBoolean", "bsp_boolean: edges (k, 2, 2), operand, loops, closed, segments, points."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make

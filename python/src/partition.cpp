@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 // convex_partition (triangulate/convex_partition.hpp) and the BSP tree of a polygon with holes:
-// bsp_classify, bsp_partition (bsp/bsp2.hpp). Polygons are given as a list of rings (ring 0 the
-// outer boundary, then the holes, any orientation), concatenated here into the library's points +
-// ring_ends form; float32 runs the float instantiation only when every array is float32.
-// Also bspline_surface_insert_knot (curves/bspline_surface.hpp), registered here with them.
+// bsp_classify, bsp_partition (bsp/bsp2.hpp), bsp_boolean (bsp/bsp2_boolean.hpp). Polygons are
+// given as a list of rings (ring 0 the outer boundary, then the holes, any orientation),
+// concatenated here into the library's points + ring_ends form; float32 runs the float
+// instantiation only when every array is float32. Also bspline_surface_insert_knot
+// (curves/bspline_surface.hpp), registered here with them.
 #include "common.hpp"
 
 #include <locus/bsp/bsp2.hpp>
+#include <locus/bsp/bsp2_boolean.hpp>
 #include <locus/curves/bspline_surface.hpp>
 #include <locus/triangulate/convex_partition.hpp>
 
@@ -251,6 +253,87 @@ points rounded, every decision exact), `location` (int8 per piece: 1 inside, -1 
 boundary in the opposite direction) and `segment` (uint32: the input segment of each piece).
 Raises ValueError for empty or invalid rings, a zero-area outer ring, NaN/Inf coordinates and
 a segment with equal ends.)doc");
+
+  m.def(
+      "bsp_boolean",
+      [](const std::string& op_name, py::handle a_rings, py::handle b_rings) -> py::object {
+        const char* fn = "bsp_boolean";
+        Bsp2Op op = Bsp2Op::intersection;
+        if (op_name == "union")
+          op = Bsp2Op::union_;
+        else if (op_name == "difference")
+          op = Bsp2Op::difference;
+        else if (op_name == "xor")
+          op = Bsp2Op::exclusive_or;
+        else if (op_name != "intersection")
+          fail(fn,
+               "op must be 'intersection', 'union', 'difference' or 'xor', not '" + op_name + "'");
+        const Rings ra = read_rings(a_rings, fn, "a"), rb = read_rings(b_rings, fn, "b");
+        auto run = [&]<class T>() -> py::object {
+          std::vector<Vec2<T>> pa, pb;
+          std::vector<std::uint32_t> ea, eb;
+          concat_rings<T>(ra, pa, ea);
+          concat_rings<T>(rb, pb, eb);
+          for (const Vec2<T>& v : pa)
+            if (!is_finite(v)) fail(fn, "non_finite_input: a has a NaN or infinite coordinate");
+          for (const Vec2<T>& v : pb)
+            if (!is_finite(v)) fail(fn, "non_finite_input: b has a NaN or infinite coordinate");
+          Bsp2BooleanResult<T> r;
+          {
+            py::gil_scoped_release nogil;
+            const Bsp2<T> ta{std::span<const Vec2<T>>(pa), std::span<const std::uint32_t>(ea)};
+            const Bsp2<T> tb{std::span<const Vec2<T>>(pb), std::span<const std::uint32_t>(eb)};
+            r = bsp2_boolean(op, ta, tb);
+          }
+          check_status(r.status, fn);
+          std::vector<T> edges, segs, pts;
+          std::vector<std::uint8_t> operand;
+          for (const auto& e : r.edges) {
+            for (const auto& x : e.end) edges.insert(edges.end(), {x.point.x, x.point.y});
+            operand.push_back(e.operand);
+          }
+          for (const auto& e : r.segments)
+            for (const auto& x : e.end) segs.insert(segs.end(), {x.point.x, x.point.y});
+          for (const auto& p : r.points) pts.insert(pts.end(), {p.x, p.y});
+          py::list loops;
+          std::uint32_t begin = 0;
+          for (const std::uint32_t end : r.loop_ends) {
+            std::vector<T> ring;
+            for (std::uint32_t i = begin; i < end; ++i) {
+              const Vec2<T>& v = r.edges[r.loop_edges[i]].end[0].point;
+              ring.insert(ring.end(), {v.x, v.y});
+            }
+            loops.append(to_numpy(std::move(ring), {static_cast<py::ssize_t>(end - begin), 2}));
+            begin = end;
+          }
+          py::object out = new_result("BspBoolean", r.status);
+          const auto k = static_cast<py::ssize_t>(operand.size());
+          out.attr("edges") = to_numpy(std::move(edges), {k, 2, 2});
+          out.attr("operand") = to_numpy(std::move(operand), {k});
+          out.attr("loops") = loops;
+          out.attr("closed") = r.closed;
+          const auto ns = static_cast<py::ssize_t>(r.segments.size());
+          out.attr("segments") = to_numpy(std::move(segs), {ns, 2, 2});
+          const auto np = static_cast<py::ssize_t>(r.points.size());
+          out.attr("points") = to_numpy(std::move(pts), {np, 2});
+          return out;
+        };
+        return ra.all_float && rb.all_float ? run.template operator()<float>()
+                                            : run.template operator()<double>();
+      },
+      py::arg("op"), py::arg("a"), py::arg("b"),
+      R"doc(The boolean of two polygons with holes through their BSP trees (book section 13.5).
+
+op: 'intersection', 'union', 'difference' (a minus b) or 'xor'; a, b: an (m, 2) ring or a list
+of rings (ring 0 outer, then holes, any orientation), as bsp_classify. BspBoolean: `edges`
+((k, 2, 2), the directed boundary edges of the regularised result, interior on the left;
+crossing points rounded, every decision exact), `operand` (uint8: 0 from a, 1 from b),
+`loops` (list of (m, 2) arrays: the edges chained into closed loops, counter-clockwise outer
+boundaries and clockwise holes), `closed` (every edge is in a loop), and for an intersection
+the lower-dimensional parts of the true set intersection: `segments` ((s, 2, 2), edges shared
+with opposite directions) and `points` ((p, 2), vertices where a and b only touch). An empty
+or zero-area ring list is the empty set. Raises ValueError for NaN/Inf, invalid rings or an
+unknown op (bsp/bsp2_boolean.hpp).)doc");
 
   m.def(
       "bspline_surface_insert_knot",

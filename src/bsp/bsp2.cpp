@@ -90,6 +90,8 @@ Status Bsp2<T>::build(std::span<const Vec2<T>> points, std::span<const std::uint
   edges_.clear();
   nodes_.clear();
   fragments_.clear();
+  pending_.clear();
+  pending_fragments_.clear();
   root_ = bsp2_outside;
   depth_ = 0;
   std::vector<std::uint32_t> verts, ends;
@@ -133,6 +135,14 @@ Status Bsp2<T>::build(std::span<const Vec2<T>> points, std::span<const std::uint
     };
     if (task.frags.empty()) {
       link(task.front ? bsp2_inside : bsp2_outside);
+      continue;
+    }
+    if (options.max_nodes != 0 && nodes_.size() >= options.max_nodes) {
+      pending_.push_back({task.parent, task.front,
+                          static_cast<std::uint32_t>(pending_fragments_.size()),
+                          static_cast<std::uint32_t>(task.frags.size())});
+      pending_fragments_.insert(pending_fragments_.end(), task.frags.begin(), task.frags.end());
+      link(bsp2_pending);
       continue;
     }
     depth_ = std::max(depth_, task.depth);

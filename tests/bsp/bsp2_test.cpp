@@ -357,6 +357,43 @@ TYPED_TEST(Bsp2Test, FigureSplitsAndCoincidentPieces) {
   EXPECT_EQ(tree.classify({2, T(0.5)}), Side::inside);
 }
 
+TYPED_TEST(Bsp2Test, ConstructionStatesArePrefixes) {
+  using T = TypeParam;
+  // max_nodes stops the construction (figures 13.4-13.8): the nodes built so far are those of
+  // the full tree in the same order, and the pending lists hold every fragment not yet stored,
+  // each edge's pending and stored pieces covering it once (their count adds up with the splits
+  // still to come).
+  locus_test::Rng rng(5);
+  const Polygon<T> p = locus_test::star_polygon<T>(rng, 12, 2, 6, 1);
+  for (const Bsp2Split split : {Bsp2Split::first_edge, Bsp2Split::balanced}) {
+    locus::Bsp2Options o;
+    o.split = split;
+    const Bsp2<T> full(p.points, p.ends, o);
+    ASSERT_EQ(full.status(), Status::ok);
+    EXPECT_TRUE(full.pending().empty());
+    for (std::uint32_t k = 1; k <= full.nodes().size(); ++k) {
+      o.max_nodes = k;
+      const Bsp2<T> part(p.points, p.ends, o);
+      ASSERT_EQ(part.nodes().size(), k);
+      for (std::uint32_t i = 0; i < k; ++i) {
+        EXPECT_EQ(part.nodes()[i].edge, full.nodes()[i].edge);
+        EXPECT_EQ(part.nodes()[i].count, full.nodes()[i].count);
+      }
+      EXPECT_EQ(part.pending().empty(), k == full.nodes().size());
+      std::size_t pending = 0;
+      for (const auto& l : part.pending()) {
+        pending += l.count;
+        const std::int32_t child = l.parent < 0 ? part.root()
+                                   : l.front    ? part.nodes()[std::size_t(l.parent)].front
+                                                : part.nodes()[std::size_t(l.parent)].back;
+        EXPECT_EQ(child, locus::bsp2_pending);
+      }
+      EXPECT_EQ(pending, part.pending_fragments().size());
+      EXPECT_LE(part.fragments().size() + pending, full.fragments().size());
+    }
+  }
+}
+
 TYPED_TEST(Bsp2Test, BadInput) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN();

@@ -62,6 +62,16 @@ struct Bsp2Node {
   std::uint32_t first = 0, count = 0;  ///< coincident fragments: fragments()[first, first + count)
 };
 inline constexpr std::int32_t bsp2_inside = -1, bsp2_outside = -2;
+/// A child not yet built when Bsp2Options::max_nodes stopped the construction.
+inline constexpr std::int32_t bsp2_pending = -3;
+
+/// Fragments still to be processed below child `front ? front : back` of node `parent` (-1:
+/// the root) when the construction stopped: pending_fragments()[first, first + count).
+struct Bsp2PendingList {
+  std::int32_t parent = -1;
+  bool front = true;
+  std::uint32_t first = 0, count = 0;
+};
 
 enum class Bsp2Split : std::uint8_t { first_edge, balanced };
 
@@ -69,6 +79,9 @@ struct Bsp2Options {
   Bsp2Split split = Bsp2Split::balanced;
   std::uint32_t sample = 16;     ///< candidates per node (balanced)
   std::uint32_t split_cost = 2;  ///< weight of one split against one unit of imbalance
+  /// Stop after this many nodes (0: no limit), leaving bsp2_pending children and pending()
+  /// lists: the state of the construction (figures 13.4-13.8), classified as outside there.
+  std::uint32_t max_nodes = 0;
 };
 
 enum class Bsp2Location : std::uint8_t { inside, outside, coincident_same, coincident_opposite };
@@ -114,6 +127,11 @@ class Bsp2 {
     return edges_;
   }
   [[nodiscard]] std::span<const Vec2<T>> points() const noexcept { return points_; }
+  /// Lists left unprocessed by Bsp2Options::max_nodes (in the order they would be processed).
+  [[nodiscard]] std::span<const Bsp2PendingList> pending() const noexcept { return pending_; }
+  [[nodiscard]] std::span<const Bsp2Fragment<T>> pending_fragments() const noexcept {
+    return pending_fragments_;
+  }
   /// Longest root-to-leaf path (in nodes); fragments().size() - edges().size() splits were made.
   [[nodiscard]] std::uint32_t depth() const noexcept { return depth_; }
 
@@ -127,6 +145,8 @@ class Bsp2 {
   std::vector<std::array<std::uint32_t, 2>> edges_;
   std::vector<Bsp2Node> nodes_;
   std::vector<Bsp2Fragment<T>> fragments_;
+  std::vector<Bsp2PendingList> pending_;
+  std::vector<Bsp2Fragment<T>> pending_fragments_;
 };
 
 /// classify(p, tree) = tree.classify(p).
