@@ -3,6 +3,7 @@
 // derivation in docs/notes/sat3.md). Everything is computed in double (float input is exact in it).
 
 #include <locus/core/crossing.hpp>
+#include <locus/core/error_free.hpp>
 #include <locus/core/exact_sum.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/intersection/convex_polygon2.hpp>
@@ -40,6 +41,44 @@ int sign_det_diff(const V& p0, const V& p1, const V& q0, const V& q1, const V& x
                                     (wx == 0 && wy == 0 && wz == 0) ||
                                     (dx == 0 && dy == 0 && dz == 0)))
     return 0;  // a zero vector (differences of equal doubles are exactly zero)
+  // Structural zeros (x - y along p1 - p0 or q1 - q0 by construction: the axis' own edge or face
+  // vertices) are frequent and would all reach the exact stage.
+  const auto in2 = [](const V& a, const V& b, const V& c) { return a == b || a == c; };
+  if ((in2(x, p0, p1) && in2(y, p0, p1)) || (in2(x, q0, q1) && in2(y, q0, q1))) return 0;
+  if (p0 == q0 && (in2(x, p0, p1) || x == q1) && (in2(y, p0, p1) || y == q1)) return 0;
+  // Stage B: the differences split exactly (two_sum) into h + l; the 6 leading products h h h
+  // are formed exactly (two_product twice, the second error rounded) and summed with TwoSum; the
+  // terms with an l (at most about 3 eps of their product) are rounded. The error is below
+  // 120 u^2 perm (u = 2^-53), so 512 u^2 perm decides every case but near-zero determinants.
+  if (perm > 0x1p-600 && perm < 0x1p600) {
+    double uh[3], ul[3], wh[3], wl[3], dh[3], dl[3];
+    for (int k = 0; k < 3; ++k) {
+      two_sum(p1[k], -p0[k], uh[k], ul[k]);
+      two_sum(q1[k], -q0[k], wh[k], wl[k]);
+      two_sum(x[k], -y[k], dh[k], dl[k]);
+    }
+    static constexpr int order[6][4] = {{0, 1, 2, 1}, {1, 2, 0, 1}, {2, 0, 1, 1},
+                                        {0, 2, 1, -1}, {1, 0, 2, -1}, {2, 1, 0, -1}};
+    double hi = 0, err = 0, small = 0;
+    bool all_exact = true;  // no tail anywhere: hi is the exact value (small integers, ties)
+    for (int k = 0; k < 3; ++k) all_exact = all_exact && ul[k] == 0 && wl[k] == 0 && dl[k] == 0;
+    for (const auto& o : order) {
+      const double a = uh[o[0]], al = ul[o[0]], b = wh[o[1]], bl = wl[o[1]], c = dh[o[2]],
+                   cl = dl[o[2]], sg = o[3];
+      double pr, pe, q, qe, t, te;
+      two_product(a, b, pr, pe);
+      two_product(pr, c, q, qe);
+      two_sum(hi, sg * q, t, te);
+      hi = t;
+      err += te;
+      small += sg * ((qe + pe * c) + (al * (b + bl) + a * bl) * (c + cl) + a * b * cl);
+      all_exact = all_exact && pe == 0 && qe == 0 && te == 0;
+    }
+    if (all_exact) return hi > 0 ? 1 : (hi < 0 ? -1 : 0);
+    const double v = hi + (err + small);
+    const double bound_b = 512 * 0x1p-106 * perm;
+    if (std::abs(v) > bound_b) return v > 0 ? 1 : -1;
+  }
   const double pu[3][2] = {{p1.x, p0.x}, {p1.y, p0.y}, {p1.z, p0.z}};
   const double pw[3][2] = {{q1.x, q0.x}, {q1.y, q0.y}, {q1.z, q0.z}};
   const double pd[3][2] = {{x.x, y.x}, {x.y, y.y}, {x.z, y.z}};
