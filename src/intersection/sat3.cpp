@@ -24,6 +24,8 @@ using V2 = Vec2<double>;
 
 /// Exact sign of det[p1 - p0, q1 - q0, x - y]: orient3d's stage-A filter (the same three rounded
 /// differences per product), then the 48 monomials of the expanded determinant, summed exactly.
+}  // namespace
+
 int sign_det_diff(const V& p0, const V& p1, const V& q0, const V& q1, const V& x,
                   const V& y) noexcept {
   const double ux = p1.x - p0.x, uy = p1.y - p0.y, uz = p1.z - p0.z;
@@ -95,6 +97,8 @@ int sign_det_diff(const V& p0, const V& p1, const V& q0, const V& q1, const V& x
         }
   return exact_sign_of_sum(std::span<const ExactMonomial>(terms, 48));
 }
+
+namespace {
 
 [[nodiscard]] V2 drop(const V& p, int k) noexcept {
   return k == 0 ? V2{p.y, p.z} : (k == 1 ? V2{p.z, p.x} : V2{p.x, p.y});

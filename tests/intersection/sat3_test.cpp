@@ -25,6 +25,8 @@
 
 #include "support/typed.hpp"
 
+#include <gmpxx.h>
+
 namespace {
 
 using namespace locus;
@@ -114,6 +116,42 @@ double plane_distance(const std::vector<Vec3<double>>& v, const std::vector<Tri>
 template <class T>
 class Sat3 : public ::testing::Test {};
 TYPED_TEST_SUITE(Sat3, locus_test::RealTypes);
+
+TEST(Sat3Predicate, SignDetDiffMatchesGmp) {
+  Rng rng(17);
+  SCOPED_TRACE(rng.trace());
+  using D = Vec3<double>;
+  const auto exact = [](const D& p0, const D& p1, const D& q0, const D& q1, const D& x,
+                        const D& y) {
+    mpq_class u[3], w[3], d[3];
+    for (int k = 0; k < 3; ++k) {
+      u[k] = mpq_class(p1[k]) - mpq_class(p0[k]);
+      w[k] = mpq_class(q1[k]) - mpq_class(q0[k]);
+      d[k] = mpq_class(x[k]) - mpq_class(y[k]);
+    }
+    const mpq_class det = u[0] * (w[1] * d[2] - w[2] * d[1]) + u[1] * (w[2] * d[0] - w[0] * d[2]) +
+                          u[2] * (w[0] * d[1] - w[1] * d[0]);
+    return sgn(det);
+  };
+  for (int it = 0; it < 400; ++it) {
+    const D p0 = rng.vec<double, 3>(-1, 1), p1 = rng.vec<double, 3>(-1, 1);
+    const D q0 = rng.vec<double, 3>(-1, 1), q1 = rng.vec<double, 3>(-1, 1);
+    D x = rng.vec<double, 3>(-1, 1), y = rng.vec<double, 3>(-1, 1);
+    // Mostly near-degenerate: x - y nearly in the span of the two directions (rounded).
+    if (it % 4 != 0) {
+      const double s = rng.uniform(-1.0, 1.0), t = rng.uniform(-1.0, 1.0);
+      x = y + s * (p1 - p0) + t * (q1 - q0);
+    }
+    if (it % 8 == 1) x = y + 3.0 * (p1 - p0);  // often an exact zero
+    ASSERT_EQ(detail::sat3::sign_det_diff(p0, p1, q0, q1, x, y), exact(p0, p1, q0, q1, x, y))
+        << it;
+    // Small integers: stage B is exact.
+    const auto ri = [&] { return D{double(rng.uniform_int(-3, 3)), double(rng.uniform_int(-3, 3)),
+                                   double(rng.uniform_int(-3, 3))}; };
+    const D a = ri(), b = ri(), c = ri(), e = ri(), f = ri(), g = ri();
+    ASSERT_EQ(detail::sat3::sign_det_diff(a, b, c, e, f, g), exact(a, b, c, e, f, g)) << it;
+  }
+}
 
 TYPED_TEST(Sat3, StationaryRandomHullsAgreeWithGjk) {
   using T = TypeParam;

@@ -69,6 +69,10 @@ struct SatTest3 {
 };
 
 namespace detail::sat3 {
+/// Exact sign of det[p1 - p0, q1 - q0, x - y] for finite doubles (src/intersection/sat3.cpp).
+[[nodiscard]] int sign_det_diff(const Vec3<double>& p0, const Vec3<double>& p1,
+                                const Vec3<double>& q0, const Vec3<double>& q1,
+                                const Vec3<double>& x, const Vec3<double>& y) noexcept;
 /// src/intersection/sat3.cpp.
 template <Real T>
 [[nodiscard]] SatTest3 test(const ConvexPolyhedron3<T>& a, const ConvexPolyhedron3<T>& b);
