@@ -39,9 +39,9 @@ int sign_det_diff(const V& p0, const V& p1, const V& q0, const V& q1, const V& x
   // stage A); 8 eps is a safe round-up. Below 2^-900 underflow could void it: go exact.
   const double bound = 8.0 * (std::numeric_limits<double>::epsilon() / 2) * perm;
   if (perm > 0x1p-900 && std::abs(det) > bound) return det > 0 ? 1 : -1;
-  if (det == 0.0 && perm == 0.0 && ((ux == 0 && uy == 0 && uz == 0) ||
-                                    (wx == 0 && wy == 0 && wz == 0) ||
-                                    (dx == 0 && dy == 0 && dz == 0)))
+  if (det == 0.0 && perm == 0.0 &&
+      ((ux == 0 && uy == 0 && uz == 0) || (wx == 0 && wy == 0 && wz == 0) ||
+       (dx == 0 && dy == 0 && dz == 0)))
     return 0;  // a zero vector (differences of equal doubles are exactly zero)
   // Structural zeros (x - y along p1 - p0 or q1 - q0 by construction: the axis' own edge or face
   // vertices) are frequent and would all reach the exact stage.
@@ -59,7 +59,7 @@ int sign_det_diff(const V& p0, const V& p1, const V& q0, const V& q1, const V& x
       two_sum(q1[k], -q0[k], wh[k], wl[k]);
       two_sum(x[k], -y[k], dh[k], dl[k]);
     }
-    static constexpr int order[6][4] = {{0, 1, 2, 1}, {1, 2, 0, 1}, {2, 0, 1, 1},
+    static constexpr int order[6][4] = {{0, 1, 2, 1},  {1, 2, 0, 1},  {2, 0, 1, 1},
                                         {0, 2, 1, -1}, {1, 0, 2, -1}, {2, 1, 0, -1}};
     double hi = 0, err = 0, small = 0;
     bool all_exact = true;  // no tail anywhere: hi is the exact value (small integers, ties)
@@ -84,7 +84,7 @@ int sign_det_diff(const V& p0, const V& p1, const V& q0, const V& q1, const V& x
   const double pu[3][2] = {{p1.x, p0.x}, {p1.y, p0.y}, {p1.z, p0.z}};
   const double pw[3][2] = {{q1.x, q0.x}, {q1.y, q0.y}, {q1.z, q0.z}};
   const double pd[3][2] = {{x.x, y.x}, {x.y, y.y}, {x.z, y.z}};
-  static constexpr int perms[6][4] = {{0, 1, 2, 1}, {1, 2, 0, 1}, {2, 0, 1, 1},
+  static constexpr int perms[6][4] = {{0, 1, 2, 1},  {1, 2, 0, 1},  {2, 0, 1, 1},
                                       {0, 2, 1, -1}, {1, 0, 2, -1}, {2, 1, 0, -1}};
   ExactMonomial terms[48];
   int n = 0;
@@ -131,7 +131,7 @@ double axis_value(const Axis& ax, const V& x, const V& y) noexcept {
 /// non-degenerate triangle.
 struct Poly {
   std::vector<V> v;
-  std::vector<std::array<std::uint32_t, 3>> tri;  // non-degenerate triangles only
+  std::vector<std::array<std::uint32_t, 3>> tri;   // non-degenerate triangles only
   std::vector<std::array<std::uint32_t, 2>> edge;  // one per direction
   bool flat = false;
 };
@@ -164,7 +164,8 @@ Status load(const ConvexPolyhedron3<T>& in, Poly& out) {
   } else {
     for (const auto& t : in.triangles)
       for (int i = 0; i < 3; ++i) {
-        const std::uint32_t a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
+        const std::uint32_t a = t[static_cast<std::size_t>(i)],
+                            b = t[static_cast<std::size_t>((i + 1) % 3)];
         if (a != b) all.push_back({std::min(a, b), std::max(a, b)});
       }
     std::sort(all.begin(), all.end());
@@ -282,7 +283,8 @@ void extremes(const Axis& ax, const std::vector<V>& p, std::size_t& lo, std::siz
 /// Convex hull (counter-clockwise, no collinear vertices) of a few points: monotone chain with
 /// exact orient2d.
 std::vector<V2> small_hull(std::vector<V2> p) {
-  std::sort(p.begin(), p.end(), [](const V2& a, const V2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::sort(p.begin(), p.end(),
+            [](const V2& a, const V2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   p.erase(std::unique(p.begin(), p.end()), p.end());
   if (p.size() < 3) return p;
   std::vector<V2> h(2 * p.size());
@@ -448,8 +450,7 @@ Contact3<T> first_contact(const ConvexPolyhedron3<T>& a_in, const Vec3<T>& va_in
 }
 
 template SatTest3 test<float>(const ConvexPolyhedron3<float>&, const ConvexPolyhedron3<float>&);
-template SatTest3 test<double>(const ConvexPolyhedron3<double>&,
-                               const ConvexPolyhedron3<double>&);
+template SatTest3 test<double>(const ConvexPolyhedron3<double>&, const ConvexPolyhedron3<double>&);
 template Contact3<float> first_contact<float>(const ConvexPolyhedron3<float>&, const Vec3<float>&,
                                               const ConvexPolyhedron3<float>&, const Vec3<float>&,
                                               float);

@@ -81,8 +81,7 @@ TEST(CliSat3, StationaryAndMovingMatchTheLibrary) {
     for (int k = 0; k < 3; ++k)
       EXPECT_EQ(to_double(mv[2 + i][1 + static_cast<std::size_t>(k)]), c.points[i][k]);
   // A collinear point set is not a polyhedron: exit 1.
-  ASSERT_EQ((locus::write_points<double, 3>(fb, std::vector<Vec3d>{{0, 0, 0}, {1, 1, 1}})
-                 .status),
+  ASSERT_EQ((locus::write_points<double, 3>(fb, std::vector<Vec3d>{{0, 0, 0}, {1, 1, 1}}).status),
             locus::Status::ok);
   run("", 1);
   std::error_code ec;

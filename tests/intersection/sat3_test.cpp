@@ -143,11 +143,12 @@ TEST(Sat3Predicate, SignDetDiffMatchesGmp) {
       x = y + s * (p1 - p0) + t * (q1 - q0);
     }
     if (it % 8 == 1) x = y + 3.0 * (p1 - p0);  // often an exact zero
-    ASSERT_EQ(detail::sat3::sign_det_diff(p0, p1, q0, q1, x, y), exact(p0, p1, q0, q1, x, y))
-        << it;
+    ASSERT_EQ(detail::sat3::sign_det_diff(p0, p1, q0, q1, x, y), exact(p0, p1, q0, q1, x, y)) << it;
     // Small integers: stage B is exact.
-    const auto ri = [&] { return D{double(rng.uniform_int(-3, 3)), double(rng.uniform_int(-3, 3)),
-                                   double(rng.uniform_int(-3, 3))}; };
+    const auto ri = [&] {
+      return D{double(rng.uniform_int(-3, 3)), double(rng.uniform_int(-3, 3)),
+               double(rng.uniform_int(-3, 3))};
+    };
     const D a = ri(), b = ri(), c = ri(), e = ri(), f = ri(), g = ri();
     ASSERT_EQ(detail::sat3::sign_det_diff(a, b, c, e, f, g), exact(a, b, c, e, f, g)) << it;
   }
@@ -160,8 +161,8 @@ TYPED_TEST(Sat3, StationaryRandomHullsAgreeWithGjk) {
   int decided = 0, yes = 0;
   for (int it = 0; it < 150; ++it) {
     const Solid<T> a = random_hull<T>(rng, rng.uniform_int(4, 9), Vec3<T>{}, T(1));
-    const Solid<T> b = random_hull<T>(rng, rng.uniform_int(4, 9),
-                                      rng.template vec<T, 3>(T(-1.7), T(1.7)), T(1));
+    const Solid<T> b =
+        random_hull<T>(rng, rng.uniform_int(4, 9), rng.template vec<T, 3>(T(-1.7), T(1.7)), T(1));
     const bool got = intersects(a.view(), b.view());
     EXPECT_EQ(got, intersects(b.view(), a.view())) << it;
     // Power-of-two scaling keeps the answer (exact).
@@ -187,9 +188,10 @@ TYPED_TEST(Sat3, DyadicTranslationKeepsAnswer) {
   SCOPED_TRACE(rng.trace());
   for (int it = 0; it < 60; ++it) {
     // Coordinates k/16 with small k: translating by j/16 is exact.
-    const auto dy = [&] { return Vec3<T>{T(rng.uniform_int(-24, 24)) / 16,
-                                         T(rng.uniform_int(-24, 24)) / 16,
-                                         T(rng.uniform_int(-24, 24)) / 16}; };
+    const auto dy = [&] {
+      return Vec3<T>{T(rng.uniform_int(-24, 24)) / 16, T(rng.uniform_int(-24, 24)) / 16,
+                     T(rng.uniform_int(-24, 24)) / 16};
+    };
     std::vector<Vec3<T>> pa, pb;
     for (int i = 0; i < 6; ++i) pa.push_back(dy());
     const Vec3<T> off = dy();
@@ -269,16 +271,16 @@ TYPED_TEST(Sat3, MovingContactFeatures) {
   // Passing by: moves along y only, never meets.
   EXPECT_FALSE(first_contact(a.view(), Vec3<T>{}, b.view(), Vec3<T>{0, -3, 0}, T(10)));
   // Vertex on face: a tetrahedron with its apex pointing at the face x = 1.
-  const Solid<T> tet = hull_of<T>({Vec3<T>{3, 0.5, 0.5}, Vec3<T>{4, 0, 0}, Vec3<T>{4, 1, 0},
-                                   Vec3<T>{4, 0.5, 1}});
+  const Solid<T> tet =
+      hull_of<T>({Vec3<T>{3, 0.5, 0.5}, Vec3<T>{4, 0, 0}, Vec3<T>{4, 1, 0}, Vec3<T>{4, 0.5, 1}});
   c = first_contact(a.view(), Vec3<T>{}, tet.view(), Vec3<T>{-1, 0, 0}, T(5));
   ASSERT_EQ(c.kind, Kind::point);
   EXPECT_NEAR(c.time, T(2), locus_test::tol<T>(8));
   EXPECT_TRUE(locus_test::vec_near(c.points[0], Vec3<T>{1, 0.5, 0.5}, locus_test::tol<T>(8)));
   // Edge-edge: a wedge edge along z falls onto the cube's top edge along x... use a crossing pair
   // of edges: a thin tetrahedron edge along x above the cube edge along y at x = 1, z = 1.
-  const Solid<T> wedge = hull_of<T>({Vec3<T>{0.5, 0.5, 3}, Vec3<T>{1.5, 0.5, 3}, Vec3<T>{1, 0.25, 4},
-                                     Vec3<T>{1, 0.75, 4}});
+  const Solid<T> wedge = hull_of<T>(
+      {Vec3<T>{0.5, 0.5, 3}, Vec3<T>{1.5, 0.5, 3}, Vec3<T>{1, 0.25, 4}, Vec3<T>{1, 0.75, 4}});
   // The wedge's lowest edge (z = 3, along x) meets the cube's top face (z = 1): edge-face.
   c = first_contact(a.view(), Vec3<T>{}, wedge.view(), Vec3<T>{0, 0, -1}, T(5));
   ASSERT_EQ(c.kind, Kind::segment);
@@ -367,8 +369,8 @@ TYPED_TEST(Sat3, FlatAndDegenerate) {
   using T = TypeParam;
   // Coplanar triangles as flat polyhedra: the in-plane axes decide.
   const Triangle3<T> t0{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};
-  const Triangle3<T> t1{{1, 1, 0}, {3, 1, 0}, {1, 3, 0}};       // touches the hypotenuse
-  const Triangle3<T> t2{{1.25, 1, 0}, {3, 1, 0}, {1.25, 3, 0}};  // apart in the plane
+  const Triangle3<T> t1{{1, 1, 0}, {3, 1, 0}, {1, 3, 0}};           // touches the hypotenuse
+  const Triangle3<T> t2{{1.25, 1, 0}, {3, 1, 0}, {1.25, 3, 0}};     // apart in the plane
   const Triangle3<T> t3{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0}};  // pierces t0
   const Vec3<T> z{};
   EXPECT_TRUE(intersects(t0, z, t1, z, T(0)));
@@ -415,8 +417,10 @@ TYPED_TEST(Sat3, OrientedBoxesMovingMatchGeneral) {
   Rng rng(5);
   SCOPED_TRACE(rng.trace());
   for (int it = 0; it < 30; ++it) {
-    OrientedBox3<T> a{rng.template vec<T, 3>(T(-1), T(1)), {}, rng.template vec<T, 3>(T(0.2), T(1))};
-    OrientedBox3<T> b{rng.template vec<T, 3>(T(-4), T(4)), {}, rng.template vec<T, 3>(T(0.2), T(1))};
+    OrientedBox3<T> a{
+        rng.template vec<T, 3>(T(-1), T(1)), {}, rng.template vec<T, 3>(T(0.2), T(1))};
+    OrientedBox3<T> b{
+        rng.template vec<T, 3>(T(-4), T(4)), {}, rng.template vec<T, 3>(T(0.2), T(1))};
     for (OrientedBox3<T>* box : {&a, &b}) {
       const Vec3<T> u = rng.template unit<T, 3>();
       Vec3<T> w = cross(u, rng.template unit<T, 3>());
@@ -443,15 +447,21 @@ TYPED_TEST(Sat3, OrientedBoxFrustumAgreesWithExactSat) {
   SCOPED_TRACE(rng.trace());
   int yes = 0, no = 0;
   for (int it = 0; it < 200; ++it) {
-    Frustum3<T> fr{rng.template vec<T, 3>(T(-1), T(1)), {}, {}, {}, rng.uniform(T(0.5), T(1.5)),
-                   T(0), rng.uniform(T(0.2), T(1)), rng.uniform(T(0.2), T(1))};
+    Frustum3<T> fr{rng.template vec<T, 3>(T(-1), T(1)),
+                   {},
+                   {},
+                   {},
+                   rng.uniform(T(0.5), T(1.5)),
+                   T(0),
+                   rng.uniform(T(0.2), T(1)),
+                   rng.uniform(T(0.2), T(1))};
     fr.d_max = fr.d_min + rng.uniform(T(0.5), T(3));
     fr.direction = rng.template unit<T, 3>();
     Vec3<T> w = cross(fr.direction, rng.template unit<T, 3>());
     fr.up = w / std::sqrt(dot(w, w));
     fr.right = cross(fr.direction, fr.up);
-    OrientedBox3<T> box{fr.origin + rng.template vec<T, 3>(T(-4), T(4)), {},
-                        rng.template vec<T, 3>(T(0.05), T(1))};
+    OrientedBox3<T> box{
+        fr.origin + rng.template vec<T, 3>(T(-4), T(4)), {}, rng.template vec<T, 3>(T(0.05), T(1))};
     const Vec3<T> u = rng.template unit<T, 3>();
     Vec3<T> v = cross(u, rng.template unit<T, 3>());
     v = v / std::sqrt(dot(v, v));

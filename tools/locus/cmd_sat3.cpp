@@ -26,7 +26,7 @@ struct Sat3Options {
 
 /// The triangles of the hull of p (a flat set gives a fan of its polygon; lower dimensions none).
 std::vector<std::array<std::uint32_t, 3>> hull_triangles(const std::vector<Vec3d>& p,
-                                                        const std::string& name) {
+                                                         const std::string& name) {
   const locus::Hull3Result h = locus::convex_hull(p);
   if (h.status != locus::Status::ok)
     throw InputError(name + ": convex hull: " + std::string(locus::to_string(h.status)));

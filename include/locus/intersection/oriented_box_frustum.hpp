@@ -35,13 +35,15 @@ extern template bool test<double>(const OrientedBox3<double>&, const Frustum3<do
 
 /// Whether an oriented box and an orthogonal frustum meet (see the header comment).
 template <Real T>
-[[nodiscard]] inline bool intersects(const OrientedBox3<T>& box, const Frustum3<T>& frustum) noexcept {
+[[nodiscard]] inline bool intersects(const OrientedBox3<T>& box,
+                                     const Frustum3<T>& frustum) noexcept {
   return detail::box_frustum::test<T>(box, frustum);
 }
 
 /// The swapped-argument overload.
 template <Real T>
-[[nodiscard]] inline bool intersects(const Frustum3<T>& frustum, const OrientedBox3<T>& box) noexcept {
+[[nodiscard]] inline bool intersects(const Frustum3<T>& frustum,
+                                     const OrientedBox3<T>& box) noexcept {
   return detail::box_frustum::test<T>(box, frustum);
 }
 

@@ -54,10 +54,10 @@ struct ConvexPolyhedron3 {
 template <Real T>
 struct Contact3 {
   Status status = Status::ok;
-  Kind kind = Kind::empty;       ///< empty, point, segment or polygon
-  bool overlap = false;          ///< the interiors overlap at time 0 (no contact set given)
-  T time = T(0);                 ///< first time of contact in [0, tmax]
-  std::vector<Vec3<T>> points;   ///< the contact set: 1, 2 or >= 3 vertices in order
+  Kind kind = Kind::empty;      ///< empty, point, segment or polygon
+  bool overlap = false;         ///< the interiors overlap at time 0 (no contact set given)
+  T time = T(0);                ///< first time of contact in [0, tmax]
+  std::vector<Vec3<T>> points;  ///< the contact set: 1, 2 or >= 3 vertices in order
   /// True when the polyhedra meet during [0, tmax].
   [[nodiscard]] explicit operator bool() const noexcept { return kind != Kind::empty || overlap; }
 };
@@ -106,15 +106,24 @@ inline constexpr std::array<std::array<std::uint32_t, 3>, 12> cube_triangles{{{0
                                                                               {4, 6, 7},
                                                                               {4, 7, 5}}};
 /// Its 12 edges.
-inline constexpr std::array<std::array<std::uint32_t, 2>, 12> cube_edges{
-    {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3}, {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+inline constexpr std::array<std::array<std::uint32_t, 2>, 12> cube_edges{{{0, 1},
+                                                                          {2, 3},
+                                                                          {4, 5},
+                                                                          {6, 7},
+                                                                          {0, 2},
+                                                                          {1, 3},
+                                                                          {4, 6},
+                                                                          {5, 7},
+                                                                          {0, 4},
+                                                                          {1, 5},
+                                                                          {2, 6},
+                                                                          {3, 7}}};
 inline constexpr std::array<std::array<std::uint32_t, 3>, 1> triangle_triangles{{{0, 1, 2}}};
 }  // namespace detail::sat3
 
 /// Whether two convex polyhedra meet (exact; see the header comment).
 template <Real T>
-[[nodiscard]] inline bool intersects(const ConvexPolyhedron3<T>& a,
-                                     const ConvexPolyhedron3<T>& b) {
+[[nodiscard]] inline bool intersects(const ConvexPolyhedron3<T>& a, const ConvexPolyhedron3<T>& b) {
   return detail::sat3::test<T>(a, b).intersects;
 }
 
