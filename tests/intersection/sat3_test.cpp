@@ -314,6 +314,21 @@ TYPED_TEST(Sat3, MovingRandomAgreesWithSampledGjk) {
     const T tmax = T(2);
     const Contact3<T> c = first_contact(a.view(), va, b.view(), vb, tmax);
     const Contact3<T> s = first_contact(b.view(), vb, a.view(), va, tmax);
+    {
+      // Scaling positions and velocities by 2^-2 scales every determinant by 2^-6 exactly: the
+      // same time, bit for bit, and the contact points scaled exactly.
+      Solid<T> a4 = a, b4 = b;
+      for (auto& p : a4.v) p = T(0.25) * p;
+      for (auto& p : b4.v) p = T(0.25) * p;
+      const Contact3<T> c4 = first_contact(a4.view(), T(0.25) * va, b4.view(), T(0.25) * vb, tmax);
+      ASSERT_EQ(static_cast<bool>(c4), static_cast<bool>(c)) << it;
+      EXPECT_EQ(c4.time, c.time) << it;
+      EXPECT_EQ(c4.kind, c.kind) << it;
+      ASSERT_EQ(c4.points.size(), c.points.size()) << it;
+      for (std::size_t k = 0; k < c.points.size(); ++k) {
+        EXPECT_EQ(c4.points[k], T(0.25) * c.points[k]) << it;
+      }
+    }
     EXPECT_EQ(static_cast<bool>(c), static_cast<bool>(s)) << it;
     if (c && s) {
       EXPECT_NEAR(double(c.time), double(s.time), ttol) << it;
@@ -383,6 +398,19 @@ TYPED_TEST(Sat3, FlatAndDegenerate) {
   EXPECT_NEAR(c.time, T(1), locus_test::tol<T>(8));
   ASSERT_EQ(c.kind, Kind::point);
   EXPECT_TRUE(locus_test::vec_near(c.points[0], Vec3<T>{1, 1, 0}, locus_test::tol<T>(8)));
+  // A tilted triangle falls onto t0: its lowest edge (z = 1 .. 2 above) meets t0's face first.
+  const Triangle3<T> t4{{0.25, 0.25, 1}, {1, 0.25, 1}, {0.5, 0.5, 2}};
+  const Contact3<T> e = first_contact(t0, z, t4, Vec3<T>{0, 0, -0.5}, T(4));
+  ASSERT_EQ(e.kind, Kind::segment);
+  EXPECT_NEAR(e.time, T(2), locus_test::tol<T>(8));
+  for (const auto& p : e.points) {
+    EXPECT_NEAR(p.z, T(0), locus_test::tol<T>(8));
+    EXPECT_NEAR(p.y, T(0.25), locus_test::tol<T>(8));
+  }
+  // The same through the general view (one triangle each) and swapped.
+  const Contact3<T> e2 = first_contact(t4, Vec3<T>{0, 0, -0.5}, t0, z, T(4));
+  EXPECT_EQ(e2.kind, e.kind);
+  EXPECT_EQ(e2.time, e.time);
   // Degenerate triangle: status, no contact.
   const Triangle3<T> seg{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};
   const Contact3<T> d = first_contact(t0, z, seg, z, T(1));
