@@ -8,6 +8,7 @@
 #include <locus/core/predicates.hpp>
 #include <locus/intersection/convex_polygon2.hpp>
 #include <locus/intersection/sat.hpp>
+#include <locus/intersection/segment_triangle.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -449,6 +450,81 @@ Contact3<T> first_contact(const ConvexPolyhedron3<T>& a_in, const Vec3<T>& va_in
   return r;
 }
 
+template <Real T>
+ConvexOverlap3<T> overlap(const ConvexPolyhedron3<T>& a_in, const ConvexPolyhedron3<T>& b_in) {
+  ConvexOverlap3<T> r;
+  const SatTest3 t = test<T>(a_in, b_in);
+  r.status = t.status;
+  r.intersects = t.intersects;
+  if (!t.intersects) return r;
+  Poly a, b;
+  (void)load(a_in, a);
+  (void)load(b_in, b);
+  std::vector<V> out;
+  // Vertices of one inside the other (a solid only: a flat container's vertices are found as
+  // edge-triangle touches). Inside: on the inner side of, or on, every triangle's plane; the
+  // inner side is that of a vertex off the plane (exact orient3d).
+  const auto inside = [](const Poly& p, std::span<const V> pts, std::vector<V>& dst) {
+    if (p.flat) return;
+    std::vector<Sign> inner;
+    for (const auto& f : p.tri) {
+      Sign s = Sign::zero;
+      for (const V& q : p.v)
+        if ((s = orient3d(p.v[f[0]], p.v[f[1]], p.v[f[2]], q)) != Sign::zero) break;
+      inner.push_back(s);
+    }
+    for (const V& x : pts) {
+      bool in = true;
+      for (std::size_t i = 0; i < p.tri.size() && in; ++i) {
+        const auto& f = p.tri[i];
+        const Sign s = orient3d(p.v[f[0]], p.v[f[1]], p.v[f[2]], x);
+        in = s == Sign::zero || s == inner[i];
+      }
+      if (in) dst.push_back(x);
+    }
+  };
+  inside(b, a.v, out);
+  inside(a, b.v, out);
+  // Every edge of each (all of them: parallel ones are distinct segments here) against every
+  // triangle of the other.
+  const auto crossings = [](const ConvexPolyhedron3<T>& e_in, const Poly& e, const Poly& f,
+                            std::vector<V>& dst) {
+    std::vector<std::array<std::uint32_t, 2>> edges;
+    if (!e_in.edges.empty()) {
+      edges.assign(e_in.edges.begin(), e_in.edges.end());
+    } else {
+      for (const auto& t3 : e_in.triangles)
+        for (int i = 0; i < 3; ++i) {
+          const std::uint32_t p = t3[static_cast<std::size_t>(i)],
+                              q = t3[static_cast<std::size_t>((i + 1) % 3)];
+          if (p != q) edges.push_back({std::min(p, q), std::max(p, q)});
+        }
+      std::sort(edges.begin(), edges.end());
+      edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    }
+    for (const auto& ed : edges) {
+      const Segment3<double> s{e.v[ed[0]], e.v[ed[1]]};
+      for (const auto& t3 : f.tri) {
+        const Triangle3<double> tri{f.v[t3[0]], f.v[t3[1]], f.v[t3[2]]};
+        const auto x = intersection(s, tri);
+        for (int k = 0; k < x.count; ++k) dst.push_back(x.point[static_cast<std::size_t>(k)]);
+      }
+    }
+  };
+  crossings(a_in, a, b, out);
+  crossings(b_in, b, a, out);
+  std::sort(out.begin(), out.end(), [](const V& p, const V& q) {
+    return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && p.z < q.z)));
+  });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  for (const V& p : out) r.vertices.push_back(vec_cast<T>(p));
+  return r;
+}
+
+template ConvexOverlap3<float> overlap<float>(const ConvexPolyhedron3<float>&,
+                                              const ConvexPolyhedron3<float>&);
+template ConvexOverlap3<double> overlap<double>(const ConvexPolyhedron3<double>&,
+                                                const ConvexPolyhedron3<double>&);
 template SatTest3 test<float>(const ConvexPolyhedron3<float>&, const ConvexPolyhedron3<float>&);
 template SatTest3 test<double>(const ConvexPolyhedron3<double>&, const ConvexPolyhedron3<double>&);
 template Contact3<float> first_contact<float>(const ConvexPolyhedron3<float>&, const Vec3<float>&,

@@ -440,6 +440,61 @@ TYPED_TEST(Sat3, FlatAndDegenerate) {
   EXPECT_EQ(sat_test(bad.view(), a.view()).status, Status::invalid_input);
 }
 
+TYPED_TEST(Sat3, IntersectionVerticesSpanTheOverlap) {
+  using T = TypeParam;
+  // Cubes: the overlap is the box [0.5, 1] x [0.25, 1] x [0, 0.5].
+  const Solid<T> a = cube<T>(Vec3<T>{0, 0, 0}, T(1));
+  const Solid<T> b = cube<T>(Vec3<T>{0.5, 0.25, -0.5}, T(1));
+  const ConvexOverlap3<T> o = intersection(a.view(), b.view());
+  ASSERT_TRUE(o.intersects);
+  // Every corner of the box, and otherwise only points of it (triangle diagonals crossing the
+  // other cube's faces add boundary points that are not corners).
+  int corners_found = 0;
+  for (const auto& p : o.vertices) {
+    EXPECT_TRUE(p.x >= T(0.5) && p.x <= T(1) && p.y >= T(0.25) && p.y <= T(1) && p.z >= T(0) &&
+                p.z <= T(0.5));
+    corners_found += (p.x == T(0.5) || p.x == T(1)) && (p.y == T(0.25) || p.y == T(1)) &&
+                     (p.z == T(0) || p.z == T(0.5));
+  }
+  EXPECT_EQ(corners_found, 8);
+  EXPECT_FALSE(intersection(a.view(), cube<T>(Vec3<T>{2, 0, 0}, T(1)).view()).intersects);
+  // Random hulls: every vertex lies in both; sampled points clearly inside both lie in the hull
+  // of the vertices, points clearly outside either lie outside it.
+  Rng rng(locus_test::test_seed(23));
+  SCOPED_TRACE(rng.trace());
+  const double tol = std::is_same_v<T, float> ? 1e-5 : 1e-12;
+  int checked = 0;
+  for (int it = 0; it < 40; ++it) {
+    const Solid<T> p = random_hull<T>(rng, 8, Vec3<T>{}, T(1));
+    const Solid<T> q = random_hull<T>(rng, 8, rng.template vec<T, 3>(T(-0.8), T(0.8)), T(1));
+    const ConvexOverlap3<T> r = intersection(p.view(), q.view());
+    ASSERT_EQ(r.intersects, intersects(p.view(), q.view())) << it;
+    if (!r.intersects) continue;
+    const auto pv = moved(p, Vec3<T>{}, 0.0), qv = moved(q, Vec3<T>{}, 0.0);
+    std::vector<Vec3<double>> ov;
+    for (const auto& x : r.vertices) ov.push_back(vec_cast<double>(x));
+    for (const auto& x : ov) {
+      EXPECT_LE(plane_distance(pv, p.t, x), tol) << it;
+      EXPECT_LE(plane_distance(qv, q.t, x), tol) << it;
+    }
+    const Hull3Result h = convex_hull(std::span<const Vec3<double>>(ov));
+    if (h.dimension != 3) continue;
+    ++checked;
+    for (int k = 0; k < 100; ++k) {
+      const Vec3<double> x = vec_cast<double>(rng.template vec<T, 3>(T(-1.5), T(1.5)));
+      const double dp = plane_distance(pv, p.t, x), dq = plane_distance(qv, q.t, x);
+      const double dh = plane_distance(ov, h.triangles, x);
+      if (dp < -1e-6 && dq < -1e-6) {
+        EXPECT_LE(dh, tol) << it;
+      }
+      if (dp > 1e-6 || dq > 1e-6) {
+        EXPECT_GT(dh, 0.0) << it;
+      }
+    }
+  }
+  EXPECT_GT(checked, 15);
+}
+
 TYPED_TEST(Sat3, OrientedBoxesMovingMatchGeneral) {
   using T = TypeParam;
   Rng rng(locus_test::test_seed(5));

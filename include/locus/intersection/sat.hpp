@@ -62,6 +62,17 @@ struct Contact3 {
   [[nodiscard]] explicit operator bool() const noexcept { return kind != Kind::empty || overlap; }
 };
 
+/// The common part of two convex polyhedra as points whose convex hull it is: vertices of each
+/// inside the other and the crossings of the edges of each with the triangles of the other (all
+/// its corners, plus boundary points where triangulation diagonals cross; see intersection()).
+/// status ok, degenerate_input, non_finite_input or invalid_input.
+template <Real T>
+struct ConvexOverlap3 {
+  Status status = Status::ok;
+  bool intersects = false;
+  std::vector<Vec3<T>> vertices;  ///< no exact duplicates; hull them for the faces
+};
+
 /// The stationary test with its status (see the header comment).
 struct SatTest3 {
   Status status = Status::ok;
@@ -79,6 +90,13 @@ template <Real T>
 template <Real T>
 [[nodiscard]] Contact3<T> first_contact(const ConvexPolyhedron3<T>& a, const Vec3<T>& va,
                                         const ConvexPolyhedron3<T>& b, const Vec3<T>& vb, T tmax);
+template <Real T>
+[[nodiscard]] ConvexOverlap3<T> overlap(const ConvexPolyhedron3<T>& a,
+                                        const ConvexPolyhedron3<T>& b);
+extern template ConvexOverlap3<float> overlap<float>(const ConvexPolyhedron3<float>&,
+                                                     const ConvexPolyhedron3<float>&);
+extern template ConvexOverlap3<double> overlap<double>(const ConvexPolyhedron3<double>&,
+                                                       const ConvexPolyhedron3<double>&);
 extern template SatTest3 test<float>(const ConvexPolyhedron3<float>&,
                                      const ConvexPolyhedron3<float>&);
 extern template SatTest3 test<double>(const ConvexPolyhedron3<double>&,
@@ -132,6 +150,16 @@ template <Real T>
 [[nodiscard]] inline SatTest3 sat_test(const ConvexPolyhedron3<T>& a,
                                        const ConvexPolyhedron3<T>& b) {
   return detail::sat3::test<T>(a, b);
+}
+
+/// The intersection of two convex polyhedra as a point set (its convex hull, e.g. by
+/// hull/hull3.hpp, is a ∩ b): empty when they are disjoint (exact test). Which input vertices
+/// are inside is exact (orient3d against every triangle of a solid); crossings come from
+/// intersection(Segment3, Triangle3) (exact decisions, rounded points). Cost O(Ea Fb + Eb Fa).
+template <Real T>
+[[nodiscard]] inline ConvexOverlap3<T> intersection(const ConvexPolyhedron3<T>& a,
+                                                    const ConvexPolyhedron3<T>& b) {
+  return detail::sat3::overlap<T>(a, b);
 }
 
 /// First contact of convex polyhedra a + t va and b + t vb over [0, tmax].
