@@ -6,8 +6,7 @@
 // ConvexPolyhedron3<T> is a view: `vertices` and `triangles` (index triples covering the boundary,
 // any orientation: convex_hull(points).triangles with the input points, a closed convex mesh, or
 // a triangulated flat polygon), optional `edges` (index pairs; when empty, the triangles' edges).
-// Convexity and that every vertex is on the boundary are preconditions, not checked. Closed solids:
-// touching counts as meeting.
+// Convexity is a precondition, not checked. Closed sets: touching counts as meeting.
 // Axes: the normals of the triangles of both, the cross products of an edge of each (parallel
 // edges are tested once), and, for two flat polyhedra in one plane, the in-plane edge normals.
 // Exactness: every projection comparison is the exact sign of det[p1 - p0, q1 - q0, x - y] over
@@ -21,7 +20,8 @@
 // kind empty (no contact), point / segment / polygon (the contact set at `time`: the intersection
 // of the extreme features of the axis of last entry, clipped in 2D by convex_polygon2's exact
 // clipper on the rounded moved features and lifted back to their plane: rounded), or
-// `overlap` true (interiors overlap at time 0; kind empty, no points).
+// `overlap` true (they meet at time 0 and no axis only touches: interiors overlap, or flat ones
+// cross; kind empty, no points). intersection(a, b): points spanning a ∩ b (ConvexOverlap3).
 // Degenerate: a polyhedron without a non-degenerate triangle (empty, a point or a segment):
 // intersects false, status degenerate_input. NaN/Inf: false, status non_finite_input; tmax < 0 or
 // NaN: status invalid_input. Cost: O((Fa + Fb + Ea Eb)(Va + Vb)) filtered signs, stationary with
