@@ -21,12 +21,12 @@
 // of the extreme features of the axis of last entry, clipped in 2D by convex_polygon2's exact
 // clipper on the rounded moved features and lifted back to their plane: rounded), or
 // `overlap` true (they meet at time 0 and no axis only touches: interiors overlap, or flat ones
-// cross; kind empty, no points). intersection(a, b): points spanning a ∩ b (ConvexOverlap3).
-// Degenerate: a polyhedron without a non-degenerate triangle (empty, a point or a segment):
-// intersects false, status degenerate_input. NaN/Inf: false, status non_finite_input; tmax < 0 or
-// NaN: status invalid_input. Cost: O((Fa + Fb + Ea Eb)(Va + Vb)) filtered signs, stationary with
-// early exit; allocates scratch. Compiled in src/intersection/sat3.cpp. OBB and triangle overloads
-// below; the book's 15-axis OBB test is oriented_box_oriented_box.hpp.
+// cross; kind empty, no points). intersection(a, b): points spanning the common part of a and b
+// (ConvexOverlap3). Degenerate: a polyhedron without a non-degenerate triangle (empty, a point or a
+// segment): intersects false, status degenerate_input. NaN/Inf: false, status non_finite_input;
+// tmax < 0 or NaN: status invalid_input. Cost: O((Fa + Fb + Ea Eb)(Va + Vb)) filtered signs,
+// stationary with early exit; allocates scratch. Compiled in src/intersection/sat3.cpp. OBB and
+// triangle overloads below; the book's 15-axis OBB test is oriented_box_oriented_box.hpp.
 
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
@@ -153,9 +153,9 @@ template <Real T>
 }
 
 /// The intersection of two convex polyhedra as a point set (its convex hull, e.g. by
-/// hull/hull3.hpp, is a ∩ b): empty when they are disjoint (exact test). Which input vertices
-/// are inside is exact (orient3d against every triangle of a solid); crossings come from
-/// intersection(Segment3, Triangle3) (exact decisions, rounded points). Cost O(Ea Fb + Eb Fa).
+/// hull/hull3.hpp, is the common part of a and b): empty when they are disjoint (exact test). Which
+/// input vertices are inside is exact (orient3d against every triangle of a solid); crossings come
+/// from intersection(Segment3, Triangle3) (exact decisions, rounded points). Cost O(Ea Fb + Eb Fa).
 template <Real T>
 [[nodiscard]] inline ConvexOverlap3<T> intersection(const ConvexPolyhedron3<T>& a,
                                                     const ConvexPolyhedron3<T>& b) {
