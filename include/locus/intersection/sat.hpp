@@ -4,8 +4,9 @@
 // 11.11 (convex polyhedra, triangles, boxes; contact sets). 2D versions: convex_polygon2.hpp,
 // moving_convex2.hpp. Derivation: docs/notes/sat3.md.
 // ConvexPolyhedron3<T> is a view: `vertices` and `triangles` (index triples covering the boundary,
-// any orientation: convex_hull(points).triangles with the input points, a closed convex mesh, or
-// a triangulated flat polygon), optional `edges` (index pairs; when empty, the triangles' edges).
+// any orientation), optional `edges` (index pairs; when empty, the triangles' edges). From points:
+// {points, convex_hull(points).triangles} (hull/hull3.hpp); or a closed convex triangle mesh, or a
+// triangulated flat polygon. The OBB and triangle overloads below go through the general code.
 // Convexity is a precondition, not checked. Closed sets: touching counts as meeting.
 // Axes: the normals of the triangles of both, the cross products of an edge of each (parallel
 // edges are tested once), and, for two flat polyhedra in one plane, the in-plane edge normals.
@@ -177,7 +178,9 @@ template <Real T>
   return static_cast<bool>(detail::sat3::first_contact<T>(a, va, b, vb, tmax));
 }
 
-/// A box's corners (rounded by corners()) as a polyhedron; `corners` must outlive the view.
+/// A box's (or frustum's) corners as a polyhedron; `corners` must outlive the view. Each face is
+/// split along a fixed diagonal: rounded corners may leave a face's four corners off one plane by
+/// a rounding error, and the exact answers are then those of this triangulated solid.
 template <Real T>
 [[nodiscard]] inline ConvexPolyhedron3<T> box_polyhedron(
     const std::array<Vec3<T>, 8>& corners) noexcept {
