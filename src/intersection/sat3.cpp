@@ -215,14 +215,19 @@ std::vector<Axis> axes_of(const Poly& a, const Poly& b) {
       if (!parallel(a0, a1, b0, b1)) ax.push_back({false, 0, a0, a1, b0, b1});
     }
   if (a.flat && b.flat) {
+    // Two flat polyhedra in parallel planes (the same plane included): a - b is flat, and its
+    // facets are in-plane edges, whose normals the axes above miss. Parallel: every vertex of b
+    // is at the same height over a's plane (exact). Dropping coordinate k maps both planes
+    // bijectively, so the in-plane edge normals there complete the set (for moving polyhedra
+    // too, at the moment the planes coincide).
     const auto& r = a.tri.front();
-    bool coplanar = true;
+    bool parallel_planes = true;
     for (const V& p : b.v)
-      if (orient3d(a.v[r[0]], a.v[r[1]], a.v[r[2]], p) != Sign::zero) {
-        coplanar = false;
+      if (sign_det_diff(a.v[r[0]], a.v[r[1]], a.v[r[0]], a.v[r[2]], p, b.v.front()) != 0) {
+        parallel_planes = false;
         break;
       }
-    if (coplanar) {
+    if (parallel_planes) {
       const int k = planar_drop(a);
       for (const Poly* p : {&a, &b})
         for (const auto& e : p->edge) ax.push_back({true, k, p->v[e[0]], p->v[e[1]], V{}, V{}});

@@ -398,6 +398,16 @@ TYPED_TEST(Sat3, FlatAndDegenerate) {
   EXPECT_NEAR(c.time, T(1), locus_test::tol<T>(8));
   ASSERT_EQ(c.kind, Kind::point);
   EXPECT_TRUE(locus_test::vec_near(c.points[0], Vec3<T>{1, 1, 0}, locus_test::tol<T>(8)));
+  // A parallel triangle one unit above t0 drops into its plane at t = 1: apart in the plane (t2's
+  // shape) means no contact; shifted onto t0 it meets along a polygon.
+  const Triangle3<T> up{{1.25, 1, 1}, {3, 1, 1}, {1.25, 3, 1}};
+  EXPECT_FALSE(first_contact(t0, z, up, Vec3<T>{0, 0, -1}, T(3)));
+  EXPECT_FALSE(first_contact(up, Vec3<T>{0, 0, -1}, t0, z, T(3)));
+  const Triangle3<T> up2{{0.25, 0.25, 1}, {2, 0.25, 1}, {0.25, 2, 1}};
+  const Contact3<T> f = first_contact(t0, z, up2, Vec3<T>{0, 0, -1}, T(3));
+  ASSERT_EQ(f.kind, Kind::polygon);
+  EXPECT_EQ(f.time, T(1));
+  for (const auto& p : f.points) EXPECT_EQ(p.z, T(0));
   // A tilted triangle falls onto t0: its lowest edge (z = 1 .. 2 above) meets t0's face first.
   const Triangle3<T> t4{{0.25, 0.25, 1}, {1, 0.25, 1}, {0.5, 0.5, 2}};
   const Contact3<T> e = first_contact(t0, z, t4, Vec3<T>{0, 0, -0.5}, T(4));

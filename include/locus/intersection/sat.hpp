@@ -9,7 +9,8 @@
 // triangulated flat polygon. The OBB and triangle overloads below go through the general code.
 // Convexity is a precondition, not checked. Closed sets: touching counts as meeting.
 // Axes: the normals of the triangles of both, the cross products of an edge of each (parallel
-// edges are tested once), and, for two flat polyhedra in one plane, the in-plane edge normals.
+// edges are tested once), and, for two flat polyhedra in parallel planes, the in-plane edge
+// normals.
 // Exactness: every projection comparison is the exact sign of det[p1 - p0, q1 - q0, x - y] over
 // input coordinates (a face normal (p1 - p0) x (q1 - q0) or an edge pair's cross product; a
 // floating-point filter, then core/exact_sum.hpp), so intersects(a, b) is the exact answer for the
