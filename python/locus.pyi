@@ -183,6 +183,11 @@ class Contact(Result):
     time: float | None
     points: _Floats
 
+class Contact3(Result):
+    kind: str
+    time: float | None
+    points: _Floats
+
 class CurveIntersections(Result):
     kind: npt.NDArray[np.uint8]
     count: npt.NDArray[np.int8]
@@ -272,6 +277,10 @@ def convex_polygon_intersection(a: npt.ArrayLike, b: npt.ArrayLike) -> ConvexInt
 def first_contact(
     a: npt.ArrayLike, va: npt.ArrayLike, b: npt.ArrayLike, vb: npt.ArrayLike, tmax: float
 ) -> Contact: ...
+def sat3_test(a: npt.ArrayLike, b: npt.ArrayLike) -> bool: ...
+def sat3_first_contact(
+    a: npt.ArrayLike, va: npt.ArrayLike, b: npt.ArrayLike, vb: npt.ArrayLike, tmax: float
+) -> Contact3: ...
 
 class SvgWriter:
     def __init__(

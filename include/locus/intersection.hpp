@@ -39,6 +39,7 @@
 #include <locus/intersection/line_triangle.hpp>
 #include <locus/intersection/linear_polyhedron.hpp>
 #include <locus/intersection/moving_convex2.hpp>
+#include <locus/intersection/oriented_box_frustum.hpp>
 #include <locus/intersection/oriented_box_oriented_box.hpp>
 #include <locus/intersection/oriented_box_plane.hpp>
 #include <locus/intersection/oriented_box_sphere.hpp>
@@ -71,6 +72,7 @@
 #include <locus/intersection/ray_torus.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/result.hpp>
+#include <locus/intersection/sat.hpp>
 #include <locus/intersection/segment_aligned_box.hpp>
 #include <locus/intersection/segment_arc.hpp>
 #include <locus/intersection/segment_capsule.hpp>

@@ -10,6 +10,7 @@
 namespace locus::python {
 
 void bind_sat2(py::module_& m);          // python/src/sat2.cpp
+void bind_sat3(py::module_& m);          // python/src/sat3.cpp
 void bind_construction(py::module_& m);  // construction.cpp
 void bind_partition(py::module_& m);     // partition.cpp
 
@@ -95,6 +96,7 @@ for _name, _doc in [
     ("BoxHits", "ray_box_hits / segment_box_hits: hit, t_enter, t_exit."),
     ("ConvexIntersection", "convex_polygon_intersection: kind, vertices (k, 2)."),
     ("Contact", "first_contact: kind, time, points (k, 2)."),
+    ("Contact3", "sat3_first_contact: kind, time, points (k, 3)."),
     ("SurfaceHits", "ray_quadric_hits / ray_torus_hits: count, t, points, normals, uv, "
                     "multiplicity, on_surface."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
@@ -248,5 +250,6 @@ PYBIND11_MODULE(locus, m) {
   bind_io(m);
   bind_misc3(m);
   bind_sat2(m);
+  bind_sat3(m);
   bind_partition(m);
 }

@@ -17,6 +17,7 @@ void register_mesh(CLI::App& app);      // mesh info|check|orient|generate|conve
 void register_mesh_slice(CLI::App& mesh);  // mesh slice (cmd_mesh_slice.cpp)
 void register_raycast(CLI::App& app);      // raycast (cmd_raycast.cpp)
 void register_sat(CLI::App& app);          // sat (cmd_sat.cpp)
+void register_sat3(CLI::App& app);         // sat3 (cmd_sat3.cpp)
 void register_construct(CLI::App& app);    // construct <kind> (cmd_construct.cpp)
 void register_surfacehit(CLI::App& app);   // surfacehit (cmd_surfacehit.cpp)
 void register_partition(CLI::App& app);    // partition (cmd_partition.cpp)

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   locus_cli::register_mesh(app);
   locus_cli::register_raycast(app);
   locus_cli::register_sat(app);
+  locus_cli::register_sat3(app);
   locus_cli::register_construct(app);
   locus_cli::register_surfacehit(app);
   locus_cli::register_partition(app);
