@@ -96,6 +96,8 @@ for _name, _doc in [
     ("Contact", "first_contact: kind, time, points (k, 2)."),
     ("SurfaceHits", "ray_quadric_hits / ray_torus_hits: count, t, points, normals, uv, "
                     "multiplicity, on_surface."),
+    ("PatchHits", "ray_surface_hits: ray, t, uv, points, normals, tangent, on_surface."),
+    ("PatchCurves", "plane_surface_curves: points, uv, closed."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
     ("BspPartition", "bsp_partition: pieces (k, 2, 2), location, segment."),
 ]:
@@ -243,6 +245,7 @@ PYBIND11_MODULE(locus, m) {
   bind_intersection2(m);
   bind_construction(m);
   bind_quadric3(m);
+  bind_surface_intersection(m);
   bind_io(m);
   bind_misc3(m);
   bind_sat2(m);
