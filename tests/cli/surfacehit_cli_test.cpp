@@ -60,9 +60,11 @@ TEST(CliSurfacehit, BezierPatchMatchesTheLibrary) {
   const locus::BezierPatch<double, 3> bump{
       3, 3, {{0, 0, 0}, {0, 0.5, 0}, {0, 1, 0}, {0.5, 0, 0}, {0.5, 0.5, 1}, {0.5, 1, 0},
              {1, 0, 0}, {1, 0.5, 0}, {1, 1, 0}}};
-  std::string net = "3,3";
-  for (const auto& c : bump.control)
-    net += "," + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z);
+  std::ostringstream nets;
+  nets.precision(17);
+  nets << "3,3";
+  for (const auto& c : bump.control) nets << ',' << c.x << ',' << c.y << ',' << c.z;
+  const std::string net = nets.str();
   const auto run = [&](const std::string& args) {
     const std::string cmd = std::string("'") + LOCUS_CLI_PATH + "' surfacehit '" + rays + "' " +
                             args + " >'" + out + "' 2>/dev/null";
