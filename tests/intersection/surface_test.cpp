@@ -402,6 +402,34 @@ TYPED_TEST(SurfaceHits, PlaneCutsTheNurbsSphereInACircle) {
       }
     EXPECT_GE(points, 20u);
   }
+  // The seam splits the circle into open branches; together they cover it once (no duplicate
+  // branch, nothing missing): total chord length within 1% of the circumference.
+  const auto z = intersection(Plane3<T>{{0, 0, 1}, T(0.25)}, s);
+  double len = 0.0;
+  for (const auto& c : z.curves) {
+    EXPECT_FALSE(c.closed);
+    for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
+      len += double(length(c.points[i + 1] - c.points[i]));
+  }
+  EXPECT_NEAR(len, 2 * M_PI * std::sqrt(1 - 0.0625), 0.01 * 2 * M_PI);
+}
+
+TYPED_TEST(SurfaceHits, TangentLinesOnTheBowl) {
+  using T = TypeParam;
+  // z = x^2 + y^2: the line z = 0 along x touches at the origin (one tangent hit); lifted by
+  // 1/64 it crosses twice at x = +-1/8, lowered it misses.
+  const auto bowl_patch = bowl<T>();
+  const auto touch = intersection(Line3<T>{{-2, 0, 0}, {1, 0, 0}}, bowl_patch);
+  ASSERT_EQ(touch.hits.size(), 1u);
+  EXPECT_TRUE(touch.hits[0].tangent);
+  EXPECT_NEAR(double(touch.hits[0].t), 2.0, pick<T>(1e-3, 1e-5));
+  EXPECT_NEAR(double(touch.hits[0].normal.z) * double(touch.hits[0].normal.z), 1.0, 1e-6);
+  const auto two = intersection(Line3<T>{{-2, 0, T(1) / 64}, {1, 0, 0}}, bowl_patch);
+  ASSERT_EQ(two.hits.size(), 2u);
+  EXPECT_FALSE(two.hits[0].tangent);
+  EXPECT_NEAR(double(two.hits[0].t), 2.0 - 0.125, pick<T>(1e-5, 1e-12));
+  EXPECT_NEAR(double(two.hits[1].t), 2.0 + 0.125, pick<T>(1e-5, 1e-12));
+  EXPECT_TRUE(intersection(Line3<T>{{-2, 0, -T(1) / 64}, {1, 0, 0}}, bowl_patch).hits.empty());
 }
 
 // ---- surface against surface ----
@@ -423,6 +451,29 @@ TYPED_TEST(SurfaceHits, TwoBowlsMeetInACircle) {
         point_at(bowl<T>(T(-1), T(1)), r.curves[0].param_b[i].x, r.curves[0].param_b[i].y);
     EXPECT_LE(max_abs(vec_cast<double>(qa - qb)), 4 * tol);
   }
+}
+
+TYPED_TEST(SurfaceHits, NurbsSphereMeetsAPlanePatchInACircle) {
+  using T = TypeParam;
+  const NurbsSurface<T, 3> sphere = nurbs_sphere<T>();
+  // The plane z = 0.3 as a bilinear NURBS patch (unit weights) over [-2, 2]^2.
+  const NurbsSurface<T, 3> plane{1, 1, 2, 2, {{-2, -2, T(0.3)}, {-2, 2, T(0.3)}, {2, -2, T(0.3)}, {2, 2, T(0.3)}},
+                                 {1, 1, 1, 1}, {0, 0, 1, 1}, {0, 0, 1, 1}};
+  const auto r = intersection(sphere, plane);
+  ASSERT_EQ(r.status, Status::ok);
+  ASSERT_FALSE(r.curves.empty());
+  double len = 0.0;
+  const double tol = pick<T>(1e-5, 1e-9);
+  for (const auto& c : r.curves) {
+    for (std::size_t i = 0; i < c.points.size(); ++i) {
+      EXPECT_NEAR(double(length(c.points[i])), 1.0, tol);
+      EXPECT_NEAR(double(c.points[i].z), 0.3, tol);
+      if (i + 1 < c.points.size()) len += double(length(c.points[i + 1] - c.points[i]));
+    }
+    if (c.closed) len += double(length(c.points.front() - c.points.back()));
+  }
+  // Covered once: the traced pieces add up to the circle (no duplicate, no gap).
+  EXPECT_NEAR(len, 2 * M_PI * std::sqrt(1 - 0.09), 0.01 * 2 * M_PI);
 }
 
 TYPED_TEST(SurfaceHits, BSplineSurfacesMeetInOpenBranches) {
