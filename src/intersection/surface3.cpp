@@ -369,6 +369,67 @@ void link_segments(const std::vector<std::array<int, 2>>& segs, int npoints,
   }
 }
 
+
+/// The plane's signed distance (homogeneous) at every control point of a patch: min and max.
+void plane_range(const HP& p, const V& n, double k, double& lo, double& hi) noexcept {
+  lo = INFINITY;
+  hi = -INFINITY;
+  for (const V4& c : p.control) {
+    const double f = dot(n, xyz(c)) - k * c.w;
+    lo = std::min(lo, f);
+    hi = std::max(hi, f);
+  }
+}
+
+/// Whether a cell whose four grid corners share the sign `s` holds a point of the other sign
+/// (a loop or a double crossing the grid misses): subdivision to `depth` levels, exact-hull
+/// rejection, the subpatch corners (surface values) as witnesses; `tol` absorbs rounding.
+bool hidden_in_cell(const HP& p, const V& n, double k, int s, double tol, int depth) {
+  double lo = 0.0, hi = 0.0;
+  plane_range(p, n, k, lo, hi);
+  if (s > 0 ? lo >= -tol : hi < tol) return false;  // one-signed hull
+  const int rows = p.rows, cols = p.cols;
+  const std::size_t corner[4] = {0, z(cols - 1), z((rows - 1) * cols), z(rows * cols - 1)};
+  for (std::size_t c : corner) {
+    const double f = dot(n, xyz(p.control[c])) - k * p.control[c].w;
+    if (s > 0 ? f < -tol : f > tol) return true;
+  }
+  if (depth == 0) return false;
+  const PatchSplit<double, 4> a = subdivide_u(p, 0.5);
+  for (const HP* h : {&a.first, &a.second}) {
+    const PatchSplit<double, 4> b = subdivide_v(*h, 0.5);
+    if (hidden_in_cell(b.first, n, k, s, tol, depth - 1) ||
+        hidden_in_cell(b.second, n, k, s, tol, depth - 1))
+      return true;
+  }
+  return false;
+}
+
+/// Walks a span's cells [i0, i1) x [j0, j1) (grid units) by subdivision, skipping one-signed
+/// hulls, and checks every cell with four equal corner signs for a hidden sign region.
+template <class Sign>
+bool hidden_in_span(const HP& p, const V& n, double k, int i0, int i1, int j0, int j1,
+                    const Sign& sgn, double tol) {
+  double lo = 0.0, hi = 0.0;
+  plane_range(p, n, k, lo, hi);
+  if (lo >= -tol || hi < tol) return false;
+  if (i1 - i0 > 1) {
+    const int im = (i0 + i1) / 2;
+    const PatchSplit<double, 4> a = subdivide_u(p, double(im - i0) / double(i1 - i0));
+    return hidden_in_span(a.first, n, k, i0, im, j0, j1, sgn, tol) ||
+           hidden_in_span(a.second, n, k, im, i1, j0, j1, sgn, tol);
+  }
+  if (j1 - j0 > 1) {
+    const int jm = (j0 + j1) / 2;
+    const PatchSplit<double, 4> a = subdivide_v(p, double(jm - j0) / double(j1 - j0));
+    return hidden_in_span(a.first, n, k, i0, i1, j0, jm, sgn, tol) ||
+           hidden_in_span(a.second, n, k, i0, i1, jm, j1, sgn, tol);
+  }
+  const int s0 = sgn(i0, j0);
+  if (sgn(i0 + 1, j0) != s0 || sgn(i0 + 1, j0 + 1) != s0 || sgn(i0, j0 + 1) != s0) return false;
+  return hidden_in_cell(p, n, k, s0, tol, 5);
+}
+
 }  // namespace
 
 SurfaceCurves<double> plane_curves(const V& normal, double constant, const NS& s,
@@ -387,16 +448,37 @@ SurfaceCurves<double> plane_curves(const V& normal, double constant, const NS& s
     r.status = g.status;
     return r;
   }
-  const int cells = std::clamp(opt.grid, 1, 1024);
   // Scale the plane to a unit-size normal by a power of two (exact).
   const double ns = pow2_inv(max_abs(normal));
-  const PlaneGrid pg{&g, ns * normal, ns * constant, cells};
-  const int nu = g.count_u * cells + 1, nv = g.count_v * cells + 1;
-  std::vector<signed char> sign(z(nu) * z(nv));
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i)
-      sign[z(j) * z(nu) + z(i)] = pg.value(i, j) < 0.0 ? -1 : 1;  // zero counts as positive
-  const auto sgn = [&](int i, int j) { return sign[z(j) * z(nu) + z(i)]; };
+  const V nn = ns * normal;
+  const double kk = ns * constant;
+  // The grid, refined (doubled, up to 256 cells per span) while some cell hides a sign region.
+  int cells = std::clamp(opt.grid, 1, 1024);
+  bool hidden = false;
+  int nu = 0, nv = 0;
+  std::vector<signed char> sign;
+  const auto sgn = [&](int i, int j) { return int(sign[z(j) * z(nu) + z(i)]); };
+  for (;;) {
+    const PlaneGrid pgrid{&g, nn, kk, cells};
+    nu = g.count_u * cells + 1;
+    nv = g.count_v * cells + 1;
+    sign.assign(z(nu) * z(nv), 1);
+    for (int j = 0; j < nv; ++j)
+      for (int i = 0; i < nu; ++i)
+        sign[z(j) * z(nu) + z(i)] = pgrid.value(i, j) < 0.0 ? -1 : 1;  // zero counts as positive
+    hidden = false;
+    for (int a = 0; a < g.count_u && !hidden; ++a)
+      for (int b = 0; b < g.count_v && !hidden; ++b) {
+        const HP& p = g.patches[z(a * g.count_v + b)];
+        double big = 0.0;
+        for (const V4& c : p.control) big = std::max(big, std::fabs(dot(nn, xyz(c)) - kk * c.w));
+        const auto span_sign = [&](int i, int j) { return sgn(a * cells + i, b * cells + j); };
+        hidden = hidden_in_span(p, nn, kk, 0, cells, 0, cells, span_sign, 1024.0 * eps * big);
+      }
+    if (!hidden || cells >= 256) break;
+    cells = std::min(2 * cells, 256);
+  }
+  const PlaneGrid pg{&g, nn, kk, cells};
 
   std::vector<V> pts;
   std::vector<V2> prm;
@@ -468,7 +550,7 @@ SurfaceCurves<double> plane_curves(const V& normal, double constant, const NS& s
     }
   std::vector<std::pair<bool, std::vector<int>>> chains;
   link_segments(segs, static_cast<int>(pts.size()), chains);
-  r.status = Status::ok;
+  r.status = hidden ? Status::limit_exceeded : Status::ok;
   for (const auto& ch : chains) {
     SurfaceCurve<double> c;
     c.closed = ch.first;

@@ -381,6 +381,20 @@ TYPED_TEST(SurfaceHits, PlaneCutsABowlInOneLoop) {
             Status::non_finite_input);
 }
 
+TYPED_TEST(SurfaceHits, PlaneFindsALoopInsideOneCell) {
+  using T = TypeParam;
+  // The dome z = 2 - x^2 - y^2 cut just below its top: a loop of radius 0.1 inside the centre
+  // cell of a 3 x 3 grid (no node sees it): the hull check refines the grid until it does.
+  SurfaceCurveOptions opt;
+  opt.grid = 3;
+  const auto r = intersection(Plane3<T>{{0, 0, 1}, T(1.99)}, bowl<T>(T(-1), T(2)), opt);
+  ASSERT_EQ(r.status, Status::ok);
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  for (const auto& p : r.curves[0].points)
+    EXPECT_NEAR(double(p.x * p.x + p.y * p.y), 0.01, pick<T>(1e-5, 1e-12));
+}
+
 TYPED_TEST(SurfaceHits, PlaneCutsTheNurbsSphereInACircle) {
   using T = TypeParam;
   const auto s = nurbs_sphere<T>();

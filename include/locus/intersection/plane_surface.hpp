@@ -15,9 +15,12 @@
 // crossings are joined (a saddle cell by the sign at its centre) and the pieces chained across
 // cells (and across spans) into open branches and closed loops (figures 11.57, 11.58). Every
 // listed point lies on the surface (evaluated) and within a few ulps of the plane (bisection);
-// between points the polyline is a chord of the curve. Not found: loops that cross no grid edge
-// (smaller than a cell), curve pieces where the surface lies in the plane (zero counts as
-// positive). Degenerate: zero normal: degenerate_input; NaN/Inf: non_finite_input; invalid
+// between points the polyline is a chord of the curve. Hidden features: every cell whose four
+// corners share a sign is checked by subdivision (exact hull rejection, subpatch corners as
+// witnesses, 5 levels): when one hides a sign region (a small loop) the grid is doubled, up to
+// 256 cells per span; if one remains, status is limit_exceeded (the curves found are returned).
+// Not found: two crossings of one cell edge inside a cell with mixed corners, features below
+// 2^-5 of a 256-cell, pieces where the surface lies in the plane (zero counts as positive). Degenerate: zero normal: degenerate_input; NaN/Inf: non_finite_input; invalid
 // surface: validate()'s status. Float input is computed in double. Cost: (grid + 1)^2 surface
 // evaluations per span plus 64 per crossing; allocates.
 
