@@ -129,7 +129,7 @@ template <class T>
 void sample(const Ellipsoid3<T>& a, const Ellipsoid3<T>& b, double& lo, double& hi) {
   lo = INFINITY;
   hi = -INFINITY;
-  const int n = 60;
+  const int n = 32;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j < 2 * n; ++j) {
       const double th = M_PI * j / n, ph = M_PI * i / n;
@@ -162,7 +162,7 @@ TYPED_TEST(QuadricPairs, EllipsoidsAgreeWithSampling) {
   using T = TypeParam;
   Rng rng(21);
   int decided = 0, kinds[9] = {};
-  for (int iter = 0; iter < 150; ++iter) {
+  for (int iter = 0; iter < 60; ++iter) {
     const Ellipsoid3<T> a = random_ellipsoid<T>(rng, T(0.3), T(2));
     const Ellipsoid3<T> b = random_ellipsoid<T>(rng, T(0.3), T(2));
     double lo = 0, hi = 0;
@@ -170,23 +170,23 @@ TYPED_TEST(QuadricPairs, EllipsoidsAgreeWithSampling) {
     const RegionRelation r = relation(a, b);
     ++kinds[int(r)];
     // Sampling misses the true extremes by O(h^2): only decisive draws are compared.
-    if (lo < -0.05 && hi > 0.05) {
+    if (lo < -0.1 && hi > 0.1) {
       EXPECT_EQ(r, RegionRelation::overlapping) << rng.trace() << " " << iter;
       ++decided;
-    } else if (hi < -0.05) {
+    } else if (hi < -0.1) {
       EXPECT_EQ(r, RegionRelation::b_contains_a) << rng.trace();
       ++decided;
-    } else if (lo > 0.05) {
+    } else if (lo > 0.1) {
       const RegionRelation want =
           inside(a, b.center) ? RegionRelation::a_contains_b : RegionRelation::separated;
       // The sampled minimum is an upper bound of the true one: a true crossing can hide
-      // between samples only when lo is small; 0.05 is far above the O(h^2) miss.
+      // between samples only when lo is small; 0.1 is far above the O(h^2) miss.
       EXPECT_EQ(r, want) << rng.trace() << " " << iter;
       ++decided;
     }
     EXPECT_EQ(intersects(a, b), r != RegionRelation::separated);
   }
-  EXPECT_GT(decided, 100);
+  EXPECT_GT(decided, 40);
   EXPECT_GT(kinds[int(RegionRelation::separated)], 0);
   EXPECT_GT(kinds[int(RegionRelation::overlapping)], 0);
 }

@@ -78,7 +78,7 @@ std::vector<double> oracle_hits(const BezierPatch<T, 3>& p, const Vec3<double>& 
     return x >= 0 && x <= 1 && y >= 0 && y <= 1;
   };
   std::vector<double> out;
-  const int grid = 4000;
+  const int grid = 2000;
   LD prev_t = t0, prev = f(prev_t);
   for (int i = 1; i <= grid; ++i) {
     const LD t = LD(t0) + (LD(t1) - LD(t0)) * i / grid;
@@ -111,7 +111,7 @@ TYPED_TEST(SurfaceHits, RandomHeightPatchesMatchTheOracle) {
   using T = TypeParam;
   Rng rng;
   int total = 0;
-  for (int iter = 0; iter < 60; ++iter) {
+  for (int iter = 0; iter < 40; ++iter) {
     const BezierPatch<T, 3> p = random_height_patch<T>(rng, T(0.6));
     // A steep-ish line through the square, several crossings possible.
     const Vec3<T> o{rng.uniform<T>(-0.2f, 1.2f), rng.uniform<T>(-0.2f, 1.2f), T(-1)};
@@ -130,13 +130,13 @@ TYPED_TEST(SurfaceHits, RandomHeightPatchesMatchTheOracle) {
     }
     total += static_cast<int>(ref.size());
   }
-  EXPECT_GT(total, 40);
+  EXPECT_GT(total, 25);
 }
 
 TYPED_TEST(SurfaceHits, LineThroughAKnownSurfacePoint) {
   using T = TypeParam;
   Rng rng(7);
-  for (int iter = 0; iter < 60; ++iter) {
+  for (int iter = 0; iter < 40; ++iter) {
     BezierPatch<T, 3> p{4, 3, {}};
     for (int k = 0; k < 12; ++k) p.control.push_back(rng.vec<T, 3>(T(-1), T(1)));
     const T u = rng.uniform<T>(T(0.05), T(0.95)), v = rng.uniform<T>(T(0.05), T(0.95));
@@ -253,6 +253,8 @@ TYPED_TEST(SurfaceHits, DegenerateAndNonFinite) {
   EXPECT_TRUE(in.on_surface);
   EXPECT_TRUE(in.hits.empty());
   EXPECT_TRUE(intersects(Line3<T>{{T(0.5), T(-1), 0}, {0, 1, 0}}, flat));
+  EXPECT_TRUE(intersects(flat, Segment3<T>{{T(0.5), T(0.5), 1}, {T(0.5), T(0.5), -1}}));
+  EXPECT_FALSE(intersects(flat, Ray3<T>{{T(0.5), T(0.5), 1}, {0, 0, 1}}));
   // Crossing the planar patch.
   const auto cross = intersection(Line3<T>{{T(0.25), T(0.5), 1}, {0, 0, -2}}, flat);
   ASSERT_EQ(cross.hits.size(), 1u);
@@ -493,7 +495,9 @@ TYPED_TEST(SurfaceHits, NurbsSphereMeetsAPlanePatchInACircle) {
 TYPED_TEST(SurfaceHits, BSplineSurfacesMeetInOpenBranches) {
   using T = TypeParam;
   Rng rng(17);
-  for (int iter = 0; iter < 4; ++iter) {
+  SurfaceCurveOptions opt;
+  opt.grid = 8;
+  for (int iter = 0; iter < 2; ++iter) {
     BSplineSurface<T, 3> a{3, 3, 5, 5, {}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}};
     for (int i = 0; i < 5; ++i)
       for (int j = 0; j < 5; ++j)
@@ -506,8 +510,8 @@ TYPED_TEST(SurfaceHits, BSplineSurfacesMeetInOpenBranches) {
         const T x = T(2 * i) - T(0.5), y = T(2 * j) - T(0.5);
         b.control.push_back({x, y, c + T(0.2) * (x - T(0.5))});
       }
-    const auto r = intersection(a, b);
-    const auto ref = intersection(Plane3<T>{{T(-0.2), 0, 1}, c - T(0.1)}, a);
+    const auto r = intersection(a, b, opt);
+    const auto ref = intersection(Plane3<T>{{T(-0.2), 0, 1}, c - T(0.1)}, a, opt);
     ASSERT_EQ(r.status, Status::ok);
     ASSERT_EQ(r.curves.size(), ref.curves.size()) << rng.trace() << " " << iter;
     const double tol = pick<T>(1e-5, 1e-9);

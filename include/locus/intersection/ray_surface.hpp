@@ -74,5 +74,10 @@ requires requires(const Ray3<T>& a, const S& b) { intersection(a, b).on_surface;
   const LinearSurfaceHits<T> r = intersection(a, b);
   return !r.hits.empty() || r.on_surface;
 }
+template <Real T, class S>
+requires requires(const Ray3<T>& a, const S& b) { intersection(a, b).on_surface; }
+[[nodiscard]] inline bool intersects(const S& b, const Ray3<T>& a) {
+  return intersects(a, b);
+}
 
 }  // namespace locus
