@@ -32,19 +32,18 @@
 #include <locus/intersection/plane_mesh.hpp>
 #include <locus/intersection/plane_plane.hpp>
 #include <locus/intersection/plane_sphere.hpp>
+#include <locus/intersection/plane_surface.hpp>
 #include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
 #include <locus/intersection/ray_cone.hpp>
 #include <locus/intersection/ray_cylinder.hpp>
 #include <locus/intersection/ray_sphere.hpp>
+#include <locus/intersection/ray_surface.hpp>
 #include <locus/intersection/ray_torus.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/segment_plane.hpp>
-#include <locus/intersection/triangle_triangle.hpp>
-#include <locus/intersection/plane_surface.hpp>
-#include <locus/intersection/ray_aligned_box.hpp>
-#include <locus/intersection/ray_surface.hpp>
 #include <locus/intersection/surface_surface.hpp>
+#include <locus/intersection/triangle_triangle.hpp>
 #include <locus/io/svg_primitives.hpp>
 #include <locus/mesh/platonic.hpp>
 #include <locus/primitives/aligned_box.hpp>
@@ -931,8 +930,8 @@ void wireframe(SvgWriter& w, const S& s, double u0, double u1, double v0, double
 /// A wavy bicubic NURBS patch (weights != 1) used by 11.18-11.22.
 NurbsSurface<double, 3> wavy_nurbs() {
   NurbsSurface<double, 3> s{3, 3, 4, 4, {}, {}, {0, 0, 0, 0, 1, 1, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}};
-  const double z[4][4] = {{0, 0.6, -0.4, 0}, {0.5, 1.4, 0.2, -0.3}, {-0.2, 0.3, 1.2, 0.4},
-                          {0, -0.5, 0.4, 0.2}};
+  const double z[4][4] = {
+      {0, 0.6, -0.4, 0}, {0.5, 1.4, 0.2, -0.3}, {-0.2, 0.3, 1.2, 0.4}, {0, -0.5, 0.4, 0.2}};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       s.control.push_back({double(i) - 1.5, double(j) - 1.5, z[i][j]});
@@ -1024,8 +1023,8 @@ bool fig_11_22(SvgWriter& w) { return refinement_boxes(w, 2); }
 /// A bicubic bump patch for the plane-surface figures: a dome with a dimple.
 BezierPatch<double, 3> dome() {
   BezierPatch<double, 3> p{4, 4, {}};
-  const double z[4][4] = {{0, 0.3, 0.3, 0}, {0.3, 2.0, 0.4, 0.3}, {0.3, 0.4, 2.0, 0.3},
-                          {0, 0.3, 0.3, 0}};
+  const double z[4][4] = {
+      {0, 0.3, 0.3, 0}, {0.3, 2.0, 0.4, 0.3}, {0.3, 0.4, 2.0, 0.3}, {0, 0.3, 0.3, 0}};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) p.control.push_back({double(i) - 1.5, double(j) - 1.5, z[i][j]});
   return p;

@@ -143,8 +143,8 @@ surface). Bézier hierarchy refinement then Newton (see ray_surface.hpp for the 
         SurfaceCurves<double> r;
         {
           py::gil_scoped_release nogil;
-          r = intersection(Plane3<double>{{nv.data()[0], nv.data()[1], nv.data()[2]}, constant},
-                           s, opt);
+          r = intersection(Plane3<double>{{nv.data()[0], nv.data()[1], nv.data()[2]}, constant}, s,
+                           opt);
         }
         check_status(r.status, fn, false);
         py::list points, uv;

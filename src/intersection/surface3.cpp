@@ -25,10 +25,10 @@ using HP = BezierPatch<double, 4>;
 using V2 = Vec2<double>;
 
 constexpr double eps = 0x1p-52;
-constexpr int max_depth = 8;            // leaves of 2^-8 of a Bézier span in each direction
+constexpr int max_depth = 8;  // leaves of 2^-8 of a Bézier span in each direction
 constexpr std::size_t node_budget = 1u << 18;
-constexpr double accept_residual = 0x1p-36;  // relative to the scaled surface size O(1)
-constexpr double merge_distance = 0x1p-24;   // relative, hits closer than this are one hit
+constexpr double accept_residual = 0x1p-36;         // relative to the scaled surface size O(1)
+constexpr double merge_distance = 0x1p-24;          // relative, hits closer than this are one hit
 constexpr double merge_distance_tangent = 0x1p-17;  // about sqrt(accept_residual)
 constexpr double tangent_sine = 0x1p-20;
 
@@ -84,8 +84,8 @@ SurfaceDerivatives<double, 3> rational_partials(const HP& h, double u, double v)
 // Linear component against a surface.
 
 struct Candidate {
-  double tau;       // scaled distance along the unit direction from the origin
-  double u, v;      // local parameters on patch k
+  double tau;   // scaled distance along the unit direction from the origin
+  double u, v;  // local parameters on patch k
   int k;
   double residual;
 };
@@ -369,7 +369,6 @@ void link_segments(const std::vector<std::array<int, 2>>& segs, int npoints,
   }
 }
 
-
 /// The plane's signed distance (homogeneous) at every control point of a patch: min and max.
 void plane_range(const HP& p, const V& n, double k, double& lo, double& hi) noexcept {
   lo = INFINITY;
@@ -593,7 +592,8 @@ std::vector<Box> leaf_boxes(const Grid& g, int n) {
         HP strip = subdivide_u(subdivide_u(p, ub).first, ub > 0.0 ? ua / ub : 0.0).second;
         for (int j = 0; j < n; ++j) {
           const double va = double(j) / n, vb = double(j + 1) / n;
-          const HP cell = subdivide_v(subdivide_v(strip, vb).first, vb > 0.0 ? va / vb : 0.0).second;
+          const HP cell =
+              subdivide_v(subdivide_v(strip, vb).first, vb > 0.0 ? va / vb : 0.0).second;
           Box bx{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}, 0, 0, 0, 0};
           for (const V4& c : cell.control) {
             const V q = xyz(c) / c.w;

@@ -54,12 +54,21 @@ TEST(CliSurfacehit, BezierPatchMatchesTheLibrary) {
   const std::string rays = (dir / "rays.csv").string(), out = (dir / "out.txt").string();
   {
     std::ofstream f(rays);
-    f << "ox,oy,oz,dx,dy,dz\n0.3,0.4,2,0,0,-1\n0.5,-1,0,0,1,0\n5,5,2,0,0,-1\n0.2,0.9,-1,0.3,-0.5,1\n";
+    f << "ox,oy,oz,dx,dy,dz\n0.3,0.4,2,0,0,-1\n0.5,-1,0,0,1,0\n5,5,2,0,0,-1\n0.2,0.9,-1,0.3,-0.5,"
+         "1\n";
   }
   // A biquadratic bump over the unit square, control net row-major.
-  const locus::BezierPatch<double, 3> bump{
-      3, 3, {{0, 0, 0}, {0, 0.5, 0}, {0, 1, 0}, {0.5, 0, 0}, {0.5, 0.5, 1}, {0.5, 1, 0},
-             {1, 0, 0}, {1, 0.5, 0}, {1, 1, 0}}};
+  const locus::BezierPatch<double, 3> bump{3,
+                                           3,
+                                           {{0, 0, 0},
+                                            {0, 0.5, 0},
+                                            {0, 1, 0},
+                                            {0.5, 0, 0},
+                                            {0.5, 0.5, 1},
+                                            {0.5, 1, 0},
+                                            {1, 0, 0},
+                                            {1, 0.5, 0},
+                                            {1, 1, 0}}};
   std::ostringstream nets;
   nets.precision(17);
   nets << "3,3";

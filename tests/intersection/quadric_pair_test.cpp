@@ -48,10 +48,12 @@ TYPED_TEST(QuadricPairs, SphereKindsMatchGmp) {
   Rng rng;
   int counts[9] = {};
   for (int iter = 0; iter < 400; ++iter) {
-    const Sphere3<T> a{{T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4))},
-                       T(rng.uniform_int(1, 5))};
-    const Sphere3<T> b{{T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4))},
-                       T(rng.uniform_int(1, 5))};
+    const Sphere3<T> a{
+        {T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4))},
+        T(rng.uniform_int(1, 5))};
+    const Sphere3<T> b{
+        {T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4))},
+        T(rng.uniform_int(1, 5))};
     const RegionRelation want = gmp_relation(a, b);
     ++counts[int(want)];
     for (T sc : {T(1), T(0x1p-30), T(0x1p30)}) {
@@ -91,7 +93,8 @@ TYPED_TEST(QuadricPairs, SphereKindsMatchGmp) {
       }
     }
   }
-  EXPECT_GT(counts[int(RegionRelation::touching)] + counts[int(RegionRelation::a_contains_b_touching)] +
+  EXPECT_GT(counts[int(RegionRelation::touching)] +
+                counts[int(RegionRelation::a_contains_b_touching)] +
                 counts[int(RegionRelation::b_contains_a_touching)],
             0);
   EXPECT_GT(counts[int(RegionRelation::overlapping)], 0);
@@ -100,7 +103,8 @@ TYPED_TEST(QuadricPairs, SphereKindsMatchGmp) {
 TYPED_TEST(QuadricPairs, SphereDegenerate) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN();
-  EXPECT_EQ(relation(Sphere3<T>{{nan, 0, 0}, 1}, Sphere3<T>{{0, 0, 0}, 1}), RegionRelation::undecided);
+  EXPECT_EQ(relation(Sphere3<T>{{nan, 0, 0}, 1}, Sphere3<T>{{0, 0, 0}, 1}),
+            RegionRelation::undecided);
   EXPECT_EQ(intersection(Sphere3<T>{{0, 0, 0}, -1}, Sphere3<T>{{0, 0, 0}, 1}).kind, Kind::empty);
   // A point sphere on the other sphere: a tangent point.
   const auto p = intersection(Sphere3<T>{{0, 0, 2}, 0}, Sphere3<T>{{0, 0, 0}, 2});
@@ -120,7 +124,8 @@ Ellipsoid3<T> random_ellipsoid(Rng& rng, T lo, T hi) {
   Vec3<T> t = rng.unit<T, 3>();
   Vec3<T> a1 = normalize(t - dot(t, a0) * a0);
   const Vec3<T> a2 = cross(a0, a1);
-  return {rng.vec<T, 3>(T(-1.5), T(1.5)), {a0, a1, a2},
+  return {rng.vec<T, 3>(T(-1.5), T(1.5)),
+          {a0, a1, a2},
           {rng.uniform<T>(lo, hi), rng.uniform<T>(lo, hi), rng.uniform<T>(lo, hi)}};
 }
 
@@ -138,8 +143,8 @@ void sample(const Ellipsoid3<T>& a, const Ellipsoid3<T>& b, double& lo, double& 
       for (int k = 0; k < 3; ++k) x = x + u[k] * double(a.extent[k]) * vec_cast<double>(a.axis[k]);
       double q = -1.0;
       for (int k = 0; k < 3; ++k) {
-        const double s = dot(vec_cast<double>(b.axis[k]), x - vec_cast<double>(b.center)) /
-                         double(b.extent[k]);
+        const double s =
+            dot(vec_cast<double>(b.axis[k]), x - vec_cast<double>(b.center)) / double(b.extent[k]);
         q += s * s;
       }
       lo = std::min(lo, q);
@@ -151,8 +156,8 @@ template <class T>
 bool inside(const Ellipsoid3<T>& a, const Vec3<T>& p) {
   double q = -1.0;
   for (int k = 0; k < 3; ++k) {
-    const double s = dot(vec_cast<double>(a.axis[k]), vec_cast<double>(p - a.center)) /
-                     double(a.extent[k]);
+    const double s =
+        dot(vec_cast<double>(a.axis[k]), vec_cast<double>(p - a.center)) / double(a.extent[k]);
     q += s * s;
   }
   return q < 0.0;
@@ -221,7 +226,8 @@ TYPED_TEST(QuadricPairs, EllipsoidContainmentTangencyAndSpheres) {
     const Sphere3<T> s1{{T(rng.uniform_int(-3, 3)), 0, T(rng.uniform_int(-3, 3))},
                         T(rng.uniform_int(1, 4))};
     const auto as_ell = [](const Sphere3<T>& s) {
-      return Ellipsoid3<T>{s.center, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {s.radius, s.radius, s.radius}};
+      return Ellipsoid3<T>{
+          s.center, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {s.radius, s.radius, s.radius}};
     };
     EXPECT_EQ(relation(as_ell(s0), as_ell(s1)), relation(s0, s1)) << rng.trace() << " " << iter;
   }

@@ -98,8 +98,8 @@ std::vector<double> oracle_hits(const BezierPatch<T, 3>& p, const Vec3<double>& 
 }
 
 template <class T, class Hit>
-void expect_residuals(const BezierPatch<T, 3>& p, const Vec3<T>& o, const Vec3<T>& d,
-                      const Hit& h, const std::string& trace) {
+void expect_residuals(const BezierPatch<T, 3>& p, const Vec3<T>& o, const Vec3<T>& d, const Hit& h,
+                      const std::string& trace) {
   const double tol = pick<T>(2e-5, 1e-9);
   const Vec3<double> on_line = vec_cast<double>(o) + double(h.t) * vec_cast<double>(d);
   EXPECT_LE(max_abs(on_line - vec_cast<double>(h.point)), tol) << trace;
@@ -119,13 +119,11 @@ TYPED_TEST(SurfaceHits, RandomHeightPatchesMatchTheOracle) {
     const Vec3<T> d = e - o;
     const auto r = intersection(Line3<T>{o, d}, p);
     ASSERT_EQ(r.status, Status::ok) << rng.trace();
-    const auto ref =
-        oracle_hits(p, vec_cast<double>(o), vec_cast<double>(d), -0.5, 1.5);
+    const auto ref = oracle_hits(p, vec_cast<double>(o), vec_cast<double>(d), -0.5, 1.5);
     // The oracle finds sign changes only: tangencies are excluded by the random draw.
     ASSERT_EQ(r.hits.size(), ref.size()) << rng.trace() << " iter " << iter;
     for (std::size_t i = 0; i < ref.size(); ++i) {
-      EXPECT_NEAR(double(r.hits[i].t), ref[i], pick<T>(1e-4, 1e-9))
-          << rng.trace();
+      EXPECT_NEAR(double(r.hits[i].t), ref[i], pick<T>(1e-4, 1e-9)) << rng.trace();
       expect_residuals(p, o, d, r.hits[i], rng.trace());
     }
     total += static_cast<int>(ref.size());
@@ -148,8 +146,7 @@ TYPED_TEST(SurfaceHits, LineThroughAKnownSurfacePoint) {
     bool found = false;
     for (const auto& h : r.hits) {
       expect_residuals(p, o, d, h, rng.trace());
-      if (max_abs(vec_cast<double>(h.point) - vec_cast<double>(q)) <
-          pick<T>(1e-4, 1e-9))
+      if (max_abs(vec_cast<double>(h.point) - vec_cast<double>(q)) < pick<T>(1e-4, 1e-9))
         found = true;
     }
     // The known hit is found unless the line is nearly tangent there (then the point is
@@ -190,9 +187,16 @@ NurbsSurface<T, 3> nurbs_sphere() {
   const T h = T(std::sqrt(0.5));
   const Vec2<T> m[5] = {{0, 1}, {1, 1}, {1, 0}, {1, -1}, {0, -1}};
   const T wm[5] = {1, h, 1, h, 1};
-  const Vec2<T> c[9] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
+  const Vec2<T> c[9] = {{1, 0},   {1, 1},  {0, 1},  {-1, 1}, {-1, 0},
+                        {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
   const T wc[9] = {1, h, 1, h, 1, h, 1, h, 1};
-  NurbsSurface<T, 3> s{2, 2, 5, 9, {}, {}, {0, 0, 0, 0.5, 0.5, 1, 1, 1},
+  NurbsSurface<T, 3> s{2,
+                       2,
+                       5,
+                       9,
+                       {},
+                       {},
+                       {0, 0, 0, 0.5, 0.5, 1, 1, 1},
                        {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}};
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 9; ++j) {
@@ -307,7 +311,8 @@ TYPED_TEST(SurfaceHits, BSplineSurfaceAgreesWithItsBezierPieces) {
   using T = TypeParam;
   Rng rng(13);
   // A bicubic B-spline height field 5 x 5 with clamped uniform knots.
-  BSplineSurface<T, 3> s{3, 3, 5, 5, {}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}};
+  BSplineSurface<T, 3> s{
+      3, 3, 5, 5, {}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}};
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 5; ++j)
       s.control.push_back({T(i) / T(4), T(j) / T(4), rng.uniform<T>(T(-0.4), T(0.4))});
@@ -320,8 +325,7 @@ TYPED_TEST(SurfaceHits, BSplineSurfaceAgreesWithItsBezierPieces) {
     const auto g = to_bezier(s);
     for (const auto& h : r.hits) {
       const Vec3<T> q = point_at(s, h.uv.x, h.uv.y);
-      EXPECT_LE(max_abs(vec_cast<double>(q) - vec_cast<double>(h.point)),
-                pick<T>(1e-4, 1e-9));
+      EXPECT_LE(max_abs(vec_cast<double>(q) - vec_cast<double>(h.point)), pick<T>(1e-4, 1e-9));
     }
     // Count oracle: the hits of each Bézier piece (x, y span a sub-square), merged at seams.
     std::vector<double> ts;
@@ -379,8 +383,7 @@ TYPED_TEST(SurfaceHits, PlaneCutsABowlInOneLoop) {
   // Bad input.
   EXPECT_EQ(intersection(Plane3<T>{{0, 0, 0}, T(1)}, bowl<T>()).status, Status::degenerate_input);
   const T nan = std::numeric_limits<T>::quiet_NaN();
-  EXPECT_EQ(intersection(Plane3<T>{{0, nan, 1}, T(1)}, bowl<T>()).status,
-            Status::non_finite_input);
+  EXPECT_EQ(intersection(Plane3<T>{{0, nan, 1}, T(1)}, bowl<T>()).status, Status::non_finite_input);
 }
 
 TYPED_TEST(SurfaceHits, PlaneFindsALoopInsideOneCell) {
@@ -473,8 +476,15 @@ TYPED_TEST(SurfaceHits, NurbsSphereMeetsAPlanePatchInACircle) {
   using T = TypeParam;
   const NurbsSurface<T, 3> sphere = nurbs_sphere<T>();
   // The plane z = 0.3 as a bilinear NURBS patch (unit weights) over [-2, 2]^2.
-  const NurbsSurface<T, 3> plane{1, 1, 2, 2, {{-2, -2, T(0.3)}, {-2, 2, T(0.3)}, {2, -2, T(0.3)}, {2, 2, T(0.3)}},
-                                 {1, 1, 1, 1}, {0, 0, 1, 1}, {0, 0, 1, 1}};
+  const NurbsSurface<T, 3> plane{
+      1,
+      1,
+      2,
+      2,
+      {{-2, -2, T(0.3)}, {-2, 2, T(0.3)}, {2, -2, T(0.3)}, {2, 2, T(0.3)}},
+      {1, 1, 1, 1},
+      {0, 0, 1, 1},
+      {0, 0, 1, 1}};
   const auto r = intersection(sphere, plane);
   ASSERT_EQ(r.status, Status::ok);
   ASSERT_FALSE(r.curves.empty());
@@ -498,7 +508,8 @@ TYPED_TEST(SurfaceHits, BSplineSurfacesMeetInOpenBranches) {
   SurfaceCurveOptions opt;
   opt.grid = 8;
   for (int iter = 0; iter < 2; ++iter) {
-    BSplineSurface<T, 3> a{3, 3, 5, 5, {}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}};
+    BSplineSurface<T, 3> a{
+        3, 3, 5, 5, {}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}};
     for (int i = 0; i < 5; ++i)
       for (int j = 0; j < 5; ++j)
         a.control.push_back({T(i) / T(4), T(j) / T(4), rng.uniform<T>(T(-0.3), T(0.3))});

@@ -40,7 +40,8 @@ void run_surfacehit(const SurfaceHitOptions& o) {
     patch.cols = static_cast<int>(b[1]);
     if (b.size() != 2 + 3 * std::size_t(patch.rows) * std::size_t(patch.cols))
       throw UsageError("--bezier: expected rows,cols then 3 * rows * cols coordinates");
-    for (std::size_t k = 2; k + 2 < b.size(); k += 3) patch.control.push_back({b[k], b[k + 1], b[k + 2]});
+    for (std::size_t k = 2; k + 2 < b.size(); k += 3)
+      patch.control.push_back({b[k], b[k + 1], b[k + 2]});
   }
   const std::vector<locus::Vec<double, 6>> rows = load_rows6(o.rays);
   const auto hits = [&](const locus::Ray3d& ray) -> locus::LinearSurfaceIntersection3<double> {
@@ -64,7 +65,9 @@ void run_surfacehit(const SurfaceHitOptions& o) {
         r.normal[i] = x.normal;
         r.multiplicity[i] = x.tangent ? 2 : 1;
       }
-      r.kind = r.count == 0 ? locus::Kind::empty : r.count == 1 ? locus::Kind::point : locus::Kind::points;
+      r.kind = r.count == 0   ? locus::Kind::empty
+               : r.count == 1 ? locus::Kind::point
+                              : locus::Kind::points;
       return r;
     }
     if (!o.sphere.empty())
@@ -125,8 +128,8 @@ void run_surfacehit(const SurfaceHitOptions& o) {
 
 void register_surfacehit(CLI::App& app) {
   auto o = std::make_shared<SurfaceHitOptions>();
-  CLI::App* sub =
-      app.add_subcommand("surfacehit", "hits of rays on a sphere, a quadric, a torus or a Bezier patch");
+  CLI::App* sub = app.add_subcommand(
+      "surfacehit", "hits of rays on a sphere, a quadric, a torus or a Bezier patch");
   sub->add_option("rays", o->rays, "rays, one per CSV row: ox,oy,oz,dx,dy,dz (- for stdin)")
       ->required();
   sub->add_option("--sphere", o->sphere, "cx,cy,cz,r")->expected(4)->delimiter(',');

@@ -39,11 +39,9 @@ template <Real T>
                        vec_cast<double>(a.axis[2])};
   const V b_axes[3] = {vec_cast<double>(b.axis[0]), vec_cast<double>(b.axis[1]),
                        vec_cast<double>(b.axis[2])};
-  return detail::quadric_pair3::ellipsoid_relation(vec_cast<double>(a.center), a_axes,
-                                                   vec_cast<double>(a.extent),
-                                                   vec_cast<double>(b.center), b_axes,
-                                                   vec_cast<double>(b.extent),
-                                                   std::is_same_v<T, float> ? 0x1p-20 : 0x1p-40);
+  return detail::quadric_pair3::ellipsoid_relation(
+      vec_cast<double>(a.center), a_axes, vec_cast<double>(a.extent), vec_cast<double>(b.center),
+      b_axes, vec_cast<double>(b.extent), std::is_same_v<T, float> ? 0x1p-20 : 0x1p-40);
 }
 
 /// Whether the two solid ellipsoids share a point (relation() neither separated nor undecided).

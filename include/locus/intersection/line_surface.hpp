@@ -31,21 +31,21 @@ namespace locus {
 /// The hits of a line on a Bézier patch (see the header comment).
 template <Real T>
 [[nodiscard]] inline LinearSurfaceHits<T> intersection(const Line3<T>& a,
-                                                        const BezierPatch<T, 3>& b) {
+                                                       const BezierPatch<T, 3>& b) {
   namespace s = detail::surface3;
   return s::cast<T>(s::linear_hits(detail::linear3::as_lin(a), s::as_nurbs(b)));
 }
 /// The hits of a line on a B-spline surface (uv in its knot domain).
 template <Real T>
 [[nodiscard]] inline LinearSurfaceHits<T> intersection(const Line3<T>& a,
-                                                        const BSplineSurface<T, 3>& b) {
+                                                       const BSplineSurface<T, 3>& b) {
   namespace s = detail::surface3;
   return s::cast<T>(s::linear_hits(detail::linear3::as_lin(a), s::as_nurbs(b)));
 }
 /// The hits of a line on a NURBS surface (uv in its knot domain).
 template <Real T>
 [[nodiscard]] inline LinearSurfaceHits<T> intersection(const Line3<T>& a,
-                                                        const NurbsSurface<T, 3>& b) {
+                                                       const NurbsSurface<T, 3>& b) {
   namespace s = detail::surface3;
   return s::cast<T>(s::linear_hits(detail::linear3::as_lin(a), s::as_nurbs(b)));
 }
@@ -53,17 +53,17 @@ template <Real T>
 /// The same with the arguments exchanged (the result names t and uv, nothing to swap).
 template <Real T>
 [[nodiscard]] inline LinearSurfaceHits<T> intersection(const BezierPatch<T, 3>& a,
-                                                        const Line3<T>& b) {
+                                                       const Line3<T>& b) {
   return intersection(b, a);
 }
 template <Real T>
 [[nodiscard]] inline LinearSurfaceHits<T> intersection(const BSplineSurface<T, 3>& a,
-                                                        const Line3<T>& b) {
+                                                       const Line3<T>& b) {
   return intersection(b, a);
 }
 template <Real T>
 [[nodiscard]] inline LinearSurfaceHits<T> intersection(const NurbsSurface<T, 3>& a,
-                                                        const Line3<T>& b) {
+                                                       const Line3<T>& b) {
   return intersection(b, a);
 }
 
@@ -76,8 +76,6 @@ requires requires(const Line3<T>& a, const S& b) { intersection(a, b).on_surface
 }
 template <Real T, class S>
 requires requires(const Line3<T>& a, const S& b) { intersection(a, b).on_surface; }
-[[nodiscard]] inline bool intersects(const S& b, const Line3<T>& a) {
-  return intersects(a, b);
-}
+[[nodiscard]] inline bool intersects(const S& b, const Line3<T>& a) { return intersects(a, b); }
 
 }  // namespace locus

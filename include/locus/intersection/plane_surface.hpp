@@ -20,9 +20,10 @@
 // witnesses, 5 levels): when one hides a sign region (a small loop) the grid is doubled, up to
 // 256 cells per span; if one remains, status is limit_exceeded (the curves found are returned).
 // Not found: two crossings of one cell edge inside a cell with mixed corners, features below
-// 2^-5 of a 256-cell, pieces where the surface lies in the plane (zero counts as positive). Degenerate: zero normal: degenerate_input; NaN/Inf: non_finite_input; invalid
-// surface: validate()'s status. Float input is computed in double. Cost: (grid + 1)^2 surface
-// evaluations per span plus 64 per crossing; allocates.
+// 2^-5 of a 256-cell, pieces where the surface lies in the plane (zero counts as positive).
+// Degenerate: zero normal: degenerate_input; NaN/Inf: non_finite_input; invalid surface:
+// validate()'s status. Float input is computed in double. Cost: (grid + 1)^2 surface evaluations
+// per span plus 64 per crossing; allocates.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/surface3.hpp>

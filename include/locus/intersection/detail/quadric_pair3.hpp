@@ -33,8 +33,8 @@ using V = Vec3<double>;
                                              double r1) noexcept;
 /// Ellipsoids as center, three axes (unit, orthogonal) and extents.
 [[nodiscard]] RegionRelation ellipsoid_relation(const V& c0, const V (&a0)[3], const V& e0,
-                                                const V& c1, const V (&a1)[3],
-                                                const V& e1, double rel_tol) noexcept;
+                                                const V& c1, const V (&a1)[3], const V& e1,
+                                                double rel_tol) noexcept;
 
 template <Real T>
 [[nodiscard]] SphereSphereIntersection<T> cast(const SphereSphereIntersection<double>& r) noexcept {

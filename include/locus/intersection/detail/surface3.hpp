@@ -25,10 +25,10 @@ namespace locus {
 /// One isolated hit of a line, ray or segment on a parametric surface.
 template <Real T>
 struct SurfaceHit {
-  T t = T(0);         ///< parameter on the linear component (its point_at)
-  Vec2<T> uv{};       ///< (u, v) on the surface (its own parameter domain)
-  Vec3<T> point{};    ///< the surface point S(u, v)
-  Vec3<T> normal{};   ///< unit surface normal at the hit (zero where undefined)
+  T t = T(0);            ///< parameter on the linear component (its point_at)
+  Vec2<T> uv{};          ///< (u, v) on the surface (its own parameter domain)
+  Vec3<T> point{};       ///< the surface point S(u, v)
+  Vec3<T> normal{};      ///< unit surface normal at the hit (zero where undefined)
   bool tangent = false;  ///< the component meets the surface tangentially (see the pair header)
 };
 
@@ -36,7 +36,7 @@ struct SurfaceHit {
 template <Real T>
 struct LinearSurfaceHits {
   Status status = Status::empty_input;  ///< ok, or why nothing was computed
-  std::vector<SurfaceHit<T>> hits;       ///< isolated hits, by increasing t
+  std::vector<SurfaceHit<T>> hits;      ///< isolated hits, by increasing t
   bool on_surface = false;  ///< a piece of the component lies on the surface (not listed)
 };
 
