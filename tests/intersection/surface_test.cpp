@@ -296,6 +296,16 @@ TYPED_TEST(SurfaceHits, PowerOfTwoScalingAndTranslation) {
         EXPECT_NEAR(double(rs.hits[i].uv.x), double(r.hits[i].uv.x), pick<T>(1e-6, 1e-12));
       }
     }
+    // A rotation permuting the axes (exact): the same hits.
+    BezierPatch<T, 3> rot = p;
+    for (auto& c : rot.control) c = Vec3<T>{c.y, c.z, c.x};
+    const auto rr = intersection(Line3<T>{{o.y, o.z, o.x}, {d.y, d.z, d.x}}, rot);
+    ASSERT_EQ(rr.hits.size(), r.hits.size()) << rng.trace();
+    for (std::size_t i = 0; i < r.hits.size(); ++i) {
+      EXPECT_NEAR(double(rr.hits[i].t), double(r.hits[i].t), pick<T>(1e-6, 1e-12));
+      EXPECT_NEAR(double(rr.hits[i].uv.y), double(r.hits[i].uv.y), pick<T>(1e-6, 1e-12));
+      EXPECT_NEAR(double(rr.hits[i].normal.x), double(r.hits[i].normal.y), pick<T>(1e-5, 1e-10));
+    }
     // A translation (rounded in T: compared within the conditioning of the hits).
     BezierPatch<T, 3> q = p;
     const Vec3<T> shift{T(3), T(-2), T(5)};
@@ -500,6 +510,20 @@ TYPED_TEST(SurfaceHits, NurbsSphereMeetsAPlanePatchInACircle) {
   }
   // Covered once: the traced pieces add up to the circle (no duplicate, no gap).
   EXPECT_NEAR(len, 2 * M_PI * std::sqrt(1 - 0.09), 0.01 * 2 * M_PI);
+}
+
+TYPED_TEST(SurfaceHits, MixedSurfaceKinds) {
+  using T = TypeParam;
+  // The bowl as a Bézier patch against the lid 1 - x^2 - y^2 as a NURBS surface (unit weights):
+  // the same circle as two Bézier patches give.
+  const BezierPatch<T, 3> lid = bowl<T>(T(-1), T(1));
+  const NurbsSurface<T, 3> lid_nurbs{
+      2, 2, 3, 3, lid.control, std::vector<T>(9, T(1)), {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}};
+  const auto r = intersection(bowl<T>(), lid_nurbs);
+  ASSERT_EQ(r.status, Status::ok);
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  for (const auto& p : r.curves[0].points) EXPECT_NEAR(double(p.z), 0.5, pick<T>(1e-5, 1e-9));
 }
 
 TYPED_TEST(SurfaceHits, BSplineSurfacesMeetInOpenBranches) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Intersection of two parametric surfaces (BezierPatch, BSplineSurface, NurbsSurface, in any
-// combination of the same kind): intersection() returns the intersection curves as polylines;
+// combination with the same scalar): intersection() returns the intersection curves as polylines;
 // row int3.surface-surface, book section 11.8 (figures 11.59, 11.60: two B-spline surfaces and
 // the curves in each parameter space). Result SurfaceCurves<T> (intersection/detail/surface3.hpp):
 // status and curves, each closed or open (ends on a domain boundary of either surface), with
@@ -23,6 +23,8 @@
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/surface3.hpp>
+
+#include <type_traits>
 
 namespace locus {
 
@@ -47,6 +49,35 @@ template <Real T>
                                                    const BezierPatch<T, 3>& b,
                                                    const SurfaceCurveOptions& opt = {}) {
   namespace s = detail::surface3;
+  return s::cast<T>(s::surface_curves(s::as_nurbs(a), s::as_nurbs(b), opt));
+}
+
+namespace detail::surface3 {
+/// The scalar of a parametric surface type (BezierPatch, BSplineSurface, NurbsSurface in 3D).
+template <class S>
+struct SurfaceScalar {};
+template <Real T>
+struct SurfaceScalar<BezierPatch<T, 3>> {
+  using type = T;
+};
+template <Real T>
+struct SurfaceScalar<BSplineSurface<T, 3>> {
+  using type = T;
+};
+template <Real T>
+struct SurfaceScalar<NurbsSurface<T, 3>> {
+  using type = T;
+};
+}  // namespace detail::surface3
+
+/// Two surfaces of different kinds (a Bézier patch and a B-spline surface, ...), same scalar.
+template <class A, class B>
+requires(!std::is_same_v<A, B> && std::is_same_v<typename detail::surface3::SurfaceScalar<A>::type,
+                                                 typename detail::surface3::SurfaceScalar<B>::type>)
+    [[nodiscard]] inline auto intersection(const A& a, const B& b,
+                                           const SurfaceCurveOptions& opt = {}) {
+  namespace s = detail::surface3;
+  using T = typename s::SurfaceScalar<A>::type;
   return s::cast<T>(s::surface_curves(s::as_nurbs(a), s::as_nurbs(b), opt));
 }
 
