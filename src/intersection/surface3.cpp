@@ -123,6 +123,26 @@ bool newton_line(const HP& p, double& u, double& v, double& residual, double& ta
   return std::isfinite(residual) && residual <= accept_residual;
 }
 
+/// Whether the point q (line frame) lies on the patch: Gauss-Newton from (u, v) on S - q.
+bool project_onto(const HP& p, const V& q, double& u, double& v) noexcept {
+  for (int it = 0; it < 40; ++it) {
+    const SurfaceDerivatives<double, 3> s = rational_partials(p, u, v);
+    const V g = s.point - q;
+    if (max_abs(g) <= accept_residual) return true;
+    const double a11 = dot(s.du, s.du), a12 = dot(s.du, s.dv), a22 = dot(s.dv, s.dv);
+    const double mu = 0x1p-40 * (a11 + a22) + 1e-300;
+    const double g1 = dot(s.du, g), g2 = dot(s.dv, g);
+    const double b11 = a11 + mu, b22 = a22 + mu, det = b11 * b22 - a12 * a12;
+    if (!(det > 0.0) || !std::isfinite(det)) return false;
+    const double nu = std::clamp(u - (b22 * g1 - a12 * g2) / det, 0.0, 1.0);
+    const double nv = std::clamp(v - (b11 * g2 - a12 * g1) / det, 0.0, 1.0);
+    if (nu == u && nv == v) break;
+    u = nu;
+    v = nv;
+  }
+  return max_abs(rational_partials(p, u, v).point - q) <= accept_residual;
+}
+
 struct Node {
   HP patch;
   double u0, u1, v0, v1;
@@ -267,8 +287,29 @@ LinearSurfaceHits<double> linear_hits(const linear3::Lin& l, const NS& s) {
     }
     if (!dup) merged.push_back({c, sl.point, tan});
   }
+  // A piece of the line lying on a curved surface (a ruling) shows up as a run of tangential
+  // roots, one per leaf: two neighbours whose midpoint is on the surface belong to such a
+  // piece; they are dropped and on_surface set.
+  std::sort(merged.begin(), merged.end(),
+            [](const Merged& a, const Merged& b) { return a.c.tau < b.c.tau; });
+  std::vector<char> on_piece(merged.size(), 0);
+  for (std::size_t i = 0; i + 1 < merged.size(); ++i) {
+    if (!merged[i].tangent || !merged[i + 1].tangent) continue;
+    const double mid = 0.5 * (merged[i].c.tau + merged[i + 1].c.tau);
+    bool on = false;
+    for (std::size_t e = i; e <= i + 1 && !on; ++e) {
+      double u = merged[e].c.u, v = merged[e].c.v;
+      on = project_onto(local[z(merged[e].c.k)], {0.0, 0.0, mid}, u, v);
+    }
+    if (on) {
+      on_piece[i] = on_piece[i + 1] = 1;
+      r.on_surface = true;
+    }
+  }
   const double dd = dot(d, d);
-  for (const Merged& mc : merged) {
+  for (std::size_t mi = 0; mi < merged.size(); ++mi) {
+    if (on_piece[mi]) continue;
+    const Merged& mc = merged[mi];
     const Candidate& c = mc.c;
     const auto ku = c.k / g.count_v, kv = c.k % g.count_v;
     const SurfaceDerivatives<double, 3> sd = rational_partials(g.patches[z(c.k)], c.u, c.v);

@@ -259,6 +259,14 @@ TYPED_TEST(SurfaceHits, DegenerateAndNonFinite) {
   EXPECT_TRUE(intersects(Line3<T>{{T(0.5), T(-1), 0}, {0, 1, 0}}, flat));
   EXPECT_TRUE(intersects(flat, Segment3<T>{{T(0.5), T(0.5), 1}, {T(0.5), T(0.5), -1}}));
   EXPECT_FALSE(intersects(flat, Ray3<T>{{T(0.5), T(0.5), 1}, {0, 0, 1}}));
+  // A line on a curved (ruled) surface: the saddle z = x y contains x = 1/2.
+  const BezierPatch<T, 3> saddle{2, 2, {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 1}}};
+  const auto ruling = intersection(Line3<T>{{T(0.5), -1, T(-0.5)}, {0, 1, T(0.5)}}, saddle);
+  EXPECT_TRUE(ruling.on_surface);
+  EXPECT_TRUE(ruling.hits.empty());
+  const auto off = intersection(Line3<T>{{T(0.5), -1, T(-0.25)}, {0, 1, T(0.5)}}, saddle);
+  EXPECT_FALSE(off.on_surface);
+  EXPECT_TRUE(off.hits.empty());
   // Crossing the planar patch.
   const auto cross = intersection(Line3<T>{{T(0.25), T(0.5), 1}, {0, 0, -2}}, flat);
   ASSERT_EQ(cross.hits.size(), 1u);
