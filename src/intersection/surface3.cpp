@@ -874,16 +874,25 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
   const Pair pr{&sa, &sb, domain_u(sa), domain_v(sa), domain_u(sb), domain_v(sb), scale};
   const double slack = 0x1p-30 * scale;
   std::vector<std::array<double, 4>> seeds;
-  for (const Box& x : ba)
+  constexpr std::size_t seed_budget = 1u << 14;
+  std::size_t pairs = 0;
+  for (const Box& x : ba) {
+    if (r.status != Status::ok) break;
     for (const Box& y : bb) {
       bool overlap = true;
       for (int k = 0; k < 3; ++k)
         overlap = overlap && x.lo[k] <= y.hi[k] + slack && y.lo[k] <= x.hi[k] + slack;
       if (!overlap) continue;
+      // Overlapping surfaces (coincident pieces) would seed every pair: a budget.
+      if (++pairs > seed_budget) {
+        r.status = Status::limit_exceeded;
+        break;
+      }
       std::array<double, 4> s{0.5 * (x.u0 + x.u1), 0.5 * (x.v0 + x.v1), 0.5 * (y.u0 + y.u1),
                               0.5 * (y.v0 + y.v1)};
       if (pr.seed(s)) seeds.push_back(s);
     }
+  }
   const double h0 = std::clamp(opt.step, 0x1p-12, 0.25) * scale;
   std::vector<char> covered(seeds.size(), 0);
   for (std::size_t si = 0; si < seeds.size(); ++si) {

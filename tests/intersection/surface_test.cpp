@@ -520,6 +520,18 @@ TYPED_TEST(SurfaceHits, NurbsSphereMeetsAPlanePatchInACircle) {
   EXPECT_NEAR(len, 2 * M_PI * std::sqrt(1 - 0.09), 0.01 * 2 * M_PI);
 }
 
+TYPED_TEST(SurfaceHits, CoincidentSurfacesTerminate) {
+  using T = TypeParam;
+  // No transversal curve exists (the normals agree everywhere): no curve is claimed.
+  const auto r = intersection(bowl<T>(), bowl<T>());
+  EXPECT_TRUE(r.status == Status::ok || r.status == Status::limit_exceeded);
+  EXPECT_TRUE(r.curves.empty());
+  // Bad input.
+  BezierPatch<T, 3> bad = bowl<T>();
+  bad.control.pop_back();
+  EXPECT_NE(intersection(bad, bowl<T>()).status, Status::ok);
+}
+
 TYPED_TEST(SurfaceHits, MixedSurfaceKinds) {
   using T = TypeParam;
   // The bowl as a Bézier patch against the lid 1 - x^2 - y^2 as a NURBS surface (unit weights):

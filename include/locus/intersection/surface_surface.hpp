@@ -17,9 +17,9 @@
 // satisfies |S_a - S_b| <= 2^-36 times the size. Not found or cut short: curve components that
 // no leaf pair seeds (tiny loops), branches through points where the surfaces touch (tangent
 // zero: the branch ends there), and branch crossings (traced through or ended). Degenerate:
-// invalid surfaces: validate()'s status; coincident surfaces give unreliable output (no
-// detection). Float input is computed in double. Cost: O(leaf pairs) seeds plus O(length / h)
-// Newton steps per curve; allocates.
+// invalid surfaces: validate()'s status; coincident surfaces are not detected (more than 2^14
+// overlapping leaf pairs stop the seeding with limit_exceeded). Float input is computed in double.
+// Cost: O(leaf pairs) seeds plus O(length / h) Newton steps per curve; allocates.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/surface3.hpp>
