@@ -3,9 +3,11 @@
 // separating-axis answer shown is computed by a locus::intersection / intersects / side_of_plane
 // query on the literal inputs; the 3D scenes are projected through the SvgWriter camera.
 // Figures: linear component and plane (11.1), line and triangle with barycentrics (11.2),
-// linear components and quadrics (11.9-11.17), two and three planes (11.23, 11.24),
+// linear components and quadrics (11.9-11.17), a ray and a NURBS surface with the refinement
+// hierarchy (11.18, 11.20-11.22), two and three planes (11.23, 11.24),
 // plane-triangle, triangle-triangle and plane-mesh (11.25-11.27, 11.29), plane sections of
-// sphere, cylinder and cone (11.32-11.52), slabs and boxes (11.61-11.73), linear component and
+// sphere, cylinder and cone (11.32-11.52), plane and parametric surface (11.53, 11.58), two
+// B-spline surfaces (11.59, 11.60), slabs and boxes (11.61-11.73), linear component and
 // torus (11.74-11.77).
 #include "gallery.hpp"
 
@@ -30,14 +32,17 @@
 #include <locus/intersection/plane_mesh.hpp>
 #include <locus/intersection/plane_plane.hpp>
 #include <locus/intersection/plane_sphere.hpp>
+#include <locus/intersection/plane_surface.hpp>
 #include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
 #include <locus/intersection/ray_cone.hpp>
 #include <locus/intersection/ray_cylinder.hpp>
 #include <locus/intersection/ray_sphere.hpp>
+#include <locus/intersection/ray_surface.hpp>
 #include <locus/intersection/ray_torus.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/segment_plane.hpp>
+#include <locus/intersection/surface_surface.hpp>
 #include <locus/intersection/triangle_triangle.hpp>
 #include <locus/io/svg_primitives.hpp>
 #include <locus/mesh/platonic.hpp>
@@ -904,6 +909,199 @@ bool torus_uv(SvgWriter& w, bool show_u) {
 bool fig_11_76(SvgWriter& w) { return torus_uv(w, true); }
 bool fig_11_77(SvgWriter& w) { return torus_uv(w, false); }
 
+// ---- parametric surfaces (sections 11.6-11.8) -------------------------------------------------
+
+/// The iso-parameter wireframe of a surface (n lines each way), evaluated with point_at.
+template <class S>
+void wireframe(SvgWriter& w, const S& s, double u0, double u1, double v0, double v1,
+               const char* col, int n = 10) {
+  for (int k = 0; k <= n; ++k) {
+    std::vector<Vec3d> a, b;
+    for (int i = 0; i <= 40; ++i) {
+      const double t = double(i) / 40.0, q = double(k) / n;
+      a.push_back(point_at(s, u0 + q * (u1 - u0), v0 + t * (v1 - v0)));
+      b.push_back(point_at(s, u0 + t * (u1 - u0), v0 + q * (v1 - v0)));
+    }
+    w.polyline(a, pen(col, 0.6));
+    w.polyline(b, pen(col, 0.6));
+  }
+}
+
+/// A wavy bicubic NURBS patch (weights != 1) used by 11.18-11.22.
+NurbsSurface<double, 3> wavy_nurbs() {
+  NurbsSurface<double, 3> s{3, 3, 4, 4, {}, {}, {0, 0, 0, 0, 1, 1, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}};
+  const double z[4][4] = {
+      {0, 0.6, -0.4, 0}, {0.5, 1.4, 0.2, -0.3}, {-0.2, 0.3, 1.2, 0.4}, {0, -0.5, 0.4, 0.2}};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      s.control.push_back({double(i) - 1.5, double(j) - 1.5, z[i][j]});
+      s.weights.push_back(i == 1 && j == 2 ? 2.5 : 1.0);
+    }
+  return s;
+}
+
+// 11.18: a ray meets a NURBS surface: every hit with its normal (hierarchy refinement + Newton).
+bool fig_11_18(SvgWriter& w) {
+  w.set_camera(camera({5, -7, 5}, {0, 0, 0.3}));
+  const NurbsSurface<double, 3> s = wavy_nurbs();
+  wireframe(w, s, 0, 1, 0, 1, c::gray);
+  const Ray3<double> ray{{-2.5, -0.8, 2.2}, {1.0, 0.25, -0.55}};
+  const LinearSurfaceHits<double> r = intersection(ray, s);
+  if (r.status != Status::ok || r.hits.empty()) return false;
+  w.polyline(std::vector<Vec3d>{ray.origin, ray.origin + 5.5 * ray.direction}, pen(c::red, 1.6));
+  point(w, ray.origin, "P", c::red);
+  for (const auto& h : r.hits) {
+    point(w, h.point, "t = " + fmt(h.t), c::black);
+    w.arrow(h.point, h.point + 0.7 * h.normal, pen(c::blue, 1.4));
+  }
+  return true;
+}
+
+// 11.20: the ray as the intersection of two planes through it (the frame of the refinement).
+bool fig_11_20(SvgWriter& w) {
+  w.set_camera(camera({5, -7, 4}, {0, 0, 0}));
+  const Ray3<double> ray{{-2, -0.5, 0.4}, normalize(Vec3d{1, 0.3, -0.2})};
+  const auto b = perpendicular_basis(ray.direction);
+  const Plane3<double> p1{b.u, dot(b.u, ray.origin)}, p2{b.v, dot(b.v, ray.origin)};
+  const Vec3d mid = ray.origin + 2.0 * ray.direction;
+  plane_patch(w, p1, mid, 2.0, c::blue);
+  plane_patch(w, p2, mid, 2.0, c::green);
+  w.polyline(std::vector<Vec3d>{ray.origin, ray.origin + 4.0 * ray.direction}, pen(c::red, 2.2));
+  point(w, ray.origin, "P", c::red);
+  return std::fabs(dot(p1.normal, mid) - p1.constant) < 1e-12 &&
+         std::fabs(dot(p2.normal, mid) - p2.constant) < 1e-12;
+}
+
+// 11.21-11.22: control-net boxes of the subpatches the refinement keeps along a ray (box-ray
+// rejection down three levels), the leaf boxes and their parent level.
+bool refinement_boxes(SvgWriter& w, int levels) {
+  w.set_camera(camera({5, -7, 5}, {0, 0, 0.3}));
+  const NurbsSurface<double, 3> s = wavy_nurbs();
+  wireframe(w, s, 0, 1, 0, 1, c::gray, 6);
+  const Ray3<double> ray{{-2.5, -0.8, 2.2}, {1.0, 0.25, -0.55}};
+  w.polyline(std::vector<Vec3d>{ray.origin, ray.origin + 5.5 * ray.direction}, pen(c::red, 1.6));
+  const RationalPatchGrid<double, 3> g = to_bezier(s);
+  if (g.status != Status::ok || g.patches.size() != 1) return false;
+  // The homogeneous patch, split in four per level; boxes from the projected control points.
+  BezierPatch<double, 4> h{g.patches[0].rows, g.patches[0].cols, {}};
+  for (std::size_t k = 0; k < g.patches[0].control.size(); ++k) {
+    const double wt = g.patches[0].weights[k];
+    const Vec3d p = wt * g.patches[0].control[k];
+    h.control.push_back({p.x, p.y, p.z, wt});
+  }
+  std::vector<BezierPatch<double, 4>> cur{h};
+  int kept = 0;
+  for (int level = 1; level <= levels; ++level) {
+    std::vector<BezierPatch<double, 4>> next;
+    for (const auto& q : cur) {
+      const auto a = subdivide_u(q, 0.5);
+      for (const auto* half : {&a.first, &a.second}) {
+        const auto b = subdivide_v(*half, 0.5);
+        for (const auto* piece : {&b.first, &b.second}) {
+          std::vector<Vec3d> pts;
+          for (const auto& c4 : piece->control) pts.push_back(Vec3d{c4.x, c4.y, c4.z} / c4.w);
+          const AlignedBox3<double> box = bounding_box(pts.data(), pts.size());
+          if (!intersects(ray, box)) continue;
+          next.push_back(*piece);
+          if (level == levels) {
+            draw_box(w, box, pen(c::blue, 0.9));
+            ++kept;
+          } else if (level == levels - 1) {
+            draw_box(w, box, pen(c::green, 0.5));
+          }
+        }
+      }
+    }
+    cur = std::move(next);
+  }
+  for (const auto& hit : intersection(ray, s).hits) point(w, hit.point, "", c::red);
+  return kept > 0;
+}
+bool fig_11_21(SvgWriter& w) { return refinement_boxes(w, 3); }
+bool fig_11_22(SvgWriter& w) { return refinement_boxes(w, 2); }
+
+/// A bicubic bump patch for the plane-surface figures: a dome with a dimple.
+BezierPatch<double, 3> dome() {
+  BezierPatch<double, 3> p{4, 4, {}};
+  const double z[4][4] = {
+      {0, 0.3, 0.3, 0}, {0.3, 2.0, 0.4, 0.3}, {0.3, 0.4, 2.0, 0.3}, {0, 0.3, 0.3, 0}};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) p.control.push_back({double(i) - 1.5, double(j) - 1.5, z[i][j]});
+  return p;
+}
+
+// 11.53: a plane cuts a parametric surface: the traced curves (closed loops and open branches).
+bool fig_11_53(SvgWriter& w) {
+  w.set_camera(camera({5, -7, 6}, {0, 0, 0.4}));
+  const BezierPatch<double, 3> p = dome();
+  wireframe(w, p, 0, 1, 0, 1, c::gray);
+  const Plane3<double> pl{{0.1, 0.05, 1}, 0.75};
+  const SurfaceCurves<double> r = intersection(pl, p);
+  if (r.status != Status::ok || r.curves.empty()) return false;
+  plane_patch(w, pl, {0, 0, 0.75}, 2.0, c::blue);
+  for (const auto& cv : r.curves) w.polyline(cv.points, pen(c::red, 2.4), cv.closed);
+  return true;
+}
+
+// 11.58: the same curves in the surface's parameter space (the grid cells of the subdivision).
+bool fig_11_58(SvgWriter& w) {
+  w.set_view({-0.05, -0.05}, {1.05, 1.05});
+  const Plane3<double> pl{{0.1, 0.05, 1}, 0.75};
+  SurfaceCurveOptions opt;
+  opt.grid = 16;
+  const SurfaceCurves<double> r = intersection(pl, dome(), opt);
+  if (r.status != Status::ok || r.curves.empty()) return false;
+  for (int k = 0; k <= opt.grid; ++k) {
+    const double q = double(k) / opt.grid;
+    w.polyline(std::vector<Vec2d>{{q, 0}, {q, 1}}, pen(c::gray, 0.4));
+    w.polyline(std::vector<Vec2d>{{0, q}, {1, q}}, pen(c::gray, 0.4));
+  }
+  for (const auto& cv : r.curves) {
+    w.polyline(cv.param_b, pen(c::red, 2.0), cv.closed);
+    label(w, cv.param_b.front(), cv.closed ? "closed" : "open", c::black);
+  }
+  return true;
+}
+
+/// Two bicubic B-spline surfaces for 11.59-11.60 (a dome and a tilted wave).
+void two_bsplines(BSplineSurface<double, 3>& a, BSplineSurface<double, 3>& b) {
+  const std::vector<double> k{0, 0, 0, 0, 0.5, 1, 1, 1, 1};
+  a = {3, 3, 5, 5, {}, k, k};
+  b = {3, 3, 5, 5, {}, k, k};
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) {
+      const double x = double(i) - 2, y = double(j) - 2;
+      a.control.push_back({x, y, 1.6 - 0.25 * (x * x + y * y)});
+      b.control.push_back({x + 0.3, y - 0.2, 0.3 + 0.25 * x + 0.6 * std::sin(1.3 * y)});
+    }
+}
+
+// 11.59: two B-spline surfaces and their intersection curves (seeds by subdivision, tracing).
+bool fig_11_59(SvgWriter& w) {
+  w.set_camera(camera({6, -8, 6}, {0, 0, 0.3}));
+  BSplineSurface<double, 3> a, b;
+  two_bsplines(a, b);
+  wireframe(w, a, 0, 1, 0, 1, c::blue, 8);
+  wireframe(w, b, 0, 1, 0, 1, c::green, 8);
+  const SurfaceCurves<double> r = intersection(a, b);
+  if (r.status != Status::ok || r.curves.empty()) return false;
+  for (const auto& cv : r.curves) w.polyline(cv.points, pen(c::red, 2.6), cv.closed);
+  return true;
+}
+
+// 11.60: the same curves in the parameter space of the first surface.
+bool fig_11_60(SvgWriter& w) {
+  w.set_view({-0.05, -0.05}, {1.05, 1.05});
+  BSplineSurface<double, 3> a, b;
+  two_bsplines(a, b);
+  const SurfaceCurves<double> r = intersection(a, b);
+  if (r.status != Status::ok || r.curves.empty()) return false;
+  closed(w, std::vector<Vec2d>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, pen(c::gray, 0.8));
+  for (const auto& cv : r.curves) w.polyline(cv.param_a, pen(c::red, 2.0), cv.closed);
+  label(w, Vec2d{0.02, 1.02}, "(u, v) of the first surface", c::black);
+  return true;
+}
+
 }  // namespace
 
 std::vector<Figure> chapter11_intersection_figures() {
@@ -919,6 +1117,10 @@ std::vector<Figure> chapter11_intersection_figures() {
       {"11.15", "intersection(Line3, Cone3) (acute infinite cone)", fig_11_15},
       {"11.16", "intersection(Line3, Cone3) (double cone: four hits)", fig_11_16},
       {"11.17", "intersection(Line3, Quadric3) (c2 = 0: one point, or on the surface)", fig_11_17},
+      {"11.18", "intersection(Ray3, NurbsSurface) (hits and normals)", fig_11_18},
+      {"11.20", "perpendicular_basis: the ray as two planes", fig_11_20},
+      {"11.21", "to_bezier, subdivide_u/v, intersects(Ray3, AlignedBox3): leaf boxes", fig_11_21},
+      {"11.22", "to_bezier, subdivide_u/v: the coarser level of the hierarchy", fig_11_22},
       {"11.23", "intersection(Plane3, Plane3)", fig_11_23},
       {"11.24", "intersection(Plane3, Plane3, Plane3) (every configuration)", fig_11_24},
       {"11.25", "intersection(Triangle3, Plane3)", fig_11_25},
@@ -938,6 +1140,10 @@ std::vector<Figure> chapter11_intersection_figures() {
       {"11.50", "intersection(Plane3, Cone3) (ellipse)", fig_11_50},
       {"11.51", "intersection(Plane3, Cone3) (hyperbola)", fig_11_51},
       {"11.52", "intersection(Plane3, Cone3) (through the vertex: two lines)", fig_11_52},
+      {"11.53", "intersection(Plane3, BezierPatch) (traced curves)", fig_11_53},
+      {"11.58", "intersection(Plane3, BezierPatch): curves in parameter space", fig_11_58},
+      {"11.59", "intersection(BSplineSurface, BSplineSurface)", fig_11_59},
+      {"11.60", "intersection(BSplineSurface, BSplineSurface): param_a curves", fig_11_60},
       {"11.61", "intersection(Line3, AlignedBox3)", fig_11_61},
       {"11.62", "side_of_plane(AlignedBox3, Plane3) (slab planes)", fig_11_62},
       {"11.64", "intersection(Ray3, AlignedBox3) (slab clipping)", fig_11_64},

@@ -344,6 +344,39 @@ def ray_torus_hits(
     minor_radius: float,
 ) -> SurfaceHits: ...
 
+# Rays and planes against parametric surfaces (intersection/ray_surface.hpp, plane_surface.hpp)
+class PatchHits(Result):
+    ray: npt.NDArray[np.int64]
+    t: _Floats
+    uv: _Floats
+    points: _Floats
+    normals: _Floats
+    tangent: npt.NDArray[np.bool_]
+    on_surface: npt.NDArray[np.bool_]
+
+class PatchCurves(Result):
+    points: list[_Floats]
+    uv: list[_Floats]
+    closed: npt.NDArray[np.bool_]
+
+def ray_surface_hits(
+    origins: _Points,
+    directions: _Points,
+    control: npt.ArrayLike,
+    knots_u: npt.ArrayLike | None = None,
+    knots_v: npt.ArrayLike | None = None,
+    weights: npt.ArrayLike | None = None,
+) -> PatchHits: ...
+def plane_surface_curves(
+    normal: npt.ArrayLike,
+    constant: float,
+    control: npt.ArrayLike,
+    knots_u: npt.ArrayLike | None = None,
+    knots_v: npt.ArrayLike | None = None,
+    weights: npt.ArrayLike | None = None,
+    grid: int = 16,
+) -> PatchCurves: ...
+
 # Convex partition and the BSP tree of a polygon (triangulate/convex_partition.hpp, bsp/bsp2.hpp,
 # bsp/bsp2_boolean.hpp)
 class ConvexPartitionResult(Result):

@@ -16,6 +16,7 @@
 #include <locus/intersection/convex_polygon2.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/ellipse_quadratic_curve.hpp>
+#include <locus/intersection/ellipsoid_ellipsoid.hpp>
 #include <locus/intersection/line_aligned_box.hpp>
 #include <locus/intersection/line_arc.hpp>
 #include <locus/intersection/line_capsule.hpp>
@@ -35,6 +36,7 @@
 #include <locus/intersection/line_ray.hpp>
 #include <locus/intersection/line_segment.hpp>
 #include <locus/intersection/line_sphere.hpp>
+#include <locus/intersection/line_surface.hpp>
 #include <locus/intersection/line_torus.hpp>
 #include <locus/intersection/line_triangle.hpp>
 #include <locus/intersection/linear_polyhedron.hpp>
@@ -49,6 +51,7 @@
 #include <locus/intersection/plane_plane.hpp>
 #include <locus/intersection/plane_polygon.hpp>
 #include <locus/intersection/plane_sphere.hpp>
+#include <locus/intersection/plane_surface.hpp>
 #include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/quadratic_curve_quadratic_curve.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
@@ -69,6 +72,7 @@
 #include <locus/intersection/ray_ray.hpp>
 #include <locus/intersection/ray_segment.hpp>
 #include <locus/intersection/ray_sphere.hpp>
+#include <locus/intersection/ray_surface.hpp>
 #include <locus/intersection/ray_torus.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/result.hpp>
@@ -90,6 +94,9 @@
 #include <locus/intersection/segment_quadric.hpp>
 #include <locus/intersection/segment_segment.hpp>
 #include <locus/intersection/segment_sphere.hpp>
+#include <locus/intersection/segment_surface.hpp>
 #include <locus/intersection/segment_torus.hpp>
 #include <locus/intersection/segment_triangle.hpp>
+#include <locus/intersection/sphere_sphere.hpp>
+#include <locus/intersection/surface_surface.hpp>
 #include <locus/intersection/triangle_triangle.hpp>

@@ -133,6 +133,7 @@ void bind_mesh(py::module_& m);
 void bind_intersection3(py::module_& m);
 void bind_intersection2(py::module_& m);
 void bind_quadric3(py::module_& m);
+void bind_surface_intersection(py::module_& m);
 void bind_io(py::module_& m);
 void bind_misc3(py::module_& m);
 

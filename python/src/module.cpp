@@ -99,6 +99,8 @@ for _name, _doc in [
     ("Contact3", "sat3_first_contact: kind, time, points (k, 3)."),
     ("SurfaceHits", "ray_quadric_hits / ray_torus_hits: count, t, points, normals, uv, "
                     "multiplicity, on_surface."),
+    ("PatchHits", "ray_surface_hits: ray, t, uv, points, normals, tangent, on_surface."),
+    ("PatchCurves", "plane_surface_curves: points, uv, closed."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
     ("BspPartition", "bsp_partition: pieces (k, 2, 2), location, segment."),
     ("BspBoolean", "bsp_boolean: edges (k, 2, 2), operand, loops, closed, segments, points."),
@@ -247,6 +249,7 @@ PYBIND11_MODULE(locus, m) {
   bind_intersection2(m);
   bind_construction(m);
   bind_quadric3(m);
+  bind_surface_intersection(m);
   bind_io(m);
   bind_misc3(m);
   bind_sat2(m);

@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: BSL-1.0
-// locus surfacehit: the hits of each ray of a CSV file on a sphere, a general quadric or a torus
-// (intersection/ray_sphere.hpp, ray_quadric.hpp, ray_torus.hpp): parameters, multiplicities,
-// points and normals.
+// locus surfacehit: the hits of each ray of a CSV file on a sphere, a general quadric, a torus or
+// a Bézier patch (intersection/ray_sphere.hpp, ray_quadric.hpp, ray_torus.hpp, ray_surface.hpp):
+// parameters, multiplicities, points and normals.
 
 #include "commands.hpp"
 #include "io.hpp"
 
 #include <locus/intersection/ray_quadric.hpp>
 #include <locus/intersection/ray_sphere.hpp>
+#include <locus/intersection/ray_surface.hpp>
 #include <locus/intersection/ray_torus.hpp>
 
+#include <cmath>
 #include <memory>
+#include <string>
 
 namespace locus_cli {
 
@@ -18,16 +21,55 @@ namespace {
 
 struct SurfaceHitOptions {
   std::string rays;
-  std::vector<double> sphere, quadric, torus;
+  std::vector<double> sphere, quadric, torus, bezier;
   std::string output;
   bool json = false;
 };
 
 void run_surfacehit(const SurfaceHitOptions& o) {
-  const int given = int(!o.sphere.empty()) + int(!o.quadric.empty()) + int(!o.torus.empty());
-  if (given != 1) throw UsageError("give exactly one of --sphere, --quadric, --torus");
+  const int given = int(!o.sphere.empty()) + int(!o.quadric.empty()) + int(!o.torus.empty()) +
+                    int(!o.bezier.empty());
+  if (given != 1) throw UsageError("give exactly one of --sphere, --quadric, --torus, --bezier");
+  locus::BezierPatch<double, 3> patch{0, 0, {}};
+  if (!o.bezier.empty()) {
+    const auto& b = o.bezier;
+    const bool shape_ok = b.size() >= 2 && b[0] >= 1 && b[1] >= 1 && b[0] <= 64 && b[1] <= 64 &&
+                          b[0] == std::floor(b[0]) && b[1] == std::floor(b[1]);
+    if (!shape_ok) throw UsageError("--bezier: rows and cols must be integers in [1, 64]");
+    patch.rows = static_cast<int>(b[0]);
+    patch.cols = static_cast<int>(b[1]);
+    if (b.size() != 2 + 3 * std::size_t(patch.rows) * std::size_t(patch.cols))
+      throw UsageError("--bezier: expected rows,cols then 3 * rows * cols coordinates");
+    for (std::size_t k = 2; k + 2 < b.size(); k += 3)
+      patch.control.push_back({b[k], b[k + 1], b[k + 2]});
+  }
   const std::vector<locus::Vec<double, 6>> rows = load_rows6(o.rays);
   const auto hits = [&](const locus::Ray3d& ray) -> locus::LinearSurfaceIntersection3<double> {
+    if (!o.bezier.empty()) {
+      // The patch hits in the quadric result form (at most 4 listed; more is an error).
+      const locus::LinearSurfaceHits<double> h = intersection(ray, patch);
+      if (h.status != locus::Status::ok)
+        throw InputError("surfacehit: " + std::string(locus::to_string(h.status)));
+      if (h.hits.size() > 4) throw InputError("surfacehit: more than 4 hits on a ray");
+      locus::LinearSurfaceIntersection3<double> r;
+      if (h.on_surface) {
+        r.kind = locus::Kind::ray;
+        r.count = 2;
+        return r;
+      }
+      for (const auto& x : h.hits) {
+        const auto i = static_cast<std::size_t>(r.count++);
+        r.point[i] = x.point;
+        r.param_a[i] = x.t;
+        r.param_b[i] = x.uv;
+        r.normal[i] = x.normal;
+        r.multiplicity[i] = x.tangent ? 2 : 1;
+      }
+      r.kind = r.count == 0   ? locus::Kind::empty
+               : r.count == 1 ? locus::Kind::point
+                              : locus::Kind::points;
+      return r;
+    }
     if (!o.sphere.empty())
       return intersection(ray,
                           locus::Sphere3d{{o.sphere[0], o.sphere[1], o.sphere[2]}, o.sphere[3]});
@@ -86,8 +128,8 @@ void run_surfacehit(const SurfaceHitOptions& o) {
 
 void register_surfacehit(CLI::App& app) {
   auto o = std::make_shared<SurfaceHitOptions>();
-  CLI::App* sub =
-      app.add_subcommand("surfacehit", "hits of rays on a sphere, a quadric or a torus");
+  CLI::App* sub = app.add_subcommand(
+      "surfacehit", "hits of rays on a sphere, a quadric, a torus or a Bezier patch");
   sub->add_option("rays", o->rays, "rays, one per CSV row: ox,oy,oz,dx,dy,dz (- for stdin)")
       ->required();
   sub->add_option("--sphere", o->sphere, "cx,cy,cz,r")->expected(4)->delimiter(',');
@@ -98,6 +140,10 @@ void register_surfacehit(CLI::App& app) {
   sub->add_option("--torus", o->torus, "cx,cy,cz,nx,ny,nz,R,r (centre, axis, radii)")
       ->expected(8)
       ->delimiter(',');
+  sub->add_option("--bezier", o->bezier,
+                  "rows,cols,x00,y00,z00,x01,...: a Bezier patch, control net row-major")
+      ->expected(2, 2 + 3 * 64 * 64)
+      ->delimiter(',');
   sub->add_option("-o,--output", o->output, "write the result here (default: stdout)");
   sub->add_flag("--json", o->json, "a JSON summary (points, normals, (u, v)) on stdout");
   sub->footer(
@@ -105,7 +151,9 @@ void register_surfacehit(CLI::App& app) {
       "increasing t with their multiplicities (2 at a tangency), or `on_surface` when the ray\n"
       "lies on the quadric. Sphere and quadric counts and tangencies are exact for the data as\n"
       "given; torus roots come from the quartic in double (a tangency within the rounding bound\n"
-      "is one double root). --json adds each hit's point, unit normal and surface parameters.\n"
+      "is one double root). --bezier: hierarchy refinement then Newton (multiplicity 2 marks a\n"
+      "tangential hit; on_surface a ray lying in the patch; at most 4 hits per ray).\n"
+      "--json adds each hit's point, unit normal and surface parameters.\n"
       "Example:\n  locus surfacehit rays.csv --torus 0,0,0,0,0,1,4,1 --json");
   sub->callback([o] { run_surfacehit(*o); });
 }
