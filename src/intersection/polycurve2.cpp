@@ -427,7 +427,9 @@ CurveHits2<double> linear_curve(const Lin& l, const Curve& c, const CurveHitOpti
       if (k.t_lo <= m.t_hi + slack) {
         // An overlap absorbs everything; a noise cluster decides over exact zeros and simple
         // roots; an exact zero over a simple root found again at a split point.
-        const auto rank = [](int x) { return x == 0 ? 4 : x == -1 || x == -2 ? 3 : x == -3 ? 2 : 1; };
+        const auto rank = [](int x) {
+          return x == 0 ? 4 : x == -1 || x == -2 ? 3 : x == -3 ? 2 : 1;
+        };
         if (rank(k.mult) > rank(m.mult)) m.mult = k.mult;
         m.t_hi = std::max(m.t_hi, k.t_hi);
         if (m.mult == -1 || m.mult == -2) m.t = 0.5 * (m.t_lo + m.t_hi);
@@ -460,7 +462,8 @@ CurveHits2<double> linear_curve(const Lin& l, const Curve& c, const CurveHitOpti
       // An exact zero of the computed polynomial: simple when the distance changes sign across.
       const double w = 0x1p-20 * (curve_back(c) - curve_front(c));
       const double a = std::max(curve_front(c), t - w), b = std::min(curve_back(c), t + w);
-      const int sa = a < t ? sign(line_dist(l, c, a)) : 0, sb = b > t ? sign(line_dist(l, c, b)) : 0;
+      const int sa = a < t ? sign(line_dist(l, c, a)) : 0,
+                sb = b > t ? sign(line_dist(l, c, b)) : 0;
       mult = (sa != 0 && sa == sb) ? 2 : 1;
     } else if (mult < 0) {
       const auto [tr, f] = solve_in(l, c, k.t_lo, k.t_hi);
@@ -482,10 +485,9 @@ CurveHits2<double> linear_curve(const Lin& l, const Curve& c, const CurveHitOpti
     double s = lin_param(l, p);
     if (in_range(s)) r.hits.push_back({p, s, t, mult});
   }
-  std::stable_sort(r.hits.begin(), r.hits.end(),
-                   [](const CurveHit2<double>& x, const CurveHit2<double>& y) {
-                     return x.param_a < y.param_a;
-                   });
+  std::stable_sort(
+      r.hits.begin(), r.hits.end(),
+      [](const CurveHit2<double>& x, const CurveHit2<double>& y) { return x.param_a < y.param_a; });
   r.kind = overlap_found && !r.hits.empty() ? Kind::coincident
            : r.hits.empty()                 ? Kind::empty
            : r.hits.size() == 1             ? Kind::point
@@ -594,8 +596,7 @@ bool same_pieces(const Curve& a, const Curve& b, bool reversed) {
 }
 
 void finish(CurveHits2<double>& r, std::vector<Found>& found, double scale, double leaf) {
-  std::sort(found.begin(), found.end(),
-            [](const Found& x, const Found& y) { return x.ta < y.ta; });
+  std::sort(found.begin(), found.end(), [](const Found& x, const Found& y) { return x.ta < y.ta; });
   std::vector<Found> out;
   for (const Found& f : found) {
     bool dup = false;
@@ -696,18 +697,29 @@ CurveHits2<double> raster_hits(const Curve& a, const Curve& b, const CurveHitOpt
           }
       }
       ++ncomp;
-      const std::size_t mid = seeds.size() / 2;
-      for (std::size_t s = 0; s < seeds.size(); ++s) {
-        const auto& sd = seeds[(mid + s) % seeds.size()];
+      // Up to eight seeds spread over the component; every solution inside the component's
+      // cells (grown by one) is kept, so two crossings sharing a component can both be found.
+      int ci0 = g.nx, ci1 = -1, cj0 = g.ny, cj1 = -1;
+      for (const auto& q : queue) {
+        ci0 = std::min(ci0, q.first);
+        ci1 = std::max(ci1, q.first);
+        cj0 = std::min(cj0, q.second);
+        cj1 = std::max(cj1, q.second);
+      }
+      const std::size_t tries = std::min<std::size_t>(seeds.size(), 8);
+      for (std::size_t s = 0; s < tries; ++s) {
+        const auto& sd = seeds[(2 * s + 1) * seeds.size() / (2 * tries)];
         const auto fa = first_a[sd.first];
         const auto fb = first_b[sd.second];
         const Piece& pa = a.pieces[z(fa.first)];
         const Piece& pb = b.pieces[z(fb.first)];
         const Sol so = newton2(pa, pb, fa.second, fb.second);
         if (so.dist > gap) continue;
-        found.push_back({eval(pa.h, so.u).p, global_t(pa, so.u), global_t(pb, so.v),
+        const V2 p = eval(pa.h, so.u).p;
+        const double fx = (p.x - g.min.x) / g.cell, fy = (p.y - g.min.y) / g.cell;
+        if (!(fx >= ci0 - 1 && fx <= ci1 + 2 && fy >= cj0 - 1 && fy <= cj1 + 2)) continue;
+        found.push_back({p, global_t(pa, so.u), global_t(pb, so.v),
                          multiplicity_at(pa, so.u, pb, so.v, opt.tolerance)});
-        break;
       }
     }
   finish(r, found, scale, leaf);

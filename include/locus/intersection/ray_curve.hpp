@@ -3,10 +3,10 @@
 // Intersection of a ray and a 2D Bézier, B-spline or NURBS curve (any PolyCurve2): intersects()
 // and intersection(); row int2.linear-polycurve, book sections 7.3-7.4 (figures 7.2-7.4).
 // Everything as in line_curve.hpp (result, methods, conditioning, bad input, cost), with
-// param_a the Ray2: t >= 0, origin + t direction: the hits of the supporting line whose parameter lies in that range
-// (a hit within 16 eps relative of the range's end is kept and its parameter clamped).
-// A zero direction (a zero-length segment) gives degenerate_input and no hits.
-// The swapped overload returns swapped().
+// param_a the Ray2: t >= 0, origin + t direction: the hits of the supporting line whose parameter
+// lies in that range (a hit within 16 eps relative of the range's end is kept and its parameter
+// clamped). A zero direction (a zero-length segment) gives degenerate_input and no hits. The
+// swapped overload returns swapped().
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/polycurve2.hpp>
@@ -21,7 +21,8 @@ namespace locus {
 namespace detail::polycurve2 {
 template <Real T>
 [[nodiscard]] inline Lin as_lin(const Ray2<T>& l) noexcept {
-  return {vec_cast<double>(l.origin), vec_cast<double>(l.direction), 0.0, std::numeric_limits<double>::infinity()};
+  return {vec_cast<double>(l.origin), vec_cast<double>(l.direction), 0.0,
+          std::numeric_limits<double>::infinity()};
 }
 }  // namespace detail::polycurve2
 

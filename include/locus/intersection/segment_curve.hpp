@@ -3,9 +3,9 @@
 // Intersection of a segment and a 2D Bézier, B-spline or NURBS curve (any PolyCurve2): intersects()
 // and intersection(); row int2.linear-polycurve, book sections 7.3-7.4 (figures 7.2-7.4).
 // Everything as in line_curve.hpp (result, methods, conditioning, bad input, cost), with
-// param_a the Segment2: t in [0, 1], (1 - t) p0 + t p1: the hits of the supporting line whose parameter lies in that range
-// (a hit within 16 eps relative of the range's end is kept and its parameter clamped).
-// A zero direction (a zero-length segment) gives degenerate_input and no hits.
+// param_a the Segment2: t in [0, 1], (1 - t) p0 + t p1: the hits of the supporting line whose
+// parameter lies in that range (a hit within 16 eps relative of the range's end is kept and its
+// parameter clamped). A zero direction (a zero-length segment) gives degenerate_input and no hits.
 // The swapped overload returns swapped().
 
 #include <locus/core/scalar.hpp>

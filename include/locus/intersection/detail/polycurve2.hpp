@@ -63,8 +63,9 @@ struct CurveHits2 {
 template <Real T>
 [[nodiscard]] inline CurveHits2<T> swapped(CurveHits2<T> r) {
   for (CurveHit2<T>& h : r.hits) std::swap(h.param_a, h.param_b);
-  std::stable_sort(r.hits.begin(), r.hits.end(),
-                   [](const CurveHit2<T>& x, const CurveHit2<T>& y) { return x.param_a < y.param_a; });
+  std::stable_sort(r.hits.begin(), r.hits.end(), [](const CurveHit2<T>& x, const CurveHit2<T>& y) {
+    return x.param_a < y.param_a;
+  });
   return r;
 }
 
@@ -170,8 +171,8 @@ template <Real T>
     CurveHits2<T> o{r.status, r.kind, {}};
     o.hits.reserve(r.hits.size());
     for (const auto& h : r.hits)
-      o.hits.push_back({vec_cast<T>(h.point), static_cast<T>(h.param_a),
-                        static_cast<T>(h.param_b), h.multiplicity});
+      o.hits.push_back({vec_cast<T>(h.point), static_cast<T>(h.param_a), static_cast<T>(h.param_b),
+                        h.multiplicity});
     return o;
   }
 }
@@ -204,7 +205,9 @@ struct CurveScalar<NurbsCurve<T, 2>> {
 
 /// A 2D Bézier, B-spline or NURBS curve (float or double).
 template <class C>
-concept PolyCurve2 = requires { typename detail::polycurve2::CurveScalar<C>::type; };
+concept PolyCurve2 = requires {
+  typename detail::polycurve2::CurveScalar<C>::type;
+};
 
 /// The scalar type of a PolyCurve2.
 template <PolyCurve2 C>
