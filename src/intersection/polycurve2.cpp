@@ -35,10 +35,19 @@ struct Eval {
 Eval eval(const std::vector<V3>& h, double u) {
   const int n = deg(h);
   if (n <= 0) return {proj(h[0]), {0.0, 0.0}};
-  std::vector<V3> b = h;
+  // Degrees up to 15 on the stack (every curve in practice), larger ones on the heap.
+  std::array<V3, 16> small;
+  std::vector<V3> big;
+  V3* b = small.data();
+  if (h.size() > small.size()) {
+    big = h;
+    b = big.data();
+  } else {
+    std::copy(h.begin(), h.end(), small.begin());
+  }
   const double s = 1.0 - u;
   for (int r = 1; r < n; ++r)
-    for (int i = 0; i <= n - r; ++i) b[z(i)] = s * b[z(i)] + u * b[z(i + 1)];
+    for (int i = 0; i <= n - r; ++i) b[i] = s * b[i] + u * b[i + 1];
   const V3 hp = s * b[0] + u * b[1];
   const V3 hd = static_cast<double>(n) * (b[1] - b[0]);
   const V2 c{hp.x / hp.z, hp.y / hp.z};
@@ -141,10 +150,18 @@ std::vector<double> line_coeffs(const Lin& l, const Piece& p, double& noise) {
 }
 
 double bern_eval(const std::vector<double>& b, double u) {
-  std::vector<double> w = b;
+  std::array<double, 16> small;
+  std::vector<double> big;
+  double* w = small.data();
+  if (b.size() > small.size()) {
+    big = b;
+    w = big.data();
+  } else {
+    std::copy(b.begin(), b.end(), small.begin());
+  }
   const double s = 1.0 - u;
-  for (std::size_t r = 1; r < w.size(); ++r)
-    for (std::size_t i = 0; i + r < w.size(); ++i) w[i] = s * w[i] + u * w[i + 1];
+  for (std::size_t r = 1; r < b.size(); ++r)
+    for (std::size_t i = 0; i + r < b.size(); ++i) w[i] = s * w[i] + u * w[i + 1];
   return w[0];
 }
 
@@ -345,6 +362,8 @@ static double lin_param(const Lin& l, const V2& p) { return dot(p - l.o, l.d) / 
 
 CurveHits2<double> raster_hits(const Curve& a, const Curve& b, const CurveHitOptions& opt,
                                double scale);
+CurveRaster2<double> grid_geometry(const Curve& a, const Curve& b, int cells);
+int samples_for(const Piece& p, double cell);
 
 CurveHits2<double> linear_curve(const Lin& l, const Curve& c, const CurveHitOptions& opt) {
   CurveHits2<double> r;
@@ -541,6 +560,41 @@ Sol newton2(const Piece& pa, const Piece& pb, double u, double v) {
   return {u, v, std::sqrt(f2)};
 }
 
+/// newton2 that may walk into the neighbouring piece when it stops on a piece's end (a common
+/// point just past a joint): up to four hops. Returns the pieces it ended on.
+struct PairSol {
+  std::size_t ka, kb;
+  Sol s;
+};
+PairSol solve_pair(const Curve& a, std::size_t ka, double u, const Curve& b, std::size_t kb,
+                   double v, double gap) {
+  Sol s = newton2(a.pieces[ka], b.pieces[kb], u, v);
+  for (int hop = 0; hop < 4 && s.dist > gap; ++hop) {
+    bool moved = false;
+    if (s.u == 1.0 && ka + 1 < a.pieces.size()) {
+      ++ka;
+      s.u = 0.0;
+      moved = true;
+    } else if (s.u == 0.0 && ka > 0) {
+      --ka;
+      s.u = 1.0;
+      moved = true;
+    }
+    if (s.v == 1.0 && kb + 1 < b.pieces.size()) {
+      ++kb;
+      s.v = 0.0;
+      moved = true;
+    } else if (s.v == 0.0 && kb > 0) {
+      --kb;
+      s.v = 1.0;
+      moved = true;
+    }
+    if (!moved) break;
+    s = newton2(a.pieces[ka], b.pieces[kb], s.u, s.v);
+  }
+  return {ka, kb, s};
+}
+
 struct Node {
   std::size_t piece;
   double a, b;
@@ -602,7 +656,7 @@ void finish(CurveHits2<double>& r, std::vector<Found>& found, double scale, doub
     bool dup = false;
     for (Found& g : out) {
       const double d = length(f.p - g.p);
-      if (d <= 64.0 * eps * scale || (std::max(f.mult, g.mult) >= 2 && d <= 4.0 * leaf)) {
+      if (d <= 0x1p-30 * scale || (std::max(f.mult, g.mult) >= 2 && d <= 4.0 * leaf)) {
         g.mult = std::max(g.mult, f.mult);
         dup = true;
         break;
@@ -620,113 +674,116 @@ CurveHits2<double> raster_hits(const Curve& a, const Curve& b, const CurveHitOpt
                                double scale) {
   CurveHits2<double> r;
   r.status = Status::ok;
-  const CurveRaster2<double> g = raster(a, b, opt.raster_cells);
+  const CurveRaster2<double> g = grid_geometry(a, b, opt.raster_cells);
   if (g.status != Status::ok || g.nx == 0) return r;
-  // Per cell, the first parameter of each curve drawn into it.
-  const std::size_t cells = z(g.nx) * z(g.ny);
-  std::vector<std::pair<int, double>> first_a(cells, {-1, 0.0}), first_b(cells, {-1, 0.0});
-  const auto cell_of = [&](const V2& p, int& i, int& j) {
-    const double fx = (p.x - g.min.x) / g.cell, fy = (p.y - g.min.y) / g.cell;
-    if (!(fx >= 0.0 && fy >= 0.0 && fx <= g.nx && fy <= g.ny)) return false;
-    i = std::min(static_cast<int>(fx), g.nx - 1);
-    j = std::min(static_cast<int>(fy), g.ny - 1);
-    return true;
+  // The cells each curve is drawn into, sparse: (cell id, piece, u) sorted by cell, the first
+  // sample of a curve in a cell kept.
+  struct Mark {
+    long long cell;
+    std::size_t piece;
+    double u;
   };
-  const auto draw = [&](const Curve& c, std::vector<std::pair<int, double>>& first) {
+  const auto draw = [&](const Curve& c) {
+    std::vector<Mark> m;
     for (std::size_t k = 0; k < c.pieces.size(); ++k) {
       const Piece& p = c.pieces[k];
-      double poly = 0.0;
-      for (std::size_t i = 1; i < p.h.size(); ++i) poly += length(proj(p.h[i]) - proj(p.h[i - 1]));
-      const double want = std::ceil(4.0 * poly / g.cell);
-      const int n = want > 65536.0 ? 65536 : std::max(4, static_cast<int>(want));
+      const int n = samples_for(p, g.cell);
       for (int s = 0; s <= n; ++s) {
         const double u = static_cast<double>(s) / n;
-        int i = 0, j = 0;
-        if (!cell_of(eval(p.h, u).p, i, j)) continue;
-        auto& f = first[z(j) * z(g.nx) + z(i)];
-        if (f.first < 0) f = {static_cast<int>(k), u};
+        const V2 q = eval(p.h, u).p;
+        const double fx = (q.x - g.min.x) / g.cell, fy = (q.y - g.min.y) / g.cell;
+        if (!(fx >= 0.0 && fy >= 0.0 && fx <= g.nx && fy <= g.ny)) continue;
+        const int i = std::min(static_cast<int>(fx), g.nx - 1);
+        const int j = std::min(static_cast<int>(fy), g.ny - 1);
+        m.push_back({static_cast<long long>(j) * g.nx + i, k, u});
       }
     }
+    std::stable_sort(m.begin(), m.end(),
+                     [](const Mark& x, const Mark& y) { return x.cell < y.cell; });
+    m.erase(std::unique(m.begin(), m.end(),
+                        [](const Mark& x, const Mark& y) { return x.cell == y.cell; }),
+            m.end());
+    return m;
   };
-  draw(a, first_a);
-  draw(b, first_b);
+  const std::vector<Mark> ma = draw(a), mb = draw(b);
+  const auto find = [](const std::vector<Mark>& m, long long cell) -> const Mark* {
+    const auto it = std::lower_bound(m.begin(), m.end(), cell,
+                                     [](const Mark& x, long long c) { return x.cell < c; });
+    return it != m.end() && it->cell == cell ? &*it : nullptr;
+  };
   // Candidate cells: the first curve's cells with the second curve in the 3x3 neighbourhood
   // (a curve can clip a cell corner between two samples).
-  std::vector<int> comp(cells, -1);
-  const auto b_near = [&](int i, int j, std::size_t& best) {
-    for (int dj = -1; dj <= 1; ++dj)
-      for (int di = -1; di <= 1; ++di) {
-        const int x = i + di, y = j + dj;
-        if (x < 0 || y < 0 || x >= g.nx || y >= g.ny) continue;
-        const std::size_t id = z(y) * z(g.nx) + z(x);
-        if (first_b[id].first >= 0) {
-          best = id;
-          return true;
-        }
+  const auto b_near = [&](long long cell) -> const Mark* {
+    const long long i = cell % g.nx, j = cell / g.nx;
+    for (long long dj = -1; dj <= 1; ++dj)
+      for (long long di = -1; di <= 1; ++di) {
+        if (i + di < 0 || j + dj < 0 || i + di >= g.nx || j + dj >= g.ny) continue;
+        if (const Mark* q = find(mb, (j + dj) * g.nx + i + di)) return q;
       }
-    return false;
+    return nullptr;
   };
+  std::vector<char> candidate(ma.size()), seen(ma.size(), 0);
+  for (std::size_t i = 0; i < ma.size(); ++i) candidate[i] = b_near(ma[i].cell) != nullptr;
   std::vector<Found> found;
   const double leaf = std::max(opt.tolerance * scale, std::numeric_limits<double>::min());
   const double gap = std::max(opt.tolerance * opt.tolerance * scale, 64.0 * eps * scale);
-  int ncomp = 0;
-  for (int j0 = 0; j0 < g.ny; ++j0)
-    for (int i0 = 0; i0 < g.nx; ++i0) {
-      const std::size_t id0 = z(j0) * z(g.nx) + z(i0);
-      std::size_t bid = 0;
-      if (comp[id0] >= 0 || first_a[id0].first < 0 || !b_near(i0, j0, bid)) continue;
-      // Flood the 8-connected component of candidate cells; seed Newton from each of its cells
-      // until one converges (a component is one crossing at grid resolution).
-      std::vector<std::pair<int, int>> queue{{i0, j0}};
-      comp[id0] = ncomp;
-      std::vector<std::pair<std::size_t, std::size_t>> seeds;
-      for (std::size_t q = 0; q < queue.size(); ++q) {
-        const auto [ci, cj] = queue[q];
-        std::size_t nb = 0;
-        const std::size_t cid = z(cj) * z(g.nx) + z(ci);
-        if (b_near(ci, cj, nb)) seeds.push_back({cid, nb});
-        for (int dj = -1; dj <= 1; ++dj)
-          for (int di = -1; di <= 1; ++di) {
-            const int x = ci + di, y = cj + dj;
-            if (x < 0 || y < 0 || x >= g.nx || y >= g.ny) continue;
-            const std::size_t id = z(y) * z(g.nx) + z(x);
-            std::size_t dummy = 0;
-            if (comp[id] >= 0 || first_a[id].first < 0 || !b_near(x, y, dummy)) continue;
-            comp[id] = ncomp;
-            queue.push_back({x, y});
-          }
-      }
-      ++ncomp;
-      // Up to eight seeds spread over the component; every solution inside the component's
-      // cells (grown by one) is kept, so two crossings sharing a component can both be found.
-      int ci0 = g.nx, ci1 = -1, cj0 = g.ny, cj1 = -1;
-      for (const auto& q : queue) {
-        ci0 = std::min(ci0, q.first);
-        ci1 = std::max(ci1, q.first);
-        cj0 = std::min(cj0, q.second);
-        cj1 = std::max(cj1, q.second);
-      }
-      const std::size_t tries = std::min<std::size_t>(seeds.size(), 8);
-      for (std::size_t s = 0; s < tries; ++s) {
-        const auto& sd = seeds[(2 * s + 1) * seeds.size() / (2 * tries)];
-        const auto fa = first_a[sd.first];
-        const auto fb = first_b[sd.second];
-        const Piece& pa = a.pieces[z(fa.first)];
-        const Piece& pb = b.pieces[z(fb.first)];
-        const Sol so = newton2(pa, pb, fa.second, fb.second);
-        if (so.dist > gap) continue;
-        const V2 p = eval(pa.h, so.u).p;
-        const double fx = (p.x - g.min.x) / g.cell, fy = (p.y - g.min.y) / g.cell;
-        if (!(fx >= ci0 - 1 && fx <= ci1 + 2 && fy >= cj0 - 1 && fy <= cj1 + 2)) continue;
-        found.push_back({p, global_t(pa, so.u), global_t(pb, so.v),
-                         multiplicity_at(pa, so.u, pb, so.v, opt.tolerance)});
-      }
+  for (std::size_t i0 = 0; i0 < ma.size(); ++i0) {
+    if (!candidate[i0] || seen[i0]) continue;
+    // Flood the 8-connected component of candidate cells.
+    std::vector<std::size_t> queue{i0};
+    seen[i0] = 1;
+    long long ci0 = g.nx, ci1 = -1, cj0 = g.ny, cj1 = -1;
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      const long long cell = ma[queue[q]].cell, ci = cell % g.nx, cj = cell / g.nx;
+      ci0 = std::min(ci0, ci);
+      ci1 = std::max(ci1, ci);
+      cj0 = std::min(cj0, cj);
+      cj1 = std::max(cj1, cj);
+      for (long long dj = -1; dj <= 1; ++dj)
+        for (long long di = -1; di <= 1; ++di) {
+          if (ci + di < 0 || cj + dj < 0 || ci + di >= g.nx || cj + dj >= g.ny) continue;
+          const Mark* m = find(ma, (cj + dj) * g.nx + ci + di);
+          if (m == nullptr) continue;
+          const auto k = static_cast<std::size_t>(m - ma.data());
+          if (!candidate[k] || seen[k]) continue;
+          seen[k] = 1;
+          queue.push_back(k);
+        }
     }
+    // Up to six seeds spread over the component, cells holding both curves first; every
+    // solution inside the component's cells (grown by one) is kept, so two crossings sharing a
+    // component can both be found.
+    std::stable_partition(queue.begin(), queue.end(),
+                          [&](std::size_t k) { return find(mb, ma[k].cell) != nullptr; });
+    const std::size_t both =
+        static_cast<std::size_t>(std::count_if(queue.begin(), queue.end(), [&](std::size_t k) {
+          return find(mb, ma[k].cell) != nullptr;
+        }));
+    const std::size_t pool = both > 0 ? both : queue.size();
+    const std::size_t tries = std::min<std::size_t>(pool, 6);
+    for (std::size_t s = 0; s < tries; ++s) {
+      const Mark& sa = ma[queue[(2 * s + 1) * pool / (2 * tries)]];
+      const Mark* sb = b_near(sa.cell);
+      const PairSol ps = solve_pair(a, sa.piece, sa.u, b, sb->piece, sb->u, gap);
+      const Sol& so = ps.s;
+      if (so.dist > gap) continue;
+      const Piece& pa = a.pieces[ps.ka];
+      const Piece& pb = b.pieces[ps.kb];
+      const V2 p = eval(pa.h, so.u).p;
+      const double fx = (p.x - g.min.x) / g.cell, fy = (p.y - g.min.y) / g.cell;
+      if (!(fx >= static_cast<double>(ci0 - 1) && fx <= static_cast<double>(ci1 + 2) &&
+            fy >= static_cast<double>(cj0 - 1) && fy <= static_cast<double>(cj1 + 2)))
+        continue;
+      found.push_back({p, global_t(pa, so.u), global_t(pb, so.v),
+                       multiplicity_at(pa, so.u, pb, so.v, opt.tolerance)});
+    }
+  }
   finish(r, found, scale, leaf);
   return r;
 }
 
-CurveRaster2<double> raster(const Curve& a, const Curve& b, int cells) {
+/// The grid over the joint box of both curves, cells square, `cells` along the longer side.
+CurveRaster2<double> grid_geometry(const Curve& a, const Curve& b, int cells) {
   CurveRaster2<double> g;
   g.status = a.status != Status::ok ? a.status : b.status;
   if (g.status != Status::ok) return g;
@@ -744,13 +801,24 @@ CurveRaster2<double> raster(const Curve& a, const Curve& b, int cells) {
   g.min = bx.lo;
   g.nx = std::clamp(static_cast<int>(std::ceil((bx.hi.x - bx.lo.x) / g.cell)), 1, cells);
   g.ny = std::clamp(static_cast<int>(std::ceil((bx.hi.y - bx.lo.y) / g.cell)), 1, cells);
+  return g;
+}
+
+/// Samples per piece: about three per cell of control-polygon length (it bounds the arc).
+int samples_for(const Piece& p, double cell) {
+  double poly = 0.0;
+  for (std::size_t i = 1; i < p.h.size(); ++i) poly += length(proj(p.h[i]) - proj(p.h[i - 1]));
+  const double want = std::ceil(3.0 * poly / cell);
+  return want > 65536.0 ? 65536 : std::max(4, static_cast<int>(want));
+}
+
+CurveRaster2<double> raster(const Curve& a, const Curve& b, int cells) {
+  CurveRaster2<double> g = grid_geometry(a, b, cells);
+  if (g.status != Status::ok) return g;
   g.mask.assign(z(g.nx) * z(g.ny), 0);
   const auto draw = [&](const Curve& c, std::uint8_t bit) {
     for (const Piece& p : c.pieces) {
-      double poly = 0.0;
-      for (std::size_t i = 1; i < p.h.size(); ++i) poly += length(proj(p.h[i]) - proj(p.h[i - 1]));
-      const double want = std::ceil(4.0 * poly / g.cell);
-      const int n = want > 65536.0 ? 65536 : std::max(4, static_cast<int>(want));
+      const int n = samples_for(p, g.cell);
       for (int s = 0; s <= n; ++s) {
         const V2 q = eval(p.h, static_cast<double>(s) / n).p;
         const double fx = (q.x - g.min.x) / g.cell, fy = (q.y - g.min.y) / g.cell;
@@ -851,10 +919,12 @@ CurveHits2<double> curve_curve(const Curve& a, const Curve& b, const CurveHitOpt
     const std::size_t tries = std::min<std::size_t>(grp.size(), 4);
     for (std::size_t k = 0; k < tries; ++k) {
       const LeafPair& lp = leaves[grp[k]];
-      const Piece& pa = a.pieces[lp.pa];
-      const Piece& pb = b.pieces[lp.pb];
-      const Sol s = newton2(pa, pb, 0.5 * (lp.ua + lp.ub), 0.5 * (lp.va + lp.vb));
+      const PairSol ps =
+          solve_pair(a, lp.pa, 0.5 * (lp.ua + lp.ub), b, lp.pb, 0.5 * (lp.va + lp.vb), gap);
+      const Sol& s = ps.s;
       if (s.dist > gap) continue;
+      const Piece& pa = a.pieces[ps.ka];
+      const Piece& pb = b.pieces[ps.kb];
       found.push_back({eval(pa.h, s.u).p, global_t(pa, s.u), global_t(pb, s.v),
                        multiplicity_at(pa, s.u, pb, s.v, opt.tolerance)});
       break;
