@@ -484,6 +484,35 @@ CurveHits2<double> linear_curve(const Lin& l, const Curve& c, const CurveHitOpti
       const int sa = a < t ? sign(line_dist(l, c, a)) : 0,
                 sb = b > t ? sign(line_dist(l, c, b)) : 0;
       mult = (sa != 0 && sa == sb) ? 2 : 1;
+    } else if (mult == -2 && k.t_hi > k.t_lo) {
+      // A run of leaf boxes: every sign change of the distance at 64 steps over it is a
+      // crossing (a shallow dip across the line can keep two crossings in one run).
+      constexpr int steps = 64;
+      int crossings = 0;
+      double prev_t = k.t_lo;
+      int prev_s = sign(line_dist(l, c, prev_t));
+      for (int i = 1; i <= steps; ++i) {
+        const double tt = k.t_lo + (k.t_hi - k.t_lo) * static_cast<double>(i) / steps;
+        const int sg = sign(line_dist(l, c, tt));
+        if (sg != 0 && prev_s != 0 && sg != prev_s) {
+          const double tr = solve_in(l, c, prev_t, tt).first;
+          const Eval e = eval(c.pieces[locate(c, tr).first].h, locate(c, tr).second);
+          const double sn = std::abs(perp_dot(l.d, e.dp)) / (length(l.d) * length(e.dp));
+          const V2 p = point_at_t(c, tr);
+          double sp = lin_param(l, p);
+          if (in_range(sp)) r.hits.push_back({p, sp, tr, sn > std::sqrt(opt.tolerance) ? 1 : 3});
+          ++crossings;
+        }
+        if (sg != 0) {
+          prev_s = sg;
+          prev_t = tt;
+        }
+      }
+      if (crossings > 0) continue;
+      const auto [tr, f] = solve_in(l, c, k.t_lo, k.t_hi);
+      if (std::abs(f) > gap) continue;
+      t = tr;
+      mult = cluster_multiplicity(l, c, k.t_lo, k.t_hi);
     } else if (mult < 0) {
       const auto [tr, f] = solve_in(l, c, k.t_lo, k.t_hi);
       const bool hier = mult == -2;
@@ -676,8 +705,8 @@ CurveHits2<double> raster_hits(const Curve& a, const Curve& b, const CurveHitOpt
   r.status = Status::ok;
   const CurveRaster2<double> g = grid_geometry(a, b, opt.raster_cells);
   if (g.status != Status::ok || g.nx == 0) return r;
-  // The cells each curve is drawn into, sparse: (cell id, piece, u) sorted by cell, the first
-  // sample of a curve in a cell kept.
+  // The cells each curve is drawn into, sparse: one mark (cell id, piece, u) per pass of the
+  // curve through a cell (consecutive samples in the same cell are one pass), sorted by cell.
   struct Mark {
     long long cell;
     std::size_t piece;
@@ -695,41 +724,53 @@ CurveHits2<double> raster_hits(const Curve& a, const Curve& b, const CurveHitOpt
         if (!(fx >= 0.0 && fy >= 0.0 && fx <= g.nx && fy <= g.ny)) continue;
         const int i = std::min(static_cast<int>(fx), g.nx - 1);
         const int j = std::min(static_cast<int>(fy), g.ny - 1);
-        m.push_back({static_cast<long long>(j) * g.nx + i, k, u});
+        const long long cell = static_cast<long long>(j) * g.nx + i;
+        if (!m.empty() && m.back().cell == cell) continue;
+        m.push_back({cell, k, u});
       }
     }
     std::stable_sort(m.begin(), m.end(),
                      [](const Mark& x, const Mark& y) { return x.cell < y.cell; });
-    m.erase(std::unique(m.begin(), m.end(),
-                        [](const Mark& x, const Mark& y) { return x.cell == y.cell; }),
-            m.end());
     return m;
   };
   const std::vector<Mark> ma = draw(a), mb = draw(b);
-  const auto find = [](const std::vector<Mark>& m, long long cell) -> const Mark* {
-    const auto it = std::lower_bound(m.begin(), m.end(), cell,
+  // The marks of a cell: [first, last) indices.
+  const auto range = [](const std::vector<Mark>& m, long long cell) {
+    const auto lo = std::lower_bound(m.begin(), m.end(), cell,
                                      [](const Mark& x, long long c) { return x.cell < c; });
-    return it != m.end() && it->cell == cell ? &*it : nullptr;
+    auto hi = lo;
+    while (hi != m.end() && hi->cell == cell) ++hi;
+    return std::pair<std::size_t, std::size_t>{static_cast<std::size_t>(lo - m.begin()),
+                                               static_cast<std::size_t>(hi - m.begin())};
   };
-  // Candidate cells: the first curve's cells with the second curve in the 3x3 neighbourhood
-  // (a curve can clip a cell corner between two samples).
-  const auto b_near = [&](long long cell) -> const Mark* {
+  // The second curve's marks in the 3x3 neighbourhood of a cell (a curve can clip a cell corner
+  // between two samples), those in the cell itself first.
+  const auto b_near = [&](long long cell, std::vector<std::size_t>& out) {
+    out.clear();
     const long long i = cell % g.nx, j = cell / g.nx;
+    const auto [f0, f1] = range(mb, cell);
+    for (std::size_t k = f0; k < f1; ++k) out.push_back(k);
     for (long long dj = -1; dj <= 1; ++dj)
       for (long long di = -1; di <= 1; ++di) {
-        if (i + di < 0 || j + dj < 0 || i + di >= g.nx || j + dj >= g.ny) continue;
-        if (const Mark* q = find(mb, (j + dj) * g.nx + i + di)) return q;
+        if ((di == 0 && dj == 0) || i + di < 0 || j + dj < 0 || i + di >= g.nx || j + dj >= g.ny)
+          continue;
+        const auto [k0, k1] = range(mb, (j + dj) * g.nx + i + di);
+        for (std::size_t k = k0; k < k1; ++k) out.push_back(k);
       }
-    return nullptr;
+    return f1 - f0;
   };
+  std::vector<std::size_t> near;
   std::vector<char> candidate(ma.size()), seen(ma.size(), 0);
-  for (std::size_t i = 0; i < ma.size(); ++i) candidate[i] = b_near(ma[i].cell) != nullptr;
+  for (std::size_t i = 0; i < ma.size(); ++i) {
+    b_near(ma[i].cell, near);
+    candidate[i] = !near.empty();
+  }
   std::vector<Found> found;
   const double leaf = std::max(opt.tolerance * scale, std::numeric_limits<double>::min());
   const double gap = std::max(opt.tolerance * opt.tolerance * scale, 64.0 * eps * scale);
   for (std::size_t i0 = 0; i0 < ma.size(); ++i0) {
     if (!candidate[i0] || seen[i0]) continue;
-    // Flood the 8-connected component of candidate cells.
+    // Flood the 8-connected component of candidate marks.
     std::vector<std::size_t> queue{i0};
     seen[i0] = 1;
     long long ci0 = g.nx, ci1 = -1, cj0 = g.ny, cj1 = -1;
@@ -742,29 +783,34 @@ CurveHits2<double> raster_hits(const Curve& a, const Curve& b, const CurveHitOpt
       for (long long dj = -1; dj <= 1; ++dj)
         for (long long di = -1; di <= 1; ++di) {
           if (ci + di < 0 || cj + dj < 0 || ci + di >= g.nx || cj + dj >= g.ny) continue;
-          const Mark* m = find(ma, (cj + dj) * g.nx + ci + di);
-          if (m == nullptr) continue;
-          const auto k = static_cast<std::size_t>(m - ma.data());
-          if (!candidate[k] || seen[k]) continue;
-          seen[k] = 1;
-          queue.push_back(k);
+          const auto [k0, k1] = range(ma, (cj + dj) * g.nx + ci + di);
+          for (std::size_t k = k0; k < k1; ++k) {
+            if (!candidate[k] || seen[k]) continue;
+            seen[k] = 1;
+            queue.push_back(k);
+          }
         }
     }
-    // Up to six seeds spread over the component, cells holding both curves first; every
-    // solution inside the component's cells (grown by one) is kept, so two crossings sharing a
-    // component can both be found.
-    std::stable_partition(queue.begin(), queue.end(),
-                          [&](std::size_t k) { return find(mb, ma[k].cell) != nullptr; });
-    const std::size_t both =
-        static_cast<std::size_t>(std::count_if(queue.begin(), queue.end(), [&](std::size_t k) {
-          return find(mb, ma[k].cell) != nullptr;
-        }));
-    const std::size_t pool = both > 0 ? both : queue.size();
-    const std::size_t tries = std::min<std::size_t>(pool, 6);
-    for (std::size_t s = 0; s < tries; ++s) {
-      const Mark& sa = ma[queue[(2 * s + 1) * pool / (2 * tries)]];
-      const Mark* sb = b_near(sa.cell);
-      const PairSol ps = solve_pair(a, sa.piece, sa.u, b, sb->piece, sb->u, gap);
+    // Seed pairs: each mark of the first curve with each mark of the second nearby, pairs in
+    // the same cell and pairs in neighbouring cells, up to twelve of each spread over them. Every
+    // solution inside the component's cells (grown by one) is kept, so crossings sharing a
+    // component can all be found.
+    std::vector<std::pair<std::size_t, std::size_t>> same, other;
+    for (std::size_t k : queue) {
+      const std::size_t in_cell = b_near(ma[k].cell, near);
+      for (std::size_t x = 0; x < near.size(); ++x)
+        (x < in_cell ? same : other).push_back({k, near[x]});
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> seeds;
+    for (const auto* pool : {&same, &other}) {
+      const std::size_t tries = std::min<std::size_t>(pool->size(), 12);
+      for (std::size_t s = 0; s < tries; ++s)
+        seeds.push_back((*pool)[(2 * s + 1) * pool->size() / (2 * tries)]);
+    }
+    for (const auto& pr : seeds) {
+      const Mark& sa = ma[pr.first];
+      const Mark& sb = mb[pr.second];
+      const PairSol ps = solve_pair(a, sa.piece, sa.u, b, sb.piece, sb.u, gap);
       const Sol& so = ps.s;
       if (so.dist > gap) continue;
       const Piece& pa = a.pieces[ps.ka];

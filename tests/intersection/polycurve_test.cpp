@@ -141,10 +141,12 @@ std::optional<std::vector<Bracket>> oracle(const C& c, Vec2<double> o, Vec2<doub
   for (std::size_t i = 0; i < std::size_t(m); ++i) {
     if (g[i] == 0.0) return std::nullopt;
     if ((g[i] < 0.0) != (g[i + 1] < 0.0)) {
-      const Vec2<double> p = pt(c, 0.5 * (t[i] + t[i + 1]));
-      const double s = dot(p - o, d) / dot(d, d);
-      if (std::abs(s - lo) < 1e-6 * std::max(1.0, std::abs(s)) ||
-          std::abs(s - hi) < 1e-6 * std::max(1.0, std::abs(s)))
+      // The component's parameter at both samples: ambiguous when they straddle an end.
+      const auto sp = [&](double tt) { return dot(pt(c, tt) - o, d) / dot(d, d); };
+      const double s = sp(0.5 * (t[i] + t[i + 1]));
+      const double s0 = std::min(sp(t[i]), sp(t[i + 1])), s1 = std::max(sp(t[i]), sp(t[i + 1]));
+      const double pad = 1e-6 * std::max(1.0, std::abs(s));
+      if ((s0 - pad <= lo && lo <= s1 + pad) || (s0 - pad <= hi && hi <= s1 + pad))
         return std::nullopt;
       if (s >= lo && s <= hi) out.push_back({t[i], t[i + 1]});
     } else if (i > 0 && (g[i - 1] < 0.0) == (g[i] < 0.0) && std::abs(g[i]) <= std::abs(g[i - 1]) &&
@@ -244,7 +246,7 @@ void random_linear(Rng& rng, const C& c, int& decided) {
       break;
     }
     default: {
-      const Vec2<T> a = p - T(3) * d, b = p + dy<T>(rng, -4, 4, 4) * d;
+      const Vec2<T> a = p - T(3) * d, b = p + dy<T>(rng, -2, 4, 4) * d;  // may end before p
       const Vec2<double> ad = vec_cast<double>(a);
       linear_case(Segment2<T>{a, b}, c, ad, vec_cast<double>(b) - ad, 0.0, 1.0, decided);
     }
