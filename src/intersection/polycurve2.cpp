@@ -792,9 +792,9 @@ CurveHits2<double> raster_hits(const Curve& a, const Curve& b, const CurveHitOpt
         }
     }
     // Seed pairs: each mark of the first curve with each mark of the second nearby, pairs in
-    // the same cell and pairs in neighbouring cells, up to twelve of each spread over them. Every
-    // solution inside the component's cells (grown by one) is kept, so crossings sharing a
-    // component can all be found.
+    // the same cell and pairs in neighbouring cells, at least twelve (an eighth in long components)
+    // of each spread over them. Every solution inside the component's cells (grown by one) is kept,
+    // so crossings sharing a component can all be found.
     std::vector<std::pair<std::size_t, std::size_t>> same, other;
     for (std::size_t k : queue) {
       const std::size_t in_cell = b_near(ma[k].cell, near);
@@ -803,7 +803,8 @@ CurveHits2<double> raster_hits(const Curve& a, const Curve& b, const CurveHitOpt
     }
     std::vector<std::pair<std::size_t, std::size_t>> seeds;
     for (const auto* pool : {&same, &other}) {
-      const std::size_t tries = std::min<std::size_t>(pool->size(), 12);
+      const std::size_t tries =
+          std::min<std::size_t>(pool->size(), std::max<std::size_t>(12, pool->size() / 8));
       for (std::size_t s = 0; s < tries; ++s)
         seeds.push_back((*pool)[(2 * s + 1) * pool->size() / (2 * tries)]);
     }

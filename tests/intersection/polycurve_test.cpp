@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "support/typed.hpp"
@@ -112,11 +113,35 @@ double curve_max(const C& c) {
   for (const auto& p : c.control) m = std::max(m, double(max_abs(p)));
   return m;
 }
-/// The curve's point in double (its own evaluator, then widened; the data are exact in T).
+/// The same curve in double (exact: the data are dyadic).
+template <class T>
+BezierCurve2<double> widen(const BezierCurve2<T>& c) {
+  BezierCurve2<double> w;
+  for (const auto& p : c.control) w.control.push_back(vec_cast<double>(p));
+  return w;
+}
+template <class T>
+BSplineCurve2<double> widen(const BSplineCurve2<T>& c) {
+  BSplineCurve2<double> w{c.degree, {}, {}};
+  for (const auto& p : c.control) w.control.push_back(vec_cast<double>(p));
+  for (T k : c.knots) w.knots.push_back(double(k));
+  return w;
+}
+template <class T>
+NurbsCurve2<double> widen(const NurbsCurve2<T>& c) {
+  NurbsCurve2<double> w{c.degree, {}, {}, {}};
+  for (const auto& p : c.control) w.control.push_back(vec_cast<double>(p));
+  for (T k : c.weights) w.weights.push_back(double(k));
+  for (T k : c.knots) w.knots.push_back(double(k));
+  return w;
+}
+/// The curve's point by its own evaluator (de Casteljau / de Boor) in double.
 template <class C>
 Vec2<double> pt(const C& c, double t) {
-  using T = curve_scalar_t<C>;
-  return vec_cast<double>(point_at(c, static_cast<T>(t)));
+  if constexpr (std::is_same_v<curve_scalar_t<C>, double>)
+    return point_at(c, t);
+  else
+    return point_at(widen(c), t);
 }
 
 // ---- the sampled oracle for a linear component -------------------------------------------------
@@ -127,8 +152,9 @@ struct Bracket {
 /// 1e-4 scale of the line at a local minimum of |distance| without a sign change, or a
 /// sign change whose point lies within 1e-6 of the component's parameter range ends).
 template <class C>
-std::optional<std::vector<Bracket>> oracle(const C& c, Vec2<double> o, Vec2<double> d, double lo,
-                                           double hi, double scale) {
+std::optional<std::vector<Bracket>> oracle(const C& given, Vec2<double> o, Vec2<double> d,
+                                           double lo, double hi, double scale) {
+  const auto c = widen(given);
   const auto dm = dom(c);
   const double a = double(dm.min), b = double(dm.max);
   constexpr int m = 3000;
@@ -405,7 +431,8 @@ bool segments_cross(Vec2<double> a, Vec2<double> b, Vec2<double> c, Vec2<double>
   return ((o1 < 0.0) != (o2 < 0.0)) && ((o3 < 0.0) != (o4 < 0.0));
 }
 template <class C>
-std::vector<Vec2<double>> polyline(const C& c, int m) {
+std::vector<Vec2<double>> polyline(const C& given, int m) {
+  const auto c = widen(given);
   const auto dm = dom(c);
   std::vector<Vec2<double>> p;
   for (int i = 0; i <= m; ++i) p.push_back(pt(c, double(dm.min) + double(dm.max - dm.min) * i / m));
@@ -421,7 +448,10 @@ std::vector<Vec2<double>> polyline_crossings(const std::vector<Vec2<double>>& a,
       if (std::max(b[j].x, b[j + 1].x) < x0 || std::min(b[j].x, b[j + 1].x) > x1 ||
           std::max(b[j].y, b[j + 1].y) < y0 || std::min(b[j].y, b[j + 1].y) > y1)
         continue;
-      if (segments_cross(a[i], a[i + 1], b[j], b[j + 1])) out.push_back(a[i]);
+      if (segments_cross(a[i], a[i + 1], b[j], b[j + 1])) {
+        const Vec2<double> u = a[i + 1] - a[i], v = b[j + 1] - b[j];
+        out.push_back(a[i] + (perp_dot(b[j] - a[i], v) / perp_dot(u, v)) * u);
+      }
     }
   }
   return out;
