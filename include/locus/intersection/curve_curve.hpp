@@ -14,8 +14,8 @@
 //    A(s) - B(t) = 0. Crossings converge quadratically to a few ulps; a cluster whose closest
 //    points stay farther apart than max(tolerance^2, 64 eps) x scale is a near miss (no hit).
 //  * raster (figure 7.11): both curves drawn into a raster_cells grid over their joint box;
-//    each 8-connected component of cells holding both seeds Newton. Crossings closer than about
-//    two cells merge. curve_raster() returns the grid itself.
+//    each 8-connected component of cells holding both seeds Newton. Crossings a few cells apart
+//    can merge (docs/notes/polycurve.md). curve_raster() returns the grid itself.
 // Conditioning: distinct crossings closer than the leaf size (tolerance x scale) may merge into
 // one; a tangency is found when the gap is below max(tolerance^2, 64 eps) x scale and located
 // to about sqrt of that. Overlaps other than identical pieces (a curve and a sub-arc of it)

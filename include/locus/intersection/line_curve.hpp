@@ -19,7 +19,8 @@
 //    (or least |distance|): crossings closer than that box size merge into one hit.
 //  * raster (figures 7.4, 7.11): the line and the curve drawn into a raster_cells grid over the
 //    curve's box; each 8-connected component of shared cells seeds Newton on the 2x2 system.
-//    Crossings less than about two cells apart merge; grazing contacts may be missed.
+//    Crossings a few cells apart can merge, and one inside a long near-parallel stretch can
+//    be missed (docs/notes/polycurve.md).
 // Conditioning: a tangency is reported when the curve comes within max(tolerance^2, 64 eps) x
 // scale of the line (scale = the largest |coordinate|); its position is good to about
 // sqrt(that gap). Crossings at an angle below sqrt(tolerance) found by the raster or hierarchy
