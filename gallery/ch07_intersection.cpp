@@ -4,17 +4,22 @@
 // parabola), 7.6 (the three relations of two circles), 7.7-7.9 (contained, transverse and
 // separated ellipses), 7.10 (two ellipses meeting in four points) and the separating-axis
 // figures 7.12-7.18 (stationary and moving convex polygons). Every point, overlap, contact and
-// relation drawn is what intersection() / relation() / first_contact() return; a figure fails
+// relation drawn is what intersection() / relation() / first_contact() return; 7.2-7.4 and
+// 7.11 (a line and two cubic curves: the points found, the box hierarchy, the raster grids) are
+// the results of intersection(Line2, BezierCurve2) / intersection(curve, curve) and
+// curve_raster(); a figure fails
 // when the count, kind or relation is not the one the configuration has.
 #include "gallery.hpp"
 
 #include <locus/core/predicates.hpp>
 #include <locus/intersection/circle_circle.hpp>
 #include <locus/intersection/convex_polygon2.hpp>
+#include <locus/intersection/curve_curve.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/ellipse_quadratic_curve.hpp>
 #include <locus/intersection/line_arc.hpp>
 #include <locus/intersection/line_circle.hpp>
+#include <locus/intersection/line_curve.hpp>
 #include <locus/intersection/moving_convex2.hpp>
 #include <locus/primitives/quadratic_curve.hpp>
 
@@ -336,17 +341,133 @@ bool fig_7_18(SvgWriter& w) {
   return moving_pair(w, a, {0.5, 0.25}, b, {-1, -0.5}, 4) == Kind::segment;
 }
 
+// ---- polynomial curves (7.2-7.4, 7.11) ------------------------------------------------------
+const BezierCurve2<double> cubic7{{{-3, -1}, {-1, 3}, {1, -3}, {3, 1}}};
+const Line2d line7{{-3.5, -0.35}, {1, 0.1}};
+
+void draw_bezier(SvgWriter& w, const BezierCurve2<double>& b, const char* col, bool polygon) {
+  if (polygon) w.polyline(b.control, dashed(c::gray, 1));
+  w.curve([&b](double t) { return point_at(b, t); }, 0, 1, 120, pen(col, 2.2));
+}
+
+// 7.2: a line and a cubic curve meeting in three points (the algebraic method).
+bool fig_7_2(SvgWriter& w) {
+  const auto r = intersection(line7, cubic7);
+  draw_bezier(w, cubic7, c::blue, true);
+  w.line(line7.origin, line7.direction, pen(c::black, 1.5));
+  for (const auto& h : r.hits) point(w, h.point, "", c::red);
+  w.text(Vec2d{-3.5, -3.4}, std::to_string(r.hits.size()) + " crossings (Bernstein roots)",
+         text_style(c::black, 0, 0));
+  return r.status == Status::ok && r.hits.size() == 3;
+}
+
+// 7.3: the bounding-box hierarchy: control-polygon boxes of the halves, quarters and eighths;
+// those the line meets (both sides, by orient2d on the corners) are refined, the others dropped.
+bool fig_7_3(SvgWriter& w) {
+  std::vector<BezierCurve2<double>> level{cubic7};
+  const char* cols[3] = {c::light, c::gray, c::orange};
+  for (int depth = 0; depth < 3; ++depth) {
+    std::vector<BezierCurve2<double>> next;
+    for (const auto& b : level) {
+      const auto bx = bounding_box(b);
+      const std::array<Vec2d, 4> k{bx.min, Vec2d{bx.max.x, bx.min.y}, bx.max,
+                                   Vec2d{bx.min.x, bx.max.y}};
+      int pos = 0, neg = 0;
+      for (const auto& q : k) {
+        const Sign o = orient2d(line7.origin, line7.origin + line7.direction, q);
+        pos += o == Sign::positive;
+        neg += o == Sign::negative;
+      }
+      const bool meets = pos < 4 && neg < 4;
+      w.polygon(std::vector<Vec2d>(k.begin(), k.end()),
+                meets ? filled(cols[depth], 0.15, 1) : dashed(c::light, 0.8));
+      if (!meets) continue;
+      const auto halves = subdivide(b, 0.5);
+      next.push_back(halves.first);
+      next.push_back(halves.second);
+    }
+    level = std::move(next);
+  }
+  draw_bezier(w, cubic7, c::blue, false);
+  w.line(line7.origin, line7.direction, pen(c::black, 1.5));
+  CurveHitOptions o;
+  o.method = CurveMethod::hierarchy;
+  const auto r = intersection(line7, cubic7, o);
+  for (const auto& h : r.hits) point(w, h.point, "", c::red);
+  return r.hits.size() == 3 && !level.empty();
+}
+
+void draw_raster(SvgWriter& w, const CurveRaster2<double>& g) {
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const auto m = g.mask[static_cast<std::size_t>(j * g.nx + i)];
+      if (m == 0) continue;
+      const Vec2d lo = g.min + g.cell * Vec2d{double(i), double(j)};
+      const std::vector<Vec2d> cell{lo, lo + Vec2d{g.cell, 0}, lo + Vec2d{g.cell, g.cell},
+                                    lo + Vec2d{0, g.cell}};
+      SvgStyle s = filled(m == 1   ? c::light
+                          : m == 2 ? c::gray
+                                   : c::orange,
+                          m == 3 ? 0.8 : 0.5, 0.3);
+      w.polygon(cell, s);
+    }
+}
+
+// 7.4: the line and the curve rasterised (mask 1 light, 2 dark, both orange); the raster method
+// refines each shared component by Newton.
+bool fig_7_4(SvgWriter& w) {
+  const auto bx = bounding_box(cubic7);
+  // The line drawn across the curve's box, as the segment the raster method clips it to.
+  const double s0 = (bx.min.x - line7.origin.x) / line7.direction.x;
+  const double s1 = (bx.max.x - line7.origin.x) / line7.direction.x;
+  const BezierCurve2<double> seg{{point_at(line7, s0), point_at(line7, s1)}};
+  const auto g = curve_raster(seg, cubic7, 32);
+  draw_raster(w, g);
+  draw_bezier(w, cubic7, c::blue, false);
+  w.line(line7.origin, line7.direction, pen(c::black, 1));
+  CurveHitOptions o;
+  o.method = CurveMethod::raster;
+  o.raster_cells = 32;
+  const auto r = intersection(line7, cubic7, o);
+  for (const auto& h : r.hits) point(w, h.point, "", c::red);
+  return g.status == Status::ok && r.hits.size() == 3;
+}
+
+// 7.11: two curves rasterised; shared cells seed Newton on A(s) = B(t).
+bool fig_7_11(SvgWriter& w) {
+  const BezierCurve2<double> other{{{-3, 2}, {-1, -4}, {2, 4}, {3, -2}}};
+  const auto g = curve_raster(cubic7, other, 32);
+  draw_raster(w, g);
+  draw_bezier(w, cubic7, c::blue, false);
+  draw_bezier(w, other, c::green, false);
+  CurveHitOptions o;
+  o.method = CurveMethod::raster;
+  o.raster_cells = 32;
+  const auto r = intersection(cubic7, other, o);
+  const auto exact = intersection(cubic7, other);
+  for (const auto& h : r.hits) point(w, h.point, "", c::red);
+  w.text(Vec2d{-3, -4.6},
+         std::to_string(r.hits.size()) + " points (raster), " + std::to_string(exact.hits.size()) +
+             " (subdivision)",
+         text_style(c::black, 0, 0));
+  return g.status == Status::ok && !r.hits.empty() && r.hits.size() == exact.hits.size();
+}
+
 }  // namespace
 
 std::vector<Figure> chapter7_intersection_figures() {
   return {
       {"7.1", "intersection(Line2, Circle2), intersection(Line2, Arc2)", fig_7_1},
+      {"7.2", "intersection(Line2, BezierCurve2) (algebraic)", fig_7_2},
+      {"7.3", "intersection(Line2, BezierCurve2) (hierarchy), subdivide, bounding_box", fig_7_3},
+      {"7.4", "curve_raster, intersection(Line2, BezierCurve2) (raster)", fig_7_4},
       {"7.5", "intersection(Ellipse2, QuadraticCurve2)", fig_7_5},
       {"7.6", "intersection(Circle2, Circle2), relation(Circle2, Circle2)", fig_7_6},
       {"7.7", "relation(Ellipse2, Ellipse2)", fig_7_7},
       {"7.8", "intersection(Ellipse2, Ellipse2), relation", fig_7_8},
       {"7.9", "relation(Ellipse2, Ellipse2)", fig_7_9},
       {"7.10", "intersection(Ellipse2, Ellipse2)", fig_7_10},
+      {"7.11", "curve_raster, intersection(BezierCurve2, BezierCurve2) (raster)", fig_7_11},
       {"7.12", "intersects_convex_polygons", fig_7_12},
       {"7.13", "convex_polygon_intersection", fig_7_13},
       {"7.14", "intersection(Triangle2, Triangle2)", fig_7_14},

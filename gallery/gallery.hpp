@@ -48,7 +48,7 @@ std::vector<Figure> chapter5_primitive_figures();     // ch05_primitives.cpp: 5.
 std::vector<Figure> chapter5_curve_figures();         // ch05_curves.cpp: 5.17, 5.18
 std::vector<Figure> chapter6_distance_figures();      // ch06_distance.cpp: distance in 2D, 6.1-6.23
 std::vector<Figure> chapter6_gjk_figures();           // ch06_gjk.cpp: GJK, 6.24-6.29
-std::vector<Figure> chapter7_intersection_figures();  // ch07_intersection.cpp: 7.1, 7.5-7.10
+std::vector<Figure> chapter7_intersection_figures();  // ch07_intersection.cpp: 7.1-7.18
 std::vector<Figure> chapter8_construction_figures();  // ch08_constructions.cpp: 8.1-8.34
 std::vector<Figure> chapter9_mesh_figures();          // ch09_meshes.cpp: 9.5-9.17
 std::vector<Figure> chapter9_surface_figures();       // ch09_surfaces.cpp: 9.22-9.26

@@ -422,3 +422,29 @@ def bspline_surface_insert_knot(
     direction: str = "u",
     times: int = 1,
 ) -> tuple[_Floats, _Floats, _Floats]: ...
+
+class CurveHits(Result):
+    kind: str
+    points: _Floats
+    param_a: _Floats
+    param_b: _Floats
+    multiplicity: npt.NDArray[np.int32]
+
+_Curve = _Points | dict[str, Any]
+
+def line_curve_hits(
+    a: npt.ArrayLike,
+    b: npt.ArrayLike,
+    curve: _Curve,
+    component: str = "line",
+    method: str = "algebraic",
+    tolerance: float = ...,
+    raster_cells: int = 256,
+) -> CurveHits: ...
+def curve_intersections(
+    a: _Curve,
+    b: _Curve,
+    method: str = "algebraic",
+    tolerance: float = ...,
+    raster_cells: int = 256,
+) -> CurveHits: ...

@@ -14,6 +14,7 @@
 #include <locus/intersection/circle_ellipse.hpp>
 #include <locus/intersection/circle_quadratic_curve.hpp>
 #include <locus/intersection/convex_polygon2.hpp>
+#include <locus/intersection/curve_curve.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/ellipse_quadratic_curve.hpp>
 #include <locus/intersection/ellipsoid_ellipsoid.hpp>
@@ -22,6 +23,7 @@
 #include <locus/intersection/line_capsule.hpp>
 #include <locus/intersection/line_circle.hpp>
 #include <locus/intersection/line_cone.hpp>
+#include <locus/intersection/line_curve.hpp>
 #include <locus/intersection/line_cylinder.hpp>
 #include <locus/intersection/line_disk.hpp>
 #include <locus/intersection/line_ellipse.hpp>
@@ -59,6 +61,7 @@
 #include <locus/intersection/ray_capsule.hpp>
 #include <locus/intersection/ray_circle.hpp>
 #include <locus/intersection/ray_cone.hpp>
+#include <locus/intersection/ray_curve.hpp>
 #include <locus/intersection/ray_cylinder.hpp>
 #include <locus/intersection/ray_disk.hpp>
 #include <locus/intersection/ray_ellipse.hpp>
@@ -82,6 +85,7 @@
 #include <locus/intersection/segment_capsule.hpp>
 #include <locus/intersection/segment_circle.hpp>
 #include <locus/intersection/segment_cone.hpp>
+#include <locus/intersection/segment_curve.hpp>
 #include <locus/intersection/segment_cylinder.hpp>
 #include <locus/intersection/segment_disk.hpp>
 #include <locus/intersection/segment_ellipse.hpp>

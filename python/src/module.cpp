@@ -9,10 +9,11 @@
 
 namespace locus::python {
 
-void bind_sat2(py::module_& m);          // python/src/sat2.cpp
-void bind_sat3(py::module_& m);          // python/src/sat3.cpp
-void bind_construction(py::module_& m);  // construction.cpp
-void bind_partition(py::module_& m);     // partition.cpp
+void bind_sat2(py::module_& m);                // python/src/sat2.cpp
+void bind_sat3(py::module_& m);                // python/src/sat3.cpp
+void bind_construction(py::module_& m);        // construction.cpp
+void bind_partition(py::module_& m);           // partition.cpp
+void bind_curve_intersection(py::module_& m);  // curve_intersection.cpp
 
 namespace {
 
@@ -104,6 +105,8 @@ for _name, _doc in [
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
     ("BspPartition", "bsp_partition: pieces (k, 2, 2), location, segment."),
     ("BspBoolean", "bsp_boolean: edges (k, 2, 2), operand, loops, closed, segments, points."),
+    ("CurveHits", "line_curve_hits / curve_intersections: kind, points (k, 2), param_a, "
+                  "param_b, multiplicity."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make
@@ -255,4 +258,5 @@ PYBIND11_MODULE(locus, m) {
   bind_sat2(m);
   bind_sat3(m);
   bind_partition(m);
+  bind_curve_intersection(m);
 }

@@ -42,7 +42,8 @@ def test_stub_class_fields_exist(rng):
                locus.gjk_distance(p2, p2 + 2), locus.penetration(p3, p3),
                locus.segment_intersections(p2[:4].reshape(2, 2, 2), p2[4:8].reshape(2, 2, 2)),
                locus.triangulate_polygon(np.array([[0, 0], [1, 0], [0, 1.0]])),
-               locus.constrained_delaunay(p2, [[0, 1]])]
+               locus.constrained_delaunay(p2, [[0, 1]]),
+               locus.curve_intersections(p2[:4], p2[4:8])]
     for r in samples:
         name = type(r).__name__
         assert set(vars(r)) == fields[name] | {"status"}, name

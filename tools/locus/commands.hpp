@@ -22,5 +22,6 @@ void register_construct(CLI::App& app);    // construct <kind> (cmd_construct.cp
 void register_surfacehit(CLI::App& app);   // surfacehit (cmd_surfacehit.cpp)
 void register_partition(CLI::App& app);    // partition (cmd_partition.cpp)
 void register_bsp(CLI::App& app);          // bsp classify|boolean (cmd_bsp.cpp)
+void register_curvehit(CLI::App& app);     // curvehit (cmd_curvehit.cpp)
 
 }  // namespace locus_cli

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   locus_cli::register_surfacehit(app);
   locus_cli::register_partition(app);
   locus_cli::register_bsp(app);
+  locus_cli::register_curvehit(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
