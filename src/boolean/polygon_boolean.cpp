@@ -109,13 +109,82 @@ void merge_frags(std::vector<Frag>& f) {
   f.resize(out);
 }
 
-/// Hot pixels sorted by (x, y); visits those in the box [x0, x1] x [y0, y1].
-template <class F>
-void for_hot_in_box(const std::vector<Pt>& hot, i64 x0, i64 x1, i64 y0, i64 y1, F&& f) {
-  auto it = std::lower_bound(hot.begin(), hot.end(), Pt{x0, std::numeric_limits<i64>::min()});
-  for (; it != hot.end() && it->x <= x1; ++it)
-    if (it->y >= y0 && it->y <= y1) f(*it);
-}
+/// Hot pixels bucketed in a uniform grid of about one pixel per cell, so that a segment visits
+/// the cells along it rather than every hot pixel in its x-range.
+class HotGrid {
+ public:
+  explicit HotGrid(const std::vector<Pt>& hot) {
+    x0_ = y0_ = std::numeric_limits<i64>::max();
+    i64 x1 = std::numeric_limits<i64>::min(), y1 = x1;
+    for (Pt p : hot) {
+      x0_ = std::min(x0_, p.x);
+      y0_ = std::min(y0_, p.y);
+      x1 = std::max(x1, p.x);
+      y1 = std::max(y1, p.y);
+    }
+    // About one pixel per cell, nx * ny <= 2 n cells even for long thin extents.
+    const double w = static_cast<double>(x1 - x0_) + 1, h = static_cast<double>(y1 - y0_) + 1;
+    const double n = static_cast<double>(hot.size());
+    const double nx = std::clamp(std::round(std::sqrt(n * w / h)), 1.0, std::min(n, w));
+    const double ny = std::clamp(std::round(n / nx), 1.0, std::min(n, h));
+    cx_ = static_cast<i64>(std::ceil(w / nx));
+    cy_ = static_cast<i64>(std::ceil(h / ny));
+    nx_ = static_cast<std::size_t>((x1 - x0_) / cx_ + 1);
+    ny_ = static_cast<std::size_t>((y1 - y0_) / cy_ + 1);
+    start_.assign(nx_ * ny_ + 1, 0);
+    for (Pt p : hot) ++start_[cell_of(p) + 1];
+    for (std::size_t c = 0; c < nx_ * ny_; ++c) start_[c + 1] += start_[c];
+    items_.resize(hot.size());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (Pt p : hot) items_[fill[cell_of(p)]++] = p;
+  }
+
+  /// Visits (a superset of) the hot pixels whose closed square meets segment ab, each once.
+  template <class F>
+  void along(Pt a, Pt b, F&& f) const {
+    const i64 xmin = std::min(a.x, b.x), xmax = std::max(a.x, b.x);
+    const i64 ymin = std::min(a.y, b.y), ymax = std::max(a.y, b.y);
+    if (xmax < x0_ || ymax < y0_) return;
+    const std::size_t c0 = column(std::max(xmin, x0_)), c1 = column(xmax);
+    const double dx = static_cast<double>(b.x - a.x), dy = static_cast<double>(b.y - a.y);
+    for (std::size_t i = c0; i <= c1 && i < nx_; ++i) {
+      const i64 xl = std::max(xmin, x0_ + static_cast<i64>(i) * cx_);
+      const i64 xr = std::min(xmax, x0_ + static_cast<i64>(i + 1) * cx_ - 1);
+      double ylo = static_cast<double>(ymin), yhi = static_cast<double>(ymax);
+      if (dx != 0) {
+        // y along the segment over [xl - 1/2, xr + 1/2], widened by a pixel: the rounding
+        // error of this double evaluation (below 2^-10 for 40-bit coordinates) cannot matter.
+        const double ya =
+            static_cast<double>(a.y) + (static_cast<double>(xl - a.x) - 0.5) * dy / dx;
+        const double yb =
+            static_cast<double>(a.y) + (static_cast<double>(xr - a.x) + 0.5) * dy / dx;
+        ylo = std::max(ylo, std::min(ya, yb) - 1.5);
+        yhi = std::min(yhi, std::max(ya, yb) + 1.5);
+      }
+      if (yhi < static_cast<double>(y0_) || ylo > static_cast<double>(ymax)) continue;
+      const i64 ya = std::max(y0_, static_cast<i64>(std::floor(ylo)));
+      const i64 yb = std::min(ymax, static_cast<i64>(std::ceil(yhi)));
+      if (ya > yb) continue;
+      const std::size_t r0 = static_cast<std::size_t>((ya - y0_) / cy_);
+      const std::size_t r1 = std::min(ny_ - 1, static_cast<std::size_t>((yb - y0_) / cy_));
+      for (std::size_t r = r0; r <= r1; ++r)
+        for (std::size_t k = start_[i * ny_ + r]; k < start_[i * ny_ + r + 1]; ++k) {
+          const Pt p = items_[k];
+          if (p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax) f(p);
+        }
+    }
+  }
+
+ private:
+  std::size_t column(i64 x) const { return static_cast<std::size_t>((x - x0_) / cx_); }
+  std::size_t cell_of(Pt p) const {
+    return column(p.x) * ny_ + static_cast<std::size_t>((p.y - y0_) / cy_);
+  }
+  i64 x0_, y0_, cx_ = 1, cy_ = 1;
+  std::size_t nx_ = 0, ny_ = 0;
+  std::vector<std::size_t> start_;
+  std::vector<Pt> items_;
+};
 
 bool inside_by_rule(int w, FillRule rule) {
   switch (rule) {
@@ -243,11 +312,12 @@ bool Engine::run() {
   hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
 
   // 3. Route every segment through the centres of the hot pixels it meets, in order.
+  const HotGrid grid(hot);
   std::vector<Frag> frags;
   std::vector<std::pair<Bound, Pt>> route;
   for (const Seg& s : segs) {
     route.clear();
-    for_hot_in_box(hot, s.xmin, s.xmax, s.ymin, s.ymax, [&](Pt h) {
+    grid.along(s.a, s.b, [&](Pt h) {
       Bound e;
       if (pixel_entry(s.a, s.b, h, e)) route.emplace_back(e, h);
     });
@@ -270,7 +340,7 @@ bool Engine::run() {
     std::vector<Pt> on;
     for (const Frag& f : frags) {
       on.clear();
-      for_hot_in_box(hot, f.u.x, f.v.x, std::min(f.u.y, f.v.y), std::max(f.u.y, f.v.y), [&](Pt h) {
+      grid.along(f.u, f.v, [&](Pt h) {
         if (h != f.u && h != f.v && orient(f.u, f.v, h) == 0) on.push_back(h);
       });
       if (on.empty()) {

@@ -43,7 +43,12 @@ template <class T>
 bool exact_ring_contains(const std::vector<locus::Vec2<T>>& r, const mpq_class& qx,
                          const mpq_class& qy) {
   bool in = false;
+  const double qlo = qy.get_d();
   for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+    // get_d() truncates towards zero, within one ulp: edges entirely beyond that skip exactly.
+    const double ylo = std::min(double(r[i].y), double(r[(i + 1) % n].y));
+    const double yhi = std::max(double(r[i].y), double(r[(i + 1) % n].y));
+    if (yhi < std::nextafter(qlo, -INFINITY) || ylo > std::nextafter(qlo, INFINITY)) continue;
     const mpq_class ax(double(r[i].x)), ay(double(r[i].y));
     const mpq_class bx(double(r[(i + 1) % n].x)), by(double(r[(i + 1) % n].y));
     if ((ay <= qy) != (by <= qy)) {
@@ -115,9 +120,19 @@ std::string polygon_validity(const std::vector<locus::PolygonWithHoles2<T>>& pol
       rings.push_back(&r);
     }
   }
-  for (std::size_t i = 0; i < edges.size(); ++i)
-    for (std::size_t j = i + 1; j < edges.size(); ++j) {
-      const Edge &e = edges[i], &f = edges[j];
+  // All pairs of edges whose bounding boxes overlap (sorted by their least x, then swept).
+  std::vector<std::size_t> by_x(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) by_x[i] = i;
+  const auto lo_x = [&](std::size_t i) { return std::min(edges[i].a.x, edges[i].b.x); };
+  std::sort(by_x.begin(), by_x.end(),
+            [&](std::size_t i, std::size_t j) { return lo_x(i) < lo_x(j); });
+  for (std::size_t ii = 0; ii < by_x.size(); ++ii) {
+    const Edge& e = edges[by_x[ii]];
+    const T hi_x = std::max(e.a.x, e.b.x);
+    const T lo_y = std::min(e.a.y, e.b.y), hi_y = std::max(e.a.y, e.b.y);
+    for (std::size_t jj = ii + 1; jj < by_x.size() && lo_x(by_x[jj]) <= hi_x; ++jj) {
+      const Edge& f = edges[by_x[jj]];
+      if (std::max(f.a.y, f.b.y) < lo_y || std::min(f.a.y, f.b.y) > hi_y) continue;
       bool may_share = true;
       if (e.ring == f.ring) {
         const std::size_t n = e.ring_size;
@@ -128,6 +143,7 @@ std::string polygon_validity(const std::vector<locus::PolygonWithHoles2<T>>& pol
                std::to_string(e.index) + " and ring " + std::to_string(f.ring) + " edge " +
                std::to_string(f.index);
     }
+  }
   // Nesting, on edge midpoints.
   // Bounding boxes of the outer rings reject most midpoints exactly: a segment with both
   // endpoints beyond one side of the box has its midpoint beyond it too.
