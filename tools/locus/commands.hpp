@@ -20,5 +20,6 @@ void register_sat(CLI::App& app);          // sat (cmd_sat.cpp)
 void register_construct(CLI::App& app);    // construct <kind> (cmd_construct.cpp)
 void register_surfacehit(CLI::App& app);   // surfacehit (cmd_surfacehit.cpp)
 void register_partition(CLI::App& app);    // partition (cmd_partition.cpp)
+void register_boolean(CLI::App& app);      // boolean (cmd_boolean.cpp)
 
 }  // namespace locus_cli

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   locus_cli::register_construct(app);
   locus_cli::register_surfacehit(app);
   locus_cli::register_partition(app);
+  locus_cli::register_boolean(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
