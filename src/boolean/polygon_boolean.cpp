@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 // Polygon booleans by snap rounding (include/locus/boolean/polygon_boolean.hpp,
-// docs/notes/boolean.md). Every coordinate is an integer of at most 40 bits (the grid of the
-// header), so orientations fit in 84 bits and a crossing's rounded pixel in 126: all decisions are
-// exact in 128-bit integers.
+// docs/notes/boolean.md). Decisions about the input segments (crossings, pixels of vertices and
+// crossings, segments meeting hot pixels) use core's exact predicates on the input coordinates
+// in pixel units; the rounded arrangement then lives on integer pixel centres of at most 40 bits,
+// so orientations fit in 84 bits and everything after is exact in 128-bit integers.
 
 #include <locus/boolean/polygon_boolean.hpp>
+#include <locus/core/crossing.hpp>
+#include <locus/core/exact_poly.hpp>
+#include <locus/core/predicates.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -31,60 +35,122 @@ bool operator<(Pt a, Pt b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 i128 cross(i128 ax, i128 ay, i128 bx, i128 by) { return ax * by - ay * bx; }
 i128 orient(Pt a, Pt b, Pt c) { return cross(b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y); }
 int sign(i128 v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
-/// floor(a / b) for b > 0.
-i128 floor_div(i128 a, i128 b) {
-  i128 q = a / b;
-  if (a % b != 0 && a < 0) --q;
-  return q;
-}
-
 enum class Role : std::uint8_t { raw, outer, hole };
+/// A ring in pixel units (the input scaled by 2^-ge, exactly).
 struct Ring {
-  std::vector<Pt> pts;
+  std::vector<Vec2d> pts;
   int operand;
   Role role;
 };
 
+/// The pixel of x: the k with k - 1/2 <= x < k + 1/2 (|x| < 2^52).
+i64 pixel_of(double x) {
+  i64 k = static_cast<i64>(std::nearbyint(x));
+  const double r = x - static_cast<double>(k);  // exact: x and k are within 1/2
+  if (r >= 0.5) ++k;
+  if (r < -0.5) --k;
+  return k;
+}
+Pt pixel_of(const Vec2d& p) { return {pixel_of(p.x), pixel_of(p.y)}; }
+
+/// The exact sign of a ring's signed area (core/exact_poly.hpp).
+int area_sign(const std::vector<Vec2d>& r) {
+  std::vector<ExactTerm> terms;
+  terms.reserve(2 * r.size());
+  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+    const Vec2d p = r[i], q = r[(i + 1) % n];
+    terms.push_back({1, 0, 2, {p.x, q.y}});
+    terms.push_back({-1, 0, 2, {p.y, q.x}});
+  }
+  return exact_sign_of_terms(terms);
+}
+
 struct Seg {
-  Pt a, b;  // directed as in its ring
+  Vec2d a, b;  // directed as in its ring, exact input (in pixel units)
   int operand;
-  i64 xmin, xmax, ymin, ymax;
+  Pt pa, pb;                   // their pixels
+  i64 xmin, xmax, ymin, ymax;  // pixel range
+  int sx, sy;                  // signs of b - a
 };
 
-/// A rational bound num / den (den > 0) on a segment parameter, open or closed.
-struct Bound {
-  i128 num, den;
+/// A bound on the parameter t of a + t (b - a): the constant 0 or 1, or where x (y) equals c.
+struct Param {
+  enum Kind : std::uint8_t { zero, one, x, y } kind;
+  double c;
   bool open;
 };
-int compare(const Bound& p, const Bound& q) { return sign(p.num * q.den - q.num * p.den); }
+int sign_of(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+/// Exact sign of p - q as parameters along s (orient2d for the mixed case).
+int compare(const Seg& s, const Param& p, const Param& q) {
+  const auto is_const = [](const Param& r) {
+    return r.kind == Param::zero || r.kind == Param::one;
+  };
+  if (is_const(p) && is_const(q)) return static_cast<int>(p.kind) - static_cast<int>(q.kind);
+  if (is_const(p)) return -compare(s, q, p);
+  const bool px = p.kind == Param::x;
+  const double a = px ? s.a.x : s.a.y, b = px ? s.b.x : s.b.y;
+  const int sd = px ? s.sx : s.sy;
+  if (q.kind == Param::zero) return sign_of(p.c - a) * sd;  // (c - a) / d
+  if (q.kind == Param::one) return sign_of(p.c - b) * sd;   // (c - a) / d - 1 = (c - b) / d
+  if (q.kind == p.kind) return sign_of(p.c - q.c) * sd;
+  // t_x(c) - t_y(c') = -orient2d(a, b, (c, c')) / (dx dy)
+  const Vec2d corner = px ? Vec2d{p.c, q.c} : Vec2d{q.c, p.c};
+  const int o = to_int(orient2d(s.a, s.b, corner));
+  return (px ? -o : o) * s.sx * s.sy;
+}
 
-/// The parameter interval of a -> b (doubled coordinates) inside the half-open pixel of h, as
-/// its lower bound; false when they are disjoint.
-bool pixel_entry(Pt a, Pt b, Pt h, Bound& entry) {
-  Bound lo{0, 1, false}, hi{1, 1, false};
-  const auto constrain = [&](i64 a2, i64 d2, i64 c) {
-    // 2c - 1 <= a2 + t d2 < 2c + 1
-    const i128 l = static_cast<i128>(2) * c - 1 - a2, r = static_cast<i128>(2) * c + 1 - a2;
-    if (d2 == 0) return l <= 0 && 0 < r;
-    if (d2 > 0) {
-      const Bound nl{l, d2, false}, nh{r, d2, true};
-      const int cl = compare(nl, lo), ch = compare(nh, hi);
-      if (cl > 0) lo = nl;
-      if (ch < 0 || (ch == 0 && nh.open)) hi = nh;
-    } else {
-      const Bound nh{-l, -static_cast<i128>(d2), false}, nl{-r, -static_cast<i128>(d2), true};
-      const int cl = compare(nl, lo), ch = compare(nh, hi);
-      if (cl > 0 || (cl == 0 && nl.open)) lo = nl;
-      if (ch < 0) hi = nh;
-    }
+/// Does segment s meet the half-open pixel [h - 1/2, h + 1/2)^2? Exact.
+bool pixel_meets(const Seg& s, Pt h) {
+  Param lo{Param::zero, 0, false}, hi{Param::one, 0, false};
+  const auto constrain = [&](Param::Kind kind, double a, int sd, i64 k) {
+    const double c0 = static_cast<double>(k) - 0.5, c1 = static_cast<double>(k) + 0.5;
+    if (sd == 0) return c0 <= a && a < c1;
+    // sd > 0: t_(c0) <= t < t_(c1); sd < 0: t_(c1) < t <= t_(c0).
+    const Param nl = sd > 0 ? Param{kind, c0, false} : Param{kind, c1, true};
+    const Param nh = sd > 0 ? Param{kind, c1, true} : Param{kind, c0, false};
+    const int cl = compare(s, nl, lo), ch = compare(s, nh, hi);
+    if (cl > 0 || (cl == 0 && nl.open)) lo = nl;
+    if (ch < 0 || (ch == 0 && nh.open)) hi = nh;
     return true;
   };
-  if (!constrain(2 * a.x, 2 * (b.x - a.x), h.x)) return false;
-  if (!constrain(2 * a.y, 2 * (b.y - a.y), h.y)) return false;
-  const int c = compare(lo, hi);
-  if (c > 0 || (c == 0 && (lo.open || hi.open))) return false;
-  entry = lo;
-  return true;
+  if (!constrain(Param::x, s.a.x, s.sx, h.x)) return false;
+  if (!constrain(Param::y, s.a.y, s.sy, h.y)) return false;
+  const int c = compare(s, lo, hi);
+  return c < 0 || (c == 0 && !lo.open && !hi.open);
+}
+
+/// The pixel of the proper crossing of s and t: a rounded estimate corrected by exact signs of
+/// the crossing against the pixel's boundary lines (core/crossing.hpp).
+Pt crossing_pixel(const Seg& s, const Seg& t) {
+  const double oa = turn2d_value(t.a, t.b, t.a, s.a), ob = turn2d_value(t.a, t.b, t.a, s.b);
+  const double u = oa / (oa - ob);
+  Pt k = pixel_of(Vec2d{s.a.x + u * (s.b.x - s.a.x), s.a.y + u * (s.b.y - s.a.y)});
+  // sign(c - X.x) from the vertical line x = c, sign(X.y - c) from the horizontal y = c.
+  const auto left_of = [&](double c) {
+    return to_int(side_of_crossing(s.a, s.b, t.a, t.b, Vec2d{c, 0}, Vec2d{c, 1}));
+  };
+  const auto above = [&](double c) {
+    return to_int(side_of_crossing(s.a, s.b, t.a, t.b, Vec2d{0, c}, Vec2d{1, c}));
+  };
+  for (int step = 0; step < 64; ++step) {
+    const double c = static_cast<double>(k.x);
+    if (left_of(c - 0.5) > 0)
+      --k.x;
+    else if (left_of(c + 0.5) <= 0)
+      ++k.x;
+    else
+      break;
+  }
+  for (int step = 0; step < 64; ++step) {
+    const double c = static_cast<double>(k.y);
+    if (above(c - 0.5) < 0)
+      --k.y;
+    else if (above(c + 0.5) >= 0)
+      ++k.y;
+    else
+      break;
+  }
+  return k;
 }
 
 /// An undirected fragment u < v with the winding change of each operand along u -> v.
@@ -139,14 +205,13 @@ class HotGrid {
     for (Pt p : hot) items_[fill[cell_of(p)]++] = p;
   }
 
-  /// Visits (a superset of) the hot pixels whose closed square meets segment ab, each once.
+  /// Visits (a superset of) the hot pixels in the pixel box [xmin, xmax] x [ymin, ymax] whose
+  /// square segment ab (pixel units) can meet, each once.
   template <class F>
-  void along(Pt a, Pt b, F&& f) const {
-    const i64 xmin = std::min(a.x, b.x), xmax = std::max(a.x, b.x);
-    const i64 ymin = std::min(a.y, b.y), ymax = std::max(a.y, b.y);
+  void along(const Vec2d& a, const Vec2d& b, i64 xmin, i64 xmax, i64 ymin, i64 ymax, F&& f) const {
     if (xmax < x0_ || ymax < y0_) return;
     const std::size_t c0 = column(std::max(xmin, x0_)), c1 = column(xmax);
-    const double dx = static_cast<double>(b.x - a.x), dy = static_cast<double>(b.y - a.y);
+    const double dx = b.x - a.x, dy = b.y - a.y;
     for (std::size_t i = c0; i <= c1 && i < nx_; ++i) {
       const i64 xl = std::max(xmin, x0_ + static_cast<i64>(i) * cx_);
       const i64 xr = std::min(xmax, x0_ + static_cast<i64>(i + 1) * cx_ - 1);
@@ -154,10 +219,8 @@ class HotGrid {
       if (dx != 0) {
         // y along the segment over [xl - 1/2, xr + 1/2], widened by a pixel: the rounding
         // error of this double evaluation (below 2^-10 for 40-bit coordinates) cannot matter.
-        const double ya =
-            static_cast<double>(a.y) + (static_cast<double>(xl - a.x) - 0.5) * dy / dx;
-        const double yb =
-            static_cast<double>(a.y) + (static_cast<double>(xr - a.x) + 0.5) * dy / dx;
+        const double ya = a.y + (static_cast<double>(xl) - 0.5 - a.x) * dy / dx;
+        const double yb = a.y + (static_cast<double>(xr) + 0.5 - a.x) * dy / dx;
         ylo = std::max(ylo, std::min(ya, yb) - 1.5);
         yhi = std::min(yhi, std::max(ya, yb) + 1.5);
       }
@@ -250,81 +313,78 @@ struct Engine {
 };
 
 bool Engine::run() {
-  // 1. Directed edges of every ring, orientations normalised by role.
+  // 1. Directed edges of every ring, orientations normalised by role (the exact sign of the
+  // ring's signed area).
   std::vector<Seg> segs;
   for (Ring& r : rings) {
-    std::vector<Pt> pts;
-    for (Pt p : r.pts)
+    std::vector<Vec2d> pts;
+    for (const Vec2d& p : r.pts)
       if (pts.empty() || pts.back() != p) pts.push_back(p);
     while (pts.size() > 1 && pts.back() == pts.front()) pts.pop_back();
     if (pts.size() < 2) continue;
     if (r.role != Role::raw) {
-      const int s = sign(twice_area(pts));
+      const int s = area_sign(pts);
       if (s == 0) continue;
       if ((r.role == Role::outer) != (s > 0)) std::reverse(pts.begin(), pts.end());
     }
     for (std::size_t i = 0, n = pts.size(); i < n; ++i) {
-      const Pt a = pts[i], b = pts[(i + 1) % n];
-      segs.push_back({a, b, r.operand, std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
-                      std::max(a.y, b.y)});
+      const Vec2d a = pts[i], b = pts[(i + 1) % n];
+      const Pt pa = pixel_of(a), pb = pixel_of(b);
+      segs.push_back({a, b, r.operand, pa, pb, std::min(pa.x, pb.x), std::max(pa.x, pb.x),
+                      std::min(pa.y, pb.y), std::max(pa.y, pb.y), sign_of(b.x - a.x),
+                      sign_of(b.y - a.y)});
     }
   }
   if (segs.empty()) return true;
 
-  // 2. Hot pixels: every vertex, and the pixel of every proper crossing (x-sorted sweep).
+  // 2. Hot pixels: every vertex's, and every proper crossing's (x-sorted sweep, exact).
   std::vector<Pt> hot;
   hot.reserve(2 * segs.size());
   for (const Seg& s : segs) {
-    hot.push_back(s.a);
-    hot.push_back(s.b);
+    hot.push_back(s.pa);
+    hot.push_back(s.pb);
   }
   std::vector<std::size_t> order(segs.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto lo_x = [&](std::size_t i) { return std::min(segs[i].a.x, segs[i].b.x); };
+  const auto hi_x = [&](std::size_t i) { return std::max(segs[i].a.x, segs[i].b.x); };
   std::sort(order.begin(), order.end(),
-            [&](std::size_t i, std::size_t j) { return segs[i].xmin < segs[j].xmin; });
+            [&](std::size_t i, std::size_t j) { return lo_x(i) < lo_x(j); });
   std::vector<std::size_t> active;
   for (std::size_t i : order) {
     const Seg& s = segs[i];
+    const double sy0 = std::min(s.a.y, s.b.y), sy1 = std::max(s.a.y, s.b.y);
     std::size_t keep = 0;
     for (std::size_t j : active)
-      if (segs[j].xmax >= s.xmin) active[keep++] = j;
+      if (hi_x(j) >= lo_x(i)) active[keep++] = j;
     active.resize(keep);
     for (std::size_t j : active) {
       const Seg& t = segs[j];
-      if (t.ymax < s.ymin || s.ymax < t.ymin) continue;
-      const i128 oc = orient(s.a, s.b, t.a), od = orient(s.a, s.b, t.b);
-      if (oc == 0 || od == 0 || (oc > 0) == (od > 0)) continue;  // apart, touching or collinear
-      i128 oa = orient(t.a, t.b, s.a), ob = orient(t.a, t.b, s.b);
-      if (oa == 0 || ob == 0 || (oa > 0) == (ob > 0)) continue;
-      // s.a + t (s.b - s.a), t = oa / (oa - ob), rounded half up to its pixel.
-      i128 den = oa - ob;
-      if (den < 0) {
-        den = -den;
-        oa = -oa;
-      }
-      const i128 dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-      hot.push_back({s.a.x + static_cast<i64>(floor_div(2 * oa * dx + den, 2 * den)),
-                     s.a.y + static_cast<i64>(floor_div(2 * oa * dy + den, 2 * den))});
+      if (std::max(t.a.y, t.b.y) < sy0 || sy1 < std::min(t.a.y, t.b.y)) continue;
+      const int oc = to_int(orient2d(s.a, s.b, t.a)), od = to_int(orient2d(s.a, s.b, t.b));
+      if (oc * od >= 0) continue;  // apart, touching at an endpoint (hot already) or collinear
+      const int oa = to_int(orient2d(t.a, t.b, s.a)), ob = to_int(orient2d(t.a, t.b, s.b));
+      if (oa * ob >= 0) continue;
+      hot.push_back(crossing_pixel(s, t));
     }
     active.push_back(i);
   }
   std::sort(hot.begin(), hot.end());
   hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
 
-  // 3. Route every segment through the centres of the hot pixels it meets, in order.
+  // 3. Route every segment through the centres of the hot pixels it meets (exact tests on the
+  // input segment), in order along it: the pixels a segment visits are monotone in x and in y,
+  // so sx * x + sy * y increases strictly along it.
   const HotGrid grid(hot);
   std::vector<Frag> frags;
-  std::vector<std::pair<Bound, Pt>> route;
+  std::vector<std::pair<i64, Pt>> route;
   for (const Seg& s : segs) {
     route.clear();
-    grid.along(s.a, s.b, [&](Pt h) {
-      Bound e;
-      if (pixel_entry(s.a, s.b, h, e)) route.emplace_back(e, h);
+    grid.along(s.a, s.b, s.xmin, s.xmax, s.ymin, s.ymax, [&](Pt h) {
+      if (pixel_meets(s, h)) route.emplace_back(s.sx * h.x + s.sy * h.y, h);
     });
-    std::sort(route.begin(), route.end(), [](const auto& p, const auto& q) {
-      const int c = compare(p.first, q.first);
-      return c < 0 || (c == 0 && !p.first.open && q.first.open);
-    });
+    std::sort(route.begin(), route.end(),
+              [](const auto& p, const auto& q) { return p.first < q.first; });
     for (std::size_t k = 0; k + 1 < route.size(); ++k) {
       const Pt p = route[k].second, q = route[k + 1].second;
       if (p == q) continue;
@@ -340,7 +400,9 @@ bool Engine::run() {
     std::vector<Pt> on;
     for (const Frag& f : frags) {
       on.clear();
-      grid.along(f.u, f.v, [&](Pt h) {
+      const Vec2d u{static_cast<double>(f.u.x), static_cast<double>(f.u.y)};
+      const Vec2d v{static_cast<double>(f.v.x), static_cast<double>(f.v.y)};
+      grid.along(u, v, f.u.x, f.v.x, std::min(f.u.y, f.v.y), std::max(f.u.y, f.v.y), [&](Pt h) {
         if (h != f.u && h != f.v && orient(f.u, f.v, h) == 0) on.push_back(h);
       });
       if (on.empty()) {
@@ -625,10 +687,12 @@ BooleanResult<T> run_boolean(BooleanOp op, FillRule rule0, FillRule rule1,
   engine.rule[1] = rule1;
   for (std::size_t k = 0; k < rings.size(); ++k) {
     Ring r{{}, operand_of[k], roles[k]};
-    for (const auto& p : rings[k].vertices)
-      r.pts.push_back(
-          {static_cast<i64>(std::nearbyint(std::ldexp(static_cast<double>(p.x), -ge))),
-           static_cast<i64>(std::nearbyint(std::ldexp(static_cast<double>(p.y), -ge)))});
+    // Pixel units (an exact power-of-two scaling), rounded to multiples of 2^-60 of a pixel so
+    // that the exact predicates stay in range (products of four coordinates above 2^-969).
+    const auto unit = [&](T v) {
+      return std::ldexp(std::nearbyint(std::ldexp(static_cast<double>(v), 60 - ge)), -60);
+    };
+    for (const auto& p : rings[k].vertices) r.pts.push_back({unit(p.x), unit(p.y)});
     engine.rings.push_back(std::move(r));
   }
   if (!engine.run()) {

@@ -9,14 +9,16 @@
 // applies FillRule::even_odd or non_zero to self-intersecting rings as given.
 // Rings are closed implicitly (a repeated closing vertex is dropped); rings with fewer than 3
 // distinct vertices or zero area contribute nothing. An empty operand is the empty set (status ok).
-// Rounding rule (snap rounding, Hobby / Guibas-Marimont): all coordinates live on the grid
-// g = 2^(E - grid_bits), E the least integer with every |coordinate| < 2^E (grid_bits default 40
-// for double, 24 for float so every output vertex is exactly a float; at most 40). Input vertices
-// are rounded to the nearest grid point (exact when they already lie on it, e.g. integer input
-// below 2^40); then every decision (which edges cross, the pixel holding a crossing, which
-// segments pass through a hot pixel, their order, windings, angular order, nesting) is exact
-// integer arithmetic. Each crossing's pixel is hot and every segment through a hot pixel is
-// routed through its centre: output vertices move at most g/sqrt(2) from the exact arrangement.
+// Rounding rule (snap rounding, Hobby / Guibas-Marimont): pixels are the squares of side
+// g = 2^(E - grid_bits) centred on the grid points, E the least integer with every |coordinate|
+// < 2^E (grid_bits default 40 for double, 24 for float so every output vertex is exactly a float;
+// at most 40). Decisions are exact on the input coordinates (core orient2d and crossing
+// predicates): which edges cross, the pixel holding each crossing and each vertex, which input
+// segments meet a hot pixel and their order. Every vertex's and crossing's pixel is hot and each
+// segment becomes the path through the centres of the hot pixels it meets; the rest (windings,
+// angular order, nesting) is exact integer arithmetic on those centres. Output vertices are grid
+// points within g/sqrt(2) of the exact arrangement (input vertices included). Coordinates below
+// 2^-100 of the largest are first rounded to that resolution (keeps the predicates in range).
 // Output is always valid: simple rings of >= 3 vertices, outer rings counter-clockwise, holes
 // clockwise inside their outer ring, rings meet at most at shared vertices (touching vertices
 // split rings; collinear vertices of degree 2 are removed), member interiors disjoint.
