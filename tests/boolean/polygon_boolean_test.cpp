@@ -336,7 +336,7 @@ TYPED_TEST(PolygonBooleanTest, GridRectanglesExact) {
         pts.push_back({T(i) + s, T(j) - s});
       }
     }
-  for (int trial = 0; trial < 40; ++trial) {
+  for (int trial = 0; trial < 30; ++trial) {
     SCOPED_TRACE("trial " + std::to_string(trial));
     const MultiPolygon2<T> a = random_multi(), b = random_multi();
     const SignedRings<T> in_a(a), in_b(b);
