@@ -11,6 +11,7 @@
 #include <locus/core/predicates.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -494,6 +495,38 @@ bool Engine::run() {
     const int w = frags[h / 2].w[k];
     return (h & 1) ? -w : w;
   };
+  // Horizontal strips of edges (each edge in every strip its y-range meets), so that the
+  // ray from a component's leftmost vertex visits only the edges at its height.
+  i64 strip_y0 = verts[0].y, strip_y1 = verts[0].y;
+  for (const Pt& v : verts) {
+    strip_y0 = std::min(strip_y0, v.y);
+    strip_y1 = std::max(strip_y1, v.y);
+  }
+  i64 strip_h = 1;
+  std::vector<std::size_t> strip_start, strip_edges;
+  for (std::size_t nstrips = std::max<std::size_t>(1, frags.size() / 2);; nstrips /= 4) {
+    const i64 span = strip_y1 - strip_y0 + 1, n = static_cast<i64>(nstrips);
+    strip_h = std::max<i64>(1, (span + n - 1) / n);
+    const std::size_t count = static_cast<std::size_t>((strip_y1 - strip_y0) / strip_h + 1);
+    const auto strip_of = [&](i64 y) { return static_cast<std::size_t>((y - strip_y0) / strip_h); };
+    std::size_t entries = 0;
+    for (const Frag& f : frags)
+      entries += strip_of(std::max(f.u.y, f.v.y)) - strip_of(std::min(f.u.y, f.v.y)) + 1;
+    if (entries > 16 * frags.size() + 64 && nstrips > 1) continue;  // long edges: coarser
+    strip_start.assign(count + 1, 0);
+    for (const Frag& f : frags)
+      for (std::size_t k = strip_of(std::min(f.u.y, f.v.y)); k <= strip_of(std::max(f.u.y, f.v.y));
+           ++k)
+        ++strip_start[k + 1];
+    for (std::size_t k = 0; k < count; ++k) strip_start[k + 1] += strip_start[k];
+    strip_edges.resize(entries);
+    std::vector<std::size_t> fill(strip_start.begin(), strip_start.end() - 1);
+    for (std::size_t e = 0; e < frags.size(); ++e)
+      for (std::size_t k = strip_of(std::min(frags[e].u.y, frags[e].v.y));
+           k <= strip_of(std::max(frags[e].u.y, frags[e].v.y)); ++k)
+        strip_edges[fill[k]++] = e;
+    break;
+  }
   std::size_t ncomp = 0;
   for (std::size_t v0 = 0; v0 < nv; ++v0) {
     if (comp[v0] != SIZE_MAX) continue;
@@ -520,9 +553,10 @@ bool Engine::run() {
     }
     const Pt p = verts[v0];
     int w0[2] = {0, 0};
-    for (std::size_t e = 0; e < frags.size(); ++e) {
-      const std::size_t cu = comp[origin[2 * e]];
-      if (cu == c) continue;
+    const std::size_t strip = static_cast<std::size_t>((p.y - strip_y0) / strip_h);
+    for (std::size_t k = strip_start[strip]; k < strip_start[strip + 1]; ++k) {
+      const std::size_t e = strip_edges[k];
+      if (comp[origin[2 * e]] == c) continue;
       const Pt a = frags[e].u, b = frags[e].v;
       int s = 0;
       if (a.y <= p.y && p.y < b.y && orient(a, b, p) > 0) s = 1;
@@ -626,7 +660,14 @@ bool Engine::run() {
 
   // 7. Each hole goes to the smallest outer ring containing its first edge's midpoint.
   std::vector<i128> area(outers.size());
-  for (std::size_t i = 0; i < outers.size(); ++i) area[i] = twice_area(outers[i]);
+  std::vector<std::array<i64, 4>> box(outers.size());
+  for (std::size_t i = 0; i < outers.size(); ++i) {
+    area[i] = twice_area(outers[i]);
+    box[i] = {2 * outers[i][0].x, 2 * outers[i][0].y, 2 * outers[i][0].x, 2 * outers[i][0].y};
+    for (const Pt& q : outers[i])
+      box[i] = {std::min(box[i][0], 2 * q.x), std::min(box[i][1], 2 * q.y),
+                std::max(box[i][2], 2 * q.x), std::max(box[i][3], 2 * q.y)};
+  }
   result.resize(outers.size());
   for (std::size_t i = 0; i < outers.size(); ++i) result[i].outer = std::move(outers[i]);
   for (auto& hole : holes) {
@@ -634,6 +675,8 @@ bool Engine::run() {
     std::size_t best = SIZE_MAX;
     for (std::size_t i = 0; i < result.size(); ++i) {
       if (best != SIZE_MAX && area[i] >= area[best]) continue;
+      const auto& b = box[i];  // doubled coordinates, like m
+      if (m.x < b[0] || m.x > b[2] || m.y < b[1] || m.y > b[3]) continue;
       if (ring_contains_doubled(result[i].outer, m)) best = i;
     }
     if (best == SIZE_MAX) {
