@@ -618,6 +618,8 @@ bool Engine::run() {
       error = "internal: a result ring degenerated";
       return;
     }
+    // Canonical start: the lowest-leftmost vertex (x, then y) first.
+    std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end()), ring.end());
     (twice_area(ring) > 0 ? outers : holes).push_back(std::move(ring));
   };
   for (std::size_t h0 = 0; h0 < nh; ++h0) {
@@ -658,7 +660,13 @@ bool Engine::run() {
   }
   if (!error.empty()) return false;
 
-  // 7. Each hole goes to the smallest outer ring containing its first edge's midpoint.
+  // 7. Each hole goes to the smallest outer ring containing its first edge's midpoint. Rings
+  // are listed by their first vertex, so the output does not depend on edge numbering.
+  const auto by_first = [](const std::vector<Pt>& p, const std::vector<Pt>& q) {
+    return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]);
+  };
+  std::sort(outers.begin(), outers.end(), by_first);
+  std::sort(holes.begin(), holes.end(), by_first);
   std::vector<i128> area(outers.size());
   std::vector<std::array<i64, 4>> box(outers.size());
   for (std::size_t i = 0; i < outers.size(); ++i) {

@@ -495,6 +495,39 @@ TYPED_TEST(PolygonBooleanTest, PowerOfTwoScalingScalesTheOutput) {
   }
 }
 
+/// Symmetric operations do not depend on the operands' order, and polygon operands not on
+/// their rings' orientation or starting vertex: the outputs are identical, vertex for vertex.
+TYPED_TEST(PolygonBooleanTest, OperandOrderAndRingOrientationDoNotMatter) {
+  using T = TypeParam;
+  Rng rng(locus_test::test_seed() + 6);
+  SCOPED_TRACE(rng.trace());
+  const auto same = [](const MultiPolygon2<T>& p, const MultiPolygon2<T>& q) {
+    if (p.size() != q.size()) return false;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p[i].outer.vertices != q[i].outer.vertices || p[i].holes.size() != q[i].holes.size())
+        return false;
+      for (std::size_t k = 0; k < p[i].holes.size(); ++k)
+        if (p[i].holes[k].vertices != q[i].holes[k].vertices) return false;
+    }
+    return true;
+  };
+  for (int trial = 0; trial < 10; ++trial) {
+    const Polygon2<T> a = random_star<T>(rng, {0, 0}, 0.3, 1.0, 10, true);
+    const Polygon2<T> b = random_star<T>(rng, {0.4, -0.2}, 0.3, 1.0, 10, true);
+    Polygon2<T> b2 = b;
+    std::reverse(b2.vertices.begin(), b2.vertices.end());
+    std::rotate(b2.vertices.begin(), b2.vertices.begin() + 3, b2.vertices.end());
+    for (BooleanOp op :
+         {BooleanOp::intersection, BooleanOp::union_, BooleanOp::symmetric_difference}) {
+      const auto ab = locus::boolean_op(op, locus::to_multipolygon(a), locus::to_multipolygon(b));
+      const auto ba = locus::boolean_op(op, locus::to_multipolygon(b2), locus::to_multipolygon(a));
+      EXPECT_TRUE(same(ab.polygons, ba.polygons)) << "trial " << trial << " op " << int(op);
+    }
+    const auto d1 = locus::boolean_difference(a, b), d2 = locus::boolean_difference(a, b2);
+    EXPECT_TRUE(same(d1.polygons, d2.polygons)) << "trial " << trial;
+  }
+}
+
 /// The checker itself rejects each kind of invalid output.
 TYPED_TEST(PolygonBooleanTest, ValidityCheckerRejectsInvalidOutput) {
   using T = TypeParam;
