@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <vector>
 
 namespace {
@@ -457,6 +458,13 @@ TYPED_TEST(PolygonBooleanTest, BadInput) {
   EXPECT_EQ(b.polygons.size(), 2u);
   EXPECT_EQ(locus_test::polygon_validity(b.polygons), "");
   EXPECT_EQ(locus_test::exact_area(b.polygons), 2);
+  // Vectors of rings need no template argument; spans work too.
+  const std::vector<Polygon2<T>> none;
+  EXPECT_EQ(locus::boolean_op(BooleanOp::union_, bowtie, none).polygons.size(), 2u);
+  EXPECT_EQ(locus::boolean_op(BooleanOp::union_, std::span<const Polygon2<T>>(bowtie),
+                              std::span<const Polygon2<T>>(none))
+                .polygons.size(),
+            2u);
   // grid_bits out of range.
   EXPECT_EQ(locus::boolean_union(a, a, 41).status, locus::Status::invalid_input);
   EXPECT_EQ(locus::boolean_union(a, a, -1).status, locus::Status::invalid_input);

@@ -68,6 +68,16 @@ template <Real T>
                                           std::span<const Polygon2<T>> clip,
                                           const BooleanOptions& options = {});
 
+/// The same for vectors of rings (no template argument needed).
+template <Real T>
+[[nodiscard]] inline BooleanResult<T> boolean_op(BooleanOp op,
+                                                 const std::vector<Polygon2<T>>& subject,
+                                                 const std::vector<Polygon2<T>>& clip,
+                                                 const BooleanOptions& options = {}) {
+  return boolean_op(op, std::span<const Polygon2<T>>(subject), std::span<const Polygon2<T>>(clip),
+                    options);
+}
+
 /// op on two multipolygons (orientation normalised, positive winding inside; see header).
 template <Real T>
 [[nodiscard]] BooleanResult<T> boolean_op(BooleanOp op, const MultiPolygon2<T>& a,
