@@ -96,26 +96,32 @@ template <Real T>
   return p;
 }
 
+/// Polygon2, PolygonWithHoles2 or MultiPolygon2: what the one-call functions accept.
+template <class A>
+concept BooleanOperand = requires(const A& a) {
+  to_multipolygon(a);
+};
+
 /// a ∩ b, a ∪ b, a \ b, a xor b for any mix of Polygon2, PolygonWithHoles2, MultiPolygon2.
-template <class A, class B>
+template <BooleanOperand A, BooleanOperand B>
 [[nodiscard]] inline auto boolean_intersection(const A& a, const B& b, int grid_bits = 0) {
   return boolean_op(BooleanOp::intersection, to_multipolygon(a), to_multipolygon(b), grid_bits);
 }
-template <class A, class B>
+template <BooleanOperand A, BooleanOperand B>
 [[nodiscard]] inline auto boolean_union(const A& a, const B& b, int grid_bits = 0) {
   return boolean_op(BooleanOp::union_, to_multipolygon(a), to_multipolygon(b), grid_bits);
 }
-template <class A, class B>
+template <BooleanOperand A, BooleanOperand B>
 [[nodiscard]] inline auto boolean_difference(const A& a, const B& b, int grid_bits = 0) {
   return boolean_op(BooleanOp::difference, to_multipolygon(a), to_multipolygon(b), grid_bits);
 }
-template <class A, class B>
+template <BooleanOperand A, BooleanOperand B>
 [[nodiscard]] inline auto boolean_xor(const A& a, const B& b, int grid_bits = 0) {
   return boolean_op(BooleanOp::symmetric_difference, to_multipolygon(a), to_multipolygon(b),
                     grid_bits);
 }
 /// The complement of a within box (box minus a): the bounded stand-in for the unbounded negation.
-template <class A, Real T>
+template <BooleanOperand A, Real T>
 [[nodiscard]] inline BooleanResult<T> boolean_negation(const A& a, const AlignedBox2<T>& box,
                                                        int grid_bits = 0) {
   const Polygon2<T> frame{{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}};
