@@ -751,18 +751,33 @@ BooleanResult<T> run_boolean(BooleanOp op, FillRule rule0, FillRule rule1,
     out.message = engine.error;
     return out;
   }
+  // A coordinate within half a pixel of the largest finite value can snap past it.
+  bool overflow = false;
+  const auto to_t = [&](i64 k) {
+    const double v = std::ldexp(static_cast<double>(k), ge);
+    if (!(std::abs(v) <= static_cast<double>(std::numeric_limits<T>::max()))) {
+      overflow = true;
+      return T(0);
+    }
+    return static_cast<T>(v);
+  };
   const auto convert = [&](const std::vector<Pt>& r) {
     Polygon2<T> p;
     p.vertices.reserve(r.size());
-    for (Pt q : r)
-      p.vertices.push_back({static_cast<T>(std::ldexp(static_cast<double>(q.x), ge)),
-                            static_cast<T>(std::ldexp(static_cast<double>(q.y), ge))});
+    for (Pt q : r) p.vertices.push_back({to_t(q.x), to_t(q.y)});
     return p;
   };
   for (const auto& poly : engine.result) {
     PolygonWithHoles2<T> p{convert(poly.outer), {}};
     for (const auto& h : poly.holes) p.holes.push_back(convert(h));
     out.polygons.push_back(std::move(p));
+  }
+  if (overflow) {
+    out.status = Status::invalid_input;
+    out.message =
+        "a vertex snapped beyond the largest finite value (coordinates within a pixel "
+        "of it)";
+    out.polygons.clear();
   }
   return out;
 }

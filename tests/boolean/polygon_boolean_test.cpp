@@ -16,6 +16,7 @@
 #include <limits>
 #include <numbers>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -465,6 +466,21 @@ TYPED_TEST(PolygonBooleanTest, BadInput) {
                               std::span<const Polygon2<T>>(none))
                 .polygons.size(),
             2u);
+  // Near the largest finite value a vertex can snap past it: reported, never an infinity.
+  const T top = std::numeric_limits<T>::max();
+  const Polygon2<T> huge{{{0, 0}, {top, 0}, {top, top}}};
+  const auto h = locus::boolean_union(huge, MultiPolygon2<T>{});
+  if constexpr (std::is_same_v<T, double>) {  // 40-bit pixels: DBL_MAX rounds up to 2^1024
+    EXPECT_EQ(h.status, locus::Status::invalid_input);
+    EXPECT_TRUE(h.polygons.empty());
+  } else {  // 24-bit pixels are the float grid itself at the top: nothing moves
+    EXPECT_EQ(h.status, locus::Status::ok);
+    EXPECT_EQ(locus_test::polygon_validity(h.polygons), "");
+  }
+  const Polygon2<T> large{{{0, 0}, {top / 2, 0}, {top / 2, top / 2}}};
+  const auto l = locus::boolean_union(large, MultiPolygon2<T>{});
+  EXPECT_EQ(l.status, locus::Status::ok);
+  EXPECT_EQ(locus_test::polygon_validity(l.polygons), "");
   // grid_bits out of range.
   EXPECT_EQ(locus::boolean_union(a, a, 41).status, locus::Status::invalid_input);
   EXPECT_EQ(locus::boolean_union(a, a, -1).status, locus::Status::invalid_input);

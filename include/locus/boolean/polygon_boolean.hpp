@@ -23,10 +23,11 @@
 // clockwise inside their outer ring, rings meet at most at shared vertices (touching vertices
 // split rings; collinear vertices of degree 2 are removed), member interiors disjoint.
 // Status: ok; non_finite_input (NaN/Inf anywhere: no output); invalid_input (grid_bits outside
-// 1..40). Negation of a bounded set is unbounded: boolean_negation(a, box) is box minus a.
-// Cost: O((n + k) log n + p) for n edges, k crossings and p candidate pairs (x-sorted sweep,
-// uniform grid of hot pixels, horizontal strips of edges); worst case O(h r) to place h holes.
-// Details: docs/notes/boolean.md.
+// 1..40, or a vertex within a pixel of the largest finite value snapped past it: no output).
+// Negation of a bounded set is unbounded: boolean_negation(a, box) is box minus a. Cost: O((n + k)
+// log n + p) for n edges, k crossings and p candidate pairs (x-sorted sweep, uniform grid of hot
+// pixels, horizontal strips of edges); worst case O(h r) to place h holes. Details:
+// docs/notes/boolean.md.
 
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
