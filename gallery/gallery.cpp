@@ -17,16 +17,27 @@ namespace locus_gallery {
 
 std::vector<Figure> all_figures() {
   std::vector<Figure> all;
-  for (auto part : {chapter2_linear_figures(),        chapter3_vector_figures(),
-                    chapter3_affine_figures(),        chapter4_transform_figures(),
-                    chapter4_projection_figures(),    chapter5_primitive_figures(),
-                    chapter5_curve_figures(),         chapter6_distance_figures(),
-                    chapter6_gjk_figures(),           chapter7_intersection_figures(),
-                    chapter8_construction_figures(),  chapter9_mesh_figures(),
-                    chapter9_surface_figures(),       chapter10_distance_figures(),
-                    chapter11_intersection_figures(), chapter12_misc_figures(),
-                    chapter13_bsp_figures(),          chapter13_figures(),
-                    chapter13_polytri_figures(),      appendix_a_figures()})
+  for (auto part : {chapter2_linear_figures(),
+                    chapter3_vector_figures(),
+                    chapter3_affine_figures(),
+                    chapter4_transform_figures(),
+                    chapter4_projection_figures(),
+                    chapter5_primitive_figures(),
+                    chapter5_curve_figures(),
+                    chapter6_distance_figures(),
+                    chapter6_gjk_figures(),
+                    chapter7_intersection_figures(),
+                    chapter8_construction_figures(),
+                    chapter9_mesh_figures(),
+                    chapter9_surface_figures(),
+                    chapter10_distance_figures(),
+                    chapter11_intersection_figures(),
+                    chapter12_misc_figures(),
+                    chapter13_bsp_figures(),
+                    chapter13_figures(),
+                    chapter13_boolean_figures(),
+                    chapter13_polytri_figures(),
+                    appendix_a_figures()})
     all.insert(all.end(), part.begin(), part.end());
   // Tables of one chapter may interleave (13.9's figures sit inside chapter13_figures' range).
   std::stable_sort(all.begin(), all.end(), [](const Figure& a, const Figure& b) {

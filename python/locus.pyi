@@ -412,6 +412,18 @@ def bsp_partition(
 def bsp_boolean(
     op: str, a: _Points | list[_Points], b: _Points | list[_Points]
 ) -> BspBoolean: ...
+# Polygon booleans (boolean/polygon_boolean.hpp)
+class BooleanResult(Result):
+    polygons: list[list[_Floats]]
+    grid: float
+
+def boolean(
+    op: str,
+    a: _Points | list[_Points],
+    b: _Points | list[_Points],
+    fill_rule: str = "even_odd",
+    grid_bits: int = 0,
+) -> BooleanResult: ...
 def bspline_surface_insert_knot(
     control: npt.ArrayLike,
     knots_u: npt.ArrayLike,

@@ -4,6 +4,7 @@
 // <locus/distance.hpp>, ...). Convenient for applications; compile time is lower with the area
 // or single headers. Nothing inside the library includes it (cmake/check_layering.cmake).
 
+#include <locus/boolean.hpp>
 #include <locus/bounding.hpp>
 #include <locus/bsp.hpp>
 #include <locus/config.hpp>

@@ -14,6 +14,7 @@ void bind_sat3(py::module_& m);                // python/src/sat3.cpp
 void bind_construction(py::module_& m);        // construction.cpp
 void bind_partition(py::module_& m);           // partition.cpp
 void bind_curve_intersection(py::module_& m);  // curve_intersection.cpp
+void bind_boolean(py::module_& m);             // boolean.cpp
 
 namespace {
 
@@ -107,6 +108,7 @@ for _name, _doc in [
     ("BspBoolean", "bsp_boolean: edges (k, 2, 2), operand, loops, closed, segments, points."),
     ("CurveHits", "line_curve_hits / curve_intersections: kind, points (k, 2), param_a, "
                   "param_b, multiplicity."),
+    ("BooleanResult", "boolean: polygons (lists of rings: outer CCW, holes CW), grid."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make
@@ -259,4 +261,5 @@ PYBIND11_MODULE(locus, m) {
   bind_sat3(m);
   bind_partition(m);
   bind_curve_intersection(m);
+  bind_boolean(m);
 }

@@ -23,5 +23,6 @@ void register_surfacehit(CLI::App& app);   // surfacehit (cmd_surfacehit.cpp)
 void register_partition(CLI::App& app);    // partition (cmd_partition.cpp)
 void register_bsp(CLI::App& app);          // bsp classify|boolean (cmd_bsp.cpp)
 void register_curvehit(CLI::App& app);     // curvehit (cmd_curvehit.cpp)
+void register_boolean(CLI::App& app);      // boolean (cmd_boolean.cpp)
 
 }  // namespace locus_cli

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   locus_cli::register_partition(app);
   locus_cli::register_bsp(app);
   locus_cli::register_curvehit(app);
+  locus_cli::register_boolean(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
