@@ -351,6 +351,13 @@ def bsp_classify(
 def bsp_partition(
     polygon_rings: _Points | list[_Points], segments: npt.ArrayLike
 ) -> BspPartition: ...
+class MeshBooleanResult(Result):
+    vertices: _Floats
+    triangles: _Indices
+
+def mesh_boolean(
+    op: str, a: tuple[_Points, npt.ArrayLike], b: tuple[_Points, npt.ArrayLike]
+) -> MeshBooleanResult: ...
 def bspline_surface_insert_knot(
     control: npt.ArrayLike,
     knots_u: npt.ArrayLike,

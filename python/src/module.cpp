@@ -12,6 +12,7 @@ namespace locus::python {
 void bind_sat2(py::module_& m);          // python/src/sat2.cpp
 void bind_construction(py::module_& m);  // construction.cpp
 void bind_partition(py::module_& m);     // partition.cpp
+void bind_bsp3(py::module_& m);          // bsp3.cpp
 
 namespace {
 
@@ -98,6 +99,7 @@ for _name, _doc in [
                     "multiplicity, on_surface."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
     ("BspPartition", "bsp_partition: pieces (k, 2, 2), location, segment."),
+    ("MeshBooleanResult", "mesh_boolean: vertices (m, 3), triangles (t, 3)."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make
@@ -247,4 +249,5 @@ PYBIND11_MODULE(locus, m) {
   bind_misc3(m);
   bind_sat2(m);
   bind_partition(m);
+  bind_bsp3(m);
 }
