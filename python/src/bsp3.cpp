@@ -18,8 +18,7 @@ struct MeshIn {
 };
 
 MeshIn read_mesh_pair(py::handle pair, const char* fn, const char* name) {
-  if (!py::isinstance<py::sequence>(pair) || py::isinstance<py::str>(pair) ||
-      py::len(pair) != 2)
+  if (!py::isinstance<py::sequence>(pair) || py::isinstance<py::str>(pair) || py::len(pair) != 2)
     fail(fn, std::string(name) + " must be a pair (vertices (n, 3), triangles (k, 3))");
   const auto seq = py::reinterpret_borrow<py::sequence>(pair);
   MeshIn m;

@@ -31,11 +31,10 @@ template <Real T>
 [[nodiscard]] int projection_axis(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c,
                                   Sign& sign) noexcept {
   // Prefer the dominant normal component (best conditioned), but decide exactly.
-  const Vec3<double> n = cross(vec_cast<double>(b) - vec_cast<double>(a),
-                               vec_cast<double>(c) - vec_cast<double>(a));
+  const Vec3<double> n =
+      cross(vec_cast<double>(b) - vec_cast<double>(a), vec_cast<double>(c) - vec_cast<double>(a));
   int order[3] = {0, 1, 2};
-  std::sort(order, order + 3,
-            [&n](int i, int j) { return std::abs(n[i]) > std::abs(n[j]); });
+  std::sort(order, order + 3, [&n](int i, int j) { return std::abs(n[i]) > std::abs(n[j]); });
   for (const int k : order) {
     sign = orient2d(drop_axis(a, k), drop_axis(b, k), drop_axis(c, k));
     if (sign != Sign::zero) return k;
@@ -54,10 +53,8 @@ struct PlaneRef {
   int proj;         // projection axis (projection_axis)
   Sign proj_sign;
 
-  PlaneRef(const Vec3<T>& a_, const Vec3<T>& b_, const Vec3<T>& c_) noexcept
-      : a(a_), b(b_), c(c_) {
-    n = cross(vec_cast<double>(b) - vec_cast<double>(a),
-              vec_cast<double>(c) - vec_cast<double>(a));
+  PlaneRef(const Vec3<T>& a_, const Vec3<T>& b_, const Vec3<T>& c_) noexcept : a(a_), b(b_), c(c_) {
+    n = cross(vec_cast<double>(b) - vec_cast<double>(a), vec_cast<double>(c) - vec_cast<double>(a));
     offset = dot_accurate(n, vec_cast<double>(a));
     axis_normal = -1;
     for (int k = 0; k < 3; ++k)
@@ -113,7 +110,8 @@ template <Real T>
 template <Real T>
 [[nodiscard]] Sign fan_orientation(std::span<const Vec3<T>> poly, int k) noexcept {
   for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
-    const Sign s = orient2d(drop_axis(poly[0], k), drop_axis(poly[i], k), drop_axis(poly[i + 1], k));
+    const Sign s =
+        orient2d(drop_axis(poly[0], k), drop_axis(poly[i], k), drop_axis(poly[i + 1], k));
     if (s != Sign::zero) return s;
   }
   return Sign::zero;
@@ -286,8 +284,8 @@ Status Bsp3<T>::build(std::span<const Vec3<T>> vertices,
     // Choose the splitter.
     std::size_t pick = 0;
     if (options.split == Bsp3Split::balanced && polys.size() > 1) {
-      const std::size_t m = std::min<std::size_t>(std::max<std::uint32_t>(options.sample, 1u),
-                                                  polys.size());
+      const std::size_t m =
+          std::min<std::size_t>(std::max<std::uint32_t>(options.sample, 1u), polys.size());
       long long best = -1;
       for (std::size_t c = 0; c < m; ++c) {
         const std::size_t idx = c * polys.size() / m;
@@ -296,10 +294,17 @@ Status Bsp3<T>::build(std::span<const Vec3<T>> vertices,
         long long nf = 0, nb = 0, ns = 0;
         for (const Poly<T>& p : polys) {
           switch (relate<T>(pool, h, polys[idx].face, p.idx, signs)) {
-            case Rel::front: ++nf; break;
-            case Rel::back: ++nb; break;
-            case Rel::straddle: ++ns; break;
-            case Rel::on: break;
+            case Rel::front:
+              ++nf;
+              break;
+            case Rel::back:
+              ++nb;
+              break;
+            case Rel::straddle:
+              ++ns;
+              break;
+            case Rel::on:
+              break;
           }
         }
         const long long cost =
@@ -315,8 +320,8 @@ Status Bsp3<T>::build(std::span<const Vec3<T>> vertices,
     const PlaneRef<T> h(vertices_[st[0]], vertices_[st[1]], vertices_[st[2]]);
 
     const auto node = static_cast<std::int32_t>(nodes_.size());
-    nodes_.push_back({split_face, bsp3_outside, bsp3_inside,
-                      static_cast<std::uint32_t>(fragments_.size()), 0});
+    nodes_.push_back(
+        {split_face, bsp3_outside, bsp3_inside, static_cast<std::uint32_t>(fragments_.size()), 0});
     if (job.parent >= 0) {
       Bsp3Node& par = nodes_[static_cast<std::size_t>(job.parent)];
       (job.front_child ? par.front : par.back) = node;
@@ -335,9 +340,14 @@ Status Bsp3<T>::build(std::span<const Vec3<T>> vertices,
         continue;
       }
       switch (relate<T>(pool, h, split_face, p.idx, signs)) {
-        case Rel::front: front.push_back(std::move(p)); break;
-        case Rel::back: back.push_back(std::move(p)); break;
-        case Rel::on: break;  // a rounded sliver lying in the plane: no area to keep
+        case Rel::front:
+          front.push_back(std::move(p));
+          break;
+        case Rel::back:
+          back.push_back(std::move(p));
+          break;
+        case Rel::on:
+          break;  // a rounded sliver lying in the plane: no area to keep
         case Rel::straddle:
           split_polygon<T>(pool, h, split_face, p.idx, signs, fpts, bpts);
           if (fpts.size() >= 3) front.push_back({p.face, fpts});
@@ -345,8 +355,8 @@ Status Bsp3<T>::build(std::span<const Vec3<T>> vertices,
           break;
       }
     }
-    nodes_[static_cast<std::size_t>(node)].count =
-        static_cast<std::uint32_t>(fragments_.size()) - nodes_[static_cast<std::size_t>(node)].first;
+    nodes_[static_cast<std::size_t>(node)].count = static_cast<std::uint32_t>(fragments_.size()) -
+                                                   nodes_[static_cast<std::size_t>(node)].first;
     if (!back.empty()) stack.push_back({std::move(back), node, false, job.depth + 1});
     if (!front.empty()) stack.push_back({std::move(front), node, true, job.depth + 1});
   }
@@ -458,8 +468,8 @@ struct Partitioner {
         node = nd.back;
       }
     }
-    out.push_back({std::move(poly), node == bsp3_inside ? Bsp3Location::inside
-                                                        : Bsp3Location::outside});
+    out.push_back(
+        {std::move(poly), node == bsp3_inside ? Bsp3Location::inside : Bsp3Location::outside});
   }
 };
 

@@ -34,7 +34,8 @@ struct Soup {
   std::uint32_t weld(const Vec3<T>& v) {
     // Adding zero turns -0 into +0, so the two zeros weld.
     const std::array<T, 3> key{v.x + T(0), v.y + T(0), v.z + T(0)};
-    const auto [it, fresh] = index.try_emplace(key, static_cast<std::uint32_t>(out.vertices.size()));
+    const auto [it, fresh] =
+        index.try_emplace(key, static_cast<std::uint32_t>(out.vertices.size()));
     if (fresh) out.vertices.push_back({key[0], key[1], key[2]});
     return it->second;
   }
@@ -59,8 +60,7 @@ struct Soup {
 
 /// Adds the pieces of every face of `from` partitioned by `by` whose location passes `keep`.
 template <Real T, class Keep>
-void clip_faces(const Bsp3<T>& from, const Bsp3<T>& by, Keep keep, bool reversed,
-                Soup<T>& soup) {
+void clip_faces(const Bsp3<T>& from, const Bsp3<T>& by, Keep keep, bool reversed, Soup<T>& soup) {
   const auto v = from.vertices();
   for (const auto& f : from.faces()) {
     const Vec3<T> tri[3] = {v[f[0]], v[f[1]], v[f[2]]};
@@ -83,23 +83,30 @@ MeshBoolean<T> mesh_boolean(MeshBooleanOp op, const Bsp3<T>& a, const Bsp3<T>& b
       return r;
     }
   r.status = Status::ok;
-  if (empty_solid(a)) r.status = a.status();
-  else if (empty_solid(b)) r.status = b.status();
+  if (empty_solid(a))
+    r.status = a.status();
+  else if (empty_solid(b))
+    r.status = b.status();
   Soup<T> soup{r, {}};
   using L = Bsp3Location;
   switch (op) {
     case MeshBooleanOp::union_:
-      clip_faces(a, b, [](L l) { return l == L::outside || l == L::coincident_same; }, false, soup);
-      clip_faces(b, a, [](L l) { return l == L::outside; }, false, soup);
+      clip_faces(
+          a, b, [](L l) { return l == L::outside || l == L::coincident_same; }, false, soup);
+      clip_faces(
+          b, a, [](L l) { return l == L::outside; }, false, soup);
       break;
     case MeshBooleanOp::intersection:
-      clip_faces(a, b, [](L l) { return l == L::inside || l == L::coincident_same; }, false, soup);
-      clip_faces(b, a, [](L l) { return l == L::inside; }, false, soup);
+      clip_faces(
+          a, b, [](L l) { return l == L::inside || l == L::coincident_same; }, false, soup);
+      clip_faces(
+          b, a, [](L l) { return l == L::inside; }, false, soup);
       break;
     case MeshBooleanOp::difference:
-      clip_faces(a, b, [](L l) { return l == L::outside || l == L::coincident_opposite; }, false,
-                 soup);
-      clip_faces(b, a, [](L l) { return l == L::inside; }, true, soup);
+      clip_faces(
+          a, b, [](L l) { return l == L::outside || l == L::coincident_opposite; }, false, soup);
+      clip_faces(
+          b, a, [](L l) { return l == L::inside; }, true, soup);
       break;
   }
   return r;
@@ -115,9 +122,9 @@ MeshBoolean<T> mesh_boolean(MeshBooleanOp op, std::span<const Vec3<T>> a_vertice
   return mesh_boolean(op, a, b);
 }
 
-#define LOCUS_BSP3_BOOLEAN_INSTANTIATE(T)                                                   \
-  template MeshBoolean<T> mesh_boolean(MeshBooleanOp, const Bsp3<T>&, const Bsp3<T>&);      \
-  template MeshBoolean<T> mesh_boolean(                                                     \
+#define LOCUS_BSP3_BOOLEAN_INSTANTIATE(T)                                                     \
+  template MeshBoolean<T> mesh_boolean(MeshBooleanOp, const Bsp3<T>&, const Bsp3<T>&);        \
+  template MeshBoolean<T> mesh_boolean(                                                       \
       MeshBooleanOp, std::span<const Vec3<T>>, std::span<const std::array<std::uint32_t, 3>>, \
       std::span<const Vec3<T>>, std::span<const std::array<std::uint32_t, 3>>, Bsp3Options);
 LOCUS_BSP3_BOOLEAN_INSTANTIATE(float)

@@ -68,7 +68,8 @@ TEST(MeshBooleanCli, WritesTheLibraryResult) {
   fs::create_directories(dir);
   write_box(dir / "a.off", 0, 2);
   write_box(dir / "b.off", 1, 2);
-  const auto a = locus::read_mesh<double>(dir / "a.off"), b = locus::read_mesh<double>(dir / "b.off");
+  const auto a = locus::read_mesh<double>(dir / "a.off"),
+             b = locus::read_mesh<double>(dir / "b.off");
   ASSERT_EQ(a.status, locus::Status::ok);
   const auto ta = fan(a.mesh), tb = fan(b.mesh);
   const std::pair<const char*, locus::MeshBooleanOp> ops[] = {
@@ -85,19 +86,19 @@ TEST(MeshBooleanCli, WritesTheLibraryResult) {
     EXPECT_NE(r.out.find(volumes[i]), std::string::npos) << r.out;
     const auto got = locus::read_mesh<double>(out);
     ASSERT_EQ(got.status, locus::Status::ok);
-    const auto want = locus::mesh_boolean<double>(ops[i].second, a.mesh.vertices, ta,
-                                                  b.mesh.vertices, tb);
+    const auto want =
+        locus::mesh_boolean<double>(ops[i].second, a.mesh.vertices, ta, b.mesh.vertices, tb);
     EXPECT_EQ(got.mesh.vertices, want.vertices);
     EXPECT_EQ(fan(got.mesh), want.triangles);
   }
-  const CliRun bad = run_locus(dir, "mesh boolean --op xor '" + (dir / "a.off").string() + "' '" +
-                                        (dir / "b.off").string() + "' -o '" +
-                                        (dir / "x.off").string() + "'");
+  const CliRun bad =
+      run_locus(dir, "mesh boolean --op xor '" + (dir / "a.off").string() + "' '" +
+                         (dir / "b.off").string() + "' -o '" + (dir / "x.off").string() + "'");
   EXPECT_EQ(bad.code, 2);
   write_box(dir / "nan.off", 0, 1, true);
-  const CliRun nan = run_locus(dir, "mesh boolean --op union '" + (dir / "a.off").string() +
-                                        "' '" + (dir / "nan.off").string() + "' -o '" +
-                                        (dir / "y.off").string() + "'");
+  const CliRun nan =
+      run_locus(dir, "mesh boolean --op union '" + (dir / "a.off").string() + "' '" +
+                         (dir / "nan.off").string() + "' -o '" + (dir / "y.off").string() + "'");
   EXPECT_EQ(nan.code, 1);
   EXPECT_FALSE(nan.err.empty());
   fs::remove_all(dir);

@@ -55,10 +55,11 @@ void run_boolean(const BooleanOptions& o) {
   }
   const locus::PolygonMesh<double> a = load_mesh(o.a, o.format), b = load_mesh(o.b, o.format);
   const auto ta = fan(a), tb = fan(b);
-  const locus::MeshBoolean<double> r = locus::mesh_boolean<double>(
-      op, a.vertices, ta, b.vertices, tb);
+  const locus::MeshBoolean<double> r =
+      locus::mesh_boolean<double>(op, a.vertices, ta, b.vertices, tb);
   if (r.status == locus::Status::non_finite_input || r.status == locus::Status::invalid_input) {
-    throw InputError(o.a + ", " + o.b + ": mesh boolean: " + std::string(locus::to_string(r.status)));
+    throw InputError(o.a + ", " + o.b +
+                     ": mesh boolean: " + std::string(locus::to_string(r.status)));
   }
   locus::PolygonMesh<double> out;
   out.vertices = r.vertices;

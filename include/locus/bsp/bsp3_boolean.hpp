@@ -27,11 +27,13 @@
 // O(V log V). docs/notes/bsp3.md.
 
 #include <locus/bsp/bsp3.hpp>
+#include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/status.hpp>
 #include <locus/core/vec.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -59,10 +61,22 @@ template <Real T>
                                           std::span<const std::array<std::uint32_t, 3>> b_triangles,
                                           Bsp3Options options = {});
 
-#define LOCUS_BSP3_BOOLEAN_EXTERN(T)                                                            \
+/// The same for any 3D point ranges of one scalar type (core/point_range.hpp).
+template <PointRange3 RA, PointRange3 RB>
+requires std::same_as<range_scalar_t<RA>, range_scalar_t<RB>>
+[[nodiscard]] auto mesh_boolean(MeshBooleanOp op, const RA& a_vertices,
+                                std::span<const std::array<std::uint32_t, 3>> a_triangles,
+                                const RB& b_vertices,
+                                std::span<const std::array<std::uint32_t, 3>> b_triangles,
+                                Bsp3Options options = {}) {
+  return mesh_boolean<range_scalar_t<RA>>(op, point_span(a_vertices), a_triangles,
+                                          point_span(b_vertices), b_triangles, options);
+}
+
+#define LOCUS_BSP3_BOOLEAN_EXTERN(T)                                                          \
   extern template MeshBoolean<T> mesh_boolean(MeshBooleanOp, const Bsp3<T>&, const Bsp3<T>&); \
-  extern template MeshBoolean<T> mesh_boolean(                                                 \
-      MeshBooleanOp, std::span<const Vec3<T>>, std::span<const std::array<std::uint32_t, 3>>,  \
+  extern template MeshBoolean<T> mesh_boolean(                                                \
+      MeshBooleanOp, std::span<const Vec3<T>>, std::span<const std::array<std::uint32_t, 3>>, \
       std::span<const Vec3<T>>, std::span<const std::array<std::uint32_t, 3>>, Bsp3Options);
 LOCUS_BSP3_BOOLEAN_EXTERN(float)
 LOCUS_BSP3_BOOLEAN_EXTERN(double)
