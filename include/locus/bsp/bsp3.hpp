@@ -22,11 +22,12 @@
 // plane is the parents' common side when they do not straddle it (exact: the crossing is a
 // convex combination), and only otherwise the exact orient3d sign of the rounded point.
 // Fragments flattened by rounding are kept, so slivers along an edge reach the same cells.
+// points() and partition pieces report the corners rounded to T.
 // classify(p): exact sign tests along the path; on a node's plane the point is tested against
 // the coplanar input triangles (exact) and, if on none, sent down both sides. It is exact for
 // the cells of the tree; the tree equals the polyhedron unless a rounded cut point whose parents
 // straddle a later plane lies within rounding of it (seeded tests: rotated boxes, prisms and
-// icospheres, 10^6 points, no disagreement with the exact point-in-polyhedron). Non-finite p:
+// icospheres, ~10^6 queries, no disagreement with the exact point-in-polyhedron). Non-finite p:
 // outside.
 // partition(polygon): the polygon's plane is its first three non-collinear vertices (exact);
 // pieces come out of the leaves, pieces on a node plane are pushed through both subtrees to
