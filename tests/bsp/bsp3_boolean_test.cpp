@@ -94,7 +94,7 @@ TYPED_TEST(Bsp3BooleanTest, DyadicBoxesExactVolumes) {
   locus_test::Rng rng(locus_test::test_seed() + 41);
   SCOPED_TRACE(rng.trace());
   const T sizes[] = {T(0.5), T(1), T(2)};
-  for (int trial = 0; trial < 24; ++trial) {
+  for (int trial = 0; trial < 16; ++trial) {
     Vec3<T> lo[2], hi[2];
     for (int s = 0; s < 2; ++s)
       for (int k = 0; k < 3; ++k) {
@@ -115,7 +115,7 @@ TYPED_TEST(Bsp3BooleanTest, DyadicBoxesExactVolumes) {
       ASSERT_EQ(r.status, Status::ok);
       EXPECT_EQ(locus_test::exact_volume(r.vertices, r.triangles), want[o])
           << "trial " << trial << " op " << o;
-      check_sampling(ops[o], a, b, r, rng, T(-0.5), T(5), 40);
+      check_sampling(ops[o], a, b, r, rng, T(-0.5), T(5), 24);
     }
   }
 }
@@ -126,7 +126,7 @@ TYPED_TEST(Bsp3BooleanTest, RotatedSolidsVolumesAndSampling) {
   SCOPED_TRACE(rng.trace());
   const Solid3<T> sphere = locus_test::from_mesh(locus::icosphere_mesh<T>(T(1.2), 1));
   const Solid3<T> l = locus_test::l_prism3<T>();
-  for (int trial = 0; trial < 2; ++trial) {
+  for (int trial = 0; trial < 1; ++trial) {
     const Solid3<T> box =
         locus_test::moved(locus_test::box3<T>({0, 0, 0}, {1.5, 1, 2}), rng.unit<double, 3>(),
                           rng.uniform<double>(0.2, 3), rng.vec<double, 3>(-0.5, 0.5));
@@ -221,7 +221,7 @@ TYPED_TEST(Bsp3BooleanTest, PowerOfTwoScalingAndTreeOverload) {
   const Solid3<T> a = locus_test::from_mesh(locus::icosahedron_mesh<T>());
   const Solid3<T> b =
       locus_test::moved(locus_test::l_prism3<T>(), rng.unit<double, 3>(), 1.0, {-0.5, -0.5, -0.5});
-  for (const int e : {-30, 16}) {
+  for (const int e : {-30}) {
     const T s = std::ldexp(T(1), e);
     Solid3<T> as = a, bs = b;
     for (auto& v : as.v) v = v * s;

@@ -126,7 +126,7 @@ TYPED_TEST(Bsp3Test, RotatedSolidsMatchPointInPolyhedron) {
       const Solid3<T> s = locus_test::moved(base[si], axis, angle, shift);
       for (const Bsp3Split split : {Bsp3Split::first_face, Bsp3Split::balanced}) {
         const Bsp3<T> tree = tree_of(s, split);
-        for (int i = 0; i < 100; ++i) {
+        for (int i = 0; i < 60; ++i) {
           const Vec3<T> p = rng.vec<T, 3>(T(-4), T(4));
           ASSERT_EQ(tree.classify(p), oracle(s, p))
               << "motion " << motion << " solid " << si << " split " << int(split);
