@@ -34,8 +34,10 @@
 // tell inside / outside / coincident_same (its normal agrees with the surface's outward
 // normal) / coincident_opposite. Status: ok, empty_input (no triangle), invalid_input (an index
 // out of range), non_finite_input, degenerate_input (every triangle degenerate: empty tree).
-// Cost: O(n^2) fragments at worst, about n log n with the balanced or random order; no
-// recursion in the construction; classify O(depth). docs/notes/bsp3.md.
+// Cost: O(n^2) fragments at worst. A convex solid never splits but its tree is a chain of
+// depth n, so the construction is O(n^2) (balanced sampling multiplies it by up to `sample`):
+// measured 0.3 / 2.5 / 32 s for icospheres of 320 / 1280 / 5120 faces (balanced, one core);
+// no recursion in the construction; classify O(depth). docs/notes/bsp3.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>

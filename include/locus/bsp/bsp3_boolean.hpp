@@ -23,8 +23,10 @@
 // (empty_input or degenerate_input) is the empty solid and its status is reported while the
 // output is still the result of the operation (union = the other operand, intersection = empty,
 // A - empty = A); otherwise ok (an empty result is ok with no triangles).
-// Cost: the two partitions, O(F_A depth_B + F_B depth_A) pieces typical, plus the weld
-// O(V log V). docs/notes/bsp3.md.
+// Cost: the two trees (bsp/bsp3.hpp), then the two partitions, about F_A depth_B + F_B depth_A
+// node visits, and the weld O(V log V): the union of two overlapping icospheres of 1280 faces
+// takes 2.5 s to build the trees and 0.5 s for the boolean (convex operands give trees of depth
+// F). docs/notes/bsp3.md.
 
 #include <locus/bsp/bsp3.hpp>
 #include <locus/core/point_range.hpp>
