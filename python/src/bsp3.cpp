@@ -84,7 +84,8 @@ void bind_bsp3(py::module_& m) {
       "Union, intersection or difference (a minus b) of two closed triangle meshes with outward\n"
       "normals, each a pair (vertices (n, 3), triangles (k, 3)), through their BSP trees\n"
       "(bsp/bsp3_boolean.hpp). Returns MeshBooleanResult: status, vertices (m, 3), triangles\n"
-      "(t, 3), outward; exactly equal vertices welded; T-junctions are not repaired. An empty\n"
+      "(t, 3), outward; exactly equal vertices welded; T-junctions stitched when the vertex lies\n"
+      "exactly on the edge, left at rounded cut points. An empty\n"
       "operand is the empty solid (status 'empty_input' or 'degenerate_input', result still\n"
       "given); NaN or out-of-range indices raise ValueError.");
 }

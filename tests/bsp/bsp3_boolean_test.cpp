@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <span>
 
 namespace {
@@ -89,6 +90,21 @@ double total_area(const MeshBoolean<T>& r) {
   return s;
 }
 
+/// Directed edges (i, j) used a different number of times than (j, i): 0 for a closed,
+/// consistently oriented triangle mesh (T-junctions count).
+template <class T>
+std::size_t unpaired_edges(const MeshBoolean<T>& r) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
+  for (const auto& t : r.triangles)
+    for (int e = 0; e < 3; ++e) ++count[{t[e], t[(e + 1) % 3]}];
+  std::size_t bad = 0;
+  for (const auto& [edge, n] : count) {
+    const auto it = count.find({edge.second, edge.first});
+    if (it == count.end() || it->second != n) ++bad;
+  }
+  return bad;
+}
+
 TYPED_TEST(Bsp3BooleanTest, DyadicBoxesExactVolumes) {
   using T = TypeParam;
   locus_test::Rng rng(locus_test::test_seed() + 41);
@@ -115,6 +131,8 @@ TYPED_TEST(Bsp3BooleanTest, DyadicBoxesExactVolumes) {
       ASSERT_EQ(r.status, Status::ok);
       EXPECT_EQ(locus_test::exact_volume(r.vertices, r.triangles), want[o])
           << "trial " << trial << " op " << o;
+      // Exact cuts: every T-junction is found and repaired, the surface closes.
+      EXPECT_EQ(unpaired_edges(r), 0u) << "trial " << trial << " op " << o;
       check_sampling(ops[o], a, b, r, rng, T(-0.5), T(5), 24);
     }
   }
@@ -155,6 +173,7 @@ TYPED_TEST(Bsp3BooleanTest, CubesSharingAFace) {
   ASSERT_EQ(u.status, Status::ok);
   EXPECT_EQ(locus_test::exact_volume(u.vertices, u.triangles), 2);
   EXPECT_EQ(total_area(u), 10.0);  // the shared face is gone
+  EXPECT_EQ(unpaired_edges(u), 0u);
   for (const auto& t : u.triangles)
     EXPECT_FALSE(u.vertices[t[0]].x == 1 && u.vertices[t[1]].x == 1 && u.vertices[t[2]].x == 1);
   const MeshBoolean<T> i = run(MeshBooleanOp::intersection, a, b);
@@ -172,6 +191,7 @@ TYPED_TEST(Bsp3BooleanTest, IdenticalAndDisjointOperands) {
   const MeshBoolean<T> u = run(MeshBooleanOp::union_, a, a);
   EXPECT_EQ(locus_test::exact_volume(u.vertices, u.triangles), 3);
   EXPECT_EQ(total_area(u), area_a);  // coincident faces kept once
+  EXPECT_EQ(unpaired_edges(u), 0u);
   const MeshBoolean<T> i = run(MeshBooleanOp::intersection, a, a);
   EXPECT_EQ(locus_test::exact_volume(i.vertices, i.triangles), 3);
   EXPECT_EQ(total_area(i), area_a);
@@ -187,6 +207,7 @@ TYPED_TEST(Bsp3BooleanTest, IdenticalAndDisjointOperands) {
   EXPECT_EQ(locus_test::exact_volume(dd.vertices, dd.triangles), 3);
   // B's planes still cut A's faces (a BSP plane is unbounded): same surface, more triangles.
   EXPECT_NEAR(total_area(dd), area_a, 1e-9 * area_a);
+  EXPECT_EQ(unpaired_edges(dd), 0u);  // the extra cut points were stitched in
 }
 
 TYPED_TEST(Bsp3BooleanTest, BadInput) {

@@ -102,7 +102,7 @@ void register_mesh_boolean(CLI::App& mesh) {
   sub->footer(
       "Both meshes must be closed with outward normals; polygon faces are fanned into triangles.\n"
       "Writes the result as triangles (vertices with identical coordinates welded) and prints\n"
-      "its status, counts and volume. The output can have T-junctions (not repaired).\n"
+      "its status, counts and volume. T-junctions at rounded cut points are left as they are.\n"
       "Example:\n  locus mesh boolean --op difference box.off hole.off -o part.off");
   sub->callback([o] { run_boolean(*o); });
 }

@@ -12,13 +12,15 @@
 // fans of triangles; vertices with bit-identical coordinates are welded (-0 = +0); triangles with
 // a repeated vertex or collinear corners (exact) are dropped. Orientation: outward normals, as in
 // the input (bsp/bsp3.hpp).
-// NOT watertight in general: clipping A by B's planes and B by A's planes cuts the two sides of
-// an edge at different points, so the output has T-junctions (a vertex of one triangle inside
-// an edge of its neighbour); they are not repaired. The surface is closed as a point set up to
-// the rounding of cut points, so volumes (divergence theorem) and point classification by
-// parity away from the surface are meaningful; use a T-junction repair before algorithms that
-// need a manifold mesh. Cut points are rounded as documented in bsp/bsp3.hpp; results are exact
-// when every cut is representable (for example boxes with dyadic coordinates and power-of-two
+// T-junctions: clipping A by B's planes and B by A's planes cuts the two sides of a surface
+// edge at different points (a vertex of one triangle inside an edge of its neighbour). Every
+// output vertex lying EXACTLY on a triangle's edge (exact collinearity) is stitched into it
+// and the triangle re-triangulated, so when every cut is representable (dyadic boxes, integer
+// prisms) the output is closed: each directed edge is matched by its reverse. Rounded cut
+// points are generally not exactly on the neighbour's edge: then T-junctions remain (NOT
+// watertight as a mesh), although the surface is closed as a point set up to rounding, so
+// volumes and ray-parity classification away from the surface are right. Cut points are rounded
+// as documented in bsp/bsp3.hpp (exact when representable: dyadic boxes of power-of-two
 // sizes). Status: non_finite_input / invalid_input of either tree; an empty operand
 // (empty_input or degenerate_input) is the empty solid and its status is reported while the
 // output is still the result of the operation (union = the other operand, intersection = empty,
