@@ -1,43 +1,32 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The BSP tree of a polyhedron (book section 13.1.2, extending bsp/bsp2.hpp; row cg.bsp3):
-// construction with splitting (first-face, balanced or seeded random order), point
-// classification and the partition of a convex polygon into inside / outside / coincident-same /
-// coincident-opposite pieces. Input: vertices and triangles of a closed mesh, every triangle
-// {i, j, k} oriented with its normal (vj - vi) x (vk - vi) pointing OUT (not checked: an open or
-// inconsistently oriented mesh gives the answers of the tree built). Degenerate (collinear,
-// exact) triangles are skipped.
-// Tree: every node splits by the plane of one input triangle (faces()[node.face]); front =
-// orient3d(face, p) > 0 (outside), back < 0. Planes are always three INPUT points, so the side of
-// an input-precision point is exact (orient3d). Triangles coplanar with a node's plane (exact:
-// their three vertices on it) are stored there as fragments; a leaf is outside (front) or
-// inside (back).
-// Splitting: a fragment crossing a plane is cut at rounded points, computed and kept in double
-// (also for float input): on the edge u v (u on the positive side), with plane values du > 0 >
-// dv (compensated dot product), p_i = u_i + ((v_i - u_i) du) / (du - dv) clamped to the box of
-// u v, p = u (or v) when du (dv) rounds to the wrong sign, and p_k = the plane's coordinate when
-// the plane is x_k = const (exact test). So p lies on the segment u v, is exact whenever the
-// crossing is representable (dyadic boxes), and is within a few units of 2^-53 M of the plane
-// (M = the largest |coordinate|). A cut point remembers its two parents: its side of a later
-// plane is the parents' common side when they do not straddle it (exact: the crossing is a
-// convex combination), and only otherwise the exact orient3d sign of the rounded point.
-// Fragments flattened by rounding are kept, so slivers along an edge reach the same cells.
-// points() and partition pieces report the corners rounded to T.
-// classify(p): exact sign tests along the path; on a node's plane the point is tested against
-// the coplanar input triangles (exact) and, if on none, sent down both sides. It is exact for
-// the cells of the tree; the tree equals the polyhedron unless a rounded cut point whose parents
-// straddle a later plane lies within rounding of it (seeded tests: rotated boxes, prisms and
-// icospheres, ~10^6 queries, no disagreement with the exact point-in-polyhedron). Non-finite p:
-// outside.
-// partition(polygon): the polygon's plane is its first three non-collinear vertices (exact);
-// pieces come out of the leaves, pieces on a node plane are pushed through both subtrees to
-// tell inside / outside / coincident_same (its normal agrees with the surface's outward
-// normal) / coincident_opposite. Status: ok, empty_input (no triangle), invalid_input (an index
-// out of range), non_finite_input, degenerate_input (every triangle degenerate: empty tree).
-// Cost: O(n^2) fragments at worst. A convex solid never splits but its tree is a chain of
-// depth n, so the construction is O(n^2) (balanced sampling multiplies it by up to `sample`):
-// measured 0.3 / 2.5 / 32 s for icospheres of 320 / 1280 / 5120 faces (balanced, one core);
-// no recursion in the construction; classify O(depth). docs/notes/bsp3.md.
+// construction (first-face, balanced or seeded random order), exact point classification and
+// the partition of a convex polygon into inside / outside / coincident-same / -opposite pieces.
+// Input: a closed triangle mesh, triangle {i, j, k} with (vj - vi) x (vk - vi) pointing OUT (not
+// checked: other meshes give the answers of the tree built); collinear triangles are skipped.
+// Tree: each node splits by the plane of an input triangle (faces()[node.face]); front =
+// orient3d(face, p) > 0 = outside. Planes are three INPUT points, so input-precision points are
+// classified exactly. Triangles on a node's plane (exact) are stored there; leaves are outside
+// (front) or inside (back).
+// Splitting: cut points are rounded, computed and kept in double (also for float input): on the
+// edge u v, p_i = u_i + ((v_i - u_i) du) / (du - dv) with accurate plane values, clamped to the
+// edge, snapped to an axis-aligned plane's coordinate: on the segment, within a few 2^-53 M of
+// the plane (M the largest |coordinate|), exact when the crossing is representable. A cut point
+// keeps its two parents: its side of a later plane is their common side when they do not
+// straddle it (exact, by convexity), else the exact orient3d sign of the rounded point.
+// Fragments flattened by rounding are kept. points() and partition pieces are rounded to T.
+// classify(p): exact along the path; on a node's plane, p on a coplanar input triangle is
+// boundary, otherwise p goes down both sides. Exact for the tree's cells, which equal the
+// polyhedron unless a rounded cut point whose parents straddle a later plane lies within
+// rounding of it (~10^6 seeded queries on rotated solids: no disagreement with the exact
+// point-in-polyhedron). Non-finite p: outside.
+// partition(polygon): plane = its first three non-collinear corners (exact); pieces on a node's
+// plane go through both subtrees (docs/notes/bsp3.md has the table). Status: ok, empty_input,
+// invalid_input (index out of range), non_finite_input, degenerate_input (no non-degenerate
+// triangle; empty tree, everything outside).
+// Cost: a convex solid gives a chain of depth n, O(n^2) work (times `sample` when balanced):
+// 0.3 / 2.5 / 32 s for icospheres of 320 / 1280 / 5120 faces; classify O(depth).
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>

@@ -1,34 +1,26 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Boolean operations on closed triangle meshes through their BSP trees (row cg.bool3; book
-// sections 13.1.2 and 13.6, extending the 2D construction of bsp/bsp2.hpp to polyhedra).
-// mesh_boolean(op, A, B): every triangle of A is partitioned by B's tree and every triangle of
-// B by A's tree (Bsp3::partition, bsp/bsp3.hpp); the pieces kept are
+// sections 13.1.2 and 13.6, extending bsp/bsp2.hpp to polyhedra). mesh_boolean(op, A, B)
+// partitions each triangle of A by B's tree and each of B by A's tree (Bsp3::partition) and keeps
 //   union_:       A outside B, B outside A, A coincident_same (coplanar faces kept once);
 //   intersection: A inside B,  B inside A,  A coincident_same;
 //   difference:   A outside B, B inside A reversed, A coincident_opposite.
-// Coincident faces with opposite normals vanish in union and intersection (the solids touch),
-// coincident_same pieces of A vanish in the difference. Pieces are convex polygons, output as
-// fans of triangles; vertices with bit-identical coordinates are welded (-0 = +0); triangles with
-// a repeated vertex or collinear corners (exact) are dropped. Orientation: outward normals, as in
-// the input (bsp/bsp3.hpp).
-// T-junctions: clipping A by B's planes and B by A's planes cuts the two sides of a surface
-// edge at different points (a vertex of one triangle inside an edge of its neighbour). Every
-// output vertex lying EXACTLY on a triangle's edge (exact collinearity) is stitched into it
-// and the triangle re-triangulated, so when every cut is representable (dyadic boxes, integer
-// prisms) the output is closed: each directed edge is matched by its reverse. Rounded cut
-// points are generally not exactly on the neighbour's edge: then T-junctions remain (NOT
-// watertight as a mesh), although the surface is closed as a point set up to rounding, so
-// volumes and ray-parity classification away from the surface are right. Cut points are rounded
-// as documented in bsp/bsp3.hpp (exact when representable: dyadic boxes of power-of-two
-// sizes). Status: non_finite_input / invalid_input of either tree; an empty operand
-// (empty_input or degenerate_input) is the empty solid and its status is reported while the
-// output is still the result of the operation (union = the other operand, intersection = empty,
-// A - empty = A); otherwise ok (an empty result is ok with no triangles).
-// Cost: the two trees (bsp/bsp3.hpp), then the two partitions, about F_A depth_B + F_B depth_A
-// node visits, and the weld O(V log V): the union of two overlapping icospheres of 1280 faces
-// takes 2.5 s to build the trees and 0.5 s for the boolean (convex operands give trees of depth
-// F). docs/notes/bsp3.md.
+// Opposite coincident faces (solids touching) vanish in union and intersection. Pieces are
+// fanned into triangles, outward; bit-identical vertices are welded (-0 = +0); triangles with a
+// repeated or collinear corner (exact) are dropped.
+// T-junctions (the two trees cut the two sides of an edge at different points): every output
+// vertex lying EXACTLY on a triangle's edge is stitched into it, so with representable cuts
+// (dyadic boxes, integer prisms) the output is a closed mesh (each directed edge matched by its
+// reverse). Rounded cut points (rotated solids) are generally off the neighbour's edge: those
+// T-junctions remain, the output is NOT watertight as a mesh, though closed as a point set up to
+// rounding (volumes and ray parity away from the surface are right).
+// Status: non_finite_input / invalid_input of either operand (no output); an empty operand
+// (empty_input / degenerate_input) is the empty solid, its status reported with the result
+// (union = the other operand); otherwise ok (an empty result has no triangles).
+// Cost: the two trees (bsp/bsp3.hpp), F_A depth_B + F_B depth_A node visits, the weld and the
+// stitching O(T log V): two overlapping icospheres of 1280 faces take 2.5 s for the trees and
+// 0.5 s for the union. docs/notes/bsp3.md.
 
 #include <locus/bsp/bsp3.hpp>
 #include <locus/core/point_range.hpp>
