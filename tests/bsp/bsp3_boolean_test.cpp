@@ -184,6 +184,32 @@ TYPED_TEST(Bsp3BooleanTest, CubesSharingAFace) {
   EXPECT_EQ(total_area(d), 6.0);
 }
 
+// A square hole drilled through the non-convex L prism: a genus-1 result, exact volumes and a
+// closed mesh (every cut is dyadic).
+TYPED_TEST(Bsp3BooleanTest, HoleThroughLPrism) {
+  using T = TypeParam;
+  const Solid3<T> l = locus_test::l_prism3<T>();
+  const Solid3<T> drill = locus_test::box3<T>({0.25, 0.25, -1}, {0.75, 0.75, 2});
+  const MeshBoolean<T> d = run(MeshBooleanOp::difference, l, drill);
+  ASSERT_EQ(d.status, Status::ok);
+  EXPECT_EQ(locus_test::exact_volume(d.vertices, d.triangles), mpq_class(11, 4));
+  EXPECT_EQ(unpaired_edges(d), 0u);
+  // Euler characteristic V - E + F = 0 for a closed surface of genus 1.
+  const long long e = static_cast<long long>(3 * d.triangles.size() / 2);
+  EXPECT_EQ(
+      static_cast<long long>(d.vertices.size()) - e + static_cast<long long>(d.triangles.size()),
+      0);
+  const MeshBoolean<T> i = run(MeshBooleanOp::intersection, l, drill);
+  EXPECT_EQ(locus_test::exact_volume(i.vertices, i.triangles), mpq_class(1, 4));
+  EXPECT_EQ(unpaired_edges(i), 0u);
+  const MeshBoolean<T> u = run(MeshBooleanOp::union_, l, drill);
+  EXPECT_EQ(locus_test::exact_volume(u.vertices, u.triangles), mpq_class(7, 2));
+  EXPECT_EQ(unpaired_edges(u), 0u);
+  locus_test::Rng rng(locus_test::test_seed() + 44);
+  SCOPED_TRACE(rng.trace());
+  check_sampling(MeshBooleanOp::difference, l, drill, d, rng, T(-0.5), T(2.5), 60);
+}
+
 TYPED_TEST(Bsp3BooleanTest, IdenticalAndDisjointOperands) {
   using T = TypeParam;
   const Solid3<T> a = locus_test::l_prism3<T>();
