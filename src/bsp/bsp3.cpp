@@ -84,7 +84,8 @@ struct PlaneRef {
     if (!(du > 0)) return u;
     if (!(dv < 0)) return v;
     for (int i = 0; i < 3; ++i) {
-      const double x = u[i] == v[i] ? u[i] : u[i] + ((v[i] - u[i]) * du) / denom;
+      double x = u[i] == v[i] ? u[i] : u[i] + ((v[i] - u[i]) * du) / denom;
+      if (!std::isfinite(x)) x = 0.5 * u[i] + 0.5 * v[i];  // products overflowed (|x| ~ 1e100+)
       p[i] = std::clamp(x, std::min(u[i], v[i]), std::max(u[i], v[i]));
     }
     if (axis_normal >= 0) p[axis_normal] = double(a[axis_normal]);

@@ -321,6 +321,23 @@ TYPED_TEST(Bsp3Test, PowerOfTwoScaling) {
   }
 }
 
+// Huge coordinates: the plane values overflow double, the tree must still answer exactly.
+TEST(Bsp3HugeTest, OverflowingCutsStayFinite) {
+  const double s = 0x1p300;
+  Solid3<double> l = locus_test::l_prism3<double>();
+  for (auto& v : l.v) v = v * s;
+  const Bsp3<double> tree(l.v, l.f, {Bsp3Split::first_face});
+  ASSERT_EQ(tree.status(), Status::ok);
+  for (const auto& p : tree.points())
+    ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+  locus_test::Rng rng(locus_test::test_seed() + 35);
+  SCOPED_TRACE(rng.trace());
+  for (int i = 0; i < 100; ++i) {
+    const Vec3<double> p = rng.vec<double, 3>(-0.5, 2.5) * s;
+    ASSERT_EQ(tree.classify(p), oracle(l, p));
+  }
+}
+
 TYPED_TEST(Bsp3Test, AnyPointRange) {
   using T = TypeParam;
   const Solid3<T> box = locus_test::box3<T>({0, 0, 0}, {1, 1, 1});
