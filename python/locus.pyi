@@ -424,6 +424,13 @@ def boolean(
     fill_rule: str = "even_odd",
     grid_bits: int = 0,
 ) -> BooleanResult: ...
+class MeshBooleanResult(Result):
+    vertices: _Floats
+    triangles: _Indices
+
+def mesh_boolean(
+    op: str, a: tuple[_Points, npt.ArrayLike], b: tuple[_Points, npt.ArrayLike]
+) -> MeshBooleanResult: ...
 def bspline_surface_insert_knot(
     control: npt.ArrayLike,
     knots_u: npt.ArrayLike,

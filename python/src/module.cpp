@@ -15,6 +15,7 @@ void bind_construction(py::module_& m);        // construction.cpp
 void bind_partition(py::module_& m);           // partition.cpp
 void bind_curve_intersection(py::module_& m);  // curve_intersection.cpp
 void bind_boolean(py::module_& m);             // boolean.cpp
+void bind_bsp3(py::module_& m);                // bsp3.cpp
 
 namespace {
 
@@ -109,6 +110,7 @@ for _name, _doc in [
     ("CurveHits", "line_curve_hits / curve_intersections: kind, points (k, 2), param_a, "
                   "param_b, multiplicity."),
     ("BooleanResult", "boolean: polygons (lists of rings: outer CCW, holes CW), grid."),
+    ("MeshBooleanResult", "mesh_boolean: vertices (m, 3), triangles (t, 3)."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make
@@ -262,4 +264,5 @@ PYBIND11_MODULE(locus, m) {
   bind_partition(m);
   bind_curve_intersection(m);
   bind_boolean(m);
+  bind_bsp3(m);
 }

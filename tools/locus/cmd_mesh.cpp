@@ -320,7 +320,7 @@ void run_convert(const ConvertOptions& o) {
 
 void register_mesh(CLI::App& app) {
   CLI::App* mesh =
-      app.add_subcommand("mesh", "mesh files: info, check, orient, generate, convert, slice");
+      app.add_subcommand("mesh", "mesh files: info, check, orient, generate, convert, slice, boolean");
   mesh->require_subcommand(1);
   mesh->footer(
       "Example:\n  locus mesh info bunny.ply\n  locus mesh check bunny.ply\n"
@@ -411,6 +411,7 @@ void register_mesh(CLI::App& app) {
     sub->callback([o] { run_convert(*o); });
   }
   register_mesh_slice(*mesh);
+  register_mesh_boolean(*mesh);
 }
 
 }  // namespace locus_cli
