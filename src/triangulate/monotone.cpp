@@ -11,6 +11,7 @@
 #include "rings.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <iterator>
 #include <memory_resource>
 #include <numeric>
@@ -31,6 +32,7 @@ struct Sweep {
   std::vector<VertexType> type;
   std::vector<std::array<std::uint32_t, 2>> diagonals;  // node pairs
   std::vector<Trapezoid> traps;
+  bool want_traps = false;  // only trapezoid_decomposition needs them
   Status status = Status::ok;
 
   const Vec2<T>& at(std::uint32_t n) const { return pts[index[n]]; }
@@ -131,12 +133,62 @@ struct Sweep {
   }
 
   void close(std::uint32_t left, std::uint32_t right, std::uint32_t top, std::uint32_t bottom) {
-    if (left == kNone || right == kNone || top == kNone) return;
+    if (!want_traps || left == kNone || right == kNone || top == kNone) return;
     if (at(top).y == at(bottom).y) return;
     traps.push_back(Trapezoid{{index[left], index[next[left]]},
                               {index[next[right]], index[right]},
                               index[top],
                               index[bottom]});
+  }
+
+  // An order-preserving unsigned image of y (larger y first), -0 and +0 alike.
+  static std::uint64_t descending_key(T y) {
+    const double d = y == T(0) ? 0.0 : double(y);
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(d);
+    const std::uint64_t ascending = (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t(1) << 63);
+    return ~ascending;
+  }
+
+  // The nodes in sweep order (y down, then x up, then node): a stable radix sort on y, then
+  // runs of equal y sorted by x.
+  template <class Event>
+  void sweep_order(std::vector<Event>& events) const {
+    const std::uint32_t m = static_cast<std::uint32_t>(index.size());
+    const auto less = [](const Event& a, const Event& b) {
+      if (a.y != b.y) return a.y > b.y;
+      if (a.x != b.x) return a.x < b.x;
+      return a.node < b.node;
+    };
+    for (std::uint32_t v = 0; v < m; ++v) events[v] = Event{at(v).y, at(v).x, v};
+    if (m < 4096) {
+      std::sort(events.begin(), events.end(), less);
+      return;
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(m), tmp(m);
+    for (std::uint32_t v = 0; v < m; ++v) keys[v] = {descending_key(at(v).y), v};
+    std::vector<std::uint32_t> count(65536);
+    for (int shift = 0; shift < 64; shift += 16) {
+      std::fill(count.begin(), count.end(), 0u);
+      for (const auto& k : keys) ++count[(k.first >> shift) & 0xFFFF];
+      std::uint32_t sum = 0;
+      for (auto& c : count) {
+        const std::uint32_t c0 = c;
+        c = sum;
+        sum += c0;
+      }
+      for (const auto& k : keys) tmp[count[(k.first >> shift) & 0xFFFF]++] = k;
+      keys.swap(tmp);
+    }
+    for (std::uint32_t i = 0; i < m; ++i) {
+      const std::uint32_t v = keys[i].second;
+      events[i] = Event{at(v).y, at(v).x, v};
+    }
+    for (std::uint32_t i = 0; i < m;) {
+      std::uint32_t j = i + 1;
+      while (j < m && keys[j].first == keys[i].first) ++j;
+      if (j - i > 1) std::sort(events.begin() + i, events.begin() + j, less);
+      i = j;
+    }
   }
 
   // The sweep of monotone.hpp: diagonals (node pairs) and trapezoids.
@@ -148,12 +200,7 @@ struct Sweep {
       std::uint32_t node;
     };
     std::vector<Event> events(m);
-    for (std::uint32_t v = 0; v < m; ++v) events[v] = Event{at(v).y, at(v).x, v};
-    std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-      if (a.y != b.y) return a.y > b.y;
-      if (a.x != b.x) return a.x < b.x;
-      return a.node < b.node;
-    });
+    sweep_order(events);
     // Tree nodes come from a pool: one allocation per chunk, not per edge.
     std::pmr::unsynchronized_pool_resource pool;
     using Tree = std::pmr::set<std::uint32_t, Less>;
@@ -348,6 +395,7 @@ struct Sweep {
     }
     // Neighbours counter-clockwise by angle (half-plane, then orient2d: exact).
     for (std::uint32_t v = 0; v < m; ++v) {
+      if (start[v + 1] - start[v] <= 2) continue;  // two neighbours: one cyclic order
       const Vec2<T>& c = at(v);
       const auto half = [&](std::uint32_t w) {
         const Vec2<T>& p = at(w);
@@ -537,6 +585,7 @@ TrapezoidDecomposition trapezoid_decomposition(std::span<const Vec2<T>> points,
                                                std::span<const std::uint32_t> ring_ends) {
   TrapezoidDecomposition out;
   Sweep<T> sw;
+  sw.want_traps = true;
   std::size_t holes = 0;
   out.status = decompose(points, ring_ends, sw, holes);
   if (out.status == Status::ok) out.trapezoids = std::move(sw.traps);
