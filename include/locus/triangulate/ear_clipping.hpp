@@ -28,6 +28,13 @@
 
 namespace locus {
 
+/// A reflex vertex in the ear-test grid (internal to EarClipping2): its point and node.
+template <Real T>
+struct GridEntry {
+  Vec2<T> p;
+  std::uint32_t node;
+};
+
 /// Reusable ear-clipping triangulator (keeps its buffers between calls).
 template <Real T>
 class EarClipping2 {
@@ -50,7 +57,8 @@ class EarClipping2 {
 
   PolygonTriangulation result_;
   std::vector<Node> nodes_;
-  std::vector<std::uint32_t> ring_, hole_starts_, cell_start_, cell_nodes_;
+  std::vector<std::uint32_t> ring_, hole_starts_, cell_start_, cell_count_, grid_pos_;
+  std::vector<GridEntry<T>> cell_items_;
 };
 
 /// Ear clipping of a polygon with holes (one call over EarClipping2).
