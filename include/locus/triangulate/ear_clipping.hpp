@@ -14,8 +14,9 @@
 // copies. Rings that cross (exact grid test), a hole with no valid bridge, or a ring with no ear
 // (cured as earcut does: local loops cut, then split along a valid diagonal, else a convex
 // vertex cut anyway) give invalid_topology with a best effort that terminates.
-// Cost: O(n log n) sorting, O(n) per bridge, then about O(n k) for k reflex vertices per grid
-// cell (near O(n) on ordinary input). Derivation: docs/notes/triangulate.md.
+// Cost: O(n log n) sorting; per bridge the cells near it of a grid of all ring edges and
+// vertices (O(n log n) when the candidate fails); then about O(n k) for k live reflex vertices
+// per grid cell (near O(n) on ordinary input). Derivation: docs/notes/triangulate.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
