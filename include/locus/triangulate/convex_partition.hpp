@@ -46,7 +46,13 @@ struct ConvexPartition {
   [[nodiscard]] std::size_t piece_count() const noexcept { return piece_ends.size(); }
 };
 
+/// Which exact minimum: Keil and Snoeyink's O(n r^2) programme (default) or the direct
+/// O(n^5) programme kept as an independent check (n at most min_convex_partition_limit).
+enum class MinConvexMethod : std::uint8_t { keil, direct };
+
 inline constexpr std::uint32_t min_convex_partition_limit = 64;
+/// Keil's tables hold r x n records (r reflex vertices): above this, limit_exceeded.
+inline constexpr std::uint64_t min_convex_partition_keil_cells = std::uint64_t(1) << 23;
 
 /// Hertel-Mehlhorn convex partition (see the top of the header).
 template <Real T>
@@ -55,8 +61,9 @@ template <Real T>
 
 /// Minimum convex partition of a polygon without holes (see the top of the header).
 template <Real T>
-[[nodiscard]] ConvexPartition min_convex_partition(std::span<const Vec2<T>> points,
-                                                   std::span<const std::uint32_t> ring_ends);
+[[nodiscard]] ConvexPartition min_convex_partition(
+    std::span<const Vec2<T>> points, std::span<const std::uint32_t> ring_ends,
+    MinConvexMethod method = MinConvexMethod::keil);
 
 /// The same for any point range (core/point_range.hpp).
 template <PointRange2 R>
@@ -65,9 +72,10 @@ template <PointRange2 R>
   return convex_partition(point_span(points), ring_ends);
 }
 template <PointRange2 R>
-[[nodiscard]] ConvexPartition min_convex_partition(const R& points,
-                                                   std::span<const std::uint32_t> ring_ends) {
-  return min_convex_partition(point_span(points), ring_ends);
+[[nodiscard]] ConvexPartition min_convex_partition(
+    const R& points, std::span<const std::uint32_t> ring_ends,
+    MinConvexMethod method = MinConvexMethod::keil) {
+  return min_convex_partition(point_span(points), ring_ends, method);
 }
 
 extern template ConvexPartition convex_partition<float>(std::span<const Vec2<float>>,
@@ -75,8 +83,10 @@ extern template ConvexPartition convex_partition<float>(std::span<const Vec2<flo
 extern template ConvexPartition convex_partition<double>(std::span<const Vec2<double>>,
                                                          std::span<const std::uint32_t>);
 extern template ConvexPartition min_convex_partition<float>(std::span<const Vec2<float>>,
-                                                            std::span<const std::uint32_t>);
+                                                            std::span<const std::uint32_t>,
+                                                            MinConvexMethod);
 extern template ConvexPartition min_convex_partition<double>(std::span<const Vec2<double>>,
-                                                             std::span<const std::uint32_t>);
+                                                             std::span<const std::uint32_t>,
+                                                             MinConvexMethod);
 
 }  // namespace locus
