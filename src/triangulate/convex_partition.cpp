@@ -124,7 +124,6 @@ ConvexPartition convex_partition(std::span<const Vec2<T>> points,
   return r;
 }
 
-
 /// Minimum convex decomposition after Keil and Snoeyink (docs/notes/triangulate.md): the ring
 /// (CCW positions 0 .. n-1 of cleaned input indices `verts`, rotated so that 0 is reflex) is
 /// cut by diagonals with a reflex end only. For each sub-polygon P(a, b) (a < b, a or b
@@ -140,7 +139,7 @@ struct KeilRun {
   std::vector<std::uint32_t> row_of;  // reflex vertex -> its row, else kNone
 
   struct Pair {
-    std::uint32_t s, t, k, child;  // child: the merged child's pair index, or kNone
+    std::uint32_t s, t, k, child;   // child: the merged child's pair index, or kNone
     bool option_b;                  // k next to a in the piece (else next to b)
     bool line = false;              // the side a k (b k for option_b) is a straight line
     std::uint32_t child_b = kNone;  // option C: the merged k-b child's pair (child: a-k's)
@@ -179,8 +178,8 @@ struct KeilRun {
     std::sort(keyed.begin(), keyed.end());
     const auto twin = [&](std::uint32_t u, std::uint32_t v) {
       const std::uint64_t key = std::uint64_t(v) << 32 | u;
-      const auto it = std::lower_bound(keyed.begin(), keyed.end(),
-                                       std::make_pair(key, std::uint32_t(0)));
+      const auto it =
+          std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(key, std::uint32_t(0)));
       return it != keyed.end() && it->first == key ? it->second : kNone;
     };
     std::vector<std::vector<std::uint32_t>> around(n);
@@ -245,9 +244,7 @@ struct KeilRun {
     const Cell* c = cell(a, b);
     return c && c->visible;
   }
-  std::uint32_t f_of(std::uint32_t a, std::uint32_t b) {
-    return b == a + 1 ? 0 : cell(a, b)->f;
-  }
+  std::uint32_t f_of(std::uint32_t a, std::uint32_t b) { return b == a + 1 ? 0 : cell(a, b)->f; }
 
   // A straight line of vertices from `from` to `to` (no diagonal: vertices on the segment),
   // each step an edge or a valid diagonal, walked back from `to`: the sum of f over the steps
@@ -504,7 +501,7 @@ ConvexPartition min_convex_partition(std::span<const Vec2<T>> points,
     std::rotate(verts.begin(), verts.begin() + first_reflex, verts.end());
     std::rotate(reflex.begin(), reflex.begin() + first_reflex, reflex.end());
     KeilRun<T> run{points, verts, n, reflex, std::vector<std::uint32_t>(n, KeilRun<T>::kNone),
-                   {}, {}};
+                   {},     {}};
     std::uint32_t rows = 0;
     for (std::uint32_t k = 0; k < n; ++k)
       if (reflex[k]) run.row_of[k] = rows++;

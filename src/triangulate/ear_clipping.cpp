@@ -113,8 +113,8 @@ struct EarClipRun {
     bool first = true;
     for (std::uint32_t y = bcell_y(std::min(a.y, b.y)), y1 = bcell_y(std::max(a.y, b.y)); y <= y1;
          ++y)
-      for (std::uint32_t x = bcell_x(std::min(a.x, b.x)), x1 = bcell_x(std::max(a.x, b.x));
-           x <= x1; ++x) {
+      for (std::uint32_t x = bcell_x(std::min(a.x, b.x)), x1 = bcell_x(std::max(a.x, b.x)); x <= x1;
+           ++x) {
         // One item per edge and cell: cells after the first get their own link entries.
         std::uint32_t slot = item;
         if (!first) {
@@ -209,8 +209,8 @@ struct EarClipRun {
         for (std::uint32_t i = edge_head[std::size_t(y) * bgx + x]; i != kNone; i = edge_link[i]) {
           const Vec2<T>& a = at(edge_nodes[i][0]);
           const Vec2<T>& b = at(edge_nodes[i][1]);
-          if (std::max(a.x, b.x) < lo_x || std::min(a.x, b.x) > hi_x ||
-              std::max(a.y, b.y) < lo_y || std::min(a.y, b.y) > hi_y)
+          if (std::max(a.x, b.x) < lo_x || std::min(a.x, b.x) > hi_x || std::max(a.y, b.y) < lo_y ||
+              std::min(a.y, b.y) > hi_y)
             continue;
           if (blocks(pm, pp, a, b)) return false;
         }
@@ -270,8 +270,7 @@ struct EarClipRun {
     const T lo_y = std::min(h.y, cm.y), hi_y = std::max(h.y, cm.y);
     for (std::uint32_t y = bcell_y(lo_y), y1 = bcell_y(hi_y); y <= y1; ++y)
       for (std::uint32_t x = bcell_x(cm.x), x1 = bcell_x(h.x); x <= x1; ++x)
-        for (std::uint32_t i = vert_head[std::size_t(y) * bgx + x]; i != kNone;
-             i = vert_link[i]) {
+        for (std::uint32_t i = vert_head[std::size_t(y) * bgx + x]; i != kNone; i = vert_link[i]) {
           const std::uint32_t p = vert_node[i];
           if (p != cand && in_joined_ring(p)) consider(p);
         }
@@ -357,7 +356,9 @@ struct EarClipRun {
     return c >= 1.0 ? std::min(gy - 1, static_cast<std::uint32_t>(c)) : 0u;
   }
 
-  std::size_t cell_of(const Vec2<T>& p) const { return std::size_t(cell_y(p.y)) * gx + cell_x(p.x); }
+  std::size_t cell_of(const Vec2<T>& p) const {
+    return std::size_t(cell_y(p.y)) * gx + cell_x(p.x);
+  }
 
   // Drops node v from the grid (it was cut or turned convex): the cell's last live entry takes
   // its slot, so the ear tests only ever visit live reflex vertices.
@@ -690,8 +691,8 @@ const PolygonTriangulation& EarClipping2<T>::compute(std::span<const Vec2<T>> po
   if (triangulate_detail::rings_cross(points, ring_, ends))
     result_.status = Status::invalid_topology;
   std::vector<std::uint32_t> late;
-  EarClipRun<T> run{points,      result_,     nodes_,     late, cell_start_,
-                    cell_count_, cell_items_, grid_pos_};
+  EarClipRun<T> run{points,      result_,     nodes_,      late,
+                    cell_start_, cell_count_, cell_items_, grid_pos_};
   // One cyclic list per ring; the first node of each ring is its lexicographically smallest.
   hole_starts_.clear();
   std::uint32_t begin = 0;

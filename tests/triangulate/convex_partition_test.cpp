@@ -257,7 +257,8 @@ TYPED_TEST(ConvexPartitionTest, DegenerateAndBadInput) {
   // Keil's programme has no such cap.
   locus_test::Rng rng;
   const auto big = locus_test::star_polygon<T>(rng, 80, 0.3, 1.0);
-  const auto lim = locus::min_convex_partition(big.points, big.ends, locus::MinConvexMethod::direct);
+  const auto lim =
+      locus::min_convex_partition(big.points, big.ends, locus::MinConvexMethod::direct);
   EXPECT_EQ(lim.status, Status::limit_exceeded);
   EXPECT_EQ(check_pieces(big, lim), "");
   const auto keil = locus::min_convex_partition(big.points, big.ends);
@@ -279,7 +280,8 @@ TYPED_TEST(ConvexPartitionTest, KeilMatchesTheDirectProgramme) {
     if (k % 6 == 5) {
       p = locus_test::comb_polygon<T>(rng, rng.uniform_int(2, 8));
     } else {
-      p = locus_test::star_polygon<T>(rng, k < 60 ? rng.uniform_int(5, 24) : rng.uniform_int(25, 40),
+      p = locus_test::star_polygon<T>(rng,
+                                      k < 60 ? rng.uniform_int(5, 24) : rng.uniform_int(25, 40),
                                       rng.uniform(0.1, 0.5), 1.0);
       // Every other star snapped to a coarse grid: many collinear vertices, straight angles in
       // the pieces, diagonals running along polygon edges.

@@ -160,8 +160,7 @@ TYPED_TEST(Decomposition, CrossingsAgreeWithBruteForce) {
     Polygon<T> p;
     if (k % 3 == 0) {
       // A star with two vertices swapped: crossing or not, depending on the radii.
-      p = locus_test::star_polygon<T>(rng, rng.uniform_int(5, 40), 0.3, 1.0,
-                                      rng.uniform_int(0, 2));
+      p = locus_test::star_polygon<T>(rng, rng.uniform_int(5, 40), 0.3, 1.0, rng.uniform_int(0, 2));
       const int n = int(p.ends[0]);
       const int i = rng.uniform_int(0, n - 1);
       const int j = (i + rng.uniform_int(1, 3)) % n;
