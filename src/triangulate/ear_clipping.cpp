@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <queue>
 #include <utility>
 
 namespace locus {
@@ -278,20 +280,50 @@ struct EarClipRun {
   }
 
   // The nearest vertex of the ring through outer that sees hole node m, or kNone.
-  std::uint32_t nearest_visible(std::uint32_t outer, std::uint32_t m) const {
-    std::vector<std::pair<double, std::uint32_t>> cands;
+  // The vertices of the joined ring in increasing (distance, node) order, found ring of cells by
+  // ring of cells around m: after the cells within Chebyshev distance k are read, every vertex
+  // not yet read is at least (k - 1) cells away (one cell of margin against the rounding of the
+  // cell map), so the candidates nearer than that are final and are tested in order.
+  std::uint32_t nearest_visible(std::uint32_t m) const {
     const Vec2<T>& h = at(m);
-    std::uint32_t q = outer;
-    do {
-      // hypot: no overflow or underflow, and exact under power-of-two scaling.
-      cands.emplace_back(std::hypot(double(at(q).x) - double(h.x), double(at(q).y) - double(h.y)),
-                         q);
-      q = nodes[q].next;
-    } while (q != outer);
-    std::sort(cands.begin(), cands.end());
-    for (const auto& c : cands)
-      if (bridge_visible(c.second, m)) return c.second;
-    return kNone;
+    const auto cx = static_cast<std::int64_t>(bcell_x(h.x));
+    const auto cy = static_cast<std::int64_t>(bcell_y(h.y));
+    const double inf = std::numeric_limits<double>::infinity();
+    const double step = std::min(binv_x > 0 ? 2.0 / binv_x : inf, binv_y > 0 ? 2.0 / binv_y : inf);
+    using Cand = std::pair<double, std::uint32_t>;
+    std::priority_queue<Cand, std::vector<Cand>, std::greater<Cand>> heap;
+    const auto scan = [&](std::int64_t x, std::int64_t y) {
+      if (x < 0 || y < 0 || x >= std::int64_t(bgx) || y >= std::int64_t(bgy)) return;
+      for (std::uint32_t i = vert_head[std::size_t(y) * bgx + std::size_t(x)]; i != kNone;
+           i = vert_link[i]) {
+        const std::uint32_t q = vert_node[i];
+        if (!in_joined_ring(q)) continue;
+        // hypot: no overflow or underflow, and exact under power-of-two scaling.
+        heap.emplace(std::hypot(double(at(q).x) - double(h.x), double(at(q).y) - double(h.y)), q);
+      }
+    };
+    const std::int64_t last = std::int64_t(std::max(bgx, bgy));
+    for (std::int64_t k = 0;; ++k) {
+      if (k == 0) {
+        scan(cx, cy);
+      } else if (k <= last) {
+        for (std::int64_t d = -k; d <= k; ++d) {
+          scan(cx + d, cy - k);
+          scan(cx + d, cy + k);
+        }
+        for (std::int64_t d = -k + 1; d <= k - 1; ++d) {
+          scan(cx - k, cy + d);
+          scan(cx + k, cy + d);
+        }
+      }
+      const double bound = k >= last ? inf : (double(k) - 1.0) * step;
+      while (!heap.empty() && heap.top().first < bound) {
+        const std::uint32_t q = heap.top().second;
+        heap.pop();
+        if (bridge_visible(q, m)) return q;
+      }
+      if (k >= last && heap.empty()) return kNone;
+    }
   }
 
   // Joins the hole whose lexicographically smallest vertex is node m to the ring through outer:
@@ -307,7 +339,7 @@ struct EarClipRun {
       p = kNone;
       const std::uint32_t first = m;
       do {
-        p = nearest_visible(outer, m);
+        p = nearest_visible(m);
         if (p != kNone) break;
         m = nodes[m].next;
       } while (m != first);
