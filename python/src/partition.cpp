@@ -98,9 +98,11 @@ void bind_partition(py::module_& m) {
       "convex_partition",
       [](py::handle outer, py::object holes, std::string method) -> py::object {
         const char* fn = "convex_partition";
-        const bool minimum = method == "minimum";
+        const bool direct = method == "minimum_direct";
+        const bool minimum = method == "minimum" || direct;
         if (!minimum && method != "hertel_mehlhorn")
-          fail(fn, "method must be 'hertel_mehlhorn' or 'minimum', not '" + method + "'");
+          fail(fn, "method must be 'hertel_mehlhorn', 'minimum' or 'minimum_direct', not '" +
+                       method + "'");
         Rings r;
         r.views.push_back(view_array(outer, fn, "outer", 2, {2}));
         r.all_float = r.views[0].is_float;
@@ -121,7 +123,10 @@ void bind_partition(py::module_& m) {
             py::gil_scoped_release nogil;
             const std::span<const Vec2<T>> p(pts);
             const std::span<const std::uint32_t> e(ends);
-            cp = minimum ? min_convex_partition(p, e) : convex_partition(p, e);
+            cp = minimum ? min_convex_partition(p, e,
+                                                direct ? locus::MinConvexMethod::direct
+                                                       : locus::MinConvexMethod::keil)
+                         : convex_partition(p, e);
           }
           check_status(cp.status, fn);
           py::object out = new_result("ConvexPartitionResult", cp.status);

@@ -91,11 +91,30 @@ def test_convex_polygon_is_one_piece():
         assert sorted(r.pieces[0]) == list(range(12))
 
 
-def test_minimum_limit_exceeded_is_best_so_far(rng):
+def test_minimum_direct_limit_exceeded_is_best_so_far(rng):
     outer = star(rng, 80)
-    r = locus.convex_partition(outer, method="minimum")
+    r = locus.convex_partition(outer, method="minimum_direct")
     assert r.status == "limit_exceeded"
     check_tiling(r, outer, [])
+
+
+def test_minimum_keil_matches_direct_and_has_no_cap(rng):
+    # Keil's programme (method='minimum') against the direct one on small polygons, then on a
+    # polygon above the direct programme's 64-vertex cap.
+    for n in [6, 12, 20, 30]:
+        outer = star(rng, n, 0.2)
+        keil = locus.convex_partition(outer, method="minimum")
+        direct = locus.convex_partition(outer, method="minimum_direct")
+        assert keil.status == "ok" and direct.status == "ok"
+        assert len(keil.pieces) == len(direct.pieces)
+        check_tiling(keil, outer, [])
+    outer = star(rng, 200, 0.2)
+    r = locus.convex_partition(outer, method="minimum")
+    assert r.status == "ok"
+    check_tiling(r, outer, [])
+    assert len(r.pieces) <= len(locus.convex_partition(outer).pieces)
+    with pytest.raises(ValueError):
+        locus.convex_partition(outer, method="keil")
 
 
 # An integer-grid polygon with a hole: a comb (reflex vertices, collinear edges) around a square

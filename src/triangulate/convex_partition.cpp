@@ -124,9 +124,344 @@ ConvexPartition convex_partition(std::span<const Vec2<T>> points,
   return r;
 }
 
+/// Minimum convex decomposition after Keil and Snoeyink (docs/notes/triangulate.md): the ring
+/// (CCW positions 0 .. n-1 of cleaned input indices `verts`, rotated so that 0 is reflex) is
+/// cut by diagonals with a reflex end only. For each sub-polygon P(a, b) (a < b, a or b
+/// reflex) the least piece count f and the narrowest (s, t) pairs of its a-b piece over the
+/// optimal decompositions: s the piece's vertex after a, t the one before b.
+template <Real T>
+struct KeilRun {
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  std::span<const Vec2<T>> points;
+  const std::vector<std::uint32_t>& verts;
+  std::uint32_t n;
+  std::vector<std::uint8_t> reflex;
+  std::vector<std::uint32_t> row_of;  // reflex vertex -> its row, else kNone
+
+  struct Pair {
+    std::uint32_t s, t, k, child;   // child: the merged child's pair index, or kNone
+    bool option_b;                  // k next to a in the piece (else next to b)
+    bool line = false;              // the side a k (b k for option_b) is a straight line
+    std::uint32_t child_b = kNone;  // option C: the merged k-b child's pair (child: a-k's)
+  };
+  struct Cell {
+    std::uint32_t f = kNone, first = 0, count = 0;
+    // Not visible but on a straight line of vertices from one end: the vertex before the far
+    // end on that line, seen from the smaller or the larger end (kNone otherwise).
+    std::uint32_t via_small = kNone, via_large = kNone;
+    std::uint8_t visible = 0;
+  };
+  std::vector<Cell> cells;  // row_of[x] * n + y for the pair {x, y} stored with reflex x
+  std::vector<Pair> pairs;
+
+  const Vec2<T>& P(std::uint32_t k) const { return points[verts[k]]; }
+
+  // The record of pair (a, b), a < b, with a reflex end (the smaller one when both are).
+  Cell* cell(std::uint32_t a, std::uint32_t b) {
+    if (reflex[a]) return &cells[std::size_t(row_of[a]) * n + b];
+    if (reflex[b]) return &cells[std::size_t(row_of[b]) * n + a];
+    return nullptr;
+  }
+
+  // Visibility from every reflex vertex through a triangulation (tris: CCW position triples):
+  // a depth-first walk across the triangles with the wedge of rays still open; a vertex is
+  // visible when strictly inside the wedge (exact orient2d), which is the diagonal test of the
+  // direct programme (inside the polygon, no other vertex on the closed segment).
+  void visibility(const std::vector<std::array<std::uint32_t, 3>>& tris) {
+    const std::size_t m = tris.size();
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;  // directed edge -> half-edge
+    keyed.reserve(3 * m);
+    for (std::size_t t = 0; t < m; ++t)
+      for (std::uint32_t i = 0; i < 3; ++i)
+        keyed.emplace_back(std::uint64_t(tris[t][i]) << 32 | tris[t][(i + 1) % 3],
+                           std::uint32_t(3 * t + i));
+    std::sort(keyed.begin(), keyed.end());
+    const auto twin = [&](std::uint32_t u, std::uint32_t v) {
+      const std::uint64_t key = std::uint64_t(v) << 32 | u;
+      const auto it =
+          std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(key, std::uint32_t(0)));
+      return it != keyed.end() && it->first == key ? it->second : kNone;
+    };
+    std::vector<std::vector<std::uint32_t>> around(n);
+    for (std::size_t t = 0; t < m; ++t)
+      for (std::uint32_t i = 0; i < 3; ++i) around[tris[t][i]].push_back(std::uint32_t(t));
+    struct Step {
+      std::uint32_t u, v, right, left;  // crossing u -> v (u on the right), wedge rays
+    };
+    std::vector<Step> stack;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (!reflex[i]) continue;
+      const auto mark = [&](std::uint32_t w) {
+        if (w != i) cell(std::min(i, w), std::max(i, w))->visible = 1;
+      };
+      // w lies on the ray from i through `before`, beyond it: a straight line of vertices.
+      const auto mark_via = [&](std::uint32_t w, std::uint32_t before) {
+        Cell* c = cell(std::min(i, w), std::max(i, w));
+        (i < w ? c->via_small : c->via_large) = before;
+      };
+      const Vec2<T>& o = P(i);
+      for (const std::uint32_t t : around[i]) {
+        std::uint32_t c = 0;
+        while (tris[t][c] != i) ++c;
+        const std::uint32_t a = tris[t][(c + 1) % 3], b = tris[t][(c + 2) % 3];
+        mark(a);
+        mark(b);
+        stack.push_back({a, b, a, b});
+      }
+      while (!stack.empty()) {
+        const Step st = stack.back();
+        stack.pop_back();
+        const std::uint32_t h = twin(st.u, st.v);
+        if (h == kNone) continue;  // a polygon edge
+        const auto& tri = tris[h / 3];
+        const std::uint32_t c = tri[(h % 3 + 2) % 3];
+        const Vec2<T>& pc = P(c);
+        const Sign to_right = orient2d(o, P(st.right), pc);
+        const Sign to_left = orient2d(o, P(st.left), pc);
+        const bool after_right = to_right == Sign::positive;
+        const bool before_left = to_left == Sign::negative;
+        if (after_right && before_left) mark(c);
+        // On a boundary ray: not visible, but reached along a straight line of vertices; the
+        // ray's vertex becomes c, so the next vertex on it records c as its predecessor.
+        std::uint32_t right = st.right, left = st.left;
+        if (to_right == Sign::zero && before_left) {
+          mark_via(c, st.right);
+          right = c;
+        }
+        if (to_left == Sign::zero && after_right) {
+          mark_via(c, st.left);
+          left = c;
+        }
+        // Through u -> c (right part) and c -> v (left part), each with its narrowed wedge.
+        if (after_right) stack.push_back({st.u, c, st.right, before_left ? c : left});
+        if (before_left) stack.push_back({c, st.v, after_right ? c : right, st.left});
+      }
+    }
+  }
+
+  bool valid(std::uint32_t a, std::uint32_t b) {
+    if (b == a + 1) return true;
+    const Cell* c = cell(a, b);
+    return c && c->visible;
+  }
+  std::uint32_t f_of(std::uint32_t a, std::uint32_t b) { return b == a + 1 ? 0 : cell(a, b)->f; }
+
+  // A straight line of vertices from `from` to `to` (no diagonal: vertices on the segment),
+  // each step an edge or a valid diagonal, walked back from `to`: the sum of f over the steps
+  // and the line's vertex next to `from`, or kNone.
+  std::uint32_t straight(std::uint32_t from, std::uint32_t to, std::uint32_t& next_to_from) {
+    std::uint32_t cost = 0, x = to;
+    for (std::uint32_t guard = 0; guard < n; ++guard) {
+      const Cell* c = cell(std::min(from, x), std::max(from, x));
+      if (!c) return kNone;
+      const std::uint32_t y = c->visible ? from : (from < x ? c->via_small : c->via_large);
+      if (y == kNone || (from < to ? !(from <= y && y < x) : !(x < y && y <= from))) return kNone;
+      const std::uint32_t lo = std::min(x, y), hi = std::max(x, y);
+      if (!valid(lo, hi)) return kNone;
+      const std::uint32_t f = f_of(lo, hi);
+      if (f == kNone) return kNone;
+      cost += f;
+      if (y == from) {
+        next_to_from = x;
+        return cost;
+      }
+      x = y;
+    }
+    return kNone;
+  }
+
+  // Narrower at a: s1's angle after a (from a->s to a->b, in (0, pi]) is smaller than s2's.
+  bool narrower_at_a(std::uint32_t a, std::uint32_t s1, std::uint32_t s2) const {
+    return orient2d(P(a), P(s2), P(s1)) == Sign::positive;
+  }
+  bool narrower_at_b(std::uint32_t b, std::uint32_t t1, std::uint32_t t2) const {
+    return orient2d(P(b), P(t2), P(t1)) == Sign::negative;
+  }
+
+  void solve(std::uint32_t a, std::uint32_t b) {
+    Cell* me = cell(a, b);
+    if (!me || !me->visible || b < a + 2) return;
+    std::uint32_t best = kNone;
+    std::vector<Pair> cand;
+    const auto consider = [&](std::uint32_t cost, const Pair& p) {
+      if (cost < best) {
+        best = cost;
+        cand.clear();
+      }
+      if (cost == best) cand.push_back(p);
+    };
+    // Both ways of splitting off the triangle a k b: k next to b in the a-b piece (option A:
+    // the a-k part may merge into the piece, k b bounds it) or k next to a (option B, mirrored).
+    // A separate part must be cut by an edge or a diagonal with a reflex end (an essential one);
+    // a merged part needs a reflex end to have a table. With one reflex end, k runs over the
+    // reflex vertices and the neighbours only: O(r) per pair, O(n) when both ends are reflex.
+    for (std::uint32_t k = a + 1; k < b; ++k) {
+      if ((k + 1 == b || reflex[k] || reflex[b]) && valid(k, b) && f_of(k, b) != kNone) {
+        const std::uint32_t fb = f_of(k, b);
+        if (valid(a, k)) {
+          const std::uint32_t fa = f_of(a, k);
+          std::uint32_t pick = kNone;
+          if (fa != kNone && k > a + 1) {
+            const Cell* c = cell(a, k);
+            for (std::uint32_t q = c->first; q < c->first + c->count; ++q) {
+              const Pair& pr = pairs[q];
+              // Convex at a and at k once the triangle a k b is added.
+              if (orient2d(P(b), P(a), P(pr.s)) == Sign::negative ||
+                  orient2d(P(pr.t), P(k), P(b)) == Sign::negative)
+                continue;
+              if (pick == kNone || narrower_at_a(a, pr.s, pairs[pick].s)) pick = q;
+            }
+          }
+          if (fa != kNone && pick != kNone)
+            consider(fa + fb, Pair{pairs[pick].s, k, k, pick, false});
+          else if (fa != kNone)
+            consider(fa + fb + 1, Pair{k, k, k, kNone, false});
+        } else if (reflex[a]) {
+          // The piece's side a k is a straight line of vertices: the triangle with that side.
+          std::uint32_t s1 = kNone;
+          const std::uint32_t line = straight(a, k, s1);
+          if (line != kNone) consider(line + fb + 1, Pair{s1, k, k, kNone, false, true});
+        }
+      }
+      // Option C: both parts merge, the triangle a k b in the middle (needed when the piece
+      // runs straight through a and b, so that neither A nor B has a diagonal to split along).
+      if (k > a + 1 && k + 1 < b && (reflex[a] || reflex[k]) && (reflex[k] || reflex[b]) &&
+          valid(a, k) && valid(k, b) && f_of(a, k) != kNone && f_of(k, b) != kNone) {
+        const Cell* ca = cell(a, k);
+        const Cell* cb = cell(k, b);
+        for (std::uint32_t q1 = ca->first; q1 < ca->first + ca->count; ++q1) {
+          const Pair& p1 = pairs[q1];
+          if (orient2d(P(b), P(a), P(p1.s)) == Sign::negative) continue;
+          for (std::uint32_t q2 = cb->first; q2 < cb->first + cb->count; ++q2) {
+            const Pair& p2 = pairs[q2];
+            if (orient2d(P(p2.t), P(b), P(a)) == Sign::negative ||
+                orient2d(P(p1.t), P(k), P(p2.s)) == Sign::negative)
+              continue;
+            consider(f_of(a, k) + f_of(k, b) - 1, Pair{p1.s, p2.t, k, q1, false, false, q2});
+          }
+        }
+      }
+      if ((k == a + 1 || reflex[a] || reflex[k]) && valid(a, k) && f_of(a, k) != kNone) {
+        const std::uint32_t fa = f_of(a, k);
+        if (valid(k, b)) {
+          const std::uint32_t fb = f_of(k, b);
+          std::uint32_t pick = kNone;
+          if (fb != kNone && k + 1 < b) {
+            const Cell* c = cell(k, b);
+            for (std::uint32_t q = c->first; q < c->first + c->count; ++q) {
+              const Pair& pr = pairs[q];
+              if (orient2d(P(a), P(k), P(pr.s)) == Sign::negative ||
+                  orient2d(P(pr.t), P(b), P(a)) == Sign::negative)
+                continue;
+              if (pick == kNone || narrower_at_b(b, pr.t, pairs[pick].t)) pick = q;
+            }
+          }
+          if (fb != kNone && pick != kNone)
+            consider(fa + fb, Pair{k, pairs[pick].t, k, pick, true});
+          else if (fb != kNone)
+            consider(fa + fb + 1, Pair{k, k, k, kNone, true});
+        } else if (reflex[b]) {
+          std::uint32_t t1 = kNone;
+          const std::uint32_t line = straight(b, k, t1);
+          if (line != kNone) consider(fa + line + 1, Pair{k, t1, k, kNone, true, true});
+        }
+      }
+    }
+    if (best == kNone) return;
+    me->f = best;
+    me->first = static_cast<std::uint32_t>(pairs.size());
+    // Keep the pairs no other pair beats at both ends (narrower or as narrow).
+    for (std::size_t x = 0; x < cand.size(); ++x) {
+      bool dominated = false;
+      for (std::size_t y = 0; y < cand.size() && !dominated; ++y) {
+        if (x == y) continue;
+        const bool a_le = !narrower_at_a(a, cand[x].s, cand[y].s);
+        const bool b_le = !narrower_at_b(b, cand[x].t, cand[y].t);
+        const bool a_lt = narrower_at_a(a, cand[y].s, cand[x].s);
+        const bool b_lt = narrower_at_b(b, cand[y].t, cand[x].t);
+        // y at least as narrow at both ends, strictly at one, or an identical earlier pair.
+        dominated = a_le && b_le && (a_lt || b_lt || y < x);
+      }
+      if (!dominated) pairs.push_back(cand[x]);
+    }
+    me->count = static_cast<std::uint32_t>(pairs.size() - me->first);
+  }
+
+  // The a-b piece's vertices from a to b (pair q of (a, b)); other pieces go to out.
+  void chain(std::uint32_t a, std::uint32_t b, std::uint32_t q, std::vector<std::uint32_t>& ch,
+             ConvexPartition& out) {
+    const Pair pr = pairs[q];
+    const std::uint32_t k = pr.k;
+    if (pr.child_b != kNone) {
+      chain(a, k, pr.child, ch, out);  // a ... k
+      std::vector<std::uint32_t> rest;
+      chain(k, b, pr.child_b, rest, out);  // k ... b
+      ch.insert(ch.end(), rest.begin() + 1, rest.end());
+      return;
+    }
+    if (pr.line) {
+      // The triangle a k b with the straight side (a k, or k b) through its line's vertices.
+      std::vector<std::uint32_t> line;
+      const std::uint32_t from = pr.option_b ? b : a;
+      std::uint32_t x = k;
+      line.push_back(k);
+      while (x != from) {
+        const Cell* c = cell(std::min(from, x), std::max(from, x));
+        x = c->visible ? from : (from < x ? c->via_small : c->via_large);
+        line.push_back(x);
+      }
+      std::reverse(line.begin(), line.end());  // from ... k
+      for (std::size_t i = 0; i + 1 < line.size(); ++i)
+        finish(std::min(line[i], line[i + 1]), std::max(line[i], line[i + 1]), out);
+      if (pr.option_b) {
+        ch.push_back(a);
+        for (std::size_t i = line.size(); i-- > 0;) ch.push_back(line[i]);  // k ... b
+        finish(a, k, out);
+      } else {
+        ch.insert(ch.end(), line.begin(), line.end());  // a ... k
+        ch.push_back(b);
+        finish(k, b, out);
+      }
+      return;
+    }
+    if (pr.option_b) {
+      ch.push_back(a);
+      if (pr.child != kNone) {
+        chain(k, b, pr.child, ch, out);
+      } else {
+        ch.push_back(k);
+        ch.push_back(b);
+        finish(k, b, out);
+      }
+      finish(a, k, out);
+    } else {
+      if (pr.child != kNone) {
+        chain(a, k, pr.child, ch, out);
+      } else {
+        ch.push_back(a);
+        ch.push_back(k);
+        finish(a, k, out);
+      }
+      ch.push_back(b);
+      finish(k, b, out);
+    }
+  }
+
+  // The sub-polygon cut off by diagonal a b, decomposed on its own (nothing for an edge).
+  void finish(std::uint32_t a, std::uint32_t b, ConvexPartition& out) {
+    if (b == a + 1) return;
+    std::vector<std::uint32_t> ch;
+    chain(a, b, cell(a, b)->first, ch, out);
+    for (const std::uint32_t v : ch) out.vertices.push_back(verts[v]);
+    out.piece_ends.push_back(static_cast<std::uint32_t>(out.vertices.size()));
+    out.diagonals.push_back({verts[a], verts[b]});
+  }
+};
+
 template <Real T>
 ConvexPartition min_convex_partition(std::span<const Vec2<T>> points,
-                                     std::span<const std::uint32_t> ring_ends) {
+                                     std::span<const std::uint32_t> ring_ends,
+                                     MinConvexMethod method) {
   ConvexPartition r;
   if (ring_ends.size() > 1) {
     r.status = Status::invalid_input;
@@ -141,12 +476,68 @@ ConvexPartition min_convex_partition(std::span<const Vec2<T>> points,
   }
   const std::uint32_t n = static_cast<std::uint32_t>(verts.size());
   const auto P = [&](std::uint32_t k) -> const Vec2<T>& { return points[verts[k]]; };
-  bool convex = true;
-  for (std::uint32_t k = 0; k < n && convex; ++k)
-    convex = orient2d(P((k + n - 1) % n), P(k), P((k + 1) % n)) != Sign::negative;
-  if (convex) {
+  // Keil's tables are kept for reflex vertices and, to cover pieces with a straight angle
+  // there, for straight ones (orient2d = 0): "reflex" below means not strictly convex.
+  std::vector<std::uint8_t> reflex(n);
+  std::uint32_t reflex_count = 0, strictly_reflex = 0, first_reflex = 0;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const Sign turn = orient2d(P((k + n - 1) % n), P(k), P((k + 1) % n));
+    reflex[k] = turn != Sign::positive;
+    strictly_reflex += turn == Sign::negative;
+    if (reflex[k] && reflex_count++ == 0) first_reflex = k;
+  }
+  if (strictly_reflex == 0) {
     r.vertices = verts;
     r.piece_ends.push_back(n);
+    return r;
+  }
+  if (method == MinConvexMethod::keil) {
+    if (std::uint64_t(reflex_count) * n > min_convex_partition_keil_cells) {
+      r = convex_partition(points, ring_ends);
+      if (r.status == Status::ok) r.status = Status::limit_exceeded;
+      return r;
+    }
+    // Position 0 reflex: the whole polygon is then the sub-polygon of the edge n-1 -> 0.
+    std::rotate(verts.begin(), verts.begin() + first_reflex, verts.end());
+    std::rotate(reflex.begin(), reflex.begin() + first_reflex, reflex.end());
+    KeilRun<T> run{points, verts, n, reflex, std::vector<std::uint32_t>(n, KeilRun<T>::kNone),
+                   {},     {}};
+    std::uint32_t rows = 0;
+    for (std::uint32_t k = 0; k < n; ++k)
+      if (reflex[k]) run.row_of[k] = rows++;
+    run.cells.resize(std::size_t(rows) * n);
+    // Visibility through a triangulation of the same cleaned ring (positions from indices).
+    const PolygonTriangulation tri = triangulate_monotone(points, ring_ends);
+    bool mapped = tri.status == Status::ok;
+    std::vector<std::array<std::uint32_t, 3>> tris;
+    if (mapped) {
+      std::vector<std::uint32_t> pos(points.size(), KeilRun<T>::kNone);
+      for (std::uint32_t k = 0; k < n; ++k) pos[verts[k]] = k;
+      for (const auto& t : tri.triangles) {
+        const std::array<std::uint32_t, 3> q{pos[t[0]], pos[t[1]], pos[t[2]]};
+        if (q[0] == KeilRun<T>::kNone || q[1] == KeilRun<T>::kNone || q[2] == KeilRun<T>::kNone)
+          mapped = false;
+        tris.push_back(q);
+      }
+    }
+    if (!mapped) {
+      // Not a simple ring after all (e.g. a vertex on an edge): the direct programme decides.
+      return n <= min_convex_partition_limit
+                 ? min_convex_partition(points, ring_ends, MinConvexMethod::direct)
+                 : ConvexPartition{Status::invalid_topology, {}, {}, {}};
+    }
+    run.visibility(tris);
+    for (std::uint32_t len = 2; len < n; ++len)
+      for (std::uint32_t a = 0; a + len < n; ++a) run.solve(a, a + len);
+    const auto* top = run.cell(0, n - 1);
+    if (top->f == KeilRun<T>::kNone || top->count == 0) {
+      r.status = Status::invalid_topology;  // unreachable for a simple polygon
+      return r;
+    }
+    std::vector<std::uint32_t> ch;
+    run.chain(0, n - 1, top->first, ch, r);
+    for (const std::uint32_t v : ch) r.vertices.push_back(verts[v]);
+    r.piece_ends.push_back(static_cast<std::uint32_t>(r.vertices.size()));
     return r;
   }
   if (n > min_convex_partition_limit) {
@@ -259,8 +650,10 @@ template ConvexPartition convex_partition<float>(std::span<const Vec2<float>>,
 template ConvexPartition convex_partition<double>(std::span<const Vec2<double>>,
                                                   std::span<const std::uint32_t>);
 template ConvexPartition min_convex_partition<float>(std::span<const Vec2<float>>,
-                                                     std::span<const std::uint32_t>);
+                                                     std::span<const std::uint32_t>,
+                                                     MinConvexMethod);
 template ConvexPartition min_convex_partition<double>(std::span<const Vec2<double>>,
-                                                      std::span<const std::uint32_t>);
+                                                      std::span<const std::uint32_t>,
+                                                      MinConvexMethod);
 
 }  // namespace locus

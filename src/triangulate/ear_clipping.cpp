@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <queue>
 #include <utility>
 
 namespace locus {
@@ -29,7 +31,9 @@ struct EarClipRun {
   std::vector<Node>& nodes;
   std::vector<std::uint32_t>& late;  // reflex vertices that were convex when the grid was built
   std::vector<std::uint32_t>& cell_start;
-  std::vector<std::uint32_t>& cell_nodes;
+  std::vector<std::uint32_t>& cell_count;  // live entries at the front of each cell
+  std::vector<GridEntry<T>>& cell_items;
+  std::vector<std::uint32_t>& grid_pos;  // per node: its slot in cell_items, or kNone
   double min_x = 0, min_y = 0, inv_x = 0, inv_y = 0;
   std::uint32_t gx = 1, gy = 1;
 
@@ -82,6 +86,116 @@ struct EarClipRun {
            o4 != Sign::zero && o3 != o4;
   }
 
+  // The bridge index: every ring edge (a pair of nodes, fixed geometry) and every vertex in a
+  // uniform grid of linked cells, so the bridge searches look only near the hole. Bridges and
+  // the vertex copies they make are added as they are made. ring_of: a node's input ring (0 for
+  // the copies, which belong to the joined ring); joined: rings already part of ring 0.
+  double bmin_x = 0, bmin_y = 0, binv_x = 0, binv_y = 0;
+  std::uint32_t bgx = 1, bgy = 1;
+  std::vector<std::uint32_t> edge_head = {}, edge_link = {}, vert_head = {}, vert_link = {},
+                             vert_node = {}, ring_of = {};
+  std::vector<std::array<std::uint32_t, 2>> edge_nodes = {};
+  std::vector<std::uint8_t> joined = {};
+
+  std::uint32_t bcell_x(T x) const { return bcell_xd(double(x)); }
+  std::uint32_t bcell_xd(double x) const {
+    const double c = (x * 0.5 - bmin_x) * binv_x;
+    return c >= 1.0 ? std::min(bgx - 1, static_cast<std::uint32_t>(c)) : 0u;
+  }
+  std::uint32_t bcell_y(T y) const {
+    const double c = (double(y) * 0.5 - bmin_y) * binv_y;
+    return c >= 1.0 ? std::min(bgy - 1, static_cast<std::uint32_t>(c)) : 0u;
+  }
+
+  void index_edge(std::uint32_t from, std::uint32_t to) {
+    const Vec2<T>&a = at(from), &b = at(to);
+    const std::uint32_t item = static_cast<std::uint32_t>(edge_nodes.size());
+    edge_nodes.push_back({from, to});
+    edge_link.push_back(kNone);
+    bool first = true;
+    for (std::uint32_t y = bcell_y(std::min(a.y, b.y)), y1 = bcell_y(std::max(a.y, b.y)); y <= y1;
+         ++y)
+      for (std::uint32_t x = bcell_x(std::min(a.x, b.x)), x1 = bcell_x(std::max(a.x, b.x)); x <= x1;
+           ++x) {
+        // One item per edge and cell: cells after the first get their own link entries.
+        std::uint32_t slot = item;
+        if (!first) {
+          slot = static_cast<std::uint32_t>(edge_nodes.size());
+          edge_nodes.push_back({from, to});
+          edge_link.push_back(kNone);
+        }
+        first = false;
+        const std::size_t c = std::size_t(y) * bgx + x;
+        edge_link[slot] = edge_head[c];
+        edge_head[c] = slot;
+      }
+  }
+
+  void index_vertex(std::uint32_t n) {
+    const std::size_t c = std::size_t(bcell_y(at(n).y)) * bgx + bcell_x(at(n).x);
+    vert_node.push_back(n);
+    vert_link.push_back(vert_head[c]);
+    vert_head[c] = static_cast<std::uint32_t>(vert_node.size() - 1);
+  }
+
+  // Builds the bridge index over the rings (nodes 0 .. ring_ends.back()).
+  void build_bridge_index(std::span<const std::uint32_t> ring_ends) {
+    const std::uint32_t n = static_cast<std::uint32_t>(nodes.size());
+    double lx = std::numeric_limits<double>::infinity(), ly = lx, hx = -lx, hy = -lx;
+    for (std::uint32_t v = 0; v < n; ++v) {
+      const Vec2<T>& p = at(v);
+      lx = std::min(lx, double(p.x) * 0.5);
+      hx = std::max(hx, double(p.x) * 0.5);
+      ly = std::min(ly, double(p.y) * 0.5);
+      hy = std::max(hy, double(p.y) * 0.5);
+    }
+    const double w = hx - lx, h = hy - ly;
+    const double cells = std::max(1.0, double(n) * 0.5);
+    double fx = w > 0 && h > 0 ? std::sqrt(cells * w / h) : (w > 0 ? cells : 1.0);
+    fx = std::clamp(fx, 1.0, 2048.0);
+    const double fy = std::clamp(h > 0 ? cells / fx : 1.0, 1.0, 2048.0);
+    bmin_x = lx;
+    bmin_y = ly;
+    bgx = static_cast<std::uint32_t>(fx);
+    bgy = static_cast<std::uint32_t>(fy);
+    // Long edges would fill many cells: coarsen until the edges cover at most ~8 n cells.
+    for (;;) {
+      binv_x = w > 0 ? double(bgx) / w : 0.0;
+      binv_y = h > 0 ? double(bgy) / h : 0.0;
+      if (!std::isfinite(binv_x)) binv_x = 0.0, bgx = 1;
+      if (!std::isfinite(binv_y)) binv_y = 0.0, bgy = 1;
+      double covered = 0;
+      for (std::uint32_t v = 0; v < n; ++v) {
+        const Vec2<T>&a = at(v), &b = at(nodes[v].next);
+        covered += double(bcell_x(std::max(a.x, b.x)) - bcell_x(std::min(a.x, b.x)) + 1) *
+                   double(bcell_y(std::max(a.y, b.y)) - bcell_y(std::min(a.y, b.y)) + 1);
+      }
+      if (covered <= 8.0 * n + 64 || (bgx == 1 && bgy == 1)) break;
+      bgx = std::max(1u, bgx / 2);
+      bgy = std::max(1u, bgy / 2);
+    }
+    edge_head.assign(std::size_t(bgx) * bgy, kNone);
+    vert_head.assign(std::size_t(bgx) * bgy, kNone);
+    edge_nodes.clear();
+    edge_link.clear();
+    vert_node.clear();
+    vert_link.clear();
+    ring_of.assign(n, 0);
+    joined.assign(ring_ends.size(), 0);
+    joined[0] = 1;
+    std::uint32_t begin = 0;
+    for (std::uint32_t r = 0; r < ring_ends.size(); ++r) {
+      for (std::uint32_t v = begin; v < ring_ends[r]; ++v) ring_of[v] = r;
+      begin = ring_ends[r];
+    }
+    for (std::uint32_t v = 0; v < n; ++v) {
+      index_edge(v, nodes[v].next);
+      index_vertex(v);
+    }
+  }
+
+  bool in_joined_ring(std::uint32_t v) const { return v >= ring_of.size() || joined[ring_of[v]]; }
+
   // The exact bridge test: the segment from outer node p to hole node m leaves both cones
   // inward and no edge of any ring blocks it.
   bool bridge_visible(std::uint32_t p, std::uint32_t m) const {
@@ -92,80 +206,124 @@ struct EarClipRun {
     if (!locally_inside(p, pm) || !locally_inside(m, pp)) return false;
     const T lo_x = std::min(pm.x, pp.x), hi_x = std::max(pm.x, pp.x);
     const T lo_y = std::min(pm.y, pp.y), hi_y = std::max(pm.y, pp.y);
-    for (const Node& e : nodes) {
-      if (e.removed) continue;
-      const Vec2<T>& a = pts[e.index];
-      const Vec2<T>& b = pts[nodes[e.next].index];
-      if (std::max(a.x, b.x) < lo_x || std::min(a.x, b.x) > hi_x || std::max(a.y, b.y) < lo_y ||
-          std::min(a.y, b.y) > hi_y)
-        continue;
-      if (blocks(pm, pp, a, b)) return false;
-    }
+    for (std::uint32_t y = bcell_y(lo_y), y1 = bcell_y(hi_y); y <= y1; ++y)
+      for (std::uint32_t x = bcell_x(lo_x), x1 = bcell_x(hi_x); x <= x1; ++x)
+        for (std::uint32_t i = edge_head[std::size_t(y) * bgx + x]; i != kNone; i = edge_link[i]) {
+          const Vec2<T>& a = at(edge_nodes[i][0]);
+          const Vec2<T>& b = at(edge_nodes[i][1]);
+          if (std::max(a.x, b.x) < lo_x || std::min(a.x, b.x) > hi_x || std::max(a.y, b.y) < lo_y ||
+              std::min(a.y, b.y) > hi_y)
+            continue;
+          if (blocks(pm, pp, a, b)) return false;
+        }
     return true;
   }
 
   // Eberly's candidate: the nearest edge hit by the ray from m towards -x, then the visible
   // vertex of smallest angle in the triangle it spans (rounded arithmetic: a guess only).
-  std::uint32_t bridge_candidate(std::uint32_t outer, std::uint32_t m) const {
+  std::uint32_t bridge_candidate(std::uint32_t m) const {
     const Vec2<T>& h = at(m);
     const double hx = double(h.x), hy = double(h.y);
     double qx = -std::numeric_limits<double>::infinity();
     std::uint32_t cand = kNone;
-    std::uint32_t p = outer;
-    do {
-      const Vec2<T>& a = at(p);
-      const Vec2<T>& b = at(nodes[p].next);
-      if (h.y <= a.y && h.y >= b.y && a.y != b.y) {
-        // The slope first: a product of two differences would leave the exponent range.
-        const double slope = (double(b.x) - double(a.x)) / (double(b.y) - double(a.y));
-        const double x = double(a.x) + (hy - double(a.y)) * slope;
-        if (x <= hx && x > qx) {
-          qx = x;
-          cand = a.x < b.x ? p : nodes[p].next;
+    // The ray runs left along one row of cells; an edge it meets at x is in the cell of x (the
+    // cell map is monotone), so the walk stops once the best hit lies right of the cell just
+    // seen (a cell of margin against the rounding of the hit).
+    const std::size_t row = std::size_t(bcell_y(h.y)) * bgx;
+    for (std::uint32_t k = bcell_x(h.x) + 1; k-- > 0;) {
+      for (std::uint32_t i = edge_head[row + k]; i != kNone; i = edge_link[i]) {
+        const std::uint32_t p = edge_nodes[i][0], pn = edge_nodes[i][1];
+        if (!in_joined_ring(p)) continue;
+        const Vec2<T>& a = at(p);
+        const Vec2<T>& b = at(pn);
+        if (h.y <= a.y && h.y >= b.y && a.y != b.y) {
+          // The slope first: a product of two differences would leave the exponent range.
+          const double slope = (double(b.x) - double(a.x)) / (double(b.y) - double(a.y));
+          const double x = double(a.x) + (hy - double(a.y)) * slope;
+          if (x <= hx && (x > qx || (x == qx && p < cand))) {
+            qx = x;
+            cand = a.x < b.x ? p : pn;
+          }
         }
       }
-      p = nodes[p].next;
-    } while (p != outer);
+      if (cand != kNone && bcell_xd(qx) > k) break;
+    }
     if (cand == kNone) return kNone;
     const Vec2<T> cm = at(cand);
     const Vec2<double> hd{hx, hy}, qd{qx, hy}, md{double(cm.x), double(cm.y)};
     const Vec2<double> t0 = hy < md.y ? hd : qd, t2 = hy < md.y ? qd : hd;
     double tan_min = std::numeric_limits<double>::infinity();
     std::uint32_t best = cand;
-    p = cand;
-    do {
+    // The candidate is tried first: among coincident vertices (touching rings) it wins ties.
+    const auto consider = [&](std::uint32_t p) {
       const Vec2<T>& q = at(p);
-      if (h.x >= q.x && q.x >= cm.x && h.x != q.x) {
-        const Vec2<double> qd2{double(q.x), double(q.y)};
-        if (orient2d(t0, md, qd2) != Sign::negative && orient2d(md, t2, qd2) != Sign::negative &&
-            orient2d(t2, t0, qd2) != Sign::negative) {
-          const double t = std::abs(hy - qd2.y) / (hx - qd2.x);
-          if (locally_inside(p, h) && (t < tan_min || (t == tan_min && q.x > at(best).x))) {
-            best = p;
-            tan_min = t;
-          }
+      if (!(h.x >= q.x && q.x >= cm.x && h.x != q.x)) return;
+      const Vec2<double> qd2{double(q.x), double(q.y)};
+      if (orient2d(t0, md, qd2) != Sign::negative && orient2d(md, t2, qd2) != Sign::negative &&
+          orient2d(t2, t0, qd2) != Sign::negative) {
+        const double t = std::abs(hy - qd2.y) / (hx - qd2.x);
+        if (locally_inside(p, h) && (t < tan_min || (t == tan_min && q.x > at(best).x))) {
+          best = p;
+          tan_min = t;
         }
       }
-      p = nodes[p].next;
-    } while (p != cand);
+    };
+    consider(cand);
+    const T lo_y = std::min(h.y, cm.y), hi_y = std::max(h.y, cm.y);
+    for (std::uint32_t y = bcell_y(lo_y), y1 = bcell_y(hi_y); y <= y1; ++y)
+      for (std::uint32_t x = bcell_x(cm.x), x1 = bcell_x(h.x); x <= x1; ++x)
+        for (std::uint32_t i = vert_head[std::size_t(y) * bgx + x]; i != kNone; i = vert_link[i]) {
+          const std::uint32_t p = vert_node[i];
+          if (p != cand && in_joined_ring(p)) consider(p);
+        }
     return best;
   }
 
   // The nearest vertex of the ring through outer that sees hole node m, or kNone.
-  std::uint32_t nearest_visible(std::uint32_t outer, std::uint32_t m) const {
-    std::vector<std::pair<double, std::uint32_t>> cands;
+  // The vertices of the joined ring in increasing (distance, node) order, found ring of cells by
+  // ring of cells around m: after the cells within Chebyshev distance k are read, every vertex
+  // not yet read is at least (k - 1) cells away (one cell of margin against the rounding of the
+  // cell map), so the candidates nearer than that are final and are tested in order.
+  std::uint32_t nearest_visible(std::uint32_t m) const {
     const Vec2<T>& h = at(m);
-    std::uint32_t q = outer;
-    do {
-      // hypot: no overflow or underflow, and exact under power-of-two scaling.
-      cands.emplace_back(std::hypot(double(at(q).x) - double(h.x), double(at(q).y) - double(h.y)),
-                         q);
-      q = nodes[q].next;
-    } while (q != outer);
-    std::sort(cands.begin(), cands.end());
-    for (const auto& c : cands)
-      if (bridge_visible(c.second, m)) return c.second;
-    return kNone;
+    const auto cx = static_cast<std::int64_t>(bcell_x(h.x));
+    const auto cy = static_cast<std::int64_t>(bcell_y(h.y));
+    const double inf = std::numeric_limits<double>::infinity();
+    const double step = std::min(binv_x > 0 ? 2.0 / binv_x : inf, binv_y > 0 ? 2.0 / binv_y : inf);
+    using Cand = std::pair<double, std::uint32_t>;
+    std::priority_queue<Cand, std::vector<Cand>, std::greater<Cand>> heap;
+    const auto scan = [&](std::int64_t x, std::int64_t y) {
+      if (x < 0 || y < 0 || x >= std::int64_t(bgx) || y >= std::int64_t(bgy)) return;
+      for (std::uint32_t i = vert_head[std::size_t(y) * bgx + std::size_t(x)]; i != kNone;
+           i = vert_link[i]) {
+        const std::uint32_t q = vert_node[i];
+        if (!in_joined_ring(q)) continue;
+        // hypot: no overflow or underflow, and exact under power-of-two scaling.
+        heap.emplace(std::hypot(double(at(q).x) - double(h.x), double(at(q).y) - double(h.y)), q);
+      }
+    };
+    const std::int64_t last = std::int64_t(std::max(bgx, bgy));
+    for (std::int64_t k = 0;; ++k) {
+      if (k == 0) {
+        scan(cx, cy);
+      } else if (k <= last) {
+        for (std::int64_t d = -k; d <= k; ++d) {
+          scan(cx + d, cy - k);
+          scan(cx + d, cy + k);
+        }
+        for (std::int64_t d = -k + 1; d <= k - 1; ++d) {
+          scan(cx - k, cy + d);
+          scan(cx + k, cy + d);
+        }
+      }
+      const double bound = k >= last ? inf : (double(k) - 1.0) * step;
+      while (!heap.empty() && heap.top().first < bound) {
+        const std::uint32_t q = heap.top().second;
+        heap.pop();
+        if (bridge_visible(q, m)) return q;
+      }
+      if (k >= last && heap.empty()) return kNone;
+    }
   }
 
   // Joins the hole whose lexicographically smallest vertex is node m to the ring through outer:
@@ -174,14 +332,14 @@ struct EarClipRun {
   // Returns false when no bridge is valid; the hole is then joined by Eberly's candidate (or
   // the nearest vertex) anyway, the best effort on input that is not a polygon.
   bool bridge(std::uint32_t outer, std::uint32_t m) {
-    const std::uint32_t guess = bridge_candidate(outer, m);
+    const std::uint32_t guess = bridge_candidate(m);
     std::uint32_t p = guess;
     bool valid = true;
     if (p == kNone || !bridge_visible(p, m)) {
       p = kNone;
       const std::uint32_t first = m;
       do {
-        p = nearest_visible(outer, m);
+        p = nearest_visible(m);
         if (p != kNone) break;
         m = nodes[m].next;
       } while (m != first);
@@ -203,6 +361,13 @@ struct EarClipRun {
     nodes[p2].prev = m2;
     nodes[mp].next = m2;
     nodes[m2].prev = mp;
+    // The hole is now part of the joined ring; the bridge's two edges and copies join the index.
+    joined[ring_of[m]] = 1;
+    ring_of.resize(nodes.size(), 0);
+    index_edge(p, m);
+    index_edge(m2, p2);
+    index_vertex(m2);
+    index_vertex(p2);
     return valid;
   }
 
@@ -221,6 +386,24 @@ struct EarClipRun {
   std::uint32_t cell_y(T y) const {
     const double c = (double(y) * 0.5 - min_y) * inv_y;
     return c >= 1.0 ? std::min(gy - 1, static_cast<std::uint32_t>(c)) : 0u;
+  }
+
+  std::size_t cell_of(const Vec2<T>& p) const {
+    return std::size_t(cell_y(p.y)) * gx + cell_x(p.x);
+  }
+
+  // Drops node v from the grid (it was cut or turned convex): the cell's last live entry takes
+  // its slot, so the ear tests only ever visit live reflex vertices.
+  void grid_remove(std::uint32_t v) {
+    if (v >= grid_pos.size() || grid_pos[v] == kNone) return;
+    const std::size_t c = cell_of(at(v));
+    const std::uint32_t last = cell_start[c] + --cell_count[c];
+    const std::uint32_t slot = grid_pos[v];
+    cell_items[slot] = cell_items[last];
+    grid_pos[cell_items[slot].node] = slot;
+    grid_pos[v] = kNone;
+    // Should it turn reflex again (only on input that is not a polygon), it goes to `late`.
+    if (v < in_grid.size()) in_grid[v] = 0;
   }
 
   void build_grid(std::uint32_t start) {
@@ -263,16 +446,21 @@ struct EarClipRun {
     cell_start.assign(std::size_t(gx) * gy + 1, 0);
     v = start;
     do {
-      if (nodes[v].reflex) ++cell_start[std::size_t(cell_y(at(v).y)) * gx + cell_x(at(v).x) + 1];
+      if (nodes[v].reflex) ++cell_start[cell_of(at(v)) + 1];
       v = nodes[v].next;
     } while (v != start);
     for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
-    cell_nodes.resize(reflex);
-    std::vector<std::uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
+    cell_items.resize(reflex);
+    cell_count.assign(std::size_t(gx) * gy, 0);
+    grid_pos.assign(nodes.size(), kNone);
     v = start;
     do {
-      if (nodes[v].reflex)
-        cell_nodes[fill[std::size_t(cell_y(at(v).y)) * gx + cell_x(at(v).x)]++] = v;
+      if (nodes[v].reflex) {
+        const std::size_t c = cell_of(at(v));
+        const std::uint32_t slot = cell_start[c] + cell_count[c]++;
+        cell_items[slot] = GridEntry<T>{at(v), v};
+        grid_pos[v] = slot;
+      }
       v = nodes[v].next;
     } while (v != start);
     // Nodes reflex now are in the grid; a node turning reflex later goes to `late`.
@@ -332,11 +520,18 @@ struct EarClipRun {
         if (h < double(x1)) x1 = static_cast<std::uint32_t>(std::max(h, double(x0)));
       }
       const std::size_t row = std::size_t(y) * gx;
-      for (std::uint32_t i = cell_start[row + x0], e = cell_start[row + x1 + 1]; i < e; ++i) {
-        const std::uint32_t n = cell_nodes[i];
-        const Vec2<T>& q = at(n);
-        if (q.x < lx || q.x > hx || q.y < ly || q.y > hy) continue;
-        if (blocks_ear(n, a, b, c, pa, pb, pc)) return false;
+      for (std::uint32_t x = x0; x <= x1; ++x) {
+        const std::uint32_t first = cell_start[row + x];
+        for (std::uint32_t i = first, e = first + cell_count[row + x]; i < e; ++i) {
+          const GridEntry<T>& item = cell_items[i];
+          const Vec2<T>& q = item.p;
+          if (q.x < lx || q.x > hx || q.y < ly || q.y > hy) continue;
+          const std::uint32_t n = item.node;
+          if (n == a || n == b || n == c || same_point(q, pa)) continue;
+          if (orient2d(pa, pb, q) != Sign::negative && orient2d(pb, pc, q) != Sign::negative &&
+              orient2d(pc, pa, q) != Sign::negative)
+            return false;
+        }
       }
     }
     for (const std::uint32_t n : late)
@@ -348,6 +543,7 @@ struct EarClipRun {
 
   void update_reflex(std::uint32_t v) {
     const std::uint8_t r = convex(v) ? 0 : 1;
+    if (!r) grid_remove(v);
     if (in_grid.size() < nodes.size()) in_grid.resize(nodes.size(), 0);
     if (r && !in_grid[v]) {
       in_grid[v] = 1;
@@ -361,6 +557,7 @@ struct EarClipRun {
     nodes[a].next = c;
     nodes[c].prev = a;
     nodes[v].removed = 1;
+    grid_remove(v);
   }
 
   void emit(std::uint32_t b) {
@@ -526,7 +723,8 @@ const PolygonTriangulation& EarClipping2<T>::compute(std::span<const Vec2<T>> po
   if (triangulate_detail::rings_cross(points, ring_, ends))
     result_.status = Status::invalid_topology;
   std::vector<std::uint32_t> late;
-  EarClipRun<T> run{points, result_, nodes_, late, cell_start_, cell_nodes_};
+  EarClipRun<T> run{points,      result_,     nodes_,      late,
+                    cell_start_, cell_count_, cell_items_, grid_pos_};
   // One cyclic list per ring; the first node of each ring is its lexicographically smallest.
   hole_starts_.clear();
   std::uint32_t begin = 0;
@@ -547,6 +745,7 @@ const PolygonTriangulation& EarClipping2<T>::compute(std::span<const Vec2<T>> po
     return s == Sign::negative || (s == Sign::zero && a < b);
   });
   const std::uint32_t outer = hole_starts_[0];
+  if (hole_starts_.size() > 1) run.build_bridge_index(ends);
   for (std::size_t h = 1; h < hole_starts_.size(); ++h) {
     if (!run.bridge(outer, hole_starts_[h])) result_.status = Status::invalid_topology;
   }

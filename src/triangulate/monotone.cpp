@@ -11,7 +11,9 @@
 #include "rings.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <iterator>
+#include <memory_resource>
 #include <numeric>
 #include <set>
 
@@ -30,6 +32,7 @@ struct Sweep {
   std::vector<VertexType> type;
   std::vector<std::array<std::uint32_t, 2>> diagonals;  // node pairs
   std::vector<Trapezoid> traps;
+  bool want_traps = false;  // only trapezoid_decomposition needs them
   Status status = Status::ok;
 
   const Vec2<T>& at(std::uint32_t n) const { return pts[index[n]]; }
@@ -45,35 +48,55 @@ struct Sweep {
   struct Key {
     Vec2<T> p;
   };
-  // Edges (id = upper node u of the downward edge u -> next[u]) ordered left to right along
-  // the sweep line. Point p is left of edge u -> l iff orient2d(u, l, p) < 0.
+  // Edge e joins node e and next[e]; up_pt/lo_pt are its endpoints in sweep order (left-chain
+  // edges run downward, e -> next[e]; right-chain edges upward). The tree holds every edge the
+  // sweep line crosses, ordered left to right; point p is left of edge u -> l (u above) iff
+  // orient2d(u, l, p) < 0.
+  std::vector<Vec2<T>> up_pt, lo_pt;
+  std::vector<std::uint8_t> downward;  // edge e runs down: the interior is to its right
+
+  // orient2d, with the frequent case of a shared endpoint (an exact zero, which the filter
+  // cannot certify and would send to the adaptive stage) answered at once.
+  static Sign orient_or_shared(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
+    if ((p.x == a.x && p.y == a.y) || (p.x == b.x && p.y == b.y)) return Sign::zero;
+    return orient2d(a, b, p);
+  }
+
   struct Less {
     Sweep* s;
     using is_transparent = void;
     bool operator()(std::uint32_t e1, std::uint32_t e2) const {
       if (e1 == e2) return false;
-      const Vec2<T>&u1 = s->at(e1), &l1 = s->at(s->next[e1]);
-      const Vec2<T>&u2 = s->at(e2), &l2 = s->at(s->next[e2]);
-      const Sign a = orient2d(u1, l1, u2), b = orient2d(u1, l1, l2);
+      const Vec2<T>&u1 = s->up_pt[e1], &l1 = s->lo_pt[e1];
+      const Vec2<T>&u2 = s->up_pt[e2], &l2 = s->lo_pt[e2];
+      const Sign a = orient_or_shared(u1, l1, u2), b = orient_or_shared(u1, l1, l2);
       if (a != Sign::negative && b != Sign::negative && (a != Sign::zero || b != Sign::zero))
         return true;
       if (a != Sign::positive && b != Sign::positive && (a != Sign::zero || b != Sign::zero))
         return false;
       if (a == Sign::zero && b == Sign::zero) return e1 < e2;
       // e2 straddles e1's line; since they do not cross, e1 lies on one side of e2's line.
-      const Sign c = orient2d(u2, l2, u1), d = orient2d(u2, l2, l1);
-      // Each straddles the other's line: the edges cross (the tree compares an inserted edge
-      // with both its neighbours, as Shamos and Hoey's test does).
+      const Sign c = orient_or_shared(u2, l2, u1), d = orient_or_shared(u2, l2, l1);
+      // Each straddles the other's line: the edges cross.
       if (c != Sign::zero && d != Sign::zero && c != d) s->status = Status::invalid_topology;
       return c != Sign::positive && d != Sign::positive;
     }
     bool operator()(std::uint32_t e, const Key& k) const {
-      return orient2d(s->at(e), s->at(s->next[e]), k.p) == Sign::positive;
+      return orient2d(s->up_pt[e], s->lo_pt[e], k.p) == Sign::positive;
     }
     bool operator()(const Key& k, std::uint32_t e) const {
-      return orient2d(s->at(e), s->at(s->next[e]), k.p) == Sign::negative;
+      return orient2d(s->up_pt[e], s->lo_pt[e], k.p) == Sign::negative;
     }
   };
+
+  // Whether edges e and f cross properly (interiors meet in one point; exact).
+  bool crosses(std::uint32_t e, std::uint32_t f) const {
+    const Vec2<T>&a = up_pt[e], &b = lo_pt[e], &p = up_pt[f], &q = lo_pt[f];
+    const Sign o1 = orient_or_shared(a, b, p), o2 = orient_or_shared(a, b, q);
+    if (o1 == Sign::zero || o2 == Sign::zero || o1 == o2) return false;
+    const Sign o3 = orient2d(p, q, a), o4 = orient2d(p, q, b);
+    return o3 != Sign::zero && o4 != Sign::zero && o3 != o4;
+  }
 
   void build(const std::vector<std::uint32_t>& verts, const std::vector<std::uint32_t>& ends) {
     const std::size_t m = verts.size();
@@ -89,6 +112,14 @@ struct Sweep {
       begin = end;
     }
     type.resize(m);
+    up_pt.resize(m);
+    lo_pt.resize(m);
+    downward.resize(m);
+    for (std::uint32_t e = 0; e < m; ++e) {
+      downward[e] = above(e, next[e]) ? 1 : 0;
+      up_pt[e] = at(downward[e] ? e : next[e]);
+      lo_pt[e] = at(downward[e] ? next[e] : e);
+    }
     for (std::uint32_t v = 0; v < m; ++v) {
       const bool p_below = above(v, prev[v]), n_below = above(v, next[v]);
       const bool convex = orient2d(at(prev[v]), at(v), at(next[v])) == Sign::positive;
@@ -102,7 +133,7 @@ struct Sweep {
   }
 
   void close(std::uint32_t left, std::uint32_t right, std::uint32_t top, std::uint32_t bottom) {
-    if (left == kNone || right == kNone || top == kNone) return;
+    if (!want_traps || left == kNone || right == kNone || top == kNone) return;
     if (at(top).y == at(bottom).y) return;
     traps.push_back(Trapezoid{{index[left], index[next[left]]},
                               {index[next[right]], index[right]},
@@ -110,61 +141,153 @@ struct Sweep {
                               index[bottom]});
   }
 
+  // An order-preserving unsigned image of y (larger y first), -0 and +0 alike.
+  static std::uint64_t descending_key(T y) {
+    const double d = y == T(0) ? 0.0 : double(y);
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(d);
+    const std::uint64_t ascending = (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t(1) << 63);
+    return ~ascending;
+  }
+
+  // The nodes in sweep order (y down, then x up, then node): a stable radix sort on y, then
+  // runs of equal y sorted by x.
+  template <class Event>
+  void sweep_order(std::vector<Event>& events) const {
+    const std::uint32_t m = static_cast<std::uint32_t>(index.size());
+    const auto less = [](const Event& a, const Event& b) {
+      if (a.y != b.y) return a.y > b.y;
+      if (a.x != b.x) return a.x < b.x;
+      return a.node < b.node;
+    };
+    for (std::uint32_t v = 0; v < m; ++v) events[v] = Event{at(v).y, at(v).x, v};
+    if (m < 4096) {
+      std::sort(events.begin(), events.end(), less);
+      return;
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(m), tmp(m);
+    for (std::uint32_t v = 0; v < m; ++v) keys[v] = {descending_key(at(v).y), v};
+    std::vector<std::uint32_t> count(65536);
+    for (int shift = 0; shift < 64; shift += 16) {
+      std::fill(count.begin(), count.end(), 0u);
+      for (const auto& k : keys) ++count[(k.first >> shift) & 0xFFFF];
+      std::uint32_t sum = 0;
+      for (auto& c : count) {
+        const std::uint32_t c0 = c;
+        c = sum;
+        sum += c0;
+      }
+      for (const auto& k : keys) tmp[count[(k.first >> shift) & 0xFFFF]++] = k;
+      keys.swap(tmp);
+    }
+    for (std::uint32_t i = 0; i < m; ++i) {
+      const std::uint32_t v = keys[i].second;
+      events[i] = Event{at(v).y, at(v).x, v};
+    }
+    for (std::uint32_t i = 0; i < m;) {
+      std::uint32_t j = i + 1;
+      while (j < m && keys[j].first == keys[i].first) ++j;
+      if (j - i > 1) std::sort(events.begin() + i, events.begin() + j, less);
+      i = j;
+    }
+  }
+
   // The sweep of monotone.hpp: diagonals (node pairs) and trapezoids.
   void run() {
     const std::uint32_t m = static_cast<std::uint32_t>(index.size());
-    std::vector<std::uint32_t> order(m);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return above(a, b); });
-    using Tree = std::set<std::uint32_t, Less>;
-    Tree tree(Less{this});
+    // Sweep order on flat keys (no indirection in the comparisons).
+    struct Event {
+      T y, x;
+      std::uint32_t node;
+    };
+    std::vector<Event> events(m);
+    sweep_order(events);
+    // Tree nodes come from a pool: one allocation per chunk, not per edge.
+    std::pmr::unsynchronized_pool_resource pool;
+    using Tree = std::pmr::set<std::uint32_t, Less>;
+    Tree tree(Less{this}, &pool);
     std::vector<typename Tree::iterator> where(m, tree.end());
     std::vector<std::uint32_t> helper(m, kNone), right(m, kNone), top(m, kNone);
     const auto diag_if_merge = [&](std::uint32_t v, std::uint32_t e) {
       if (helper[e] != kNone && type[helper[e]] == VertexType::merge)
         diagonals.push_back({v, helper[e]});
     };
-    const auto insert = [&](std::uint32_t e, std::uint32_t v, std::uint32_t r) {
-      const auto [it, inserted] = tree.insert(e);
+    // Shamos and Hoey: every pair of edges that becomes adjacent in the tree is tested, so the
+    // first proper crossing is met before the sweep passes it (touching is not a crossing here;
+    // the interval checks below catch the rest).
+    const auto check = [&](typename Tree::iterator x, typename Tree::iterator y) {
+      if (x != tree.end() && y != tree.end() && crosses(*x, *y)) status = Status::invalid_topology;
+    };
+    using It = typename Tree::iterator;
+    // Inserts edge e just before `hint` when that is its place (amortised O(1); std::set checks
+    // the hint against both neighbours and searches the whole tree otherwise).
+    const auto insert_edge = [&](std::uint32_t e, It hint) {
+      const std::size_t size = tree.size();
+      const It it = tree.insert(hint, e);
       // An equal key exists only for overlapping edges: not a polygon.
-      if (!inserted) status = Status::invalid_topology;
-      where[e] = inserted ? it : tree.end();
+      if (tree.size() == size) {
+        status = Status::invalid_topology;
+        return tree.end();
+      }
+      where[e] = it;
+      if (it != tree.begin()) check(std::prev(it), it);
+      check(it, std::next(it));
+      return it;
+    };
+    const auto set_interval = [&](std::uint32_t e, std::uint32_t v, std::uint32_t r) {
       helper[e] = v;
       right[e] = r;
       top[e] = v;
     };
+    // Erases edge e; returns the iterator after it (tree.end() on failure, with the status set).
     const auto erase = [&](std::uint32_t e) {
       if (where[e] == tree.end()) {
         status = Status::invalid_topology;
-        return false;
+        return tree.end();
       }
-      tree.erase(where[e]);
+      const It after = tree.erase(where[e]);
+      if (after != tree.begin() && after != tree.end()) check(std::prev(after), after);
       where[e] = tree.end();
-      return true;
+      return after;
     };
-    const auto left_of = [&](std::uint32_t v) {
-      auto it = tree.lower_bound(Key{at(v)});
-      if (it == tree.begin()) {
+    // The left edge (downward) directly before position it, or kNone (status set).
+    const auto left_before = [&](It it) {
+      if (it == tree.begin() || !downward[*std::prev(it)]) {
         status = Status::invalid_topology;
         return kNone;
       }
-      return *--it;
+      return *std::prev(it);
     };
-    for (const std::uint32_t v : order) {
+    for (const Event& event : events) {
+      const std::uint32_t v = event.node;
       // The tree order assumes non-crossing edges: stop at the first sign of a crossing.
       if (status != Status::ok) return;
       const std::uint32_t ein = prev[v], eout = v;
+      // An upward edge leaving v ends here (v is its lower endpoint). The left edge of the
+      // interval it bounded on the right is its tree predecessor.
+      It hint = tree.end();
+      std::uint32_t left_of_out = kNone;
+      if (!downward[eout]) {
+        if (where[eout] == tree.end()) {
+          status = Status::invalid_topology;
+          return;
+        }
+        left_of_out = left_before(where[eout]);
+        hint = erase(eout);
+        if (status != Status::ok) return;
+      }
       switch (type[v]) {
         case VertexType::start: {
           // A start vertex lies outside the polygon above it: not strictly inside an interval.
-          const auto it = tree.lower_bound(Key{at(v)});
+          const It it = tree.lower_bound(Key{at(v)});
           if (it != tree.begin()) {
             const std::uint32_t r = right[*std::prev(it)];
             if (r != kNone && orient2d(at(r), at(next[r]), at(v)) == Sign::positive)
               status = Status::invalid_topology;
           }
-          insert(eout, v, ein);
+          // Left edge eout, then right edge ein.
+          const It at_out = insert_edge(eout, it);
+          set_interval(eout, v, ein);
+          if (at_out != tree.end()) insert_edge(ein, std::next(at_out));
           break;
         }
         case VertexType::end:
@@ -178,7 +301,8 @@ struct Sweep {
           erase(ein);
           break;
         case VertexType::split: {
-          const std::uint32_t ej = left_of(v);
+          const It it = tree.lower_bound(Key{at(v)});
+          const std::uint32_t ej = left_before(it);
           if (ej == kNone) break;
           // v must lie strictly inside the interval (ej, right[ej]).
           if (right[ej] == kNone ||
@@ -187,10 +311,11 @@ struct Sweep {
           diagonals.push_back({v, helper[ej]});
           close(ej, right[ej], top[ej], v);
           const std::uint32_t r = right[ej];
-          helper[ej] = v;
-          right[ej] = ein;
-          top[ej] = v;
-          insert(eout, v, r);
+          set_interval(ej, v, ein);
+          // Right edge ein, then left edge eout.
+          const It at_in = insert_edge(ein, it);
+          if (at_in != tree.end()) insert_edge(eout, std::next(at_in));
+          set_interval(eout, v, r);
           break;
         }
         case VertexType::merge: {
@@ -202,14 +327,12 @@ struct Sweep {
           close(ein, right[ein], top[ein], v);
           const std::uint32_t r = right[ein];
           erase(ein);
-          const std::uint32_t ej = left_of(v);
+          const std::uint32_t ej = left_of_out;
           if (ej == kNone) break;
           if (right[ej] != eout) status = Status::invalid_topology;
           diag_if_merge(v, ej);
           close(ej, right[ej], top[ej], v);
-          helper[ej] = v;
-          right[ej] = r;
-          top[ej] = v;
+          set_interval(ej, v, r);
           break;
         }
         case VertexType::regular_right: {  // on a left chain: the interior is to its right
@@ -223,19 +346,21 @@ struct Sweep {
           // The left chain continues strictly left of the right edge of its interval.
           if (r == kNone || orient2d(at(r), at(next[r]), at(v)) != Sign::positive)
             status = Status::invalid_topology;
-          erase(ein);
-          insert(eout, v, r);
+          const It after = erase(ein);
+          if (status != Status::ok) break;
+          insert_edge(eout, after);
+          set_interval(eout, v, r);
           break;
         }
         case VertexType::regular_left: {
-          const std::uint32_t ej = left_of(v);
+          const std::uint32_t ej = left_of_out;
           if (ej == kNone) break;
           if (right[ej] != eout) status = Status::invalid_topology;
           diag_if_merge(v, ej);
           close(ej, right[ej], top[ej], v);
-          helper[ej] = v;
-          right[ej] = ein;
-          top[ej] = v;
+          set_interval(ej, v, ein);
+          // The right chain continues: ein takes eout's place.
+          if (status == Status::ok) insert_edge(ein, hint);
           break;
         }
       }
@@ -270,6 +395,7 @@ struct Sweep {
     }
     // Neighbours counter-clockwise by angle (half-plane, then orient2d: exact).
     for (std::uint32_t v = 0; v < m; ++v) {
+      if (start[v + 1] - start[v] <= 2) continue;  // two neighbours: one cyclic order
       const Vec2<T>& c = at(v);
       const auto half = [&](std::uint32_t w) {
         const Vec2<T>& p = at(w);
@@ -399,7 +525,8 @@ Status decompose(std::span<const Vec2<T>> points, std::span<const std::uint32_t>
   const Status s = triangulate_detail::prepare_rings(points, ring_ends, true, verts, ends);
   if (s != Status::ok) return s;
   holes = ends.size() - 1;
-  if (triangulate_detail::rings_cross(points, verts, ends)) return Status::invalid_topology;
+  // The sweep itself tests every pair of edges that become neighbours (Shamos and Hoey), so a
+  // proper crossing gives invalid_topology without a separate rings_cross pass.
   sw.pts = points;
   sw.build(verts, ends);
   sw.run();
@@ -458,6 +585,7 @@ TrapezoidDecomposition trapezoid_decomposition(std::span<const Vec2<T>> points,
                                                std::span<const std::uint32_t> ring_ends) {
   TrapezoidDecomposition out;
   Sweep<T> sw;
+  sw.want_traps = true;
   std::size_t holes = 0;
   out.status = decompose(points, ring_ends, sw, holes);
   if (out.status == Status::ok) out.trapezoids = std::move(sw.traps);

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <memory_resource>
 #include <set>
 #include <span>
 #include <vector>
@@ -140,18 +141,36 @@ template <Real T>
     begin = end;
   }
   const auto at = [&](std::uint32_t n) -> const Vec2<T>& { return points[verts[n]]; };
-  const auto above = [&](std::uint32_t a, std::uint32_t b) {
-    const Vec2<T>&pa = at(a), &pb = at(b);
-    if (pa.y != pb.y) return pa.y > pb.y;
-    if (pa.x != pb.x) return pa.x < pb.x;
-    return a < b;
+  // Sweep order: higher first, then further left, then node; rank[n] its position.
+  struct Event {
+    T y, x;
+    std::uint32_t node;
   };
-  // Edge e joins node e and next[e]; up/lo its endpoints in sweep order.
-  const auto up = [&](std::uint32_t e) { return above(e, next[e]) ? e : next[e]; };
-  const auto lo = [&](std::uint32_t e) { return above(e, next[e]) ? next[e] : e; };
+  std::vector<Event> events(m);
+  for (std::uint32_t i = 0; i < m; ++i) events[i] = Event{at(i).y, at(i).x, i};
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    if (a.y != b.y) return a.y > b.y;
+    if (a.x != b.x) return a.x < b.x;
+    return a.node < b.node;
+  });
+  std::vector<std::uint32_t> rank(m);
+  for (std::uint32_t i = 0; i < m; ++i) rank[events[i].node] = i;
+  // Edge e joins node e and next[e]; up/lo its endpoints in sweep order, stored flat so the
+  // tree comparisons read one place.
+  std::vector<Vec2<T>> up(m), lo(m);
+  for (std::uint32_t e = 0; e < m; ++e) {
+    const bool down = rank[e] < rank[next[e]];
+    up[e] = at(down ? e : next[e]);
+    lo[e] = at(down ? next[e] : e);
+  }
+  // orient2d with a shared endpoint (an exact zero the filter cannot certify) answered at once.
+  const auto orient = [](const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
+    if ((p.x == a.x && p.y == a.y) || (p.x == b.x && p.y == b.y)) return Sign::zero;
+    return orient2d(a, b, p);
+  };
   const auto crosses = [&](std::uint32_t e, std::uint32_t f) {
-    const Vec2<T>&a = at(e), &b = at(next[e]), &p = at(f), &q = at(next[f]);
-    const Sign o1 = orient2d(a, b, p), o2 = orient2d(a, b, q);
+    const Vec2<T>&a = up[e], &b = lo[e], &p = up[f], &q = lo[f];
+    const Sign o1 = orient(a, b, p), o2 = orient(a, b, q);
     if (o1 == Sign::zero || o2 == Sign::zero || o1 == o2) return false;
     const Sign o3 = orient2d(p, q, a), o4 = orient2d(p, q, b);
     return o3 != Sign::zero && o4 != Sign::zero && o3 != o4;
@@ -161,38 +180,40 @@ template <Real T>
   // way sets `found`, and the sweep stops at the next event).
   const auto less = [&](std::uint32_t e1, std::uint32_t e2) {
     if (e1 == e2) return false;
-    const Vec2<T>&u1 = at(up(e1)), &l1 = at(lo(e1)), &u2 = at(up(e2)), &l2 = at(lo(e2));
-    const Sign a = orient2d(u1, l1, u2), b = orient2d(u1, l1, l2);
+    const Vec2<T>&u1 = up[e1], &l1 = lo[e1], &u2 = up[e2], &l2 = lo[e2];
+    const Sign a = orient(u1, l1, u2), b = orient(u1, l1, l2);
     if (a != Sign::negative && b != Sign::negative && (a != Sign::zero || b != Sign::zero))
       return true;
     if (a != Sign::positive && b != Sign::positive && (a != Sign::zero || b != Sign::zero))
       return false;
     if (a == Sign::zero && b == Sign::zero) return e1 < e2;
-    const Sign c = orient2d(u2, l2, u1), d = orient2d(u2, l2, l1);
+    const Sign c = orient(u2, l2, u1), d = orient(u2, l2, l1);
     if (c != Sign::zero && d != Sign::zero && c != d) found = true;
     return c != Sign::positive && d != Sign::positive;
   };
-  std::vector<std::uint32_t> order(m);
-  for (std::uint32_t i = 0; i < m; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), above);
-  std::set<std::uint32_t, decltype(less)> tree(less);
-  using It = typename std::set<std::uint32_t, decltype(less)>::iterator;
+  // Tree nodes from a pool (no allocation per edge).
+  std::pmr::unsynchronized_pool_resource pool;
+  using Tree = std::pmr::set<std::uint32_t, decltype(less)>;
+  Tree tree(less, &pool);
+  using It = typename Tree::iterator;
   std::vector<It> where(m, tree.end());
   const auto check = [&](It a, It b) {
     if (a != tree.end() && b != tree.end() && crosses(*a, *b)) found = true;
   };
-  for (const std::uint32_t v : order) {
+  for (const Event& event : events) {
+    const std::uint32_t v = event.node;
     if (found) return true;
-    for (const std::uint32_t e : {prev[v], v}) {  // edges ending here first
-      if (lo(e) != v || where[e] == tree.end()) continue;
-      const It it = where[e];
-      const It after = std::next(it);
-      if (it != tree.begin()) check(std::prev(it), after);
-      tree.erase(it);
+    // Edges ending here first.
+    for (const std::uint32_t e : {prev[v], v}) {
+      const bool finishes = e == v ? rank[v] > rank[next[v]] : rank[v] > rank[e];
+      if (!finishes || where[e] == tree.end()) continue;
+      const It after = tree.erase(where[e]);
       where[e] = tree.end();
+      if (after != tree.begin()) check(std::prev(after), after);
     }
     for (const std::uint32_t e : {prev[v], v}) {
-      if (up(e) != v) continue;
+      const bool starts = e == v ? rank[v] < rank[next[v]] : rank[v] < rank[e];
+      if (!starts) continue;
       const auto [it, inserted] = tree.insert(e);
       if (!inserted) continue;  // collinear overlap with the same key: not a proper crossing
       where[e] = it;

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 namespace {
@@ -252,12 +253,98 @@ TYPED_TEST(ConvexPartitionTest, DegenerateAndBadInput) {
   // A self-crossing ring (bow tie with a notch) is rejected.
   std::vector<Vec2<T>> bow{{0, 0}, {2, 2}, {2, 0}, {1, T(0.5)}, {0, 2}};
   EXPECT_EQ(locus::min_convex_partition(bow, e5).status, Status::invalid_topology);
-  // Above the size limit: the Hertel-Mehlhorn pieces with limit_exceeded.
+  // Above the direct programme's size limit: the Hertel-Mehlhorn pieces with limit_exceeded;
+  // Keil's programme has no such cap.
   locus_test::Rng rng;
   const auto big = locus_test::star_polygon<T>(rng, 80, 0.3, 1.0);
-  const auto lim = locus::min_convex_partition(big.points, big.ends);
+  const auto lim =
+      locus::min_convex_partition(big.points, big.ends, locus::MinConvexMethod::direct);
   EXPECT_EQ(lim.status, Status::limit_exceeded);
   EXPECT_EQ(check_pieces(big, lim), "");
+  const auto keil = locus::min_convex_partition(big.points, big.ends);
+  EXPECT_EQ(keil.status, Status::ok);
+  EXPECT_EQ(check_pieces(big, keil), "");
+  EXPECT_LE(keil.piece_count(), lim.piece_count());
+}
+
+// Keil's programme against the direct O(n^5) one (an independent formulation: chains of valid
+// diagonals, no narrowest pairs) on seeded random polygons of up to 40 vertices: equal piece
+// counts, pieces convex and tiling the polygon exactly.
+TYPED_TEST(ConvexPartitionTest, KeilMatchesTheDirectProgramme) {
+  using T = TypeParam;
+  locus_test::Rng rng(locus_test::test_seed() + 7);
+  SCOPED_TRACE(rng.trace());
+  int snapped_ok = 0;
+  for (int k = 0; k < 40; ++k) {
+    Polygon<T> p;
+    if (k % 6 == 5) {
+      p = locus_test::comb_polygon<T>(rng, rng.uniform_int(2, 8));
+    } else {
+      p = locus_test::star_polygon<T>(rng,
+                                      k < 60 ? rng.uniform_int(5, 24) : rng.uniform_int(25, 40),
+                                      rng.uniform(0.1, 0.5), 1.0);
+      // Every other star snapped to a coarse grid: many collinear vertices, straight angles in
+      // the pieces, diagonals running along polygon edges.
+      if (k % 2 == 0) {
+        const T scale = T(rng.uniform_int(2, 7));
+        for (auto& v : p.points) v = {std::round(v.x * scale), std::round(v.y * scale)};
+      }
+    }
+    const auto keil = locus::min_convex_partition(p.points, p.ends);
+    const auto direct =
+        locus::min_convex_partition(p.points, p.ends, locus::MinConvexMethod::direct);
+    if (direct.status != Status::ok) {  // snapping made it self-touching or degenerate
+      EXPECT_EQ(keil.status, direct.status) << k;
+      continue;
+    }
+    ASSERT_EQ(keil.status, Status::ok) << k;
+    ASSERT_EQ(keil.piece_count(), direct.piece_count()) << k;
+    ASSERT_EQ(keil.diagonals.size() + 1, keil.piece_count()) << k;
+    ASSERT_EQ(check_pieces(p, keil), "") << k;
+    snapped_ok += k % 6 != 5 && k % 2 == 0;
+  }
+  EXPECT_GT(snapped_ok, 8);
+}
+
+// Straight angles (found by comparing the two programmes on grid-snapped polygons): a piece
+// whose side runs straight through both ends of its diagonal (needs the two-sided merge), a
+// reflex vertex whose diagonal continues an edge, and straight polygon vertices.
+TYPED_TEST(ConvexPartitionTest, KeilStraightAngles) {
+  using T = TypeParam;
+  const std::vector<std::vector<Vec2<T>>> rings = {
+      {{2, 1}, {2, 3}, {-1, 3}, {-2, 1}, {-1, 0}, {-2, -1}, {0, -1}, {1, -2}, {2, -1}},
+      {{4, 2}, {1, 3}, {-1, 2}, {-1, 1}, {-5, -2}, {-1, -3}, {2, -4}, {4, -2}},
+      {{2, 1}, {1, 1}, {0, 1}, {-2, 2}, {-5, 0}, {-3, -3}, {0, -3}, {2, -3}, {2, -1}}};
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    Polygon<T> p;
+    p.add_ring(rings[k]);
+    const auto keil = locus::min_convex_partition(p.points, p.ends);
+    const auto direct =
+        locus::min_convex_partition(p.points, p.ends, locus::MinConvexMethod::direct);
+    ASSERT_EQ(keil.status, Status::ok) << k;
+    ASSERT_EQ(direct.status, Status::ok) << k;
+    EXPECT_EQ(keil.piece_count(), 2u) << k;
+    EXPECT_EQ(direct.piece_count(), 2u) << k;
+    EXPECT_EQ(check_pieces(p, keil), "") << k;
+  }
+}
+
+// Larger polygons (no cap): pieces tile the polygon, and the count lies between the lower
+// bound ceil(r / 2) + 1 and Hertel-Mehlhorn's.
+TYPED_TEST(ConvexPartitionTest, KeilOnLargerPolygons) {
+  using T = TypeParam;
+  locus_test::Rng rng(locus_test::test_seed() + 8);
+  SCOPED_TRACE(rng.trace());
+  for (int k = 0; k < 3; ++k) {
+    const auto p = locus_test::star_polygon<T>(rng, rng.uniform_int(100, 160), 0.3, 1.0);
+    const auto keil = locus::min_convex_partition(p.points, p.ends);
+    ASSERT_EQ(keil.status, Status::ok) << k;
+    ASSERT_EQ(check_pieces(p, keil), "") << k;
+    const auto hm = locus::convex_partition(p.points, p.ends);
+    EXPECT_LE(keil.piece_count(), hm.piece_count()) << k;
+    const int r = reflex_count(p.points);
+    EXPECT_GE(int(keil.piece_count()), (r + 1) / 2 + 1) << k;
+  }
 }
 
 TYPED_TEST(ConvexPartitionTest, PowerOfTwoScalingAndReversal) {

@@ -3,6 +3,7 @@
 // y-monotone counter-clockwise rings whose areas sum to the polygon's; the trapezoids have
 // left edges left of right edges and areas summing exactly to the polygon's.
 
+#include <locus/core/predicates.hpp>
 #include <locus/triangulate/monotone.hpp>
 #include <locus/triangulate/trapezoid_decomposition.hpp>
 
@@ -112,6 +113,80 @@ TYPED_TEST(Decomposition, TrapezoidsTileThePolygon) {
     }
     EXPECT_EQ(sum, locus_test::twice_polygon_area<T>(p.points, p.ends));
   }
+}
+
+// Brute force over all edge pairs: a proper crossing (interiors meet in one point), or a vertex
+// on a non-incident edge (touching), decided by orient2d.
+template <class T>
+void brute_force_crossings(const Polygon<T>& p, bool& proper, bool& touching) {
+  proper = touching = false;
+  struct Edge {
+    Vec2<T> a, b;
+  };
+  std::vector<Edge> edges;
+  std::uint32_t begin = 0;
+  for (const std::uint32_t end : p.ends) {
+    for (std::uint32_t i = begin; i < end; ++i)
+      edges.push_back({p.points[i], p.points[i + 1 == end ? begin : i + 1]});
+    begin = end;
+  }
+  const auto same = [](const Vec2<T>& u, const Vec2<T>& v) { return u.x == v.x && u.y == v.y; };
+  const auto on = [&](const Edge& e, const Vec2<T>& q) {
+    if (same(q, e.a) || same(q, e.b) || locus::orient2d(e.a, e.b, q) != locus::Sign::zero)
+      return false;
+    return (std::min(e.a.x, e.b.x) <= q.x && q.x <= std::max(e.a.x, e.b.x)) &&
+           (std::min(e.a.y, e.b.y) <= q.y && q.y <= std::max(e.a.y, e.b.y));
+  };
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const Edge &e = edges[i], &f = edges[j];
+      if (on(e, f.a) || on(e, f.b) || on(f, e.a) || on(f, e.b)) touching = true;
+      const auto o1 = locus::orient2d(e.a, e.b, f.a), o2 = locus::orient2d(e.a, e.b, f.b);
+      const auto o3 = locus::orient2d(f.a, f.b, e.a), o4 = locus::orient2d(f.a, f.b, e.b);
+      if (o1 != locus::Sign::zero && o2 != locus::Sign::zero && o1 != o2 &&
+          o3 != locus::Sign::zero && o4 != locus::Sign::zero && o3 != o4)
+        proper = true;
+    }
+}
+
+// The sweep finds crossings itself (Shamos and Hoey on its own tree): random rings, mostly
+// self-crossing, against the brute force; a ring without crossing or touching must pass.
+TYPED_TEST(Decomposition, CrossingsAgreeWithBruteForce) {
+  using T = TypeParam;
+  locus_test::Rng rng;
+  SCOPED_TRACE(rng.trace());
+  int crossing = 0, simple = 0;
+  for (int k = 0; k < 300; ++k) {
+    Polygon<T> p;
+    if (k % 3 == 0) {
+      // A star with two vertices swapped: crossing or not, depending on the radii.
+      p = locus_test::star_polygon<T>(rng, rng.uniform_int(5, 40), 0.3, 1.0, rng.uniform_int(0, 2));
+      const int n = int(p.ends[0]);
+      const int i = rng.uniform_int(0, n - 1);
+      const int j = (i + rng.uniform_int(1, 3)) % n;
+      std::swap(p.points[std::size_t(i)], p.points[std::size_t(j)]);
+    } else {
+      std::vector<Vec2<T>> ring;
+      const int n = rng.uniform_int(4, 9);
+      for (int i = 0; i < n; ++i)
+        ring.push_back({T(rng.uniform_int(0, 64)) / 64, T(rng.uniform_int(0, 64)) / 64});
+      p.add_ring(ring);
+    }
+    bool proper = false, touching = false;
+    brute_force_crossings(p, proper, touching);
+    const auto d = locus::monotone_decomposition(p.points, p.ends);
+    const auto t = locus::trapezoid_decomposition(p.points, p.ends);
+    if (proper) {
+      ++crossing;
+      EXPECT_EQ(d.status, Status::invalid_topology) << "case " << k;
+      EXPECT_EQ(t.status, Status::invalid_topology) << "case " << k;
+    } else if (!touching && d.status != Status::degenerate_input) {
+      ++simple;
+      EXPECT_EQ(d.status, Status::ok) << "case " << k;
+    }
+  }
+  EXPECT_GT(crossing, 50);
+  EXPECT_GT(simple, 30);
 }
 
 TYPED_TEST(Decomposition, BadInput) {

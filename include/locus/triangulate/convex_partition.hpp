@@ -12,15 +12,15 @@
 //    for a polygon without holes the piece count is at most 2r + 1 <= 4 x the minimum (r reflex
 //    vertices; the minimum needs at least ceil(r / 2) + 1). Holes allowed. O(n log n).
 //  * min_convex_partition: the minimum number of convex pieces over all partitions by
-//    diagonals (no Steiner points) of a polygon WITHOUT holes, exact. Neither Keil's nor
-//    Greene's algorithm: a direct dynamic programme (docs/notes/triangulate.md): f(i, j), the
-//    minimum for the sub-polygon cut off by a diagonal i j, is 1 plus the least sum of f over
-//    the steps of a convex chain i = v0 < v1 < ... < vk = j of valid diagonals or edges (an
-//    inner programme over the chain's last two vertices). Diagonal validity is exact (cone
-//    tests and closed-segment intersection by orient2d). Cost O(n^3) for validity plus
-//    about n^5 / 20 chain steps at worst, O(n^2) memory plus the chains;
-//    n at most min_convex_partition_limit (64) vertices after clean-up, else limit_exceeded with
-//    the Hertel-Mehlhorn partition as the best so far. Holes give invalid_input, no pieces.
+//    diagonals (no Steiner points) of a polygon WITHOUT holes, exact. Default: Keil and
+//    Snoeyink's programme (book section 13.9.3's "narrowest pairs"): for each sub-polygon cut
+//    off by a diagonal with a reflex (or straight) end, the least count and the narrowest
+//    (first, last) vertex pairs of the piece on that diagonal; visibility by a wedge walk
+//    through a triangulation; every decision by orient2d. O(n r^2) time (r reflex vertices),
+//    O(n r) memory; above min_convex_partition_keil_cells table records, limit_exceeded with
+//    the Hertel-Mehlhorn partition. MinConvexMethod::direct: the older direct O(n^5) programme
+//    over convex chains of diagonals, n <= min_convex_partition_limit (64), kept as an
+//    independent check. Holes give invalid_input, no pieces. docs/notes/triangulate.md.
 // Status: that of the triangulation (polygon_triangulation.hpp): pieces only when ok (or
 // limit_exceeded above). A polygon that is convex already gives one piece.
 
@@ -46,7 +46,13 @@ struct ConvexPartition {
   [[nodiscard]] std::size_t piece_count() const noexcept { return piece_ends.size(); }
 };
 
+/// Which exact minimum: Keil and Snoeyink's O(n r^2) programme (default) or the direct
+/// O(n^5) programme kept as an independent check (n at most min_convex_partition_limit).
+enum class MinConvexMethod : std::uint8_t { keil, direct };
+
 inline constexpr std::uint32_t min_convex_partition_limit = 64;
+/// Keil's tables hold r x n records (r reflex vertices): above this, limit_exceeded.
+inline constexpr std::uint64_t min_convex_partition_keil_cells = std::uint64_t(1) << 22;
 
 /// Hertel-Mehlhorn convex partition (see the top of the header).
 template <Real T>
@@ -56,7 +62,8 @@ template <Real T>
 /// Minimum convex partition of a polygon without holes (see the top of the header).
 template <Real T>
 [[nodiscard]] ConvexPartition min_convex_partition(std::span<const Vec2<T>> points,
-                                                   std::span<const std::uint32_t> ring_ends);
+                                                   std::span<const std::uint32_t> ring_ends,
+                                                   MinConvexMethod method = MinConvexMethod::keil);
 
 /// The same for any point range (core/point_range.hpp).
 template <PointRange2 R>
@@ -66,8 +73,9 @@ template <PointRange2 R>
 }
 template <PointRange2 R>
 [[nodiscard]] ConvexPartition min_convex_partition(const R& points,
-                                                   std::span<const std::uint32_t> ring_ends) {
-  return min_convex_partition(point_span(points), ring_ends);
+                                                   std::span<const std::uint32_t> ring_ends,
+                                                   MinConvexMethod method = MinConvexMethod::keil) {
+  return min_convex_partition(point_span(points), ring_ends, method);
 }
 
 extern template ConvexPartition convex_partition<float>(std::span<const Vec2<float>>,
@@ -75,8 +83,10 @@ extern template ConvexPartition convex_partition<float>(std::span<const Vec2<flo
 extern template ConvexPartition convex_partition<double>(std::span<const Vec2<double>>,
                                                          std::span<const std::uint32_t>);
 extern template ConvexPartition min_convex_partition<float>(std::span<const Vec2<float>>,
-                                                            std::span<const std::uint32_t>);
+                                                            std::span<const std::uint32_t>,
+                                                            MinConvexMethod);
 extern template ConvexPartition min_convex_partition<double>(std::span<const Vec2<double>>,
-                                                             std::span<const std::uint32_t>);
+                                                             std::span<const std::uint32_t>,
+                                                             MinConvexMethod);
 
 }  // namespace locus

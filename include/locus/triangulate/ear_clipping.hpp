@@ -14,8 +14,9 @@
 // copies. Rings that cross (exact grid test), a hole with no valid bridge, or a ring with no ear
 // (cured as earcut does: local loops cut, then split along a valid diagonal, else a convex
 // vertex cut anyway) give invalid_topology with a best effort that terminates.
-// Cost: O(n log n) sorting, O(n) per bridge, then about O(n k) for k reflex vertices per grid
-// cell (near O(n) on ordinary input). Derivation: docs/notes/triangulate.md.
+// Cost: O(n log n) sorting; per bridge the cells near it of a grid of all ring edges and
+// vertices (rings of cells outwards when the candidate fails); then about O(n k) for k live reflex vertices
+// per grid cell (near O(n) on ordinary input). Derivation: docs/notes/triangulate.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
@@ -27,6 +28,13 @@
 #include <vector>
 
 namespace locus {
+
+/// A reflex vertex in the ear-test grid (internal to EarClipping2): its point and node.
+template <Real T>
+struct GridEntry {
+  Vec2<T> p;
+  std::uint32_t node;
+};
 
 /// Reusable ear-clipping triangulator (keeps its buffers between calls).
 template <Real T>
@@ -50,7 +58,8 @@ class EarClipping2 {
 
   PolygonTriangulation result_;
   std::vector<Node> nodes_;
-  std::vector<std::uint32_t> ring_, hole_starts_, cell_start_, cell_nodes_;
+  std::vector<std::uint32_t> ring_, hole_starts_, cell_start_, cell_count_, grid_pos_;
+  std::vector<GridEntry<T>> cell_items_;
 };
 
 /// Ear clipping of a polygon with holes (one call over EarClipping2).

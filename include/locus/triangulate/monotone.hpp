@@ -5,19 +5,21 @@
 // triangulate/polygon_triangulation.hpp.
 // monotone_decomposition: a sweep from top to bottom ("above" = larger y, ties broken by
 // smaller x: lexicographic, exact) classifies every vertex as start, split, end, merge or
-// regular, keeps the edges with the interior to their right in a balanced tree ordered by
-// orient2d (exact; valid because edges do not cross) and adds a diagonal from each split and to
-// each merge vertex through the edges' helper vertices. The result: the diagonals and the
-// y-monotone pieces, counter-clockwise vertex rings back to back (`vertices`, `piece_ends`).
-// triangulate_monotone: each piece triangulated by the stack walk over its two chains; n + 2h - 2
-// triangles for n vertices (after clean-up) and h holes.
-// Degenerate input: straight runs keep their middle vertices (they are regular vertices, every
-// vertex is used); duplicates and spike tips are dropped (polygon_triangulation.hpp). The rings
-// must be simple and disjoint: a crossing the sweep detects (an edge missing from the tree, no
-// edge left of a split or merge vertex, a vertex outside its interval, two tree neighbours
-// crossing, a piece that is not closed, a wrong triangle count) gives invalid_topology and no
-// pieces or triangles; an undetected crossing gives terminating, in-range output. Use ear
-// clipping for a best effort on such input. Cost O(n log n). docs/notes/triangulate.md.
+// regular, keeps the edges the sweep line crosses in a balanced tree ordered by orient2d
+// (exact; valid because edges do not cross; each new pair of neighbours is tested for a
+// crossing, as in Shamos and Hoey) and adds a diagonal from each split and to each merge vertex
+// through the helper vertices of the edges with the interior to their right. The result: the
+// diagonals and the y-monotone pieces, counter-clockwise vertex rings back to back (`vertices`,
+// `piece_ends`). triangulate_monotone: each piece triangulated by the stack walk over its two
+// chains; n + 2h - 2 triangles for n vertices (after clean-up) and h holes. Degenerate input:
+// straight runs keep their middle vertices (they are regular vertices, every vertex is used);
+// duplicates and spike tips are dropped (polygon_triangulation.hpp). The rings must be simple and
+// disjoint: a crossing the sweep detects (an edge missing from the tree, no edge left of a split or
+// merge vertex, a vertex outside its interval, two tree neighbours crossing, a piece that is not
+// closed, a wrong triangle count) gives invalid_topology and no pieces or triangles; an undetected
+// crossing gives terminating, in-range output. Use ear clipping for a best effort on such input.
+// Cost O(n log n); the faster route for simple polygons (bench/results/triangulate.md).
+// docs/notes/triangulate.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
