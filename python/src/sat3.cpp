@@ -20,7 +20,7 @@ struct Solid {
   py::array_t<double> keep;
   std::span<const Vec3d> points;
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  [[nodiscard]] ConvexPolyhedron3<double> view() const { return {points, triangles}; }
+  [[nodiscard]] ConvexMesh3<double> view() const { return {points, triangles}; }
 };
 
 void solid_arg(py::handle obj, const char* fn, const char* name, Solid& s) {

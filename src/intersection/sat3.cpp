@@ -145,7 +145,7 @@ struct Poly {
 }
 
 template <Real T>
-Status load(const ConvexPolyhedron3<T>& in, Poly& out) {
+Status load(const ConvexMesh3<T>& in, Poly& out) {
   for (const Vec3<T>& p : in.vertices)
     if (!is_finite(p)) return Status::non_finite_input;
   const std::size_t n = in.vertices.size();
@@ -310,7 +310,7 @@ std::vector<V2> small_hull(std::vector<V2> p) {
 }  // namespace
 
 template <Real T>
-SatTest3 test(const ConvexPolyhedron3<T>& a_in, const ConvexPolyhedron3<T>& b_in) {
+SatTest3 test(const ConvexMesh3<T>& a_in, const ConvexMesh3<T>& b_in) {
   Poly a, b;
   SatTest3 r;
   const Status sa = load(a_in, a);
@@ -329,8 +329,8 @@ SatTest3 test(const ConvexPolyhedron3<T>& a_in, const ConvexPolyhedron3<T>& b_in
 }
 
 template <Real T>
-Contact3<T> first_contact(const ConvexPolyhedron3<T>& a_in, const Vec3<T>& va_in,
-                          const ConvexPolyhedron3<T>& b_in, const Vec3<T>& vb_in, T tmax_in) {
+Contact3<T> first_contact(const ConvexMesh3<T>& a_in, const Vec3<T>& va_in,
+                          const ConvexMesh3<T>& b_in, const Vec3<T>& vb_in, T tmax_in) {
   Contact3<T> r;
   if (!(tmax_in >= T(0))) {  // negative or NaN
     r.status = Status::invalid_input;
@@ -456,7 +456,7 @@ Contact3<T> first_contact(const ConvexPolyhedron3<T>& a_in, const Vec3<T>& va_in
 }
 
 template <Real T>
-ConvexOverlap3<T> overlap(const ConvexPolyhedron3<T>& a_in, const ConvexPolyhedron3<T>& b_in) {
+ConvexOverlap3<T> overlap(const ConvexMesh3<T>& a_in, const ConvexMesh3<T>& b_in) {
   ConvexOverlap3<T> r;
   const SatTest3 t = test<T>(a_in, b_in);
   r.status = t.status;
@@ -492,7 +492,7 @@ ConvexOverlap3<T> overlap(const ConvexPolyhedron3<T>& a_in, const ConvexPolyhedr
   inside(a, b.v, out);
   // Every edge of each (all of them: parallel ones are distinct segments here) against every
   // triangle of the other.
-  const auto crossings = [](const ConvexPolyhedron3<T>& e_in, const Poly& e, const Poly& f,
+  const auto crossings = [](const ConvexMesh3<T>& e_in, const Poly& e, const Poly& f,
                             std::vector<V>& dst) {
     std::vector<std::array<std::uint32_t, 2>> edges;
     if (!e_in.edges.empty()) {
@@ -526,18 +526,15 @@ ConvexOverlap3<T> overlap(const ConvexPolyhedron3<T>& a_in, const ConvexPolyhedr
   return r;
 }
 
-template ConvexOverlap3<float> overlap<float>(const ConvexPolyhedron3<float>&,
-                                              const ConvexPolyhedron3<float>&);
-template ConvexOverlap3<double> overlap<double>(const ConvexPolyhedron3<double>&,
-                                                const ConvexPolyhedron3<double>&);
-template SatTest3 test<float>(const ConvexPolyhedron3<float>&, const ConvexPolyhedron3<float>&);
-template SatTest3 test<double>(const ConvexPolyhedron3<double>&, const ConvexPolyhedron3<double>&);
-template Contact3<float> first_contact<float>(const ConvexPolyhedron3<float>&, const Vec3<float>&,
-                                              const ConvexPolyhedron3<float>&, const Vec3<float>&,
-                                              float);
-template Contact3<double> first_contact<double>(const ConvexPolyhedron3<double>&,
-                                                const Vec3<double>&,
-                                                const ConvexPolyhedron3<double>&,
-                                                const Vec3<double>&, double);
+template ConvexOverlap3<float> overlap<float>(const ConvexMesh3<float>&, const ConvexMesh3<float>&);
+template ConvexOverlap3<double> overlap<double>(const ConvexMesh3<double>&,
+                                                const ConvexMesh3<double>&);
+template SatTest3 test<float>(const ConvexMesh3<float>&, const ConvexMesh3<float>&);
+template SatTest3 test<double>(const ConvexMesh3<double>&, const ConvexMesh3<double>&);
+template Contact3<float> first_contact<float>(const ConvexMesh3<float>&, const Vec3<float>&,
+                                              const ConvexMesh3<float>&, const Vec3<float>&, float);
+template Contact3<double> first_contact<double>(const ConvexMesh3<double>&, const Vec3<double>&,
+                                                const ConvexMesh3<double>&, const Vec3<double>&,
+                                                double);
 
 }  // namespace locus::detail::sat3

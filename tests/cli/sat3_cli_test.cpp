@@ -70,7 +70,7 @@ TEST(CliSat3, StationaryAndMovingMatchTheLibrary) {
   ASSERT_EQ((locus::write_points<double, 3>(fb, b).status), locus::Status::ok);
   EXPECT_EQ(run("")[0][1], "no");
   const auto ha = locus::convex_hull(a), hb = locus::convex_hull(b);
-  const locus::ConvexPolyhedron3<double> pa{a, ha.triangles}, pb{b, hb.triangles};
+  const locus::ConvexMesh3<double> pa{a, ha.triangles}, pb{b, hb.triangles};
   const auto c = locus::first_contact(pa, Vec3d{0.5, 0, 0}, pb, Vec3d{-1, 0, 0}, 10.0);
   ASSERT_TRUE(static_cast<bool>(c));
   const auto mv = run("--va 0.5 0 0 --vb -1 0 0 --tmax 10");

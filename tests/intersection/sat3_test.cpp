@@ -38,7 +38,7 @@ template <class T>
 struct Solid {
   std::vector<Vec3<T>> v;
   std::vector<Tri> t;
-  [[nodiscard]] ConvexPolyhedron3<T> view() const { return {v, t}; }
+  [[nodiscard]] ConvexMesh3<T> view() const { return {v, t}; }
 };
 
 template <class T>
@@ -428,7 +428,7 @@ TYPED_TEST(Sat3, FlatAndDegenerate) {
   EXPECT_FALSE(static_cast<bool>(d));
   // Empty polyhedron, NaN, bad tmax.
   const Solid<T> a = cube<T>(Vec3<T>{0, 0, 0}, T(1));
-  const ConvexPolyhedron3<T> empty{};
+  const ConvexMesh3<T> empty{};
   EXPECT_EQ(sat_test(a.view(), empty).status, Status::degenerate_input);
   EXPECT_FALSE(intersects(a.view(), empty));
   Solid<T> n = a;

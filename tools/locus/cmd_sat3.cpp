@@ -50,7 +50,7 @@ void run_sat3(const Sat3Options& o) {
   if (a.empty()) throw InputError(o.c.input + ": convex polyhedron: empty_input");
   if (b.empty()) throw InputError(o.other + ": convex polyhedron: empty_input");
   const auto ta = hull_triangles(a, o.c.input), tb = hull_triangles(b, o.other);
-  const locus::ConvexPolyhedron3<double> pa{a, ta}, pb{b, tb};
+  const locus::ConvexMesh3<double> pa{a, ta}, pb{b, tb};
   JsonObject j;
   j.str("command", "sat3");
   std::string text;

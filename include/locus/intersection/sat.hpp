@@ -3,7 +3,7 @@
 // Separating axes for convex polyhedra in 3D, stationary and moving; row int3.sat, book section
 // 11.11 (convex polyhedra, triangles, boxes; contact sets). 2D versions: convex_polygon2.hpp,
 // moving_convex2.hpp. Derivation: docs/notes/sat3.md.
-// ConvexPolyhedron3<T> is a view: `vertices` and `triangles` (index triples covering the boundary,
+// ConvexMesh3<T> is a view: `vertices` and `triangles` (index triples covering the boundary,
 // any orientation), optional `edges` (index pairs; when empty, the triangles' edges). From points:
 // {points, convex_hull(points).triangles} (hull/hull3.hpp); or a closed convex triangle mesh, or a
 // triangulated flat polygon. The OBB and triangle overloads below go through the general code.
@@ -46,7 +46,7 @@ namespace locus {
 
 /// A convex polyhedron as a view of vertices, boundary triangles and optional edges.
 template <Real T>
-struct ConvexPolyhedron3 {
+struct ConvexMesh3 {
   std::span<const Vec3<T>> vertices;
   std::span<const std::array<std::uint32_t, 3>> triangles;
   std::span<const std::array<std::uint32_t, 2>> edges{};  ///< empty: the triangles' edges
@@ -88,28 +88,24 @@ namespace detail::sat3 {
                                 const Vec3<double>& x, const Vec3<double>& y) noexcept;
 /// src/intersection/sat3.cpp.
 template <Real T>
-[[nodiscard]] SatTest3 test(const ConvexPolyhedron3<T>& a, const ConvexPolyhedron3<T>& b);
+[[nodiscard]] SatTest3 test(const ConvexMesh3<T>& a, const ConvexMesh3<T>& b);
 template <Real T>
-[[nodiscard]] Contact3<T> first_contact(const ConvexPolyhedron3<T>& a, const Vec3<T>& va,
-                                        const ConvexPolyhedron3<T>& b, const Vec3<T>& vb, T tmax);
+[[nodiscard]] Contact3<T> first_contact(const ConvexMesh3<T>& a, const Vec3<T>& va,
+                                        const ConvexMesh3<T>& b, const Vec3<T>& vb, T tmax);
 template <Real T>
-[[nodiscard]] ConvexOverlap3<T> overlap(const ConvexPolyhedron3<T>& a,
-                                        const ConvexPolyhedron3<T>& b);
-extern template ConvexOverlap3<float> overlap<float>(const ConvexPolyhedron3<float>&,
-                                                     const ConvexPolyhedron3<float>&);
-extern template ConvexOverlap3<double> overlap<double>(const ConvexPolyhedron3<double>&,
-                                                       const ConvexPolyhedron3<double>&);
-extern template SatTest3 test<float>(const ConvexPolyhedron3<float>&,
-                                     const ConvexPolyhedron3<float>&);
-extern template SatTest3 test<double>(const ConvexPolyhedron3<double>&,
-                                      const ConvexPolyhedron3<double>&);
-extern template Contact3<float> first_contact<float>(const ConvexPolyhedron3<float>&,
-                                                     const Vec3<float>&,
-                                                     const ConvexPolyhedron3<float>&,
-                                                     const Vec3<float>&, float);
-extern template Contact3<double> first_contact<double>(const ConvexPolyhedron3<double>&,
+[[nodiscard]] ConvexOverlap3<T> overlap(const ConvexMesh3<T>& a, const ConvexMesh3<T>& b);
+extern template ConvexOverlap3<float> overlap<float>(const ConvexMesh3<float>&,
+                                                     const ConvexMesh3<float>&);
+extern template ConvexOverlap3<double> overlap<double>(const ConvexMesh3<double>&,
+                                                       const ConvexMesh3<double>&);
+extern template SatTest3 test<float>(const ConvexMesh3<float>&, const ConvexMesh3<float>&);
+extern template SatTest3 test<double>(const ConvexMesh3<double>&, const ConvexMesh3<double>&);
+extern template Contact3<float> first_contact<float>(const ConvexMesh3<float>&, const Vec3<float>&,
+                                                     const ConvexMesh3<float>&, const Vec3<float>&,
+                                                     float);
+extern template Contact3<double> first_contact<double>(const ConvexMesh3<double>&,
                                                        const Vec3<double>&,
-                                                       const ConvexPolyhedron3<double>&,
+                                                       const ConvexMesh3<double>&,
                                                        const Vec3<double>&, double);
 
 /// The 12 triangles of a box or frustum whose corner k has bits (x, y, z) (OrientedBox, Frustum3).
@@ -143,14 +139,13 @@ inline constexpr std::array<std::array<std::uint32_t, 3>, 1> triangle_triangles{
 
 /// Whether two convex polyhedra meet (exact; see the header comment).
 template <Real T>
-[[nodiscard]] inline bool intersects(const ConvexPolyhedron3<T>& a, const ConvexPolyhedron3<T>& b) {
+[[nodiscard]] inline bool intersects(const ConvexMesh3<T>& a, const ConvexMesh3<T>& b) {
   return detail::sat3::test<T>(a, b).intersects;
 }
 
 /// The stationary test with a status (degenerate or non-finite input).
 template <Real T>
-[[nodiscard]] inline SatTest3 sat_test(const ConvexPolyhedron3<T>& a,
-                                       const ConvexPolyhedron3<T>& b) {
+[[nodiscard]] inline SatTest3 sat_test(const ConvexMesh3<T>& a, const ConvexMesh3<T>& b) {
   return detail::sat3::test<T>(a, b);
 }
 
@@ -159,23 +154,22 @@ template <Real T>
 /// input vertices are inside is exact (orient3d against every triangle of a solid); crossings come
 /// from intersection(Segment3, Triangle3) (exact decisions, rounded points). Cost O(Ea Fb + Eb Fa).
 template <Real T>
-[[nodiscard]] inline ConvexOverlap3<T> intersection(const ConvexPolyhedron3<T>& a,
-                                                    const ConvexPolyhedron3<T>& b) {
+[[nodiscard]] inline ConvexOverlap3<T> intersection(const ConvexMesh3<T>& a,
+                                                    const ConvexMesh3<T>& b) {
   return detail::sat3::overlap<T>(a, b);
 }
 
 /// First contact of convex polyhedra a + t va and b + t vb over [0, tmax].
 template <Real T>
-[[nodiscard]] inline Contact3<T> first_contact(const ConvexPolyhedron3<T>& a, const Vec3<T>& va,
-                                               const ConvexPolyhedron3<T>& b, const Vec3<T>& vb,
-                                               T tmax) {
+[[nodiscard]] inline Contact3<T> first_contact(const ConvexMesh3<T>& a, const Vec3<T>& va,
+                                               const ConvexMesh3<T>& b, const Vec3<T>& vb, T tmax) {
   return detail::sat3::first_contact<T>(a, va, b, vb, tmax);
 }
 
 /// Whether moving convex polyhedra meet during [0, tmax].
 template <Real T>
-[[nodiscard]] inline bool intersects(const ConvexPolyhedron3<T>& a, const Vec3<T>& va,
-                                     const ConvexPolyhedron3<T>& b, const Vec3<T>& vb, T tmax) {
+[[nodiscard]] inline bool intersects(const ConvexMesh3<T>& a, const Vec3<T>& va,
+                                     const ConvexMesh3<T>& b, const Vec3<T>& vb, T tmax) {
   return static_cast<bool>(detail::sat3::first_contact<T>(a, va, b, vb, tmax));
 }
 
@@ -183,8 +177,7 @@ template <Real T>
 /// split along a fixed diagonal: rounded corners may leave a face's four corners off one plane by
 /// a rounding error, and the exact answers are then those of this triangulated solid.
 template <Real T>
-[[nodiscard]] inline ConvexPolyhedron3<T> box_polyhedron(
-    const std::array<Vec3<T>, 8>& corners) noexcept {
+[[nodiscard]] inline ConvexMesh3<T> box_polyhedron(const std::array<Vec3<T>, 8>& corners) noexcept {
   return {corners, detail::sat3::cube_triangles, detail::sat3::cube_edges};
 }
 
@@ -210,7 +203,7 @@ template <Real T>
 [[nodiscard]] inline Contact3<T> first_contact(const Triangle3<T>& a, const Vec3<T>& va,
                                                const Triangle3<T>& b, const Vec3<T>& vb, T tmax) {
   const std::array<Vec3<T>, 3> pa{a.v0, a.v1, a.v2}, pb{b.v0, b.v1, b.v2};
-  const ConvexPolyhedron3<T> ha{pa, detail::sat3::triangle_triangles},
+  const ConvexMesh3<T> ha{pa, detail::sat3::triangle_triangles},
       hb{pb, detail::sat3::triangle_triangles};
   return detail::sat3::first_contact<T>(ha, va, hb, vb, tmax);
 }
