@@ -32,27 +32,50 @@ struct Poly {
   std::span<const Vec2<T>> v;
   int sign = 0;  // +1 counter-clockwise, -1 clockwise, 0 all collinear
   int dim = -1;  // -1 empty, 0 a point, 1 a segment, 2 a region
-  V lo{}, hi{};  // lexicographic extremes: the point or segment when dim <= 1
+  V lo{}, hi{};  // lexicographic extremes of a point or segment (dim <= 1; unset for regions)
   bool finite = true;
 
   [[nodiscard]] V at(std::size_t i) const noexcept { return vec_cast<double>(v[i]); }
 };
 
+/// The sign polygon_orientation() gives (primitives/polygon.hpp: the turn at the lowest, then
+/// leftmost vertex between its nearest distinct neighbours), for finite v, without its second
+/// finiteness pass and its modulo arithmetic (a query's hot path).
+template <Real T>
+[[nodiscard]] int orientation_of_finite(std::span<const Vec2<T>> v) noexcept {
+  const std::size_t n = v.size();
+  if (n < 3) return 0;
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (v[i].y < v[k].y || (v[i].y == v[k].y && v[i].x < v[k].x)) k = i;
+  std::size_t prev = k == 0 ? n - 1 : k - 1, next = k + 1 == n ? 0 : k + 1;
+  while (prev != k && v[prev] == v[k]) prev = prev == 0 ? n - 1 : prev - 1;
+  while (next != k && v[next] == v[k]) next = next + 1 == n ? 0 : next + 1;
+  if (prev == k || next == k) return 0;
+  return to_int(orient2d(v[prev], v[k], v[next]));
+}
+
 template <Real T>
 [[nodiscard]] Poly<T> make_poly(std::span<const Vec2<T>> v) noexcept {
   Poly<T> P;
   P.v = v;
-  for (const Vec2<T>& p : v)
-    if (!is_finite(p)) P.finite = false;
+  // Branch-free finiteness (finite_zero: NaN when a coordinate is not finite).
+  T z = T(0);
+  for (const Vec2<T>& p : v) z += finite_zero(p);
+  P.finite = z == T(0);
   if (!P.finite || v.empty()) return P;
+  P.sign = orientation_of_finite(v);
+  if (P.sign != 0) {
+    P.dim = 2;  // lo and hi serve only points and segments
+    return P;
+  }
   P.lo = P.hi = P.at(0);
   for (std::size_t i = 1; i < v.size(); ++i) {
     const V p = P.at(i);
     if (lex_lt(p, P.lo)) P.lo = p;
     if (lex_lt(P.hi, p)) P.hi = p;
   }
-  P.sign = to_int(polygon_orientation(v));
-  P.dim = P.sign != 0 ? 2 : (P.lo == P.hi ? 0 : 1);
+  P.dim = P.lo == P.hi ? 0 : 1;
   return P;
 }
 
@@ -72,11 +95,19 @@ bool for_each_edge(const Poly<T>& P, F&& f) noexcept {
 [[nodiscard]] int side(const Line& c, const V& x) noexcept { return to_int(orient2d(c.p, c.q, x)); }
 
 /// Some edge line of region P has every vertex of Q strictly outside (an exact separation).
+/// Each edge's scan of Q starts at the vertex that was not outside the previous edge (for
+/// neighbouring edges it usually is not outside this one either), so an edge that does not
+/// separate usually costs one orient2d; the answer does not depend on the order of the scan.
 template <Real T>
 [[nodiscard]] bool separated_by_edges(const Poly<T>& P, const Poly<T>& Q) noexcept {
+  const std::size_t m = Q.v.size();
+  std::size_t start = 0;
   return for_each_edge(P, [&](const Line& c) {
-    for (std::size_t j = 0; j < Q.v.size(); ++j)
-      if (side(c, Q.at(j)) >= 0) return false;
+    for (std::size_t k = 0, j = start; k < m; ++k, j = j + 1 == m ? 0 : j + 1)
+      if (side(c, Q.at(j)) >= 0) {
+        start = j;
+        return false;
+      }
     return true;
   });
 }

@@ -268,6 +268,41 @@ TYPED_TEST(IntersectionLinear, TinyAngleCrossings) {
   std::printf("[ measured ] worst error / (eps max(|X|, m)) = %.3g\n", worst.ratio);
 }
 
+// Segment pairs that exercise every tier of the crossing's side values (detail/linear2.hpp,
+// segments_fast and proper_crossing): end points at mixed magnitudes, and short segments crossing
+// a long one close to its end, where one side value is tiny against its products; the header's
+// bound must hold whichever tier computed the point.
+TYPED_TEST(IntersectionLinear, SegmentCrossingsAtMixedScales) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  Worst worst;
+  int points = 0;
+  for (int i = 0; i < 600; ++i) {
+    const auto pt = [&] {
+      return Vec2<T>{T(rng.uniform<double>(-1, 1) * std::exp2(rng.uniform<double>(-5, 0))),
+                     T(rng.uniform<double>(-1, 1) * std::exp2(rng.uniform<double>(-5, 0)))};
+    };
+    const Vec2<T> a0 = pt(), a1 = pt();
+    Vec2<T> b0 = pt(), b1 = pt();
+    if (i % 2 == 1) {
+      const double t = rng.uniform<double>(0.9, 1.0);
+      const double len = std::exp2(-rng.uniform<double>(0, std::is_same_v<T, float> ? 20 : 40));
+      const Vec2<double> x =
+          vec_cast<double>(a0) + t * (vec_cast<double>(a1) - vec_cast<double>(a0));
+      const Vec2<double> d{rng.uniform<double>(-1, 1), rng.uniform<double>(-1, 1)};
+      b0 = vec_cast<T>(x - rng.uniform<double>(0.1, 1) * len * d);
+      b1 = vec_cast<T>(x + rng.uniform<double>(0.1, 1) * len * d);
+    }
+    const Segment2<T> a{a0, a1}, b{b0, b1};
+    check<T>(a, b, &worst);
+    points += intersection(a, b).kind == Kind::point ? 1 : 0;
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  EXPECT_GT(points, 600 / 3);
+  std::printf("[ measured ] worst error / (eps max(|X|, m)) = %.3g\n", worst.ratio);
+}
+
 // Parallel and nearly parallel components offset by a few ulps or less: the decision is exact.
 TYPED_TEST(IntersectionLinear, NearParallelOffsets) {
   using T = TypeParam;

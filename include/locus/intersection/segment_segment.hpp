@@ -15,8 +15,9 @@
 // differences. Parameters: within 6 eps max(|X|inf, m) / |direction|inf of the exact ones, clamped
 // to the domain. Degenerate: a zero-length segment or a zero direction acts as the point p0 /
 // origin (parameter 0). Any NaN or infinite coordinate gives kind empty (intersects false). Range:
-// exact for coordinates whose products stay inside the double range (predicates.hpp). Cost: a few
-// exact-sign filters; a constructed crossing adds four double-double determinants.
+// exact for coordinates whose products stay inside the double range (predicates.hpp). Cost: four
+// filtered signs; a crossing reuses their values when a bound proves them accurate enough, else
+// up to four double-double determinants (docs/notes/intersection.md, "Fast path").
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/linear2.hpp>

@@ -11,7 +11,9 @@
 // along their line. Computation is in double (float input is promoted exactly).
 // docs/notes/intersection.md.
 
+#include <locus/config.hpp>
 #include <locus/core/crossing.hpp>
+#include <locus/core/error_free.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
 #include <locus/core/vec.hpp>
@@ -223,11 +225,150 @@ template <bool Construct>
   return {s(l.a), s(l.b), s(l.o), l.lo, l.hi};
 }
 
+/// det[d; e] in double with the sum of its products' magnitudes (for the error bounds).
+struct Det {
+  double v, perm;
+};
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline Det det_naive(const V& d, const V& e) noexcept {
+  const double l = d.x * e.y, r = d.y * e.x;
+  return {l - r, std::abs(l) + std::abs(r)};
+}
+/// Its products neither underflow nor overflow (false on NaN and infinity).
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline bool products_in_range(const Det& f) noexcept {
+  return f.perm > 0x1p-900 && f.perm < 0x1p1000;
+}
+/// Its sign is exact: orient2d's stage-A bound, valid when no product underflows or overflows
+/// (false on NaN and infinity, so non-finite input never passes).
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline bool certain(const Det& f) noexcept {
+  return std::abs(f.v) > orient2d_bound_a * f.perm && products_in_range(f);
+}
+/// det[d; e] with the differences d and e split exactly (two_sum: h + l) and the first-order
+/// tails added: error <= u perm + 2u |v| (plus u^2 terms below 0.01 u perm).
+struct Split {
+  double h, l;
+};
+struct Split2 {
+  Split x, y;
+};
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline Split2 split_diff(const V& p, const V& q) noexcept {
+  Split2 d;
+  two_sum(p.x, -q.x, d.x.h, d.x.l);
+  two_sum(p.y, -q.y, d.y.h, d.y.l);
+  return d;
+}
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline Det det_tails(const Split2& d, const Split2& e) noexcept {
+  const double l = d.x.h * e.y.h, r = d.y.h * e.x.h;
+  const double tail = (d.x.h * e.y.l + d.x.l * e.y.h) - (d.y.h * e.x.l + d.y.l * e.x.h);
+  return {(l - r) + tail, std::abs(l) + std::abs(r)};
+}
+
+/// Whether values f0, f1 of a segment's end point sides, each off by at most u (cp perm + cv |f|),
+/// give its crossing parameter t = f0 / (f0 - f1) within 2.99u of the exact one: exactly,
+/// t' - t = (f0 d1 - f1 d0) / ((f0' - f1')(f0 - f1)), d the errors. Everything is divided by
+/// |f0' - f1'| first, so the choice is the same at every power-of-two scale (the covariance of
+/// the results); overflow or underflow fails it. Then the point and the parameters keep the
+/// header's bounds (docs/notes/intersection.md, "Fast path").
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline bool param_accurate(const Det& f0, const Det& f1,
+                                                             double cp, double cv) noexcept {
+  constexpr double u = 0x1p-53;
+  const double a0 = std::abs(f0.v), a1 = std::abs(f1.v), dd = std::abs(f0.v - f1.v);
+  const double inv = 1.0 / dd;
+  const double r0 = a0 * inv, r1 = a1 * inv;
+  const double e0 = (cp * f0.perm + cv * a0) * inv, e1 = (cp * f1.perm + cv * a1) * inv;
+  return r0 * e1 + r1 * e0 + 2.0 * u * e0 * e1 <= 2.99 * (1.0 - u * (e0 + e1)) && dd >= 0x1p-900;
+}
+
+/// The sides v0, v1 of p0 and p1 on the line q0 q1 (det[q1 - q0; p - q0]) accurate enough for
+/// param_accurate, from the naive values f0, f1 (error <= 3u perm + u |f|), else with exact
+/// differences, else rounded from their exact values (turn2d_value, the general path's values).
+template <bool Certified>
+LOCUS_ALWAYS_INLINE inline void accurate_sides(const Det& f0, const Det& f1, const V& q0,
+                                               const V& q1, const V& p0, const V& p1, double& v0,
+                                               double& v1) noexcept {
+  v0 = f0.v, v1 = f1.v;
+  // Cheap sufficient case first: |f| >= 0.62 perm for both (products in range) gives E <= 5.86u
+  // |f| and the right signs, hence |t' - t| <= 11.72u |f0| |f1| / (|f0| + |f1|)^2 (1 + O(u)),
+  // at most 2.93u.
+  // Certified (segments_fast): certain() has checked the range already.
+  if (std::abs(f0.v) >= 0.62 * f0.perm && std::abs(f1.v) >= 0.62 * f1.perm &&
+      (Certified || (products_in_range(f0) && products_in_range(f1)))) [[likely]]
+    return;
+  if (param_accurate(f0, f1, 3.01, 1.01)) return;
+  const Split2 d = split_diff(q1, q0);
+  const Det g0 = det_tails(d, split_diff(p0, q0)), g1 = det_tails(d, split_diff(p1, q0));
+  v0 = g0.v, v1 = g1.v;
+  if (param_accurate(g0, g1, 1.01, 2.01)) [[likely]]
+    return;
+  v0 = detail::turn2d_value_dd(q0, q1, q0, p0);
+  v1 = detail::turn2d_value_dd(q0, q1, q0, p1);
+}
+
+/// The four end point sides of segments a0 a1 and b0 b1 in double: of A's end points on B
+/// (det[b1 - b0; p - b0]) and of B's on A (det[a1 - a0; p - a0]), as the filters compute them.
+struct Sides {
+  Det a0, a1, b0, b1;
+};
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline Sides naive_sides(const V& a0, const V& a1, const V& b0,
+                                                           const V& b1) noexcept {
+  const V da = a1 - a0, db = b1 - b0;
+  return {det_naive(db, a0 - b0), det_naive(db, a1 - b0), det_naive(da, b0 - a0),
+          det_naive(da, b1 - a0)};
+}
+
+/// The crossing of segments that cross properly (every side nonzero; a0, a1 on opposite sides
+/// of B and b0, b1 of A), interpolated along A from its nearer end with parameters t = v0 /
+/// (v0 - v1) from side values accurate enough for the header's bounds (accurate_sides). Both
+/// paths of intersect() construct with it, so the result does not depend on which one decided.
+template <bool Certified>
+LOCUS_ALWAYS_INLINE inline void proper_crossing(const V& a0, const V& a1, const V& b0, const V& b1,
+                                                const Sides& f, Result& r) noexcept {
+  double va0, va1, vb0, vb1;
+  accurate_sides<Certified>(f.a0, f.a1, b0, b1, a0, a1, va0, va1);
+  accurate_sides<Certified>(f.b0, f.b1, a0, a1, b0, b1, vb0, vb1);
+  // From the nearer end: a0 + t da, or a1 + (t - 1) da with t - 1 = va1 / (va0 - va1).
+  const V da = a1 - a0;
+  const double dda = va0 - va1, t = std::clamp(va0 / dda, 0.0, 1.0);
+  const bool from_end = std::abs(va1) < std::abs(va0);
+  const double s = from_end ? std::clamp(va1 / dda, -1.0, 0.0) : t;
+  const V base = from_end ? a1 : a0;
+  r.kind = Kind::point;
+  r.count = 1;
+  r.point[0] = base + s * da;
+  r.param_a[0] = t;
+  r.param_b[0] = std::clamp(vb0 / (vb0 - vb1), 0.0, 1.0);
+}
+
+/// Two segments a0 a1 and b0 b1 when the floating-point filters certify all four end point
+/// sides (none zero, so a proper crossing or a miss): the decision intersect_in_range would make
+/// from the same four filters, without its finiteness and range checks and without the exact
+/// stages. Returns false, leaving r alone, when a filter fails (a touch, collinear or degenerate
+/// segments, nearly degenerate configurations, non-finite input, products out of range).
+template <bool Construct>
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline bool segments_fast(const V& a0, const V& a1, const V& b0,
+                                                            const V& b1, Result& r) noexcept {
+  const Sides f = naive_sides(a0, a1, b0, b1);
+  if (!(certain(f.a0) && certain(f.a1) && certain(f.b0) && certain(f.b1))) return false;
+  const bool sa0 = f.a0.v > 0, sa1 = f.a1.v > 0, sb0 = f.b0.v > 0, sb1 = f.b1.v > 0;
+  // intersect_in_range's rules with every sign nonzero: den = side of a0.
+  if (sa0 == sa1 || sb0 == sa0 || sb1 != sa0) return true;  // r stays empty
+  if constexpr (Construct) {
+    proper_crossing<true>(a0, a1, b0, b1, f, r);
+  } else {
+    r.kind = Kind::point;
+    r.count = 1;
+  }
+  return true;
+}
+
 template <bool Construct>
 [[nodiscard]] inline Result intersect_in_range(const Lin& A, const Lin& B) noexcept;
 
 template <bool Construct>
 [[nodiscard]] inline Result intersect(const Lin& A, const Lin& B) noexcept {
+  if (A.hi && B.hi && A.a == A.o && B.a == B.o) {
+    Result r;
+    if (segments_fast<Construct>(A.a, A.b, B.a, B.b, r)) return r;
+  }
   if (!finite(A) || !finite(B)) return Result{};
   // Far from 1 the input is scaled by a power of two (exact, and every answer is covariant), so
   // no product of coordinates overflows or underflows.
@@ -296,6 +437,11 @@ template <bool Construct>
     x = B.o, tb = 0.0, tb_known = true;
   } else if (B.hi && b1 == Sign::zero) {
     x = B.b, tb = 1.0, tb_known = true;
+  }
+  if (!ta_known && !tb_known && A.hi && B.hi && A.a == A.o && B.a == B.o) {
+    // Two segments crossing properly: the construction of the fast path (segments_fast).
+    proper_crossing<false>(A.a, A.b, B.a, B.b, naive_sides(A.a, A.b, B.a, B.b), r);
+    return r;
   }
   if (!ta_known) {
     const Param p = crossing_param(A, B);
