@@ -319,8 +319,8 @@ void run_convert(const ConvertOptions& o) {
 }  // namespace
 
 void register_mesh(CLI::App& app) {
-  CLI::App* mesh =
-      app.add_subcommand("mesh", "mesh files: info, check, orient, generate, convert, slice, boolean");
+  CLI::App* mesh = app.add_subcommand(
+      "mesh", "mesh files: info, check, orient, generate, convert, slice, boolean");
   mesh->require_subcommand(1);
   mesh->footer(
       "Example:\n  locus mesh info bunny.ply\n  locus mesh check bunny.ply\n"

@@ -15,8 +15,8 @@
 // (cured as earcut does: local loops cut, then split along a valid diagonal, else a convex
 // vertex cut anyway) give invalid_topology with a best effort that terminates.
 // Cost: O(n log n) sorting; per bridge the cells near it of a grid of all ring edges and
-// vertices (rings of cells outwards when the candidate fails); then about O(n k) for k live reflex vertices
-// per grid cell (near O(n) on ordinary input). Derivation: docs/notes/triangulate.md.
+// vertices (rings of cells outwards when the candidate fails); then about O(n k) for k live reflex
+// vertices per grid cell (near O(n) on ordinary input). Derivation: docs/notes/triangulate.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
