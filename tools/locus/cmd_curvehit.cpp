@@ -95,7 +95,7 @@ void run_curvehit(const CurveHitOptions& o) {
   if (!o.c.svg.empty()) {
     locus::SvgWriter svg;
     const auto draw = [&svg](const auto& cv) {
-      const auto dom = [&cv]() {
+      const auto dom = [&]() {
         if constexpr (requires { cv.knots; })
           return locus::domain(cv);
         else
