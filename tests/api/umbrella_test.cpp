@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // The umbrella headers: <locus/locus.hpp> and one per area compile together in one unit (no
 // clash between areas, e.g. two structs of one name) and give the areas' entry points.
+#include <locus/boolean.hpp>
 #include <locus/bounding.hpp>
 #include <locus/containment.hpp>
 #include <locus/core.hpp>
@@ -53,6 +54,14 @@ TEST(Umbrella, EveryAreaIsReachableThroughItsUmbrella) {
   const std::array<std::uint32_t, 4> face{0, 1, 2, 3};
   add_face(mesh, std::span<const std::uint32_t>(face));
   EXPECT_EQ(fan_triangles(mesh).size(), 2u);
+  // boolean: two unit squares overlapping in a 1 x 1/2 strip unite into one 1 x 3/2 rectangle.
+  const Polygon2<double> lower{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  const Polygon2<double> upper{{{0, 0.5}, {1, 0.5}, {1, 1.5}, {0, 1.5}}};
+  const auto united = boolean_union(lower, upper);
+  EXPECT_EQ(united.status, Status::ok);
+  ASSERT_EQ(united.polygons.size(), 1u);
+  EXPECT_TRUE(united.polygons[0].holes.empty());
+  EXPECT_EQ(united.polygons[0].outer.vertices.size(), 4u);
 }
 
 }  // namespace
