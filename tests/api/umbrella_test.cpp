@@ -3,6 +3,8 @@
 // clash between areas, e.g. two structs of one name) and give the areas' entry points.
 #include <locus/boolean.hpp>
 #include <locus/bounding.hpp>
+#include <locus/bsp.hpp>
+#include <locus/construct.hpp>
 #include <locus/containment.hpp>
 #include <locus/core.hpp>
 #include <locus/curves.hpp>
@@ -17,6 +19,7 @@
 #include <locus/mesh.hpp>
 #include <locus/numeric.hpp>
 #include <locus/primitives.hpp>
+#include <locus/spatial.hpp>
 #include <locus/triangulate.hpp>
 
 #include <gtest/gtest.h>

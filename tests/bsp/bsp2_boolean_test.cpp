@@ -7,7 +7,8 @@
 // closed and covering every edge. Figure configurations 13.27-13.31, A op A, shared edges,
 // touching vertices, empty and non-finite operands, 2^k scaling.
 
-#include <locus/bsp.hpp>
+#include <locus/bsp/bsp2.hpp>
+#include <locus/bsp/bsp2_boolean.hpp>
 #include <locus/core/predicates.hpp>
 
 #include "support/typed.hpp"

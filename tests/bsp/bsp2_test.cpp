@@ -7,7 +7,7 @@
 // a rational crossing-number test written here. Both constructions, float and double, star
 // polygons with holes, the earcut corpus, figure-like cases, bad input, 2^k scaling.
 
-#include <locus/bsp.hpp>  // the umbrella: bsp/bsp2.hpp
+#include <locus/bsp/bsp2.hpp>
 #include <locus/containment/point_in_polygon.hpp>
 
 #include "support/typed.hpp"

@@ -6,7 +6,8 @@
 // point-in-polyhedron of containment/) exactly when op(inside A, inside B). Degenerate cases:
 // shared faces, identical, disjoint and empty operands, NaN; 2^k scaling.
 
-#include <locus/bsp.hpp>
+#include <locus/bsp/bsp3.hpp>
+#include <locus/bsp/bsp3_boolean.hpp>
 #include <locus/containment/point_in_polyhedron.hpp>
 
 #include "bsp/solids3.hpp"

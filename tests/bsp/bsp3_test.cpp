@@ -7,7 +7,7 @@
 // inside / outside pieces have their centroids on the stated side, coplanar squares on a face
 // give the exact coincident areas; bad input; 2^k scaling.
 
-#include <locus/bsp.hpp>
+#include <locus/bsp/bsp3.hpp>
 #include <locus/containment/point_in_polyhedron.hpp>
 
 #include "bsp/solids3.hpp"

@@ -8,7 +8,7 @@
 // (residuals in GMP). Figures 8.1, 8.2; degenerate inputs (collinear, coincident, parallel,
 // concurrent); NaN/Inf; power-of-two scaling; 90 degree rotations.
 
-#include <locus/construct.hpp>  // the umbrella: every construct/ header
+#include <locus/construct/circle_through.hpp>
 #include <locus/construct/solutions.hpp>
 
 #include <cmath>

@@ -11,7 +11,7 @@
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/mesh/platonic.hpp>
 #include <locus/mesh/polygon_mesh.hpp>
-#include <locus/spatial.hpp>  // the umbrella: spatial/bvh.hpp
+#include <locus/spatial/bvh.hpp>
 
 #include <algorithm>
 #include <array>
