@@ -5,6 +5,7 @@
 
 #include <locus/core/crossing.hpp>
 #include <locus/core/exact_poly.hpp>
+#include <locus/intersection/detail/ball_relation.hpp>
 #include <locus/intersection/detail/conic2.hpp>
 #include <locus/numeric/roots.hpp>
 
@@ -519,12 +520,7 @@ RegionRelation circle_relation(V c0, double r0, V c1, double r1) noexcept {
   if (!valid_circle(c0, r0) || !valid_circle(c1, r1)) return RegionRelation::undecided;
   if (c0 == c1 && r0 == r1) return RegionRelation::equal;
   const CircleSigns s = circle_signs(c0, r0, c1, r1);
-  if (s.out > 0) return RegionRelation::separated;
-  if (s.out == 0) return RegionRelation::touching;
-  if (s.in < 0) return r0 > r1 ? RegionRelation::a_contains_b : RegionRelation::b_contains_a;
-  if (s.in == 0)
-    return r0 > r1 ? RegionRelation::a_contains_b_touching : RegionRelation::b_contains_a_touching;
-  return RegionRelation::overlapping;
+  return ball_relation(s.out, s.in, r0 > r1);
 }
 
 namespace {

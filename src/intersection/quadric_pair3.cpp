@@ -4,6 +4,7 @@
 // 11.8. Derivation: docs/notes/surface_intersection.md, "Quadric pairs".
 
 #include <locus/core/exact_poly.hpp>
+#include <locus/intersection/detail/ball_relation.hpp>
 #include <locus/intersection/detail/quadric_pair3.hpp>
 #include <locus/numeric/eigen_sym.hpp>
 #include <locus/primitives/plane.hpp>
@@ -93,12 +94,7 @@ RegionRelation sphere_relation(const V& c0, double r0, const V& c1, double r1) n
   if (!valid_sphere(c0, r0) || !valid_sphere(c1, r1)) return RegionRelation::undecided;
   if (c0 == c1 && r0 == r1) return RegionRelation::equal;
   const Signs s = sphere_signs(c0, r0, c1, r1);
-  if (s.out > 0) return RegionRelation::separated;
-  if (s.out == 0) return RegionRelation::touching;
-  if (s.in < 0) return r0 > r1 ? RegionRelation::a_contains_b : RegionRelation::b_contains_a;
-  if (s.in == 0)
-    return r0 > r1 ? RegionRelation::a_contains_b_touching : RegionRelation::b_contains_a_touching;
-  return RegionRelation::overlapping;
+  return ball_relation(s.out, s.in, r0 > r1);
 }
 
 namespace {
