@@ -36,7 +36,7 @@
 
 namespace locus {
 
-enum class MeshBooleanOp : std::uint8_t { union_, intersection, difference };
+enum class MeshBooleanOp : std::uint8_t { union_, intersection, difference, symmetric_difference };
 
 template <Real T>
 struct MeshBoolean {
@@ -44,6 +44,16 @@ struct MeshBoolean {
   std::vector<Vec3<T>> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;
 };
+
+/// The complement of a closed triangle mesh: the same vertices, every triangle reversed (its
+/// normals point into the solid). It bounds the unbounded region outside the mesh (volume by the
+/// divergence theorem: minus the solid's); a Bsp3 built on it classifies that region as inside,
+/// so it is a valid mesh_boolean operand (A intersection complement(B) = A - B). Status:
+/// empty_input (no triangles), invalid_input (index out of range), non_finite_input; no output
+/// then. O(V + T).
+template <Real T>
+[[nodiscard]] MeshBoolean<T> mesh_complement(
+    std::span<const Vec3<T>> vertices, std::span<const std::array<std::uint32_t, 3>> triangles);
 
 /// op(A, B) from the two trees (see the top of the header).
 template <Real T>
@@ -73,7 +83,9 @@ requires std::same_as<range_scalar_t<RA>, range_scalar_t<RB>>
   extern template MeshBoolean<T> mesh_boolean(MeshBooleanOp, const Bsp3<T>&, const Bsp3<T>&); \
   extern template MeshBoolean<T> mesh_boolean(                                                \
       MeshBooleanOp, std::span<const Vec3<T>>, std::span<const std::array<std::uint32_t, 3>>, \
-      std::span<const Vec3<T>>, std::span<const std::array<std::uint32_t, 3>>, Bsp3Options);
+      std::span<const Vec3<T>>, std::span<const std::array<std::uint32_t, 3>>, Bsp3Options);  \
+  extern template MeshBoolean<T> mesh_complement(std::span<const Vec3<T>>,                    \
+                                                 std::span<const std::array<std::uint32_t, 3>>);
 LOCUS_BSP3_BOOLEAN_EXTERN(float)
 LOCUS_BSP3_BOOLEAN_EXTERN(double)
 #undef LOCUS_BSP3_BOOLEAN_EXTERN
