@@ -368,7 +368,7 @@ TYPED_TEST(Bsp3BooleanTest, RotatedSolidsAreWatertight) {
   }
 }
 
-/// Two overlapping icospheres (80 faces each, 40 placements' worth of cuts): watertight union and
+/// Two overlapping icospheres (80 faces each): watertight union and
 /// intersection with the volumes of inclusion-exclusion, sphere topology.
 TYPED_TEST(Bsp3BooleanTest, IcospherePairIsWatertight) {
   using T = TypeParam;
