@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// mesh_boolean: union, intersection and difference of two closed triangle meshes through their
+// mesh_boolean: union, intersection, difference and xor of two closed triangle meshes through their
 // BSP trees (bsp/bsp3_boolean.hpp). Each mesh is a (vertices (n, 3), triangles (k, 3)) pair;
 // float32 runs the float instantiation only when both vertex arrays are float32.
 #include "common.hpp"
@@ -55,8 +55,10 @@ void bind_bsp3(py::module_& m) {
           o = MeshBooleanOp::intersection;
         else if (op == "difference")
           o = MeshBooleanOp::difference;
+        else if (op == "xor" || op == "symmetric_difference")
+          o = MeshBooleanOp::symmetric_difference;
         else
-          fail(fn, "op must be 'union', 'intersection' or 'difference', not '" + op + "'");
+          fail(fn, "op must be 'union', 'intersection', 'difference' or 'xor', not '" + op + "'");
         const MeshIn ma = read_mesh_pair(a, fn, "a"), mb = read_mesh_pair(b, fn, "b");
         auto run = [&]<class T>() -> py::object {
           const std::vector<Vec3<T>> va = vertices_as<T>(ma.v), vb = vertices_as<T>(mb.v);
@@ -81,11 +83,12 @@ void bind_bsp3(py::module_& m) {
         return run.template operator()<double>();
       },
       py::arg("op"), py::arg("a"), py::arg("b"),
-      "Union, intersection or difference (a minus b) of two closed triangle meshes with outward\n"
-      "normals, each a pair (vertices (n, 3), triangles (k, 3)), through their BSP trees\n"
-      "(bsp/bsp3_boolean.hpp). Returns MeshBooleanResult: status, vertices (m, 3), triangles\n"
-      "(t, 3), outward; exactly equal vertices welded; T-junctions stitched when the vertex lies\n"
-      "exactly on the edge, left at rounded cut points. An empty\n"
+      "Union, intersection, difference (a minus b) or xor (symmetric difference; also\n"
+      "'symmetric_difference') of two closed triangle meshes with outward normals, each a pair\n"
+      "(vertices (n, 3), triangles (k, 3)), through their BSP trees (bsp/bsp3_boolean.hpp).\n"
+      "Returns MeshBooleanResult: status, vertices (m, 3), triangles (t, 3), outward; every\n"
+      "constructed vertex shared by provenance, no T-junctions: each edge used once in each\n"
+      "direction for generic inputs (xor: parts touch along the intersection curve). An empty\n"
       "operand is the empty solid (status 'empty_input' or 'degenerate_input', result still\n"
       "given); NaN or out-of-range indices raise ValueError.");
 }

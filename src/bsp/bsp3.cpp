@@ -3,6 +3,8 @@
 
 #include <locus/bsp/bsp3.hpp>
 
+#include "bsp3_keyed.hpp"
+
 #include <locus/core/plane_side.hpp>
 #include <locus/core/predicates.hpp>
 
@@ -14,6 +16,9 @@
 namespace locus {
 
 namespace {
+
+using bsp3_detail::LineKey;
+using bsp3_detail::VertexKey;
 
 template <Real T>
 [[nodiscard]] Vec2<T> drop_axis(const Vec3<T>& v, int k) noexcept {
@@ -119,39 +124,50 @@ template <Real T>
 }
 
 /// A fragment corner: an input point (a == bsp3_none), or the crossing of the segment between
-/// corners a (positive side) and b (negative side) with the plane of face `face`.
+/// corners a (positive side) and b (negative side) with plane id `plane`; `key` names it
+/// symbolically (bsp3_keyed.hpp; unique when nobody asks).
 template <Real T>
 struct PointRec {
   Vec3<double> p;  // exact for input points; cut points are kept in double even when T = float
-  std::uint32_t a = bsp3_none, b = bsp3_none, face = bsp3_none;
+  std::uint32_t a = bsp3_none, b = bsp3_none, plane = bsp3_none;
+  VertexKey key{};
 };
 
 /// Corners with their provenance. The side of a cut point against a later plane follows from
 /// its two parents when they do not straddle that plane (the true crossing lies on the segment
 /// between them, a convex combination); only when they do is the rounded point tested. So a
-/// plane through a vertex never sees the cut points near that vertex on its wrong side.
+/// plane through a vertex never sees the cut points near that vertex on its wrong side. A corner
+/// whose key names three planes lies on each of them (exactly, symbolically).
 template <Real T>
 struct PointPool {
   std::vector<PointRec<T>> recs;
   static constexpr int max_depth = 8;  // bounds the recursion (2^8 predicates at worst)
 
-  std::uint32_t add_exact(const Vec3<T>& p) {
-    recs.push_back({vec_cast<double>(p), bsp3_none, bsp3_none, bsp3_none});
+  std::uint32_t add_exact(const Vec3<T>& p, const VertexKey& key = {}) {
+    recs.push_back({vec_cast<double>(p), bsp3_none, bsp3_none, bsp3_none, key});
     return static_cast<std::uint32_t>(recs.size() - 1);
   }
-  std::uint32_t add_cut(const PlaneRef<T>& h, std::uint32_t face, std::uint32_t pos,
-                        std::uint32_t neg) {
+  std::uint32_t add_cut(const PlaneRef<T>& h, std::uint32_t plane, std::uint32_t pos,
+                        std::uint32_t neg, const VertexKey& key = {}) {
     const Vec3<double> x = h.cut(recs[pos].p, recs[neg].p);
-    recs.push_back({x, pos, neg, face});
+    recs.push_back({x, pos, neg, plane, key});
     return static_cast<std::uint32_t>(recs.size() - 1);
   }
-  [[nodiscard]] Sign side(const PlaneRef<T>& h, std::uint32_t face, std::uint32_t i,
-                          int depth = max_depth) const noexcept {
+  /// kplane: the plane's key id; a cut point whose key names it lies on it (symbolically: the
+  /// key's planes are equal or equal up to rounding of the input, docs/notes/bsp3.md).
+  [[nodiscard]] Sign side(const PlaneRef<T>& h, std::uint32_t plane, std::uint32_t i,
+                          std::uint32_t kplane = bsp3_none, int depth = max_depth) const noexcept {
     const PointRec<T>& r = recs[i];
     if (r.a == bsp3_none) return h.side_d(r.p);
-    if (r.face == face) return Sign::zero;
+    if (r.plane == plane) return Sign::zero;
+    if (kplane != bsp3_none &&
+        ((r.key[0] == bsp3_detail::vertex_planes &&
+          (r.key[1] == kplane || r.key[2] == kplane || r.key[3] == kplane)) ||
+         (r.key[0] == bsp3_detail::vertex_edge_plane && r.key[4] == kplane)))
+      return Sign::zero;
     if (depth == 0) return h.side_d(r.p);
-    const Sign s0 = side(h, face, r.a, depth - 1), s1 = side(h, face, r.b, depth - 1);
+    const Sign s0 = side(h, plane, r.a, kplane, depth - 1),
+               s1 = side(h, plane, r.b, kplane, depth - 1);
     if (s0 == s1) return s0;
     if (s0 == Sign::zero) return s1;
     if (s1 == Sign::zero) return s0;
@@ -166,27 +182,83 @@ struct PointPool {
   }
 };
 
+/// Names cut points and cut lines of a polygon lying in plane id `polygon_plane`.
+struct Keyer {
+  std::uint32_t polygon_plane = bsp3_none;
+  std::uint32_t* serial = nullptr;
+
+  [[nodiscard]] VertexKey cut_key(const LineKey& line, std::uint32_t plane) const noexcept {
+    using namespace bsp3_detail;
+    if (line[0] == line_planes && plane != bsp3_none && plane != line[1] && plane != line[2]) {
+      std::array<std::uint32_t, 3> k{line[1], line[2], plane};
+      std::sort(k.begin(), k.end());
+      return {vertex_planes, k[0], k[1], k[2], 0};
+    }
+    if (line[0] == line_edge && plane != bsp3_none)
+      return {vertex_edge_plane, line[1], line[2], line[3], plane};
+    return {vertex_unique, (*serial)++, 0, 0, 0};
+  }
+  [[nodiscard]] LineKey cut_line(std::uint32_t plane) const noexcept {
+    using namespace bsp3_detail;
+    if (polygon_plane != bsp3_none && plane != bsp3_none && plane != polygon_plane)
+      return {line_planes, std::min(plane, polygon_plane), std::max(plane, polygon_plane), 0};
+    return {line_unique, (*serial)++, 0, 0};
+  }
+};
+
 /// Splits a convex polygon (corner indices) with vertex signs s (some positive, some
 /// negative). Pieces are kept even when rounding flattened them: a sliver along an edge must
-/// reach the same cells as its neighbour's sliver, or the cell labels disagree.
+/// reach the same cells as its neighbour's sliver, or the cell labels disagree. With a keyer,
+/// lines[i] (the line of edge i -> i + 1) is carried to the pieces' edges and cut points and the
+/// cut chord are named.
 template <Real T>
-void split_polygon(PointPool<T>& pool, const PlaneRef<T>& h, std::uint32_t face,
+void split_polygon(PointPool<T>& pool, const PlaneRef<T>& h, std::uint32_t plane,
                    std::span<const std::uint32_t> poly, std::span<const Sign> s,
-                   std::vector<std::uint32_t>& front, std::vector<std::uint32_t>& back) {
+                   std::vector<std::uint32_t>& front, std::vector<std::uint32_t>& back,
+                   const Keyer* keyer = nullptr, std::uint32_t key_plane = bsp3_none,
+                   std::span<const LineKey> lines = {}, std::vector<LineKey>* front_lines = nullptr,
+                   std::vector<LineKey>* back_lines = nullptr) {
   front.clear();
   back.clear();
+  if (keyer != nullptr) {
+    front_lines->clear();
+    back_lines->clear();
+  }
   const std::size_t n = poly.size();
+  LineKey chord{};
+  bool have_chord = false;
+  const auto chord_line = [&]() {
+    if (!have_chord) chord = keyer->cut_line(key_plane);
+    have_chord = true;
+    return chord;
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = (i + 1) % n;
-    if (s[i] != Sign::negative) front.push_back(poly[i]);
-    if (s[i] != Sign::positive) back.push_back(poly[i]);
+    if (s[i] != Sign::negative) {
+      front.push_back(poly[i]);
+      if (keyer != nullptr)
+        front_lines->push_back(s[j] != Sign::negative || s[i] == Sign::positive ? lines[i]
+                                                                                : chord_line());
+    }
+    if (s[i] != Sign::positive) {
+      back.push_back(poly[i]);
+      if (keyer != nullptr)
+        back_lines->push_back(s[j] != Sign::positive || s[i] == Sign::negative ? lines[i]
+                                                                               : chord_line());
+    }
     if (to_int(s[i]) * to_int(s[j]) < 0) {
       // Cut from the positive end so that an edge shared by two fragments is cut at
       // bit-identical points.
-      const std::uint32_t x = s[i] == Sign::positive ? pool.add_cut(h, face, poly[i], poly[j])
-                                                     : pool.add_cut(h, face, poly[j], poly[i]);
+      const VertexKey key = keyer != nullptr ? keyer->cut_key(lines[i], key_plane) : VertexKey{};
+      const std::uint32_t x = s[i] == Sign::positive
+                                  ? pool.add_cut(h, plane, poly[i], poly[j], key)
+                                  : pool.add_cut(h, plane, poly[j], poly[i], key);
       front.push_back(x);
       back.push_back(x);
+      if (keyer != nullptr) {
+        front_lines->push_back(s[i] == Sign::positive ? chord_line() : lines[i]);
+        back_lines->push_back(s[i] == Sign::negative ? chord_line() : lines[i]);
+      }
     }
   }
 }
@@ -195,11 +267,12 @@ enum class Rel { front, back, on, straddle };
 
 template <Real T>
 [[nodiscard]] Rel relate(const PointPool<T>& pool, const PlaneRef<T>& h, std::uint32_t face,
-                         std::span<const std::uint32_t> poly, std::vector<Sign>& s) {
+                         std::uint32_t kplane, std::span<const std::uint32_t> poly,
+                         std::vector<Sign>& s) {
   s.resize(poly.size());
   bool pos = false, neg = false;
   for (std::size_t i = 0; i < poly.size(); ++i) {
-    s[i] = pool.side(h, face, poly[i]);
+    s[i] = pool.side(h, face, poly[i], kplane);
     pos |= s[i] == Sign::positive;
     neg |= s[i] == Sign::negative;
   }
@@ -283,6 +356,7 @@ Status Bsp3<T>::build(std::span<const Vec3<T>> vertices,
     stack.pop_back();
     std::vector<Poly<T>>& polys = job.polys;
     // Choose the splitter.
+    constexpr std::size_t score_sample = 64;
     std::size_t pick = 0;
     if (options.split == Bsp3Split::balanced && polys.size() > 1) {
       const std::size_t m =
@@ -293,8 +367,12 @@ Status Bsp3<T>::build(std::span<const Vec3<T>> vertices,
         const auto& t = faces_[polys[idx].face];
         const PlaneRef<T> h(vertices_[t[0]], vertices_[t[1]], vertices_[t[2]]);
         long long nf = 0, nb = 0, ns = 0;
-        for (const Poly<T>& p : polys) {
-          switch (relate<T>(pool, h, polys[idx].face, p.idx, signs)) {
+        // Score on at most score_sample evenly spaced fragments: a node then costs O(n) (the
+        // split itself), not O(sample n); the estimate only steers the choice.
+        const std::size_t stride = std::max<std::size_t>(1, polys.size() / score_sample);
+        for (std::size_t q = 0; q < polys.size(); q += stride) {
+          const Poly<T>& p = polys[q];
+          switch (relate<T>(pool, h, polys[idx].face, bsp3_none, p.idx, signs)) {
             case Rel::front:
               ++nf;
               break;
@@ -340,7 +418,7 @@ Status Bsp3<T>::build(std::span<const Vec3<T>> vertices,
         for (const std::uint32_t i : p.idx) points_.push_back(vec_cast<T>(pool.recs[i].p));
         continue;
       }
-      switch (relate<T>(pool, h, split_face, p.idx, signs)) {
+      switch (relate<T>(pool, h, split_face, bsp3_none, p.idx, signs)) {
         case Rel::front:
           front.push_back(std::move(p));
           break;
@@ -401,21 +479,32 @@ namespace {
 template <Real T>
 struct Labeled {
   std::vector<std::uint32_t> idx;
+  std::vector<LineKey> lines;  // lines[i] supports idx[i] -> idx[i + 1]
   Bsp3Location loc;
 };
 
-/// The partition walk of Bsp3::partition (see the header).
+/// The partition walk of Bsp3::partition (see the header); plane ids from plane_of_face (the
+/// face index when empty), corners and edges named through the keyer.
 template <Real T>
 struct Partitioner {
   std::span<const Vec3<T>> vertices;
   std::span<const std::array<std::uint32_t, 3>> faces;
   std::span<const Bsp3Node> nodes;
-  Vec3<T> da, db, dc;  // the polygon's defining triangle (exact)
-  PointPool<T> pool;   // the polygon's corners, then the cut points
+  std::span<const std::uint32_t> plane_of_face;  // exact plane ids (sides)
+  std::span<const std::uint32_t> key_of_face;    // plane ids for naming (keys)
+  Vec3<T> da, db, dc;                            // the polygon's defining triangle (exact)
+  Keyer keyer;
+  PointPool<T> pool;  // the polygon's corners, then the cut points
 
   [[nodiscard]] PlaneRef<T> plane(const Bsp3Node& nd) const noexcept {
     const auto& t = faces[nd.face];
     return PlaneRef<T>(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
+  }
+  [[nodiscard]] std::uint32_t plane_id(const Bsp3Node& nd) const noexcept {
+    return plane_of_face.empty() ? nd.face : plane_of_face[nd.face];
+  }
+  [[nodiscard]] std::uint32_t key_id(const Bsp3Node& nd) const noexcept {
+    return key_of_face.empty() ? nd.face : key_of_face[nd.face];
   }
 
   static Bsp3Location combine(Bsp3Location f, Bsp3Location b, int orientation) noexcept {
@@ -427,17 +516,24 @@ struct Partitioner {
     return f;  // both sides agree (or a sliver reported a coincidence below: keep it)
   }
 
-  void run(std::int32_t node, std::vector<std::uint32_t> poly, std::vector<Labeled<T>>& out) {
+  void run(std::int32_t node, std::vector<std::uint32_t> poly, std::vector<LineKey> lines,
+           std::vector<Labeled<T>>& out) {
     std::vector<Sign> s;
     std::vector<std::uint32_t> fpts, bpts;
+    std::vector<LineKey> flines, blines;
     while (node >= 0) {
       const Bsp3Node& nd = nodes[static_cast<std::size_t>(node)];
       const PlaneRef<T> h = plane(nd);
+      const std::uint32_t pid = plane_id(nd);
       Rel rel = Rel::on;
       const bool defining_on = h.contains_triangle(da, db, dc);
       bool on = defining_on;
       if (!on) {
-        rel = relate<T>(pool, h, nd.face, poly, s);
+        // The key shortcut only across clusters: a polygon (nearly) coplanar with the node
+        // keeps the exact and provenance decisions (coincident faces).
+        const std::uint32_t kid =
+            key_of_face.empty() || key_id(nd) == keyer.polygon_plane ? bsp3_none : key_id(nd);
+        rel = relate<T>(pool, h, pid, kid, poly, s);
         on = rel == Rel::on;
       }
       if (on) {
@@ -448,12 +544,13 @@ struct Partitioner {
         const int orientation = to_int(o * h.proj_sign);
         if (orientation == 0) return;  // a flat sliver
         std::vector<Labeled<T>> front_pieces;
-        run(nd.front, std::move(poly), front_pieces);
+        run(nd.front, std::move(poly), std::move(lines), front_pieces);
         for (Labeled<T>& f : front_pieces) {
           std::vector<Labeled<T>> back_pieces;
-          run(nd.back, std::move(f.idx), back_pieces);
+          run(nd.back, std::move(f.idx), std::move(f.lines), back_pieces);
           for (Labeled<T>& b : back_pieces)
-            out.push_back({std::move(b.idx), combine(f.loc, b.loc, orientation)});
+            out.push_back(
+                {std::move(b.idx), std::move(b.lines), combine(f.loc, b.loc, orientation)});
         }
         return;
       }
@@ -462,17 +559,36 @@ struct Partitioner {
       } else if (rel == Rel::back) {
         node = nd.back;
       } else {
-        split_polygon<T>(pool, h, nd.face, poly, s, fpts, bpts);
-        if (!fpts.empty()) run(nd.front, fpts, out);
+        split_polygon<T>(pool, h, pid, poly, s, fpts, bpts, &keyer, key_id(nd), lines, &flines,
+                         &blines);
+        if (!fpts.empty()) run(nd.front, fpts, flines, out);
         if (bpts.empty()) return;
         poly = bpts;
+        lines = blines;
         node = nd.back;
       }
     }
-    out.push_back(
-        {std::move(poly), node == bsp3_inside ? Bsp3Location::inside : Bsp3Location::outside});
+    out.push_back({std::move(poly), std::move(lines),
+                   node == bsp3_inside ? Bsp3Location::inside : Bsp3Location::outside});
   }
 };
+
+/// The defining triangle of a polygon: indices j, k with polygon[0], polygon[j], polygon[k] not
+/// collinear (exact), the first such; false when there is none.
+template <Real T>
+[[nodiscard]] bool defining_triangle(std::span<const Vec3<T>> polygon, std::size_t& j,
+                                     std::size_t& k) noexcept {
+  if (polygon.size() < 3) return false;
+  const Vec3<T> a = polygon[0];
+  j = 1;
+  while (j < polygon.size() && polygon[j] == a) ++j;
+  if (j == polygon.size()) return false;
+  k = j + 1;
+  Sign o = Sign::zero;
+  for (; k < polygon.size(); ++k)
+    if (projection_axis(a, polygon[j], polygon[k], o) >= 0) return true;
+  return false;
+}
 
 }  // namespace
 
@@ -489,23 +605,21 @@ Bsp3PolygonPartition<T> Bsp3<T>::partition(std::span<const Vec3<T>> polygon) con
       return r;
     }
   r.status = Status::degenerate_input;
-  if (polygon.size() < 3) return r;
-  // The defining triangle: the first three non-collinear points (exact).
-  const Vec3<T> a = polygon[0];
-  std::size_t j = 1;
-  while (j < polygon.size() && polygon[j] == a) ++j;
-  if (j == polygon.size()) return r;
-  std::size_t k = j + 1;
-  Sign o = Sign::zero;
-  for (; k < polygon.size(); ++k)
-    if (projection_axis(a, polygon[j], polygon[k], o) >= 0) break;
-  if (k == polygon.size()) return r;
+  std::size_t j = 0, k = 0;
+  if (!defining_triangle(polygon, j, k)) return r;
   r.status = Status::ok;
-  Partitioner<T> walk{vertices_, faces_, nodes_, a, polygon[j], polygon[k], {}};
+  std::uint32_t serial = 0;
+  Partitioner<T> walk{
+      vertices_, faces_, nodes_, {}, {}, polygon[0], polygon[j], polygon[k], {bsp3_none, &serial},
+      {}};
   std::vector<std::uint32_t> idx;
-  for (const auto& p : polygon) idx.push_back(walk.pool.add_exact(p));
+  std::vector<LineKey> lines;
+  for (const auto& p : polygon) {
+    idx.push_back(walk.pool.add_exact(p));
+    lines.push_back({bsp3_detail::line_unique, serial++, 0, 0});
+  }
   std::vector<Labeled<T>> pieces;
-  walk.run(root_, std::move(idx), pieces);
+  walk.run(root_, std::move(idx), std::move(lines), pieces);
   for (const Labeled<T>& p : pieces) {
     r.pieces.push_back({static_cast<std::uint32_t>(r.points.size()),
                         static_cast<std::uint32_t>(p.idx.size()), p.loc});
@@ -513,6 +627,60 @@ Bsp3PolygonPartition<T> Bsp3<T>::partition(std::span<const Vec3<T>> polygon) con
   }
   return r;
 }
+
+namespace bsp3_detail {
+
+template <Real T>
+std::vector<KeyedPiece> partition_keyed(const Bsp3<T>& tree,
+                                        std::span<const std::uint32_t> plane_of_face,
+                                        std::span<const std::uint32_t> key_of_face,
+                                        std::span<const Vec3<T>> polygon,
+                                        std::span<const VertexKey> keys,
+                                        std::span<const LineKey> lines, std::uint32_t polygon_plane,
+                                        std::uint32_t& serial) {
+  std::vector<KeyedPiece> out;
+  std::size_t j = 0, k = 0;
+  if (!defining_triangle(polygon, j, k)) return out;
+  Partitioner<T> walk{tree.vertices(),
+                      tree.faces(),
+                      tree.nodes(),
+                      plane_of_face,
+                      key_of_face,
+                      polygon[0],
+                      polygon[j],
+                      polygon[k],
+                      {polygon_plane, &serial},
+                      {}};
+  std::vector<std::uint32_t> idx;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    idx.push_back(walk.pool.add_exact(polygon[i], keys[i]));
+  std::vector<Labeled<T>> pieces;
+  walk.run(tree.root(), std::move(idx), std::vector<LineKey>(lines.begin(), lines.end()), pieces);
+  out.reserve(pieces.size());
+  for (Labeled<T>& p : pieces) {
+    KeyedPiece q;
+    for (const std::uint32_t i : p.idx) {
+      q.points.push_back(walk.pool.recs[i].p);
+      q.keys.push_back(walk.pool.recs[i].key);
+      q.input.push_back(walk.pool.recs[i].a == bsp3_none ? 1 : 0);
+    }
+    q.lines = std::move(p.lines);
+    q.location = p.loc;
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+#define LOCUS_BSP3_KEYED_INSTANTIATE(T)                                               \
+  template std::vector<KeyedPiece> partition_keyed(                                   \
+      const Bsp3<T>&, std::span<const std::uint32_t>, std::span<const std::uint32_t>, \
+      std::span<const Vec3<T>>, std::span<const VertexKey>, std::span<const LineKey>, \
+      std::uint32_t, std::uint32_t&);
+LOCUS_BSP3_KEYED_INSTANTIATE(float)
+LOCUS_BSP3_KEYED_INSTANTIATE(double)
+#undef LOCUS_BSP3_KEYED_INSTANTIATE
+
+}  // namespace bsp3_detail
 
 template class Bsp3<float>;
 template class Bsp3<double>;

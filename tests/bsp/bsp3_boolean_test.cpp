@@ -35,7 +35,7 @@ class Bsp3BooleanTest : public ::testing::Test {};
 TYPED_TEST_SUITE(Bsp3BooleanTest, locus_test::RealTypes);
 
 constexpr MeshBooleanOp ops[] = {MeshBooleanOp::union_, MeshBooleanOp::intersection,
-                                 MeshBooleanOp::difference};
+                                 MeshBooleanOp::difference, MeshBooleanOp::symmetric_difference};
 
 template <class T>
 MeshBoolean<T> run(MeshBooleanOp op, const Solid3<T>& a, const Solid3<T>& b) {
@@ -59,6 +59,8 @@ bool apply(MeshBooleanOp op, bool a, bool b) {
       return a && b;
     case MeshBooleanOp::difference:
       return a && !b;
+    case MeshBooleanOp::symmetric_difference:
+      return a != b;
   }
   return false;
 }
@@ -106,6 +108,31 @@ std::size_t unpaired_edges(const MeshBoolean<T>& r) {
   return bad;
 }
 
+/// Edges violating the 2-manifold rule: every directed edge (i, j) used exactly once and its
+/// reverse exactly once, no triangle with a repeated vertex. 0 for a watertight manifold mesh.
+template <class T>
+std::size_t non_manifold_edges(const MeshBoolean<T>& r) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
+  std::size_t bad = 0;
+  for (const auto& t : r.triangles) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) ++bad;
+    for (int e = 0; e < 3; ++e) ++count[{t[e], t[(e + 1) % 3]}];
+  }
+  for (const auto& [edge, n] : count) {
+    const auto it = count.find({edge.second, edge.first});
+    if (n != 1 || it == count.end() || it->second != 1) ++bad;
+  }
+  return bad;
+}
+
+/// V - E + F of a closed triangle mesh (E = 3F / 2).
+template <class T>
+long long euler_characteristic(const MeshBoolean<T>& r) {
+  return static_cast<long long>(r.vertices.size()) -
+         static_cast<long long>(3 * r.triangles.size() / 2) +
+         static_cast<long long>(r.triangles.size());
+}
+
 TYPED_TEST(Bsp3BooleanTest, DyadicBoxesExactVolumes) {
   using T = TypeParam;
   locus_test::Rng rng(locus_test::test_seed() + 41);
@@ -126,8 +153,8 @@ TYPED_TEST(Bsp3BooleanTest, DyadicBoxesExactVolumes) {
       const T overlap = std::min(hi[0][k], hi[1][k]) - std::max(lo[0][k], lo[1][k]);
       vi *= mpq_class(double(std::max(overlap, T(0))));
     }
-    const mpq_class want[3] = {va + vb - vi, vi, va - vi};
-    for (int o = 0; o < 3; ++o) {
+    const mpq_class want[4] = {va + vb - vi, vi, va - vi, va + vb - 2 * vi};
+    for (int o = 0; o < 4; ++o) {
       const MeshBoolean<T> r = run(ops[o], a, b);
       ASSERT_EQ(r.status, Status::ok);
       EXPECT_EQ(locus_test::exact_volume(r.vertices, r.triangles), want[o])
@@ -151,8 +178,8 @@ TYPED_TEST(Bsp3BooleanTest, RotatedSolidsVolumesAndSampling) {
                           rng.uniform<double>(0.2, 3), rng.vec<double, 3>(-0.5, 0.5));
     for (const Solid3<T>* a : {&sphere, &l}) {
       const double va = locus_test::volume(a->v, a->f), vb = locus_test::volume(box.v, box.f);
-      double got[3];
-      for (int o = 0; o < 3; ++o) {
+      double got[4];
+      for (int o = 0; o < 4; ++o) {
         const MeshBoolean<T> r = run(ops[o], *a, box);
         ASSERT_EQ(r.status, Status::ok);
         got[o] = locus_test::volume(r.vertices, r.triangles);
@@ -161,6 +188,7 @@ TYPED_TEST(Bsp3BooleanTest, RotatedSolidsVolumesAndSampling) {
       const double tol = 64 * double(std::numeric_limits<T>::epsilon()) * (va + vb + 1);
       EXPECT_NEAR(got[0] + got[1], va + vb, tol) << "trial " << trial;
       EXPECT_NEAR(got[2], va - got[1], tol) << "trial " << trial;
+      EXPECT_NEAR(got[3], got[0] - got[1], tol) << "trial " << trial;
       EXPECT_GE(got[1], -tol);
     }
   }
@@ -290,6 +318,144 @@ TYPED_TEST(Bsp3BooleanTest, PowerOfTwoScalingAndTreeOverload) {
   const MeshBoolean<T> via_ranges =
       locus::mesh_boolean(MeshBooleanOp::difference, a.v, a.f, b.v, b.f);
   EXPECT_EQ(via_ranges.triangles, via_meshes.triangles);
+}
+
+/// Randomly rotated and shifted pairs of solids: the output is a watertight 2-manifold mesh
+/// (every edge used once in each direction) for union, intersection and difference, and a closed
+/// (balanced) one for xor, whose two parts touch along the intersection curve; the volumes agree
+/// with inclusion-exclusion, Euler characteristics with the known topology, and random points
+/// with the exact point-in-polyhedron of the operands.
+TYPED_TEST(Bsp3BooleanTest, RotatedSolidsAreWatertight) {
+  using T = TypeParam;
+  locus_test::Rng rng(locus_test::test_seed() + 45);
+  SCOPED_TRACE(rng.trace());
+  const Solid3<T> shapes[] = {
+      locus_test::box3<T>({-0.5, -0.375, -0.625}, {0.5, 0.375, 0.625}),
+      locus_test::from_mesh(locus::tetrahedron_mesh<T>()),
+      locus_test::from_mesh(locus::icosphere_mesh<T>(T(0.8), 0)),
+      locus_test::moved(locus_test::l_prism3<T>(), {0, 0, 1}, 0, {-1, -1, -0.5}),
+  };
+  const bool convex[] = {true, true, true, false};
+  for (int trial = 0; trial < 8; ++trial) {
+    const int ia = trial % 4, ib = (trial / 2) % 4;  // every shape against another
+    const auto place = [&rng](const Solid3<T>& s) {
+      return locus_test::moved(s, rng.unit<double, 3>(), rng.uniform<double>(0.1, 3),
+                               rng.vec<double, 3>(-0.3, 0.3));
+    };
+    const Solid3<T> a = place(shapes[ia]);
+    const Solid3<T> b = place(shapes[ib]);
+    const double va = locus_test::volume(a.v, a.f), vb = locus_test::volume(b.v, b.f);
+    const locus::Bsp3<T> ta(a.v, a.f), tb(b.v, b.f);  // built once for the four operations
+    double got[4];
+    for (int o = 0; o < 4; ++o) {
+      const MeshBoolean<T> r = locus::mesh_boolean(ops[o], ta, tb);
+      ASSERT_EQ(r.status, Status::ok);
+      got[o] = locus_test::volume(r.vertices, r.triangles);
+      if (ops[o] == MeshBooleanOp::symmetric_difference)
+        EXPECT_EQ(unpaired_edges(r), 0u) << "trial " << trial;
+      else
+        EXPECT_EQ(non_manifold_edges(r), 0u) << "trial " << trial << " op " << o;
+      // Two overlapping convex solids: union and intersection are balls (sphere surfaces).
+      if (convex[ia] && convex[ib] && o < 2 && !r.triangles.empty()) {
+        EXPECT_EQ(euler_characteristic(r), 2) << "trial " << trial << " op " << o;
+      }
+      check_sampling(ops[o], a, b, r, rng, T(-1.5), T(1.5), 8);
+    }
+    const double tol = 64 * double(std::numeric_limits<T>::epsilon()) * (va + vb + 1);
+    EXPECT_NEAR(got[0] + got[1], va + vb, tol) << "trial " << trial;
+    EXPECT_NEAR(got[2], va - got[1], tol) << "trial " << trial;
+    EXPECT_NEAR(got[3], got[0] - got[1], tol) << "trial " << trial;
+  }
+}
+
+/// Two overlapping icospheres (80 faces each): watertight union and
+/// intersection with the volumes of inclusion-exclusion, sphere topology.
+TYPED_TEST(Bsp3BooleanTest, IcospherePairIsWatertight) {
+  using T = TypeParam;
+  const Solid3<T> s = locus_test::from_mesh(locus::icosphere_mesh<T>(T(1), 1));
+  const Solid3<T> a = locus_test::moved(s, {0.6, 0.0, 0.8}, 0.7, {0, 0, 0});
+  const Solid3<T> b = locus_test::moved(s, {0.0, 0.6, 0.8}, 1.9, {0.7, 0.3, 0.2});
+  const MeshBoolean<T> u = run(MeshBooleanOp::union_, a, b),
+                       i = run(MeshBooleanOp::intersection, a, b);
+  EXPECT_EQ(non_manifold_edges(u), 0u);
+  EXPECT_EQ(non_manifold_edges(i), 0u);
+  EXPECT_EQ(euler_characteristic(u), 2);
+  EXPECT_EQ(euler_characteristic(i), 2);
+  const double va = locus_test::volume(a.v, a.f), vb = locus_test::volume(b.v, b.f);
+  EXPECT_NEAR(
+      locus_test::volume(u.vertices, u.triangles) + locus_test::volume(i.vertices, i.triangles),
+      va + vb, 64 * double(std::numeric_limits<T>::epsilon()) * (va + vb));
+}
+
+/// Coincident faces of rotated boxes (the shared face has the same rounded corners in both; its
+/// quads are folded by rounding): closed (balanced) output with the right volume, though folds
+/// may remain (not asserted 2-manifold, see the header); exactly coplanar partial contact:
+/// watertight 2-manifold with the exact volume; boxes touching along an edge or at a corner
+/// (non-manifold results): balanced, right volumes; xor of identical operands: no volume.
+TYPED_TEST(Bsp3BooleanTest, DegenerateContacts) {
+  using T = TypeParam;
+  const Vec3<double> axis{0.48, 0.6, 0.64};
+  const auto rot = [&axis](const Solid3<T>& s) {
+    return locus_test::moved(s, axis, 0.9, {0, 0, 0});
+  };
+  const double tol = 64 * double(std::numeric_limits<T>::epsilon());
+  const Solid3<T> a = rot(locus_test::box3<T>({0, 0, 0}, {1, 1, 1}));
+  const Solid3<T> shared = rot(locus_test::box3<T>({1, 0, 0}, {2, 1, 1}));
+  const double want_shared[4] = {2, 0, 1, 2}, want_same[4] = {1, 1, 0, 0};
+  for (int o = 0; o < 4; ++o) {
+    const MeshBoolean<T> r = run(ops[o], a, shared), s = run(ops[o], a, a);
+    EXPECT_EQ(unpaired_edges(r), 0u) << "op " << o;
+    EXPECT_EQ(unpaired_edges(s), 0u) << "op " << o;
+    EXPECT_NEAR(locus_test::volume(r.vertices, r.triangles), want_shared[o], tol) << "op " << o;
+    EXPECT_NEAR(locus_test::volume(s.vertices, s.triangles), want_same[o], tol) << "op " << o;
+  }
+  EXPECT_TRUE(run(MeshBooleanOp::intersection, a, shared).triangles.empty());
+  // A smaller box glued on part of a face (exactly coplanar): the face is cut around it.
+  const Solid3<T> flat = locus_test::box3<T>({0, 0, 0}, {1, 1, 1});
+  const Solid3<T> half = locus_test::box3<T>({1, 0.25, 0.25}, {2, 0.75, 0.75});
+  const MeshBoolean<T> uh = run(MeshBooleanOp::union_, flat, half);
+  EXPECT_EQ(non_manifold_edges(uh), 0u);
+  EXPECT_EQ(euler_characteristic(uh), 2);
+  EXPECT_EQ(locus_test::exact_volume(uh.vertices, uh.triangles), mpq_class(5, 4));
+  const MeshBoolean<T> xh = run(MeshBooleanOp::symmetric_difference, flat, half);
+  EXPECT_EQ(locus_test::exact_volume(xh.vertices, xh.triangles), mpq_class(5, 4));
+  // Touching along an edge and at a corner: non-manifold results, still balanced.
+  const Solid3<T> edge = rot(locus_test::box3<T>({1, 1, 0}, {2, 2, 1}));
+  const Solid3<T> corner = rot(locus_test::box3<T>({1, 1, 1}, {2, 2, 2}));
+  for (const Solid3<T>* b : {&edge, &corner}) {
+    const MeshBoolean<T> r = run(MeshBooleanOp::union_, a, *b);
+    EXPECT_EQ(unpaired_edges(r), 0u);
+    EXPECT_NEAR(locus_test::volume(r.vertices, r.triangles), 2, tol);
+    const MeshBoolean<T> d = run(MeshBooleanOp::difference, a, *b);
+    EXPECT_EQ(unpaired_edges(d), 0u);
+    EXPECT_NEAR(locus_test::volume(d.vertices, d.triangles), 1, tol);
+  }
+}
+
+TYPED_TEST(Bsp3BooleanTest, ComplementIsReversedAndUnbounded) {
+  using T = TypeParam;
+  locus_test::Rng rng(locus_test::test_seed() + 46);
+  SCOPED_TRACE(rng.trace());
+  const Solid3<T> a = locus_test::from_mesh(locus::icosphere_mesh<T>(T(1), 1));
+  const Solid3<T> b = locus_test::moved(locus_test::box3<T>({0, 0, 0}, {1, 1, 1}),
+                                        rng.unit<double, 3>(), 0.8, {-0.2, -0.1, 0});
+  const MeshBoolean<T> nb = locus::mesh_complement<T>(b.v, b.f);
+  ASSERT_EQ(nb.status, Status::ok);
+  ASSERT_EQ(nb.triangles.size(), b.f.size());
+  EXPECT_NEAR(locus_test::volume(nb.vertices, nb.triangles), -locus_test::volume(b.v, b.f), 1e-12);
+  // A n complement(B) = A - B; its points away from the surfaces agree.
+  const locus::Bsp3<T> tnb(nb.vertices, nb.triangles);
+  EXPECT_EQ(tnb.classify(Vec3<T>{50, 0, 0}), Side::inside);  // the complement is unbounded
+  const MeshBoolean<T> via =
+      run(MeshBooleanOp::intersection, a, Solid3<T>{nb.vertices, nb.triangles});
+  const MeshBoolean<T> d = run(MeshBooleanOp::difference, a, b);
+  EXPECT_EQ(non_manifold_edges(via), 0u);
+  EXPECT_NEAR(locus_test::volume(via.vertices, via.triangles),
+              locus_test::volume(d.vertices, d.triangles), 1e-5);
+  Solid3<T> nan = b;
+  nan.v[0].x = std::numeric_limits<T>::quiet_NaN();
+  EXPECT_EQ(locus::mesh_complement<T>(nan.v, nan.f).status, Status::non_finite_input);
+  EXPECT_EQ(locus::mesh_complement<T>(std::span<const Vec3<T>>(), {}).status, Status::empty_input);
 }
 
 }  // namespace

@@ -75,9 +75,10 @@ TEST(MeshBooleanCli, WritesTheLibraryResult) {
   const std::pair<const char*, locus::MeshBooleanOp> ops[] = {
       {"union", locus::MeshBooleanOp::union_},
       {"intersection", locus::MeshBooleanOp::intersection},
-      {"difference", locus::MeshBooleanOp::difference}};
-  const char* volumes[] = {"volume 15\n", "volume 1\n", "volume 7\n"};
-  for (int i = 0; i < 3; ++i) {
+      {"difference", locus::MeshBooleanOp::difference},
+      {"xor", locus::MeshBooleanOp::symmetric_difference}};
+  const char* volumes[] = {"volume 15\n", "volume 1\n", "volume 7\n", "volume 14\n"};
+  for (int i = 0; i < 4; ++i) {
     const fs::path out = dir / (std::string(ops[i].first) + ".off");
     const CliRun r = run_locus(dir, std::string("mesh boolean --op ") + ops[i].first + " '" +
                                         (dir / "a.off").string() + "' '" +
@@ -92,7 +93,7 @@ TEST(MeshBooleanCli, WritesTheLibraryResult) {
     EXPECT_EQ(fan(got.mesh), want.triangles);
   }
   const CliRun bad =
-      run_locus(dir, "mesh boolean --op xor '" + (dir / "a.off").string() + "' '" +
+      run_locus(dir, "mesh boolean --op nand '" + (dir / "a.off").string() + "' '" +
                          (dir / "b.off").string() + "' -o '" + (dir / "x.off").string() + "'");
   EXPECT_EQ(bad.code, 2);
   write_box(dir / "nan.off", 0, 1, true);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// `locus mesh boolean`: union, intersection or difference of two closed mesh files through
+// `locus mesh boolean`: union, intersection, difference or xor of two closed mesh files through
 // their BSP trees (locus::mesh_boolean, bsp/bsp3_boolean.hpp). Polygon faces are fanned into
 // triangles first (convex faces expected); the result is a triangle mesh.
 
@@ -28,7 +28,8 @@ locus::MeshBooleanOp parse_op(const std::string& s) {
   if (s == "union") return locus::MeshBooleanOp::union_;
   if (s == "intersection") return locus::MeshBooleanOp::intersection;
   if (s == "difference") return locus::MeshBooleanOp::difference;
-  throw UsageError("--op must be union, intersection or difference, not '" + s + "'");
+  if (s == "xor" || s == "symmetric-difference") return locus::MeshBooleanOp::symmetric_difference;
+  throw UsageError("--op must be union, intersection, difference or xor, not '" + s + "'");
 }
 
 std::vector<std::array<std::uint32_t, 3>> fan(const locus::PolygonMesh<double>& m) {
@@ -91,10 +92,13 @@ void run_boolean(const BooleanOptions& o) {
 void register_mesh_boolean(CLI::App& mesh) {
   auto o = std::make_shared<BooleanOptions>();
   CLI::App* sub = mesh.add_subcommand(
-      "boolean", "union, intersection or difference of two closed meshes (BSP trees, book 13.1)");
+      "boolean",
+      "union, intersection, difference or xor of two closed meshes (BSP trees, book 13.1)");
   sub->add_option("a", o->a, "the first closed mesh (.obj .off .ply .stl)")->required();
   sub->add_option("b", o->b, "the second closed mesh")->required();
-  sub->add_option("--op", o->op, "union, intersection or difference (a minus b)")->required();
+  sub->add_option("--op", o->op,
+                  "union, intersection, difference (a minus b) or xor (symmetric difference)")
+      ->required();
   sub->add_option("-o,--output", o->output, "the result mesh (format from its extension)")
       ->required();
   sub->add_option("--format", o->format, "input format, overriding the extensions");
