@@ -268,7 +268,7 @@ bool fig_13_77(SvgWriter& w) {
 }  // namespace
 
 std::vector<Figure> chapter13_polytri_figures() {
-  return {
+  std::vector<Figure> figs = {
       {"13.53", "triangulate_ear_clipping", fig_13_53},
       {"13.56", "the input of the trapezoid and monotone figures", fig_13_56},
       {"13.68", "trapezoid_decomposition, trapezoid_corners", fig_13_68},
@@ -279,6 +279,9 @@ std::vector<Figure> chapter13_polytri_figures() {
       {"13.76", "min_convex_partition, convex_partition", fig_13_76},
       {"13.77", "min_convex_partition; fans of its pieces", fig_13_77},
   };
+  // The incremental trapezoidal map's figures (13.57-13.67) live in ch13_trapezoid_map.cpp.
+  for (const Figure& f : chapter13_trapmap_figures()) figs.push_back(f);
+  return figs;
 }
 
 }  // namespace locus_gallery
