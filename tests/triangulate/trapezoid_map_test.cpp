@@ -172,8 +172,9 @@ TYPED_TEST(TrapezoidMapTest, RandomPolygonEdgesPartitionThePlane) {
   locus_test::Rng rng;
   SCOPED_TRACE(rng.trace());
   for (int c = 0; c < 12; ++c) {
-    const auto poly =
-        locus_test::star_polygon<T>(rng, rng.uniform_int(3, 40), 0.5, 1.0, rng.uniform_int(0, 3));
+    // Sequenced draws; 12+ vertices keep the holes inside the outer ring.
+    const int holes = rng.uniform_int(0, 3), n = rng.uniform_int(holes ? 12 : 3, 40);
+    const auto poly = locus_test::star_polygon<T>(rng, n, 0.5, 1.0, holes);
     const Input<T> in = polygon_edges(poly);
     std::vector<MapTrapezoid> reference;
     for (int variant = 0; variant < 4; ++variant) {
@@ -198,8 +199,8 @@ TYPED_TEST(TrapezoidMapTest, DistinctEndpointsGive3kPlus1) {
   locus_test::Rng rng(locus_test::test_seed() + 1);
   SCOPED_TRACE(rng.trace());
   for (int c = 0; c < 8; ++c) {
-    const auto poly =
-        locus_test::star_polygon<T>(rng, rng.uniform_int(3, 30), 0.5, 1.0, rng.uniform_int(0, 2));
+    const int holes = rng.uniform_int(0, 2), n = rng.uniform_int(holes ? 12 : 3, 30);
+    const auto poly = locus_test::star_polygon<T>(rng, n, 0.5, 1.0, holes);
     Input<T> in = shrunk_edges(poly);
     // Drop level segments so the crossing oracle has a height range to look at.
     std::erase_if(in.segments,
@@ -262,7 +263,7 @@ TYPED_TEST(TrapezoidMapTest, CoversTheBoundingBox) {
   EXPECT_NEAR(area, 16.0, 16.0 * 64 * std::numeric_limits<T>::epsilon());
 }
 
-TYPED_TEST(TrapezoidMapTest, PowerOfTwoScaleKeepsTheMap) {
+TYPED_TEST(TrapezoidMapTest, PowerOfTwoScaleAndTranslationKeepTheMap) {
   using T = TypeParam;
   locus_test::Rng rng(locus_test::test_seed() + 4);
   SCOPED_TRACE(rng.trace());
@@ -275,6 +276,12 @@ TYPED_TEST(TrapezoidMapTest, PowerOfTwoScaleKeepsTheMap) {
     ASSERT_EQ(r.status, Status::ok);
     EXPECT_EQ(r.trapezoids, base.trapezoids);
   }
+  // A translation on the input grid is exact and keeps the map too.
+  Input<T> moved = in;
+  for (auto& p : moved.points) p = p + Vec2<T>{T(3), T(-5)};
+  const auto r = locus::trapezoid_map(moved.points, moved.segments);
+  ASSERT_EQ(r.status, Status::ok);
+  EXPECT_EQ(r.trapezoids, base.trapezoids);
 }
 
 TYPED_TEST(TrapezoidMapTest, DegenerateAndBadInput) {

@@ -6,14 +6,14 @@
 // containing it by a horizontal line (split_at); each segment splits every trapezoid it crosses
 // into a left and a right part (insert); merge() joins vertically adjacent trapezoids with the
 // same left and right segments, giving the map of maximal trapezoids (3n + 1 of them for n
-// segments with distinct endpoints). With `merge_each_insertion` (the default, Seidel's form)
-// insert() merges as it goes, so the map is maximal after every insertion; without it the
-// states are the book's figures. locate(q): the trapezoid containing q.
-// Trapezoids are exact, with no constructed point: `bottom`/`top` are point indices (or
-// trapezoid_unbounded) whose heights bound it, `left`/`right` segment indices (or unbounded);
-// the whole plane is one trapezoid with all four unbounded. trapezoid_map_corners() rounds.
-// Order (symbolic, exact): "above" = larger y, ties broken by SMALLER x, so no two points are
-// level (horizontal segments behave as if tilted). Left/right of a segment: orient2d against it
+// segments with distinct endpoints; a split at a point of no inserted segment is undone). With
+// `merge_each_insertion` (the default, Seidel's form) insert() merges as it goes, so the map is
+// maximal after every insertion; without it the states are the book's figures. locate(q): the
+// trapezoid containing q. Trapezoids are exact, with no constructed point: `bottom`/`top` are point
+// indices (or trapezoid_unbounded) whose heights bound it, `left`/`right` segment indices (or
+// unbounded); the whole plane is one trapezoid with all four unbounded. trapezoid_map_corners()
+// rounds. Order (symbolic, exact): "above" = larger y, ties broken by SMALLER x, so no two points
+// are level (horizontal segments behave as if tilted). Left/right of a segment: orient2d against it
 // directed upward. A query on a boundary goes to the trapezoid above / right of it.
 // Degenerate input: equal coordinates are one point (smallest index); a zero-length segment is
 // skipped; segments may share endpoints. Segments crossing, overlapping or touching another's
@@ -82,7 +82,8 @@ class TrapezoidMap2 {
 
   /// The live trapezoids (indices change after every step).
   [[nodiscard]] std::span<const MapTrapezoid> trapezoids() const noexcept { return traps_; }
-  /// Index into trapezoids() of the trapezoid containing q (ties: above, then right).
+  /// Index into trapezoids() of the trapezoid containing q (ties: above, then right);
+  /// trapezoid_unbounded before begin() or after a failed one.
   [[nodiscard]] std::uint32_t locate(const Vec2<T>& q) const noexcept;
   /// The canonical index of a point (the smallest index with equal coordinates).
   [[nodiscard]] std::uint32_t canonical(std::uint32_t point) const noexcept {
