@@ -284,6 +284,69 @@ TYPED_TEST(TrapezoidMapTest, PowerOfTwoScaleAndTranslationKeepTheMap) {
   EXPECT_EQ(r.trapezoids, base.trapezoids);
 }
 
+// Whether closed segments ab and cd meet anywhere but at one shared endpoint (exact, GMP).
+template <class T>
+bool meet_elsewhere(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& c, const Vec2<T>& d) {
+  const auto on = [](const Vec2<T>& p, const Vec2<T>& q, const Vec2<T>& r) {  // r on [p, q]
+    return sign_q(p, q, r) == 0 && std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) &&
+           std::min(p.y, q.y) <= r.y && r.y <= std::max(p.y, q.y);
+  };
+  const int o1 = sign_q(a, b, c), o2 = sign_q(a, b, d), o3 = sign_q(c, d, a), o4 = sign_q(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  const bool shared = a == c || a == d || b == c || b == d;
+  if (!shared) return on(a, b, c) || on(a, b, d) || on(c, d, a) || on(c, d, b);
+  const Vec2<T> s = a == c || a == d ? a : b, p = s == a ? b : a, q = s == c ? d : c;
+  return on(a, b, q) || on(c, d, p);  // collinear overlap from the shared end
+}
+
+// Segments on a small integer grid: level and vertical segments, collinear chains, fans at
+// shared endpoints and repeated points under other indices; queries level with the grid rows.
+TYPED_TEST(TrapezoidMapTest, GridSegmentsWithTies) {
+  using T = TypeParam;
+  locus_test::Rng rng(locus_test::test_seed() + 5);
+  SCOPED_TRACE(rng.trace());
+  for (int c = 0; c < 6; ++c) {
+    Input<T> in;
+    for (int x = 0; x <= 4; ++x)
+      for (int y = 0; y <= 4; ++y) in.points.push_back({T(x), T(y)});
+    for (int k = 0; k < 3; ++k) {
+      const Vec2<T> copy = in.points[std::size_t(rng.uniform_int(0, 24))];
+      in.points.push_back(copy);
+    }
+    const int last = static_cast<int>(in.points.size()) - 1;
+    for (int tries = 0; tries < 30; ++tries) {
+      const auto i = static_cast<std::uint32_t>(rng.uniform_int(0, last));
+      const auto j = static_cast<std::uint32_t>(rng.uniform_int(0, last));
+      if (in.points[i] == in.points[j]) continue;
+      bool ok = true;
+      for (const Seg& s : in.segments)
+        ok = ok && !meet_elsewhere(in.points[i], in.points[j], in.points[s[0]], in.points[s[1]]);
+      if (ok) in.segments.push_back({i, j});
+    }
+    std::vector<MapTrapezoid> reference;
+    for (const int variant : {0, 3}) {  // Seidel in the given order; the book's, shuffled
+      TrapezoidMap2<T> m;
+      const TrapezoidMapOptions opt{variant % 2 == 0, static_cast<std::uint64_t>(variant / 2 * 5)};
+      ASSERT_EQ(m.build(std::span<const Vec2<T>>(in.points), in.segments, opt), Status::ok);
+      const auto traps = m.trapezoids();
+      for (int qx = -1; qx <= 9; ++qx)
+        for (int qy = -1; qy <= 9; ++qy) {
+          const Vec2<T> q{T(qx * 0.5 + 0.125), T(qy * 0.5 + (qy % 2 != 0 ? 0.25 : 0.0))};
+          if (on_some_segment(in, q)) continue;
+          std::vector<std::uint32_t> hits;
+          for (std::size_t i = 0; i < traps.size(); ++i)
+            if (strictly_inside(in, traps[i], q)) hits.push_back(static_cast<std::uint32_t>(i));
+          ASSERT_EQ(hits.size(), 1u) << "case " << c << " query " << q.x << " " << q.y;
+          ASSERT_EQ(m.locate(q), hits[0]);
+        }
+      if (variant == 0)
+        reference = sorted<T>(traps);
+      else
+        ASSERT_EQ(sorted<T>(traps), reference) << "case " << c << " variant " << variant;
+    }
+  }
+}
+
 TYPED_TEST(TrapezoidMapTest, DegenerateAndBadInput) {
   using T = TypeParam;
   const std::vector<Vec2<T>> none_pts;
