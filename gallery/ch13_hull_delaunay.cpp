@@ -173,6 +173,36 @@ bool fig_13_14(SvgWriter& w) {
   return true;
 }
 
+// 13.15: the half-open rule on the boundary. A point on an edge is tested by the ray along +x
+// counting only edges strictly to its right (locus's exact per-edge event, the one
+// classify(Polygon2) uses, with "on this edge" counted as no crossing): on a "left" edge the
+// point is inside (P), on a "right" edge outside (Q). Checked: classify() puts every point on
+// the boundary, and the rule's answer is classify() of the point nudged right (and, much less, up).
+bool fig_13_15(SvgWriter& w) {
+  const std::vector<Vec2d> poly{{0, 0}, {10, 0}, {10, 6}, {7, 3}, {6, 8}, {2, 8}, {3, 4}, {0, 5}};
+  const std::span<const Vec2d> ring(poly);
+  w.polygon(poly, filled(c::gray, 0.15, 1.6));
+  int np = 0, nq = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Vec2d a = poly[i], b = poly[(i + 1) % poly.size()];
+    const Vec2d m = 0.5 * (a + b);  // exact: even integer coordinates
+    if (classify_polygon(m, ring) != Side::boundary) return false;
+    int crossings = 0;
+    for (std::size_t j = 0; j < poly.size(); ++j) {
+      int dir = 0;
+      if (detail::edge_ray_event(poly[j], poly[(j + 1) % poly.size()], m, dir) == 1) ++crossings;
+    }
+    const bool inside = crossings % 2 == 1;
+    const Side nudged = classify_polygon(m + Vec2d{1e-6, 1e-9}, ring);
+    if (nudged != (inside ? Side::inside : Side::outside)) return false;
+    const char* col = inside ? c::blue : c::red;
+    w.segment(a, b, pen(col, 3));
+    point(w, m, inside ? "P" + std::to_string(np++) : "Q" + std::to_string(nq++), col);
+  }
+  caption_at(w, Vec2d{0, -1.2}, "on a left edge: inside (P); on a right edge: outside (Q)");
+  return true;
+}
+
 // The points where the horizontal line through y meets the boundary (a vertex or an edge point
 // per locus::distance(Line2, Segment2) == 0; both end points of an edge lying on the line),
 // sorted by x.
@@ -1302,6 +1332,42 @@ bool fig_13_49(SvgWriter& w) {
   return true;
 }
 
+// 13.50: the modified insertion polygon: the conflicting triangles are replaced by the fan from
+// P to the insertion polygon's edges; every new triangle's circumcircle (dashed) is empty of
+// all points (exact incircle), which restores the Delaunay condition. Checked: the fan is
+// exactly the triangles at P in locus::delaunay with P added.
+bool fig_13_50(SvgWriter& w) {
+  const auto s = supertriangle(bw_points);
+  if (!s) return false;
+  const std::vector<Vec2d> in = bw_input(*s, bw_next + 1);
+  const Delaunay2Result dt = delaunay(std::span<const Vec2d>(in));
+  if (dt.status != Status::ok) return false;
+  bw_view(w, *s);
+  const auto m = w.mapping();
+  const Idx pi = static_cast<Idx>(in.size() - 1);
+  const Vec2d p = in[pi];
+  int fan = 0;
+  for (std::size_t t = 0; t < dt.triangle_count(); ++t) {
+    const Tri& tri = dt.triangles[t];
+    if (tri[0] != pi && tri[1] != pi && tri[2] != pi) continue;
+    ++fan;
+    const Triangle2<double> tr{in[tri[0]], in[tri[1]], in[tri[2]]};
+    draw(w, tr, filled(c::green, 0.18, 0.5));
+    for (std::size_t q = 0; q < in.size(); ++q)
+      if (incircle(in[tri[0]], in[tri[1]], in[tri[2]], in[q]) == Sign::positive) return false;
+    const auto circ = circumscribed_circle(tr);
+    if (!circ) return false;
+    clipped_circle(w, *circ, m.inner_lo, m.inner_hi, dashed(c::green, 1));
+    for (std::size_t i = 0; i < 3; ++i)
+      if (tri[i] != pi && tri[(i + 1) % 3] != pi)
+        w.segment(in[tri[i]], in[tri[(i + 1) % 3]], pen(c::blue, 2.6));
+  }
+  if (fan < 3) return false;
+  bw_mesh(w, in, dt);
+  point(w, p, "P", c::red);
+  return true;
+}
+
 // 13.51: the triangulation of the supertriangle and all points; triangles using a supertriangle
 // vertex (light) are removed, the others (dark) are the final mesh.
 bool fig_13_51(SvgWriter& w) {
@@ -1512,6 +1578,8 @@ std::vector<Figure> chapter13_figures() {
   return {
       {"13.13", "classify_convex; distance(Line2, Segment2) for the crossed edges", fig_13_13},
       {"13.14", "classify(Polygon2) (exact crossing number); distance(Ray2, Segment2)", fig_13_14},
+      {"13.15", "the per-edge ray event of classify(Polygon2), half-open; classify_polygon",
+       fig_13_15},
       {"13.16",
        "classify_polygon of the intervals around each boundary point; distance(Line2, "
        "Segment2)",
@@ -1560,6 +1628,7 @@ std::vector<Figure> chapter13_figures() {
        "delaunay before and after inserting P (the fan at P = the insertion polygon); "
        "incircle",
        fig_13_49},
+      {"13.50", "delaunay with P added, incircle (exact), circumscribed_circle", fig_13_50},
       {"13.51", "delaunay of the supertriangle and all points", fig_13_51},
       {"13.52", "convex_hull (3D) of the lifted points, delaunay (same triangles)", fig_13_52},
       {"13.78", "circumscribed_circle, inscribed_circle", fig_13_78},

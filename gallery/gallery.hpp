@@ -59,6 +59,7 @@ std::vector<Figure> chapter13_bsp_figures();           // ch13_bsp.cpp: 13.1-13.
 std::vector<Figure> chapter13_figures();               // ch13_hull_delaunay.cpp: 13.2-13.11
 std::vector<Figure> chapter13_boolean_figures();       // ch13_boolean.cpp: 13.20-13.26
 std::vector<Figure> chapter13_polytri_figures();       // ch13_triangulate.cpp: 13.53-13.77
+std::vector<Figure> chapter13_trapmap_figures();       // ch13_trapezoid_map.cpp: 13.57-67
 std::vector<Figure> appendix_a_figures();              // chA_numerics.cpp: A.2-A.24
 /// Every figure in book order.
 std::vector<Figure> all_figures();

@@ -57,6 +57,10 @@ class ConstrainedDelaunayResult(Result):
 class TriangulationResult(Result):
     triangles: _Indices
 
+class TrapezoidMapResult(Result):
+    trapezoids: npt.NDArray[np.int64]
+    located: npt.NDArray[np.int64]
+
 class MinCircleResult(Result):
     center: _Floats
     radius: float
@@ -203,6 +207,9 @@ def constrained_delaunay(points: _Points, constraints: npt.ArrayLike) -> Constra
 def triangulate_polygon(
     points: _Points, ring_ends: npt.ArrayLike | None = None, method: str = "cdt"
 ) -> TriangulationResult: ...
+def trapezoid_map(
+    points: _Points, segments: npt.ArrayLike, queries: _Points | None = None
+) -> TrapezoidMapResult: ...
 def min_circle(points: _Points) -> MinCircleResult: ...
 def min_sphere(points: _Points) -> MinSphereResult: ...
 def min_rect(points: _Points, perimeter: bool = False) -> MinRectResult: ...

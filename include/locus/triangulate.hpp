@@ -10,3 +10,4 @@
 #include <locus/triangulate/monotone.hpp>
 #include <locus/triangulate/polygon_triangulation.hpp>
 #include <locus/triangulate/trapezoid_decomposition.hpp>
+#include <locus/triangulate/trapezoid_map.hpp>

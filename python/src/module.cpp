@@ -74,6 +74,8 @@ for _name, _doc in [
     ("ConstrainedDelaunayResult", "constrained_delaunay: dimension, triangles, adjacency, hull, "
                                   "duplicate_of, constrained, rejected."),
     ("TriangulationResult", "triangulate_polygon: triangles (indices into points, CCW)."),
+    ("TrapezoidMapResult", "trapezoid_map: trapezoids (bottom, top, left, right; -1 unbounded), "
+                           "located."),
     ("Construction", "construct: circles (k, 3), lines (m, 4), infinite; apollonius: signs."),
     ("MinCircleResult", "min_circle: center, radius, support."),
     ("MinSphereResult", "min_sphere: center, radius, support."),

@@ -33,6 +33,7 @@
 #include <locus/triangulate/ear_clipping.hpp>
 #include <locus/triangulate/monotone.hpp>
 #include <locus/triangulate/trapezoid_decomposition.hpp>
+#include <locus/triangulate/trapezoid_map.hpp>
 
 #include <gtest/gtest.h>
 
@@ -119,6 +120,13 @@ TYPED_TEST(PointRange2Test, HullsAndTriangulations) {
   });
   expect_same(poly, "trapezoid_decomposition", [&](const auto& p) {
     const TrapezoidDecomposition r = trapezoid_decomposition(p, ring_ends);
+    return digest(r.status, static_cast<double>(r.trapezoids.size()));
+  });
+  std::array<std::array<std::uint32_t, 2>, kRing> ring_segments{};
+  for (std::uint32_t i = 0; i < kRing; ++i)
+    ring_segments[i] = {i, static_cast<std::uint32_t>((i + 1) % kRing)};
+  expect_same(poly, "trapezoid_map", [&](const auto& p) {
+    const TrapezoidMap r = trapezoid_map(p, ring_segments);
     return digest(r.status, static_cast<double>(r.trapezoids.size()));
   });
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // locus cdt, locus triangulate: triangulations of polygons with holes read from WKT or GeoJSON
-// (delaunay/constrained_delaunay2.hpp, triangulate/ear_clipping.hpp, triangulate/monotone.hpp).
+// (delaunay/constrained_delaunay2.hpp, triangulate/ear_clipping.hpp, triangulate/monotone.hpp);
+// locus trapezoids: the trapezoidal map of the polygons' edges with point location
+// (triangulate/trapezoid_map.hpp).
 
 #include "commands.hpp"
 #include "io.hpp"
@@ -8,7 +10,9 @@
 #include <locus/delaunay/constrained_delaunay2.hpp>
 #include <locus/triangulate/ear_clipping.hpp>
 #include <locus/triangulate/monotone.hpp>
+#include <locus/triangulate/trapezoid_map.hpp>
 
+#include <algorithm>
 #include <memory>
 
 namespace locus_cli {
@@ -118,6 +122,86 @@ void run_triangulate(const TriangulateOptions& o) {
   draw_and_write(o.c, polygons, t, j);
 }
 
+struct TrapezoidOptions {
+  Common c;
+  std::string points;
+};
+
+std::string trapezoid_row(const locus::MapTrapezoid& t) {
+  std::string s;
+  for (const std::uint32_t x : {t.bottom, t.top, t.left, t.right})
+    s += (s.empty() ? "" : " ") + (x == locus::trapezoid_unbounded ? "-1" : std::to_string(x));
+  return s;
+}
+
+void run_trapezoids(const TrapezoidOptions& o) {
+  const std::vector<PolygonInput> polygons = load_polygons(o.c);
+  // Every ring's edges, numbered in file order; points as for cdt.
+  std::vector<Vec2d> pts;
+  std::vector<std::array<std::uint32_t, 2>> segs;
+  for (const PolygonInput& p : polygons) {
+    const auto base = static_cast<std::uint32_t>(pts.size());
+    pts.insert(pts.end(), p.points.begin(), p.points.end());
+    std::uint32_t b = 0;
+    for (const std::uint32_t e : p.ring_ends) {
+      for (std::uint32_t i = b; i < e; ++i)
+        segs.push_back({base + i, base + (i + 1 < e ? i + 1 : b)});
+      b = e;
+    }
+  }
+  locus::TrapezoidMap2<double> map;
+  const locus::Status st = map.build(std::span<const Vec2d>(pts), segs);
+  if (st == locus::Status::invalid_topology)
+    throw InputError(o.c.input + ": trapezoidal map: polygon edges cross or touch");
+  require_ok(st, o.c.input + ": trapezoidal map");
+  const auto traps = map.trapezoids();
+  std::string text, rows = "[", located = "[";
+  for (std::size_t i = 0; i < traps.size(); ++i) {
+    const std::string r = trapezoid_row(traps[i]);
+    rows += (i ? ",[" : "[") + std::string(r.begin(), r.end()) + "]";
+    if (o.points.empty()) text += r + '\n';
+  }
+  for (char& ch : rows)
+    if (ch == ' ') ch = ',';
+  if (!o.points.empty()) {
+    Common pc = o.c;
+    pc.input = o.points;
+    pc.format.clear();
+    const std::vector<Vec2d> q = load_points2(pc);
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      if (!locus::is_finite(q[i]))
+        throw InputError(o.points + ": point " + std::to_string(i) + " is not finite");
+      const std::uint32_t k = map.locate(q[i]);
+      text += std::to_string(k) + " " + trapezoid_row(traps[k]) + '\n';
+      located += (i ? "," : "") + std::to_string(k);
+    }
+  }
+  if (!o.c.svg.empty()) {
+    Vec2d lo = pts.front(), hi = pts.front();
+    for (const Vec2d& p : pts) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    const Vec2d pad = 0.1 * (hi - lo) + Vec2d{1e-9, 1e-9};
+    locus::SvgWriter svg;
+    for (const auto& t : traps) {
+      const auto c = locus::trapezoid_map_corners(
+          std::span<const Vec2d>(pts), std::span<const std::array<std::uint32_t, 2>>(segs), t,
+          lo - pad, hi + pad);
+      svg.polygon(c, fill_style());
+    }
+    for (const auto& e : segs) svg.segment(pts[e[0]], pts[e[1]], result_style());
+    save_svg(o.c, svg);
+  }
+  JsonObject j;
+  j.str("command", "trapezoids")
+      .integer("segments", static_cast<std::int64_t>(segs.size()))
+      .integer("points", static_cast<std::int64_t>(pts.size()))
+      .raw("trapezoids", rows + "]");
+  if (!o.points.empty()) j.raw("located", located + "]");
+  emit(o.c, text, j);
+}
+
 constexpr const char* polygon_help = "a polygon file: WKT (.wkt) or GeoJSON (.json .geojson)";
 
 }  // namespace
@@ -153,6 +237,23 @@ void register_polygon(CLI::App& app) {
         "Example:\n  locus triangulate floorplan.wkt --svg tri.svg\n"
         "  locus triangulate lakes.geojson --method monotone -o lakes.obj");
     sub->callback([o] { run_triangulate(*o); });
+  }
+  {
+    auto o = std::make_shared<TrapezoidOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "trapezoids", "trapezoidal map of polygon edges, with point location (WKT, GeoJSON)");
+    add_common(sub, o->c, true, polygon_help);
+    sub->add_option("--points", o->points, "query points to locate (.csv .xyz, as for hull)");
+    sub->footer(
+        "Builds the horizontal trapezoidal map of every ring edge of the file's polygons\n"
+        "(Seidel's incremental algorithm, exact) and prints one trapezoid per line: bottom top\n"
+        "left right, the points whose heights bound it and the edges bounding it, -1 where\n"
+        "unbounded. Points are numbered as for cdt, edges in file order (edge i starts at point\n"
+        "i). With --points, prints instead for each query point the index of the trapezoid\n"
+        "holding it and that trapezoid.\n"
+        "Example:\n  locus trapezoids floorplan.wkt --svg map.svg\n"
+        "  locus trapezoids floorplan.wkt --points probes.csv --json");
+    sub->callback([o] { run_trapezoids(*o); });
   }
 }
 
