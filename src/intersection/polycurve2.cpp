@@ -167,14 +167,20 @@ double bern_eval(const std::vector<double>& b, double u) {
 
 int sign(double x) noexcept { return (x > 0.0) - (x < 0.0); }
 
-/// Algebraic method: Bernstein-Descartes isolation of the roots of the piece polynomial.
-bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int& budget) {
-  double noise = 0.0;
-  const std::vector<double> whole = line_coeffs(l, p, noise);
-  if (std::all_of(whole.begin(), whole.end(), [](double v) { return v == 0.0; })) {
-    out.push_back({p.t0, p.t1, p.t0, 0});
-    return true;
-  }
+/// A root of a Bernstein polynomial on [0, 1] found by isolate_bernstein (local parameters).
+struct BernRoot {
+  double a, b;  // interval holding it
+  double t;     // the root
+  int mult;     // 1 isolated simple root; -1 a noise run (decide from the signs around);
+                // -3 an exactly zero end coefficient
+};
+
+/// Bernstein-Descartes isolation of the roots in [0, 1] of the Bernstein polynomial `whole`
+/// whose coefficients carry absolute error up to `noise`: simple roots bisected to an ulp, runs
+/// of subintervals where every coefficient is within the noise merged and reported once.
+/// Shared by the line method (7.3) and the resultant (7.4.1). False when the budget runs out.
+bool isolate_bernstein(const std::vector<double>& whole, double noise, std::vector<BernRoot>& out,
+                       int& budget) {
   struct Node {
     double a, b;
     std::vector<double> c;
@@ -184,7 +190,7 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
   double run_a = -1.0, run_b = -1.0;
   const auto flush = [&]() {
     if (run_a < 0.0) return;
-    out.push_back({global_t(p, run_a), global_t(p, run_b), global_t(p, 0.5 * (run_a + run_b)), -1});
+    out.push_back({run_a, run_b, 0.5 * (run_a + run_b), -1});
     run_a = run_b = -1.0;
   };
   while (!stack.empty()) {
@@ -193,8 +199,8 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
     if (--budget < 0) return false;
     const std::vector<double>& c = nd.c;
     const std::size_t n = c.size() - 1;
-    if (c[0] == 0.0) out.push_back({global_t(p, nd.a), global_t(p, nd.a), global_t(p, nd.a), -3});
-    if (c[n] == 0.0) out.push_back({global_t(p, nd.b), global_t(p, nd.b), global_t(p, nd.b), -3});
+    if (c[0] == 0.0) out.push_back({nd.a, nd.a, nd.a, -3});
+    if (c[n] == 0.0) out.push_back({nd.b, nd.b, nd.b, -3});
     const bool all_noise =
         std::all_of(c.begin(), c.end(), [&](double v) { return std::abs(v) <= noise; });
     int variations = 0, last = 0;
@@ -208,7 +214,7 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
     if (!all_noise && variations == 1) {
       // Exactly one root in the open interval (a, b), simple (Descartes' rule in the Bernstein
       // basis; an exactly zero end coefficient is the root at that end, divided out): bisection
-      // on the piece polynomial, the sign near a being that of the first non-zero coefficient.
+      // on the polynomial, the sign near a being that of the first non-zero coefficient.
       double a = nd.a, b = nd.b;
       int sa = 0;
       for (double v : c)
@@ -226,7 +232,7 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
         (sm == sa ? a : b) = m;
       }
       const double r = 0.5 * (a + b);
-      out.push_back({global_t(p, r), global_t(p, r), global_t(p, r), 1});
+      out.push_back({r, r, r, 1});
       continue;
     }
     if (all_noise || nd.b - nd.a <= 0x1p-46) {
@@ -246,6 +252,21 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
   }
   flush();
   return true;
+}
+
+/// Algebraic method: Bernstein-Descartes isolation of the roots of the piece polynomial.
+bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int& budget) {
+  double noise = 0.0;
+  const std::vector<double> whole = line_coeffs(l, p, noise);
+  if (std::all_of(whole.begin(), whole.end(), [](double v) { return v == 0.0; })) {
+    out.push_back({p.t0, p.t1, p.t0, 0});
+    return true;
+  }
+  std::vector<BernRoot> roots;
+  const bool within = isolate_bernstein(whole, noise, roots, budget);
+  for (const BernRoot& r : roots)
+    out.push_back({global_t(p, r.a), global_t(p, r.b), global_t(p, r.t), r.mult});
+  return within;
 }
 
 /// Bounding-box hierarchy (figure 7.3): boxes of the control polygons against the line.
