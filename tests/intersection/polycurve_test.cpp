@@ -8,9 +8,9 @@
 // for two curves, crossings of their dense polylines at two resolutions (skipped when the two
 // disagree). Lines pass through known curve points so every case has a hit. Checked: counts,
 // one hit per bracket, residuals (point on both objects through both parameters), the three
-// methods agree, swapped overloads, power-of-two scaling (exact for the algebraic method) and
-// exact rigid motions of exact tangencies (one hit of multiplicity 2), joints found once,
-// overlaps (coincident), degenerate and non-finite input.
+// methods (and the resultant for curve pairs) agree, swapped overloads, power-of-two scaling (exact
+// for the algebraic method) and exact rigid motions of exact tangencies (one hit of multiplicity
+// 2), joints found once, overlaps (coincident), degenerate and non-finite input.
 
 #include <locus/intersection/curve_curve.hpp>
 #include <locus/intersection/line_curve.hpp>
@@ -35,8 +35,8 @@ template <class T>
 class Polycurve : public ::testing::Test {};
 TYPED_TEST_SUITE(Polycurve, locus_test::RealTypes);
 
-constexpr CurveMethod methods[3] = {CurveMethod::algebraic, CurveMethod::hierarchy,
-                                    CurveMethod::raster};
+constexpr CurveMethod methods[4] = {CurveMethod::algebraic, CurveMethod::hierarchy,
+                                    CurveMethod::raster, CurveMethod::resultant};
 
 CurveHitOptions with(CurveMethod m) {
   CurveHitOptions o;
