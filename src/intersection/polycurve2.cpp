@@ -1113,6 +1113,7 @@ bool subdivide_pairs(const Curve& a, const Curve& b,
 // the other, isolate the roots of the univariate result, invert.
 
 constexpr int max_implicit_degree = 4;
+constexpr int max_resultant_degree = 64;  // m n: binomials and the isolation stay well scaled
 
 double binom(int n, int k) {
   double r = 1.0;
@@ -1241,7 +1242,12 @@ bool resultant_pair(const Curve& a, std::size_t ka, const Curve& b, std::size_t 
   const Box bx = box_of(imp.h);
   const V2 centre = 0.5 * (bx.lo + bx.hi);
   double noise = 0.0;
+  if (deg(imp.h) * deg(oth.h) > max_resultant_degree) return false;
   const std::vector<double> g = resultant_poly(imp, oth, centre, noise);
+  // Overflow (huge coordinates), or Q on P's algebraic curve: the subdivision decides.
+  if (!std::isfinite(noise) ||
+      !std::all_of(g.begin(), g.end(), [](double v) { return std::isfinite(v); }))
+    return false;
   if (std::all_of(g.begin(), g.end(), [&](double v) { return std::abs(v) <= noise; })) return false;
   std::vector<BernRoot> roots;
   if (!isolate_bernstein(g, noise, roots, budget, true)) budget = -1;
@@ -1291,6 +1297,20 @@ CurveHits2<double> curve_curve(const Curve& a, const Curve& b, const CurveHitOpt
   r.status = a.status != Status::ok ? a.status : b.status;
   if (r.status != Status::ok) return r;
   const double scale = std::max(curve_scale(a), curve_scale(b));
+  int exponent = 0;
+  std::frexp(scale, &exponent);
+  if (exponent > 500 || exponent < -500) {
+    // Squares of coordinates (Newton's normal equations, the resultant) would overflow or
+    // underflow: solve the copies scaled by a power of two (exact), scale the points back.
+    Curve sa = a, sb = b;
+    for (Curve* c : {&sa, &sb})
+      for (Piece& p : c->pieces)
+        for (V3& q : p.h) q = {std::ldexp(q.x, -exponent), std::ldexp(q.y, -exponent), q.z};
+    CurveHits2<double> rs = curve_curve(sa, sb, opt);
+    for (CurveHit2<double>& h : rs.hits)
+      h.point = {std::ldexp(h.point.x, exponent), std::ldexp(h.point.y, exponent)};
+    return rs;
+  }
   const double leaf = std::max(opt.tolerance * scale, std::numeric_limits<double>::min());
   const double gap = std::max(opt.tolerance * opt.tolerance * scale, 64.0 * eps * scale);
   for (bool rev : {false, true}) {

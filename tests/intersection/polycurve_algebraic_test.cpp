@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "support/typed.hpp"
@@ -223,6 +224,15 @@ TYPED_TEST(PolycurveAlgebraic, SharedSubArcs) {
     expect_overlap(c, up, 0.25, 0.0, 0.75, 1.0);
   }
   {
+    SCOPED_TRACE("a two-span B-spline of c against the middle piece: one stretch over the joint");
+    const auto& p = c.control;
+    const BSplineCurve2<T> sp{
+        3,
+        {p[0], T(0.5) * (p[0] + p[1]), T(0.5) * (p[1] + p[2]), T(0.5) * (p[2] + p[3]), p[3]},
+        {T(0), T(0), T(0), T(0), T(0.5), T(1), T(1), T(1), T(1)}};
+    expect_overlap(sp, mid, 0.25, 0.0, 0.75, 1.0);
+  }
+  {
     SCOPED_TRACE("touching end to end: a point, no overlap");
     const auto r = intersection(piece(c, T(0), T(0.5)), piece(c, T(0.5), T(1)));
     ASSERT_EQ(r.status, Status::ok);
@@ -327,6 +337,35 @@ TYPED_TEST(PolycurveAlgebraic, SelfIntersectionSpecialCases) {
   EXPECT_TRUE(self_intersection(BezierCurve2<T>{{{T(0), T(0)}, {T(1), T(2)}}}).hits.empty());
 }
 
+TYPED_TEST(PolycurveAlgebraic, SelfIntersectionOfSplines) {
+  using T = TypeParam;
+  // A degree-1 B-spline (a polyline): its first and third spans cross at (1, 1); the corners
+  // (joints of adjacent spans) are not double points.
+  const BSplineCurve2<T> z{1,
+                           {{T(0), T(0)}, {T(2), T(2)}, {T(2), T(0)}, {T(0), T(2)}},
+                           {T(0), T(0), T(1), T(2), T(3), T(3)}};
+  for (CurveMethod m : {CurveMethod::algebraic, CurveMethod::resultant, CurveMethod::hierarchy}) {
+    const auto r = self_intersection(z, with(m));
+    ASSERT_EQ(r.status, Status::ok);
+    ASSERT_EQ(r.hits.size(), 1u);
+    EXPECT_NEAR(double(r.hits[0].param_a), 0.5, 1e-6);
+    EXPECT_NEAR(double(r.hits[0].param_b), 2.5, 1e-6);
+    EXPECT_EQ(r.hits[0].multiplicity, 1);
+  }
+  // A cusp (control polygon crossing back symmetrically): no double point, no hang.
+  const BezierCurve2<T> cusp{{{T(0), T(0)}, {T(2), T(2)}, {T(-1), T(2)}, {T(1), T(0)}}};
+  const auto k = self_intersection(cusp);
+  EXPECT_EQ(k.status, Status::ok);
+  // A rational loop (NURBS, one span): the double point lies on the curve at both parameters.
+  const NurbsCurve2<T> rl{3,
+                          {{T(0), T(0)}, {T(4), T(3)}, {T(-1), T(3)}, {T(3), T(0)}},
+                          {T(1), T(2), T(0.5), T(1)},
+                          {T(0), T(0), T(0), T(0), T(1), T(1), T(1), T(1)}};
+  const auto q = self_intersection(rl);
+  ASSERT_EQ(q.hits.size(), 1u);
+  EXPECT_LE(length(at(rl, double(q.hits[0].param_a)) - at(rl, double(q.hits[0].param_b))), 1e-5);
+}
+
 TYPED_TEST(PolycurveAlgebraic, DegenerateAndNonFiniteInput) {
   using T = TypeParam;
   const T nan = std::numeric_limits<T>::quiet_NaN();
@@ -354,6 +393,20 @@ TYPED_TEST(PolycurveAlgebraic, DegenerateAndNonFiniteInput) {
   const auto sub = intersection(q5, h5);
   const auto res = intersection(q5, h5, with(CurveMethod::resultant));
   EXPECT_EQ(res.hits.size(), sub.hits.size());
+  // Huge coordinates (squares overflow): solved on a power-of-two scaled copy, the same answer.
+  if constexpr (std::is_same_v<T, double>) {
+    BezierCurve2<T> a = q5, b = h5;
+    for (auto& p : a.control) p = T(0x1p900) * p;
+    for (auto& p : b.control) p = T(0x1p900) * p;
+    EXPECT_EQ(intersection(a, b, with(CurveMethod::resultant)).hits.size(), sub.hits.size());
+    EXPECT_EQ(intersection(a, b).hits.size(), sub.hits.size());
+    a.control.resize(4);
+    b.control.resize(3);
+    const auto small = intersection(a, b);
+    const auto big = intersection(a, b, with(CurveMethod::resultant));
+    EXPECT_EQ(big.status, Status::ok);
+    EXPECT_EQ(big.hits.size(), small.hits.size());
+  }
 }
 
 }  // namespace

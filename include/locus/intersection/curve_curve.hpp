@@ -16,8 +16,9 @@
 //    its Bezout matrix; the other (degree n) substituted gives a Bernstein polynomial of degree
 //    m n whose roots in [0, 1] are isolated by Descartes' rule, a node settled only when every
 //    coefficient exceeds its rounding bound; each root is inverted through the implicit piece's
-//    coordinate equations and polished by Newton. Above degree 4 on both sides, or when the
-//    resultant vanishes within its bound (one algebraic curve), the pair is subdivided instead.
+//    coordinate equations and polished by Newton. Above degree 4 on both sides, m n > 64, overflow,
+//    or when the resultant vanishes within its bound (one algebraic curve), the pair is subdivided
+//    instead.
 //  * raster (figure 7.11): both drawn into raster_cells cells; each component of shared cells
 //    seeds Newton; crossings a few cells apart can merge. curve_raster() returns the grid.
 // Shared stretches (every method): found from the pieces' ends lying on the other piece, then
@@ -27,10 +28,11 @@
 // Conditioning: crossings closer than tolerance x scale may merge (resultant: closer than the
 // root separation its noise allows, about sqrt of the noise); a tangency is found when the
 // gap is below max(tolerance^2, 64 eps) x scale and located to about its square root.
-// Computed in double. Bad input: NaN/Inf: non_finite_input; an invalid curve: its validate()
-// status; no hits. max_steps exhausted: limit_exceeded. Cost: O(k log(1/tolerance)) box pairs
-// for k crossings, more near tangencies; the resultant O((m n)^2) per piece pair plus the
-// isolation; allocates. The swapped order gives the same points with parameters exchanged.
+// Computed in double (scales beyond 2^+-500 on an exactly rescaled copy). Bad input: NaN/Inf:
+// non_finite_input; an invalid curve: its validate() status; no hits. max_steps exhausted:
+// limit_exceeded. Cost: O(k log(1/tolerance)) box pairs for k crossings, more near tangencies; the
+// resultant O((m n)^2) per piece pair plus the isolation; allocates. The swapped order gives the
+// same points with parameters exchanged.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/polycurve2.hpp>
