@@ -1411,7 +1411,7 @@ CurveHits2<double> self_curve(const Curve& c, const CurveHitOptions& opt) {
   r.status = c.status;
   if (c.status != Status::ok) return r;
   // The curve cut into monotone segments, in parameter order (a cusp stops at max_depth).
-  constexpr int max_depth = 30;
+  constexpr int max_depth = 20;
   std::vector<Piece> segs;
   int budget = opt.max_steps;
   for (const Piece& p : c.pieces) {

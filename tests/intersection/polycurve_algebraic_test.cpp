@@ -109,7 +109,7 @@ TYPED_TEST(PolycurveAlgebraic, ResultantAgreesWithSubdivision) {
   Rng rng(locus_test::test_seed() + 41);
   SCOPED_TRACE(rng.trace());
   int compared = 0, total = 0, crossings = 0;
-  for (int trial = 0; trial < 40; ++trial) {
+  for (int trial = 0; trial < 24; ++trial) {
     SCOPED_TRACE(trial);
     const BezierCurve2<T> a{control<T>(rng, 4)}, b{control<T>(rng, rng.uniform_int(2, 4))};
     compare_methods(a, b, compared);
@@ -125,7 +125,7 @@ TYPED_TEST(PolycurveAlgebraic, ResultantAgreesWithSubdivision) {
     total += 2;
   }
   EXPECT_GE(compared, total * 3 / 4);
-  EXPECT_GE(crossings, 20);  // the pairs do cross
+  EXPECT_GE(crossings, 12);  // the pairs do cross
 }
 
 TYPED_TEST(PolycurveAlgebraic, ResultantMultiplicityAndScaling) {

@@ -13,10 +13,11 @@
 // whose boxes meet is intersected by intersection() of curve_curve.hpp with the given options
 // (method, tolerance, budget), and the joint of two consecutive segments (their common end) is
 // excluded, within sqrt(tolerance) of either segment's parameter width. A cusp is not a double
-// point: its segment stops after 30 halvings and the cusp is not reported. The closing point of
+// point: its segment stops after 20 halvings and the cusp is not reported. The closing point of
 // a closed curve (first point == last point) is not reported either.
 // Conditioning: as intersection() of curve_curve.hpp; in addition a loop whose two parameters
-// both lie within sqrt(tolerance) x segment width of a segment joint is taken for the joint.
+// both lie within sqrt(tolerance) x segment width of a segment joint is taken for the joint,
+// and a loop inside the 2^-20 of a piece that holds a cusp is not separated from it.
 // Bad input: NaN/Inf: non_finite_input; an invalid curve: its validate() status; no hits.
 // Exhausted budget (max_steps halvings or box pairs of one segment pair): limit_exceeded.
 // Cost: O(s^2) box tests for s monotone segments (a few per inflection or turn), then the
