@@ -445,12 +445,16 @@ bool fig_7_11(SvgWriter& w) {
   o.raster_cells = 32;
   const auto r = intersection(cubic7, other, o);
   const auto exact = intersection(cubic7, other);
+  CurveHitOptions alg;
+  alg.method = CurveMethod::resultant;
+  const auto res = intersection(cubic7, other, alg);
   for (const auto& h : r.hits) point(w, h.point, "", c::red);
   w.text(Vec2d{-3, -4.6},
          std::to_string(r.hits.size()) + " points (raster), " + std::to_string(exact.hits.size()) +
-             " (subdivision)",
+             " (subdivision), " + std::to_string(res.hits.size()) + " (resultant, 7.4.1)",
          text_style(c::black, 0, 0));
-  return g.status == Status::ok && !r.hits.empty() && r.hits.size() == exact.hits.size();
+  return g.status == Status::ok && !r.hits.empty() && r.hits.size() == exact.hits.size() &&
+         res.hits.size() == exact.hits.size();
 }
 
 }  // namespace
@@ -467,7 +471,8 @@ std::vector<Figure> chapter7_intersection_figures() {
       {"7.8", "intersection(Ellipse2, Ellipse2), relation", fig_7_8},
       {"7.9", "relation(Ellipse2, Ellipse2)", fig_7_9},
       {"7.10", "intersection(Ellipse2, Ellipse2)", fig_7_10},
-      {"7.11", "curve_raster, intersection(BezierCurve2, BezierCurve2) (raster)", fig_7_11},
+      {"7.11", "curve_raster, intersection(BezierCurve2, BezierCurve2) (raster, resultant)",
+       fig_7_11},
       {"7.12", "intersects_convex_polygons", fig_7_12},
       {"7.13", "convex_polygon_intersection", fig_7_13},
       {"7.14", "intersection(Triangle2, Triangle2)", fig_7_14},

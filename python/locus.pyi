@@ -474,3 +474,9 @@ def curve_intersections(
     tolerance: float = ...,
     raster_cells: int = 256,
 ) -> CurveHits: ...
+def curve_self_intersections(
+    curve: _Curve,
+    method: str = "algebraic",
+    tolerance: float = ...,
+    raster_cells: int = 256,
+) -> CurveHits: ...

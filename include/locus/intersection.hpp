@@ -15,6 +15,7 @@
 #include <locus/intersection/circle_quadratic_curve.hpp>
 #include <locus/intersection/convex_polygon2.hpp>
 #include <locus/intersection/curve_curve.hpp>
+#include <locus/intersection/curve_self.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/ellipse_quadratic_curve.hpp>
 #include <locus/intersection/ellipsoid_ellipsoid.hpp>

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: BSL-1.0
 // Intersections with Bézier / B-spline / NURBS curves (intersection/line_curve.hpp,
 // ray_curve.hpp, segment_curve.hpp, curve_curve.hpp): line_curve_hits (a line, ray or segment
-// against a curve) and curve_intersections (two curves), by the algebraic (default), hierarchy or
-// raster method. A curve is its control points ((n, 2)) alone (a Bézier curve), or a dict with
-// "control", and "degree" and "knots" (a B-spline), plus "weights" (a NURBS curve). Computed in
-// float64. Invalid curves and NaN / infinite input raise ValueError.
+// against a curve) and curve_intersections (two curves), by the algebraic (default), hierarchy,
+// resultant or raster method, and curve_self_intersections (intersection/curve_self.hpp). A curve
+// is its control points ((n, 2)) alone (a Bézier curve), or a dict with "control", and "degree" and
+// "knots" (a B-spline), plus "weights" (a NURBS curve). Computed in float64. Invalid curves and NaN
+// / infinite input raise ValueError.
 #include "common.hpp"
 
 #include <locus/intersection/curve_curve.hpp>
+#include <locus/intersection/curve_self.hpp>
 #include <locus/intersection/line_curve.hpp>
 #include <locus/intersection/ray_curve.hpp>
 #include <locus/intersection/segment_curve.hpp>
@@ -63,8 +65,10 @@ CurveHitOptions options(const std::string& method, double tolerance, int raster_
     o.method = CurveMethod::hierarchy;
   else if (method == "raster")
     o.method = CurveMethod::raster;
+  else if (method == "resultant")
+    o.method = CurveMethod::resultant;
   else
-    fail(fn, "method must be 'algebraic', 'hierarchy' or 'raster'");
+    fail(fn, "method must be 'algebraic', 'hierarchy', 'resultant' or 'raster'");
   if (!(tolerance > 0.0 && tolerance < 1.0)) fail(fn, "tolerance must be in (0, 1)");
   if (raster_cells < 1) fail(fn, "raster_cells must be at least 1");
   o.tolerance = tolerance;
@@ -142,8 +146,23 @@ void bind_curve_intersection(py::module_& m) {
       py::arg("a"), py::arg("b"), py::arg("method") = "algebraic", py::arg("tolerance") = 0x1p-20,
       py::arg("raster_cells") = 256,
       "Common points of two curves (each (n, 2) Bezier control points, or a dict with control, "
-      "degree, knots[, weights]): CurveHits (kind 'coincident' for the same curve), ordered by "
-      "param_a.");
+      "degree, knots[, weights]) by method 'algebraic', 'hierarchy', 'resultant' (implicitise "
+      "one, book 7.4.1) or 'raster': CurveHits ordered by param_a; kind 'coincident' when they "
+      "share a stretch, whose two ends come as consecutive hits of multiplicity 0.");
+  m.def(
+      "curve_self_intersections",
+      [](py::handle c, const std::string& method, double tolerance, int raster_cells) {
+        const char* fn = "curve_self_intersections";
+        const CurveHitOptions o = options(method, tolerance, raster_cells, fn);
+        const AnyCurve cv = curve_arg(c, fn, "curve");
+        return std::visit([&](const auto& x) { return hits_out(self_intersection(x, o), fn); }, cv);
+      },
+      py::arg("curve"), py::arg("method") = "algebraic", py::arg("tolerance") = 0x1p-20,
+      py::arg("raster_cells") = 256,
+      "Double points of one curve ((n, 2) Bezier control points, or a dict with control, degree, "
+      "knots[, weights]): CurveHits with param_a < param_b the two parameters of each point, "
+      "multiplicity 1 crossing / 2 touching; segment joints, cusps and the closing point of a "
+      "closed curve are not reported.");
 }
 
 }  // namespace locus::python

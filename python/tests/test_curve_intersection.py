@@ -1,4 +1,5 @@
-# line_curve_hits / curve_intersections (Bezier, B-spline, NURBS; algebraic, hierarchy, raster)
+# line_curve_hits / curve_intersections / curve_self_intersections (Bezier, B-spline, NURBS;
+# algebraic, hierarchy, resultant, raster)
 # against a dense-sampling oracle in numpy (sign changes of the signed distance from the line,
 # crossings of dense polylines with shapely), exact tangencies, the coincident case, swap
 # symmetry and bad input.
@@ -8,7 +9,7 @@ from shapely.geometry import LineString
 
 import locus
 
-METHODS = ["algebraic", "hierarchy", "raster"]
+METHODS = ["algebraic", "hierarchy", "raster", "resultant"]
 
 
 def bezier_points(ctrl, t):
@@ -122,6 +123,46 @@ def test_coincident_and_tangent_curves():
     assert r.kind == "coincident" and len(r.points) == 2
     t = locus.curve_intersections(up, [[0, -1], [1, 1], [2, -1]])
     assert len(t.points) == 1 and t.multiplicity[0] == 2
+
+
+def test_resultant_matches_subdivision():
+    rng = np.random.default_rng(11)
+    compared = 0
+    for _ in range(30):
+        a, b = rng.integers(-32, 33, (4, 2)) / 8.0, rng.integers(-32, 33, (3, 2)) / 8.0
+        sub = locus.curve_intersections(a, b)
+        res = locus.curve_intersections(a, b, method="resultant")
+        if any(m != 1 for m in sub.multiplicity):
+            continue
+        assert len(res.points) == len(sub.points)
+        np.testing.assert_allclose(res.param_a, sub.param_a, atol=1e-9)
+        np.testing.assert_allclose(res.param_b, sub.param_b, atol=1e-9)
+        compared += len(sub.points)
+    assert compared >= 10
+
+
+def test_shared_stretch_and_self_intersections():
+    c = np.array([[0, 0], [1, 3], [2, -2], [3, 1.0]])
+    # The left half of c by de Casteljau at 1/2: they share c's [0, 1/2].
+    half = np.array([c[0], (c[0] + c[1]) / 2, (c[0] + 2 * c[1] + c[2]) / 4,
+                     (c[0] + 3 * c[1] + 3 * c[2] + c[3]) / 8])
+    for method in ("algebraic", "resultant"):
+        r = locus.curve_intersections(c, half, method=method)
+        assert r.kind == "coincident" and list(r.multiplicity) == [0, 0]
+        np.testing.assert_allclose(r.param_a, [0, 0.5], atol=1e-9)
+        np.testing.assert_allclose(r.param_b, [0, 1], atol=1e-9)
+    # A loop symmetric about x = 1.5: its double point at parameters s and 1 - s.
+    loop = [[0, 0], [4, 3], [-1, 3], [3, 0]]
+    s = locus.curve_self_intersections(loop)
+    assert s.kind == "point" and s.multiplicity[0] == 1
+    assert s.param_a[0] < s.param_b[0]
+    np.testing.assert_allclose(s.param_a[0] + s.param_b[0], 1.0, atol=1e-9)
+    np.testing.assert_allclose(s.points[0], bezier_points(loop, s.param_b)[0], atol=1e-9)
+    assert len(locus.curve_self_intersections([[0, 0], [1, 1], [2, 0]]).points) == 0
+    with pytest.raises(ValueError):
+        locus.curve_self_intersections([[0, 0], [np.nan, 1], [2, 0]])
+    with pytest.raises(ValueError):
+        locus.curve_self_intersections(loop, method="guess")
 
 
 def test_bad_input():

@@ -4,6 +4,7 @@
 // Every curve arrives as rational Bézier pieces in double. Derivations: docs/notes/polycurve.md.
 
 #include <locus/intersection/detail/polycurve2.hpp>
+#include <locus/numeric/roots.hpp>
 
 #include <algorithm>
 #include <array>
@@ -11,6 +12,7 @@
 #include <cstddef>
 #include <limits>
 #include <numeric>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -167,14 +169,23 @@ double bern_eval(const std::vector<double>& b, double u) {
 
 int sign(double x) noexcept { return (x > 0.0) - (x < 0.0); }
 
-/// Algebraic method: Bernstein-Descartes isolation of the roots of the piece polynomial.
-bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int& budget) {
-  double noise = 0.0;
-  const std::vector<double> whole = line_coeffs(l, p, noise);
-  if (std::all_of(whole.begin(), whole.end(), [](double v) { return v == 0.0; })) {
-    out.push_back({p.t0, p.t1, p.t0, 0});
-    return true;
-  }
+/// A root of a Bernstein polynomial on [0, 1] found by isolate_bernstein (local parameters).
+struct BernRoot {
+  double a, b;  // interval holding it
+  double t;     // the root
+  int mult;     // 1 isolated simple root; -1 a noise run (decide from the signs around);
+                // -3 an exactly zero end coefficient
+};
+
+/// Bernstein-Descartes isolation of the roots in [0, 1] of the Bernstein polynomial `whole`
+/// whose coefficients carry absolute error up to `noise`: simple roots bisected to an ulp, runs
+/// of subintervals where every coefficient is within the noise merged and reported once.
+/// Shared by the line method (7.3) and the resultant (7.4.1). `strict`: a node is settled only
+/// when every coefficient is beyond the noise (a double root at a split point, where the end
+/// coefficient rounds to either side of zero, is not lost); otherwise exact signs decide.
+/// False when the budget runs out.
+bool isolate_bernstein(const std::vector<double>& whole, double noise, std::vector<BernRoot>& out,
+                       int& budget, bool strict = false) {
   struct Node {
     double a, b;
     std::vector<double> c;
@@ -184,7 +195,7 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
   double run_a = -1.0, run_b = -1.0;
   const auto flush = [&]() {
     if (run_a < 0.0) return;
-    out.push_back({global_t(p, run_a), global_t(p, run_b), global_t(p, 0.5 * (run_a + run_b)), -1});
+    out.push_back({run_a, run_b, 0.5 * (run_a + run_b), -1});
     run_a = run_b = -1.0;
   };
   while (!stack.empty()) {
@@ -193,10 +204,12 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
     if (--budget < 0) return false;
     const std::vector<double>& c = nd.c;
     const std::size_t n = c.size() - 1;
-    if (c[0] == 0.0) out.push_back({global_t(p, nd.a), global_t(p, nd.a), global_t(p, nd.a), -3});
-    if (c[n] == 0.0) out.push_back({global_t(p, nd.b), global_t(p, nd.b), global_t(p, nd.b), -3});
+    if (!strict && c[0] == 0.0) out.push_back({nd.a, nd.a, nd.a, -3});
+    if (!strict && c[n] == 0.0) out.push_back({nd.b, nd.b, nd.b, -3});
     const bool all_noise =
         std::all_of(c.begin(), c.end(), [&](double v) { return std::abs(v) <= noise; });
+    const bool unsure =
+        strict && std::any_of(c.begin(), c.end(), [&](double v) { return std::abs(v) <= noise; });
     int variations = 0, last = 0;
     for (double v : c) {
       const int s = sign(v);
@@ -204,11 +217,11 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
       if (last != 0 && s != last) ++variations;
       last = s;
     }
-    if (!all_noise && variations == 0) continue;
-    if (!all_noise && variations == 1) {
+    if (!all_noise && !unsure && variations == 0) continue;
+    if (!all_noise && !unsure && variations == 1) {
       // Exactly one root in the open interval (a, b), simple (Descartes' rule in the Bernstein
       // basis; an exactly zero end coefficient is the root at that end, divided out): bisection
-      // on the piece polynomial, the sign near a being that of the first non-zero coefficient.
+      // on the polynomial, the sign near a being that of the first non-zero coefficient.
       double a = nd.a, b = nd.b;
       int sa = 0;
       for (double v : c)
@@ -226,7 +239,7 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
         (sm == sa ? a : b) = m;
       }
       const double r = 0.5 * (a + b);
-      out.push_back({global_t(p, r), global_t(p, r), global_t(p, r), 1});
+      out.push_back({r, r, r, 1});
       continue;
     }
     if (all_noise || nd.b - nd.a <= 0x1p-46) {
@@ -246,6 +259,21 @@ bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int&
   }
   flush();
   return true;
+}
+
+/// Algebraic method: Bernstein-Descartes isolation of the roots of the piece polynomial.
+bool isolate_piece(const Lin& l, const Piece& p, std::vector<LinCand>& out, int& budget) {
+  double noise = 0.0;
+  const std::vector<double> whole = line_coeffs(l, p, noise);
+  if (std::all_of(whole.begin(), whole.end(), [](double v) { return v == 0.0; })) {
+    out.push_back({p.t0, p.t1, p.t0, 0});
+    return true;
+  }
+  std::vector<BernRoot> roots;
+  const bool within = isolate_bernstein(whole, noise, roots, budget);
+  for (const BernRoot& r : roots)
+    out.push_back({global_t(p, r.a), global_t(p, r.b), global_t(p, r.t), r.mult});
+  return within;
 }
 
 /// Bounding-box hierarchy (figure 7.3): boxes of the control polygons against the line.
@@ -881,44 +909,145 @@ CurveRaster2<double> raster(const Curve& a, const Curve& b, int cells) {
   return g;
 }
 
-CurveHits2<double> curve_curve(const Curve& a, const Curve& b, const CurveHitOptions& opt) {
-  CurveHits2<double> r;
-  r.status = a.status != Status::ok ? a.status : b.status;
-  if (r.status != Status::ok) return r;
-  const double scale = std::max(curve_scale(a), curve_scale(b));
-  const double leaf = std::max(opt.tolerance * scale, std::numeric_limits<double>::min());
-  const double gap = std::max(opt.tolerance * opt.tolerance * scale, 64.0 * eps * scale);
-  for (bool rev : {false, true}) {
-    if (!same_pieces(a, b, rev)) continue;
-    // The same point set (as given, or reversed): an overlap over the whole curve.
-    const Piece& f = a.pieces.front();
-    const Piece& l = a.pieces.back();
-    const double b0 = rev ? curve_back(b) : curve_front(b);
-    const double b1 = rev ? curve_front(b) : curve_back(b);
-    r.kind = Kind::coincident;
-    r.hits.push_back({proj(f.h.front()), f.t0, b0, 0});
-    r.hits.push_back({proj(l.h.back()), l.t1, b1, 0});
-    return r;
-  }
-  if (opt.method == CurveMethod::raster) return raster_hits(a, b, opt, scale);
+namespace {
 
-  // Box-pair hierarchy (both the algebraic default and the hierarchy method: for two curves the
-  // subdivision isolates, Newton on the 2x2 system solves).
+// ---------------------------------------------------------------------------------------------
+// Inversion and overlaps (sub-arcs shared by the two curves).
+
+/// The parameter of the point of piece p nearest q: 32 samples, then Gauss-Newton on the foot
+/// condition (C(u) - q).C'(u) = 0 (quadratic for points on the curve); (u, distance).
+std::pair<double, double> invert(const Piece& p, const V2& q) {
+  constexpr int samples = 32;
+  double u = 0.0, best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= samples; ++i) {
+    const double s = static_cast<double>(i) / samples;
+    const double d = length(eval(p.h, s).p - q);
+    if (d < best) {
+      best = d;
+      u = s;
+    }
+  }
+  for (int it = 0; it < 60 && best > 0.0; ++it) {
+    const Eval e = eval(p.h, u);
+    const double dd = dot(e.dp, e.dp);
+    if (!(dd > 0.0)) break;
+    const double nu = std::clamp(u - dot(e.p - q, e.dp) / dd, 0.0, 1.0);
+    const double nd = length(eval(p.h, nu).p - q);
+    if (!(nd < best)) break;
+    const bool tiny = std::abs(nu - u) <= eps;
+    best = nd;
+    u = nu;
+    if (tiny) break;
+  }
+  return {u, best};
+}
+
+/// A sub-arc shared by piece pa of the first curve and piece pb of the second: local
+/// parameters [u0, u1] (u0 < u1) on pa matched to v0 -> v1 on pb (decreasing when reversed).
+struct Overlap {
+  std::size_t pa, pb;
+  double u0, u1, v0, v1;
+};
+
+/// The overlaps of two pieces. Every sub-arc shared by two pieces starts and ends at an end
+/// of one of them, so the anchors are the ends of each piece that lie on the other (within
+/// `on`); consecutive anchors bound an overlap when deg(pa) deg(pb) + 2 points between them lie
+/// on both pieces too (more common points than Bezout's bound: the same algebraic curve,
+/// docs/notes/polycurve.md).
+void piece_overlaps(const Piece& pa, std::size_t ia, const Piece& pb, std::size_t ib, double on,
+                    std::vector<Overlap>& out) {
+  if (!overlap(box_of(pa.h), box_of(pb.h))) return;
+  std::vector<std::pair<double, double>> anchors;
+  for (double u : {0.0, 1.0}) {
+    const auto [v, d] = invert(pb, proj(u == 0.0 ? pa.h.front() : pa.h.back()));
+    if (d <= on) anchors.push_back({u, v});
+  }
+  for (double v : {0.0, 1.0}) {
+    const auto [u, d] = invert(pa, proj(v == 0.0 ? pb.h.front() : pb.h.back()));
+    if (d <= on) anchors.push_back({u, v});
+  }
+  std::sort(anchors.begin(), anchors.end());
+  const int k = std::min(64, deg(pa.h) * deg(pb.h) + 2);
+  constexpr double min_width = 0x1p-30;
+  for (std::size_t i = 0; i + 1 < anchors.size(); ++i) {
+    const auto [u0, v0] = anchors[i];
+    const auto [u1, v1] = anchors[i + 1];
+    if (u1 - u0 <= min_width || std::abs(v1 - v0) <= min_width) continue;
+    bool shared = true;
+    for (int j = 1; j <= k && shared; ++j) {
+      const double u = u0 + (u1 - u0) * static_cast<double>(j) / (k + 1);
+      const auto [v, d] = invert(pb, eval(pa.h, u).p);
+      shared = d <= on && v >= std::min(v0, v1) - min_width && v <= std::max(v0, v1) + min_width;
+    }
+    if (shared) out.push_back({ia, ib, u0, u1, v0, v1});
+  }
+}
+
+/// An overlap in global parameters: [ta0, ta1] on the first curve, tb0 -> tb1 on the second.
+struct GlobalOverlap {
+  double ta0, ta1, tb0, tb1;
+};
+
+std::vector<GlobalOverlap> merge_overlaps(const Curve& a, const Curve& b,
+                                          const std::vector<Overlap>& ov) {
+  std::vector<GlobalOverlap> g;
+  for (const Overlap& o : ov) {
+    const Piece& pa = a.pieces[o.pa];
+    const Piece& pb = b.pieces[o.pb];
+    g.push_back({global_t(pa, o.u0), global_t(pa, o.u1), global_t(pb, o.v0), global_t(pb, o.v1)});
+  }
+  std::sort(g.begin(), g.end(),
+            [](const GlobalOverlap& x, const GlobalOverlap& y) { return x.ta0 < y.ta0; });
+  const double sa = 0x1p-30 * std::max(1.0, curve_back(a) - curve_front(a));
+  const double sb = 0x1p-30 * std::max(1.0, curve_back(b) - curve_front(b));
+  std::vector<GlobalOverlap> m;
+  for (const GlobalOverlap& o : g) {
+    if (!m.empty()) {
+      GlobalOverlap& l = m.back();
+      const bool same_dir = (l.tb1 >= l.tb0) == (o.tb1 >= o.tb0);
+      if (o.ta0 <= l.ta1 + sa && same_dir && std::abs(o.tb0 - l.tb1) <= sb) {
+        if (o.ta1 > l.ta1) {
+          l.ta1 = o.ta1;
+          l.tb1 = o.tb1;
+        }
+        continue;
+      }
+    }
+    m.push_back(o);
+  }
+  return m;
+}
+
+/// Box-pair hierarchy on the given piece pairs (the algebraic default, the hierarchy method, and
+/// the resultant's fallback: the subdivision isolates, Newton on the 2x2 system solves). Node
+/// pairs inside a shared sub-arc on both sides are skipped. False when the budget runs out.
+bool subdivide_pairs(const Curve& a, const Curve& b,
+                     const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
+                     const std::vector<Overlap>& ov, const CurveHitOptions& opt, double leaf,
+                     double gap, int& budget, std::vector<Found>& found) {
   std::vector<std::pair<Node, Node>> stack;
-  for (std::size_t i = 0; i < a.pieces.size(); ++i)
-    for (std::size_t j = 0; j < b.pieces.size(); ++j)
-      stack.push_back({Node{i, 0.0, 1.0, a.pieces[i].h, box_of(a.pieces[i].h)},
-                       Node{j, 0.0, 1.0, b.pieces[j].h, box_of(b.pieces[j].h)}});
+  for (const auto& pr : pairs) {
+    const std::size_t i = pr.first, j = pr.second;
+    stack.push_back({Node{i, 0.0, 1.0, a.pieces[i].h, box_of(a.pieces[i].h)},
+                     Node{j, 0.0, 1.0, b.pieces[j].h, box_of(b.pieces[j].h)}});
+  }
+  const auto on_overlap = [&](const Node& na, const Node& nb) {
+    return std::any_of(ov.begin(), ov.end(), [&](const Overlap& o) {
+      return o.pa == na.piece && o.pb == nb.piece && na.a >= o.u0 && na.b <= o.u1 &&
+             nb.a >= std::min(o.v0, o.v1) && nb.b <= std::max(o.v0, o.v1);
+    });
+  };
   std::vector<LeafPair> leaves;
-  int budget = opt.max_steps;
+  bool within = true;
   while (!stack.empty()) {
     auto [na, nb] = std::move(stack.back());
     stack.pop_back();
     if (--budget < 0) {
-      r.status = Status::limit_exceeded;
+      within = false;
       break;
     }
     if (!overlap(na.box, nb.box)) continue;
+    if (!ov.empty() && on_overlap(na, nb)) continue;
     const double da = na.box.diag(), db = nb.box.diag();
     const bool small_a = da <= leaf || na.b - na.a <= 0x1p-40;
     const bool small_b = db <= leaf || nb.b - nb.a <= 0x1p-40;
@@ -957,7 +1086,6 @@ CurveHits2<double> curve_curve(const Curve& a, const Curve& b, const CurveHitOpt
         parent[root_of(parent, j)] = root_of(parent, i);
   std::vector<std::vector<std::size_t>> groups(leaves.size());
   for (std::size_t i = 0; i < leaves.size(); ++i) groups[root_of(parent, i)].push_back(i);
-  std::vector<Found> found;
   for (auto& grp : groups) {
     if (grp.empty()) continue;
     std::sort(grp.begin(), grp.end(),
@@ -977,7 +1105,385 @@ CurveHits2<double> curve_curve(const Curve& a, const Curve& b, const CurveHitOpt
       break;
     }
   }
-  finish(r, found, scale, leaf);
+  return within;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The resultant method (book 7.4.1): implicitise one piece by its Bezout resultant, substitute
+// the other, isolate the roots of the univariate result, invert.
+
+constexpr int max_implicit_degree = 4;
+constexpr int max_resultant_degree = 64;  // m n: binomials and the isolation stay well scaled
+
+double binom(int n, int k) {
+  double r = 1.0;
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+
+/// Power-basis coefficients on [0, 1] of the Bernstein polynomial b, and bounds of their
+/// magnitudes (the same sums in absolute value).
+void to_power(const std::vector<double>& b, std::vector<double>& c, std::vector<double>& mag) {
+  const int n = static_cast<int>(b.size()) - 1;
+  c.assign(b.size(), 0.0);
+  mag.assign(b.size(), 0.0);
+  for (int k = 0; k <= n; ++k) {
+    double s = 0.0, sm = 0.0;
+    for (int i = 0; i <= k; ++i) {
+      const double t = binom(k, i) * b[z(i)];
+      s += ((k - i) % 2 == 0) ? t : -t;
+      sm += std::abs(t);
+    }
+    c[z(k)] = binom(n, k) * s;
+    mag[z(k)] = binom(n, k) * sm;
+  }
+}
+
+/// The Bezout matrix (m x m, row-major) of power-basis f and g of degree <= m:
+/// (f(s) g(r) - f(r) g(s)) / (s - r) = sum B[i][j] s^i r^j; `mag` bounds the entries' terms.
+void bezout(const std::vector<double>& f, const std::vector<double>& fm,
+            const std::vector<double>& g, const std::vector<double>& gm, int m,
+            std::vector<double>& out, std::vector<double>& mag) {
+  out.assign(z(m * m), 0.0);
+  mag.assign(z(m * m), 0.0);
+  for (int a = 0; a <= m; ++a)
+    for (int b = 0; b < a; ++b) {
+      const double c = f[z(a)] * g[z(b)] - f[z(b)] * g[z(a)];
+      const double cm = fm[z(a)] * gm[z(b)] + fm[z(b)] * gm[z(a)];
+      for (int k = 0; k <= a - b - 1; ++k) {
+        out[z((b + k) * m + (a - 1 - k))] += c;
+        mag[z((b + k) * m + (a - 1 - k))] += cm;
+      }
+    }
+}
+
+/// Product of two Bernstein polynomials (degrees add).
+std::vector<double> bern_mul(const std::vector<double>& p, const std::vector<double>& q) {
+  const int n1 = static_cast<int>(p.size()) - 1, n2 = static_cast<int>(q.size()) - 1;
+  std::vector<double> r(z(n1 + n2 + 1), 0.0);
+  for (int i = 0; i <= n1; ++i)
+    for (int j = 0; j <= n2; ++j)
+      r[z(i + j)] += binom(n1, i) * binom(n2, j) / binom(n1 + n2, i + j) * p[z(i)] * q[z(j)];
+  return r;
+}
+
+/// The resultant of piece `imp` (implicitised, degree m <= max_implicit_degree) and piece `oth`
+/// (degree n) as a Bernstein polynomial of degree m n in oth's parameter: det M(t) with
+/// M = W2 Bez(X, Y) - Y2 Bez(X, W) - X2 Bez(W, Y), the Bezout matrix of W2 X - X2 W and
+/// W2 Y - Y2 W over W2 (docs/notes/polycurve.md). Coordinates relative to `centre`.
+/// `noise` bounds the coefficients' rounding error.
+std::vector<double> resultant_poly(const Piece& imp, const Piece& oth, const V2& centre,
+                                   double& noise) {
+  const int m = deg(imp.h), n = deg(oth.h);
+  std::vector<double> xb, yb, wb;
+  for (const V3& q : imp.h) {
+    xb.push_back(q.x - centre.x * q.z);
+    yb.push_back(q.y - centre.y * q.z);
+    wb.push_back(q.z);
+  }
+  std::vector<double> X, Xm, Y, Ym, W, Wm;
+  to_power(xb, X, Xm);
+  to_power(yb, Y, Ym);
+  to_power(wb, W, Wm);
+  std::vector<double> bxy, mxy, bxw, mxw, bwy, mwy;
+  bezout(X, Xm, Y, Ym, m, bxy, mxy);
+  bezout(X, Xm, W, Wm, m, bxw, mxw);
+  bezout(W, Wm, Y, Ym, m, bwy, mwy);
+  // Entries of M(t), Bernstein of degree n, and their magnitude bounds.
+  std::vector<std::vector<double>> e(z(m * m)), em(z(m * m));
+  for (int ij = 0; ij < m * m; ++ij) {
+    for (const V3& q : oth.h) {
+      const double x2 = q.x - centre.x * q.z, y2 = q.y - centre.y * q.z, w2 = q.z;
+      e[z(ij)].push_back(w2 * bxy[z(ij)] - y2 * bxw[z(ij)] - x2 * bwy[z(ij)]);
+      em[z(ij)].push_back(std::abs(w2) * mxy[z(ij)] + std::abs(y2) * mxw[z(ij)] +
+                          std::abs(x2) * mwy[z(ij)]);
+    }
+  }
+  // Leibniz expansion (m <= 4: at most 24 products).
+  std::vector<double> det(z(m * n + 1), 0.0), detm(z(m * n + 1), 0.0);
+  std::array<int, max_implicit_degree> perm{};
+  std::iota(perm.begin(), perm.begin() + m, 0);
+  do {
+    int inversions = 0;
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j) inversions += perm[z(i)] > perm[z(j)];
+    std::vector<double> pr = e[z(perm[0])], prm = em[z(perm[0])];
+    for (int i = 1; i < m; ++i) {
+      pr = bern_mul(pr, e[z(i * m + perm[z(i)])]);
+      prm = bern_mul(prm, em[z(i * m + perm[z(i)])]);
+    }
+    for (std::size_t k = 0; k < det.size(); ++k) {
+      det[k] += (inversions % 2 == 0) ? pr[k] : -pr[k];
+      detm[k] += prm[k];
+    }
+  } while (std::next_permutation(perm.begin(), perm.begin() + m));
+  const double big = *std::max_element(detm.begin(), detm.end());
+  noise = 8.0 * (m + 2) * (n + 2) * eps * big;
+  return det;
+}
+
+/// Power-basis coefficients of X(s) - x W(s) (the implicit piece's x equation at a point).
+std::vector<double> coordinate_poly(const Piece& imp, int axis, double x) {
+  std::vector<double> b, c, mag;
+  for (const V3& q : imp.h) b.push_back(q[axis] - x * q.z);
+  to_power(b, c, mag);
+  return c;
+}
+
+/// The common points of piece ka of a and piece kb of b by the resultant; false when the
+/// resultant vanishes within its noise (one algebraic curve: the caller subdivides instead).
+bool resultant_pair(const Curve& a, std::size_t ka, const Curve& b, std::size_t kb, double gap,
+                    double tol, int& budget, std::vector<Found>& found) {
+  const Piece& pa = a.pieces[ka];
+  const Piece& pb = b.pieces[kb];
+  const bool imp_is_a = deg(pa.h) <= deg(pb.h);
+  const Piece& imp = imp_is_a ? pa : pb;
+  const Piece& oth = imp_is_a ? pb : pa;
+  const Box bx = box_of(imp.h);
+  const V2 centre = 0.5 * (bx.lo + bx.hi);
+  double noise = 0.0;
+  if (deg(imp.h) * deg(oth.h) > max_resultant_degree) return false;
+  const std::vector<double> g = resultant_poly(imp, oth, centre, noise);
+  // Overflow (huge coordinates), or Q on P's algebraic curve: the subdivision decides.
+  if (!std::isfinite(noise) ||
+      !std::all_of(g.begin(), g.end(), [](double v) { return std::isfinite(v); }))
+    return false;
+  if (std::all_of(g.begin(), g.end(), [&](double v) { return std::abs(v) <= noise; })) return false;
+  std::vector<BernRoot> roots;
+  if (!isolate_bernstein(g, noise, roots, budget, true)) budget = -1;
+  const double slack = 0x1p-20;
+  for (const BernRoot& r : roots) {
+    const V2 q = eval(oth.h, r.t).p;
+    // Inversion: the roots of the implicit piece's coordinate equations at q.
+    std::vector<double> cands;
+    for (int axis = 0; axis < 2; ++axis) {
+      const std::vector<double> c = coordinate_poly(imp, axis, q[axis]);
+      const RealRootsResult<double> rr = detail::roots::real_roots_span<double>(
+          std::span<const double>(c), -slack, 1.0 + slack, near_roots());
+      if (rr.status != Status::ok) continue;
+      for (const Root<double>& x : rr.roots) cands.push_back(std::clamp(x.value, 0.0, 1.0));
+    }
+    std::sort(cands.begin(), cands.end());
+    double last = -1.0;
+    for (double s : cands) {
+      if (s - last <= 0x1p-40) continue;
+      last = s;
+      const Sol so = imp_is_a ? newton2(pa, pb, s, r.t) : newton2(pa, pb, r.t, s);
+      if (so.dist > gap) continue;
+      int mult = 1;
+      const int geometric = multiplicity_at(pa, so.u, pb, so.v, tol);
+      if (r.mult != 1) {
+        // A noise run or an exact zero: the signs of the resultant just outside decide the
+        // parity of the contact.
+        const double w = std::max(r.b - r.a, 0x1p-30);
+        const double lo = r.a - w, hi = r.b + w;
+        if (lo < 0.0 || hi > 1.0) {
+          mult = geometric;
+        } else {
+          const int sl = sign(bern_eval(g, lo)), sh = sign(bern_eval(g, hi));
+          mult = sl == sh ? 2 : (geometric == 1 ? 1 : 3);
+        }
+      }
+      found.push_back({eval(pa.h, so.u).p, global_t(pa, so.u), global_t(pb, so.v), mult});
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+CurveHits2<double> curve_curve(const Curve& a, const Curve& b, const CurveHitOptions& opt) {
+  CurveHits2<double> r;
+  r.status = a.status != Status::ok ? a.status : b.status;
+  if (r.status != Status::ok) return r;
+  const double scale = std::max(curve_scale(a), curve_scale(b));
+  int exponent = 0;
+  std::frexp(scale, &exponent);
+  if (exponent > 500 || exponent < -500) {
+    // Squares of coordinates (Newton's normal equations, the resultant) would overflow or
+    // underflow: solve the copies scaled by a power of two (exact), scale the points back.
+    Curve sa = a, sb = b;
+    for (Curve* c : {&sa, &sb})
+      for (Piece& p : c->pieces)
+        for (V3& q : p.h) q = {std::ldexp(q.x, -exponent), std::ldexp(q.y, -exponent), q.z};
+    CurveHits2<double> rs = curve_curve(sa, sb, opt);
+    for (CurveHit2<double>& h : rs.hits)
+      h.point = {std::ldexp(h.point.x, exponent), std::ldexp(h.point.y, exponent)};
+    return rs;
+  }
+  const double leaf = std::max(opt.tolerance * scale, std::numeric_limits<double>::min());
+  const double gap = std::max(opt.tolerance * opt.tolerance * scale, 64.0 * eps * scale);
+  for (bool rev : {false, true}) {
+    if (!same_pieces(a, b, rev)) continue;
+    // The same point set (as given, or reversed): an overlap over the whole curve.
+    const Piece& f = a.pieces.front();
+    const Piece& l = a.pieces.back();
+    const double b0 = rev ? curve_back(b) : curve_front(b);
+    const double b1 = rev ? curve_front(b) : curve_back(b);
+    r.kind = Kind::coincident;
+    r.hits.push_back({proj(f.h.front()), f.t0, b0, 0});
+    r.hits.push_back({proj(l.h.back()), l.t1, b1, 0});
+    return r;
+  }
+  // Shared sub-arcs first (every method): the searches below skip them. Within the input's
+  // own precision: float pieces of a curve are off it by a few float ulps.
+  const double on = std::max(gap, 16.0 * std::max(a.unit, b.unit) * scale);
+  std::vector<Overlap> ov;
+  for (std::size_t i = 0; i < a.pieces.size(); ++i)
+    for (std::size_t j = 0; j < b.pieces.size(); ++j)
+      piece_overlaps(a.pieces[i], i, b.pieces[j], j, on, ov);
+  const std::vector<GlobalOverlap> shared = merge_overlaps(a, b, ov);
+
+  if (opt.method == CurveMethod::raster) {
+    r = raster_hits(a, b, opt, scale);
+  } else {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    std::vector<Found> found;
+    int budget = opt.max_steps;
+    for (std::size_t i = 0; i < a.pieces.size(); ++i)
+      for (std::size_t j = 0; j < b.pieces.size(); ++j) {
+        const bool has_overlap = std::any_of(
+            ov.begin(), ov.end(), [&](const Overlap& o) { return o.pa == i && o.pb == j; });
+        if (opt.method == CurveMethod::resultant && !has_overlap &&
+            std::min(deg(a.pieces[i].h), deg(b.pieces[j].h)) <= max_implicit_degree &&
+            overlap(box_of(a.pieces[i].h), box_of(b.pieces[j].h))) {
+          if (resultant_pair(a, i, b, j, gap, opt.tolerance, budget, found)) continue;
+        }
+        pairs.push_back({i, j});
+      }
+    if (!subdivide_pairs(a, b, pairs, ov, opt, leaf, gap, budget, found))
+      r.status = Status::limit_exceeded;
+    if (budget < 0) r.status = Status::limit_exceeded;
+    finish(r, found, scale, leaf);
+  }
+  if (shared.empty()) return r;
+  // Points found on a shared sub-arc (its ends, where the searches meet it) are the overlap.
+  const double wa = std::sqrt(opt.tolerance) * std::max(1e-300, curve_back(a) - curve_front(a));
+  const double wb = std::sqrt(opt.tolerance) * std::max(1e-300, curve_back(b) - curve_front(b));
+  std::vector<CurveHit2<double>> kept;
+  for (const CurveHit2<double>& h : r.hits) {
+    const bool inside = std::any_of(shared.begin(), shared.end(), [&](const GlobalOverlap& o) {
+      return h.param_a >= o.ta0 - wa && h.param_a <= o.ta1 + wa &&
+             h.param_b >= std::min(o.tb0, o.tb1) - wb && h.param_b <= std::max(o.tb0, o.tb1) + wb;
+    });
+    if (!inside) kept.push_back(h);
+  }
+  for (const GlobalOverlap& o : shared) {
+    kept.push_back({point_at_t(a, o.ta0), o.ta0, o.tb0, 0});
+    kept.push_back({point_at_t(a, o.ta1), o.ta1, o.tb1, 0});
+  }
+  std::stable_sort(
+      kept.begin(), kept.end(),
+      [](const CurveHit2<double>& x, const CurveHit2<double>& y) { return x.param_a < y.param_a; });
+  r.hits = std::move(kept);
+  r.kind = Kind::coincident;
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Self-intersections.
+
+namespace {
+
+/// Whether the projected control points advance strictly along some direction: then every line
+/// across that direction meets the piece at most once (variation diminishing property of
+/// positive-weight Bezier curves), so the piece has no self-intersection.
+bool monotone(const std::vector<V3>& h) {
+  std::vector<double> ang;
+  for (std::size_t i = 1; i < h.size(); ++i) {
+    const V2 e = proj(h[i]) - proj(h[i - 1]);
+    // A repeated point keeps the advance monotone (non-decreasing); a piece that is one point
+    // has no double point to report.
+    if (e.x != 0.0 || e.y != 0.0) ang.push_back(std::atan2(e.y, e.x));
+  }
+  if (ang.size() <= 1) return true;
+  std::sort(ang.begin(), ang.end());
+  constexpr double pi = 3.141592653589793;
+  double widest = 2.0 * pi - (ang.back() - ang.front());
+  for (std::size_t i = 1; i < ang.size(); ++i) widest = std::max(widest, ang[i] - ang[i - 1]);
+  return widest > pi + 1e-9;
+}
+
+}  // namespace
+
+CurveHits2<double> self_curve(const Curve& c, const CurveHitOptions& opt) {
+  CurveHits2<double> r;
+  r.status = c.status;
+  if (c.status != Status::ok) return r;
+  // The curve cut into monotone segments, in parameter order (a cusp stops at max_depth).
+  constexpr int max_depth = 20;
+  std::vector<Piece> segs;
+  int budget = opt.max_steps;
+  for (const Piece& p : c.pieces) {
+    struct Item {
+      std::vector<V3> h;
+      double a, b;
+      int depth;
+    };
+    std::vector<Item> stack{{p.h, 0.0, 1.0, 0}};
+    while (!stack.empty()) {
+      Item it = std::move(stack.back());
+      stack.pop_back();
+      if (--budget < 0) {
+        r.status = Status::limit_exceeded;
+        return r;
+      }
+      if (it.depth >= max_depth || monotone(it.h)) {
+        segs.push_back({std::move(it.h), global_t(p, it.a), global_t(p, it.b)});
+        continue;
+      }
+      auto [left, right] = halves(it.h);
+      const double m = 0.5 * (it.a + it.b);
+      stack.push_back({std::move(right), m, it.b, it.depth + 1});
+      stack.push_back({std::move(left), it.a, m, it.depth + 1});
+    }
+  }
+  r.status = Status::ok;
+  const double scale = curve_scale(c);
+  const double range = curve_back(c) - curve_front(c);
+  const bool closed = proj(c.pieces.front().h.front()) == proj(c.pieces.back().h.back());
+  const double near = std::sqrt(opt.tolerance);
+  std::vector<CurveHit2<double>> hits;
+  for (std::size_t i = 0; i < segs.size(); ++i)
+    for (std::size_t j = i + 1; j < segs.size(); ++j) {
+      if (!overlap(box_of(segs[i].h), box_of(segs[j].h))) continue;
+      const Curve ci{Status::ok, {segs[i]}, c.unit}, cj{Status::ok, {segs[j]}, c.unit};
+      const CurveHits2<double> h = curve_curve(ci, cj, opt);
+      if (h.status != Status::ok) r.status = h.status;
+      const double da = near * (segs[i].t1 - segs[i].t0), db = near * (segs[j].t1 - segs[j].t0);
+      const bool adjacent = segs[i].t1 == segs[j].t0;
+      const bool ends = closed && i == 0 && j + 1 == segs.size();
+      for (const CurveHit2<double>& x : h.hits) {
+        // The joint of two consecutive segments, and the closing point of a closed curve, are
+        // not self-intersections (an overlap's end there is).
+        if (x.multiplicity != 0 && adjacent && std::abs(x.param_a - segs[i].t1) <= da &&
+            std::abs(x.param_b - segs[j].t0) <= db)
+          continue;
+        if (x.multiplicity != 0 && ends && std::abs(x.param_a - segs[i].t0) <= da &&
+            std::abs(x.param_b - segs[j].t1) <= db)
+          continue;
+        hits.push_back(x);
+      }
+    }
+  std::stable_sort(
+      hits.begin(), hits.end(),
+      [](const CurveHit2<double>& x, const CurveHit2<double>& y) { return x.param_a < y.param_a; });
+  // A double point on a segment joint is found by both segments there: once.
+  bool any_overlap = false;
+  for (const CurveHit2<double>& x : hits) {
+    any_overlap = any_overlap || x.multiplicity == 0;
+    const bool dup = std::any_of(r.hits.begin(), r.hits.end(), [&](const CurveHit2<double>& y) {
+      return x.multiplicity != 0 && y.multiplicity != 0 &&
+             length(x.point - y.point) <= 0x1p-30 * scale &&
+             std::abs(x.param_a - y.param_a) <= near * range &&
+             std::abs(x.param_b - y.param_b) <= near * range;
+    });
+    if (!dup) r.hits.push_back(x);
+  }
+  r.kind = any_overlap          ? Kind::coincident
+           : r.hits.empty()     ? Kind::empty
+           : r.hits.size() == 1 ? Kind::point
+                                : Kind::points;
   return r;
 }
 

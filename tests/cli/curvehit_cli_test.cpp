@@ -4,6 +4,7 @@
 // bit for bit (numbers print in the shortest form that reads back exactly); bad input fails.
 
 #include <locus/intersection/curve_curve.hpp>
+#include <locus/intersection/curve_self.hpp>
 #include <locus/intersection/line_curve.hpp>
 #include <locus/intersection/segment_curve.hpp>
 #include <locus/io/point_list.hpp>
@@ -94,12 +95,31 @@ TEST(CliCurvehit, MatchesTheLibrary) {
   const locus::BSplineCurve2<double> spline{3, a, {0, 0, 0, 0, 1, 1, 1, 1}};
   expect_same(run("--degree 3 --knots 0 0 0 0 1 1 1 1 --line 0 -4 0.1 1"),
               locus::intersection(locus::Line2d{{0, -4}, {0.1, 1}}, spline));
-  // Bad input: no second object, a bad method, knots without a degree.
+  locus::CurveHitOptions resultant;
+  resultant.method = locus::CurveMethod::resultant;
+  const auto rl = run("--other '" + fb + "' --method resultant");
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  expect_same(rl, locus::intersection(ca, cb, resultant));
+  // A cubic with a loop: its double point.
+  const std::vector<Vec2d> loop{{0, 0}, {4, 3}, {-1, 3}, {3, 0}};
+  const std::string fl = (dir / "loop.csv").string();
+  ASSERT_EQ((locus::write_points<double, 2>(fl, loop).status), locus::Status::ok);
+  const std::string out = (dir / "self.txt").string();
+  status = std::system((std::string("'") + LOCUS_CLI_PATH + "' curvehit '" + fl + "' --self >'" +
+                        out + "' 2>/dev/null")
+                           .c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  const auto self = locus::self_intersection(locus::BezierCurve2<double>{loop});
+  ASSERT_EQ(self.hits.size(), 1u);
+  expect_same(lines(locus_test::slurp(out)), self);
+  // Bad input: no second object, a bad method, knots without a degree, --self with another.
   run("");
   EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   run("--line 0 0 1 0 --method guess");
   EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   run("--knots 0 1 --line 0 0 1 0");
+  EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  run("--self --line 0 0 1 0");
   EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   std::error_code ec;
   fs::remove_all(dir, ec);

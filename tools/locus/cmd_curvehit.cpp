@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 // locus curvehit: a line, ray or segment against a Bézier / B-spline / NURBS curve
 // (intersection/line_curve.hpp, ray_curve.hpp, segment_curve.hpp), or two curves
-// (intersection/curve_curve.hpp), by the algebraic, hierarchy or raster method.
+// (intersection/curve_curve.hpp), by the algebraic, hierarchy, resultant or raster method, or the
+// curve's self-intersections (intersection/curve_self.hpp).
 
 #include "commands.hpp"
 #include "io.hpp"
 
 #include <locus/intersection/curve_curve.hpp>
+#include <locus/intersection/curve_self.hpp>
 #include <locus/intersection/line_curve.hpp>
 #include <locus/intersection/ray_curve.hpp>
 #include <locus/intersection/segment_curve.hpp>
@@ -31,6 +33,7 @@ struct CurveHitOptions {
   std::string other;
   std::string method = "algebraic";
   int cells = 256;
+  bool self = false;
 };
 
 AnyCurve make_curve(std::vector<Vec2d> control, int degree, const std::vector<double>& knots,
@@ -52,15 +55,19 @@ void run_curvehit(const CurveHitOptions& o) {
     opt.method = locus::CurveMethod::hierarchy;
   else if (o.method == "raster")
     opt.method = locus::CurveMethod::raster;
+  else if (o.method == "resultant")
+    opt.method = locus::CurveMethod::resultant;
   else
-    throw InputError("curvehit: --method must be algebraic, hierarchy or raster");
-  const int given =
-      int(!o.line.empty()) + int(!o.ray.empty()) + int(!o.segment.empty()) + int(!o.other.empty());
+    throw InputError("curvehit: --method must be algebraic, hierarchy, resultant or raster");
+  const int given = int(!o.line.empty()) + int(!o.ray.empty()) + int(!o.segment.empty()) +
+                    int(!o.other.empty()) + int(o.self);
   if (given != 1)
-    throw InputError("curvehit: give exactly one of --line, --ray, --segment, --other");
+    throw InputError("curvehit: give exactly one of --line, --ray, --segment, --other, --self");
   locus::CurveHits2<double> r;
   std::vector<Vec2d> other_control;
-  if (!o.other.empty()) {
+  if (o.self) {
+    r = std::visit([&](const auto& a) { return locus::self_intersection(a, opt); }, curve);
+  } else if (!o.other.empty()) {
     Common oc = o.c;
     oc.input = o.other;
     oc.format.clear();
@@ -124,13 +131,17 @@ void register_curvehit(CLI::App& app) {
   sub->add_option("--ray", o->ray, "ox oy dx dy: a ray")->expected(4);
   sub->add_option("--segment", o->segment, "x0 y0 x1 y1: a segment")->expected(4);
   sub->add_option("--other", o->other, "a second curve: its Bezier control points");
-  sub->add_option("--method", o->method, "algebraic (default), hierarchy or raster");
+  sub->add_flag("--self", o->self, "the curve's own double points (self-intersections)");
+  sub->add_option("--method", o->method, "algebraic (default), hierarchy, resultant or raster");
   sub->add_option("--cells", o->cells, "raster grid cells along the longer side (256)");
   sub->footer(
       "Prints `kind` and `hit x y param_a param_b multiplicity` lines (param_a on the line,\n"
-      "ray, segment or first curve; multiplicity 1 crossing, 2 tangency).\n"
+      "ray, segment or first curve; multiplicity 1 crossing, 2 tangency, 0 the ends of a\n"
+      "shared stretch; with --self param_a < param_b are the two passes of a double point).\n"
       "Example:\n  locus curvehit cubic.csv --line 0 0 1 0.1\n"
-      "  locus curvehit spline.csv --degree 3 --knots 0 0 0 0 1 2 2 2 2 --other b.csv");
+      "  locus curvehit spline.csv --degree 3 --knots 0 0 0 0 1 2 2 2 2 --other b.csv\n"
+      "  locus curvehit a.csv --other b.csv --method resultant\n"
+      "  locus curvehit loop.csv --self");
   sub->callback([o] { run_curvehit(*o); });
 }
 

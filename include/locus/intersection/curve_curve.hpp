@@ -2,28 +2,37 @@
 #pragma once
 // Intersection of two 2D Bézier, B-spline or NURBS curves (any two PolyCurve2, mixed kinds, the
 // same scalar type): intersects() and intersection(); row int2.polycurve, book section 7.4
-// (figure 7.11). Result CurveHits2<T> (detail/polycurve2.hpp): kind empty, point, points, or
-// coincident (the two curves are the same pieces, as given or reversed: the two ends listed,
-// multiplicity 0); hits ordered by param_a (the first curve's own parameter), param_b on the
-// second; multiplicity 1 a crossing, 2 a tangency (tangents parallel within sqrt(tolerance)).
-// Methods (CurveHitOptions::method):
-//  * algebraic (default) and hierarchy: both curves cut into rational Bézier pieces, pairs of
-//    control-polygon boxes refined by de Casteljau halving of the larger until both are smaller
-//    than tolerance x scale (scale = the largest |coordinate|); leaf pairs whose parameter
-//    rectangles touch form a cluster, and each cluster seeds Newton (Levenberg-Marquardt) on
-//    A(s) - B(t) = 0. Crossings converge quadratically to a few ulps; a cluster whose closest
-//    points stay farther apart than max(tolerance^2, 64 eps) x scale is a near miss (no hit).
-//  * raster (figure 7.11): both curves drawn into a raster_cells grid over their joint box;
-//    each 8-connected component of cells holding both seeds Newton. Crossings a few cells apart
-//    can merge (docs/notes/polycurve.md). curve_raster() returns the grid itself.
-// Conditioning: distinct crossings closer than the leaf size (tolerance x scale) may merge into
-// one; a tangency is found when the gap is below max(tolerance^2, 64 eps) x scale and located
-// to about sqrt of that. Overlaps other than identical pieces (a curve and a sub-arc of it)
-// are not detected: the subdivision runs into max_steps and reports limit_exceeded.
-// Self-intersections are not computed. Computed in double.
-// Bad input: NaN/Inf: non_finite_input; an invalid curve: its validate() status; no hits.
-// Cost: O(k log(1/tolerance)) box pairs for k crossings of well separated curves, more near
-// tangencies; allocates. The swapped order gives the same points with parameters exchanged.
+// (7.4.1 algebraic, figure 7.11 raster). Result CurveHits2<T> (detail/polycurve2.hpp), hits
+// ordered by param_a (the first curve's parameter), param_b on the second; multiplicity 1 a
+// crossing, 2 a tangency, 3 an odd higher contact; kind empty, point, points, or coincident when
+// the curves share a stretch: its two ends come as consecutive hits of multiplicity 0 (the
+// parameter interval pair; param_b decreasing when the second runs backwards). Self-
+// intersections of one curve: curve_self.hpp. Methods (CurveHitOptions::method):
+//  * algebraic (default) and hierarchy: pairs of control-polygon boxes of the rational Bézier
+//    pieces refined by de Casteljau halving until both are below tolerance x scale (scale = the
+//    largest |coordinate|); each cluster of touching leaf pairs seeds Newton (Levenberg-
+//    Marquardt) on A(s) - B(t) = 0: crossings to a few ulps.
+//  * resultant (7.4.1): the lower-degree piece of each pair (degree m <= 4) is implicitised by
+//    its Bezout matrix; the other (degree n) substituted gives a Bernstein polynomial of degree
+//    m n whose roots in [0, 1] are isolated by Descartes' rule, a node settled only when every
+//    coefficient exceeds its rounding bound; each root is inverted through the implicit piece's
+//    coordinate equations and polished by Newton. Above degree 4 on both sides, m n > 64, overflow,
+//    or when the resultant vanishes within its bound (one algebraic curve), the pair is subdivided
+//    instead.
+//  * raster (figure 7.11): both drawn into raster_cells cells; each component of shared cells
+//    seeds Newton; crossings a few cells apart can merge. curve_raster() returns the grid.
+// Shared stretches (every method): found from the pieces' ends lying on the other piece, then
+// confirmed at deg(a) deg(b) + 2 points between (more than Bezout's bound), within
+// max(gap, 16 eps_T x scale); searches skip them; points within sqrt(tolerance) of the parameter
+// range of a stretch's end are taken for its end (docs/notes/polycurve.md).
+// Conditioning: crossings closer than tolerance x scale may merge (resultant: closer than the
+// root separation its noise allows, about sqrt of the noise); a tangency is found when the
+// gap is below max(tolerance^2, 64 eps) x scale and located to about its square root.
+// Computed in double (scales beyond 2^+-500 on an exactly rescaled copy). Bad input: NaN/Inf:
+// non_finite_input; an invalid curve: its validate() status; no hits. max_steps exhausted:
+// limit_exceeded. Cost: O(k log(1/tolerance)) box pairs for k crossings, more near tangencies; the
+// resultant O((m n)^2) per piece pair plus the isolation; allocates. The swapped order gives the
+// same points with parameters exchanged.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/polycurve2.hpp>

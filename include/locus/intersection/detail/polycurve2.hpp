@@ -31,6 +31,9 @@ enum class CurveMethod : std::uint8_t {
   algebraic,  ///< roots of the Bernstein polynomial n.(C(t) - P) (line) / subdivision + Newton
   hierarchy,  ///< bounding-box hierarchy refined to small boxes, then Newton (figure 7.3)
   raster,     ///< both drawn on a grid, shared cells refined by Newton (figures 7.4, 7.11)
+  resultant,  ///< curve-curve: implicitise one piece (Bezout resultant), roots of the other
+              ///< substituted, inversion (book 7.4.1); for a linear component the same as
+              ///< algebraic (the line is the implicit curve)
 };
 
 /// Options of the curve intersections (see line_curve.hpp for their meaning).
@@ -93,6 +96,7 @@ struct Piece {
 struct Curve {
   Status status = Status::ok;
   std::vector<Piece> pieces;
+  double unit = 0x1p-53;  // unit roundoff of the caller's scalar type (the input's precision)
 };
 
 /// A linear component origin + s direction, s in [lo, hi].
@@ -111,6 +115,7 @@ template <Real T>
 template <Real T>
 [[nodiscard]] Curve as_curve(const BezierCurve<T, 2>& c) {
   Curve r;
+  r.unit = static_cast<double>(eps_v<T>);
   if (c.control.empty()) return {Status::empty_input, {}};
   if (!is_finite(c)) return {Status::non_finite_input, {}};
   Piece p;
@@ -127,6 +132,7 @@ template <Real T>
   const BezierSegments<double, 2> s = to_bezier(d);
   if (s.status != Status::ok) return {s.status, {}};
   Curve r;
+  r.unit = static_cast<double>(eps_v<T>);
   for (std::size_t i = 0; i < s.segments.size(); ++i) {
     Piece p;
     for (const auto& q : s.segments[i].control) p.h.push_back(hom(q, 1.0));
@@ -148,6 +154,7 @@ template <Real T>
   const BezierSegments<double, 3> s = to_bezier(h);
   if (s.status != Status::ok) return {s.status, {}};
   Curve r;
+  r.unit = static_cast<double>(eps_v<T>);
   for (std::size_t i = 0; i < s.segments.size(); ++i) {
     Piece p;
     p.h = s.segments[i].control;
@@ -162,6 +169,7 @@ template <Real T>
 CurveHits2<double> linear_curve(const Lin& a, const Curve& b, const CurveHitOptions& opt);
 CurveHits2<double> curve_curve(const Curve& a, const Curve& b, const CurveHitOptions& opt);
 CurveRaster2<double> raster(const Curve& a, const Curve& b, int cells);
+CurveHits2<double> self_curve(const Curve& c, const CurveHitOptions& opt);
 
 template <Real T>
 [[nodiscard]] CurveHits2<T> cast(const CurveHits2<double>& r) {
