@@ -16,6 +16,7 @@
 #include <locus/intersection/segment_surface.hpp>
 #include <locus/intersection/surface_surface.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -580,6 +581,154 @@ TYPED_TEST(SurfaceHits, BSplineSurfacesMeetInOpenBranches) {
       }
     }
   }
+}
+
+// ---- Hermite interpolation of the plane-surface curves (book section 11.7, 11.54-11.57) ----
+
+/// The largest Hermite error over every segment of every curve: R(t) off the plane, R(t) off
+/// the surface (vertical: x = u, y = v), S(p(t)) off the plane; and the longest segment.
+struct HermiteErrors {
+  double on_plane = 0, r_off_surface = 0, p_off_plane = 0, longest = 0;
+  std::size_t segments = 0;
+};
+template <class T>
+HermiteErrors hermite_errors(const BezierPatch<T, 3>& p, const Plane3<T>& pl, int grid) {
+  SurfaceCurveOptions opt;
+  opt.grid = grid;
+  const auto r = intersection(pl, p, opt);
+  HermiteErrors e;
+  EXPECT_EQ(r.status, Status::ok);
+  const Vec3<double> n = vec_cast<double>(pl.normal) / length(vec_cast<double>(pl.normal));
+  const double k = double(pl.constant) / length(vec_cast<double>(pl.normal));
+  for (const auto& c : r.curves) {
+    const HermiteSurfaceCurve<T> h = hermite_curve(pl, p, c);
+    EXPECT_EQ(h.status, Status::ok);
+    EXPECT_EQ(h.tangents.size(), c.points.size());
+    for (std::size_t i = 0; i < segment_count(h); ++i) {
+      const std::size_t j = (i + 1) % h.points.size();
+      e.longest = std::max(e.longest, double(length(h.points[j] - h.points[i])));
+      ++e.segments;
+      for (const T t : {T(0.25), T(0.5), T(0.75)}) {
+        const HermiteCurvePoint<T> q = point_at(h, i, t);
+        const Vec3<double> x = vec_cast<double>(q.point);
+        e.on_plane = std::max(e.on_plane, std::fabs(dot(n, x) - k));
+        e.r_off_surface =
+            std::max(e.r_off_surface, double(std::fabs(LD(x.z) - height(p, LD(x.x), LD(x.y)))));
+        const Vec3<double> s = vec_cast<double>(point_at(p, q.param.x, q.param.y));
+        e.p_off_plane = std::max(e.p_off_plane, std::fabs(dot(n, s) - k));
+      }
+    }
+  }
+  return e;
+}
+
+TYPED_TEST(SurfaceHits, HermiteCurvesConvergeAsTheFourthPowerOfTheStep) {
+  using T = TypeParam;
+  Rng rng;
+  for (int trial = 0; trial < 4; ++trial) {
+    const BezierPatch<T, 3> p = random_height_patch<T>(rng, T(0.6));
+    const Vec3<T> n{rng.uniform<T>(-0.5, 0.5), rng.uniform<T>(-0.5, 0.5), T(1)};
+    const Plane3<T> pl{n, dot(n, point_at(p, T(0.5), T(0.5)))};
+    std::vector<HermiteErrors> e;
+    for (const int g : {4, 8, 16, 32}) e.push_back(hermite_errors(p, pl, g));
+    for (std::size_t i = 0; i < e.size(); ++i) {
+      ASSERT_GT(e[i].segments, 0u) << rng.trace();
+      // R(t) combines points of the plane with tangents in it: on the plane up to rounding.
+      EXPECT_LE(e[i].on_plane, pick<T>(2e-6, 1e-14)) << rng.trace();
+      // Off the surface / off the plane: C h^4 for the longest segment h, C one constant for
+      // every step (it depends on the curve's derivatives: heights in [-0.6, 0.6]).
+      const double h4 = std::pow(e[i].longest, 4.0);
+      EXPECT_LE(e[i].r_off_surface, 64.0 * h4 + pick<T>(4e-6, 1e-14)) << rng.trace() << " " << i;
+      EXPECT_LE(e[i].p_off_plane, 64.0 * h4 + pick<T>(4e-6, 1e-14)) << rng.trace() << " " << i;
+    }
+    if constexpr (std::is_same_v<T, double>) {
+      // Four times shorter steps: at least 64 times smaller errors (h^4 gives 256, h^3 64).
+      EXPECT_LE(e[3].r_off_surface, e[1].r_off_surface / 64) << rng.trace();
+      EXPECT_LE(e[3].p_off_plane, e[1].p_off_plane / 64) << rng.trace();
+    }
+  }
+}
+
+TYPED_TEST(SurfaceHits, HermiteTangentsAgreeWithFiniteDifferences) {
+  using T = TypeParam;
+  Rng rng;
+  const BezierPatch<T, 3> p = random_height_patch<T>(rng, T(0.6));
+  const Vec3<T> n{T(0.3), T(-0.2), T(1)};
+  const Plane3<T> pl{n, dot(n, point_at(p, T(0.5), T(0.5)))};
+  SurfaceCurveOptions opt;
+  opt.grid = 64;
+  const auto r = intersection(pl, p, opt);
+  ASSERT_EQ(r.status, Status::ok);
+  ASSERT_FALSE(r.curves.empty());
+  // S(p + d q) - S(p - d q) over 2d is the 3D velocity for the (u, v) velocity q: the unit T.
+  const double d = pick<T>(1e-2, 1e-5), tol = pick<T>(2e-3, 1e-8);
+  for (const auto& c : r.curves) {
+    const HermiteSurfaceCurve<T> h = hermite_curve(pl, p, c);
+    ASSERT_EQ(h.status, Status::ok);
+    for (std::size_t i = 0; i < h.points.size(); ++i) {
+      const Vec3<double> t = vec_cast<double>(h.tangents[i]);
+      EXPECT_NEAR(length(t), 1.0, tol);
+      EXPECT_NEAR(dot(t, vec_cast<double>(n)), 0.0, tol);
+      const Vec2<double> uv = vec_cast<double>(h.params[i]),
+                         q = vec_cast<double>(h.param_tangents[i]);
+      const Vec2<double> a = uv + d * q, b = uv - d * q;
+      if (std::min({a.x, a.y, b.x, b.y}) < 0 || std::max({a.x, a.y, b.x, b.y}) > 1) continue;
+      const Vec3<double> fd = (vec_cast<double>(point_at(p, T(a.x), T(a.y))) -
+                               vec_cast<double>(point_at(p, T(b.x), T(b.y)))) /
+                              (2 * d);
+      EXPECT_LE(max_abs(fd - t), 10 * tol) << rng.trace() << " point " << i;
+      // Along the traced points: the central chord points the same way (step 1/64).
+      if (i > 0 && i + 1 < h.points.size()) {
+        const Vec3<double> chord = vec_cast<double>(h.points[i + 1] - h.points[i - 1]);
+        if (length(chord) > 1e-3) {
+          EXPECT_GT(dot(t, chord / length(chord)), 0.99) << i;
+        }
+      }
+    }
+  }
+}
+
+TYPED_TEST(SurfaceHits, HermiteLoopOnTheBowlAndBadInput) {
+  using T = TypeParam;
+  const Plane3<T> pl{{0, 0, 1}, T(0.5)};
+  const auto r = intersection(pl, bowl<T>());
+  ASSERT_EQ(r.curves.size(), 1u);
+  const HermiteSurfaceCurve<T> h = hermite_curve(pl, bowl<T>(), r.curves[0]);
+  ASSERT_EQ(h.status, Status::ok);
+  ASSERT_TRUE(h.closed);
+  EXPECT_EQ(segment_count(h), h.points.size());  // the last segment closes the loop
+  // The circle x^2 + y^2 = 1/2 at z = 1/2: R(t) within O(h^4) of it, far below the chord sag.
+  double worst = 0, sag = 0;
+  for (std::size_t i = 0; i < segment_count(h); ++i) {
+    const Vec3<double> x = vec_cast<double>(point_at(h, i, T(0.5)).point);
+    EXPECT_NEAR(x.z, 0.5, pick<T>(1e-6, 1e-14));
+    worst = std::max(worst, std::fabs(std::sqrt(x.x * x.x + x.y * x.y) - std::sqrt(0.5)));
+    const std::size_t j = (i + 1) % h.points.size();
+    const Vec3<double> mid = vec_cast<double>(h.points[i] + h.points[j]) / 2.0;
+    sag = std::max(sag, std::sqrt(0.5) - std::sqrt(mid.x * mid.x + mid.y * mid.y));
+  }
+  EXPECT_LT(worst, std::max(sag / 100, pick<T>(2e-6, 0.0))) << worst << " " << sag;
+  // The basis: a partition of unity with the right end values and slopes.
+  const auto b0 = hermite_basis(T(0)), b1 = hermite_basis(T(1)), bm = hermite_basis(T(0.5));
+  EXPECT_EQ(b0[0], T(1));
+  EXPECT_EQ(b1[1], T(1));
+  EXPECT_EQ(b0[2] + b1[2] + b0[3] + b1[3], T(0));
+  EXPECT_EQ(bm[0] + bm[1], T(1));
+  EXPECT_EQ(bm[2], T(0.125));
+  EXPECT_EQ(bm[3], T(-0.125));
+  // Bad input: no points, a zero or NaN normal.
+  EXPECT_EQ(hermite_curve(pl, bowl<T>(), SurfaceCurve<T>{}).status, Status::empty_input);
+  EXPECT_EQ(hermite_curve(Plane3<T>{{0, 0, 0}, T(1)}, bowl<T>(), r.curves[0]).status,
+            Status::degenerate_input);
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  EXPECT_EQ(hermite_curve(Plane3<T>{{nan, 0, 1}, T(1)}, bowl<T>(), r.curves[0]).status,
+            Status::non_finite_input);
+  // B-spline and NURBS forms of the same bowl give the same tangents.
+  BSplineSurface<T, 3> bs{2, 2, 3, 3, bowl<T>().control, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}};
+  const HermiteSurfaceCurve<T> hb = hermite_curve(pl, bs, r.curves[0]);
+  ASSERT_EQ(hb.status, Status::ok);
+  for (std::size_t i = 0; i < h.points.size(); ++i)
+    EXPECT_LE(max_abs(vec_cast<double>(hb.tangents[i] - h.tangents[i])), pick<T>(1e-6, 1e-14));
 }
 
 }  // namespace
