@@ -2,13 +2,16 @@
 // Gallery, chapter 11 (intersection in 3D). Every intersection point, parameter, hit, side and
 // separating-axis answer shown is computed by a locus::intersection / intersects / side_of_plane
 // query on the literal inputs; the 3D scenes are projected through the SvgWriter camera.
-// Figures: linear component and plane (11.1), line and triangle with barycentrics (11.2),
-// linear components and quadrics (11.9-11.17), a ray and a NURBS surface with the refinement
-// hierarchy (11.18, 11.20-11.22), two and three planes (11.23, 11.24),
-// plane-triangle, triangle-triangle and plane-mesh (11.25-11.27, 11.29), plane sections of
-// sphere, cylinder and cone (11.32-11.52), plane and parametric surface (11.53, 11.58), two
-// B-spline surfaces (11.59, 11.60), slabs and boxes (11.61-11.73), linear component and
-// torus (11.74-11.77).
+// Figures (all 77 of the chapter): linear component and plane (11.1), line and triangle with
+// barycentrics (11.2), ray and polygon, disk, octahedron, triangle mesh (BVH) and the half-lines
+// of a convex polyhedron (11.3-11.8), linear components and quadrics (11.9-11.17), a ray and a
+// NURBS surface with the refinement hierarchy and a tessellation it misses (11.18-11.22), two
+// and three planes (11.23, 11.24), plane-triangle, triangle-triangle (with the interval
+// overlap), plane-mesh, polygon-plane and polygon-triangle (11.25-11.31), plane sections of
+// sphere, cylinder and cone with edge-on views, Dandelin spheres and focal definitions
+// (11.32-11.52), plane and parametric surface with the Hermite curves (11.53-11.58), two
+// B-spline surfaces (11.59, 11.60), slabs and boxes (11.61-11.73), linear component and torus
+// (11.74-11.77).
 #include "gallery.hpp"
 
 #include <locus/intersection/aligned_box_aligned_box.hpp>

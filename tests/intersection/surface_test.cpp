@@ -6,7 +6,8 @@
 // independent algorithm); lines built through a chosen surface point (the hit is known); a NURBS
 // sphere against the analytic sphere (line_sphere.hpp). Every hit is checked by its residuals
 // (on the line, S(uv) = point). Plane and surface curves: every point on both arguments, and
-// the topology (closed loop / open branches) of cases with known answers. Degenerate, NaN,
+// the topology (closed loop / open branches) of cases with known answers; their Hermite form
+// (the O(h^4) rate against the step, tangents against central differences). Degenerate, NaN,
 // power-of-two scaling and translation.
 
 #include <locus/intersection/line_sphere.hpp>
