@@ -24,18 +24,20 @@
 // Degenerate: zero normal: degenerate_input; NaN/Inf: non_finite_input; invalid surface:
 // validate()'s status. Float input is computed in double. Cost: (grid + 1)^2 surface evaluations
 // per span plus 64 per crossing; allocates.
-// Hermite curves (book section 11.7, figures 11.54-11.57): hermite_curve(plane, surface, curve)
-// adds the unit tangent at every traced point, T = N x (S_u x S_v) normalised and oriented along
-// the point order, and its (u, v) velocity per unit arc length q = (N.S_v, -N.S_u) / |.|
-// (S_u q.x + S_v q.y = T exactly); where S_u x S_v is parallel to N (the surface touches the
-// plane) or degenerate, the chord through the neighbouring points replaces it. point_at(h, i, t)
+// Hermite curves (book section 11.7, figures 11.54-11.57): hermite_curve(plane, surface, curve),
+// for a curve of intersection(plane, surface) (its param_b, or param_a if that is empty), adds
+// the unit tangent at every traced point, T = N x (S_u x S_v) normalised and oriented along the
+// point order, and its (u, v) velocity per unit arc length q = (N.S_v, -N.S_u) / |.| (so that
+// S_u q.x + S_v q.y = T); where S_u x S_v is parallel to N (the surface touches the plane) or
+// degenerate, the chord through the neighbouring points replaces it. point_at(h, i, t)
 // evaluates segment i (P_i to P_i+1, the last one closing a loop) at t in [0, 1] as the cubic
 // Hermite interpolants R(t) (3-space, from the points and L T_i, L T_i+1, L the chord length)
 // and p(t) (parameter space, from the (u, v) and L q). R(t) lies in the plane up to rounding
 // and within O(h^4) of the surface, S(p(t)) lies on the surface and within O(h^4) of the plane,
 // h the segment length (docs/notes/surface_intersection.md). hermite_basis(t) gives the four
 // basis functions. Status: the surface's, non_finite_input, degenerate_input (zero normal),
-// empty_input (no points); float input is computed in double.
+// empty_input (no points), invalid_input (points and parameters of different counts); float
+// input is computed in double. Cost: one surface derivative evaluation per point.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/surface3.hpp>
