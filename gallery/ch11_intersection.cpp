@@ -2,13 +2,16 @@
 // Gallery, chapter 11 (intersection in 3D). Every intersection point, parameter, hit, side and
 // separating-axis answer shown is computed by a locus::intersection / intersects / side_of_plane
 // query on the literal inputs; the 3D scenes are projected through the SvgWriter camera.
-// Figures: linear component and plane (11.1), line and triangle with barycentrics (11.2),
-// linear components and quadrics (11.9-11.17), a ray and a NURBS surface with the refinement
-// hierarchy (11.18, 11.20-11.22), two and three planes (11.23, 11.24),
-// plane-triangle, triangle-triangle and plane-mesh (11.25-11.27, 11.29), plane sections of
-// sphere, cylinder and cone (11.32-11.52), plane and parametric surface (11.53, 11.58), two
-// B-spline surfaces (11.59, 11.60), slabs and boxes (11.61-11.73), linear component and
-// torus (11.74-11.77).
+// Figures (all 77 of the chapter): linear component and plane (11.1), line and triangle with
+// barycentrics (11.2), ray and polygon, disk, octahedron, triangle mesh (BVH) and the half-lines
+// of a convex polyhedron (11.3-11.8), linear components and quadrics (11.9-11.17), a ray and a
+// NURBS surface with the refinement hierarchy and a tessellation it misses (11.18-11.22), two
+// and three planes (11.23, 11.24), plane-triangle, triangle-triangle (with the interval
+// overlap), plane-mesh, polygon-plane and polygon-triangle (11.25-11.31), plane sections of
+// sphere, cylinder and cone with edge-on views, Dandelin spheres and focal definitions
+// (11.32-11.52), plane and parametric surface with the Hermite curves (11.53-11.58), two
+// B-spline surfaces (11.59, 11.60), slabs and boxes (11.61-11.73), linear component and torus
+// (11.74-11.77).
 #include "gallery.hpp"
 
 #include <locus/intersection/aligned_box_aligned_box.hpp>
@@ -18,6 +21,7 @@
 #include <locus/intersection/line_capsule.hpp>
 #include <locus/intersection/line_cone.hpp>
 #include <locus/intersection/line_cylinder.hpp>
+#include <locus/intersection/line_disk.hpp>
 #include <locus/intersection/line_ellipsoid.hpp>
 #include <locus/intersection/line_oriented_box.hpp>
 #include <locus/intersection/line_plane.hpp>
@@ -25,37 +29,48 @@
 #include <locus/intersection/line_sphere.hpp>
 #include <locus/intersection/line_torus.hpp>
 #include <locus/intersection/line_triangle.hpp>
+#include <locus/intersection/linear_polyhedron.hpp>
 #include <locus/intersection/oriented_box_oriented_box.hpp>
 #include <locus/intersection/oriented_box_plane.hpp>
 #include <locus/intersection/plane_cone.hpp>
 #include <locus/intersection/plane_cylinder.hpp>
 #include <locus/intersection/plane_mesh.hpp>
 #include <locus/intersection/plane_plane.hpp>
+#include <locus/intersection/plane_polygon.hpp>
 #include <locus/intersection/plane_sphere.hpp>
 #include <locus/intersection/plane_surface.hpp>
 #include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
 #include <locus/intersection/ray_cone.hpp>
 #include <locus/intersection/ray_cylinder.hpp>
+#include <locus/intersection/ray_plane.hpp>
+#include <locus/intersection/ray_polygon.hpp>
 #include <locus/intersection/ray_sphere.hpp>
 #include <locus/intersection/ray_surface.hpp>
 #include <locus/intersection/ray_torus.hpp>
 #include <locus/intersection/ray_triangle.hpp>
+#include <locus/intersection/segment_disk.hpp>
 #include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/surface_surface.hpp>
 #include <locus/intersection/triangle_triangle.hpp>
 #include <locus/io/svg_primitives.hpp>
 #include <locus/mesh/platonic.hpp>
 #include <locus/primitives/aligned_box.hpp>
+#include <locus/primitives/circle.hpp>
 #include <locus/primitives/oriented_box.hpp>
+#include <locus/primitives/planar_polygon.hpp>
 #include <locus/primitives/plane.hpp>
 #include <locus/primitives/sphere.hpp>
 #include <locus/primitives/triangle.hpp>
+#include <locus/spatial/bvh.hpp>
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -1102,12 +1117,852 @@ bool fig_11_60(SvgWriter& w) {
   return true;
 }
 
+// ---- linear components against polygons, disks and polyhedra (11.3-11.8) ----------------------
+
+/// A non-convex pentagon in the plane z = 0.1 x + 0.2 y + 0.3 (the notch at vertex 3).
+std::vector<Vec3d> notched_pentagon() {
+  std::vector<Vec3d> v;
+  for (const Vec2d& p :
+       {Vec2d{-1, -1}, Vec2d{2, -0.8}, Vec2d{2.2, 1.6}, Vec2d{0.6, 0.4}, Vec2d{-0.8, 2}})
+    v.push_back({p.x, p.y, 0.1 * p.x + 0.2 * p.y + 0.3});
+  return v;
+}
+
+// 11.3: rays against a filled planar polygon: one crosses inside (its (s, t) in the polygon's
+// frame), one crosses the plane in the notch and misses.
+bool fig_11_3(SvgWriter& w) {
+  w.set_camera(camera({4, -8, 7}, {0.5, 0.5, 0.4}));
+  const std::vector<Vec3d> verts = notched_pentagon();
+  const auto poly = planar_polygon(std::span<const Vec3d>(verts));
+  if (!poly) return false;
+  closed(w, verts, filled(c::blue, 0.18));
+  const Plane3<double> pl{poly->frame.normal, dot(poly->frame.normal, poly->frame.origin)};
+  const std::array<Ray3<double>, 2> rays = {Ray3<double>{{-0.5, -0.6, 3.2}, {0.15, 0.35, -1}},
+                                            Ray3<double>{{0.9, 2.0, 3.2}, {-0.1, -0.25, -1}}};
+  bool ok = true;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const auto r = intersection(rays[i], *poly);
+    const auto through = intersection(rays[i], pl);  // where the ray crosses the plane
+    if (through.kind != Kind::point) return false;
+    const Vec3d x = through.point[0];
+    w.arrow(rays[i].origin, x, pen(i == 0 ? c::red : c::orange, 1.8));
+    w.segment(x, point_at(rays[i], through.param_a[0] + 0.9), dashed(i == 0 ? c::red : c::orange));
+    point(w, rays[i].origin, i == 0 ? "P0" : "P1", i == 0 ? c::red : c::orange);
+    if (r.kind == Kind::point) {
+      point(w, r.point[0], "hit, (s, t) = " + coordinates(r.param_b[0].x, r.param_b[0].y), c::red);
+    } else {
+      point(w, x, "in the notch: misses", c::orange);
+    }
+    ok = ok && (r.kind == Kind::point) == (i == 0);
+  }
+  return ok;
+}
+
+// 11.4: a line, a segment and an in-plane line against a disk: a crossing, a segment that stops
+// short (empty), and the chord of a line lying in the disk's plane.
+bool fig_11_4(SvgWriter& w) {
+  w.set_camera(camera({5, -8, 5}, {0, 0, 0.3}));
+  const Disk3<double> d{{0, 0, 0.25}, {0, 0, 1}, 1.6};
+  const auto ax = in_plane_axes(d);
+  w.polyline(ring(d.center, ax.u, ax.v, d.radius), filled(c::blue, 0.15), true);
+  point(w, d.center, "C", c::blue);
+  const Line3<double> l{{-0.8, 0.5, 2.8}, {0.25, -0.15, -1}};
+  const auto rl = intersection(l, d);
+  w.segment(point_at(l, -0.3), point_at(l, 4.2), pen(c::red, 1.6));
+  if (rl.kind == Kind::point) {
+    point(w, rl.point[0], "", c::red);
+    label(w, rl.point[0], "line: point", c::red, -80, -16);
+  }
+  const Segment3<double> s{{1.0, -0.8, 2.6}, {1.2, -0.9, 1.3}};
+  const auto rs = intersection(s, d);
+  w.segment(s.p0, s.p1, pen(c::orange, 2.2));
+  label(w, s.p1, "segment: " + std::string(to_string(rs.kind)), c::orange);
+  const Line3<double> in{d.center + Vec3d{0.3, 0.8, 0}, {1, 0.2, 0}};  // in the plane z = 0.25
+  const auto rc = intersection(in, d);
+  w.segment(in.origin - 2.4 * in.direction, in.origin + 2.4 * in.direction, dashed(c::purple));
+  if (rc.kind == Kind::segment) {
+    w.segment(rc.point[0], rc.point[1], pen(c::purple, 2.6));
+    label(w, rc.point[1], "in the plane: chord", c::purple);
+  }
+  return rl.kind == Kind::point && rs.kind == Kind::empty && rc.kind == Kind::segment;
+}
+
+/// The outward face planes {n, n.a} of a convex mesh about the origin (fan triangles).
+std::vector<Plane3<double>> face_planes(const PolygonMesh<double>& m) {
+  std::vector<Plane3<double>> planes;
+  for (const auto& t : fan_triangles(m)) {
+    const Vec3d a = m.vertices[t[0]], b = m.vertices[t[1]], cc = m.vertices[t[2]];
+    Vec3d n = cross(b - a, cc - a);
+    if (dot(n, a) < 0) n = -n;
+    planes.push_back({n, dot(n, a)});
+  }
+  return planes;
+}
+
+void mesh_edges(SvgWriter& w, const PolygonMesh<double>& m, const SvgStyle& s) {
+  for (const auto& t : fan_triangles(m))
+    closed(w, std::vector<Vec3d>{m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]}, s);
+}
+
+// 11.5: a ray through an octahedron (the convex solid of its eight face half-spaces): entry and
+// exit.
+bool fig_11_5(SvgWriter& w) {
+  w.set_camera(camera({4, -7, 4}, {0, 0, 0}));
+  PolygonMesh<double> m = octahedron_mesh<double>();
+  for (auto& v : m.vertices) v = 1.6 * v;
+  const std::vector<Plane3<double>> planes = face_planes(m);
+  mesh_edges(w, m, pen(c::blue, 1.2));
+  const Ray3<double> ray{{-2.8, -1.2, 0.9}, {1, 0.45, -0.3}};
+  const auto r = intersection(ray, ConvexPolyhedron3<double>{planes});
+  if (r.kind != Kind::segment) return false;
+  w.arrow(ray.origin, point_at(ray, 5.6), pen(c::gray, 1.4));
+  w.segment(r.point[0], r.point[1], pen(c::red, 3));
+  point(w, ray.origin, "P", c::gray);
+  point(w, r.point[0], "entry t = " + fmt(r.param_a[0]), c::red);
+  point(w, r.point[1], "exit t = " + fmt(r.param_a[1]), c::red);
+  return true;
+}
+
+// 11.6: segments against a triangle mesh (an icosphere) through its BVH: every hit triangle.
+bool fig_11_6(SvgWriter& w) {
+  w.set_camera(camera({4, -7, 4}, {0, 0, 0}));
+  const PolygonMesh<double> m = icosphere_mesh<double>(1.5, 1);
+  const auto tris = fan_triangles(m);
+  const Bvh<double> bvh{std::span<const Vec3d>(m.vertices),
+                        std::span<const std::array<std::uint32_t, 3>>(tris)};
+  if (bvh.status() != Status::ok) return false;
+  mesh_edges(w, m, pen(c::light, 0.7));
+  const std::array<Segment3<double>, 2> segs = {Segment3<double>{{-3, -0.6, 0.4}, {3, 0.5, 0.1}},
+                                                Segment3<double>{{0.4, -3, -0.6}, {0.2, 0, -0.3}}};
+  const std::size_t want[2] = {2, 1};
+  bool ok = true;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    // The segment p0 + t (p1 - p0), t in [0, 1]: a ray with tmax = 1.
+    const auto hits = bvh.all_hits(Ray3<double>{segs[i].p0, segs[i].p1 - segs[i].p0}, 1.0);
+    for (const auto& h : hits) {
+      const Triangle3<double> t = bvh.triangle(h.triangle);
+      closed(w, std::vector<Vec3d>{t.v0, t.v1, t.v2}, filled(c::orange, 0.5));
+    }
+    w.segment(segs[i].p0, segs[i].p1, pen(c::red, 1.8));
+    point(w, segs[i].p0, "", c::red);
+    point(w, segs[i].p1, "", c::red);
+    for (const auto& h : hits)
+      point(w, segs[i].p0 + h.t * (segs[i].p1 - segs[i].p0),
+            "t = " + fmt(h.t) + (h.front ? " (enters)" : " (leaves)"), c::black);
+    ok = ok && hits.size() == want[i];
+  }
+  return ok;
+}
+
+/// A pentagonal prism |z| <= 1 over a convex pentagon: its outward planes (5 sides first).
+std::vector<Plane3<double>> pentagon_prism() {
+  const std::array<Vec2d, 5> p = {Vec2d{-1.5, -1}, Vec2d{1.2, -1.4}, Vec2d{2, 0.6}, Vec2d{0.3, 1.8},
+                                  Vec2d{-1.7, 0.9}};
+  std::vector<Plane3<double>> planes;
+  for (std::size_t i = 0; i < 5; ++i) {
+    const Vec2d a = p[i], b = p[(i + 1) % 5];
+    const Vec3d n{b.y - a.y, a.x - b.x, 0};  // outward for a counter-clockwise pentagon
+    planes.push_back({n, n.x * a.x + n.y * a.y});
+  }
+  planes.push_back({{0, 0, 1}, 1});
+  planes.push_back({{0, 0, -1}, 1});
+  return planes;
+}
+
+// 11.7 / 11.8: each face plane bounds the line to a half-line (entering: t >= t_i, leaving:
+// t <= t_i); the line meets the polyhedron in their logical intersection, empty when the
+// half-lines have no common part. Seen from above, half-lines stacked below the line.
+bool half_lines(SvgWriter& w, const Line3<double>& l, bool meets) {
+  w.set_camera(camera({0.2, -0.5, 10}, {0.2, -0.5, 0}));
+  const std::vector<Plane3<double>> planes = pentagon_prism();
+  std::vector<Vec3d> outline;
+  for (std::size_t i = 0; i < 5; ++i) {
+    const auto corner = intersection(planes[i], planes[(i + 1) % 5], planes[5]);
+    if (corner.kind != Kind::point) return false;
+    outline.push_back(corner.point[0]);
+  }
+  closed(w, outline, filled(c::blue, 0.15));
+  const Vec3d d = normalize(l.direction);
+  const Vec3d side = normalize(cross(Vec3d{0, 0, 1}, d));
+  w.segment(point_at(l, -3.2), point_at(l, 3.2), pen(c::black, 1.4));
+  label(w, point_at(l, 3.2), "line", c::black);
+  const char* cols[] = {c::red, c::green, c::orange, c::purple, c::blue};
+  for (std::size_t i = 0; i < 5; ++i) {
+    const std::array<Plane3<double>, 1> one = {planes[i]};
+    const auto h = intersection(l, ConvexPolyhedron3<double>{one});
+    if (h.kind != Kind::ray) return false;
+    // The half-line within the drawn range t in [-3.2, 3.2] (its bound may lie outside).
+    const bool forward = dot(h.point[1] - h.point[0], d) > 0;
+    const double t0 = std::clamp(h.param_a[0], -3.2, 3.2), t1 = forward ? 3.2 : -3.2;
+    const Vec3d off = (-0.3 * double(i + 1) - 0.2) * side;
+    const Vec3d b = point_at(l, t0) + off;
+    if (t0 == h.param_a[0]) w.segment(h.point[0], b, dashed(cols[i], 0.8));
+    if (t0 != t1) w.arrow(b, point_at(l, t1) + off, pen(cols[i], 2));
+    label(w, b, (forward ? "t >= " : "t <= ") + fmt(h.param_a[0]), cols[i], -8, -14);
+  }
+  const auto all = intersection(l, ConvexPolyhedron3<double>{planes});
+  if (all.kind == Kind::segment) {
+    w.segment(all.point[0], all.point[1], pen(c::red, 4));
+    label(w, all.point[1], "[" + fmt(all.param_a[0]) + ", " + fmt(all.param_a[1]) + "]", c::red);
+  } else {
+    label(w, point_at(l, -3.2), "common part: " + std::string(to_string(all.kind)), c::red, 0, 14);
+  }
+  return (all.kind == Kind::segment) == meets;
+}
+bool fig_11_7(SvgWriter& w) { return half_lines(w, {{-0.5, -0.2, 0}, {1, 0.3, 0}}, true); }
+bool fig_11_8(SvgWriter& w) { return half_lines(w, {{0.5, 2.2, 0}, {1, -0.9, 0}}, false); }
+
+// 11.19: a ray between a bump and its coarse tessellation (cross section): it hits the true
+// surface (ray-NURBS refinement) twice and misses every triangle of the mesh (BVH).
+bool fig_11_19(SvgWriter& w) {
+  w.set_camera(camera({0, -10, 0.6}, {0, 0, 0.6}));
+  BezierPatch<double, 3> p{4, 4, {}};
+  const double zs[4] = {0, 1.6, 1.6, 0};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) p.control.push_back({double(i) - 1.5, double(j) - 1.5, zs[i]});
+  // The tessellation: u in {0, 1/2, 1}, v in {0, 1}.
+  std::vector<Vec3d> verts;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 2; ++j) verts.push_back(point_at(p, 0.5 * i, double(j)));
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    tris.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+    tris.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  }
+  const Bvh<double> bvh{std::span<const Vec3d>(verts),
+                        std::span<const std::array<std::uint32_t, 3>>(tris)};
+  // Parallel to the first chord, 0.15 above it.
+  const Ray3<double> ray{{-2.6, 0, -0.73}, {1, 0, 0.8}};
+  const auto true_hits = intersection(ray, p);
+  const auto mesh_hits = bvh.all_hits(ray);
+  std::vector<Vec3d> curve;
+  for (int k = 0; k <= 60; ++k) curve.push_back(point_at(p, k / 60.0, 0.5));
+  w.polyline(curve, pen(c::blue, 2));
+  w.polyline(std::vector<Vec3d>{verts[0], verts[2], verts[4]}, pen(c::green, 2));
+  for (const int k : {0, 2, 4}) point(w, verts[static_cast<std::size_t>(k)], "", c::green);
+  label(w, point_at(p, 0.8, 0.5), "surface", c::blue);
+  label(w, verts[4] + Vec3d{-0.6, 0, 0.5}, "tessellation", c::green, 0, -18);
+  w.arrow(ray.origin, point_at(ray, 3.6), pen(c::red, 1.6));
+  point(w, ray.origin, "P", c::red);
+  for (const auto& h : true_hits.hits) point(w, h.point, "", c::red);
+  if (!true_hits.hits.empty())
+    label(w, true_hits.hits.back().point, "hits the surface", c::red, 8, 10);
+  label(w, point_at(ray, 3.2), mesh_hits.empty() ? "misses the mesh" : "hits the mesh", c::red);
+  return true_hits.status == Status::ok && true_hits.hits.size() == 2 && mesh_hits.empty();
+}
+
+// ---- triangle intervals, polygons (11.28, 11.30, 11.31) -------------------------------------
+
+Plane3<double> plane_of(const Triangle3<double>& t) {
+  const Vec3d n = cross(t.v1 - t.v0, t.v2 - t.v0);
+  return {n, dot(n, t.v0)};
+}
+
+// 11.28: each triangle meets the other's plane in an interval of the common line; the triangles
+// meet iff the intervals overlap: (a) overlap, (b) disjoint.
+bool fig_11_28(SvgWriter& w) {
+  w.set_camera(camera({6, -10, 5}, {1.5, 0.5, -2}));
+  const Triangle3<double> a{{0, 0, 0}, {3, 0, 0}, {0, 3, 0}};
+  const Triangle3<double> b0{{0.5, 0.5, -1}, {0.8, 1.0, 1.2}, {2.6, -0.6, 0.2}};
+  // (b): the same triangle slid along the common line (its plane unchanged) past a's interval.
+  const auto l0 = intersection(plane_of(a), plane_of(b0));
+  const auto ia0 = intersection(a, plane_of(b0)), ib0 = intersection(b0, plane_of(a));
+  if (l0.kind != Kind::line || ia0.kind != Kind::segment || ib0.kind != Kind::segment) return false;
+  const Vec3d slide =
+      (length(ia0.point[1] - ia0.point[0]) + length(ib0.point[1] - ib0.point[0]) + 0.4) *
+      normalize(l0.point[1] - l0.point[0]);
+  const Vec3d away =
+      dot(slide, 0.5 * (ia0.point[0] + ia0.point[1]) - 0.5 * (ib0.point[0] + ib0.point[1])) > 0
+          ? -slide
+          : slide;
+  const std::array<Triangle3<double>, 2> bs = {
+      b0, Triangle3<double>{b0.v0 + away, b0.v1 + away, b0.v2 + away}};
+  const Kind want[2] = {Kind::segment, Kind::empty};
+  const char* names[2] = {"(a) intervals overlap", "(b) disjoint intervals"};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Vec3d sh{0, 0, -4.0 * double(i)};
+    const Triangle3<double> ta{a.v0 + sh, a.v1 + sh, a.v2 + sh};
+    const Triangle3<double> tb{bs[i].v0 + sh, bs[i].v1 + sh, bs[i].v2 + sh};
+    const auto line = intersection(plane_of(ta), plane_of(tb));
+    const auto ia = intersection(ta, plane_of(tb));  // a's interval on the common line
+    const auto ib = intersection(tb, plane_of(ta));  // b's interval
+    const auto r = intersection(ta, tb);
+    if (line.kind != Kind::line || ia.kind != Kind::segment || ib.kind != Kind::segment ||
+        r.kind != want[i])
+      return false;
+    closed(w, std::vector<Vec3d>{ta.v0, ta.v1, ta.v2}, filled(c::blue, 0.15));
+    closed(w, std::vector<Vec3d>{tb.v0, tb.v1, tb.v2}, filled(c::green, 0.15));
+    const Vec3d dl = normalize(line.point[1] - line.point[0]);
+    const Vec3d mid = 0.5 * (ia.point[0] + ia.point[1]);
+    w.segment(mid - 3.0 * dl, mid + 3.0 * dl, dashed(c::gray, 1));
+    w.segment(ia.point[0], ia.point[1], pen(c::blue, 4));
+    const Vec3d lift{0, 0, -0.25};  // b's interval drawn just below the line
+    w.segment(ib.point[0] + lift, ib.point[1] + lift, pen(c::green, 4));
+    if (r.kind == Kind::segment) w.segment(r.point[0], r.point[1], pen(c::red, 2.5));
+    label(w, sh + Vec3d{3.2, 0, -0.4}, names[i], c::black);
+  }
+  return true;
+}
+
+/// A non-convex (U-shaped) polygon in a tilted plane through (1, 1, 0.5).
+std::vector<Vec3d> u_polygon() {
+  std::vector<Vec3d> v;
+  for (const Vec2d& p : {Vec2d{0, 0}, Vec2d{3, 0}, Vec2d{3, 2.5}, Vec2d{2, 2.5}, Vec2d{2, 1},
+                         Vec2d{1, 1}, Vec2d{1, 2.5}, Vec2d{0, 2.5}})
+    v.push_back({p.x, p.y, 0.5 + 0.15 * (p.x - 1) - 0.1 * (p.y - 1)});
+  return v;
+}
+
+// 11.30: a plane cuts a U-shaped polygon in two pieces of the common line.
+bool fig_11_30(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 6}, {1.5, 1.2, 0.5}));
+  const std::vector<Vec3d> poly = u_polygon();
+  const Plane3<double> pl{{0, 1, 0.6}, 2.2};
+  const auto r = intersection(std::span<const Vec3d>(poly), pl);
+  if (r.status != Status::ok || r.segments.size() != 2) return false;
+  plane_patch(w, pl, {1.5, 1.8, 0.6}, 2.2, c::green);
+  closed(w, poly, filled(c::blue, 0.2));
+  for (const auto& s : r.segments) {
+    w.segment(s.p0, s.p1, pen(c::red, 3));
+    point(w, s.p0, "", c::red);
+    point(w, s.p1, "", c::red);
+  }
+  label(w, r.segments[0].p0, "2 pieces", c::red, -60, 12);
+  return true;
+}
+
+// 11.31: the same polygon against a triangle: the pieces of the common line inside both.
+bool fig_11_31(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 6}, {1.5, 1.2, 0.5}));
+  const std::vector<Vec3d> poly = u_polygon();
+  const Triangle3<double> t{{-0.4, 1.6, 2.2}, {2.6, 2.4, -1.2}, {2.8, 1.2, 1.6}};
+  const auto r = intersection(std::span<const Vec3d>(poly), t);
+  if (r.status != Status::ok || r.coplanar || r.segments.empty()) return false;
+  closed(w, poly, filled(c::blue, 0.2));
+  closed(w, std::vector<Vec3d>{t.v0, t.v1, t.v2}, filled(c::green, 0.25));
+  for (const auto& s : r.segments) {
+    w.segment(s.p0, s.p1, pen(c::red, 3));
+    point(w, s.p0, "", c::red);
+    point(w, s.p1, "", c::red);
+  }
+  label(w, r.segments.back().p1, std::to_string(r.segments.size()) + " piece(s)", c::red);
+  return true;
+}
+
+// ---- slab, OBB projection (11.63, 11.70) -----------------------------------------------------
+
+// 11.63: a line clipped by one slab (two parallel planes), seen from above.
+bool fig_11_63(SvgWriter& w) {
+  w.set_camera(camera({1, 0.5, 10}, {1, 0.5, 0}));
+  const std::array<Plane3<double>, 2> slab = {Plane3<double>{{-1, 0, 0}, 0},
+                                              Plane3<double>{{1, 0, 0}, 2}};
+  closed(w, std::vector<Vec3d>{{0, -1.6, 0}, {2, -1.6, 0}, {2, 2.6, 0}, {0, 2.6, 0}},
+         filled(c::blue, 0.12, 0));
+  w.segment(Vec3d{0, -1.6, 0}, Vec3d{0, 2.6, 0}, pen(c::blue, 1.6));
+  w.segment(Vec3d{2, -1.6, 0}, Vec3d{2, 2.6, 0}, pen(c::blue, 1.6));
+  label(w, Vec3d{0, 2.6, 0}, "x = min", c::blue);
+  label(w, Vec3d{2, 2.6, 0}, "x = max", c::blue);
+  const Line3<double> l{{-1.2, -1.0, 0}, {1, 0.7, 0}};
+  const auto r = intersection(l, ConvexPolyhedron3<double>{slab});
+  if (r.kind != Kind::segment) return false;
+  w.segment(point_at(l, -0.3), point_at(l, 4.8), pen(c::gray, 1.4));
+  w.segment(r.point[0], r.point[1], pen(c::red, 3.5));
+  point(w, l.origin, "P", c::gray);
+  point(w, r.point[0], "t0 = " + fmt(r.param_a[0]), c::red);
+  point(w, r.point[1], "t1 = " + fmt(r.param_a[1]), c::red);
+  return true;
+}
+
+// 11.70: an oriented box against a plane: the corners at the ends of the diagonal most aligned
+// with the normal project onto the normal line through the centre to C.n +- r,
+// r = sum e_i |a_i . n|; the box meets the plane iff |C.n - k| <= r.
+bool fig_11_70(SvgWriter& w) {
+  w.set_camera(camera({6, -7, 3}, {0, 0, 0.3}));
+  const double s = std::sqrt(0.5);
+  const OrientedBox3<double> b{{0, 0, 0}, {{s, s, 0}, {-s, s, 0}, {0, 0, 1}}, {1.2, 0.6, 0.5}};
+  const Plane3<double> pl{{0.3, -0.35, 1.0}, 0.55};
+  const Vec3d n = normalize(pl.normal);
+  const auto cs = corners(b);
+  std::size_t lo = 0, hi = 0;
+  for (std::size_t k = 1; k < 8; ++k) {
+    if (dot(n, cs[k]) < dot(n, cs[lo])) lo = k;
+    if (dot(n, cs[k]) > dot(n, cs[hi])) hi = k;
+  }
+  double r = 0;
+  for (int k = 0; k < 3; ++k) r += b.extent[k] * std::fabs(dot(b.axis[k], n));
+  const Sign side = side_of_plane(b, pl);
+  draw_box(w, b, pen(c::blue));
+  plane_patch(w, pl, b.center + 0.9 * n, 1.3, c::green);
+  w.segment(cs[lo], cs[hi], pen(c::red, 2));
+  w.segment(b.center - 2.0 * n, b.center + 2.0 * n, dashed(c::black, 1));
+  label(w, b.center + 2.0 * n, "n", c::black);
+  const Vec3d plo = b.center + dot(n, cs[lo] - b.center) * n;
+  const Vec3d phi = b.center + dot(n, cs[hi] - b.center) * n;
+  w.segment(cs[lo], plo, dashed(c::red, 1));
+  w.segment(cs[hi], phi, dashed(c::red, 1));
+  w.segment(plo, phi, pen(c::orange, 4));
+  point(w, b.center, "C", c::black);
+  label(w, phi, "r = " + fmt(r), c::orange, -60, 4);
+  const double dist = dot(n, b.center) - pl.constant / length(pl.normal);
+  point(w, b.center - dist * n, "plane: k = " + fmt(pl.constant / length(pl.normal)), c::green);
+  label(w, b.center + Vec3d{0, 0, -1.4},
+        std::string("|C.n - k| = ") + fmt(std::fabs(dist)) +
+            (side == Sign::zero ? " <= r: meets" : " > r: apart"),
+        c::black);
+  // The extreme diagonal's half-projection is r, and the exact side agrees with the test.
+  return std::fabs(0.5 * dot(n, cs[hi] - cs[lo]) - r) < 1e-12 &&
+         (side == Sign::zero) == (std::fabs(dist) <= r);
+}
+
+// ---- plane sections: edge-on views, circle, Dandelin spheres, cone (11.36-11.47) -------------
+
+/// The cylinder x^2 + y^2 = 1 about z cut by the plane 0.5 x + z = 0.3 (11.36, 11.39, 11.40).
+const Cylinder3<double> kDandelinCylinder{
+    {{0, 0, 0}, {0, 0, 1}}, 1, std::numeric_limits<double>::infinity()};
+const Plane3<double> kDandelinPlane{{0.5, 0, 1}, 0.3};
+
+/// The two Dandelin spheres of an ellipse cut from a cylinder: radius r, centred on the axis at
+/// focus +- r n (the sign that lands on the axis); false if a centre is off the axis (a check of
+/// the computed foci).
+bool dandelin_spheres(const PlaneConic3<double>& c0, const Cylinder3<double>& cyl,
+                      std::array<Sphere3<double>, 2>& out) {
+  for (int i = 0; i < 2; ++i) {
+    const Vec3d f = c0.focus[i];
+    const Vec3d a = f + cyl.radius * c0.normal, b = f - cyl.radius * c0.normal;
+    const auto off_axis = [&](const Vec3d& x) {
+      const Vec3d q = x - cyl.axis.origin;
+      return length(q - dot(q, cyl.axis.direction) * cyl.axis.direction);
+    };
+    const Vec3d centre = off_axis(a) < off_axis(b) ? a : b;
+    if (off_axis(centre) > 1e-9) return false;
+    out[static_cast<std::size_t>(i)] = {centre, cyl.radius};
+  }
+  return true;
+}
+
+// 11.36: the plane-cylinder section seen edge-on (along the ellipse's minor axis): the plane is
+// a line and the ellipse its major axis, a = r / cos(angle between normal and axis).
+bool fig_11_36(SvgWriter& w) {
+  const auto c0 = intersection(kDandelinPlane, kDandelinCylinder);
+  if (c0.type != ConicType::ellipse) return false;
+  w.set_camera(camera(c0.center + 10.0 * c0.axis[1], c0.center));
+  draw_cylinder(w, kDandelinCylinder, 2.2, c::blue);
+  plane_patch(w, kDandelinPlane, c0.center, 2.0, c::green);
+  const Vec3d e0 = c0.center - c0.extent[0] * c0.axis[0],
+              e1 = c0.center + c0.extent[0] * c0.axis[0];
+  w.segment(e0, e1, pen(c::red, 3));
+  point(w, e0, "", c::red);
+  point(w, e1, "", c::red);
+  label(w, c0.center, "2a = " + fmt(2 * c0.extent[0]), c::red, 8, -18);
+  w.arrow(c0.center, c0.center + 1.2 * c0.normal, pen(c::green, 1.6));
+  label(w, c0.center + 1.2 * c0.normal, "n", c::green);
+  w.arrow(c0.center, c0.center + Vec3d{0, 0, 1.6}, pen(c::blue, 1.6));
+  label(w, c0.center + Vec3d{0, 0, 1.6}, "axis", c::blue);
+  const double cos_angle = std::fabs(dot(c0.normal, kDandelinCylinder.axis.direction));
+  label(w, c0.center + Vec3d{0, 0, -2.0}, "r / cos = " + fmt(1.0 / cos_angle), c::black);
+  return std::fabs(c0.extent[0] - kDandelinCylinder.radius / cos_angle) < 1e-12;
+}
+
+// 11.38: the circle in 3D from a plane and a sphere: centre, normal, in-plane axes, radius.
+bool fig_11_38(SvgWriter& w) {
+  w.set_camera(camera({5, -7, 5}, {0, 0, 0.5}));
+  const Sphere3<double> s{{0, 0, 0}, 2};
+  const Plane3<double> pl{{0.2, 0.3, 1}, 1.0};
+  const auto c0 = intersection(pl, s);
+  if (c0.type != ConicType::circle) return false;
+  draw_sphere(w, s, c::light);
+  draw_conic(w, c0, c::red);
+  point(w, c0.center, "C", c::black);
+  w.arrow(c0.center, c0.center + 1.2 * c0.normal, pen(c::green, 1.8));
+  label(w, c0.center + 1.2 * c0.normal, "N", c::green);
+  w.arrow(c0.center, c0.center + c0.extent[0] * c0.axis[0], pen(c::blue, 1.8));
+  label(w, c0.center + c0.extent[0] * c0.axis[0], "U", c::blue);
+  w.arrow(c0.center, c0.center + c0.extent[1] * c0.axis[1], pen(c::blue, 1.8));
+  label(w, c0.center + c0.extent[1] * c0.axis[1], "V", c::blue);
+  label(w, c0.center + 0.5 * c0.extent[0] * c0.axis[0], "r = " + fmt(c0.extent[0]), c::blue, 4,
+        -16);
+  const double d = pl.constant / length(pl.normal);  // the centre's distance
+  return std::fabs(c0.extent[0] - std::sqrt(s.radius * s.radius - d * d)) < 1e-12;
+}
+
+// 11.39: Dandelin's construction: the spheres inscribed in the cylinder touching the plane touch
+// it at the foci; for P on the ellipse |PF1| + |PF2| is the distance between the circles where
+// the spheres touch the cylinder, 2a.
+bool fig_11_39(SvgWriter& w) {
+  w.set_camera(camera({5, -8, 3}, {0, 0, 0}));
+  const auto c0 = intersection(kDandelinPlane, kDandelinCylinder);
+  std::array<Sphere3<double>, 2> sp{};
+  if (c0.type != ConicType::ellipse || !dandelin_spheres(c0, kDandelinCylinder, sp)) return false;
+  draw_cylinder(w, kDandelinCylinder, 2.4, c::light);
+  plane_patch(w, kDandelinPlane, c0.center, 1.8, c::green);
+  for (const auto& s : sp) {
+    draw_sphere(w, s, c::blue);
+    w.polyline(ring(s.center, {1, 0, 0}, {0, 1, 0}, s.radius), pen(c::purple, 1.6));
+  }
+  draw_conic(w, c0, c::red);
+  const Vec3d p = point_at(c0, 2.2);
+  const Vec3d q0{p.x, p.y, sp[0].center.z}, q1{p.x, p.y, sp[1].center.z};
+  w.segment(q0, q1, pen(c::purple, 1.6));
+  w.segment(p, c0.focus[0], pen(c::orange, 1.6));
+  w.segment(p, c0.focus[1], pen(c::orange, 1.6));
+  point(w, p, "P", c::black);
+  const double sum = length(p - c0.focus[0]) + length(p - c0.focus[1]);
+  label(w, Vec3d{0, 0, -2.8}, "|PF| + |PF'| = " + fmt(sum) + " = 2a = " + fmt(2 * c0.extent[0]),
+        c::black);
+  return std::fabs(sum - 2 * c0.extent[0]) < 1e-9 && std::fabs(sum - length(q1 - q0)) < 1e-9;
+}
+
+// 11.40: the same in cross section (edge-on along the minor axis): the spheres are circles
+// touching the cylinder's sides and the plane's line at the foci.
+bool fig_11_40(SvgWriter& w) {
+  const auto c0 = intersection(kDandelinPlane, kDandelinCylinder);
+  std::array<Sphere3<double>, 2> sp{};
+  if (c0.type != ConicType::ellipse || !dandelin_spheres(c0, kDandelinCylinder, sp)) return false;
+  w.set_camera(camera(c0.center + 10.0 * c0.axis[1], c0.center));
+  const Vec3d side = normalize(cross(c0.axis[1], kDandelinCylinder.axis.direction));
+  for (const double k : {-1.0, 1.0})
+    w.segment(k * side + Vec3d{0, 0, -2.6}, k * side + Vec3d{0, 0, 2.6}, pen(c::blue, 1.6));
+  plane_patch(w, kDandelinPlane, c0.center, 2.0, c::green);
+  for (const auto& s : sp) {
+    w.polyline(ring(s.center, side, {0, 0, 1}, s.radius), pen(c::purple, 1.6));
+    point(w, s.center, "", c::purple);
+  }
+  w.segment(c0.center - c0.extent[0] * c0.axis[0], c0.center + c0.extent[0] * c0.axis[0],
+            pen(c::red, 3));
+  point(w, c0.focus[0], "F", c::red);
+  point(w, c0.focus[1], "F'", c::red);
+  return true;
+}
+
+// 11.44: the test for a plane and a (one-nappe) infinite cone: the plane meets the conic of the
+// double cone; it meets the drawn nappe iff part of that conic lies on the axis side of the
+// vertex (checked on the computed conic's centre and type).
+bool fig_11_44(SvgWriter& w) {
+  w.set_camera(camera({6, -9, 2}, {0, 0, 0.8}));
+  const double inf = std::numeric_limits<double>::infinity();
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.5, 0, inf};
+  draw_cone(w, cone, 0, 3, c::blue);
+  w.arrow(cone.vertex, cone.vertex + 1.0 * cone.axis, pen(c::blue, 1.6));
+  point(w, cone.vertex, "V", c::blue);
+  const std::array<Plane3<double>, 2> pls = {Plane3<double>{{0.3, 0, 1}, 1.6},
+                                             Plane3<double>{{0.25, 0, 1}, -0.5}};
+  const char* cols[2] = {c::red, c::orange};
+  bool ok = true;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto c0 = intersection(pls[i], cone);
+    const bool upper = c0.type == ConicType::ellipse && dot(c0.center - cone.vertex, cone.axis) > 0;
+    plane_patch(w, pls[i], project(pls[i], Vec3d{0, 0, 0}), 1.8, i == 0 ? c::green : c::gray);
+    if (upper) draw_conic(w, c0, cols[i]);
+    label(w, project(pls[i], Vec3d{1.8, 0, 0}),
+          upper ? "meets the nappe (ellipse)"
+                : "misses: " + std::string(to_string(c0.type)) + " on the other nappe",
+          cols[i]);
+    ok = ok && upper == (i == 0);
+  }
+  return ok;
+}
+
+// 11.45: the plane-cone section edge-on (along the minor axis): the plane is a line through the
+// two generators, the ellipse its major axis between them.
+bool fig_11_45(SvgWriter& w) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.5, -inf, inf};
+  const Plane3<double> pl{{0.4, 0, 1}, 1.5};
+  const auto c0 = intersection(pl, cone);
+  if (c0.type != ConicType::ellipse) return false;
+  w.set_camera(camera(Vec3d{0, 0, 1.2} + 10.0 * c0.axis[1], {0, 0, 1.2}));
+  draw_cone(w, cone, -0.5, 3, c::blue);
+  w.arrow(cone.vertex, cone.vertex + 3.2 * cone.axis, dashed(c::blue, 1));
+  point(w, cone.vertex, "V", c::blue);
+  plane_patch(w, pl, c0.center, 2.2, c::green);
+  const Vec3d e0 = c0.center - c0.extent[0] * c0.axis[0],
+              e1 = c0.center + c0.extent[0] * c0.axis[0];
+  w.segment(e0, e1, pen(c::red, 3));
+  point(w, e0, "", c::red);
+  point(w, e1, "", c::red);
+  point(w, c0.center, "C", c::red);
+  label(w, c0.center, "2a = " + fmt(2 * c0.extent[0]), c::red, 8, -18);
+  // Both ends of the major axis lie on generators: angle alpha to the axis.
+  const double a0 = std::acos(dot(normalize(e0 - cone.vertex), cone.axis));
+  const double a1 = std::acos(dot(normalize(e1 - cone.vertex), cone.axis));
+  return std::fabs(a0 - cone.angle) < 1e-9 && std::fabs(a1 - cone.angle) < 1e-9;
+}
+
+// 11.46: the infinite cone: vertex V, unit axis A, angle alpha; X is on it iff
+// A.(X - V) = |X - V| cos(alpha) (X a computed line-cone hit).
+bool fig_11_46(SvgWriter& w) {
+  w.set_camera(camera({6, -9, 2}, {0, 0, 1.2}));
+  const double inf = std::numeric_limits<double>::infinity();
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.5, 0, inf};
+  draw_cone(w, cone, 0, 3, c::blue);
+  point(w, cone.vertex, "V", c::blue);
+  w.arrow(cone.vertex, cone.vertex + 3.3 * cone.axis, pen(c::black, 1.6));
+  label(w, cone.vertex + 3.3 * cone.axis, "A", c::black);
+  const Line3<double> l{{-2, -1, 2}, {1, 0.3, 0}};
+  const auto r = intersection(l, cone);
+  if (r.count < 1) return false;
+  const Vec3d x = r.point[0];
+  w.segment(cone.vertex, x + 0.3 * (x - cone.vertex), pen(c::red, 1.8));
+  point(w, x, "X", c::red);
+  // The angle alpha between A and the generator through X.
+  const Vec3d g = normalize(x - cone.vertex);
+  std::vector<Vec3d> arc;
+  for (int k = 0; k <= 20; ++k) {
+    const double t = cone.angle * k / 20;
+    const Vec3d side = normalize(g - dot(g, cone.axis) * cone.axis);
+    arc.push_back(cone.vertex + 0.9 * (std::cos(t) * cone.axis + std::sin(t) * side));
+  }
+  w.polyline(arc, pen(c::gray, 1.2));
+  label(w, arc[10], "alpha", c::gray);
+  const double lhs = dot(cone.axis, x - cone.vertex);
+  const double rhs = length(x - cone.vertex) * std::cos(cone.angle);
+  label(w, Vec3d{0, 0, -0.6},
+        "A.(X - V) = " + fmt(lhs, 4) + ",  |X - V| cos(alpha) = " + fmt(rhs, 4), c::black);
+  return std::fabs(lhs - rhs) < 1e-9;
+}
+
+// 11.47: the focal definitions, drawn in each conic's own (axis[0], axis[1]) frame: a hyperbola,
+// | |PF| - |PF'| | = 2a; a parabola, |PF| = distance to the directrix. The parabola is exact:
+// axis (1, 1, 0), normal (1, 0, 1) and an angle whose double sine is exactly 1/2.
+bool fig_11_47(SvgWriter& w) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const auto flat = [](const PlaneConic3<double>& c0, const Vec3d& x, const Vec2d& at) {
+    return at + Vec2d{dot(x - c0.center, c0.axis[0]), dot(x - c0.center, c0.axis[1])};
+  };
+  // Hyperbola.
+  const Cone3<double> cone{{0, 0, 0}, {0, 0, 1}, 0.5, -inf, inf};
+  const auto h = intersection(Plane3<double>{{1, 0, 0.1}, 1.2}, cone);
+  if (h.type != ConicType::hyperbola) return false;
+  const Vec2d ha{0, 0};
+  for (int b = 0; b < 2; ++b) {
+    std::vector<Vec2d> pts;
+    for (int k = 0; k <= 60; ++k) pts.push_back(flat(h, point_at(h, -1.5 + 3.0 * k / 60, b), ha));
+    w.polyline(pts, pen(c::red, 2.2));
+  }
+  const Vec3d p = point_at(h, 0.9, 0);
+  point(w, flat(h, h.focus[0], ha), "F", c::red);
+  point(w, flat(h, h.focus[1], ha), "F'", c::red);
+  point(w, flat(h, p, ha), "P", c::black);
+  w.segment(flat(h, p, ha), flat(h, h.focus[0], ha), pen(c::orange, 1.4));
+  w.segment(flat(h, p, ha), flat(h, h.focus[1], ha), pen(c::orange, 1.4));
+  const double diff = std::fabs(length(p - h.focus[0]) - length(p - h.focus[1]));
+  label(w, ha + Vec2d{-2.5, -4.2}, "||PF| - |PF'|| = " + fmt(diff) + " = 2a", c::black);
+  // Parabola: find the angle near pi/6 whose sine rounds to exactly 1/2.
+  double angle = std::asin(0.5);
+  for (int k = 0; k < 8 && std::sin(angle) != 0.5; ++k)
+    angle = std::nextafter(angle, std::sin(angle) < 0.5 ? 1.0 : 0.0);
+  if (std::sin(angle) != 0.5) return false;
+  const auto q = intersection(Plane3<double>{{1, 0, 1}, 1.0},
+                              Cone3<double>{{0, 0, 0}, {1, 1, 0}, angle, -inf, inf});
+  if (q.type != ConicType::parabola) return false;
+  const Vec2d qa{1.0, -9.0};
+  std::vector<Vec2d> pts;
+  for (int k = 0; k <= 60; ++k) pts.push_back(flat(q, point_at(q, -3.0 + 6.0 * k / 60), qa));
+  w.polyline(pts, pen(c::red, 2.2));
+  const double f = q.extent[0];  // focal length
+  w.segment(qa + Vec2d{-f, -3.2}, qa + Vec2d{-f, 3.2}, pen(c::blue, 1.6));
+  label(w, qa + Vec2d{-f, 3.2}, "directrix", c::blue);
+  const Vec3d pp = point_at(q, 1.8);
+  const Vec2d p2 = flat(q, pp, qa);
+  point(w, flat(q, q.focus[0], qa), "F", c::red);
+  point(w, p2, "P", c::black);
+  w.segment(p2, flat(q, q.focus[0], qa), pen(c::orange, 1.4));
+  w.segment(p2, Vec2d{qa.x - f, p2.y}, pen(c::orange, 1.4));
+  const double to_focus = length(pp - q.focus[0]);
+  const double to_line = dot(pp - q.center, q.axis[0]) + f;
+  label(w, qa + Vec2d{-1.5, -4.2}, "|PF| = " + fmt(to_focus) + " = distance to directrix",
+        c::black);
+  return std::fabs(diff - 2 * h.extent[0]) < 1e-9 && std::fabs(to_focus - to_line) < 1e-9;
+}
+
+// ---- Hermite interpolation of the plane-surface curves (11.54-11.57) --------------------------
+
+/// The dome cut by the plane of 11.53 with a coarse grid (4 cells: long Hermite segments).
+bool dome_hermite(std::vector<HermiteSurfaceCurve<double>>& out, Plane3<double>& pl) {
+  pl = {{0.1, 0.05, 1}, 0.75};
+  SurfaceCurveOptions opt;
+  opt.grid = 4;
+  const SurfaceCurves<double> r = intersection(pl, dome(), opt);
+  if (r.status != Status::ok || r.curves.empty()) return false;
+  for (const auto& cv : r.curves) {
+    out.push_back(hermite_curve(pl, dome(), cv));
+    if (out.back().status != Status::ok) return false;
+  }
+  return true;
+}
+
+// 11.54: the cubic Hermite basis functions.
+bool fig_11_54(SvgWriter& w) {
+  w.set_view({-0.12, -0.32}, {1.25, 1.12});
+  w.arrow(Vec2d{0, 0}, Vec2d{1.12, 0}, pen(c::gray, 1));
+  w.arrow(Vec2d{0, -0.25}, Vec2d{0, 1.08}, pen(c::gray, 1));
+  label(w, Vec2d{1.12, 0}, "t", c::gray);
+  const char* cols[4] = {c::blue, c::red, c::green, c::orange};
+  const char* names[4] = {"h0", "h1", "h2", "h3"};
+  const double at[4] = {0.2, 0.8, 0.25, 0.75};
+  for (std::size_t k = 0; k < 4; ++k) {
+    std::vector<Vec2d> pts;
+    for (int i = 0; i <= 80; ++i) {
+      const double t = i / 80.0;
+      pts.push_back({t, hermite_basis(t)[k]});
+    }
+    w.polyline(pts, pen(cols[k], 2.2));
+    label(w, Vec2d{at[k], hermite_basis(at[k])[k]}, names[k], cols[k]);
+  }
+  label(w, Vec2d{1.0, 0}, "1", c::gray, -4, -16);
+  label(w, Vec2d{0, 1.0}, "1", c::gray, -14, -4);
+  const auto b0 = hermite_basis(0.0), b1 = hermite_basis(1.0);
+  return b0[0] == 1 && b1[1] == 1 && b0[1] == 0 && b1[0] == 0;
+}
+
+/// The index of the longest Hermite segment of a curve.
+std::size_t longest_segment(const HermiteSurfaceCurve<double>& h) {
+  std::size_t best = 0;
+  double len = -1;
+  for (std::size_t i = 0; i < segment_count(h); ++i) {
+    const double l = length(h.points[(i + 1) % h.points.size()] - h.points[i]);
+    if (l > len) {
+      len = l;
+      best = i;
+    }
+  }
+  return best;
+}
+
+// 11.55: one Hermite segment of the traced curve, seen face-on in the plane: end points P0, P1,
+// end derivatives L T0, L T1 (drawn at a third), the cubic against the chord and the true curve.
+bool fig_11_55(SvgWriter& w) {
+  std::vector<HermiteSurfaceCurve<double>> hs;
+  Plane3<double> pl{};
+  if (!dome_hermite(hs, pl)) return false;
+  const HermiteSurfaceCurve<double>& h = hs[0];
+  const std::size_t i = longest_segment(h), j = (i + 1) % h.points.size();
+  const Vec3d p0 = h.points[i], p1 = h.points[j];
+  const double len = length(p1 - p0);
+  const Vec3d mid = 0.5 * (p0 + p1);
+  w.set_camera(camera(mid + 10.0 * normalize(pl.normal), mid));
+  // The true curve on this stretch: a fine trace.
+  SurfaceCurveOptions fine;
+  fine.grid = 64;
+  for (const auto& cv : intersection(pl, dome(), fine).curves) {
+    std::vector<Vec3d> near;
+    for (const auto& x : cv.points)
+      if (length(x - mid) < 0.9 * len) near.push_back(x);
+    if (near.size() > 1) w.polyline(near, pen(c::light, 5));
+  }
+  std::vector<Vec3d> cubic;
+  for (int k = 0; k <= 40; ++k) cubic.push_back(point_at(h, i, k / 40.0).point);
+  w.segment(p0, p1, dashed(c::gray, 1.2));
+  w.polyline(cubic, pen(c::red, 2.2));
+  w.arrow(p0, p0 + (len / 3) * h.tangents[i], pen(c::blue, 1.8));
+  w.arrow(p1, p1 + (len / 3) * h.tangents[j], pen(c::blue, 1.8));
+  point(w, p0, "P0", c::black);
+  point(w, p1, "P1", c::black);
+  label(w, p0 + (len / 3) * h.tangents[i], "L T0 / 3", c::blue);
+  label(w, p1 + (len / 3) * h.tangents[j], "L T1 / 3", c::blue);
+  label(w, cubic[20], "R(t)", c::red, 6, 10);
+  return std::fabs(length(h.tangents[i]) - 1) < 1e-12;
+}
+
+// 11.56: a subpatch (grid cell) of parameter space, drawn flat beside the patch, and its image on
+// the patch; the curve's crossings of the cell boundary and its Hermite segment inside.
+bool fig_11_56(SvgWriter& w) {
+  std::vector<HermiteSurfaceCurve<double>> hs;
+  Plane3<double> pl{};
+  if (!dome_hermite(hs, pl)) return false;
+  const HermiteSurfaceCurve<double>& h = hs[0];
+  const std::size_t i = longest_segment(h), j = (i + 1) % h.points.size();
+  const HermiteCurvePoint<double> m = point_at(h, i, 0.5);
+  const double u0 = std::floor(m.param.x * 4) / 4, v0 = std::floor(m.param.y * 4) / 4;
+  w.set_camera(camera({4, -9, 7}, {1.2, 0, 0}));
+  const BezierPatch<double, 3> p = dome();
+  wireframe(w, p, 0, 1, 0, 1, c::light, 4);
+  // Parameter space: the unit square at x in [2.5, 5.5], z = -1.
+  const auto flat = [](const Vec2d& uv) { return Vec3d{2.5 + 3 * uv.x, -1.5 + 3 * uv.y, -1}; };
+  closed(w, std::vector<Vec3d>{flat({0, 0}), flat({1, 0}), flat({1, 1}), flat({0, 1})},
+         pen(c::gray, 1));
+  for (int k = 1; k < 4; ++k) {
+    w.segment(flat({k / 4.0, 0}), flat({k / 4.0, 1}), pen(c::light, 0.6));
+    w.segment(flat({0, k / 4.0}), flat({1, k / 4.0}), pen(c::light, 0.6));
+  }
+  label(w, flat({0, 0}), "(u, v) space", c::gray, -10, -18);
+  const std::array<Vec2d, 4> cell = {Vec2d{u0, v0}, Vec2d{u0 + 0.25, v0},
+                                     Vec2d{u0 + 0.25, v0 + 0.25}, Vec2d{u0, v0 + 0.25}};
+  std::vector<Vec3d> flat_cell, image;
+  for (std::size_t e = 0; e < 4; ++e) {
+    flat_cell.push_back(flat(cell[e]));
+    for (int k = 0; k < 10; ++k) {
+      const Vec2d uv = cell[e] + (k / 10.0) * (cell[(e + 1) % 4] - cell[e]);
+      image.push_back(point_at(p, uv.x, uv.y));
+    }
+  }
+  closed(w, flat_cell, filled(c::blue, 0.3));
+  closed(w, image, filled(c::blue, 0.3));
+  w.arrow(flat(cell[2]), point_at(p, cell[2].x, cell[2].y), dashed(c::blue, 1));
+  std::vector<Vec3d> seg3, seg2;
+  for (int k = 0; k <= 30; ++k) {
+    const HermiteCurvePoint<double> q = point_at(h, i, k / 30.0);
+    seg3.push_back(q.point);
+    seg2.push_back(flat(q.param));
+  }
+  w.polyline(seg3, pen(c::red, 2.4));
+  w.polyline(seg2, pen(c::red, 2.4));
+  for (const std::size_t k : {i, j}) {
+    point(w, h.points[k], "", c::red);
+    point(w, flat(h.params[k]), "", c::red);
+  }
+  label(w, seg2.back(), "p(t)", c::red);
+  label(w, seg3.back(), "R(t)", c::red);
+  // The segment's ends lie on the cell's boundary.
+  const auto on_cell = [&](const Vec2d& uv) {
+    return uv.x >= u0 - 1e-12 && uv.x <= u0 + 0.25 + 1e-12 && uv.y >= v0 - 1e-12 &&
+           uv.y <= v0 + 0.25 + 1e-12;
+  };
+  return on_cell(h.params[i]) && on_cell(h.params[j]);
+}
+
+// 11.57: the 3-space intersection curve R(t): the traced points, their tangents and the
+// piecewise Hermite curve through them (a coarse grid, so the points are sparse).
+bool fig_11_57(SvgWriter& w) {
+  std::vector<HermiteSurfaceCurve<double>> hs;
+  Plane3<double> pl{};
+  if (!dome_hermite(hs, pl)) return false;
+  w.set_camera(camera({5, -7, 6}, {0, 0, 0.6}));
+  wireframe(w, dome(), 0, 1, 0, 1, c::gray, 8);
+  plane_patch(w, pl, {0, 0, 0.75}, 1.2, c::blue);
+  double worst = 0;
+  for (const auto& h : hs) {
+    std::vector<Vec3d> pts;
+    for (std::size_t i = 0; i < segment_count(h); ++i)
+      for (int k = 0; k < 12; ++k) {
+        const HermiteCurvePoint<double> q = point_at(h, i, k / 12.0);
+        pts.push_back(q.point);
+        worst = std::max(
+            worst, std::fabs(dot(normalize(pl.normal), q.point) - pl.constant / length(pl.normal)));
+      }
+    if (!h.closed) pts.push_back(h.points.back());
+    w.polyline(pts, pen(c::red, 2.4), h.closed);
+    for (std::size_t i = 0; i < h.points.size(); ++i) {
+      point(w, h.points[i], "", c::black);
+      w.arrow(h.points[i], h.points[i] + 0.35 * h.tangents[i], pen(c::green, 1.2));
+    }
+  }
+  label(w, hs[0].points[0], "R(t)", c::red, 8, 12);
+  return worst < 1e-12;
+}
+
 }  // namespace
 
 std::vector<Figure> chapter11_intersection_figures() {
   return {
       {"11.1", "intersection(Line3, Plane3)", fig_11_1},
       {"11.2", "intersection(Ray3, Triangle3), watertight_hit", fig_11_2},
+      {"11.3", "intersection(Ray3, PlanarPolygon3), intersection(Ray3, Plane3)", fig_11_3},
+      {"11.4", "intersection(Line3 / Segment3, Disk3) (point, empty, chord)", fig_11_4},
+      {"11.5", "intersection(Ray3, ConvexPolyhedron3) (octahedron faces)", fig_11_5},
+      {"11.6", "Bvh::all_hits (segment as ray with tmax = 1) on an icosphere", fig_11_6},
+      {"11.7", "intersection(Line3, ConvexPolyhedron3) per face: half-lines", fig_11_7},
+      {"11.8", "intersection(Line3, ConvexPolyhedron3): empty common part", fig_11_8},
       {"11.9", "intersection(Ray3, Sphere3) (two, tangent, none, from inside)", fig_11_9},
       {"11.10", "intersection(Line3, Ellipsoid3)", fig_11_10},
       {"11.11", "intersection(Ray3, Cylinder3) (side and cap)", fig_11_11},
@@ -1118,6 +1973,7 @@ std::vector<Figure> chapter11_intersection_figures() {
       {"11.16", "intersection(Line3, Cone3) (double cone: four hits)", fig_11_16},
       {"11.17", "intersection(Line3, Quadric3) (c2 = 0: one point, or on the surface)", fig_11_17},
       {"11.18", "intersection(Ray3, NurbsSurface) (hits and normals)", fig_11_18},
+      {"11.19", "intersection(Ray3, BezierPatch) vs Bvh::all_hits of its tessellation", fig_11_19},
       {"11.20", "perpendicular_basis: the ray as two planes", fig_11_20},
       {"11.21", "to_bezier, subdivide_u/v, intersects(Ray3, AlignedBox3): leaf boxes", fig_11_21},
       {"11.22", "to_bezier, subdivide_u/v: the coarser level of the hierarchy", fig_11_22},
@@ -1126,32 +1982,51 @@ std::vector<Figure> chapter11_intersection_figures() {
       {"11.25", "intersection(Triangle3, Plane3)", fig_11_25},
       {"11.26", "intersection(Triangle3, Plane3) (every configuration)", fig_11_26},
       {"11.27", "intersection(Triangle3, Triangle3)", fig_11_27},
+      {"11.28", "intersection(Triangle3, Plane3) intervals, intersection(Triangle3, Triangle3)",
+       fig_11_28},
       {"11.29", "slice_mesh(vertices, triangles, Plane3)", fig_11_29},
+      {"11.30", "intersection(polygon, Plane3) (U-shaped polygon: two pieces)", fig_11_30},
+      {"11.31", "intersection(polygon, Triangle3)", fig_11_31},
       {"11.32", "intersection(Plane3, Sphere3) (circle)", fig_11_32},
       {"11.33", "intersection(Plane3, Sphere3) (circle, point, empty)", fig_11_33},
       {"11.34", "intersection(Plane3, Cylinder3) (ellipse)", fig_11_34},
       {"11.35", "intersection(Plane3, Cylinder3) (circle, two lines, one line, empty)", fig_11_35},
+      {"11.36", "intersection(Plane3, Cylinder3) edge-on: a = r / cos", fig_11_36},
       {"11.37", "PlaneConic3 ellipse: center, axes, extents", fig_11_37},
+      {"11.38", "intersection(Plane3, Sphere3): circle center, normal, axes, radius", fig_11_38},
+      {"11.39", "intersection(Plane3, Cylinder3) foci: Dandelin spheres checked on the axis",
+       fig_11_39},
+      {"11.40", "intersection(Plane3, Cylinder3) foci: Dandelin spheres, cross section", fig_11_40},
       {"11.41", "intersection(Plane3, Cylinder3) (circle: normal along the axis)", fig_11_41},
       {"11.42", "intersection(Plane3, Cone3)", fig_11_42},
       {"11.43", "intersection(Plane3, Cone3) (ellipse, hyperbolas)", fig_11_43},
+      {"11.44", "intersection(Plane3, Cone3): meets the nappe or not", fig_11_44},
+      {"11.45", "intersection(Plane3, Cone3) edge-on: major axis on two generators", fig_11_45},
+      {"11.46", "intersection(Line3, Cone3): A.(X - V) = |X - V| cos(alpha)", fig_11_46},
+      {"11.47", "intersection(Plane3, Cone3): hyperbola and exact parabola foci", fig_11_47},
       {"11.48", "intersection(Plane3, Cone3) (near-parabolic, type decided exactly)", fig_11_48},
       {"11.49", "intersection(Plane3, Cone3) (circle)", fig_11_49},
       {"11.50", "intersection(Plane3, Cone3) (ellipse)", fig_11_50},
       {"11.51", "intersection(Plane3, Cone3) (hyperbola)", fig_11_51},
       {"11.52", "intersection(Plane3, Cone3) (through the vertex: two lines)", fig_11_52},
       {"11.53", "intersection(Plane3, BezierPatch) (traced curves)", fig_11_53},
+      {"11.54", "hermite_basis", fig_11_54},
+      {"11.55", "hermite_curve, point_at(HermiteSurfaceCurve): one segment", fig_11_55},
+      {"11.56", "hermite_curve: a subpatch and its image, p(t) and R(t)", fig_11_56},
+      {"11.57", "hermite_curve: tangents and the Hermite curve R(t)", fig_11_57},
       {"11.58", "intersection(Plane3, BezierPatch): curves in parameter space", fig_11_58},
       {"11.59", "intersection(BSplineSurface, BSplineSurface)", fig_11_59},
       {"11.60", "intersection(BSplineSurface, BSplineSurface): param_a curves", fig_11_60},
       {"11.61", "intersection(Line3, AlignedBox3)", fig_11_61},
       {"11.62", "side_of_plane(AlignedBox3, Plane3) (slab planes)", fig_11_62},
+      {"11.63", "intersection(Line3, ConvexPolyhedron3) (one slab)", fig_11_63},
       {"11.64", "intersection(Ray3, AlignedBox3) (slab clipping)", fig_11_64},
       {"11.65", "OrientedBox3, corners", fig_11_65},
       {"11.66", "intersection(Line3, OrientedBox3)", fig_11_66},
       {"11.67", "side_of_plane(AlignedBox3, Plane3)", fig_11_67},
       {"11.68", "side_of_plane(AlignedBox3, Plane3) (extreme corners)", fig_11_68},
       {"11.69", "side_of_plane(OrientedBox3, Plane3)", fig_11_69},
+      {"11.70", "corners(OrientedBox3), side_of_plane(OrientedBox3, Plane3)", fig_11_70},
       {"11.71", "intersection(AlignedBox3, AlignedBox3)", fig_11_71},
       {"11.72", "intersects(OrientedBox3, OrientedBox3) (separating axes)", fig_11_72},
       {"11.73", "intersects(AlignedBox3, Sphere3)", fig_11_73},

@@ -603,6 +603,80 @@ SurfaceCurves<double> plane_curves(const V& normal, double constant, const NS& s
   return r;
 }
 
+CurveTangents plane_curve_tangents(const V& normal, const NS& s, const std::vector<V>& points,
+                                   const std::vector<V2>& params, bool closed) {
+  CurveTangents r;
+  const std::size_t n = points.size();
+  if (n == 0 || params.size() != n) {
+    r.status = n == 0 ? Status::empty_input : Status::invalid_input;
+    return r;
+  }
+  if (!linear3::finite(normal)) {
+    r.status = Status::non_finite_input;
+    return r;
+  }
+  if (normal == V{}) {
+    r.status = Status::degenerate_input;
+    return r;
+  }
+  const Grid g = homogeneous_grid(s);
+  if (g.status != Status::ok) {
+    r.status = g.status;
+    return r;
+  }
+  const V nn = pow2_inv(max_abs(normal)) * normal;
+  // The span of a parameter: the last break <= x (clamped to the spans).
+  const auto span = [](const std::vector<double>& br, double x, double& local) {
+    const auto it = std::upper_bound(br.begin() + 1, br.end() - 1, x);
+    const std::size_t a = static_cast<std::size_t>(it - br.begin()) - 1;
+    local = std::clamp((x - br[a]) / (br[a + 1] - br[a]), 0.0, 1.0);
+    return a;
+  };
+  r.tangent.resize(n);
+  r.param_tangent.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    // The chord through the neighbours orients the tangent (and replaces it where it vanishes).
+    const std::size_t prev = i > 0 ? i - 1 : (closed ? n - 1 : 0);
+    const std::size_t next = i + 1 < n ? i + 1 : (closed ? 0 : n - 1);
+    const V chord = points[next] - points[prev];
+    const V2 pchord = params[next] - params[prev];
+    double lu = 0.0, lv = 0.0;
+    const std::size_t a = span(g.breaks_u, params[i].x, lu);
+    const std::size_t b = span(g.breaks_v, params[i].y, lv);
+    const SurfaceDerivatives<double, 3> d =
+        rational_partials(g.patches[a * z(g.count_v) + b], lu, lv);
+    // Global partials: the span maps [break_a, break_a+1] onto the local [0, 1].
+    const V su = d.du / (g.breaks_u[a + 1] - g.breaks_u[a]);
+    const V sv = d.dv / (g.breaks_v[b + 1] - g.breaks_v[b]);
+    // N x (S_u x S_v) = S_u (N.S_v) - S_v (N.S_u): the (u, v) velocity (N.S_v, -N.S_u).
+    V t = cross(nn, cross(su, sv));
+    V2 q{dot(nn, sv), -dot(nn, su)};
+    const double len = length(t);
+    const double scale = length(su) * length(sv);
+    if (!(len > 0x1p-30 * scale) || !std::isfinite(len)) {
+      const double cl = length(chord);
+      if (!(cl > 0.0)) {
+        t = V{};
+        q = V2{};
+      } else {
+        t = chord / cl;
+        q = pchord / cl;
+      }
+    } else {
+      t = t / len;
+      q = q / len;
+      if (dot(t, chord) < 0.0) {
+        t = -t;
+        q = -q;
+      }
+    }
+    r.tangent[i] = t;
+    r.param_tangent[i] = q;
+  }
+  r.status = Status::ok;
+  return r;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Surface against surface: seeds from subdivision, then predictor-corrector tracing.
 

@@ -6,7 +6,8 @@
 // independent algorithm); lines built through a chosen surface point (the hit is known); a NURBS
 // sphere against the analytic sphere (line_sphere.hpp). Every hit is checked by its residuals
 // (on the line, S(uv) = point). Plane and surface curves: every point on both arguments, and
-// the topology (closed loop / open branches) of cases with known answers. Degenerate, NaN,
+// the topology (closed loop / open branches) of cases with known answers; their Hermite form
+// (the O(h^4) rate against the step, tangents against central differences). Degenerate, NaN,
 // power-of-two scaling and translation.
 
 #include <locus/intersection/line_sphere.hpp>
@@ -16,8 +17,10 @@
 #include <locus/intersection/segment_surface.hpp>
 #include <locus/intersection/surface_surface.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "support/typed.hpp"
@@ -580,6 +583,199 @@ TYPED_TEST(SurfaceHits, BSplineSurfacesMeetInOpenBranches) {
       }
     }
   }
+}
+
+// ---- Hermite interpolation of the plane-surface curves (book section 11.7, 11.54-11.57) ----
+
+/// The largest Hermite errors over every segment of every curve: R(t) off the plane, R(t) off
+/// the surface (vertical: x = u, y = v), S(p(t)) off the plane, and the last two divided by the
+/// fourth power of the segment's length after subtracting the rounding `noise` (segments longer
+/// than 2^-8).
+struct HermiteErrors {
+  double on_plane = 0, r_off_surface = 0, p_off_plane = 0, r_scaled = 0, p_scaled = 0;
+  double r_sum = 0, h4_sum = 0;  // sums over the segments of the error and of h^4
+  std::size_t segments = 0;
+};
+template <class T>
+HermiteErrors hermite_errors(const BezierPatch<T, 3>& p, const Plane3<T>& pl, int grid,
+                             double noise) {
+  SurfaceCurveOptions opt;
+  opt.grid = grid;
+  const auto r = intersection(pl, p, opt);
+  HermiteErrors e;
+  EXPECT_EQ(r.status, Status::ok);
+  const Vec3<double> n = vec_cast<double>(pl.normal) / length(vec_cast<double>(pl.normal));
+  const double k = double(pl.constant) / length(vec_cast<double>(pl.normal));
+  for (const auto& c : r.curves) {
+    const HermiteSurfaceCurve<T> h = hermite_curve(pl, p, c);
+    EXPECT_EQ(h.status, Status::ok);
+    EXPECT_EQ(h.tangents.size(), c.points.size());
+    for (std::size_t i = 0; i < segment_count(h); ++i) {
+      const std::size_t j = (i + 1) % h.points.size();
+      const double len = double(length(h.points[j] - h.points[i]));
+      const double h4 = len > 0x1p-8 ? std::pow(len, 4.0) : INFINITY;
+      ++e.segments;
+      double seg_error = 0;
+      for (const T t : {T(0.25), T(0.5), T(0.75)}) {
+        const HermiteCurvePoint<T> q = point_at(h, i, t);
+        const Vec3<double> x = vec_cast<double>(q.point);
+        e.on_plane = std::max(e.on_plane, std::fabs(dot(n, x) - k));
+        const double off_surface = double(std::fabs(LD(x.z) - height(p, LD(x.x), LD(x.y))));
+        e.r_off_surface = std::max(e.r_off_surface, off_surface);
+        seg_error = std::max(seg_error, off_surface);
+        e.r_scaled = std::max(e.r_scaled, std::max(off_surface - noise, 0.0) / h4);
+        const Vec3<double> s = vec_cast<double>(point_at(p, q.param.x, q.param.y));
+        const double off_plane = std::fabs(dot(n, s) - k);
+        e.p_off_plane = std::max(e.p_off_plane, off_plane);
+        e.p_scaled = std::max(e.p_scaled, std::max(off_plane - noise, 0.0) / h4);
+      }
+      e.r_sum += seg_error;
+      e.h4_sum += std::pow(len, 4.0);
+    }
+  }
+  return e;
+}
+
+/// A gentle random height patch (|grad h| <= 0.9) and a plane through its centre tilted more
+/// steeply (slope 1.5 in a random direction): the curve has no critical point and bounded
+/// curvature, so the asymptotic rate shows from coarse grids on.
+template <class T>
+Plane3<T> gentle_cut(Rng& rng, BezierPatch<T, 3>& p) {
+  p = random_height_patch<T>(rng, T(0.15));
+  const double phi = rng.uniform(0.0, 2 * std::numbers::pi);
+  const Vec3<T> n{T(1.5 * std::cos(phi)), T(1.5 * std::sin(phi)), T(1)};
+  return {n, dot(n, point_at(p, T(0.5), T(0.5)))};
+}
+
+TYPED_TEST(SurfaceHits, HermiteCurvesConvergeAsTheFourthPowerOfTheStep) {
+  using T = TypeParam;
+  Rng rng;
+  for (int trial = 0; trial < 2; ++trial) {
+    BezierPatch<T, 3> p;
+    const Plane3<T> pl = gentle_cut(rng, p);
+    std::vector<HermiteErrors> e;
+    for (const int g : {8, 16, 32}) e.push_back(hermite_errors(p, pl, g, pick<T>(4e-6, 0.0)));
+    for (std::size_t i = 0; i < e.size(); ++i) {
+      ASSERT_GT(e[i].segments, 0u) << rng.trace();
+      // R(t) combines points of the plane with tangents in it: on the plane up to rounding.
+      EXPECT_LE(e[i].on_plane, pick<T>(2e-6, 1e-14)) << rng.trace();
+      // Every segment: error <= C h^4 with one C for every step (here about 0.01-0.6).
+      EXPECT_LE(e[i].r_scaled, 1.0) << rng.trace() << " grid " << i;
+      EXPECT_LE(e[i].p_scaled, 1.0) << rng.trace() << " grid " << i;
+    }
+    if (std::is_same_v<T, double> && trial == 0) {
+      // The rate on nested point sets: every 12th, 6th and 3rd point of a fine trace, so each
+      // segment splits in two at the next level. Halving the step divides the summed error by
+      // about 8 for O(h^4) (twice the segments, each 16 times better), by 4 for O(h^3).
+      SurfaceCurveOptions opt;
+      opt.grid = 96;
+      const auto fine = intersection(pl, p, opt);
+      ASSERT_EQ(fine.status, Status::ok);
+      double sums[3] = {0, 0, 0};
+      for (const auto& c : fine.curves) {
+        const std::size_t last = (c.points.size() - 1) / 12 * 12;
+        for (std::size_t level = 0; level < 3; ++level) {
+          const std::size_t m = std::size_t(12) >> level;
+          SurfaceCurve<T> sub;
+          for (std::size_t k = 0; k <= last; k += m) {
+            sub.points.push_back(c.points[k]);
+            sub.param_b.push_back(c.param_b[k]);
+          }
+          const HermiteSurfaceCurve<T> h = hermite_curve(pl, p, sub);
+          ASSERT_EQ(h.status, Status::ok);
+          for (std::size_t i = 0; i < segment_count(h); ++i)
+            for (const T t : {T(0.25), T(0.5), T(0.75)}) {
+              const Vec3<T> x = point_at(h, i, t).point;
+              sums[level] += double(std::fabs(LD(x.z) - height(p, LD(x.x), LD(x.y))));
+            }
+        }
+      }
+      EXPECT_LT(sums[1], 0.18 * sums[0]) << rng.trace();
+      EXPECT_LT(sums[2], 0.18 * sums[1]) << rng.trace();
+    }
+  }
+}
+
+TYPED_TEST(SurfaceHits, HermiteTangentsAgreeWithFiniteDifferences) {
+  using T = TypeParam;
+  Rng rng;
+  BezierPatch<T, 3> p;
+  const Plane3<T> pl = gentle_cut(rng, p);
+  const Vec3<T> n = pl.normal;
+  SurfaceCurveOptions opt;
+  opt.grid = 32;
+  const auto r = intersection(pl, p, opt);
+  ASSERT_EQ(r.status, Status::ok);
+  ASSERT_FALSE(r.curves.empty());
+  // S(p + d q) - S(p - d q) over 2d is the 3D velocity for the (u, v) velocity q: the unit T.
+  const double d = pick<T>(1e-2, 1e-5), tol = pick<T>(2e-3, 1e-8);
+  for (const auto& c : r.curves) {
+    const HermiteSurfaceCurve<T> h = hermite_curve(pl, p, c);
+    ASSERT_EQ(h.status, Status::ok);
+    for (std::size_t i = 0; i < h.points.size(); ++i) {
+      const Vec3<double> t = vec_cast<double>(h.tangents[i]);
+      EXPECT_NEAR(length(t), 1.0, tol);
+      EXPECT_NEAR(dot(t, vec_cast<double>(n)), 0.0, tol);
+      const Vec2<double> uv = vec_cast<double>(h.params[i]),
+                         q = vec_cast<double>(h.param_tangents[i]);
+      const Vec2<double> a = uv + d * q, b = uv - d * q;
+      if (std::min({a.x, a.y, b.x, b.y}) < 0 || std::max({a.x, a.y, b.x, b.y}) > 1) continue;
+      const Vec3<double> fd = (vec_cast<double>(point_at(p, T(a.x), T(a.y))) -
+                               vec_cast<double>(point_at(p, T(b.x), T(b.y)))) /
+                              (2 * d);
+      EXPECT_LE(max_abs(fd - t), 10 * tol) << rng.trace() << " point " << i;
+      // Along the traced points: the central chord points the same way (step 1/32).
+      if (i > 0 && i + 1 < h.points.size()) {
+        const Vec3<double> chord = vec_cast<double>(h.points[i + 1] - h.points[i - 1]);
+        if (length(chord) > 1e-3) {
+          EXPECT_GT(dot(t, chord / length(chord)), 0.99) << i;
+        }
+      }
+    }
+  }
+}
+
+TYPED_TEST(SurfaceHits, HermiteLoopOnTheBowlAndBadInput) {
+  using T = TypeParam;
+  const Plane3<T> pl{{0, 0, 1}, T(0.5)};
+  const auto r = intersection(pl, bowl<T>());
+  ASSERT_EQ(r.curves.size(), 1u);
+  const HermiteSurfaceCurve<T> h = hermite_curve(pl, bowl<T>(), r.curves[0]);
+  ASSERT_EQ(h.status, Status::ok);
+  ASSERT_TRUE(h.closed);
+  EXPECT_EQ(segment_count(h), h.points.size());  // the last segment closes the loop
+  // The circle x^2 + y^2 = 1/2 at z = 1/2: R(t) within O(h^4) of it, far below the chord sag.
+  double worst = 0, sag = 0;
+  for (std::size_t i = 0; i < segment_count(h); ++i) {
+    const Vec3<double> x = vec_cast<double>(point_at(h, i, T(0.5)).point);
+    EXPECT_NEAR(x.z, 0.5, pick<T>(1e-6, 1e-14));
+    worst = std::max(worst, std::fabs(std::sqrt(x.x * x.x + x.y * x.y) - std::sqrt(0.5)));
+    const std::size_t j = (i + 1) % h.points.size();
+    const Vec3<double> mid = vec_cast<double>(h.points[i] + h.points[j]) / 2.0;
+    sag = std::max(sag, std::sqrt(0.5) - std::sqrt(mid.x * mid.x + mid.y * mid.y));
+  }
+  EXPECT_LT(worst, std::max(sag / 100, pick<T>(2e-6, 0.0))) << worst << " " << sag;
+  // The basis: a partition of unity with the right end values and slopes.
+  const auto b0 = hermite_basis(T(0)), b1 = hermite_basis(T(1)), bm = hermite_basis(T(0.5));
+  EXPECT_EQ(b0[0], T(1));
+  EXPECT_EQ(b1[1], T(1));
+  EXPECT_EQ(b0[2] + b1[2] + b0[3] + b1[3], T(0));
+  EXPECT_EQ(bm[0] + bm[1], T(1));
+  EXPECT_EQ(bm[2], T(0.125));
+  EXPECT_EQ(bm[3], T(-0.125));
+  // Bad input: no points, a zero or NaN normal.
+  EXPECT_EQ(hermite_curve(pl, bowl<T>(), SurfaceCurve<T>{}).status, Status::empty_input);
+  EXPECT_EQ(hermite_curve(Plane3<T>{{0, 0, 0}, T(1)}, bowl<T>(), r.curves[0]).status,
+            Status::degenerate_input);
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  EXPECT_EQ(hermite_curve(Plane3<T>{{nan, 0, 1}, T(1)}, bowl<T>(), r.curves[0]).status,
+            Status::non_finite_input);
+  // B-spline and NURBS forms of the same bowl give the same tangents.
+  BSplineSurface<T, 3> bs{2, 2, 3, 3, bowl<T>().control, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}};
+  const HermiteSurfaceCurve<T> hb = hermite_curve(pl, bs, r.curves[0]);
+  ASSERT_EQ(hb.status, Status::ok);
+  for (std::size_t i = 0; i < h.points.size(); ++i)
+    EXPECT_LE(max_abs(vec_cast<double>(hb.tangents[i] - h.tangents[i])), pick<T>(1e-6, 1e-14));
 }
 
 }  // namespace

@@ -123,6 +123,17 @@ template <class T>
 [[nodiscard]] SurfaceCurves<double> surface_curves(const NS& a, const NS& b,
                                                    const SurfaceCurveOptions& opt);
 
+/// Unit tangents of a plane-surface curve at its points (3D and per unit arc length in (u, v)).
+struct CurveTangents {
+  Status status = Status::empty_input;
+  std::vector<V> tangent;
+  std::vector<Vec2<double>> param_tangent;
+};
+[[nodiscard]] CurveTangents plane_curve_tangents(const V& normal, const NS& s,
+                                                 const std::vector<V>& points,
+                                                 const std::vector<Vec2<double>>& params,
+                                                 bool closed);
+
 template <Real T>
 [[nodiscard]] LinearSurfaceHits<T> cast(const LinearSurfaceHits<double>& r) {
   LinearSurfaceHits<T> o;
