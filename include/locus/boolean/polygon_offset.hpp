@@ -16,12 +16,12 @@
 //   miter: the offset edges extended to meet, when the miter point is at most miter_limit |delta|
 //     from the corner (miter_limit >= 1, default 2); beyond it the square join.
 //   square: cut perpendicular to the corner's bisector at distance |delta| from the corner.
-// End types (open paths): butt (flat at the end points), square (extended by |delta|), round
-// (half disc). Construction: the union of the region (deflate: the difference) with a band on
-// the offset side of every edge and a join piece at every convex corner, resolved by boolean_op
-// under the positive fill rule (derivation: docs/notes/polygon_offset.md). Output is therefore
-// valid as boolean output is (outer CCW, holes CW, simple, snap rounded: vertices within
-// grid/sqrt(2) of the exact pieces, whose vertices are rounded in double).
+// End types (open paths): round (half disc), square (extended by |delta|), butt (flat at the
+// end points: where a segment shorter than |delta| meets a turn, GEOS's curve tracing differs).
+// Construction: the region united with (deflate: minus) a band of width |delta| on the offset
+// side of every edge (paths: both sides) and a join piece at every convex corner, by boolean_op
+// under the positive fill rule (derivation: docs/notes/polygon_offset.md). Output is valid as
+// boolean output is (outer CCW, holes CW, simple; vertices within grid/sqrt(2) of the pieces).
 // Degenerate: delta 0 returns the resolved region (empty for a polyline); empty input or a
 // region that vanishes returns no polygons, status ok; zero-length edges, repeated points and
 // collinear runs are dropped; a single-point path gives a disc (round), a square (square cap)
