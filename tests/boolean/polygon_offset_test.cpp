@@ -128,9 +128,18 @@ int check_round(const MultiPolygon2<T>& region, const Segs& segs, T delta, doubl
   EXPECT_EQ(locus_test::polygon_validity(res.polygons), "");
   const double slack = 4 * res.grid + 1e-12;
   const double d = std::abs(double(delta));
+  // Uniform samples, then samples around the input vertices at distances near |delta|, where
+  // the chords of the round joins are.
+  std::vector<Vec2<T>> pts;
+  for (int i = 0; i < samples; ++i)
+    pts.push_back({rng.uniform<T>(T(-extent), T(extent)), rng.uniform<T>(T(-extent), T(extent))});
+  for (const auto& s : segs)
+    for (int i = 0; i < 6; ++i) {
+      const double r = d + tol * rng.uniform(-3.0, 1.0), a = rng.uniform(0.0, 2 * std::numbers::pi);
+      pts.push_back({T(double(s[0]) + r * std::cos(a)), T(double(s[1]) + r * std::sin(a))});
+    }
   int decided = 0;
-  for (int i = 0; i < samples; ++i) {
-    const Vec2<T> p{rng.uniform<T>(T(-extent), T(extent)), rng.uniform<T>(T(-extent), T(extent))};
+  for (const Vec2<T>& p : pts) {
     const bool in_region = inside(region, p);
     const double dist = double(distance(segs, p));
     int expect = -1;  // undecided within the tolerance band
