@@ -45,20 +45,30 @@ struct Builder {
   }
 
   /// The star polygon v, fan[0], fan[1], ...: kept only where every fan triangle turns
-  /// counter-clockwise (exact), so the piece is simple and counter-clockwise.
+  /// counter-clockwise (exact), so the piece is simple and counter-clockwise. Returns the kept
+  /// fan (without v; empty when the piece covers nothing).
+  std::vector<V> keep_fan(V v, const std::vector<V>& fan) {
+    std::vector<V> kept;
+    for (const V& q : fan) {
+      while (!kept.empty() && !positive(v, kept.back(), q)) kept.pop_back();
+      kept.push_back(q);
+    }
+    if (kept.size() < 2) kept.clear();
+    return kept;
+  }
   void add_fan(V v, const std::vector<V>& fan) {
+    const std::vector<V> kept = keep_fan(v, fan);
+    if (kept.empty()) return;
     Polygon2d p;
     p.vertices.push_back(v);
-    for (const V& q : fan) {
-      while (p.vertices.size() >= 2 && !positive(v, p.vertices.back(), q)) p.vertices.pop_back();
-      p.vertices.push_back(q);
-    }
-    if (p.vertices.size() >= 3) pieces.push_back(std::move(p));
+    p.vertices.insert(p.vertices.end(), kept.begin(), kept.end());
+    pieces.push_back(std::move(p));
   }
 
   /// The join at corner v between offset directions a1 and a2 (unit), a2 counter-clockwise from
   /// a1 by an angle in (0, pi].
-  void add_join(V v, V a1, V a2) {
+  void add_join(V v, V a1, V a2) { add_fan(v, join_fan(v, a1, a2)); }
+  std::vector<V> join_fan(V v, V a1, V a2) {
     const V p1 = along(v, a1, d), p2 = along(v, a2, d);
     const double c = a1.x * a2.x + a1.y * a2.y;
     std::vector<V> fan{p1};
@@ -82,43 +92,82 @@ struct Builder {
       fan.push_back(along(p2, right_normal(a2), t));
     }
     fan.push_back(p2);
-    add_fan(v, fan);
+    return fan;
   }
 
-  /// The band of width d on one side of edge ab (side +1 left, -1 right), counter-clockwise.
-  void add_band(V a, V b, V u, int side) {
+  /// The far side (oa, ob) of the band of width d on one side of edge ab (side +1 left, -1
+  /// right); false when the band is not a strictly convex quadrilateral (thinner than rounding).
+  bool band(V a, V b, int side, V& oa, V& ob) {
+    const V u = unit(a, b);
     const V n = side > 0 ? left_normal(u) : right_normal(u);
-    Polygon2d p;
-    if (side > 0)
-      p.vertices = {a, b, along(b, n, d), along(a, n, d)};
-    else
-      p.vertices = {a, along(a, n, d), along(b, n, d), b};
-    const auto& q = p.vertices;
-    for (std::size_t i = 0; i < 4; ++i)
-      if (!positive(q[i], q[(i + 1) % 4], q[(i + 2) % 4])) return;  // thinner than rounding
-    pieces.push_back(std::move(p));
+    oa = along(a, n, d);
+    ob = along(b, n, d);
+    const V q[4] = {a, b, ob, oa};  // counter-clockwise for the left band, reversed for the right
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Sign o = orient2d(q[i], q[(i + 1) % 4], q[(i + 2) % 4]);
+      if (o != (side > 0 ? Sign::positive : Sign::negative)) return false;
+    }
+    return true;
   }
 
-  /// Bands on one side of a chain of distinct consecutive points, and joins where that side is
-  /// convex (a spike counts as convex on both sides).
-  void add_side(const std::vector<V>& pts, bool closed, int side) {
+  /// The raw offset contour of a closed chain of distinct consecutive points, on one side
+  /// (-1: right, the outside of a counter-clockwise ring; +1: left). As a 1-chain it is the ring
+  /// plus (right side; left side: minus) the boundaries of its bands and convex-corner join
+  /// pieces, so its winding number is the ring's plus (minus) the number of pieces covering a
+  /// point (docs/notes/polygon_offset.md). Spike vertices listed in `ends` get the end join
+  /// (nullptr: none, a butt end) instead of the join type.
+  void add_contour(const std::vector<V>& pts, int side, const std::vector<bool>* ends = nullptr,
+                   const JoinType* end_join = nullptr) {
     const std::size_t n = pts.size();
-    const std::size_t edges = closed ? n : n - 1;
-    for (std::size_t i = 0; i < edges; ++i) {
-      const V a = pts[i], b = pts[(i + 1) % n];
-      add_band(a, b, unit(a, b), side);
-    }
-    for (std::size_t i = closed ? 0 : 1; i < (closed ? n : n - 1); ++i) {
-      const V prev = pts[(i + n - 1) % n], v = pts[i], next = pts[(i + 1) % n];
-      const int turn = to_int(orient2d(prev, v, next));
-      const V u1 = unit(prev, v), u2 = unit(v, next);
+    std::vector<V> c;
+    // Appends q, cancelling a step straight back (x, y, x becomes x).
+    const auto push = [&c](V q) {
+      if (!c.empty() && c.back() == q) return;
+      if (c.size() >= 2 && c[c.size() - 2] == q) {
+        c.pop_back();
+        return;
+      }
+      c.push_back(q);
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      const V a = pts[i], b = pts[(i + 1) % n], next = pts[(i + 2) % n];
+      V oa, ob;
+      push(a);
+      if (band(a, b, side, oa, ob)) {
+        push(oa);
+        push(ob);
+      }
+      push(b);
+      const int turn = to_int(orient2d(a, b, next));
+      const V u1 = unit(a, b), u2 = unit(b, next);
       const bool spike = turn == 0 && u1.x * u2.x + u1.y * u2.y < 0;
       if (turn * side > 0 && !spike) continue;  // concave on this side: the bands overlap
-      if (side < 0)
-        add_join(v, right_normal(u1), right_normal(u2));
-      else
-        add_join(v, left_normal(u2), left_normal(u1));
+      const JoinType saved = join;
+      if (ends != nullptr && (*ends)[(i + 1) % n]) {
+        if (end_join == nullptr) continue;
+        join = *end_join;
+      }
+      std::vector<V> fan = side < 0 ? keep_fan(b, join_fan(b, right_normal(u1), right_normal(u2)))
+                                    : keep_fan(b, join_fan(b, left_normal(u2), left_normal(u1)));
+      join = saved;
+      if (side > 0) std::reverse(fan.begin(), fan.end());
+      for (const V& q : fan) push(q);
+      push(b);
     }
+    // The seam: the contour closes from its last point to its first.
+    while (c.size() >= 3) {
+      if (c.back() == c.front()) {
+        c.pop_back();
+      } else if (c[c.size() - 2] == c.front()) {
+        c.pop_back();
+        c.pop_back();
+      } else if (c.back() == c[1]) {
+        c.erase(c.begin());
+      } else {
+        break;
+      }
+    }
+    if (c.size() >= 3) pieces.push_back({std::move(c)});
   }
 
   /// The caps of an open chain (or the whole shape of a single point).
@@ -266,12 +315,12 @@ OffsetResult<T> offset(const MultiPolygon2<T>& region, T delta, const OffsetOpti
     rings.push_back(std::move(p.outer));
     for (auto& h : p.holes) rings.push_back(std::move(h));
   }
-  if (delta != 0) {
-    // Inflate: bands outside (right of each edge); deflate: inside (left).
-    const int side = delta > 0 ? -1 : 1;
-    for (const auto& r : rings) b.add_side(r.vertices, true, side);
-  }
-  return finish<T>(delta < 0 ? BooleanOp::difference : BooleanOp::union_, rings, b, bits);
+  if (delta == 0) return finish<T>(BooleanOp::union_, rings, b, bits);
+  // Inflate: contours outside (right of each edge, interior on the left); deflate: inside.
+  for (const auto& r : rings) b.add_contour(r.vertices, delta > 0 ? -1 : 1);
+  std::vector<Polygon2d> contours = std::move(b.pieces);
+  b.pieces.clear();
+  return finish<T>(BooleanOp::union_, contours, b, bits);
 }
 
 template <Real T>
@@ -297,10 +346,24 @@ OffsetResult<T> offset_polylines(std::span<const Polyline<T, 2>> paths, T delta,
     bool closed = path.closed;
     if (closed && pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
     if (pts.empty()) continue;
-    if (pts.size() == 1) closed = false;
-    b.add_side(pts, closed, 1);
-    b.add_side(pts, closed, -1);
-    if (!closed) b.add_caps(pts, options.end);
+    if (pts.size() == 1) {
+      b.add_caps(pts, options.end);
+      continue;
+    }
+    // A closed path: its right side, then its left (the right side of the reversed loop). An
+    // open one: the loop out and back, whose two spikes are the ends.
+    std::vector<V> back(pts.rbegin(), pts.rend());
+    if (closed) {
+      b.add_contour(pts, -1);
+      b.add_contour(back, -1);
+      continue;
+    }
+    std::vector<V> loop = pts;
+    loop.insert(loop.end(), back.begin() + 1, back.end() - 1);
+    std::vector<bool> ends(loop.size(), false);
+    ends[0] = ends[pts.size() - 1] = true;
+    const JoinType cap = options.end == EndType::round ? JoinType::round : JoinType::square;
+    b.add_contour(loop, -1, &ends, options.end == EndType::butt ? nullptr : &cap);
   }
   const int bits =
       options.grid_bits != 0 ? options.grid_bits : (std::is_same_v<T, float> ? 24 : 40);
