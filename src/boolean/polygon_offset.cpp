@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
-// Polygon offsetting by bands and join pieces resolved with the boolean engine
-// (include/locus/boolean/polygon_offset.hpp, docs/notes/polygon_offset.md). Every piece is built
-// in double (exact for float input) and checked to be a counter-clockwise star around its
-// corner by exact orient2d, so that under the positive fill rule no piece can subtract area.
+// Polygon offsetting by raw offset contours resolved with the boolean engine
+// (include/locus/boolean/polygon_offset.hpp, docs/notes/polygon_offset.md). Every contour point
+// is built in double (exact for float input); each band and join piece is checked to be
+// counter-clockwise by exact orient2d before it enters a contour, so that under the positive
+// fill rule the contour's winding is the region's plus the number of pieces covering a point.
 
 #include <locus/boolean/polygon_offset.hpp>
 #include <locus/core/predicates.hpp>

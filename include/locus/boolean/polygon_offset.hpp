@@ -18,17 +18,18 @@
 //   square: cut perpendicular to the corner's bisector at distance |delta| from the corner.
 // End types (open paths): round (half disc), square (extended by |delta|), butt (flat at the
 // end points: where a segment shorter than |delta| meets a turn, GEOS's curve tracing differs).
-// Construction: the region united with (deflate: minus) a band of width |delta| on the offset
-// side of every edge (paths: both sides) and a join piece at every convex corner, by boolean_op
-// under the positive fill rule (derivation: docs/notes/polygon_offset.md). Output is valid as
-// boolean output is (outer CCW, holes CW, simple; vertices within grid/sqrt(2) of the pieces).
+// Result: the region united with (deflate: minus) a band of width |delta| on the offset side of
+// every edge (paths: both sides) and a join piece at every convex corner, computed as one raw
+// offset contour per ring resolved by boolean_op under the positive fill rule (derivation:
+// docs/notes/polygon_offset.md). Output is valid as boolean output is (outer CCW, holes CW).
 // Degenerate: delta 0 returns the resolved region (empty for a polyline); empty input or a
 // region that vanishes returns no polygons, status ok; zero-length edges, repeated points and
 // collinear runs are dropped; a single-point path gives a disc (round), a square (square cap)
 // or nothing (butt). Status: non_finite_input (NaN/Inf coordinate or delta, or an offset
 // coordinate overflows), invalid_input (miter_limit < 1 or NaN, arc_tolerance < 0 or NaN,
-// grid_bits outside the boolean's range). Cost: O(n m) pieces for n vertices and m chords per
-// round join (m <= ceil(pi / acos(1 - tol/|delta|))), then one boolean (two for a region).
+// grid_bits outside the boolean's range). Cost: a contour of O(n m) edges for n vertices and m
+// chords per round join (m <= ceil(pi / acos(1 - tol/|delta|))), then one boolean (two for a
+// region); slow where |delta| spans many short concave edges (see the notes).
 
 #include <locus/boolean/polygon_boolean.hpp>
 #include <locus/primitives/polyline.hpp>
