@@ -431,6 +431,25 @@ def boolean(
     fill_rule: str = "even_odd",
     grid_bits: int = 0,
 ) -> BooleanResult: ...
+# Polygon offsetting (boolean/polygon_offset.hpp)
+def offset(
+    region: _Points | list[_Points] | list[list[_Points]],
+    delta: float,
+    join: str = "round",
+    miter_limit: float = 2.0,
+    arc_tolerance: float = 0.0,
+    grid_bits: int = 0,
+) -> BooleanResult: ...
+def offset_polyline(
+    paths: _Points | list[_Points],
+    delta: float,
+    join: str = "round",
+    end: str = "round",
+    closed: bool = False,
+    miter_limit: float = 2.0,
+    arc_tolerance: float = 0.0,
+    grid_bits: int = 0,
+) -> BooleanResult: ...
 class MeshBooleanResult(Result):
     vertices: _Floats
     triangles: _Indices

@@ -15,6 +15,7 @@ void bind_construction(py::module_& m);        // construction.cpp
 void bind_partition(py::module_& m);           // partition.cpp
 void bind_curve_intersection(py::module_& m);  // curve_intersection.cpp
 void bind_boolean(py::module_& m);             // boolean.cpp
+void bind_offset(py::module_& m);              // offset.cpp
 void bind_bsp3(py::module_& m);                // bsp3.cpp
 
 namespace {
@@ -111,7 +112,8 @@ for _name, _doc in [
     ("BspBoolean", "bsp_boolean: edges (k, 2, 2), operand, loops, closed, segments, points."),
     ("CurveHits", "line_curve_hits / curve_intersections: kind, points (k, 2), param_a, "
                   "param_b, multiplicity."),
-    ("BooleanResult", "boolean: polygons (lists of rings: outer CCW, holes CW), grid."),
+    ("BooleanResult", "boolean, offset, offset_polyline: polygons (lists of rings: outer CCW, "
+                      "holes CW), grid."),
     ("MeshBooleanResult", "mesh_boolean: vertices (m, 3), triangles (t, 3)."),
 ]:
     _make(_name, _doc)
@@ -266,5 +268,6 @@ PYBIND11_MODULE(locus, m) {
   bind_partition(m);
   bind_curve_intersection(m);
   bind_boolean(m);
+  bind_offset(m);
   bind_bsp3(m);
 }

@@ -25,5 +25,6 @@ void register_partition(CLI::App& app);      // partition (cmd_partition.cpp)
 void register_bsp(CLI::App& app);            // bsp classify|boolean (cmd_bsp.cpp)
 void register_curvehit(CLI::App& app);       // curvehit (cmd_curvehit.cpp)
 void register_boolean(CLI::App& app);        // boolean (cmd_boolean.cpp)
+void register_offset(CLI::App& app);         // offset (cmd_offset.cpp)
 
 }  // namespace locus_cli

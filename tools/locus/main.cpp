@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   locus_cli::register_bsp(app);
   locus_cli::register_curvehit(app);
   locus_cli::register_boolean(app);
+  locus_cli::register_offset(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
