@@ -366,6 +366,15 @@ class PatchCurves(Result):
     uv: list[_Floats]
     closed: npt.NDArray[np.bool_]
 
+class PatchHermite(Result):
+    points: list[_Floats]
+    uv: list[_Floats]
+    tangents: list[_Floats]
+    uv_tangents: list[_Floats]
+    closed: npt.NDArray[np.bool_]
+    curve_points: list[_Floats]
+    curve_uv: list[_Floats]
+
 def ray_surface_hits(
     origins: _Points,
     directions: _Points,
@@ -383,6 +392,16 @@ def plane_surface_curves(
     weights: npt.ArrayLike | None = None,
     grid: int = 16,
 ) -> PatchCurves: ...
+def plane_surface_hermite(
+    normal: npt.ArrayLike,
+    constant: float,
+    control: npt.ArrayLike,
+    knots_u: npt.ArrayLike | None = None,
+    knots_v: npt.ArrayLike | None = None,
+    weights: npt.ArrayLike | None = None,
+    grid: int = 16,
+    t: npt.ArrayLike | None = None,
+) -> PatchHermite: ...
 
 # Convex partition and the BSP tree of a polygon (triangulate/convex_partition.hpp, bsp/bsp2.hpp,
 # bsp/bsp2_boolean.hpp)
