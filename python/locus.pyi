@@ -289,6 +289,14 @@ def circle_circle(
 def segment_circle(
     segments: npt.ArrayLike, centers: npt.ArrayLike, radii: npt.ArrayLike
 ) -> CurveIntersections: ...
+def ellipse_ellipse(
+    c0: npt.ArrayLike,
+    angle0: npt.ArrayLike,
+    e0: npt.ArrayLike,
+    c1: npt.ArrayLike,
+    angle1: npt.ArrayLike,
+    e1: npt.ArrayLike,
+) -> CurveIntersections: ...
 def convex_polygons_intersect(a: npt.ArrayLike, b: npt.ArrayLike) -> bool: ...
 def convex_polygon_intersection(a: npt.ArrayLike, b: npt.ArrayLike) -> ConvexIntersection: ...
 def first_contact(
