@@ -289,6 +289,13 @@ def circle_circle(
 def segment_circle(
     segments: npt.ArrayLike, centers: npt.ArrayLike, radii: npt.ArrayLike
 ) -> CurveIntersections: ...
+def circle_ellipse(
+    centers: npt.ArrayLike,
+    radii: npt.ArrayLike,
+    c1: npt.ArrayLike,
+    angle1: npt.ArrayLike,
+    e1: npt.ArrayLike,
+) -> CurveIntersections: ...
 def ellipse_ellipse(
     c0: npt.ArrayLike,
     angle0: npt.ArrayLike,

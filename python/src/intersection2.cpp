@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSL-1.0
 // 2D curve intersections over arrays: circle_circle (intersection/circle_circle.hpp: the count
-// decided exactly, points constructed), segment_circle, ellipse_ellipse (intersection/
-// ellipse_ellipse.hpp: the quartic of book section 7.5.2, up to 4 points). Inputs are converted to
-// float64 (read in place when they already are C-contiguous float64); NaN, infinite or negative
-// radii raise ValueError.
+// decided exactly, points constructed), segment_circle, circle_ellipse and ellipse_ellipse
+// (intersection/ circle_ellipse.hpp, ellipse_ellipse.hpp: the quartic of book section 7.5.2, up to
+// 4 points). Inputs are converted to float64 (read in place when they already are C-contiguous
+// float64); NaN, infinite or negative radii raise ValueError.
 #include "common.hpp"
 
 #include <locus/intersection/circle_circle.hpp>
+#include <locus/intersection/circle_ellipse.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/segment_circle.hpp>
 
@@ -172,6 +173,38 @@ near-tangencies closer than about sqrt(eps) merge into one tangency. CurveInters
 (0 empty, 1 point, 2 points, 11 coincident), count (0..4), points ((n, 4, 2), by increasing
 angle on the first ellipse, NaN where unused), multiplicity ((n, 4): 1 crossing, 2 tangency, 0
 unused).)doc");
+
+  m.def(
+      "circle_ellipse",
+      [](py::handle centers, py::handle radii, py::handle c1, py::handle angle1,
+         py::handle e1) -> py::object {
+        const char* fn = "circle_ellipse";
+        const auto pc0 = f64(centers, fn, "centers", 2, 2), pr = f64(radii, fn, "radii", 1, 0);
+        const auto pc1 = f64(c1, fn, "c1", 2, 2), pa1 = f64(angle1, fn, "angle1", 1, 0);
+        const auto pe1 = f64(e1, fn, "e1", 2, 2);
+        const py::ssize_t n = pc0.shape(0);
+        if (pr.shape(0) != n || pc1.shape(0) != n || pa1.shape(0) != n || pe1.shape(0) != n)
+          fail(fn, "centers, radii, c1, angle1, e1 must have the same length n");
+        for (py::ssize_t i = 0; i < n; ++i)
+          if (pr.data()[i] < 0)
+            fail(fn, "invalid_input: negative radius at entry " + std::to_string(i));
+        for (py::ssize_t i = 0; i < 2 * n; ++i)
+          if (pe1.data()[i] <= 0)
+            fail(fn, "invalid_input: non-positive extent at entry " + std::to_string(i / 2));
+        return curve_results<4>(static_cast<std::size_t>(n), [&](std::size_t i) {
+          const Vec2<double> u{std::cos(pa1.data()[i]), std::sin(pa1.data()[i])};
+          const double* c = pc1.data() + 2 * i;
+          const double* e = pe1.data() + 2 * i;
+          return intersection(
+              Circle2<double>{{pc0.data()[2 * i], pc0.data()[2 * i + 1]}, pr.data()[i]},
+              Ellipse2<double>{{c[0], c[1]}, {u, {-u.y, u.x}}, {e[0], e[1]}});
+        });
+      },
+      py::arg("centers"), py::arg("radii"), py::arg("c1"), py::arg("angle1"), py::arg("e1"),
+      R"doc(Common points of n circles (centers (n, 2), radii (n,) >= 0) and ellipses (c1 (n, 2),
+angle1 (n,) of the first axis, half-axes e1 (n, 2) > 0), as ellipse_ellipse
+(intersection/circle_ellipse.hpp): CurveIntersections with points (n, 4, 2) by increasing angle
+on the circle, multiplicity (n, 4) (1 crossing, 2 tangency), kind, count.)doc");
 }
 
 }  // namespace locus::python

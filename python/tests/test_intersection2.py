@@ -209,3 +209,32 @@ def test_ellipse_ellipse_known_cases():
         locus.ellipse_ellipse(z, [0.0], [[2, 0]], z, [0.0], [[1, 1]])
     with pytest.raises(ValueError, match="non_finite"):
         locus.ellipse_ellipse(z, [np.nan], [[2, 1]], z, [0.0], [[1, 1]])
+
+
+def test_circle_ellipse_against_sampling(rng):
+    n = 200
+    c0, c1 = rng.uniform(-1, 1, (n, 2)), rng.uniform(-1, 1, (n, 2))
+    r0, a1, e1 = rng.uniform(0.3, 2, n), rng.uniform(0, np.pi, n), rng.uniform(0.3, 2, (n, 2))
+    r = locus.circle_ellipse(c0, r0, c1, a1, e1)
+    checked, counts = 0, set()
+    for i in range(n):
+        k = int(r.count[i])
+        assert np.all(np.isnan(r.points[i, k:]))
+        for p in r.points[i, :k]:
+            assert abs(np.linalg.norm(p - c0[i]) / r0[i] - 1) < 1e-9
+            assert abs(ellipse_residual(p, c1[i], a1[i], e1[i])) < 1e-9
+        expected = sampled_crossings(c0[i], 0.0, (r0[i], r0[i]), c1[i], a1[i], e1[i])
+        if expected is None:
+            continue
+        checked += 1
+        counts.add(expected)
+        assert k == expected and np.all(r.multiplicity[i, :k] == 1), (i, k, expected)
+    assert checked >= 150 and {0, 2, 4} <= counts
+    # a circle of radius 1 inside the 2:1 ellipse touches it at (0, +-1); radius 0 is a point
+    z = np.zeros((2, 2))
+    t = locus.circle_ellipse(z, [1.0, 0.0], [[0, 0], [2, 0]], [0.0, 0.0], [[2, 1], [2, 1]])
+    assert t.count[0] == 2 and np.all(t.multiplicity[0, :2] == 2)
+    assert np.allclose(np.sort(t.points[0, :2, 1]), [-1, 1], atol=1e-7)
+    assert t.count[1] == 1 and np.allclose(t.points[1, 0], [0, 0])
+    with pytest.raises(ValueError, match="radius"):
+        locus.circle_ellipse(z[:1], [-1.0], z[:1], [0.0], [[1, 1]])
