@@ -264,6 +264,16 @@ def cone(radius: float = 1.0, height: float = 2.0, slices: int = 16) -> _Mesh: .
 def read_mesh(path: str, format: str = "") -> _Mesh: ...
 def write_mesh(path: str, vertices: _Points, faces: npt.ArrayLike, format: str = "") -> None: ...
 def read_points(path: str, dimension: int = 0, format: str = "") -> _Floats: ...
+
+# WKT and GeoJSON geometries (io/wkt.hpp, io/geojson.hpp)
+class Geometry(Result):
+    type: str
+    points: _Floats
+    lines: list[_Floats]
+    polygons: list[list[_Floats]]
+
+def read_wkt(text: str, orient: bool = False) -> list[Geometry]: ...
+def read_geojson(text: str, orient: bool = False) -> list[Geometry]: ...
 def triangles_intersect(a: npt.ArrayLike, b: npt.ArrayLike) -> npt.NDArray[np.bool_]: ...
 def ray_triangle_hits(
     origins: _Points,
@@ -278,6 +288,21 @@ def circle_circle(
 ) -> CurveIntersections: ...
 def segment_circle(
     segments: npt.ArrayLike, centers: npt.ArrayLike, radii: npt.ArrayLike
+) -> CurveIntersections: ...
+def circle_ellipse(
+    centers: npt.ArrayLike,
+    radii: npt.ArrayLike,
+    c1: npt.ArrayLike,
+    angle1: npt.ArrayLike,
+    e1: npt.ArrayLike,
+) -> CurveIntersections: ...
+def ellipse_ellipse(
+    c0: npt.ArrayLike,
+    angle0: npt.ArrayLike,
+    e0: npt.ArrayLike,
+    c1: npt.ArrayLike,
+    angle1: npt.ArrayLike,
+    e1: npt.ArrayLike,
 ) -> CurveIntersections: ...
 def convex_polygons_intersect(a: npt.ArrayLike, b: npt.ArrayLike) -> bool: ...
 def convex_polygon_intersection(a: npt.ArrayLike, b: npt.ArrayLike) -> ConvexIntersection: ...
@@ -366,6 +391,15 @@ class PatchCurves(Result):
     uv: list[_Floats]
     closed: npt.NDArray[np.bool_]
 
+class PatchHermite(Result):
+    points: list[_Floats]
+    uv: list[_Floats]
+    tangents: list[_Floats]
+    uv_tangents: list[_Floats]
+    closed: npt.NDArray[np.bool_]
+    curve_points: list[_Floats]
+    curve_uv: list[_Floats]
+
 def ray_surface_hits(
     origins: _Points,
     directions: _Points,
@@ -383,6 +417,16 @@ def plane_surface_curves(
     weights: npt.ArrayLike | None = None,
     grid: int = 16,
 ) -> PatchCurves: ...
+def plane_surface_hermite(
+    normal: npt.ArrayLike,
+    constant: float,
+    control: npt.ArrayLike,
+    knots_u: npt.ArrayLike | None = None,
+    knots_v: npt.ArrayLike | None = None,
+    weights: npt.ArrayLike | None = None,
+    grid: int = 16,
+    t: npt.ArrayLike | None = None,
+) -> PatchHermite: ...
 
 # Convex partition and the BSP tree of a polygon (triangulate/convex_partition.hpp, bsp/bsp2.hpp,
 # bsp/bsp2_boolean.hpp)

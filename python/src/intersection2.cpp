@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 // 2D curve intersections over arrays: circle_circle (intersection/circle_circle.hpp: the count
-// decided exactly, points constructed). Inputs are converted to float64 (read in place when they
-// already are C-contiguous float64); NaN, infinite or negative radii raise ValueError.
+// decided exactly, points constructed), segment_circle, circle_ellipse and ellipse_ellipse
+// (intersection/ circle_ellipse.hpp, ellipse_ellipse.hpp: the quartic of book section 7.5.2, up to
+// 4 points). Inputs are converted to float64 (read in place when they already are C-contiguous
+// float64); NaN, infinite or negative radii raise ValueError.
 #include "common.hpp"
 
 #include <locus/intersection/circle_circle.hpp>
+#include <locus/intersection/circle_ellipse.hpp>
+#include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/segment_circle.hpp>
 
 #include <limits>
@@ -32,13 +36,14 @@ py::array_t<double> f64(py::handle obj, const char* fn, const char* name, int nd
 
 /// CurveIntersections of n queries q(i) (an intersection() result with kind, count, point,
 /// multiplicity).
-template <class Q>
+template <std::size_t Cap = 2, class Q>
 py::object curve_results(std::size_t count_n, Q&& q) {
   const auto n = static_cast<py::ssize_t>(count_n);
+  const auto cap = static_cast<py::ssize_t>(Cap);
   py::array_t<std::uint8_t> kind(n);
   py::array_t<std::int8_t> count(n);
-  py::array_t<double> pts({n, py::ssize_t(2), py::ssize_t(2)});
-  py::array_t<std::int8_t> mult({n, py::ssize_t(2)});
+  py::array_t<double> pts({n, cap, py::ssize_t(2)});
+  py::array_t<std::int8_t> mult({n, cap});
   std::uint8_t* k = kind.mutable_data();
   std::int8_t* c = count.mutable_data();
   std::int8_t* mu = mult.mutable_data();
@@ -50,11 +55,11 @@ py::object curve_results(std::size_t count_n, Q&& q) {
       const auto r = q(i);
       k[i] = static_cast<std::uint8_t>(r.kind);
       c[i] = static_cast<std::int8_t>(r.count);
-      for (std::size_t j = 0; j < 2; ++j) {
+      for (std::size_t j = 0; j < Cap; ++j) {
         const bool has = static_cast<int>(j) < r.count;
-        p[4 * i + 2 * j] = has ? r.point[j].x : nan;
-        p[4 * i + 2 * j + 1] = has ? r.point[j].y : nan;
-        mu[2 * i + j] = static_cast<std::int8_t>(has ? r.multiplicity[j] : 0);
+        p[2 * Cap * i + 2 * j] = has ? r.point[j].x : nan;
+        p[2 * Cap * i + 2 * j + 1] = has ? r.point[j].y : nan;
+        mu[Cap * i + j] = static_cast<std::int8_t>(has ? r.multiplicity[j] : 0);
       }
     }
   }
@@ -130,6 +135,76 @@ count 0)), count (0..2), points ((n, 2, 2), NaN where unused), multiplicity ((n,
 The count is decided exactly (tangency included); points are constructed, by increasing
 parameter along the segment. CurveIntersections: kind (0 empty, 1 point, 2 points), count,
 points ((n, 2, 2), NaN where unused), multiplicity (1 crossing, 2 tangency).)doc");
+
+  m.def(
+      "ellipse_ellipse",
+      [](py::handle c0, py::handle angle0, py::handle e0, py::handle c1, py::handle angle1,
+         py::handle e1) -> py::object {
+        const char* fn = "ellipse_ellipse";
+        const auto pc0 = f64(c0, fn, "c0", 2, 2), pc1 = f64(c1, fn, "c1", 2, 2);
+        const auto pa0 = f64(angle0, fn, "angle0", 1, 0), pa1 = f64(angle1, fn, "angle1", 1, 0);
+        const auto pe0 = f64(e0, fn, "e0", 2, 2), pe1 = f64(e1, fn, "e1", 2, 2);
+        const py::ssize_t n = pc0.shape(0);
+        if (pc1.shape(0) != n || pa0.shape(0) != n || pa1.shape(0) != n || pe0.shape(0) != n ||
+            pe1.shape(0) != n)
+          fail(fn, "c0, angle0, e0, c1, angle1, e1 must have the same length n");
+        for (const auto* e : {&pe0, &pe1})
+          for (py::ssize_t i = 0; i < 2 * n; ++i)
+            if (e->data()[i] <= 0)
+              fail(fn, "invalid_input: non-positive extent at entry " + std::to_string(i / 2));
+        auto ellipse = [](const double* c, double angle, const double* e) {
+          const Vec2<double> u{std::cos(angle), std::sin(angle)};
+          return Ellipse2<double>{{c[0], c[1]}, {u, {-u.y, u.x}}, {e[0], e[1]}};
+        };
+        return curve_results<4>(static_cast<std::size_t>(n), [&](std::size_t i) {
+          return intersection(ellipse(pc0.data() + 2 * i, pa0.data()[i], pe0.data() + 2 * i),
+                              ellipse(pc1.data() + 2 * i, pa1.data()[i], pe1.data() + 2 * i));
+        });
+      },
+      py::arg("c0"), py::arg("angle0"), py::arg("e0"), py::arg("c1"), py::arg("angle1"),
+      py::arg("e1"),
+      R"doc(Common points of n pairs of ellipses: centres c0, c1 (n, 2), the angle (radians, (n,))
+of each ellipse's first axis from the x axis, half-axis lengths e0, e1 (n, 2) > 0 (along the
+first axis and the second, counter-clockwise from it).
+
+Book section 7.5.2 (intersection/ellipse_ellipse.hpp): a quartic in the half-angle parameter
+of the first ellipse; crossings away from tangency are counted as for the exact curves,
+near-tangencies closer than about sqrt(eps) merge into one tangency. CurveIntersections: kind
+(0 empty, 1 point, 2 points, 11 coincident), count (0..4), points ((n, 4, 2), by increasing
+angle on the first ellipse, NaN where unused), multiplicity ((n, 4): 1 crossing, 2 tangency, 0
+unused).)doc");
+
+  m.def(
+      "circle_ellipse",
+      [](py::handle centers, py::handle radii, py::handle c1, py::handle angle1,
+         py::handle e1) -> py::object {
+        const char* fn = "circle_ellipse";
+        const auto pc0 = f64(centers, fn, "centers", 2, 2), pr = f64(radii, fn, "radii", 1, 0);
+        const auto pc1 = f64(c1, fn, "c1", 2, 2), pa1 = f64(angle1, fn, "angle1", 1, 0);
+        const auto pe1 = f64(e1, fn, "e1", 2, 2);
+        const py::ssize_t n = pc0.shape(0);
+        if (pr.shape(0) != n || pc1.shape(0) != n || pa1.shape(0) != n || pe1.shape(0) != n)
+          fail(fn, "centers, radii, c1, angle1, e1 must have the same length n");
+        for (py::ssize_t i = 0; i < n; ++i)
+          if (pr.data()[i] < 0)
+            fail(fn, "invalid_input: negative radius at entry " + std::to_string(i));
+        for (py::ssize_t i = 0; i < 2 * n; ++i)
+          if (pe1.data()[i] <= 0)
+            fail(fn, "invalid_input: non-positive extent at entry " + std::to_string(i / 2));
+        return curve_results<4>(static_cast<std::size_t>(n), [&](std::size_t i) {
+          const Vec2<double> u{std::cos(pa1.data()[i]), std::sin(pa1.data()[i])};
+          const double* c = pc1.data() + 2 * i;
+          const double* e = pe1.data() + 2 * i;
+          return intersection(
+              Circle2<double>{{pc0.data()[2 * i], pc0.data()[2 * i + 1]}, pr.data()[i]},
+              Ellipse2<double>{{c[0], c[1]}, {u, {-u.y, u.x}}, {e[0], e[1]}});
+        });
+      },
+      py::arg("centers"), py::arg("radii"), py::arg("c1"), py::arg("angle1"), py::arg("e1"),
+      R"doc(Common points of n circles (centers (n, 2), radii (n,) >= 0) and ellipses (c1 (n, 2),
+angle1 (n,) of the first axis, half-axes e1 (n, 2) > 0), as ellipse_ellipse
+(intersection/circle_ellipse.hpp): CurveIntersections with points (n, 4, 2) by increasing angle
+on the circle, multiplicity (n, 4) (1 crossing, 2 tangency), kind, count.)doc");
 }
 
 }  // namespace locus::python

@@ -107,6 +107,9 @@ for _name, _doc in [
                     "multiplicity, on_surface."),
     ("PatchHits", "ray_surface_hits: ray, t, uv, points, normals, tangent, on_surface."),
     ("PatchCurves", "plane_surface_curves: points, uv, closed."),
+    ("Geometry", "read_wkt / read_geojson: type, points (n, 2), lines, polygons (lists of rings)."),
+    ("PatchHermite", "plane_surface_hermite: points, uv, tangents, uv_tangents, closed, "
+                     "curve_points, curve_uv."),
     ("CurveIntersections", "circle_circle / segment_circle: kind, count, points, multiplicity."),
     ("BspPartition", "bsp_partition: pieces (k, 2, 2), location, segment."),
     ("BspBoolean", "bsp_boolean: edges (k, 2, 2), operand, loops, closed, segments, points."),

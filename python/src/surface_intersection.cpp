@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // Rays and planes against parametric surfaces: ray_surface_hits (intersection/ray_surface.hpp:
 // every hit of each ray) and plane_surface_curves (intersection/plane_surface.hpp: the section
-// curves as polylines). A surface is a control net (rows, cols, 3): a Bézier patch, or with
+// curves as polylines; plane_surface_hermite: the same curves with tangents and their cubic
+// Hermite interpolants). A surface is a control net (rows, cols, 3): a Bézier patch, or with
 // knots_u / knots_v a B-spline surface (degrees from the knot counts), and with weights
 // (rows, cols) a NURBS surface. Inputs are converted to float64; NaN or infinite values raise
 // ValueError, as does an invalid surface.
@@ -176,6 +177,91 @@ knots and weights as in ray_surface_hits): a PatchCurves with points (list of (k
 uv (list of (k, 2) surface parameters) and closed (bool per curve: a loop, first point not
 repeated; else both ends on the domain boundary). grid: cells per Bézier span and direction
 (loops smaller than a cell can be missed).)doc");
+
+  m.def(
+      "plane_surface_hermite",
+      [](py::handle normal, double constant, py::handle control, py::handle knots_u,
+         py::handle knots_v, py::handle weights, int grid, py::handle t) -> py::object {
+        const char* fn = "plane_surface_hermite";
+        const auto nv = f64(normal, fn, "normal");
+        if (nv.size() != 3) fail(fn, "normal must have 3 entries");
+        if (!std::isfinite(constant)) fail(fn, "non_finite_input: constant is NaN or infinite");
+        if (grid < 1 || grid > 1024) fail(fn, "grid must be in [1, 1024]");
+        const NurbsSurface<double, 3> s = surface_of(fn, control, knots_u, knots_v, weights);
+        std::vector<double> ts;
+        if (!t.is_none()) {
+          const auto ta = f64(t, fn, "t");
+          if (ta.ndim() != 1) fail(fn, "t must be 1-D");
+          ts.assign(ta.data(), ta.data() + ta.size());
+          for (const double x : ts)
+            if (x < 0.0 || x > 1.0) fail(fn, "every t must lie in [0, 1]");
+        }
+        SurfaceCurveOptions opt;
+        opt.grid = grid;
+        const Plane3<double> plane{{nv.data()[0], nv.data()[1], nv.data()[2]}, constant};
+        SurfaceCurves<double> r;
+        std::vector<HermiteSurfaceCurve<double>> hs;
+        {
+          py::gil_scoped_release nogil;
+          r = intersection(plane, s, opt);
+          if (r.status == Status::ok)
+            for (const auto& c : r.curves) hs.push_back(hermite_curve(plane, s, c));
+        }
+        check_status(r.status, fn, false);
+        for (const auto& h : hs) check_status(h.status, fn, false);
+        auto rows = [](const auto& v, int dim) {
+          const auto len = static_cast<py::ssize_t>(v.size());
+          py::array_t<double> a({len, py::ssize_t(dim)});
+          for (py::ssize_t i = 0; i < len; ++i)
+            for (int e = 0; e < dim; ++e)
+              a.mutable_data()[dim * i + e] = v[static_cast<std::size_t>(i)][e];
+          return a;
+        };
+        py::list points, uv, tangents, uv_tangents, curve_points, curve_uv;
+        py::array_t<bool> closed(static_cast<py::ssize_t>(hs.size()));
+        const auto nt = static_cast<py::ssize_t>(ts.size());
+        for (std::size_t k = 0; k < hs.size(); ++k) {
+          const auto& h = hs[k];
+          points.append(rows(h.points, 3));
+          uv.append(rows(h.params, 2));
+          tangents.append(rows(h.tangents, 3));
+          uv_tangents.append(rows(h.param_tangents, 2));
+          closed.mutable_data()[k] = h.closed;
+          const std::size_t segs = segment_count(h);
+          const auto ns = static_cast<py::ssize_t>(segs);
+          py::array_t<double> cp({ns, nt, py::ssize_t(3)}), cq({ns, nt, py::ssize_t(2)});
+          double* pp = cp.mutable_data();
+          double* pq = cq.mutable_data();
+          for (std::size_t i = 0; i < segs; ++i)
+            for (std::size_t j = 0; j < ts.size(); ++j) {
+              const HermiteCurvePoint<double> q = point_at(h, i, ts[j]);
+              const std::size_t at = i * ts.size() + j;
+              for (int e = 0; e < 3; ++e) pp[3 * at + static_cast<std::size_t>(e)] = q.point[e];
+              for (int e = 0; e < 2; ++e) pq[2 * at + static_cast<std::size_t>(e)] = q.param[e];
+            }
+          curve_points.append(cp);
+          curve_uv.append(cq);
+        }
+        py::object out = new_result("PatchHermite", Status::ok);
+        out.attr("points") = points;
+        out.attr("uv") = uv;
+        out.attr("tangents") = tangents;
+        out.attr("uv_tangents") = uv_tangents;
+        out.attr("closed") = closed;
+        out.attr("curve_points") = curve_points;
+        out.attr("curve_uv") = curve_uv;
+        return out;
+      },
+      py::arg("normal"), py::arg("constant"), py::arg("control"), py::arg("knots_u") = py::none(),
+      py::arg("knots_v") = py::none(), py::arg("weights") = py::none(), py::arg("grid") = 16,
+      py::arg("t") = py::none(),
+      R"doc(The curves of plane_surface_curves (same arguments) in Hermite form (book section
+11.7): a PatchHermite with, per curve, points (k, 3), uv (k, 2), tangents (k, 3: unit, in the
+plane, along the point order), uv_tangents (k, 2: (u, v) velocity per unit arc length), closed,
+and with t (1-D values in [0, 1]) every cubic Hermite segment i (from point i to i + 1, the last
+one closing a loop) evaluated at every t: curve_points (segments, len(t), 3), the 3D
+interpolant R(t) (in the plane), and curve_uv (segments, len(t), 2), the parameter-space
+interpolant p(t) (S(p(t)) on the surface); empty when t is None.)doc");
 }
 
 }  // namespace locus::python

@@ -141,3 +141,100 @@ def test_segment_circle_exact(rng):
         locus.segment_circle(seg, np.zeros((4, 2)), -np.ones(4))
     with pytest.raises(ValueError, match="non_finite_input"):
         locus.segment_circle(seg, np.full((4, 2), np.inf), np.ones(4))
+
+
+def ellipse_residual(p, c, angle, e):
+    # (x/a)^2 + (y/b)^2 - 1 in the ellipse's frame, for points p (..., 2)
+    u = np.array([np.cos(angle), np.sin(angle)])
+    d = p - c
+    return (d @ u / e[0]) ** 2 + ((d @ np.array([-u[1], u[0]])) / e[1]) ** 2 - 1
+
+
+def sampled_crossings(c0, a0, e0, c1, a1, e1, samples=2048):
+    # the sign changes of the second ellipse's residual around the first ellipse, or None when
+    # the pair is near tangency (a dip of |residual| below 0.05 away from a crossing, or two
+    # crossings within 8 samples): those are not counted reliably by sampling
+    s = np.linspace(0, 2 * np.pi, samples, endpoint=False)
+    u = np.array([np.cos(a0), np.sin(a0)])
+    v = np.array([-u[1], u[0]])
+    pts = c0 + np.outer(e0[0] * np.cos(s), u) + np.outer(e0[1] * np.sin(s), v)
+    f = ellipse_residual(pts, c1, a1, e1)
+    cross = np.sign(f) != np.sign(np.roll(f, -1))
+    beside = cross | np.roll(cross, 1)
+    g = np.abs(f)
+    dip = (g <= np.roll(g, 1)) & (g <= np.roll(g, -1)) & (g < 0.05) & ~beside
+    at = np.flatnonzero(cross)
+    if np.any(dip) or (len(at) > 1 and np.min(np.diff(np.append(at, at[0] + samples))) < 8):
+        return None
+    return len(at)
+
+
+def test_ellipse_ellipse_points_lie_on_both_and_counts_match_sampling(rng):
+    n = 200
+    c0, c1 = rng.uniform(-1, 1, (n, 2)), rng.uniform(-1, 1, (n, 2))
+    a0, a1 = rng.uniform(0, np.pi, n), rng.uniform(0, np.pi, n)
+    e0, e1 = rng.uniform(0.3, 2, (n, 2)), rng.uniform(0.3, 2, (n, 2))
+    r = locus.ellipse_ellipse(c0, a0, e0, c1, a1, e1)
+    checked, counts = 0, set()
+    for i in range(n):
+        k = int(r.count[i])
+        assert np.all(np.isnan(r.points[i, k:])) and np.all(r.multiplicity[i, k:] == 0)
+        for p in r.points[i, :k]:
+            assert abs(ellipse_residual(p, c0[i], a0[i], e0[i])) < 1e-9
+            assert abs(ellipse_residual(p, c1[i], a1[i], e1[i])) < 1e-9
+        expected = sampled_crossings(c0[i], a0[i], e0[i], c1[i], a1[i], e1[i])
+        if expected is None:
+            continue
+        checked += 1
+        counts.add(expected)
+        assert k == expected, (i, k, expected)
+        assert np.all(r.multiplicity[i, :k] == 1)
+        assert r.kind[i] == (0 if k == 0 else 2)
+    assert checked >= 150 and {0, 2, 4} <= counts
+
+
+def test_ellipse_ellipse_known_cases():
+    z = np.zeros((1, 2))
+    # a 2:1 ellipse and its quarter turn: 4 crossings at (+-2/sqrt5, +-2/sqrt5)
+    r = locus.ellipse_ellipse(z, [0.0], [[2, 1]], z, [np.pi / 2], [[2, 1]])
+    assert r.count[0] == 4 and r.kind[0] == 2
+    assert np.allclose(np.abs(r.points[0]), 2 / np.sqrt(5), atol=1e-12)
+    # touching at (2, 0) from outside, and the same ellipse (coincident)
+    r = locus.ellipse_ellipse(np.zeros((2, 2)), [0.0, 0.3], [[2, 1], [2, 1]], [[4, 0], [0, 0]],
+                              [0.0, 0.3], [[2, 1], [2, 1]])
+    assert r.count[0] == 1 and r.multiplicity[0, 0] == 2 and r.kind[0] == 1
+    assert np.allclose(r.points[0, 0], [2, 0], atol=1e-7)
+    assert locus.KIND_NAMES[r.kind[1]] == "coincident" and r.count[1] == 0
+    with pytest.raises(ValueError, match="extent"):
+        locus.ellipse_ellipse(z, [0.0], [[2, 0]], z, [0.0], [[1, 1]])
+    with pytest.raises(ValueError, match="non_finite"):
+        locus.ellipse_ellipse(z, [np.nan], [[2, 1]], z, [0.0], [[1, 1]])
+
+
+def test_circle_ellipse_against_sampling(rng):
+    n = 200
+    c0, c1 = rng.uniform(-1, 1, (n, 2)), rng.uniform(-1, 1, (n, 2))
+    r0, a1, e1 = rng.uniform(0.3, 2, n), rng.uniform(0, np.pi, n), rng.uniform(0.3, 2, (n, 2))
+    r = locus.circle_ellipse(c0, r0, c1, a1, e1)
+    checked, counts = 0, set()
+    for i in range(n):
+        k = int(r.count[i])
+        assert np.all(np.isnan(r.points[i, k:]))
+        for p in r.points[i, :k]:
+            assert abs(np.linalg.norm(p - c0[i]) / r0[i] - 1) < 1e-9
+            assert abs(ellipse_residual(p, c1[i], a1[i], e1[i])) < 1e-9
+        expected = sampled_crossings(c0[i], 0.0, (r0[i], r0[i]), c1[i], a1[i], e1[i])
+        if expected is None:
+            continue
+        checked += 1
+        counts.add(expected)
+        assert k == expected and np.all(r.multiplicity[i, :k] == 1), (i, k, expected)
+    assert checked >= 150 and {0, 2, 4} <= counts
+    # a circle of radius 1 inside the 2:1 ellipse touches it at (0, +-1); radius 0 is a point
+    z = np.zeros((2, 2))
+    t = locus.circle_ellipse(z, [1.0, 0.0], [[0, 0], [2, 0]], [0.0, 0.0], [[2, 1], [2, 1]])
+    assert t.count[0] == 2 and np.all(t.multiplicity[0, :2] == 2)
+    assert np.allclose(np.sort(t.points[0, :2, 1]), [-1, 1], atol=1e-7)
+    assert t.count[1] == 1 and np.allclose(t.points[1, 0], [0, 0])
+    with pytest.raises(ValueError, match="radius"):
+        locus.circle_ellipse(z[:1], [-1.0], z[:1], [0.0], [[1, 1]])

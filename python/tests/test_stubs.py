@@ -43,7 +43,9 @@ def test_stub_class_fields_exist(rng):
                locus.segment_intersections(p2[:4].reshape(2, 2, 2), p2[4:8].reshape(2, 2, 2)),
                locus.triangulate_polygon(np.array([[0, 0], [1, 0], [0, 1.0]])),
                locus.constrained_delaunay(p2, [[0, 1]]),
-               locus.curve_intersections(p2[:4], p2[4:8])]
+               locus.curve_intersections(p2[:4], p2[4:8]),
+               locus.plane_surface_hermite([0, 0, 1], 0.5, rng.random((3, 3, 3)), t=[0.5]),
+               locus.read_wkt("POLYGON ((0 0, 1 0, 0 1, 0 0))")[0]]
     for r in samples:
         name = type(r).__name__
         assert set(vars(r)) == fields[name] | {"status"}, name
