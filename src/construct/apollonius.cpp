@@ -5,9 +5,13 @@
 // k_i = B(v_i, v_i). Derivation and the exact counting rule: docs/notes/construct.md.
 #include <locus/construct/apollonius.hpp>
 
+#include "../core/big_int.hpp"
 #include "exact.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
+#include <utility>
 
 namespace locus {
 
@@ -24,6 +28,85 @@ V3 cross3(const V3& a, const V3& b) noexcept {
 }
 V3 axpy(double s, const V3& a, const V3& b) noexcept {
   return {s * a.x + b.x, s * a.y + b.y, s * a.r + b.r};
+}
+
+/// How many points the three circles share (0, 1 or 2), exactly; 0 for concentric circles 0
+/// and 1 and 2 (those go to the rank-deficient branch). In Y = X - c0 with D_i = c_i - c0 and
+/// b_i = |D_i|^2 - r_i^2 + r0^2, a common point solves 2 D_i . Y = b_i and |Y|^2 = r0^2. Every
+/// value is an integer times 2^e_min on core's big integer: coordinates below 2^2099 at that
+/// scale, so the degree-6 expressions fit 13440 bits.
+int common_points(const V (&c)[3], const double (&r)[3]) noexcept {
+  using Big = detail::BigInt<420>;
+  int e = INT_MAX;
+  for (int i = 0; i < 3; ++i) {
+    for (const double x : {c[i].x, c[i].y, r[i]}) {
+      if (x != 0.0) e = std::min(e, detail::low_exponent(x));
+    }
+  }
+  if (e == INT_MAX) return 0;  // three point circles at the origin: concentric
+  const auto big = [e](double x) { return Big::from_double(x, -e); };
+  const Big x0 = big(c[0].x), y0 = big(c[0].y), r0 = big(r[0]);
+  Big dx[2], dy[2], b[2];
+  for (int i = 0; i < 2; ++i) {
+    dx[i] = big(c[i + 1].x) - x0;
+    dy[i] = big(c[i + 1].y) - y0;
+    const Big ri = big(r[i + 1]);
+    b[i] = dx[i] * dx[i] + dy[i] * dy[i] - ri * ri + r0 * r0;
+  }
+  const Big det = dx[0] * dy[1] - dy[0] * dx[1];
+  if (!det.is_zero()) {
+    // Y = (b0 dy1 - b1 dy0, dx0 b1 - dx1 b0) / (2 det) must lie on |Y| = r0.
+    const Big px = b[0] * dy[1] - b[1] * dy[0], py = dx[0] * b[1] - dx[1] * b[0];
+    const Big rhs = Big(4) * det * det * r0 * r0;
+    return px * px + py * py == rhs ? 1 : 0;
+  }
+  // Collinear centres: use a nonzero D_k; the other equation must be the same line
+  // (D_j = lambda D_k and b_j = lambda b_k), and the line 2 D_k . Y = b_k meets |Y| = r0 in
+  // 2, 1 or 0 points as 4 r0^2 |D_k|^2 - b_k^2 is positive, zero or negative.
+  const int k = !(dx[0].is_zero() && dy[0].is_zero()) ? 0 : 1, j = 1 - k;
+  const Big dd = dx[k] * dx[k] + dy[k] * dy[k];
+  if (dd.is_zero()) return 0;
+  if (b[j] * dd != b[k] * (dx[j] * dx[k] + dy[j] * dy[k])) return 0;
+  const int s = (Big(4) * r0 * r0 * dd - b[k] * b[k]).sign();
+  return s > 0 ? 2 : (s == 0 ? 1 : 0);
+}
+
+/// When the circles share z points, (P, 0) solves every pattern's equations, so each pattern
+/// has those z roots: keep them once, from the first pattern, with radius exactly 0 and signs
+/// +1; drop them from the later patterns. Within a pattern they are its z roots of least
+/// |radius| (exactly 0 before rounding).
+template <Real T>
+void merge_radius_zero_roots(Solutions<ApolloniusCircle<T>, 8>& circles,
+                             const int (&pattern_begin)[5], int npat, const V (&c)[3],
+                             const double (&r)[3]) noexcept {
+  const int z = common_points(c, r);
+  if (z == 0) return;
+  Solutions<ApolloniusCircle<T>, 8> kept;
+  kept.status = circles.status;
+  kept.infinite = circles.infinite;
+  const auto radius_of = [&](int i) {
+    return circles.item[static_cast<std::size_t>(i)].circle.radius;
+  };
+  for (int p = 0; p < npat; ++p) {
+    const int b = pattern_begin[p], n = pattern_begin[p + 1] - b;
+    int order[8];
+    for (int i = 0; i < n; ++i) order[i] = b + i;
+    for (int i = 1; i < n; ++i) {  // insertion sort by radius (n <= 8)
+      for (int k = i; k > 0 && radius_of(order[k]) < radius_of(order[k - 1]); --k) {
+        std::swap(order[k], order[k - 1]);
+      }
+    }
+    for (int i = 0; i < n; ++i) {
+      ApolloniusCircle<T> x = circles.item[static_cast<std::size_t>(order[i])];
+      if (i < z) {
+        if (p > 0) continue;
+        x.circle.radius = T(0);
+        x.s = {1, 1, 1};
+      }
+      kept.push(x);
+    }
+  }
+  circles = kept;
 }
 
 /// Pushes the circle of Z; a negative radius is the negated pattern's circle, except when every
@@ -71,7 +154,9 @@ ApolloniusSolutions<T> apollonius(const Circle2<T>& c0, const Circle2<T>& c1,
   for (int i = 0; i < 3; ++i)
     if (R[i] > 0) free_idx[nfree++] = i;
   const int npat = nfree == 0 ? 1 : 1 << (nfree - 1);
+  int pattern_begin[5] = {0, 0, 0, 0, 0};  // each pattern's first circle in out.circles
   for (int pat = 0; pat < npat; ++pat) {
+    pattern_begin[pat] = out.circles.count;
     int s[3] = {1, 1, 1};
     for (int f = 1; f < nfree; ++f)
       if (pat & (1 << (f - 1))) s[free_idx[f]] = -1;
@@ -145,6 +230,8 @@ ApolloniusSolutions<T> apollonius(const Circle2<T>& c0, const Circle2<T>& c1,
     if (k1.sign() != 0 && (g - k2).sign() != 0)
       push_circle(out, C[0], axpy(-qc / qb, q, zp), R[0], s, nfree == 0);
   }
+  pattern_begin[npat] = out.circles.count;
+  if (!out.circles.infinite) merge_radius_zero_roots(out.circles, pattern_begin, npat, C, R);
   return out;
 }
 

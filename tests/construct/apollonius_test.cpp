@@ -12,8 +12,10 @@
 
 #include <locus/construct/apollonius.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "construct/oracle.hpp"
 #include "support/typed.hpp"
@@ -212,6 +214,45 @@ TYPED_TEST(ConstructApollonius, DegenerateCases) {
   const auto neg = apollonius(Circle2<T>{{0, 1}, -2}, Circle2<T>{{1, 1}, 2}, Circle2<T>{{5, 0}, 1});
   EXPECT_EQ(neg.circles.status, Status::degenerate_input);
   EXPECT_EQ(neg.circles.count + neg.lines.count, 0);
+}
+
+// Three circles through one common point: (P, 0) solves every sign pattern; it is reported once,
+// with radius exactly 0, beside the circles of positive radius the oracle counts. Collinear
+// centres share two points (mirror images), each reported once. Scaled by 2^6, the same.
+TYPED_TEST(ConstructApollonius, CommonPointIsReportedOnce) {
+  using T = TypeParam;
+  const auto zero_radius = [](const ApolloniusSolutions<T>& s) {
+    std::vector<Vec2<T>> z;
+    for (int i = 0; i < s.circles.count; ++i) {
+      const auto& k = s.circles.item[static_cast<std::size_t>(i)];
+      if (k.circle.radius == T(0)) z.push_back(k.circle.center);
+    }
+    return z;
+  };
+  for (const int scale : {0, 6}) {
+    const T f = std::ldexp(T(1), scale);
+    // Through (3, 4): centres (0, 0), (6, 0), (3, 9), radius 5 each.
+    const Circle2<T> a{{0, 0}, 5 * f}, b{{6 * f, 0}, 5 * f}, c{{3 * f, 9 * f}, 5 * f};
+    const Circle2<T> in[3] = {a, b, c};
+    const auto s = apollonius(a, b, c);
+    ASSERT_EQ(s.circles.status, Status::ok);
+    const auto z = zero_radius(s);
+    ASSERT_EQ(z.size(), 1u) << "scale " << scale;
+    EXPECT_NEAR(double(z[0].x), 3.0 * f, 64 * eps<T>() * 9 * f);
+    EXPECT_NEAR(double(z[0].y), 4.0 * f, 64 * eps<T>() * 9 * f);
+    EXPECT_EQ(s.circles.count, oracle(in).circles + 1);
+    // Collinear centres (0, 0) r 5, (6, 0) r 5, (3, 0) r 4: both (3, 4) and (3, -4).
+    const auto t = apollonius(Circle2<T>{{0, 0}, 5 * f}, Circle2<T>{{6 * f, 0}, 5 * f},
+                              Circle2<T>{{3 * f, 0}, 4 * f});
+    auto zt = zero_radius(t);
+    ASSERT_EQ(zt.size(), 2u) << "scale " << scale;
+    std::sort(zt.begin(), zt.end(), [](const Vec2<T>& p, const Vec2<T>& q) { return p.y < q.y; });
+    EXPECT_NEAR(double(zt[0].y), -4.0 * f, 64 * eps<T>() * 9 * f);
+    EXPECT_NEAR(double(zt[1].y), 4.0 * f, 64 * eps<T>() * 9 * f);
+  }
+  // Moved off the common point by one ulp of the third radius: no radius-0 circle.
+  const Circle2<T> off{{3, 9}, std::nextafter(T(5), T(6))};
+  EXPECT_TRUE(zero_radius(apollonius(Circle2<T>{{0, 0}, 5}, Circle2<T>{{6, 0}, 5}, off)).empty());
 }
 
 }  // namespace

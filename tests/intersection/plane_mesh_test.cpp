@@ -362,4 +362,40 @@ TYPED_TEST(PlaneMesh, PolygonAgainstTriangleBruteForce) {
   }
 }
 
+// Two crossings 2^-100 apart along the line (a notch of the polygon between them): they round to
+// one point but are ordered exactly, so the outside gap between them is kept and the pieces stay
+// two (ordering by rounded keys merged them into one piece across the notch).
+TYPED_TEST(PlaneMesh, PolygonPiecesAcrossANotchBelowTheRounding) {
+  using T = double;  // the notch needs double coordinates
+  const double e = std::ldexp(1.0, -40), d = std::ldexp(1.0, -99);
+  const std::vector<Vec3<T>> notch = {{0, -1, 0}, {2, -1, 0}, {2, 0, 0}, {0, 2 * e, 0},
+                                      {2, d, 0},  {2, 3, 0},  {0, 3, 0}};
+  const auto r = intersection(std::span<const Vec3<T>>(notch), Plane3<T>{{1, 0, 0}, 1});
+  ASSERT_EQ(r.status, Status::ok);
+  ASSERT_EQ(r.segments.size(), 2u);
+  // Ordered along cross(plane normal, polygon normal) = -y (the polygon is counter-clockwise).
+  EXPECT_EQ(r.segments[0].p0, (Vec3<T>{1, 3, 0}));
+  EXPECT_EQ(r.segments[0].p1, (Vec3<T>{1, e, 0}));  // e + 2^-100, rounded
+  EXPECT_EQ(r.segments[1].p0, (Vec3<T>{1, e, 0}));
+  EXPECT_EQ(r.segments[1].p1, (Vec3<T>{1, -1, 0}));
+  // The same against a triangle in the plane x = 1 spanning y in [-5, 5] at z = 0.
+  const Triangle3<T> tri{{1, -10, -10}, {1, 10, -10}, {1, 0, 10}};
+  const auto t = intersection(std::span<const Vec3<T>>(notch), tri);
+  ASSERT_EQ(t.status, Status::ok);
+  ASSERT_FALSE(t.coplanar);
+  ASSERT_EQ(t.segments.size(), 2u);
+  EXPECT_EQ(t.segments[0].p0, (Vec3<T>{1, 3, 0}));
+  EXPECT_EQ(t.segments[1].p1, (Vec3<T>{1, -1, 0}));
+  // Scaled by powers of two: the same pieces, scaled.
+  for (const int k : {-500, 400}) {
+    const double f = std::ldexp(1.0, k);
+    std::vector<Vec3<T>> scaled;
+    for (const auto& p : notch) scaled.push_back(f * p);
+    const auto rs = intersection(std::span<const Vec3<T>>(scaled), Plane3<T>{{1, 0, 0}, f});
+    ASSERT_EQ(rs.segments.size(), 2u);
+    EXPECT_EQ(rs.segments[0].p1, f * r.segments[0].p1);
+    EXPECT_EQ(rs.segments[1].p0, f * r.segments[1].p0);
+  }
+}
+
 }  // namespace

@@ -17,8 +17,10 @@
 //    circle of infinite radius), reported in `line`, plus at most one finite circle;
 //  - rank-deficient patterns (collinear centres with radii in proportion, coincident circles):
 //    either no finite circle (with 0 or 2 tangent lines) or infinitely many (infinite set).
-// A radius-0 root (the three circles pass through one common point) is reported as the circle
-// of radius 0 at that point, once per pattern that has it.
+// A radius-0 root (the three circles pass through one common point P; two mirror points when the
+// centres are collinear) solves every pattern: it is reported once, as the circle of radius
+// exactly 0 at P with signs +1, decided exactly (core's big integer: the radical centre on the
+// circles, docs/notes/construct.md).
 //
 // Result: up to 8 circles with their signs s[i] (before: +1 outside, -1 inside), up to 4 lines
 // with the signs of the three circles' sides (+1: the circle is on the left of the line).
