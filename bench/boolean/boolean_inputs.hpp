@@ -6,8 +6,9 @@
 //   few:   two wobbly circles of 10^5 vertices each (radius 1 + 0.05 sin(7 t + phase) + a random
 //          1e-4 jitter), the second shifted by (0.4, 0.1): a few dozen crossings.
 //   spiky: two star polygons of 10^5 vertices each (5 * 10^4 spikes, tips at random radii in
-//          [0.6, 1], valleys in [0.05, 0.4]), the second rotated by a third of a spike: every
-//          spike crosses its neighbours, about 10^5 crossings.
+//          [0.9, 1], valleys in [0.8, 0.9]), the second rotated by a third of a spike: the spikes
+//          cross their neighbours, about 10^5 crossings. (Deeper spikes, valleys in [0.05, 0.4],
+//          give about 10^9 pairs of overlapping edge boxes: GEOS ran for minutes, as did locus.)
 //   many:  10^4 random squares and hexagons (radius 0.5 to 1.5, random rotation, centres
 //          uniform in [0, 100]^2: each point is covered about 2.3 times on average), united.
 
@@ -43,7 +44,7 @@ inline Ring wobbly_circle(std::size_t n, std::uint64_t seed, V centre, double ph
 
 inline Ring spiky_star(std::size_t n, std::uint64_t seed, double rotation) {
   std::mt19937_64 g(seed);
-  std::uniform_real_distribution<double> tip(0.6, 1.0), valley(0.05, 0.4);
+  std::uniform_real_distribution<double> tip(0.9, 1.0), valley(0.8, 0.9);
   Ring r;
   r.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {

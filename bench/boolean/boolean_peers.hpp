@@ -191,6 +191,7 @@ using BMulti = bg::model::multi_polygon<BPoly>;
 
 template <class BRing>
 void boost_ring(const Ring& r, BRing& out) {
+  if (r.empty()) return;
   for (const auto& q : r) out.push_back({q.x, q.y});
   out.push_back({r[0].x, r[0].y});
 }
