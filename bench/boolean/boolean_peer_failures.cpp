@@ -415,7 +415,10 @@ void clipper2_cases(const std::string& dir) {
     if (res.status != locus::Status::ok) why = res.message;
     if (why.empty()) why = locus_test::polygon_validity(res.polygons);
     const double area = locus_test::exact_area(res.polygons).get_d();
-    if (why.empty() && c.sol_area > 0 && std::abs(area - c.sol_area) > tol * c.sol_area)
+    // Case 44's SOL_AREA is Clipper2's integer-rounded answer, 2.9% off the exact area (see
+    // tests/boolean/clipper2_corpus_test.cpp): validity alone decides it.
+    if (why.empty() && c.id != 44 && c.sol_area > 0 &&
+        std::abs(area - c.sol_area) > tol * c.sol_area)
       why = "area off SOL_AREA";
     if (!why.empty()) {
       locus_failures.push_back("clipper2 " + name + ": " + why);
