@@ -154,22 +154,6 @@ Pt crossing_pixel(const Seg& s, const Seg& t) {
   return k;
 }
 
-/// gcd(|a|, |b|) (Stein's binary algorithm: a few times faster than std::gcd's divisions).
-i64 binary_gcd(i64 a, i64 b) {
-  std::uint64_t u = static_cast<std::uint64_t>(a < 0 ? -a : a);
-  std::uint64_t v = static_cast<std::uint64_t>(b < 0 ? -b : b);
-  if (u == 0) return static_cast<i64>(v);
-  if (v == 0) return static_cast<i64>(u);
-  const int shift = __builtin_ctzll(u | v);
-  u >>= __builtin_ctzll(u);
-  do {
-    v >>= __builtin_ctzll(v);
-    if (u > v) std::swap(u, v);
-    v -= u;
-  } while (v != 0);
-  return static_cast<i64>(u << shift);
-}
-
 /// An undirected fragment u < v with the winding change of each operand along u -> v.
 struct Frag {
   Pt u, v;
@@ -424,27 +408,12 @@ bool Engine::run() {
     std::vector<Frag> split;
     std::vector<Pt> on;
     for (const Frag& f : frags) {
-      // The grid points inside the open segment uv are u + k (v - u) / g, 0 < k < g, for
-      // g = gcd(|dx|, |dy|): none when g = 1, a few looked up directly when g is small.
-      const i64 g = binary_gcd(f.v.x - f.u.x, f.v.y - f.u.y);
-      if (g <= 1) {
-        split.push_back(f);
-        continue;
-      }
       on.clear();
-      if (g <= 64) {
-        const i64 sx = (f.v.x - f.u.x) / g, sy = (f.v.y - f.u.y) / g;
-        for (i64 k = 1; k < g; ++k) {
-          const Pt h{f.u.x + k * sx, f.u.y + k * sy};
-          if (std::binary_search(hot.begin(), hot.end(), h)) on.push_back(h);
-        }
-      } else {
-        const Vec2d u{static_cast<double>(f.u.x), static_cast<double>(f.u.y)};
-        const Vec2d v{static_cast<double>(f.v.x), static_cast<double>(f.v.y)};
-        grid.along(u, v, f.u.x, f.v.x, std::min(f.u.y, f.v.y), std::max(f.u.y, f.v.y), [&](Pt h) {
-          if (h != f.u && h != f.v && orient(f.u, f.v, h) == 0) on.push_back(h);
-        });
-      }
+      const Vec2d u{static_cast<double>(f.u.x), static_cast<double>(f.u.y)};
+      const Vec2d v{static_cast<double>(f.v.x), static_cast<double>(f.v.y)};
+      grid.along(u, v, f.u.x, f.v.x, std::min(f.u.y, f.v.y), std::max(f.u.y, f.v.y), [&](Pt h) {
+        if (h != f.u && h != f.v && orient(f.u, f.v, h) == 0) on.push_back(h);
+      });
       if (on.empty()) {
         split.push_back(f);
         continue;
