@@ -126,7 +126,7 @@ void record(const std::string& source, const std::string& name, const char* op,
   std::string detail = r.detail;
   for (char& c : detail)
     if (c == '|' || c == '\n') c = ' ';
-  if (detail.size() > 90) detail = detail.substr(0, 90) + "...";
+  if (detail.size() > 140) detail = detail.substr(0, 140) + "...";
   rows.push_back("| " + source + " | " + name + " | " + op + " | " + peer + " | " + r.kind + " | " +
                  detail + " |");
 }
@@ -182,6 +182,14 @@ void run_pair(const std::string& source, const std::string& name, const GEOSGeom
   ++locus_passes;
   const double tol = 1e-6 * (area_a.get_d() + area_b.get_d()) + bound.get_d();
   const BMulti ba = boost_multi(a), bb = boost_multi(b);
+  // Boost's own verdict on its operands (noted on its failure rows: where Boost deems an
+  // operand invalid that GEOS accepts, its wrong answer follows from that disagreement).
+  std::string boost_input_note;
+  for (const BMulti* m : {&ba, &bb}) {
+    std::string msg;
+    if (!bg::is_valid(*m, msg) && boost_input_note.empty())
+      boost_input_note = " (Boost: operand " + std::string(m == &ba ? "a" : "b") + " " + msg + ")";
+  }
   double max_abs = 0;
   for (const Multi* m : {&a, &b})
     for (const auto& p : *m)
@@ -240,6 +248,7 @@ void run_pair(const std::string& source, const std::string& name, const GEOSGeom
       } catch (const std::exception& e) {
         pr = {"threw", e.what()};
       }
+      if (!pr.kind.empty()) pr.detail += boost_input_note;
       record(source, name, op, "Boost.Geometry", pr);
     }
     // Clipper 1
