@@ -21,8 +21,8 @@
 //
 //   cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DLOCUS_BENCH_PEERS=ON
 //   ninja -C build/bench locus_bench_boolean
-//   scripts/bench_rounds --rounds 3 --min-time 0.05 --peer-double geos \
-//       build/bench/bench/locus_bench_boolean
+//   scripts/bench_rounds --rounds 3 --min-time 0.05 --peer-double geos
+//       build/bench/bench/locus_bench_boolean   (one command line)
 // Results: bench/results/boolean.md.
 
 #include <locus/boolean/polygon_boolean.hpp>

@@ -81,6 +81,7 @@ struct GeosDeleter {
 using GeosPtr = std::unique_ptr<GEOSGeometry, GeosDeleter>;
 
 inline GEOSGeometry* geos_ring(const Ring& r) {
+  if (r.empty()) return GEOSGeom_createLinearRing_r(geos(), GEOSCoordSeq_create_r(geos(), 0, 2));
   std::vector<double> xy;
   xy.reserve(2 * r.size() + 2);
   for (const auto& p : r) {
@@ -89,8 +90,8 @@ inline GEOSGeometry* geos_ring(const Ring& r) {
   }
   xy.push_back(r[0].x);
   xy.push_back(r[0].y);
-  GEOSCoordSequence* s =
-      GEOSCoordSeq_copyFromBuffer_r(geos(), xy.data(), r.size() + 1, false, false);
+  GEOSCoordSequence* s = GEOSCoordSeq_copyFromBuffer_r(
+      geos(), xy.data(), static_cast<unsigned>(r.size() + 1), false, false);
   return GEOSGeom_createLinearRing_r(geos(), s);
 }
 inline GEOSGeometry* geos_polygon(const Ring& outer, const std::vector<Ring>& holes) {
