@@ -317,6 +317,11 @@ bool Engine::run() {
   // 1. Directed edges of every ring, orientations normalised by role (the exact sign of the
   // ring's signed area).
   std::vector<Seg> segs;
+  {
+    std::size_t total = 0;
+    for (const Ring& r : rings) total += r.pts.size();
+    segs.reserve(total);
+  }
   for (Ring& r : rings) {
     std::vector<Vec2d> pts;
     for (const Vec2d& p : r.pts)
@@ -339,36 +344,37 @@ bool Engine::run() {
   if (segs.empty()) return true;
 
   // 2. Hot pixels: every vertex's, and every proper crossing's (x-sorted sweep, exact).
+  // Each segment's end b is the next segment's start in its ring: the starts are every vertex.
   std::vector<Pt> hot;
-  hot.reserve(2 * segs.size());
-  for (const Seg& s : segs) {
-    hot.push_back(s.pa);
-    hot.push_back(s.pb);
-  }
-  std::vector<std::size_t> order(segs.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  const auto lo_x = [&](std::size_t i) { return std::min(segs[i].a.x, segs[i].b.x); };
-  const auto hi_x = [&](std::size_t i) { return std::max(segs[i].a.x, segs[i].b.x); };
+  hot.reserve(segs.size() + segs.size() / 8);
+  for (const Seg& s : segs) hot.push_back(s.pa);
+  // The sweep keeps each active segment's x-end and y-range inline (no look-up in segs).
+  struct Active {
+    double hi_x, lo_y, hi_y;
+    std::size_t index;
+  };
+  std::vector<std::pair<double, std::size_t>> order(segs.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) order[i] = {std::min(segs[i].a.x, segs[i].b.x), i};
   std::sort(order.begin(), order.end(),
-            [&](std::size_t i, std::size_t j) { return lo_x(i) < lo_x(j); });
-  std::vector<std::size_t> active;
-  for (std::size_t i : order) {
+            [](const auto& p, const auto& q) { return p.first < q.first; });
+  std::vector<Active> active;
+  for (const auto& [lo_x, i] : order) {
     const Seg& s = segs[i];
     const double sy0 = std::min(s.a.y, s.b.y), sy1 = std::max(s.a.y, s.b.y);
     std::size_t keep = 0;
-    for (std::size_t j : active)
-      if (hi_x(j) >= lo_x(i)) active[keep++] = j;
+    for (const Active& t : active)
+      if (t.hi_x >= lo_x) active[keep++] = t;
     active.resize(keep);
-    for (std::size_t j : active) {
-      const Seg& t = segs[j];
-      if (std::max(t.a.y, t.b.y) < sy0 || sy1 < std::min(t.a.y, t.b.y)) continue;
+    for (const Active& at : active) {
+      if (at.hi_y < sy0 || sy1 < at.lo_y) continue;
+      const Seg& t = segs[at.index];
       const int oc = to_int(orient2d(s.a, s.b, t.a)), od = to_int(orient2d(s.a, s.b, t.b));
       if (oc * od >= 0) continue;  // apart, touching at an endpoint (hot already) or collinear
       const int oa = to_int(orient2d(t.a, t.b, s.a)), ob = to_int(orient2d(t.a, t.b, s.b));
       if (oa * ob >= 0) continue;
       hot.push_back(crossing_pixel(s, t));
     }
-    active.push_back(i);
+    active.push_back({std::max(s.a.x, s.b.x), sy0, sy1, i});
   }
   std::sort(hot.begin(), hot.end());
   hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
@@ -381,8 +387,10 @@ bool Engine::run() {
   std::vector<std::pair<i64, Pt>> route;
   for (const Seg& s : segs) {
     route.clear();
+    // The pixels of the segment's ends always meet it: only other hot pixels need the test.
     grid.along(s.a, s.b, s.xmin, s.xmax, s.ymin, s.ymax, [&](Pt h) {
-      if (pixel_meets(s, h)) route.emplace_back(s.sx * h.x + s.sy * h.y, h);
+      if (h == s.pa || h == s.pb || pixel_meets(s, h))
+        route.emplace_back(s.sx * h.x + s.sy * h.y, h);
     });
     std::sort(route.begin(), route.end(),
               [](const auto& p, const auto& q) { return p.first < q.first; });
@@ -438,8 +446,10 @@ bool Engine::run() {
   };
   const std::size_t nh = 2 * frags.size(), nv = verts.size();
   std::vector<std::size_t> origin(nh);
-  for (std::size_t e = 0; e < frags.size(); ++e) {
-    origin[2 * e] = vid(frags[e].u);
+  // frags are sorted by u (merge_frags): their u's are found by one forward walk.
+  for (std::size_t e = 0, k = 0; e < frags.size(); ++e) {
+    while (verts[k] < frags[e].u) ++k;
+    origin[2 * e] = k;
     origin[2 * e + 1] = vid(frags[e].v);
   }
   const auto dest = [&](std::size_t h) { return origin[h ^ 1]; };
