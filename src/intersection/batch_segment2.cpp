@@ -33,9 +33,10 @@ LOCUS_ALWAYS_INLINE inline MD certain(const DetL& f) {
   return (lanes::abs<double>(f.v) > detail::orient2d_bound_a * f.perm) & (f.perm > 0x1p-900) &
          (f.perm < 0x1p1000);
 }
-/// The cheap test of detail::linear2::accurate_sides.
+/// The cheap test of detail::linear2::accurate_sides, with its range test (implied where the
+/// filter is certain).
 LOCUS_ALWAYS_INLINE inline MD cheap(const DetL& f) {
-  return lanes::abs<double>(f.v) >= 0.62 * f.perm;
+  return (lanes::abs<double>(f.v) >= 0.62 * f.perm) & (f.perm > 0x1p-900) & (f.perm < 0x1p1000);
 }
 /// detail::linear2::param_accurate per lane.
 LOCUS_ALWAYS_INLINE inline MD param_accurate(const DetL& f0, const DetL& f1, double cp, double cv) {
@@ -64,6 +65,58 @@ LOCUS_ALWAYS_INLINE inline VD product_error(VD a, VD b, VD p) {
   const VD bh = tb - (tb - b), bl = b - bh;
   return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
 }
+/// The value of detail::turn2d_value_accurate(q0, q1, q0, p) per lane, as src/core/crossing.cpp
+/// computes it (double-double, else triple length), and ok where that value is accepted by the
+/// tier that gives it and every error-free product is exact with Dekker's product as with the
+/// FMA (products above 2^-900 or zero, factors below 2^990); elsewhere the per-pair function.
+LOCUS_ALWAYS_INLINE inline VD exact_side(VD q0x, VD q0y, VD q1x, VD q1y, VD px, VD py, MD& ok) {
+  VD h1, l1, h2, l2, h3, l3, h4, l4;
+  two_sum(q1x, -q0x, h1, l1);
+  two_sum(py, -q0y, h2, l2);
+  two_sum(q1y, -q0y, h3, l3);
+  two_sum(px, -q0x, h4, l4);
+  const VD p = h1 * h2, q = h3 * h4;
+  const VD pe = product_error(h1, h2, p), qe = product_error(h3, h4, q);
+  const VD c1 = h1 * l2, c2 = l1 * h2, c3 = h3 * l4, c4 = l3 * h4;
+  const VD c1e = product_error(h1, l2, c1), c2e = product_error(l1, h2, c2);
+  const VD c3e = product_error(h3, l4, c3), c4e = product_error(l3, h4, c4);
+  VD s, se;
+  two_sum(p, -q, s, se);
+  // Double-double (turn2d_value_double).
+  const VD tail =
+      (se + (pe - qe)) + ((h1 * l2 + l1 * h2) - (h3 * l4 + l3 * h4)) + (l1 * l2 - l3 * l4);
+  const VD vd = s + tail;
+  const VD perm = lanes::abs<double>(p) + lanes::abs<double>(q);
+  const MD dd_ok =
+      (lanes::abs<double>(vd) >= 0x1p-47 * perm) & (perm > 0x1p-900) & (perm < 0x1p1000);
+  // Triple length (turn2d_value_triple).
+  VD f = se, e1, e2, e3, e4, e5, e6;
+  two_sum(f, pe, f, e1);
+  two_sum(f, -qe, f, e2);
+  two_sum(f, c1, f, e3);
+  two_sum(f, c2, f, e4);
+  two_sum(f, -c3, f, e5);
+  two_sum(f, -c4, f, e6);
+  const VD second =
+      ((c1e + c2e) - (c3e + c4e)) + (l1 * l2 - l3 * l4) + (((e1 + e2) + (e3 + e4)) + (e5 + e6));
+  VD t, te;
+  two_sum(s, f, t, te);
+  const VD vt = t + (te + second);
+  const VD a1 = lanes::abs<double>(h1), a2 = lanes::abs<double>(h2);
+  const VD a3 = lanes::abs<double>(h3), a4 = lanes::abs<double>(h4);
+  const VD m12 = lanes::sel<double>(a1 < a2, a2, a1), m34 = lanes::sel<double>(a3 < a4, a4, a3);
+  const VD hmax = lanes::sel<double>(m12 < m34, m34, m12);
+  const MD triple_ok = (lanes::abs<double>(vt) >= 0x1p-90 * perm) & (perm >= 0x1p-800) &
+                       (perm <= 0x1p900) & (hmax < 0x1p990);
+  const auto exact = [](VD x) LOCUS_ALWAYS_INLINE_LAMBDA {
+    const VD ax = lanes::abs<double>(x);
+    return (ax > 0x1p-900) | (ax == 0.0);
+  };
+  ok = exact(p) & exact(q) & exact(c1) & exact(c2) & exact(c3) & exact(c4) & (hmax < 0x1p990) &
+       (dd_ok | triple_ok);
+  return lanes::sel<double>(dd_ok, vd, vt);
+}
+
 /// One end point side det[q1 - q0; p - q0] with exact differences (dx, dy = q1 - q0 split):
 /// the value of detail::linear2::det_tails (g), and what turn2d_value_dd adds to it.
 struct SideSplit {
@@ -79,22 +132,6 @@ LOCUS_ALWAYS_INLINE inline SideSplit side_split(VD dxh, VD dxl, VD dyh, VD dyl, 
   t.tail = (dxh * t.eyl + dxl * t.eyh) - (dyh * t.exl + dyl * t.exh);
   t.g = {(t.l - t.r) + t.tail, lanes::abs<double>(t.l) + lanes::abs<double>(t.r)};
   return t;
-}
-/// The double-double value of detail::turn2d_value_dd(q0, q1, q0, p) (h1 = dx, h2 = ey, h3 = dy,
-/// h4 = ex; its products p = l, q = r), and ok where that function accepts it and the error-free
-/// products are exact (else the per-pair function runs).
-LOCUS_ALWAYS_INLINE inline VD side_dd(VD dxh, VD dxl, VD dyh, VD dyl, const SideSplit& t, MD& ok) {
-  const VD pe = product_error(dxh, t.eyh, t.l), qe = product_error(dyh, t.exh, t.r);
-  VD s, se;
-  two_sum(t.l, -t.r, s, se);
-  const VD v = s + ((se + (pe - qe)) + t.tail + (dxl * t.eyl - dyl * t.exl));
-  const VD hmax = lanes::abs<double>(dxh) + lanes::abs<double>(dyh) + lanes::abs<double>(t.exh) +
-                  lanes::abs<double>(t.eyh);
-  const VD perm = t.g.perm;
-  ok = (lanes::abs<double>(v) >= 0x1p-47 * perm) & (perm > 0x1p-900) & (perm < 0x1p1000) &
-       (lanes::abs<double>(t.l) > 0x1p-900) & (lanes::abs<double>(t.r) > 0x1p-900) &
-       (hmax < 0x1p990);
-  return v;
 }
 /// detail::linear2::accurate_sides<true> per lane, for the lanes of need: the values, and the
 /// lanes where one of its tiers accepted them (the rest go to the per-pair function). The
@@ -116,8 +153,10 @@ LOCUS_ALWAYS_INLINE inline MD accurate_sides(MD need, const DetL& f0, const DetL
   v1 = lanes::sel<double>(tails, t1.g.v, v1);
   const MD rest = need & ~naive & ~tails;
   if (!lanes::any<double>(rest)) return naive | tails;
+  // turn2d_value_dd(q0, q1, q0, p) is turn2d_value_accurate's value (no FMA in the build).
   MD ok0, ok1;
-  const VD dd0 = side_dd(dxh, dxl, dyh, dyl, t0, ok0), dd1 = side_dd(dxh, dxl, dyh, dyl, t1, ok1);
+  const VD dd0 = exact_side(q0x, q0y, q1x, q1y, p0x, p0y, ok0);
+  const VD dd1 = exact_side(q0x, q0y, q1x, q1y, p1x, p1y, ok1);
   v0 = lanes::sel<double>(rest, dd0, v0);
   v1 = lanes::sel<double>(rest, dd1, v1);
   return naive | tails | (ok0 & ok1);
@@ -140,14 +179,53 @@ LOCUS_ALWAYS_INLINE inline void group(const Seg* a, const Seg* b, Out* out, std:
   const DetL fa1 = det_naive(dbx, dby, a1x - b0x, a1y - b0y);
   const DetL fb0 = det_naive(dax, day, b0x - a0x, b0y - a0y);
   const DetL fb1 = det_naive(dax, day, b1x - a0x, b1y - a0y);
-  const MD sure = certain(fa0) & certain(fa1) & certain(fb0) & certain(fb1);
-  const MD sa0 = fa0.v > 0.0, sa1 = fa1.v > 0.0, sb0 = fb0.v > 0.0, sb1 = fb1.v > 0.0;
+  const MD ua0 = ~certain(fa0), ua1 = ~certain(fa1), ub0 = ~certain(fb0), ub1 = ~certain(fb1);
+  const MD sure = ~(ua0 | ua1 | ub0 | ub1);
+  // The side values that decide: the filters' where certain, else (detail::linear2::
+  // segments_sides) the rounded exact values, for lanes finite, in range and not degenerate
+  // (else the per-pair function); a segment whose two sides are both exact values builds with
+  // them (Known), else with accurate_sides.
+  MD decided = sure, ka{}, kb{};
+  VD xa0 = fa0.v, xa1 = fa1.v, xb0 = fb0.v, xb1 = fb1.v;
+  if (!lanes::all<double>(sure)) [[unlikely]] {
+    const VD big = lanes::sel<double>(lanes::abs<double>(a0x) < lanes::abs<double>(a0y),
+                                      lanes::abs<double>(a0y), lanes::abs<double>(a0x));
+    VD mx = big;
+    for (const VD c : {a1x, a1y, b0x, b0y, b1x, b1y}) {
+      const VD ac = lanes::abs<double>(c);
+      mx = lanes::sel<double>(mx < ac, ac, mx);
+    }
+    const MD finite = lanes::finite<double>(a0x) & lanes::finite<double>(a0y) &
+                      lanes::finite<double>(a1x) & lanes::finite<double>(a1y) &
+                      lanes::finite<double>(b0x) & lanes::finite<double>(b0y) &
+                      lanes::finite<double>(b1x) & lanes::finite<double>(b1y);
+    const MD in_range = (mx <= 0x1p400) & ((mx == 0.0) | (mx >= 0x1p-400));
+    const MD proper = ~((a0x == a1x) & (a0y == a1y)) & ~((b0x == b1x) & (b0y == b1y));
+    MD ok = ~sure & finite & in_range & proper;
+    MD oa0, oa1, ob0, ob1;
+    const VD ea0 = exact_side(b0x, b0y, b1x, b1y, a0x, a0y, oa0);
+    const VD ea1 = exact_side(b0x, b0y, b1x, b1y, a1x, a1y, oa1);
+    const VD eb0 = exact_side(a0x, a0y, a1x, a1y, b0x, b0y, ob0);
+    const VD eb1 = exact_side(a0x, a0y, a1x, a1y, b1x, b1y, ob1);
+    ok &= (~ua0 | oa0) & (~ua1 | oa1) & (~ub0 | ob0) & (~ub1 | ob1);
+    xa0 = lanes::sel<double>(ua0, ea0, xa0), xa1 = lanes::sel<double>(ua1, ea1, xa1);
+    xb0 = lanes::sel<double>(ub0, eb0, xb0), xb1 = lanes::sel<double>(ub1, eb1, xb1);
+    decided = sure | ok;
+    ka = ok & ua0 & ua1;
+    kb = ok & ub0 & ub1;
+  }
+  const MD sa0 = xa0 > 0.0, sa1 = xa1 > 0.0, sb0 = xb0 > 0.0, sb1 = xb1 > 0.0;
   const MD miss = (sa0 == sa1) | (sb0 == sa0) | (sb1 != sa0);
-  const MD hit = sure & ~miss;
+  const MD hit = decided & ~miss;
   VD va0, va1, vb0, vb1;
-  const MD easy = accurate_sides(hit, fa0, fa1, b0x, b0y, b1x, b1y, a0x, a0y, a1x, a1y, va0, va1) &
-                  accurate_sides(hit, fb0, fb1, a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y, vb0, vb1);
-  const MD scalar = ~sure | (hit & ~easy);
+  const MD ok_a =
+      accurate_sides(hit & ~ka, fa0, fa1, b0x, b0y, b1x, b1y, a0x, a0y, a1x, a1y, va0, va1);
+  const MD ok_b =
+      accurate_sides(hit & ~kb, fb0, fb1, a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y, vb0, vb1);
+  va0 = lanes::sel<double>(ka, xa0, va0), va1 = lanes::sel<double>(ka, xa1, va1);
+  vb0 = lanes::sel<double>(kb, xb0, vb0), vb1 = lanes::sel<double>(kb, xb1, vb1);
+  const MD easy = (ka | ok_a) & (kb | ok_b);
+  const MD scalar = ~decided | (hit & ~easy);
   // proper_crossing (every lane; only the accepted hits are kept).
   const VD dda = va0 - va1, t = clamp(va0 / dda, 0.0, 1.0);
   const MD from_end = lanes::abs<double>(va1) < lanes::abs<double>(va0);
