@@ -9,11 +9,11 @@
 // floating-point contraction (the default on x86-64 unless FMA is enabled, e.g. by -march=native;
 // as for the batched distances, distance/batch.hpp). The spans must have the same length
 // (LOCUS_ASSERT; with assertions off, the shortest length is processed).
-// How: the SIMD kernel (src/intersection/batch_segment2.cpp) evaluates segments_fast's four
-// filtered end point sides, the decision and the cheap accurate construction in the lanes of one
-// register, branch-free; a lane whose filters fail (touching, collinear, nearly parallel,
-// degenerate, non-finite or extreme input) or whose crossing needs more accurate side values is
-// recomputed by intersection(). On x86-64 the kernel is compiled for x86-64-v4, AVX2 and the
+// How: the SIMD kernel (src/intersection/batch_segment2.cpp) evaluates the four filtered end point
+// sides, the exact side values where a filter fails, the decision and the construction's tiers in
+// the lanes of one register, as the per-pair code does; a lane the lanes cannot finish (touching,
+// collinear, degenerate, non-finite or extreme input, side values needing the exact expansion)
+// is recomputed by intersection(). On x86-64 the kernel is compiled for x86-64-v4, AVX2 and the
 // baseline and picked at each call like the batched distances (detail::batch_isa()). Float pairs
 // are computed by the per-pair function (in double, as it does). Throughput:
 // bench/results/intersection2.md. No allocation; noexcept.
