@@ -12,6 +12,7 @@
 
 #include <locus/intersection/convex_polygon2.hpp>
 #include <locus/intersection/segment_segment.hpp>
+#include <locus/intersection/segment_segment_batch.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -30,7 +31,31 @@ void segments(benchmark::State& state, const SegmentPairs& s) {
   cycle(state, kSegmentPairs, [&](std::size_t i) { return locus_find(s.a[i], s.b[i]); });
 }
 
+/// The batched form (segment_segment_batch.hpp): all the pairs per iteration, the same
+/// accumulation of each answer; items per second = pairs per second.
+void segments_batch(benchmark::State& state, const SegmentPairs& s) {
+  std::vector<locus::LinearIntersection2<double>> out(s.a.size());
+  std::size_t hits = 0;
+  double acc = 0;
+  for (auto _ : state) {
+    locus::intersections(s.a, s.b, out);
+    for (const auto& r : out) {
+      if (r.kind == locus::Kind::empty) continue;
+      ++hits;
+      acc += 16.0 + r.point[0].x + r.point[0].y;
+    }
+    benchmark::DoNotOptimize(acc);
+  }
+  const auto pairs = static_cast<std::int64_t>(state.iterations() * s.a.size());
+  state.SetItemsProcessed(pairs);
+  state.counters["hit_rate"] = double(hits) / double(std::max<std::int64_t>(pairs, 1));
+}
+
 void BM_generic_locus(benchmark::State& state) { segments(state, generic_pairs()); }
+void BM_generic_batch(benchmark::State& state) { segments_batch(state, generic_pairs()); }
+void BM_near_parallel_batch(benchmark::State& state) {
+  segments_batch(state, near_parallel_pairs());
+}
 void BM_near_parallel_locus(benchmark::State& state) { segments(state, near_parallel_pairs()); }
 void BM_polygons_locus(benchmark::State& state) {
   const PolygonPairs& p = polygon_pairs();
@@ -43,4 +68,6 @@ void BM_polygons_locus(benchmark::State& state) {
 
 BENCHMARK(BM_generic_locus)->Name("segments_generic/locus<double>");
 BENCHMARK(BM_near_parallel_locus)->Name("segments_near_parallel/locus<double>");
+BENCHMARK(BM_generic_batch)->Name("segments_generic/locus_batch<double>");
+BENCHMARK(BM_near_parallel_batch)->Name("segments_near_parallel/locus_batch<double>");
 BENCHMARK(BM_polygons_locus)->Name("convex_polygons/locus<double>");

@@ -98,6 +98,7 @@
 #include <locus/intersection/segment_quadratic_curve.hpp>
 #include <locus/intersection/segment_quadric.hpp>
 #include <locus/intersection/segment_segment.hpp>
+#include <locus/intersection/segment_segment_batch.hpp>
 #include <locus/intersection/segment_sphere.hpp>
 #include <locus/intersection/segment_surface.hpp>
 #include <locus/intersection/segment_torus.hpp>

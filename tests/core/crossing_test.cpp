@@ -3,13 +3,16 @@
 // Oracle: the determinant in GMP rationals. Checks: relative error below 2 eps (double eps) and
 // the sign equal to turn2d's, on random points, on nearly degenerate configurations (d a rounded
 // point of the line through a and b, where the naive formula keeps no correct digit), on exact
-// degeneracies (value exactly 0), over a wide exponent range, and NaN/Inf (NaN result).
+// degeneracies (value exactly 0), over a wide exponent range, and NaN/Inf (NaN result); residues
+// from 2^-40 to 2^-110 of the products under every compiled version (FMA and Dekker products:
+// detail::set_batch_isa picks them, src/core/crossing.cpp).
 // side_of_crossing and compare_crossing_params against the crossing points computed in
 // rationals: random lines, exact ties on integer grids (lines through one lattice point), near
 // ties a few ulps apart, parallel lines (zero) and non-finite input (zero).
 
 #include <locus/core/crossing.hpp>
 #include <locus/core/predicates.hpp>
+#include <locus/distance/batch.hpp>
 
 #include <gmpxx.h>
 
@@ -86,6 +89,31 @@ TYPED_TEST(CoreCrossing, NearlyCollinearKeepsRelativeAccuracy) {
   if (std::is_same_v<T, double>) {
     EXPECT_GT(naive_worst, 1e-3);
   }
+}
+
+// d = a point of the line ab moved off it by 2^-k (k in [40, 110]), c near a: the determinant
+// falls into each tier of src/core/crossing.cpp (double-double, triple length, expansion), under
+// each compiled version of it.
+TYPED_TEST(CoreCrossing, EveryTierAndVersionKeepsRelativeAccuracy) {
+  using T = TypeParam;
+  using locus::detail::BatchIsa;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const BatchIsa before = locus::detail::batch_isa();
+  for (const BatchIsa isa : {BatchIsa::baseline, BatchIsa::avx2, BatchIsa::x86_64_v4}) {
+    locus::detail::set_batch_isa(isa);
+    for (int i = 0; i < 300; ++i) {
+      const Vec2<T> a = rng.vec<T, 2>(-2, 2), b = rng.vec<T, 2>(-2, 2);
+      const Vec2<T> ab = b - a;
+      const T off = std::ldexp(T(1), -rng.uniform_int(40, 110));
+      const Vec2<T> d = a + rng.uniform<T>(-2, 2) * ab + off * Vec2<T>{-ab.y, ab.x};
+      const Vec2<T> c = a + rng.uniform<T>(-1, 1) * off * ab;
+      check(a, b, c, d);
+      check(c, d, a, b);
+      if (::testing::Test::HasFatalFailure()) break;
+    }
+  }
+  locus::detail::set_batch_isa(before);
 }
 
 TYPED_TEST(CoreCrossing, ExactDegeneraciesGiveZero) {

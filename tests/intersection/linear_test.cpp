@@ -8,7 +8,10 @@
 // swapped(). Inputs: seeded random, tiny crossing angles (down to 1e-15 rad), near-parallel
 // offsets, collinear overlaps of every arrangement, integer grids (touching at end points,
 // T-junctions, shared end points, zero-length segments, zero directions), NaN/Inf, and
-// power-of-two scaling (the answer must scale exactly).
+// power-of-two scaling (the answer must scale exactly). Segment pairs at angles down to 1e-30 under
+// every compiled version of the accurate side values (FMA or Dekker products, src/core/
+// crossing.cpp), and the batched form (segment_segment_batch.hpp) equal to the per-pair one bit
+// for bit under every version of its kernel.
 
 #include <locus/intersection/line_line.hpp>
 #include <locus/intersection/line_ray.hpp>
@@ -17,11 +20,17 @@
 #include <locus/intersection/ray_segment.hpp>
 #include <locus/intersection/result.hpp>
 #include <locus/intersection/segment_segment.hpp>
+#include <locus/intersection/segment_segment_batch.hpp>
+
+#include <locus/distance/batch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "intersection/linear_oracle.hpp"
@@ -301,6 +310,94 @@ TYPED_TEST(IntersectionLinear, SegmentCrossingsAtMixedScales) {
   }
   EXPECT_GT(points, 600 / 3);
   std::printf("[ measured ] worst error / (eps max(|X|, m)) = %.3g\n", worst.ratio);
+}
+
+// Two segments through a common point at an angle 2^-k, k in [20, 100]: the side values come
+// from every tier (filters, exact differences, double-double, triple length, expansions), under
+// every compiled version of src/core/crossing.cpp (detail::set_batch_isa picks it).
+template <class T>
+std::pair<Segment2<T>, Segment2<T>> tiny_angle_pair(Rng& rng, int kmin, int kmax) {
+  const double angle = std::ldexp(1.0, -rng.uniform_int(kmin, kmax));
+  const Vec2<double> c{rng.uniform<double>(-1, 1), rng.uniform<double>(-1, 1)};
+  const double phi = rng.uniform<double>(0, 6.283185307179586);
+  const double l0 = rng.uniform<double>(0.1, 1), l1 = rng.uniform<double>(0.1, 1);
+  const double s0 = rng.uniform<double>(0.05, 0.95), s1 = rng.uniform<double>(-0.5, 1.5);
+  const Vec2<double> u{std::cos(phi), std::sin(phi)};
+  const Vec2<double> v{std::cos(phi + angle), std::sin(phi + angle)};
+  return {Segment2<T>{vec_cast<T>(c - s0 * l0 * u), vec_cast<T>(c + (1 - s0) * l0 * u)},
+          Segment2<T>{vec_cast<T>(c - s1 * l1 * v), vec_cast<T>(c + (1 - s1) * l1 * v)}};
+}
+
+TYPED_TEST(IntersectionLinear, TinyAnglesUnderEveryVersion) {
+  using T = TypeParam;
+  using detail::BatchIsa;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const BatchIsa before = detail::batch_isa();
+  Worst worst;
+  for (const BatchIsa isa : {BatchIsa::baseline, BatchIsa::avx2, BatchIsa::x86_64_v4}) {
+    detail::set_batch_isa(isa);
+    for (int i = 0; i < 200; ++i) {
+      const auto [a, b] = tiny_angle_pair<T>(rng, 20, 100);
+      check<T>(a, b, &worst);
+      if (::testing::Test::HasFatalFailure()) break;
+    }
+  }
+  detail::set_batch_isa(before);
+  std::printf("[ measured ] worst error / (eps max(|X|, m)) = %.3g\n", worst.ratio);
+}
+
+// intersections(a, b, out) equals intersection(a[i], b[i]) bit for bit: generic pairs, tiny
+// angles, touching and collinear pairs on a grid, degenerate and non-finite segments, every
+// length modulo the lane count, under every version of the kernel.
+TYPED_TEST(IntersectionLinear, BatchMatchesPerPair) {
+  using T = TypeParam;
+  using detail::BatchIsa;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  std::vector<Segment2<T>> a, b;
+  const auto add = [&](const Segment2<T>& x, const Segment2<T>& y) {
+    a.push_back(x);
+    b.push_back(y);
+  };
+  for (int i = 0; i < 200; ++i)
+    add({rng.vec<T, 2>(-1, 1), rng.vec<T, 2>(-1, 1)}, {rng.vec<T, 2>(-1, 1), rng.vec<T, 2>(-1, 1)});
+  for (int i = 0; i < 100; ++i) {
+    const auto ab = tiny_angle_pair<T>(rng, 10, 70);
+    add(ab.first, ab.second);
+  }
+  const auto grid = [&] { return Vec2<T>{T(rng.uniform_int(-2, 2)), T(rng.uniform_int(-2, 2))}; };
+  for (int i = 0; i < 100; ++i) add({grid(), grid()}, {grid(), grid()});
+  const T inf = std::numeric_limits<T>::infinity(), nan = std::numeric_limits<T>::quiet_NaN();
+  add({{0, 0}, {1, 1}}, {{nan, 0}, {1, 0}});
+  add({{0, inf}, {1, 1}}, {{0, 1}, {1, 0}});
+  add({{0, 0}, {0, 0}}, {{-1, 0}, {1, 0}});
+  add({{0, 0}, {1, 1}}, {{0, 1}, {1, 0}});
+  add({{T(1e30), 0}, {T(-1e30), T(1)}}, {{0, T(1e30)}, {0, T(-1e30)}});
+  const BatchIsa before = detail::batch_isa();
+  const auto same = [](const LinearIntersection2<T>& x, const LinearIntersection2<T>& y) {
+    return x.kind == y.kind && x.count == y.count &&
+           std::memcmp(&x.point, &y.point, sizeof x.point) == 0 &&
+           std::memcmp(&x.param_a, &y.param_a, sizeof x.param_a) == 0 &&
+           std::memcmp(&x.param_b, &y.param_b, sizeof x.param_b) == 0;
+  };
+  int hits = 0;
+  for (const BatchIsa isa : {BatchIsa::baseline, BatchIsa::avx2, BatchIsa::x86_64_v4}) {
+    detail::set_batch_isa(isa);
+    for (const std::size_t n :
+         {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{6}, a.size()}) {
+      std::vector<LinearIntersection2<T>> out(n);
+      intersections(std::span(a.data(), n), std::span(b.data(), n), std::span(out));
+      for (std::size_t i = 0; i < n; ++i) {
+        const LinearIntersection2<T> r = intersection(a[i], b[i]);
+        EXPECT_TRUE(same(out[i], r)) << "pair " << i << " isa " << int(isa) << " n " << n;
+        hits += r.kind != Kind::empty;
+      }
+    }
+  }
+  detail::set_batch_isa(before);
+  EXPECT_GT(hits, 3 * 100);  // both outcomes are exercised
+  EXPECT_LT(hits, 3 * int(a.size()) - 300);
 }
 
 // Parallel and nearly parallel components offset by a few ulps or less: the decision is exact.

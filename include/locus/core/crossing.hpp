@@ -4,9 +4,10 @@
 // the intersection area, rows int2.linear and int2.linear-polyline; book section 7.1).
 //
 // turn2d_value(a, b, c, d): det[b - a; d - c] (whose exact sign is turn2d() in predicates.hpp)
-// rounded from its exact value: exact differences and products in double-double, or, near zero,
-// the four 2x2 minors of the raw coordinates in expansion arithmetic (src/core/crossing.cpp);
-// no difference rounds first. Relative error below 2 eps (double eps), sign always turn2d()'s. Why:
+// rounded from its exact value: exact differences and products in double-double, then in triple
+// length, or, nearer zero, the four 2x2 minors of the raw coordinates in expansion arithmetic
+// (src/core/crossing.cpp: with FMA products where the processor has them); no difference rounds
+// first. Relative error below 2 eps (double eps), sign always turn2d()'s. Why:
 // a crossing's parameter is a ratio of two such determinants, and at tiny crossing angles the naive
 // ones lose every digit. Exact signs (floating-point filter, then core/exact_sum.hpp), for points
 // given implicitly as the crossing X(p, q) of the lines p0 p1 and q0 q1:
@@ -16,8 +17,9 @@
 // Both return Sign::zero when a pair of lines is parallel (no crossing) or on non-finite input.
 // Range: exact products need every nonzero product of coordinates above 2^-969 in magnitude
 // and every coordinate below 2^250 (products of four). Float input is promoted exactly.
-// Cost: turn2d_value about 100 flops; the predicates a few dozen flops when the filter decides,
-// a few microseconds otherwise; no allocation.
+// Cost: turn2d_value about 50-100 flops, about 200 in triple length (|value| below 2^-47 of its
+// products), more in the exact tier (below 2^-90); the predicates a few dozen flops when the filter
+// decides, a few microseconds otherwise; no allocation.
 
 #include <locus/core/error_free.hpp>
 #include <locus/core/exact_sum.hpp>
@@ -31,7 +33,8 @@
 namespace locus {
 
 namespace detail {
-/// det[b - a; d - c] rounded from the exact value (compiled in src/core/crossing.cpp).
+/// det[b - a; d - c] rounded from the exact value (src/core/crossing.cpp: double-double, triple
+/// length, expansion; the version with FMA products chosen at run time).
 [[nodiscard]] double turn2d_value_accurate(const Vec2<double>& a, const Vec2<double>& b,
                                            const Vec2<double>& c, const Vec2<double>& d) noexcept;
 }  // namespace detail
@@ -39,10 +42,13 @@ namespace detail {
 namespace detail {
 /// Double-double evaluation of det[b - a; d - c]: exact differences (two_sum), exact leading
 /// products, first-order tails. Its error is at most u |v| + 32 u^2 (|p| + |q|) (u = 2^-53,
-/// p and q the two leading products); accepted when that is below 1.5 u |v|, else the exact
-/// expansion decides. Contraction into FMAs only makes the tails more accurate.
+/// p and q the two leading products); accepted when that is below 1.5 u |v|. Inline only where
+/// the target has FMA; elsewhere turn2d_value_accurate runs the same tier with FMA products when
+/// the processor has them, then the triple-length and exact tiers. Contraction into FMAs only
+/// makes the tails more accurate.
 [[nodiscard]] inline double turn2d_value_dd(const Vec2<double>& a, const Vec2<double>& b,
                                             const Vec2<double>& c, const Vec2<double>& d) noexcept {
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
   double h1, l1, h2, l2, h3, l3, h4, l4;
   two_sum(b.x, -a.x, h1, l1);
   two_sum(d.y, -c.y, h2, l2);
@@ -60,6 +66,7 @@ namespace detail {
   // underflow or non-finite input go to the exact path.
   if (std::abs(v) >= 0x1p-47 * perm && perm > 0x1p-900 && perm < 0x1p1000) [[likely]]
     return v;
+#endif
   return turn2d_value_accurate(a, b, c, d);
 }
 }  // namespace detail

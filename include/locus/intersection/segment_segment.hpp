@@ -17,7 +17,10 @@
 // origin (parameter 0). Any NaN or infinite coordinate gives kind empty (intersects false). Range:
 // exact for coordinates whose products stay inside the double range (predicates.hpp). Cost: four
 // filtered signs; a crossing reuses their values when a bound proves them accurate enough, else
-// up to four double-double determinants (docs/notes/intersection.md, "Fast path").
+// up to four double-double determinants; where a filter fails (nearly parallel), each undecided
+// sign comes with its value rounded from the exact one (core/crossing.hpp), which both decides
+// and constructs (docs/notes/intersection.md, "Fast path"). Many pairs at once:
+// segment_segment_batch.hpp (SIMD, the same results bit for bit).
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/linear2.hpp>

@@ -278,13 +278,37 @@ struct Split2 {
   return r0 * e1 + r1 * e0 + 2.0 * u * e0 * e1 <= 2.99 * (1.0 - u * (e0 + e1)) && dd >= 0x1p-900;
 }
 
+/// The tiers of accurate_sides past its cheap test, out of line: they run for a minority of
+/// crossings, and inlined they would crowd the fast path's registers.
+LOCUS_NOINLINE inline void accurate_sides_slow(const Det& f0, const Det& f1, const V& q0,
+                                               const V& q1, const V& p0, const V& p1, double& v0,
+                                               double& v1) noexcept {
+  // Neither tier below can accept when min(perm) > 3 |f0 - f1| + 2^-40 (perm0 + perm1) (nearly
+  // parallel segments): passing needs min(e0, e1) <= 2.99, e >= 1.01 perm / |g0 - g1|, and the
+  // values g and f are within 8u (perm0 + perm1) of each other. Then straight to the last tier.
+  const bool hopeless =
+      std::min(f0.perm, f1.perm) > 3.0 * std::abs(f0.v - f1.v) + 0x1p-40 * (f0.perm + f1.perm);
+  if (!hopeless) {
+    if (param_accurate(f0, f1, 3.01, 1.01)) return;
+    const Split2 d = split_diff(q1, q0);
+    const Det g0 = det_tails(d, split_diff(p0, q0)), g1 = det_tails(d, split_diff(p1, q0));
+    v0 = g0.v, v1 = g1.v;
+    if (param_accurate(g0, g1, 1.01, 2.01)) [[likely]]
+      return;
+  }
+  v0 = detail::turn2d_value_dd(q0, q1, q0, p0);
+  v1 = detail::turn2d_value_dd(q0, q1, q0, p1);
+}
+
 /// The sides v0, v1 of p0 and p1 on the line q0 q1 (det[q1 - q0; p - q0]) accurate enough for
 /// param_accurate, from the naive values f0, f1 (error <= 3u perm + u |f|), else with exact
 /// differences, else rounded from their exact values (turn2d_value, the general path's values).
+/// Known: v0 and v1 hold those values already (segments_sides computed them for the signs).
 template <bool Certified>
 LOCUS_ALWAYS_INLINE inline void accurate_sides(const Det& f0, const Det& f1, const V& q0,
                                                const V& q1, const V& p0, const V& p1, double& v0,
-                                               double& v1) noexcept {
+                                               double& v1, bool known = false) noexcept {
+  if (known) return;
   v0 = f0.v, v1 = f1.v;
   // Cheap sufficient case first: |f| >= 0.62 perm for both (products in range) gives E <= 5.86u
   // |f| and the right signs, hence |t' - t| <= 11.72u |f0| |f1| / (|f0| + |f1|)^2 (1 + O(u)),
@@ -293,14 +317,7 @@ LOCUS_ALWAYS_INLINE inline void accurate_sides(const Det& f0, const Det& f1, con
   if (std::abs(f0.v) >= 0.62 * f0.perm && std::abs(f1.v) >= 0.62 * f1.perm &&
       (Certified || (products_in_range(f0) && products_in_range(f1)))) [[likely]]
     return;
-  if (param_accurate(f0, f1, 3.01, 1.01)) return;
-  const Split2 d = split_diff(q1, q0);
-  const Det g0 = det_tails(d, split_diff(p0, q0)), g1 = det_tails(d, split_diff(p1, q0));
-  v0 = g0.v, v1 = g1.v;
-  if (param_accurate(g0, g1, 1.01, 2.01)) [[likely]]
-    return;
-  v0 = detail::turn2d_value_dd(q0, q1, q0, p0);
-  v1 = detail::turn2d_value_dd(q0, q1, q0, p1);
+  accurate_sides_slow(f0, f1, q0, q1, p0, p1, v0, v1);
 }
 
 /// The four end point sides of segments a0 a1 and b0 b1 in double: of A's end points on B
@@ -319,12 +336,18 @@ struct Sides {
 /// of B and b0, b1 of A), interpolated along A from its nearer end with parameters t = v0 /
 /// (v0 - v1) from side values accurate enough for the header's bounds (accurate_sides). Both
 /// paths of intersect() construct with it, so the result does not depend on which one decided.
+/// Known: the rounded exact values of some sides (segments_sides), used where both of a pair are.
+struct Known {
+  double a0 = 0, a1 = 0, b0 = 0, b1 = 0;
+  bool a = false, b = false;
+};
 template <bool Certified>
 LOCUS_ALWAYS_INLINE inline void proper_crossing(const V& a0, const V& a1, const V& b0, const V& b1,
-                                                const Sides& f, Result& r) noexcept {
-  double va0, va1, vb0, vb1;
-  accurate_sides<Certified>(f.a0, f.a1, b0, b1, a0, a1, va0, va1);
-  accurate_sides<Certified>(f.b0, f.b1, a0, a1, b0, b1, vb0, vb1);
+                                                const Sides& f, Result& r,
+                                                const Known& k = Known{}) noexcept {
+  double va0 = k.a0, va1 = k.a1, vb0 = k.b0, vb1 = k.b1;
+  accurate_sides<Certified>(f.a0, f.a1, b0, b1, a0, a1, va0, va1, k.a);
+  accurate_sides<Certified>(f.b0, f.b1, a0, a1, b0, b1, vb0, vb1, k.b);
   // From the nearer end: a0 + t da, or a1 + (t - 1) da with t - 1 = va1 / (va0 - va1).
   const V da = a1 - a0;
   const double dda = va0 - va1, t = std::clamp(va0 / dda, 0.0, 1.0);
@@ -360,22 +383,76 @@ template <bool Construct>
   return true;
 }
 
+/// Two finite segments a0 a1 and b0 b1 in range (range_exponent 0) that segments_fast left
+/// undecided: each end point side from its filter where certain, else rounded from its exact
+/// value (turn2d_value_accurate, whose sign is turn2d()'s), so one evaluation gives both the
+/// exact sign and the value the construction needs. Returns false, leaving r alone, when a side
+/// is zero or a segment degenerate (a touch, collinear: intersect_in_range decides).
+template <bool Construct>
+[[nodiscard]] inline bool segments_sides(const V& a0, const V& a1, const V& b0, const V& b1,
+                                         Result& r) noexcept {
+  if (a0 == a1 || b0 == b1) return false;
+  const Sides f = naive_sides(a0, a1, b0, b1);
+  const auto value = [](const Det& g, const V& q0, const V& q1, const V& p, bool& exact) noexcept {
+    exact = !certain(g);
+    return exact ? detail::turn2d_value_accurate(q0, q1, q0, p) : g.v;
+  };
+  bool xa0, xa1, xb0, xb1;
+  Known k;
+  k.a0 = value(f.a0, b0, b1, a0, xa0);
+  k.a1 = value(f.a1, b0, b1, a1, xa1);
+  k.b0 = value(f.b0, a0, a1, b0, xb0);
+  k.b1 = value(f.b1, a0, a1, b1, xb1);
+  if (k.a0 == 0 || k.a1 == 0 || k.b0 == 0 || k.b1 == 0) return false;
+  const bool sa0 = k.a0 > 0, sa1 = k.a1 > 0, sb0 = k.b0 > 0, sb1 = k.b1 > 0;
+  // intersect_in_range's rules with every sign nonzero: den = side of a0.
+  if (sa0 == sa1 || sb0 == sa0 || sb1 != sa0) return true;  // r stays empty
+  if constexpr (Construct) {
+    k.a = xa0 && xa1;
+    k.b = xb0 && xb1;
+    proper_crossing<false>(a0, a1, b0, b1, f, r, k);
+  } else {
+    r.kind = Kind::point;
+    r.count = 1;
+  }
+  return true;
+}
+
 template <bool Construct>
 [[nodiscard]] inline Result intersect_in_range(const Lin& A, const Lin& B) noexcept;
 
 template <bool Construct>
+[[nodiscard]] inline Result intersect_general(const Lin& A, const Lin& B, bool segments) noexcept;
+
+template <bool Construct>
 [[nodiscard]] inline Result intersect(const Lin& A, const Lin& B) noexcept {
-  if (A.hi && B.hi && A.a == A.o && B.a == B.o) {
+  const bool segments = A.hi && B.hi && A.a == A.o && B.a == B.o;
+  if (segments) {
     Result r;
-    if (segments_fast<Construct>(A.a, A.b, B.a, B.b, r)) return r;
+    if (segments_fast<Construct>(A.a, A.b, B.a, B.b, r)) [[likely]]
+      return r;
   }
+  return intersect_general<Construct>(A, B, segments);
+}
+
+/// Everything but segments_fast: out of line, so that the fast path keeps a small frame.
+template <bool Construct>
+[[nodiscard]] LOCUS_NOINLINE inline Result intersect_general(const Lin& A, const Lin& B,
+                                                             bool segments) noexcept {
   if (!finite(A) || !finite(B)) return Result{};
   // Far from 1 the input is scaled by a power of two (exact, and every answer is covariant), so
   // no product of coordinates overflows or underflows.
   if (const int e = range_exponent(A, B); e != 0) [[unlikely]] {
-    Result r = intersect_in_range<Construct>(scaled(A, -e), scaled(B, -e));
+    const Lin As = scaled(A, -e), Bs = scaled(B, -e);
+    Result r;
+    if (!segments || !segments_sides<Construct>(As.a, As.b, Bs.a, Bs.b, r))
+      r = intersect_in_range<Construct>(As, Bs);
     for (V& p : r.point) p = V{std::ldexp(p.x, e), std::ldexp(p.y, e)};
     return r;
+  }
+  if (segments) {
+    Result r;
+    if (segments_sides<Construct>(A.a, A.b, B.a, B.b, r)) return r;
   }
   return intersect_in_range<Construct>(A, B);
 }
