@@ -3,13 +3,16 @@
 // float and double. Oracle (GMP rationals): the crossing X of the component with the plane
 // {dot(normal, X - origin) = 0} of the data as given, its frame coordinates
 // ((X - origin).u, (X - origin).v), and the closed region test in rationals (crossing number
-// with exact boundary detection; |st|^2 <= r^2). The library rounds X before the 2D test, so
-// random cases are compared where the exact frame point is farther than 1e-9 from the region's
-// boundary; exact frames (the xy plane, axis-aligned) on integer grids are compared always,
-// including touching vertices and edges. In-plane components: the span of common parameters
-// against a rational slab clip (axis-aligned square) and the chord's end points on the circle.
-// Also: points on the component and in the plane, swap symmetry, degenerate and NaN input.
+// with exact boundary detection; |X - center|^2 <= r^2). For a polygon the library rounds X
+// before the 2D test, so random cases are compared where the exact frame point is farther than
+// 1e-9 from the region's boundary; exact frames (the xy plane, axis-aligned) on integer grids are
+// compared always, including touching vertices and edges. A disk's rim is exact: every case is
+// compared, and near-rim cases (on the rim, one ulp off) with dyadic data check it. In-plane
+// components: the span of common parameters against a rational slab clip (axis-aligned square) and
+// the chord's end points on the circle. Also: points on the component and in the plane, swap
+// symmetry, degenerate and NaN input.
 
+#include <locus/core/plane_crossing_ball.hpp>
 #include <locus/intersection/line_disk.hpp>
 #include <locus/intersection/line_polygon.hpp>
 #include <locus/intersection/ray_disk.hpp>
@@ -63,15 +66,15 @@ struct QFrame {
 // The exact crossing (kind 0 none, 1 point, 2 in the plane) and its frame coordinates.
 struct QCross {
   int kind = 0;
-  mpq_class t, s2, t2;
+  mpq_class t, s2, t2, rho2;  // rho2 = |X - origin|^2
 };
 inline QCross cross_plane(const ex::QLin& l, const QFrame& f) {
   const mpq_class v0 = ex::qdot(f.n, l.o - f.o), nd = ex::qdot(f.n, l.d);
-  if (nd == 0) return {v0 == 0 ? 2 : 0, 0, 0, 0};
+  if (nd == 0) return {v0 == 0 ? 2 : 0, 0, 0, 0, 0};
   const mpq_class t = -v0 / nd;
   if (!ex::in_domain(l, t)) return {};
   const ex::Q3 x = l.o + t * l.d - f.o;
-  return {1, t, ex::qdot(x, f.u), ex::qdot(x, f.v)};
+  return {1, t, ex::qdot(x, f.u), ex::qdot(x, f.v), ex::qdot(x, x)};
 }
 
 // Closed polygon test in rationals, and the distance (double) to its boundary.
@@ -262,11 +265,9 @@ TYPED_TEST(IntersectionPlanar3, DiskAgainstExact) {
       EXPECT_EQ(intersects(a, d), r.kind != Kind::empty);
       EXPECT_EQ(intersection(d, a).kind, r.kind);
       if (c.kind != 1) continue;
-      const double rr = double(d.radius);
-      const double rho = std::sqrt(mpq_class(c.s2 * c.s2 + c.t2 * c.t2).get_d());
-      if (std::abs(rho - rr) < (std::is_same_v<T, float> ? 1e-4 : 1e-9)) continue;
-      ++compared;
-      ASSERT_EQ(r.kind, rho <= rr ? Kind::point : Kind::empty) << i;
+      const mpq_class rr = mpq_class(double(d.radius)) * double(d.radius);
+      ++compared;  // the rim is exact: every case is compared
+      ASSERT_EQ(r.kind, c.rho2 <= rr ? Kind::point : Kind::empty) << i;
       if (r.kind == Kind::point) {
         ++hits;
         EXPECT_TRUE(
@@ -278,6 +279,123 @@ TYPED_TEST(IntersectionPlanar3, DiskAgainstExact) {
   });
   EXPECT_GT(compared, 5000);
   EXPECT_GT(hits, 500);
+}
+
+// Near-rim crossings with exact data: a disk in a plane spanned by two orthogonal integer vectors
+// u, v of equal length L, a rim point X = C + s (alpha u + beta v) from a Pythagorean triple
+// (alpha, beta, gamma), radius r = s gamma L, all dyadic (exact in float). A component through X
+// (exactly on the rim), or with its origin, the radius or the centre moved by one ulp; the GMP
+// oracle decides |X - C|^2 <= r^2 for the crossing of the data as given. Also the core
+// predicates directly (their exact path asserts its term count), and scaling by powers of two.
+TYPED_TEST(IntersectionPlanar3, DiskRimExact) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  struct Pair {
+    int u[3], v[3], len;
+  };
+  constexpr Pair frames[] = {{{1, 0, 0}, {0, 1, 0}, 1},
+                             {{0, 0, 1}, {1, 0, 0}, 1},
+                             {{2, 2, -1}, {2, -1, 2}, 3},
+                             {{1, 2, 2}, {2, 1, -2}, 3},
+                             {{2, 3, 6}, {6, 2, -3}, 7}};
+  constexpr int triples[][3] = {{3, 4, 5}, {5, 12, 13}, {1, 0, 1}, {8, 15, 17}};
+  const auto dyadic = [](int m, int e) { return T(std::ldexp(double(m), e)); };
+  const auto qsign = [](const mpq_class& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); };
+  const int big = std::is_same_v<T, float> ? 30 : 300;
+  int rim = 0, in = 0, out = 0;
+  for (int i = 0; i < 48; ++i) {  // few: the exact path runs in most cases
+    const Pair& f = frames[rng.uniform_int(0, 4)];
+    const int* tri = triples[rng.uniform_int(0, 3)];
+    const bool swap = rng.uniform_int(0, 1) == 1;
+    const int alpha = (swap ? tri[1] : tri[0]) * (rng.uniform_int(0, 1) ? 1 : -1);
+    const int beta = (swap ? tri[0] : tri[1]) * (rng.uniform_int(0, 1) ? 1 : -1);
+    const int sm = rng.uniform_int(1, 8);
+    Vec3<T> c, x, n, dir;
+    for (int k = 0; k < 3; ++k) c[k] = dyadic(rng.uniform_int(-64, 64), -3);
+    for (int k = 0; k < 3; ++k) x[k] = c[k] + dyadic(sm * (alpha * f.u[k] + beta * f.v[k]), -4);
+    n = {T(f.u[1] * f.v[2] - f.u[2] * f.v[1]), T(f.u[2] * f.v[0] - f.u[0] * f.v[2]),
+         T(f.u[0] * f.v[1] - f.u[1] * f.v[0])};
+    do {
+      for (int k = 0; k < 3; ++k) dir[k] = T(rng.uniform_int(-4, 4));
+    } while (dot(n, dir) == 0);
+    const T tau = dyadic(rng.uniform_int(1, 4), -2), sigma = dyadic(rng.uniform_int(1, 4), -2);
+    Vec3<T> p = x - tau * dir;
+    const Vec3<T> q = x + sigma * dir;
+    T r = dyadic(sm * tri[2] * f.len, -4);
+    const T inf = std::numeric_limits<T>::infinity();
+    switch (i % 6) {  // one ulp off the rim (or none)
+      case 1:
+        p.x = std::nextafter(p.x, inf);
+        break;
+      case 2:
+        p.y = std::nextafter(p.y, -inf);
+        break;
+      case 3:
+        r = std::nextafter(r, inf);
+        break;
+      case 4:
+        r = std::nextafter(r, T(0));
+        break;
+      case 5:
+        c.z = std::nextafter(c.z, inf);
+        break;
+      default:
+        break;
+    }
+    const Disk3<T> d{c, n, r};
+    const mpq_class rr = mpq_class(double(r)) * double(r);
+    const QFrame qf{ex::q(c), ex::q(n), ex::q(n), ex::q(n)};
+    // The core predicates on the carriers through (p, dir) and (p, q).
+    const Vec3<double> pd = vec_cast<double>(p), qd = vec_cast<double>(q), cd = vec_cast<double>(c),
+                       nd = vec_cast<double>(n), dd = vec_cast<double>(dir);
+    const QCross line_x = cross_plane(ex::QLin{ex::q(p), ex::q(dir), false, false}, qf);
+    const QCross seg_x = cross_plane(ex::QLin{ex::q(p), ex::q(q) - ex::q(p), false, false}, qf);
+    ASSERT_EQ(line_x.kind, 1);
+    ASSERT_EQ(seg_x.kind, 1);
+    EXPECT_EQ(crossing_in_ball_line(pd, dd, cd, nd, double(r)), qsign(line_x.rho2 - rr)) << i;
+    EXPECT_EQ(crossing_in_ball_segment(pd, qd, cd, nd, double(r)), qsign(seg_x.rho2 - rr)) << i;
+    const int sx = qsign(seg_x.rho2 - rr);
+    (sx == 0 ? rim : sx < 0 ? in : out) += 1;
+    for_each_linear<T>([&]<class A>() {
+      A a;
+      if constexpr (std::is_same_v<A, Segment3<T>>)
+        a = A{p, q};
+      else
+        a = A{p, dir};
+      const QCross cr = cross_plane(ex::ql(a), qf);
+      ASSERT_EQ(cr.kind, 1);
+      const bool expected = cr.rho2 <= rr;
+      const auto res = intersection(a, d);
+      ASSERT_EQ(res.kind, expected ? Kind::point : Kind::empty) << i;
+      EXPECT_EQ(intersects(a, d), expected) << i;
+      // Scaling every input by 2^k (beyond the filter's range for double) keeps the answer.
+      for (const int e : {-big, big}) {
+        A as = a;
+        if constexpr (std::is_same_v<A, Segment3<T>>) {
+          as.p0 = as.p0 * std::ldexp(T(1), e);
+          as.p1 = as.p1 * std::ldexp(T(1), e);
+        } else {
+          as.origin = as.origin * std::ldexp(T(1), e);
+        }
+        const Disk3<T> ds{c * std::ldexp(T(1), e), n, r * std::ldexp(T(1), e)};
+        // Only exact scalings (a one-ulp step off zero is subnormal and would underflow).
+        const auto back = [&](const Vec3<T>& v, const Vec3<T>& w) {
+          return v * std::ldexp(T(1), -e) == w;
+        };
+        bool exact = back(ds.center, c) && ds.radius * std::ldexp(T(1), -e) == r;
+        if constexpr (std::is_same_v<A, Segment3<T>>)
+          exact = exact && back(as.p0, a.p0) && back(as.p1, a.p1);
+        else
+          exact = exact && back(as.origin, a.origin);
+        if (!exact) continue;
+        EXPECT_EQ(intersects(as, ds), expected) << i << " 2^" << e;
+      }
+    });
+  }
+  EXPECT_GE(rim, 8);  // the unperturbed cases
+  EXPECT_GE(in, 8);   // at least the larger radii
+  EXPECT_GE(out, 8);  // at least the smaller radii
 }
 
 // A component in the disk's plane: the chord, its ends on the circle.
