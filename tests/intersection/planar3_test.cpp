@@ -12,6 +12,7 @@
 // the chord's end points on the circle. Also: points on the component and in the plane, swap
 // symmetry, degenerate and NaN input.
 
+#include <locus/containment/point_in_polygon.hpp>
 #include <locus/core/plane_crossing_ball.hpp>
 #include <locus/intersection/line_disk.hpp>
 #include <locus/intersection/line_polygon.hpp>
@@ -20,6 +21,7 @@
 #include <locus/intersection/segment_disk.hpp>
 #include <locus/intersection/segment_polygon.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -279,6 +281,55 @@ TYPED_TEST(IntersectionPlanar3, DiskAgainstExact) {
   });
   EXPECT_GT(compared, 5000);
   EXPECT_GT(hits, 500);
+}
+
+// In the plane of a non-convex polygon the result is the span from the first to the last common
+// point; the pieces come from the 2D query as the pair headers describe (checked here on a U).
+TYPED_TEST(IntersectionPlanar3, PolygonInPlanePieces) {
+  using T = TypeParam;
+  const PlaneFrame3<T> f{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const PlanarPolygon3<T> u{
+      f, Polygon2<T>{{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}}};
+  // The recipe: boundary crossings of the 2D segment, the ends, midpoints tested by contains().
+  const auto pieces = [&](const Segment3<T>& s3) {
+    const Segment2<T> s2{{s3.p0.x, s3.p0.y}, {s3.p1.x, s3.p1.y}};  // frame coordinates
+    std::vector<T> cuts{T(0), T(1)};
+    for (const auto& c : intersection(s2, u.polygon).crossings)
+      for (int k = 0; k < c.count; ++k) cuts.push_back(c.param_a[static_cast<std::size_t>(k)]);
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<std::pair<T, T>> out;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      if (cuts[k] == cuts[k + 1]) continue;
+      const T mid = (cuts[k] + cuts[k + 1]) / 2;
+      if (!contains(u.polygon, s2.p0 + mid * (s2.p1 - s2.p0))) continue;
+      if (!out.empty() && out.back().second == cuts[k])
+        out.back().second = cuts[k + 1];
+      else
+        out.push_back({cuts[k], cuts[k + 1]});
+    }
+    return out;
+  };
+  // Across both arms: the 3D answer spans the gap, the recipe gives the two pieces.
+  const Segment3<T> across{{-1, 2, 1}, {4, 2, 1}};
+  const auto r = intersection(across, u);
+  ASSERT_EQ(r.kind, Kind::segment);
+  EXPECT_EQ(r.param_a[0], T(0.2));
+  EXPECT_EQ(r.param_a[1], T(0.8));
+  const auto p = pieces(across);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_EQ(p[0], (std::pair<T, T>{T(0.2), T(0.4)}));
+  EXPECT_EQ(p[1], (std::pair<T, T>{T(0.6), T(0.8)}));
+  EXPECT_EQ(p.front().first, r.param_a[0]);
+  EXPECT_EQ(p.back().second, r.param_a[1]);
+  // Through the notch's corner from inside to inside: one piece, the whole segment.
+  const Segment3<T> corner{{0.5, 1.5, 1}, {1.5, 0.5, 1}};
+  const auto c = intersection(corner, u);
+  ASSERT_EQ(c.kind, Kind::segment);
+  EXPECT_EQ(c.param_a[0], T(0));
+  EXPECT_EQ(c.param_a[1], T(1));
+  const auto q = pieces(corner);
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_EQ(q[0], (std::pair<T, T>{T(0), T(1)}));
 }
 
 // Near-rim crossings with exact data: a disk in a plane spanned by two orthogonal integer vectors
