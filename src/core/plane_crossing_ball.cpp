@@ -150,4 +150,52 @@ int point_in_ball(const V& x, const V& c, double r) noexcept {
   return sum.sign();
 }
 
+int line_near_ball(const V& p, const V& d, const V& c, double r) noexcept {
+  // (a x d)_k = a_i d_j - a_j d_i with a = p - c: four monomials; 48 + 3 in all.
+  ExactPoly sum;
+  ExactPoly dd;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const ExactPoly w = ExactPoly::diff(p[i], c[i]) * ExactPoly::var(d[j]) -
+                        ExactPoly::diff(p[j], c[j]) * ExactPoly::var(d[i]);
+    sum += w * w;
+    dd += ExactPoly::var(d[k]) * ExactPoly::var(d[k]);
+  }
+  sum -= ExactPoly::var(r) * ExactPoly::var(r) * dd;
+  LOCUS_ASSERT(sum.valid(), "line_near_ball: term count");
+  return sum.sign();
+}
+
+int segment_line_near_ball(const V& p, const V& q, const V& c, double r) noexcept {
+  // (a x b)_k with a = p - c, b = q - c: p_i q_j - p_j q_i + c_i (p_j - q_j) - c_j (p_i - q_i),
+  // six monomials; 108 + 12 in all.
+  const auto var = [](double x) { return ExactPoly::var(x); };
+  ExactPoly sum;
+  ExactPoly len2;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const ExactPoly w = var(p[i]) * var(q[j]) - var(p[j]) * var(q[i]) +
+                        var(c[i]) * ExactPoly::diff(p[j], q[j]) -
+                        var(c[j]) * ExactPoly::diff(p[i], q[i]);
+    sum += w * w;
+    const ExactPoly e = ExactPoly::diff(q[k], p[k]);
+    len2 += e * e;
+  }
+  sum -= var(r) * var(r) * len2;
+  LOCUS_ASSERT(sum.valid(), "segment_line_near_ball: term count");
+  return sum.sign();
+}
+
+int dot_of_differences(const V& x, const V& y, const V& v) noexcept {
+  ExactPoly sum;
+  for (int k = 0; k < 3; ++k) sum += ExactPoly::diff(x[k], y[k]) * ExactPoly::var(v[k]);
+  return sum.sign();
+}
+
+int dot_of_differences(const V& x, const V& y, const V& z, const V& w) noexcept {
+  ExactPoly sum;
+  for (int k = 0; k < 3; ++k) sum += ExactPoly::diff(x[k], y[k]) * ExactPoly::diff(z[k], w[k]);
+  return sum.sign();
+}
+
 }  // namespace locus

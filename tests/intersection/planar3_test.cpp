@@ -449,6 +449,82 @@ TYPED_TEST(IntersectionPlanar3, DiskRimExact) {
   EXPECT_GE(out, 5);  // at least the smaller radii
 }
 
+// Components in the disk's plane near tangency, exact data (frames and triples as above): the
+// tangent at a rim point X, moved towards or away from the centre by 1/64 of the radius or with
+// the radius one ulp off; rays and segments starting or ending at X. Oracle (GMP): the nearest
+// point of the component to the centre against r decides empty / point / segment; a chord is
+// reported as a point only when it is below the rounding (r^2 - dist^2 < 64 eps r^2).
+TYPED_TEST(IntersectionPlanar3, DiskInPlaneExact) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  constexpr int frames[][2][3] = {
+      {{1, 0, 0}, {0, 1, 0}}, {{2, 2, -1}, {2, -1, 2}}, {{2, 3, 6}, {6, 2, -3}}};
+  constexpr int triples[][2] = {{3, 4}, {5, 12}, {1, 0}};
+  const int lens[] = {1, 3, 7}, hyps[] = {5, 13, 1};
+  int kinds[3] = {0, 0, 0};
+  for (int i = 0; i < 60; ++i) {
+    const int fi = rng.uniform_int(0, 2), ti = rng.uniform_int(0, 2);
+    const int alpha = triples[ti][0], beta = triples[ti][1];
+    const int move = i % 5 - 2;  // -2, 2: radius one ulp off; -1, 1: the line moved; 0: tangent
+    const int sm = 64 + (move == 1 || move == -1 ? move : 0);
+    Vec3<T> c, x, tan, n;
+    for (int k = 0; k < 3; ++k) c[k] = T(std::ldexp(double(rng.uniform_int(-64, 64)), -3));
+    for (int k = 0; k < 3; ++k) {
+      const int* u = frames[fi][0];
+      const int* v = frames[fi][1];
+      x[k] = c[k] + T(std::ldexp(double(sm * (alpha * u[k] + beta * v[k])), -8));
+      tan[k] = T(-beta * u[k] + alpha * v[k]);
+      n[k] = T(u[(k + 1) % 3] * v[(k + 2) % 3] - u[(k + 2) % 3] * v[(k + 1) % 3]);
+    }
+    T r = T(std::ldexp(double(64 * hyps[ti] * lens[fi]), -8));
+    if (move == 2) r = std::nextafter(r, T(1e30));
+    if (move == -2) r = std::nextafter(r, T(0));
+    const Disk3<T> d{c, n, r};
+    const mpq_class rr = mpq_class(double(r)) * double(r);
+    const T tau = T(rng.uniform_int(1, 4)) / 4, sigma = T(rng.uniform_int(1, 4)) / 4;
+    const auto check = [&](const auto& a, const ex::QLin& ql) {
+      // The nearest parameter to the centre, clamped to the domain, and its squared distance.
+      const ex::Q3 w = ql.o - ex::q(c);
+      mpq_class t = -ex::qdot(w, ql.d) / ex::qdot(ql.d, ql.d);
+      if (ql.lo && t < 0) t = 0;
+      if (ql.hi && t > 1) t = 1;
+      const ex::Q3 y = w + t * ql.d;
+      const mpq_class m = ex::qdot(y, y);
+      const auto res = intersection(a, d);
+      EXPECT_EQ(intersects(a, d), m <= rr) << i;
+      if (m > rr) {
+        EXPECT_EQ(res.kind, Kind::empty) << i;
+      } else if (m == rr) {
+        EXPECT_EQ(res.kind, Kind::point) << i;
+        ++kinds[1];
+      } else {
+        const double gap = mpq_class((rr - m) / rr).get_d();
+        if (gap >= 64 * double(eps_v<T>)) {
+          EXPECT_EQ(res.kind, Kind::segment) << i << " " << gap;
+        }
+        EXPECT_NE(res.kind, Kind::empty) << i;
+        ++kinds[2];
+      }
+      if (m > rr) ++kinds[0];
+    };
+    const Vec3<T> p = x - tau * tan, q = x + sigma * tan;
+    const Line3<T> line{p, tan};
+    check(line, ex::ql(line));
+    const Ray3<T> from_x{x, tan}, to_x{p, tan}, away{x, -tan};
+    check(from_x, ex::ql(from_x));
+    check(to_x, ex::ql(to_x));
+    check(away, ex::ql(away));
+    const Segment3<T> seg{p, q}, end_x{p, x}, start_x{x, q};
+    check(seg, ex::ql(seg));
+    check(end_x, ex::ql(end_x));
+    check(start_x, ex::ql(start_x));
+  }
+  EXPECT_GT(kinds[0], 20);
+  EXPECT_GT(kinds[1], 20);
+  EXPECT_GT(kinds[2], 20);
+}
+
 // A component in the disk's plane: the chord, its ends on the circle.
 TYPED_TEST(IntersectionPlanar3, DiskChords) {
   using T = TypeParam;

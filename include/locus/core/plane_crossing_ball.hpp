@@ -12,6 +12,11 @@
 //     without rounding q - p). With a = p - c, b = q - c, f0 = n.a, f1 = n.b,
 //     X - c = (f0 b - f1 a) / (f0 - f1); the result is sign(|f0 b - f1 a|^2 - r^2 (f0 - f1)^2).
 //   point_in_ball(x, c, r): sign(|x - c|^2 - r^2).
+// For a line that may lie in the plane (the distance from c to the line against r):
+//   line_near_ball(p, d, c, r) = sign(|(p - c) x d|^2 - r^2 |d|^2),
+//   segment_line_near_ball(p, q, c, r) = sign(|(p - c) x (q - c)|^2 - r^2 |q - p|^2),
+//   dot_of_differences(x, y, v) = sign((x - y).v), and (x, y, z, w) = sign((x - y).(z - w))
+//   (where the foot of c lies along the line).
 // So -1 is strictly inside the ball, 0 on its sphere, +1 outside. When the line is parallel to
 // the plane (n.d = 0, f0 = f1) there is no crossing and the result is sign(|W|^2) (>= 0): callers
 // decide parallelism first (core/plane_side.hpp, predicates.hpp). Non-finite input gives 0.
@@ -39,5 +44,21 @@ namespace locus {
 
 /// sign(|x - c|^2 - r^2), exact.
 [[nodiscard]] int point_in_ball(const Vec3<double>& x, const Vec3<double>& c, double r) noexcept;
+
+/// sign(|(p - c) x d|^2 - r^2 |d|^2): the line p + t d against the ball (exact).
+[[nodiscard]] int line_near_ball(const Vec3<double>& p, const Vec3<double>& d,
+                                 const Vec3<double>& c, double r) noexcept;
+
+/// sign(|(p - c) x (q - c)|^2 - r^2 |q - p|^2): the line through p and q against the ball.
+[[nodiscard]] int segment_line_near_ball(const Vec3<double>& p, const Vec3<double>& q,
+                                         const Vec3<double>& c, double r) noexcept;
+
+/// sign((x - y).v), exact.
+[[nodiscard]] int dot_of_differences(const Vec3<double>& x, const Vec3<double>& y,
+                                     const Vec3<double>& v) noexcept;
+
+/// sign((x - y).(z - w)), exact.
+[[nodiscard]] int dot_of_differences(const Vec3<double>& x, const Vec3<double>& y,
+                                     const Vec3<double>& z, const Vec3<double>& w) noexcept;
 
 }  // namespace locus

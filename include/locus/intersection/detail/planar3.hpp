@@ -193,6 +193,38 @@ template <Real T>
   return true;
 }
 
+/// A component lying in the disk's plane against the closed disk: which contact (none, one point,
+/// a chord) is exact (core/plane_crossing_ball.hpp: the carrier's distance to the centre, where
+/// the foot of the centre lies, the end points); a chord's ends are disk_span's (rounded), and a
+/// chord shorter than their rounding is reported as its nearest point to the centre.
+[[nodiscard]] inline bool disk_in_plane(const Lin& l, const V& c, double r, const linear2::Lin& l2,
+                                        double& t0, double& t1) noexcept {
+  const auto one = [&](double t) {
+    t0 = t1 = t;
+    return true;
+  };
+  const int near = l.hi ? segment_line_near_ball(l.o, l.q, c, r) : line_near_ball(l.o, l.d, c, r);
+  if (near > 0) return false;
+  // The foot of the centre at or before the start, or at or after the end: the end is the
+  // component's nearest point to the centre, and distances grow away from it.
+  const bool before =
+      l.lo && (l.hi ? dot_of_differences(l.o, c, l.q, l.o) : dot_of_differences(l.o, c, l.d)) >= 0;
+  const bool after = l.hi && !before && dot_of_differences(l.q, c, l.q, l.o) <= 0;
+  const V a = l.o - c;
+  const double dd = dot(l.d, l.d);
+  const double nearest =
+      before ? 0.0 : (after ? 1.0 : linear3::clamp_param(l, dd > 0 ? -dot(a, l.d) / dd : 0.0));
+  if (before || after) {
+    const int s = point_in_ball(before ? l.o : l.q, c, r);
+    if (s > 0) return false;
+    if (s == 0) return one(nearest);
+  } else if (near == 0) {
+    return one(nearest);  // tangent at the foot
+  }
+  if (disk_span(r, l2, t0, t1)) return true;
+  return one(nearest);
+}
+
 template <bool Construct, Real T>
 [[nodiscard]] inline Result polygon(const Lin& l, const PlanarPolygon3<T>& p) noexcept {
   const Frame f{vec_cast<double>(p.frame.origin), vec_cast<double>(p.frame.u),
@@ -221,7 +253,9 @@ template <bool Construct, Real T>
         return (c.hi ? crossing_in_ball_segment(c.o, c.q, f.o, f.n, r)
                      : crossing_in_ball_line(c.o, c.d, f.o, f.n, r)) <= 0;
       },
-      [&](const linear2::Lin& l2, double& t0, double& t1) { return disk_span(r, l2, t0, t1); });
+      [&](const linear2::Lin& l2, double& t0, double& t1) {
+        return disk_in_plane(l, f.o, r, l2, t0, t1);
+      });
 }
 
 }  // namespace detail::planar3
