@@ -355,7 +355,7 @@ TYPED_TEST(IntersectionPlanar3, DiskRimExact) {
   const auto qsign = [](const mpq_class& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); };
   const int big = std::is_same_v<T, float> ? 30 : 300;
   int rim = 0, in = 0, out = 0;
-  for (int i = 0; i < 30; ++i) {  // few: the exact path runs in most cases
+  for (int i = 0; i < 24; ++i) {  // few: the exact path runs in most cases
     const Pair& f = frames[rng.uniform_int(0, 4)];
     const int* tri = triples[rng.uniform_int(0, 3)];
     const bool swap = rng.uniform_int(0, 1) == 1;
@@ -444,9 +444,9 @@ TYPED_TEST(IntersectionPlanar3, DiskRimExact) {
       }
     });
   }
-  EXPECT_GE(rim, 5);  // the unperturbed cases
-  EXPECT_GE(in, 5);   // at least the larger radii
-  EXPECT_GE(out, 5);  // at least the smaller radii
+  EXPECT_GE(rim, 4);  // the unperturbed cases
+  EXPECT_GE(in, 4);   // at least the larger radii
+  EXPECT_GE(out, 4);  // at least the smaller radii
 }
 
 // Components in the disk's plane near tangency, exact data (frames and triples as above): the
