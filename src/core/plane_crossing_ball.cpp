@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Exact side of a ball for the crossing of a line with a plane
 // (include/locus/core/plane_crossing_ball.hpp): a floating-point filter, then the exact sum of
-// monomials on core's engine (exact_sign_of_terms, core/exact_poly.hpp).
+// monomials on core's engine (exact_sign_of_terms, core/exact_poly.hpp). Stack: under 40 kB.
 
 #include <locus/core/exact_poly.hpp>
 #include <locus/core/plane_crossing_ball.hpp>
@@ -49,6 +49,72 @@ bool finite(const V& v) noexcept {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// A short list of monomials and products of two lists, gathered for exact_sign_of_terms: the
+// bookkeeping of ExactPoly's product without its 26 kB temporaries (nested expressions of
+// ExactPoly here kept about half a megabyte of stack).
+template <std::size_t N>
+struct Terms {
+  std::array<ExactTerm, N> t;
+  std::size_t n = 0;
+  /// sign * a * b, term by term.
+  template <std::size_t A, std::size_t B>
+  void add_product(int sign, const Terms<A>& a, const Terms<B>& b) noexcept {
+    for (std::size_t i = 0; i < a.n; ++i)
+      for (std::size_t j = 0; j < b.n; ++j) {
+        const ExactTerm& x = a.t[i];
+        const ExactTerm& y = b.t[j];
+        LOCUS_ASSERT(n < N && x.count + y.count <= 8 && x.pow2 + y.pow2 <= 64,
+                     "plane_crossing_ball: term count");
+        ExactTerm r{sign * x.sign * y.sign, x.pow2 + y.pow2, x.count + y.count, {}};
+        for (int k = 0; k < x.count; ++k) r.f[k] = x.f[k];
+        for (int k = 0; k < y.count; ++k) r.f[x.count + k] = y.f[k];
+        t[n++] = r;
+      }
+  }
+  [[nodiscard]] int sign() const noexcept { return exact_sign_of_terms({t.data(), n}); }
+};
+
+// One monomial of three or two factors.
+template <std::size_t N>
+void add3(Terms<N>& out, int sign, double f0, double f1, double f2) noexcept {
+  LOCUS_ASSERT(out.n < N, "plane_crossing_ball: term count");
+  out.t[out.n++] = {sign, 0, 3, {f0, f1, f2}};
+}
+template <std::size_t N>
+void add2(Terms<N>& out, int sign, int pow2, double f0, double f1) noexcept {
+  LOCUS_ASSERT(out.n < N, "plane_crossing_ball: term count");
+  out.t[out.n++] = {sign, pow2, 2, {f0, f1}};
+}
+
+// The minor a_i b_j - a_j b_i with a = p - c, b = q - c, without rounded differences:
+// p_i q_j - p_j q_i + c_i (p_j - q_j) - c_j (p_i - q_i) (six monomials), times the factor m.
+template <std::size_t N>
+void add_minor(Terms<N>& out, double m, const V& p, const V& q, const V& c, int i, int j) noexcept {
+  add3(out, 1, m, p[i], q[j]);
+  add3(out, -1, m, p[j], q[i]);
+  add3(out, 1, m, c[i], p[j]);
+  add3(out, -1, m, c[i], q[j]);
+  add3(out, -1, m, c[j], p[i]);
+  add3(out, 1, m, c[j], q[i]);
+}
+
+// a_i d_j - a_j d_i with a = p - c (four monomials), times the factor m.
+template <std::size_t N>
+void add_line_cross(Terms<N>& out, double m, const V& p, const V& d, const V& c, int i,
+                    int j) noexcept {
+  add3(out, 1, m, p[i], d[j]);
+  add3(out, -1, m, c[i], d[j]);
+  add3(out, -1, m, p[j], d[i]);
+  add3(out, 1, m, c[j], d[i]);
+}
+
+// r^2 as one monomial.
+Terms<1> r_squared(double r) noexcept {
+  Terms<1> rr;
+  add2(rr, 1, 0, r, r);
+  return rr;
+}
+
 }  // namespace
 
 int crossing_in_ball_line(const V& p, const V& d, const V& c, const V& n, double r) noexcept {
@@ -70,22 +136,19 @@ int crossing_in_ball_line(const V& p, const V& d, const V& c, const V& n, double
     if (s != 2) return s;
   }
   // X - c = W / (n.d) with W_k = sum over i != k of n_i (a_k d_i - a_i d_k): 8 monomials of
-  // degree 3 each; |W|^2 has 192 and r^2 (n.d)^2 nine, within ExactPoly's capacity.
-  ExactPoly sum;
-  ExactPoly den;
+  // degree 3 each; |W|^2 has 192 and r^2 (n.d)^2 nine.
+  Terms<201> sum;
+  Terms<3> den;
   for (int k = 0; k < 3; ++k) {
-    ExactPoly w;
-    for (const int i : {other1(k), other2(k)}) {
-      const ExactPoly minor = ExactPoly::diff(p[k], c[k]) * ExactPoly::var(d[i]) -
-                              ExactPoly::diff(p[i], c[i]) * ExactPoly::var(d[k]);
-      w += ExactPoly::var(n[i]) * minor;
-    }
-    sum += w * w;
-    den += ExactPoly::var(n[k]) * ExactPoly::var(d[k]);
+    Terms<8> w;
+    // W_k = sum over i != k of n_i (a_k d_i - a_i d_k) = n_i times the cross minor (k, i).
+    for (const int i : {other1(k), other2(k)}) add_line_cross(w, n[i], p, d, c, k, i);
+    sum.add_product(1, w, w);
+    add2(den, 1, 0, n[k], d[k]);
   }
-  const ExactPoly rr = ExactPoly::var(r) * ExactPoly::var(r);
-  sum -= rr * (den * den);
-  LOCUS_ASSERT(sum.valid(), "crossing_in_ball_line: term count");
+  Terms<3> rden;
+  rden.add_product(1, r_squared(r), den);
+  sum.add_product(-1, rden, den);
   return sum.sign();
 }
 
@@ -111,91 +174,81 @@ int crossing_in_ball_segment(const V& p, const V& q, const V& c, const V& n, dou
   // W = f0 b - f1 a, W_k = sum over i != k of n_i M_ik with the minor
   // M_ik = a_i b_k - b_i a_k = p_i q_k - q_i p_k + c_i (p_k - q_k) - c_k (p_i - q_i) (six
   // monomials, never a rounded difference); |W|^2 has 3 * 144 monomials and r^2 (n.(p - q))^2
-  // 36: more than one ExactPoly holds, so the squares are gathered into one array.
-  constexpr std::size_t max_terms = 3 * 144 + 36;
-  std::array<ExactTerm, max_terms> terms;
-  std::size_t count = 0;
-  bool ok = true;
-  const auto append = [&](const ExactPoly& poly) {
-    ok = ok && poly.valid() && count + static_cast<std::size_t>(poly.size()) <= max_terms;
-    if (!ok) return;
-    for (const ExactTerm& t : poly.terms()) terms[count++] = t;
-  };
-  const auto var = [](double x) { return ExactPoly::var(x); };
-  ExactPoly den;
+  // 36 (more than an ExactPoly holds).
+  Terms<3 * 144 + 36> sum;
+  Terms<6> den;
   for (int k = 0; k < 3; ++k) {
-    ExactPoly w;
-    for (const int i : {other1(k), other2(k)}) {
-      const ExactPoly minor = var(p[i]) * var(q[k]) - var(q[i]) * var(p[k]) +
-                              var(c[i]) * ExactPoly::diff(p[k], q[k]) -
-                              var(c[k]) * ExactPoly::diff(p[i], q[i]);
-      w += var(n[i]) * minor;
-    }
-    append(w * w);
-    den += var(n[k]) * ExactPoly::diff(p[k], q[k]);
+    Terms<12> w;
+    for (const int i : {other1(k), other2(k)}) add_minor(w, n[i], p, q, c, i, k);
+    sum.add_product(1, w, w);
+    add2(den, 1, 0, n[k], p[k]);
+    add2(den, -1, 0, n[k], q[k]);
   }
-  append(-(var(r) * var(r) * (den * den)));
-  LOCUS_ASSERT(ok, "crossing_in_ball_segment: term count");
-  if (!ok) return 0;
-  return exact_sign_of_terms({terms.data(), count});
+  Terms<6> rden;
+  rden.add_product(1, r_squared(r), den);
+  sum.add_product(-1, rden, den);
+  return sum.sign();
 }
 
 int point_in_ball(const V& x, const V& c, double r) noexcept {
-  ExactPoly sum = -(ExactPoly::var(r) * ExactPoly::var(r));
+  // sum of x_k^2 - 2 x_k c_k + c_k^2, minus r^2: ten monomials.
+  std::array<ExactTerm, 10> t;
   for (int k = 0; k < 3; ++k) {
-    const ExactPoly a = ExactPoly::diff(x[k], c[k]);
-    sum += a * a;
+    t[static_cast<std::size_t>(3 * k)] = {1, 0, 2, {x[k], x[k]}};
+    t[static_cast<std::size_t>(3 * k + 1)] = {-1, 1, 2, {x[k], c[k]}};
+    t[static_cast<std::size_t>(3 * k + 2)] = {1, 0, 2, {c[k], c[k]}};
   }
-  LOCUS_ASSERT(sum.valid(), "point_in_ball: term count");
-  return sum.sign();
+  t[9] = {-1, 0, 2, {r, r}};
+  return exact_sign_of_terms(t);
 }
 
 int line_near_ball(const V& p, const V& d, const V& c, double r) noexcept {
   // (a x d)_k = a_i d_j - a_j d_i with a = p - c: four monomials; 48 + 3 in all.
-  ExactPoly sum;
-  ExactPoly dd;
+  Terms<51> sum;
   for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const ExactPoly w = ExactPoly::diff(p[i], c[i]) * ExactPoly::var(d[j]) -
-                        ExactPoly::diff(p[j], c[j]) * ExactPoly::var(d[i]);
-    sum += w * w;
-    dd += ExactPoly::var(d[k]) * ExactPoly::var(d[k]);
+    Terms<4> w;
+    add_line_cross(w, 1.0, p, d, c, (k + 1) % 3, (k + 2) % 3);
+    sum.add_product(1, w, w);
+    LOCUS_ASSERT(sum.n < 51, "line_near_ball: term count");
+    sum.t[sum.n++] = {-1, 0, 4, {r, r, d[k], d[k]}};
   }
-  sum -= ExactPoly::var(r) * ExactPoly::var(r) * dd;
-  LOCUS_ASSERT(sum.valid(), "line_near_ball: term count");
   return sum.sign();
 }
 
 int segment_line_near_ball(const V& p, const V& q, const V& c, double r) noexcept {
-  // (a x b)_k with a = p - c, b = q - c: p_i q_j - p_j q_i + c_i (p_j - q_j) - c_j (p_i - q_i),
-  // six monomials; 108 + 12 in all.
-  const auto var = [](double x) { return ExactPoly::var(x); };
-  ExactPoly sum;
-  ExactPoly len2;
+  // (a x b)_k with a = p - c, b = q - c: the six-monomial minor; 108 + 9 in all.
+  Terms<117> sum;
   for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const ExactPoly w = var(p[i]) * var(q[j]) - var(p[j]) * var(q[i]) +
-                        var(c[i]) * ExactPoly::diff(p[j], q[j]) -
-                        var(c[j]) * ExactPoly::diff(p[i], q[i]);
-    sum += w * w;
-    const ExactPoly e = ExactPoly::diff(q[k], p[k]);
-    len2 += e * e;
+    Terms<6> w;
+    add_minor(w, 1.0, p, q, c, (k + 1) % 3, (k + 2) % 3);
+    sum.add_product(1, w, w);
+    // - r^2 (q_k - p_k)^2 = - r^2 q_k^2 + 2 r^2 q_k p_k - r^2 p_k^2.
+    LOCUS_ASSERT(sum.n + 3 <= 117, "segment_line_near_ball: term count");
+    sum.t[sum.n++] = {-1, 0, 4, {r, r, q[k], q[k]}};
+    sum.t[sum.n++] = {1, 1, 4, {r, r, q[k], p[k]}};
+    sum.t[sum.n++] = {-1, 0, 4, {r, r, p[k], p[k]}};
   }
-  sum -= var(r) * var(r) * len2;
-  LOCUS_ASSERT(sum.valid(), "segment_line_near_ball: term count");
   return sum.sign();
 }
 
 int dot_of_differences(const V& x, const V& y, const V& v) noexcept {
-  ExactPoly sum;
-  for (int k = 0; k < 3; ++k) sum += ExactPoly::diff(x[k], y[k]) * ExactPoly::var(v[k]);
-  return sum.sign();
+  std::array<ExactTerm, 6> t;
+  for (int k = 0; k < 3; ++k) {
+    t[static_cast<std::size_t>(2 * k)] = {1, 0, 2, {x[k], v[k]}};
+    t[static_cast<std::size_t>(2 * k + 1)] = {-1, 0, 2, {y[k], v[k]}};
+  }
+  return exact_sign_of_terms(t);
 }
 
 int dot_of_differences(const V& x, const V& y, const V& z, const V& w) noexcept {
-  ExactPoly sum;
-  for (int k = 0; k < 3; ++k) sum += ExactPoly::diff(x[k], y[k]) * ExactPoly::diff(z[k], w[k]);
-  return sum.sign();
+  std::array<ExactTerm, 12> t;
+  for (int k = 0; k < 3; ++k) {
+    t[static_cast<std::size_t>(4 * k)] = {1, 0, 2, {x[k], z[k]}};
+    t[static_cast<std::size_t>(4 * k + 1)] = {-1, 0, 2, {x[k], w[k]}};
+    t[static_cast<std::size_t>(4 * k + 2)] = {-1, 0, 2, {y[k], z[k]}};
+    t[static_cast<std::size_t>(4 * k + 3)] = {1, 0, 2, {y[k], w[k]}};
+  }
+  return exact_sign_of_terms(t);
 }
 
 }  // namespace locus

@@ -24,7 +24,7 @@
 // difference within [2^-120, 2^120]), else the exact sum on core's engine
 // (core/exact_poly.hpp's exact_sign_of_terms; about 200 terms for the line, 470 for the
 // segment). Float input is promoted exactly. Cost: about 80 flops when the filter decides, tens
-// of microseconds otherwise; no allocation (the segment's exact path uses about 100 kB of stack).
+// of microseconds otherwise; no allocation (at most about 40 kB of stack).
 // Compiled in src/core/plane_crossing_ball.cpp.
 
 #include <locus/core/scalar.hpp>
