@@ -22,8 +22,13 @@
 // detail/planar3.hpp): the side of the plane {dot(normal, X - origin) = 0} is exact; a crossing
 // point is rounded, mapped to frame coordinates (param_b) and tested exactly against the closed
 // polygon. A ray in the plane: the 2D problem in frame coordinates (rounded), reported as the
-// segment (or point) between its first and last common points (pieces between may leave a
-// non-convex polygon: use the 2D query in the frame for them).
+// segment (or point) between its first and last common points. The result holds one segment:
+// against a non-convex polygon that span may cross gaps outside it. For the pieces, map the
+// ray to frame coordinates (st = ((X - origin).u, (X - origin).v) of its points; parameters
+// are kept) and call the 2D intersection(Ray2, polygon.polygon) above: its boundary crossings,
+// in order, with the ray's own ends, cut it into spans that lie wholly inside or outside;
+// a span is a piece when its midpoint is inside (contains(), containment/point_in_polygon.hpp,
+// even-odd; adjacent pieces join); a crossing between two outside spans is a touching point.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>

@@ -3,9 +3,11 @@
 // Shared engine of a 3D linear component against a planar region given by a frame (origin, u,
 // v, normal) and a closed 2D region in frame coordinates: a planar polygon (PlanarPolygon3) or
 // a disk (Disk3); row int3.linear-polygon. Internal: include a pair header. The region's plane is
-// { X : dot(normal, X - origin) = 0 } as given; sides of it are exact signs; the crossing point
-// is rounded, then expressed in frame coordinates and tested against the 2D region.
+// { X : dot(normal, X - origin) = 0 } as given; sides of it are exact signs. A polygon tests the
+// rounded crossing point in frame coordinates; a disk decides its rim exactly on the unrounded
+// crossing (core/plane_crossing_ball.hpp).
 
+#include <locus/core/plane_crossing_ball.hpp>
 #include <locus/core/plane_side.hpp>
 #include <locus/core/predicates.hpp>
 #include <locus/core/scalar.hpp>
@@ -60,18 +62,21 @@ struct Frame {
   return {dot(w, f.u), dot(w, f.v)};
 }
 
-/// The component against the region: inside(st) tests a frame point (closed region);
-/// coplanar(l2, tmin, tmax, ...) gives the extreme common parameters of a 2D component.
-template <bool Construct, class Inside, class Coplanar>
+/// The component against the region: inside(x, st) tests an input point x of the plane (frame
+/// point st, rounded) and crossing_inside(l, st) the crossing of l's carrier with the plane
+/// (closed region); coplanar(l2, tmin, tmax, ...) gives the extreme common parameters of a 2D
+/// component.
+template <bool Construct, class Inside, class CrossingInside, class Coplanar>
 [[nodiscard]] inline Result run(const Lin& l, const Frame& f, Inside&& inside,
-                                Coplanar&& coplanar) noexcept {
+                                CrossingInside&& crossing_inside, Coplanar&& coplanar) noexcept {
   Result r;
   if (!linear3::finite(l) || !linear3::finite(f.o) || !linear3::finite(f.u) ||
       !linear3::finite(f.v) || !linear3::finite(f.n) || f.n == V{})
     return r;
-  const auto point = [&](const V& x, double t) {
+  // The point x (parameter t) when it lies in the region; exact_point: x is an input point.
+  const auto point = [&](const V& x, double t, bool exact_point) {
     const V2 st = to_frame(f, x);
-    if (!inside(st)) return r;
+    if (!(exact_point ? inside(x, st) : crossing_inside(l, st))) return r;
     Result p;
     p.kind = Kind::point;
     p.count = 1;
@@ -81,7 +86,7 @@ template <bool Construct, class Inside, class Coplanar>
     return p;
   };
   const Sign s0 = side(f, l.o);
-  if (linear3::is_point(l)) return s0 == Sign::zero ? point(l.o, 0.0) : r;
+  if (linear3::is_point(l)) return s0 == Sign::zero ? point(l.o, 0.0, true) : r;
   Sign s1 = Sign::zero, sd = Sign::zero;
   if (l.hi) {
     s1 = side(f, l.q);
@@ -111,8 +116,8 @@ template <bool Construct, class Inside, class Coplanar>
     }
     return r;
   }
-  if (s0 == Sign::zero) return point(l.o, 0.0);
-  if (l.hi && s1 == Sign::zero) return point(l.q, 1.0);
+  if (s0 == Sign::zero) return point(l.o, 0.0, true);
+  if (l.hi && s1 == Sign::zero) return point(l.q, 1.0, true);
   if (l.lo && s0 == sd) return r;  // moving away from the plane
   (void)Construct;
   double t;
@@ -122,7 +127,7 @@ template <bool Construct, class Inside, class Coplanar>
   } else {
     t = linear3::clamp_param(l, -dot_accurate(f.n, l.o - f.o) / dot_accurate(f.n, l.d));
   }
-  return point(linear3::at(l, t), t);
+  return point(linear3::at(l, t), t, false);
 }
 
 /// Whether a frame point lies in the closed polygon (exact on the rounded point): on an edge,
@@ -188,6 +193,38 @@ template <Real T>
   return true;
 }
 
+/// A component lying in the disk's plane against the closed disk: which contact (none, one point,
+/// a chord) is exact (core/plane_crossing_ball.hpp: the carrier's distance to the centre, where
+/// the foot of the centre lies, the end points); a chord's ends are disk_span's (rounded), and a
+/// chord shorter than their rounding is reported as its nearest point to the centre.
+[[nodiscard]] inline bool disk_in_plane(const Lin& l, const V& c, double r, const linear2::Lin& l2,
+                                        double& t0, double& t1) noexcept {
+  const auto one = [&](double t) {
+    t0 = t1 = t;
+    return true;
+  };
+  const int near = l.hi ? segment_line_near_ball(l.o, l.q, c, r) : line_near_ball(l.o, l.d, c, r);
+  if (near > 0) return false;
+  // The foot of the centre at or before the start, or at or after the end: the end is the
+  // component's nearest point to the centre, and distances grow away from it.
+  const bool before =
+      l.lo && (l.hi ? dot_of_differences(l.o, c, l.q, l.o) : dot_of_differences(l.o, c, l.d)) >= 0;
+  const bool after = l.hi && !before && dot_of_differences(l.q, c, l.q, l.o) <= 0;
+  const V a = l.o - c;
+  const double dd = dot(l.d, l.d);
+  const double nearest =
+      before ? 0.0 : (after ? 1.0 : linear3::clamp_param(l, dd > 0 ? -dot(a, l.d) / dd : 0.0));
+  if (before || after) {
+    const int s = point_in_ball(before ? l.o : l.q, c, r);
+    if (s > 0) return false;
+    if (s == 0) return one(nearest);
+  } else if (near == 0) {
+    return one(nearest);  // tangent at the foot
+  }
+  if (disk_span(r, l2, t0, t1)) return true;
+  return one(nearest);
+}
+
 template <bool Construct, Real T>
 [[nodiscard]] inline Result polygon(const Lin& l, const PlanarPolygon3<T>& p) noexcept {
   const Frame f{vec_cast<double>(p.frame.origin), vec_cast<double>(p.frame.u),
@@ -195,8 +232,10 @@ template <bool Construct, Real T>
   const std::span<const Vec2<T>> v(p.polygon.vertices);
   for (const Vec2<T>& q : v)
     if (!is_finite(q)) return {};
+  const auto in_region = [&](const V2& st) { return in_polygon(v, st); };
   return run<Construct>(
-      l, f, [&](const V2& st) { return in_polygon(v, st); },
+      l, f, [&](const V&, const V2& st) { return in_region(st); },
+      [&](const Lin&, const V2& st) { return in_region(st); },
       [&](const linear2::Lin& l2, double& t0, double& t1) { return polygon_span(v, l2, t0, t1); });
 }
 
@@ -207,9 +246,16 @@ template <bool Construct, Real T>
                 vec_cast<double>(d.normal)};
   const double r = double(d.radius);
   if (!std::isfinite(r) || r < 0 || ax.u == Vec3<T>{}) return {};
+  // The rim exactly: |X - center| <= radius for the input point or the unrounded crossing.
   return run<Construct>(
-      l, f, [&](const V2& st) { return dot(st, st) <= r * r; },
-      [&](const linear2::Lin& l2, double& t0, double& t1) { return disk_span(r, l2, t0, t1); });
+      l, f, [&](const V& x, const V2&) { return point_in_ball(x, f.o, r) <= 0; },
+      [&](const Lin& c, const V2&) {
+        return (c.hi ? crossing_in_ball_segment(c.o, c.q, f.o, f.n, r)
+                     : crossing_in_ball_line(c.o, c.d, f.o, f.n, r)) <= 0;
+      },
+      [&](const linear2::Lin& l2, double& t0, double& t1) {
+        return disk_in_plane(l, f.o, r, l2, t0, t1);
+      });
 }
 
 }  // namespace detail::planar3
