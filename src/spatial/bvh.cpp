@@ -261,9 +261,9 @@ struct BvhCore {
           for (std::size_t c = 0; c < sizeof(typename B::Node); c += 64) __builtin_prefetch(q + c);
         } else if (!b.tris_.empty()) {
           const char* q = reinterpret_cast<const char*>(b.tris_.data() + hit[i].child / 4);
-          __builtin_prefetch(q);
-          __builtin_prefetch(q + 64);
-          __builtin_prefetch(q + 128);
+          for (std::size_t c = 0; c < sizeof(typename B::Packet); c += 64)
+            __builtin_prefetch(q + c);
+          __builtin_prefetch(q + sizeof(typename B::Packet) - 1);
         }
         stack[sp++] = hit[i];
       }
@@ -304,7 +304,7 @@ struct BvhCore {
                return leaf_hits(
                    b, lin, first, count,
                    [&](std::uint32_t s, const TriangleHit<T>& h) LOCUS_ALWAYS_INLINE_LAMBDA {
-                     const std::uint32_t id = b.ids_[s];
+                     const std::uint32_t id = b.tris_[s / 4].id[s % 4];
                      const bool better = out.triangle == MeshHit<T>::none
                                              ? h.t <= best
                                              : (h.t < best || (h.t == best && id < out.triangle));
@@ -343,7 +343,7 @@ struct BvhCore {
     float tb = frame_t(fr, static_cast<double>(tmax));
     traverse(b, fr, tb, false, [&](std::uint32_t first, std::uint32_t count, float&) {
       return leaf_hits(b, lin, first, count, [&](std::uint32_t s, const TriangleHit<T>& h) {
-        if (h.t <= tmax) out.push_back({b.ids_[s], h.t, h.barycentric, h.front});
+        if (h.t <= tmax) out.push_back({b.tris_[s / 4].id[s % 4], h.t, h.barycentric, h.front});
         return true;
       });
     });
@@ -692,6 +692,7 @@ Bvh<T>::Bvh(std::span<const Vec3<T>> vertices,
   build(std::move(boxes), options, true);
   tris_.assign(ids_.size() / 4, Packet{});
   for (std::size_t s = 0; s < ids_.size(); ++s) {
+    tris_[s / 4].id[s % 4] = ids_[s];
     if (ids_[s] == MeshHit<T>::none) continue;
     const auto& t = triangles[ids_[s]];
     for (int k = 0; k < 3; ++k)

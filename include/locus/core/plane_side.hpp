@@ -160,7 +160,7 @@ template <Real T>
   if (ps::edge_differences_exact(o, d, a, b, ea, eb)) {
     // det[d; ea; eb] = orient3d(0, d, ea, eb): differences from the origin are exact, so its
     // adaptive stage B is the exact determinant (a few expansion products, no big integers).
-    return detail::orient3d_slow(Vec3<double>{}, d, ea, eb);
+    return detail::orient3d_adaptive(Vec3<double>{}, d, ea, eb);
   }
   return static_cast<Sign>(ps::line_edge_exact(o, d, a, b));
 }

@@ -183,9 +183,11 @@ class Bvh {
   void build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool packets);
 
  public:
-  /// Four triangles in structure-of-arrays form: v[vertex][axis][lane].
+  /// Four triangles in structure-of-arrays form: v[vertex][axis][lane], and their input
+  /// indices (MeshHit::none: padding), read with the vertices rather than from another array.
   struct Packet {
     T v[3][3][4];
+    std::uint32_t id[4];
   };
 
  private:
