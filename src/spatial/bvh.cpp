@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 // Bvh (include/locus/spatial/bvh.hpp): binned-SAH build, collapse to 8-wide nodes, and the
 // ray, overlap and nearest-point traversals, compiled once for float and double. The ray
-// traversals are compiled for three instruction sets (src/distance/lanes.hpp) and picked at the
+// traversals are compiled for three instruction sets (src/core/lanes.hpp) and picked at the
 // call. Design and error analysis of the conservative slab test: docs/notes/spatial.md.
 
 #include <locus/distance/point_triangle.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/spatial/bvh.hpp>
 
-#include "../distance/lanes.hpp"
+#include "../core/lanes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -44,9 +44,10 @@ void* bvh_allocate(std::size_t bytes, std::size_t align) {
   return p;
 }
 
-void bvh_deallocate(void* p, std::size_t bytes, std::size_t align) noexcept {
+void bvh_deallocate(void* p, std::size_t, std::size_t align) noexcept {
+  // Unsized: clang before 19 declares the sized forms only with -fsized-deallocation.
   align = std::max(align, alignof(std::max_align_t));
-  ::operator delete(p, bytes, std::align_val_t(align));
+  ::operator delete(p, std::align_val_t(align));
 }
 
 namespace {
