@@ -4,13 +4,13 @@
 // include/locus/distance/batch.hpp: the lane kernels that more than one pair uses (point -
 // triangle, segment - segment; the segment - triangle kernel is built from both) and the entry
 // points' plumbing. Each kernel evaluates the branch-free fast path of one pair's per-query
-// function (the same operations in the same order, mirrored lane by lane; see lanes.hpp) for W
+// function (the same operations in the same order, mirrored lane by lane; see core/lanes.hpp) for W
 // queries at once, and marks the lanes that path does not cover; lanes::run() recomputes those
 // with the per-query function. The batch_*.cpp files are compiled with -ffp-contract=off
 // (CMakeLists.txt) so that no operation is fused and every lane rounds as the scalar code does.
 // One translation unit per pair keeps each compile short and lets them build in parallel.
 
-#include "lanes.hpp"
+#include "../core/lanes.hpp"
 
 #include <locus/config.hpp>
 #include <locus/distance/batch.hpp>
@@ -337,7 +337,7 @@ Sources<A, B> sources(const A& a, std::span<const B> b, std::span<T> out) {
 
 // Defines sqr_distances for one pair (A, B) and scalar type T in its three forms (span-span,
 // span-one, one-span), over run<T>(source_a, source_b, out, n) compiled once per instruction set
-// (lanes.hpp, LOCUS_LANE_VERSIONS). Used inside namespace locus.
+// (core/lanes.hpp, LOCUS_LANE_VERSIONS). Used inside namespace locus.
 #define LOCUS_BATCH_DEFINE(A, B, T, run)                                                   \
   namespace {                                                                              \
   LOCUS_LANE_VERSIONS(run##_##T,                                                           \

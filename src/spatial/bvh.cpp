@@ -1,38 +1,70 @@
 // SPDX-License-Identifier: BSL-1.0
-// Bvh (include/locus/spatial/bvh.hpp): binned-SAH build, collapse to 4-wide nodes, and the
+// Bvh (include/locus/spatial/bvh.hpp): binned-SAH build, collapse to 8-wide nodes, and the
 // ray, overlap and nearest-point traversals, compiled once for float and double. The ray
-// traversals are compiled for three instruction sets (src/distance/lanes.hpp) and picked at the
+// traversals are compiled for three instruction sets (src/core/lanes.hpp) and picked at the
 // call. Design and error analysis of the conservative slab test: docs/notes/spatial.md.
 
 #include <locus/distance/point_triangle.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/spatial/bvh.hpp>
 
-#include "../distance/lanes.hpp"
+#include "../core/lanes.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <cstring>
+#include <new>
 #include <thread>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace locus {
 
 namespace detail {
 
+void* bvh_allocate(std::size_t bytes, std::size_t align) {
+  align = std::max(align, alignof(std::max_align_t));
+  void* p = ::operator new(bytes, std::align_val_t(align));
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  // Advice only (ignored where unsupported), given before the first touch so that the faults
+  // themselves map huge pages: the 2 MiB-aligned interior of a block of 4 MiB or more (such
+  // blocks are the allocator's own fresh mappings).
+  constexpr std::uintptr_t huge = std::uintptr_t(1) << 21;
+  if (bytes >= 2 * huge) {
+    const auto first = reinterpret_cast<std::uintptr_t>(p);
+    const std::uintptr_t begin = (first + huge - 1) & ~(huge - 1);
+    const std::uintptr_t end = (first + bytes) & ~(huge - 1);
+    if (end > begin) (void)::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+  }
+#endif
+  return p;
+}
+
+void bvh_deallocate(void* p, std::size_t, std::size_t align) noexcept {
+  // Unsized: clang before 19 declares the sized forms only with -fsized-deallocation.
+  align = std::max(align, alignof(std::max_align_t));
+  ::operator delete(p, std::align_val_t(align));
+}
+
 namespace {
 
 namespace l3 = detail::linear3;
 
-typedef float F4 __attribute__((vector_size(16)));
-typedef int I4 __attribute__((vector_size(16)));
+typedef float F8 __attribute__((vector_size(32)));
+typedef int I8 __attribute__((vector_size(32)));
+constexpr int kWidth = Bvh<float>::width;
 typedef double D4 __attribute__((vector_size(32)));
 typedef long long L4 __attribute__((vector_size(32)));
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 // Stack capacity of a traversal: the build bounds the depth by kMaxDepth binary levels (the SAH
-// levels, then object medians), and a 4-wide traversal holds at most 3 entries per level.
+// levels, then object medians), and a traversal holds at most kWidth - 1 entries per level.
 constexpr int kSahDepth = 40;
-constexpr int kStack = 3 * (kSahDepth + 32) + 8;
+constexpr int kStack = (kWidth - 1) * (kSahDepth + 32) + 8;
 
 /// The float nearest x rounded down (up): outward rounding of box bounds.
 inline float round_down(double x) noexcept {
@@ -46,12 +78,12 @@ inline float round_up(double x) noexcept {
   return f;
 }
 
-LOCUS_ALWAYS_INLINE inline F4 load4(const float* p) noexcept {
-  F4 v;
+LOCUS_ALWAYS_INLINE inline F8 load8(const float* p) noexcept {
+  F8 v;
   std::memcpy(&v, p, sizeof v);
   return v;
 }
-LOCUS_ALWAYS_INLINE inline F4 splat4(float x) noexcept { return F4{x, x, x, x}; }
+LOCUS_ALWAYS_INLINE inline F8 splat8(float x) noexcept { return F8{x, x, x, x, x, x, x, x}; }
 
 /// The ray in the scaled float frame of the boxes (docs/notes/spatial.md, "Conservative slabs"):
 /// per axis, the near plane (lo when the direction is non-negative), origins moved by
@@ -85,7 +117,7 @@ bool make_frame(const Ray3<T>& ray, int scale_exp, RayFrame& f) noexcept {
   for (int a = 0; a < 3; ++a) {
     const float df = static_cast<float>(ds[a]);
     const bool pos = !std::signbit(df);
-    f.inv[a] = 1.0f / df;  // +-inf for a zero component: handled by the NaN rule of slab4
+    f.inv[a] = 1.0f / df;  // +-inf for a zero component: handled by the NaN rule of slab
     f.near_row[a] = pos ? a : a + 3;
     f.far_row[a] = pos ? a + 3 : a;
     f.on[a] = static_cast<float>(pos ? os[a] + delta : os[a] - delta);
@@ -101,30 +133,32 @@ inline float frame_t(const RayFrame& f, double t) noexcept {
   return round_up(s);
 }
 
-/// The four children's slab intervals against [0, tmax]: bit k set when child k may be met;
+/// The children's slab intervals against [0, tmax]: bit k set when child k may be met;
 /// tn receives the (conservative) entry parameters. A NaN lane of one axis (0 * inf) imposes
 /// no constraint: `t > tn ? t : tn` keeps tn.
 template <class Node>
-LOCUS_ALWAYS_INLINE inline unsigned slab4(const Node& nd, const RayFrame& r, float tmax,
-                                          F4& tn) noexcept {
+LOCUS_ALWAYS_INLINE inline unsigned slab(const Node& nd, const RayFrame& r, float tmax,
+                                         F8& tn) noexcept {
   if (!r.cull) {
-    tn = splat4(0.0f);
+    tn = splat8(0.0f);
     unsigned m = 0;
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < kWidth; ++k)
       if (nd.count[k] != 0) m |= 1u << k;
     return m;
   }
-  F4 lo = splat4(0.0f), hi = splat4(tmax);
+  F8 lo = splat8(0.0f), hi = splat8(tmax);
   for (int a = 0; a < 3; ++a) {
-    const F4 inv = splat4(r.inv[a]);
-    const F4 t0 = (load4(nd.box[r.near_row[a]]) - splat4(r.on[a])) * inv;
-    const F4 t1 = (load4(nd.box[r.far_row[a]]) - splat4(r.of[a])) * inv;
+    const F8 inv = splat8(r.inv[a]);
+    const F8 t0 = (load8(nd.box[r.near_row[a]]) - splat8(r.on[a])) * inv;
+    const F8 t1 = (load8(nd.box[r.far_row[a]]) - splat8(r.of[a])) * inv;
     lo = t0 > lo ? t0 : lo;
     hi = t1 < hi ? t1 : hi;
   }
-  const I4 m = lo <= hi;
+  const I8 m = lo <= hi;
   tn = lo;
-  return (m[0] ? 1u : 0u) | (m[1] ? 2u : 0u) | (m[2] ? 4u : 0u) | (m[3] ? 8u : 0u);
+  unsigned bits = 0;
+  for (int k = 0; k < kWidth; ++k) bits |= (m[k] ? 1u : 0u) << k;
+  return bits;
 }
 
 LOCUS_ALWAYS_INLINE inline D4 splatd(double x) noexcept { return D4{x, x, x, x}; }
@@ -212,12 +246,12 @@ struct BvhCore {
 #ifdef LOCUS_BVH_STATS
       ++g_nodes;
 #endif
-      F4 tn;
-      unsigned m = slab4(nd, fr, tb, tn);
+      F8 tn;
+      unsigned m = slab(nd, fr, tb, tn);
       if (!m) continue;
-      Entry hit[4];
+      Entry hit[kWidth];
       int nh = 0;
-      for (int k = 0; k < 4; ++k)
+      for (int k = 0; k < kWidth; ++k)
         if (m & (1u << k)) hit[nh++] = {nd.child[k], nd.count[k], tn[k]};
       if (sorted)  // nearest last, so that it is popped first
         for (int i = 1; i < nh; ++i)
@@ -225,13 +259,12 @@ struct BvhCore {
       for (int i = 0; i < nh; ++i) {
         if (hit[i].count == B::internal_child) {
           const char* q = reinterpret_cast<const char*>(&b.nodes_[hit[i].child]);
-          __builtin_prefetch(q);
-          __builtin_prefetch(q + 64);
+          for (std::size_t c = 0; c < sizeof(typename B::Node); c += 64) __builtin_prefetch(q + c);
         } else if (!b.tris_.empty()) {
           const char* q = reinterpret_cast<const char*>(b.tris_.data() + hit[i].child / 4);
-          __builtin_prefetch(q);
-          __builtin_prefetch(q + 64);
-          __builtin_prefetch(q + 128);
+          for (std::size_t c = 0; c < sizeof(typename B::Packet); c += 64)
+            __builtin_prefetch(q + c);
+          __builtin_prefetch(q + sizeof(typename B::Packet) - 1);
         }
         stack[sp++] = hit[i];
       }
@@ -267,20 +300,23 @@ struct BvhCore {
     const l3::Lin lin = l3::as_lin(ray);
     float tb = frame_t(fr, static_cast<double>(tmax));
     T best = tmax;
-    traverse(b, fr, tb, true, [&](std::uint32_t first, std::uint32_t count, float& tbr) {
-      return leaf_hits(b, lin, first, count, [&](std::uint32_t s, const TriangleHit<T>& h) {
-        const std::uint32_t id = b.ids_[s];
-        const bool better = out.triangle == MeshHit<T>::none
-                                ? h.t <= best
-                                : (h.t < best || (h.t == best && id < out.triangle));
-        if (better) {
-          out = {id, h.t, h.barycentric, h.front};
-          best = h.t;
-          tbr = frame_t(fr, static_cast<double>(best));
-        }
-        return true;
-      });
-    });
+    traverse(b, fr, tb, true,
+             [&](std::uint32_t first, std::uint32_t count, float& tbr) LOCUS_ALWAYS_INLINE_LAMBDA {
+               return leaf_hits(
+                   b, lin, first, count,
+                   [&](std::uint32_t s, const TriangleHit<T>& h) LOCUS_ALWAYS_INLINE_LAMBDA {
+                     const std::uint32_t id = b.tris_[s / 4].id[s % 4];
+                     const bool better = out.triangle == MeshHit<T>::none
+                                             ? h.t <= best
+                                             : (h.t < best || (h.t == best && id < out.triangle));
+                     if (better) {
+                       out = {id, h.t, h.barycentric, h.front};
+                       best = h.t;
+                       tbr = frame_t(fr, static_cast<double>(best));
+                     }
+                     return true;
+                   });
+             });
   }
 
   LOCUS_ALWAYS_INLINE static void any(const B& b, const Ray3<T>& ray, T tmax, bool& out) {
@@ -289,12 +325,15 @@ struct BvhCore {
     if (b.tris_.empty() || !(tmax >= T(0)) || !make_frame(ray, b.scale_exp_, fr)) return;
     const l3::Lin lin = l3::as_lin(ray);
     float tb = frame_t(fr, static_cast<double>(tmax));
-    traverse(b, fr, tb, false, [&](std::uint32_t first, std::uint32_t count, float&) {
-      return leaf_hits(b, lin, first, count, [&](std::uint32_t, const TriangleHit<T>& h) {
-        if (h.t <= tmax) out = true;
-        return !out;
-      });
-    });
+    traverse(b, fr, tb, false,
+             [&](std::uint32_t first, std::uint32_t count, float&) LOCUS_ALWAYS_INLINE_LAMBDA {
+               return leaf_hits(b, lin, first, count,
+                                [&](std::uint32_t, const TriangleHit<T>& h)
+                                    LOCUS_ALWAYS_INLINE_LAMBDA {
+                                      if (h.t <= tmax) out = true;
+                                      return !out;
+                                    });
+             });
   }
 
   static void all(const B& b, const Ray3<T>& ray, T tmax, std::vector<MeshHit<T>>& out) {
@@ -305,7 +344,7 @@ struct BvhCore {
     float tb = frame_t(fr, static_cast<double>(tmax));
     traverse(b, fr, tb, false, [&](std::uint32_t first, std::uint32_t count, float&) {
       return leaf_hits(b, lin, first, count, [&](std::uint32_t s, const TriangleHit<T>& h) {
-        if (h.t <= tmax) out.push_back({b.ids_[s], h.t, h.barycentric, h.front});
+        if (h.t <= tmax) out.push_back({b.tris_[s / 4].id[s % 4], h.t, h.barycentric, h.front});
         return true;
       });
     });
@@ -322,11 +361,13 @@ struct BvhCore {
 namespace {
 
 template <Real T>
-void closest_run(const Bvh<T>& b, const Ray3<T>* rays, MeshHit<T>* out, std::size_t n, T tmax) {
+LOCUS_ALWAYS_INLINE inline void closest_run(const Bvh<T>& b, const Ray3<T>* rays, MeshHit<T>* out,
+                                            std::size_t n, T tmax) {
   for (std::size_t i = 0; i < n; ++i) BvhCore<T>::closest(b, rays[i], tmax, out[i]);
 }
 template <Real T>
-void any_run(const Bvh<T>& b, const Ray3<T>* rays, std::uint8_t* out, std::size_t n, T tmax) {
+LOCUS_ALWAYS_INLINE inline void any_run(const Bvh<T>& b, const Ray3<T>* rays, std::uint8_t* out,
+                                        std::size_t n, T tmax) {
   for (std::size_t i = 0; i < n; ++i) {
     bool h = false;
     BvhCore<T>::any(b, rays[i], tmax, h);
@@ -556,8 +597,8 @@ void Bvh<T>::build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool p
   }
   const std::vector<detail::BNode> bn = detail::build_binary(prims, bins, leaf_size);
 
-  // Collapse: each 4-wide node takes the children of a binary node, then repeatedly opens its
-  // internal child of largest area until it has four.
+  // Collapse: each 8-wide node takes the children of a binary node, then repeatedly opens its
+  // internal child of largest area until it has eight.
   nodes_.clear();
   ids_.clear();
   boxes_.clear();
@@ -570,7 +611,7 @@ void Bvh<T>::build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool p
   while (!work.empty()) {
     const Work w = work.back();
     work.pop_back();
-    std::uint32_t list[4];
+    std::uint32_t list[width];
     int nl = 0;
     if (bn[w.bnode].leaf) {
       list[nl++] = w.bnode;
@@ -578,7 +619,7 @@ void Bvh<T>::build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool p
       list[nl++] = bn[w.bnode].a;
       list[nl++] = bn[w.bnode].b;
     }
-    while (nl < 4) {
+    while (nl < width) {
       int pick = -1;
       double area = -1.0;
       for (int j = 0; j < nl; ++j)
@@ -590,7 +631,7 @@ void Bvh<T>::build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool p
       list[nl++] = p.b;
     }
     Node nd;
-    for (int j = 0; j < 4; ++j) {
+    for (int j = 0; j < width; ++j) {
       for (int a = 0; a < 3; ++a) {
         nd.box[a][j] = j < nl ? bn[list[j]].box.lo[a] : detail::kInf;
         nd.box[a + 3][j] = j < nl ? bn[list[j]].box.hi[a] : -detail::kInf;
@@ -652,6 +693,7 @@ Bvh<T>::Bvh(std::span<const Vec3<T>> vertices,
   build(std::move(boxes), options, true);
   tris_.assign(ids_.size() / 4, Packet{});
   for (std::size_t s = 0; s < ids_.size(); ++s) {
+    tris_[s / 4].id[s % 4] = ids_[s];
     if (ids_[s] == MeshHit<T>::none) continue;
     const auto& t = triangles[ids_[s]];
     for (int k = 0; k < 3; ++k)
@@ -773,7 +815,7 @@ void Bvh<T>::visit_overlaps_impl(const AlignedBox3<T>& q, void* ctx,
   stack[sp++] = 0;
   while (sp > 0) {
     const Node& nd = nodes_[stack[--sp]];
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < width; ++k) {
       if (nd.count[k] == 0) continue;
       bool meet = true;
       for (int a = 0; a < 3; ++a) meet = meet && nd.box[a][k] <= hi[a] && lo[a] <= nd.box[a + 3][k];
@@ -836,9 +878,9 @@ Distance<T, 3, NoParam, MeshPoint<T>> Bvh<T>::nearest(const Vec3<T>& p) const no
       continue;
     }
     const Node& nd = nodes_[e.child];
-    E hit[4];
+    E hit[width];
     int nh = 0;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < width; ++k) {
       if (nd.count[k] == 0) continue;
       double lb = 0.0;
       for (int a = 0; a < 3; ++a) {

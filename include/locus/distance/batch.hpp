@@ -17,7 +17,7 @@
 // under the contact rule of segment_triangle.hpp), when the caller's code is compiled without
 // floating-point contraction (the default on x86-64 unless FMA is enabled, e.g. by -march=native);
 // with contraction the per-query functions may differ from these by rounding. The lanes the SIMD
-// kernels (src/distance/lanes.hpp) do not cover (non-finite or extreme input, needle triangles,
+// kernels (src/core/lanes.hpp) do not cover (non-finite or extreme input, needle triangles,
 // undecided meeting tests, rare branches) are recomputed by the per-query function.
 // On x86-64 the library carries an x86-64-v4 (AVX-512), an AVX2 and a baseline version and
 // picks the best one the processor runs at each call (detail::set_batch_isa caps it, for tests
@@ -25,6 +25,7 @@
 // target). Every version gives the same bits. Throughput: bench/results/distance.md.
 // No allocation; noexcept.
 
+#include <locus/core/detail/batch_isa.hpp>
 #include <locus/core/vec.hpp>
 #include <locus/primitives/aligned_box.hpp>
 #include <locus/primitives/oriented_box.hpp>
@@ -34,19 +35,6 @@
 #include <span>
 
 namespace locus {
-
-namespace detail {
-/// The instruction sets the batched kernels are compiled for (x86-64; elsewhere, or built with
-/// LOCUS_NO_MULTIVERSION, every level runs the one compiled version).
-enum class BatchIsa { baseline = 0, avx2 = 1, x86_64_v4 = 2 };
-/// The version the batched queries use: the best the processor supports, capped by
-/// set_batch_isa.
-[[nodiscard]] BatchIsa batch_isa() noexcept;
-/// Caps the version the batched queries use (for tests and benchmarks that compare the
-/// versions; default: no cap). Returns the level in use after the call (limit, or less where the
-/// processor lacks it). Thread-safe; affects later calls in every thread.
-BatchIsa set_batch_isa(BatchIsa limit) noexcept;
-}  // namespace detail
 
 // The pairs and their "one against many" forms, declared for float and double (compiled in
 // src/distance/batch_point_triangle.cpp, batch_segment_segment.cpp, batch_segment_triangle.cpp

@@ -42,6 +42,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <span>
 #include <type_traits>
 #include <utility>
@@ -54,6 +55,29 @@ class Bvh;
 namespace detail {
 template <Real T>
 struct BvhCore;
+
+/// Storage of a Bvh's arrays (src/spatial/bvh.cpp): blocks of 4 MiB or more are advised to use
+/// transparent huge pages (Linux), since a ray visits a few random nodes and packets of tens of
+/// megabytes and a 4 KiB page would cost a TLB miss on nearly every one of them.
+void* bvh_allocate(std::size_t bytes, std::size_t align);
+void bvh_deallocate(void* p, std::size_t bytes, std::size_t align) noexcept;
+
+template <class U>
+struct BvhAllocator {
+  using value_type = U;
+  BvhAllocator() noexcept = default;
+  template <class W>
+  constexpr BvhAllocator(const BvhAllocator<W>&) noexcept {}  // NOLINT: allocator rebinding
+  [[nodiscard]] U* allocate(std::size_t n) {
+    if (n > std::numeric_limits<std::size_t>::max() / sizeof(U)) throw std::bad_array_new_length();
+    return static_cast<U*>(bvh_allocate(n * sizeof(U), alignof(U)));
+  }
+  void deallocate(U* p, std::size_t n) noexcept { bvh_deallocate(p, n * sizeof(U), alignof(U)); }
+  template <class W>
+  friend constexpr bool operator==(const BvhAllocator&, const BvhAllocator<W>&) noexcept {
+    return true;
+  }
+};
 }  // namespace detail
 
 /// A ray's hit on a triangle mesh (closest_hit, all_hits).
@@ -74,15 +98,16 @@ struct BvhOptions {
   int leaf_size = 4;  ///< at most this many primitives per leaf (clamped to 1..16)
 };
 
-/// A 4-wide bounding volume hierarchy over triangles or boxes (see the header comment).
+/// An 8-wide bounding volume hierarchy over triangles or boxes (see the header comment).
 template <Real T>
 class Bvh {
  public:
-  /// Four children: boxes in the scaled float frame, lanes lo x, y, z then hi x, y, z.
+  static constexpr int width = 8;  ///< children per node
+  /// `width` children: boxes in the scaled float frame, lanes lo x, y, z then hi x, y, z.
   struct alignas(64) Node {
-    float box[6][4];
-    std::uint32_t child[4];  ///< internal: node index; leaf: first slot
-    std::uint32_t count[4];  ///< 0: empty; internal_child: a node; else leaf primitive count
+    float box[6][width];
+    std::uint32_t child[width];  ///< internal: node index; leaf: first slot
+    std::uint32_t count[width];  ///< 0: empty; internal_child: a node; else leaf primitive count
   };
   static constexpr std::uint32_t internal_child = 0xffffffffu;
 
@@ -158,17 +183,19 @@ class Bvh {
   void build(std::vector<AlignedBox3<T>> boxes, BvhOptions options, bool packets);
 
  public:
-  /// Four triangles in structure-of-arrays form: v[vertex][axis][lane].
+  /// Four triangles in structure-of-arrays form: v[vertex][axis][lane], and their input
+  /// indices (MeshHit::none: padding), read with the vertices rather than from another array.
   struct Packet {
     T v[3][3][4];
+    std::uint32_t id[4];
   };
 
  private:
-  std::vector<Node> nodes_;
-  std::vector<std::uint32_t> ids_;     // primitive id of each slot (none: padding)
-  std::vector<Packet> tris_;           // mesh mode: slot s is lane s % 4 of packet s / 4
-  std::vector<AlignedBox3<T>> boxes_;  // primitive box of each slot
-  std::vector<std::uint32_t> slot_;    // slot of each primitive id
+  std::vector<Node, detail::BvhAllocator<Node>> nodes_;
+  std::vector<std::uint32_t, detail::BvhAllocator<std::uint32_t>> ids_;  // slot's id (none: pad)
+  std::vector<Packet, detail::BvhAllocator<Packet>> tris_;  // slot s: lane s % 4 of packet s / 4
+  std::vector<AlignedBox3<T>> boxes_;                       // primitive box of each slot
+  std::vector<std::uint32_t> slot_;                         // slot of each primitive id
   std::size_t count_ = 0;
   int scale_exp_ = 0;  // float boxes hold coordinates * 2^-scale_exp_
   Status status_ = Status::empty_input;

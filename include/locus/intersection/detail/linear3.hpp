@@ -191,11 +191,12 @@ template <Real T>
 }
 
 /// The sign of the edge a -> b under the symbolic translation of the line by
-/// eps e_x + eps^2 e_y + eps^3 e_z (docs/notes/intersection.md): the exact sign when nonzero,
-/// else the first nonzero component of d x (b - a); zero only when b - a is parallel to d.
-[[nodiscard]] inline Sign perturbed_edge_side(const Lin& l, const V& a, const V& b) noexcept {
-  const Sign s = edge_side(l, a, b);
-  if (s != Sign::zero) return s;
+/// eps e_x + eps^2 e_y + eps^3 e_z (docs/notes/intersection.md), given its exact sign
+/// edge_side(l, a, b): that sign when nonzero, else the first nonzero component of d x (b - a);
+/// zero only when b - a is parallel to d.
+[[nodiscard]] inline Sign perturbed_edge_side(const Lin& l, const V& a, const V& b,
+                                              Sign exact) noexcept {
+  if (exact != Sign::zero) return exact;
   const V p0 = l.hi ? l.o : V{}, p1 = l.hi ? l.q : l.d;
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
@@ -316,7 +317,7 @@ inline void filtered_edge_signs(const Lin& l, const Tri& tri, int (&out)[3]) noe
   Sign s[3], exact[3];
   for (int i = 0; i < 3; ++i) {
     exact[i] = f[i] != 2 ? static_cast<Sign>(f[i]) : edge_side(l, tri.v[i], tri.v[(i + 1) % 3]);
-    s[i] = exact[i] != Sign::zero ? exact[i] : perturbed_edge_side(l, tri.v[i], tri.v[(i + 1) % 3]);
+    s[i] = perturbed_edge_side(l, tri.v[i], tri.v[(i + 1) % 3], exact[i]);
     if (s[i] == Sign::zero || s[i] != s[0]) return h;
   }
   const Sign sigma = s[0];  // = sign(dot(d, N)) (the unperturbed signs agree or vanish)

@@ -2,7 +2,8 @@
 #pragma once
 // Private to the library's SIMD kernels: W queries at once in the lanes of one SIMD register, for
 // the batched distance queries of include/locus/distance/batch.hpp (src/distance/batch*.cpp) and
-// the BVH traversal (src/spatial/bvh.cpp).
+// the BVH traversal (src/spatial/bvh.cpp); in core because both areas use it. The version in use
+// is core's detail::batch_isa() (include/locus/core/detail/batch_isa.hpp).
 //
 // Lanes<T>::V is a GCC/Clang vector of W = 32 / sizeof(T) values (4 doubles or 8 floats: one AVX
 // register; the compiler splits it into two SSE registers where AVX is not enabled). Arithmetic is
@@ -22,8 +23,8 @@
 // overloads).
 
 #include <locus/config.hpp>
+#include <locus/core/detail/batch_isa.hpp>
 #include <locus/core/vec.hpp>
-#include <locus/distance/batch.hpp>
 
 #include <array>
 #include <cstddef>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
-// Which compiled version the batched distance queries run (include/locus/distance/batch.hpp,
+// Which compiled version the SIMD lane code runs (include/locus/core/detail/batch_isa.hpp,
 // detail::batch_isa): the best one the running processor supports, capped by set_batch_isa.
 
-#include <locus/distance/batch.hpp>
+#include <locus/core/detail/batch_isa.hpp>
 
 #include <atomic>
 
