@@ -16,6 +16,7 @@
 #include <locus/core/frame.hpp>
 #include <locus/core/linear_system.hpp>
 #include <locus/core/mat.hpp>
+#include <locus/core/plane_crossing.hpp>
 #include <locus/core/plane_crossing_ball.hpp>
 #include <locus/core/plane_side.hpp>
 #include <locus/core/point_range.hpp>

@@ -24,11 +24,11 @@
 //    summed exactly, compressed, and rounded once by summing from the smallest component up.
 //
 // The first stage is compiled twice: with fused multiply-adds for processors that have them
-// (x86-64-v4, or AVX2 with FMA; chosen at run time by detail::batch_isa(), the distance batch
-// API's selector), where a product's error is one instruction, and with Dekker's product
-// elsewhere (builds have no -march). Must be compiled with -ffp-contract=off (CMake sets it): the
-// expansion theorems and Dekker's product need each operation rounded on its own; the FMA
-// version calls __builtin_fma explicitly.
+// (x86-64-v4, or AVX2 with FMA; chosen at run time by detail::batch_isa() of
+// core/detail/batch_isa.hpp, the lane code's selector), where a product's error is one instruction,
+// and with Dekker's product elsewhere (builds have no -march). Must be compiled with
+// -ffp-contract=off (CMake sets it): the expansion theorems and Dekker's product need each
+// operation rounded on its own; the FMA version calls __builtin_fma explicitly.
 
 #if defined(__FAST_MATH__)
 #error "locus: src/core/crossing.cpp must not be compiled with -ffast-math (exact arithmetic)"
@@ -36,7 +36,7 @@
 
 #include <locus/config.hpp>
 #include <locus/core/crossing.hpp>
-#include <locus/distance/batch.hpp>
+#include <locus/core/detail/batch_isa.hpp>
 
 #include <cmath>
 

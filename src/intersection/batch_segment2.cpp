@@ -10,7 +10,7 @@
 
 #include <cstddef>
 
-#include "../distance/lanes.hpp"
+#include "../core/lanes.hpp"
 
 namespace locus {
 namespace {

@@ -11,8 +11,8 @@
 // ties a few ulps apart, parallel lines (zero) and non-finite input (zero).
 
 #include <locus/core/crossing.hpp>
+#include <locus/core/detail/batch_isa.hpp>
 #include <locus/core/predicates.hpp>
-#include <locus/distance/batch.hpp>
 
 #include <gmpxx.h>
 

@@ -22,7 +22,7 @@
 #include <locus/intersection/segment_segment.hpp>
 #include <locus/intersection/segment_segment_batch.hpp>
 
-#include <locus/distance/batch.hpp>
+#include <locus/core/detail/batch_isa.hpp>
 
 #include <cmath>
 #include <cstring>
