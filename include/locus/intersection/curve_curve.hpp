@@ -3,36 +3,29 @@
 // Intersection of two 2D Bézier, B-spline or NURBS curves (any two PolyCurve2, mixed kinds, the
 // same scalar type): intersects() and intersection(); row int2.polycurve, book section 7.4
 // (7.4.1 algebraic, figure 7.11 raster). Result CurveHits2<T> (detail/polycurve2.hpp), hits
-// ordered by param_a (the first curve's parameter), param_b on the second; multiplicity 1 a
-// crossing, 2 a tangency, 3 an odd higher contact; kind empty, point, points, or coincident when
-// the curves share a stretch: its two ends come as consecutive hits of multiplicity 0 (the
-// parameter interval pair; param_b decreasing when the second runs backwards). Self-
-// intersections of one curve: curve_self.hpp. Methods (CurveHitOptions::method):
-//  * algebraic (default) and hierarchy: pairs of control-polygon boxes of the rational Bézier
-//    pieces refined by de Casteljau halving until both are below tolerance x scale (scale = the
-//    largest |coordinate|); each cluster of touching leaf pairs seeds Newton (Levenberg-
-//    Marquardt) on A(s) - B(t) = 0: crossings to a few ulps.
-//  * resultant (7.4.1): the lower-degree piece of each pair (degree m <= 4) is implicitised by
-//    its Bezout matrix; the other (degree n) substituted gives a Bernstein polynomial of degree
-//    m n whose roots in [0, 1] are isolated by Descartes' rule, a node settled only when every
-//    coefficient exceeds its rounding bound; each root is inverted through the implicit piece's
-//    coordinate equations and polished by Newton. Above degree 4 on both sides, m n > 64, overflow,
-//    or when the resultant vanishes within its bound (one algebraic curve), the pair is subdivided
-//    instead.
-//  * raster (figure 7.11): both drawn into raster_cells cells; each component of shared cells
-//    seeds Newton; crossings a few cells apart can merge. curve_raster() returns the grid.
-// Shared stretches (every method): found from the pieces' ends lying on the other piece, then
-// confirmed at deg(a) deg(b) + 2 points between (more than Bezout's bound), within
-// max(gap, 16 eps_T x scale); searches skip them; points within sqrt(tolerance) of the parameter
-// range of a stretch's end are taken for its end (docs/notes/polycurve.md).
-// Conditioning: crossings closer than tolerance x scale may merge (resultant: closer than the
-// root separation its noise allows, about sqrt of the noise); a tangency is found when the
-// gap is below max(tolerance^2, 64 eps) x scale and located to about its square root.
-// Computed in double (scales beyond 2^+-500 on an exactly rescaled copy). Bad input: NaN/Inf:
-// non_finite_input; an invalid curve: its validate() status; no hits. max_steps exhausted:
-// limit_exceeded. Cost: O(k log(1/tolerance)) box pairs for k crossings, more near tangencies; the
-// resultant O((m n)^2) per piece pair plus the isolation; allocates. The swapped order gives the
-// same points with parameters exchanged.
+// ordered by param_a, param_b on the second curve; multiplicity 1 a crossing, 2 a tangency, 3 an
+// odd higher contact; kind empty, point, points, or coincident when the curves share a stretch
+// (its two ends come as consecutive hits of multiplicity 0). Self-intersections: curve_self.hpp.
+// Methods (CurveHitOptions::method; derivations in docs/notes/polycurve.md):
+//  * algebraic (default) and hierarchy: control-polygon box pairs of the rational Bézier pieces
+//    halved until below tolerance x scale (scale = the largest |coordinate|); each cluster seeds
+//    Newton (Levenberg-Marquardt) on A(s) - B(t) = 0: crossings to a few ulps.
+//  * resultant (7.4.1): the lower-degree piece (m <= 4) implicitised by its Bezout matrix, the
+//    other (degree n) substituted: a Bernstein polynomial of degree m n, roots isolated by
+//    Descartes' rule (a node settled only when every coefficient exceeds its rounding bound),
+//    inverted on the implicit piece, polished by Newton; subdivision instead above degree 4 on
+//    both sides, m n > 64, on overflow, or when the resultant vanishes (one algebraic curve).
+//  * raster (figure 7.11): both drawn into raster_cells cells; each shared component seeds
+//    Newton; crossings a few cells apart can merge. curve_raster() returns the grid.
+// Shared stretches (every method): from piece ends lying on the other piece, confirmed at
+// deg(a) deg(b) + 2 points between, within max(gap, 16 eps_T x scale).
+// Conditioning: crossings closer than tolerance x scale may merge (resultant: about the square
+// root of its noise); a tangency is found when the gap is below max(tolerance^2, 64 eps) x scale
+// and located to about its square root. Computed in double (beyond 2^+-500 on an exactly
+// rescaled copy). Bad input: NaN/Inf: non_finite_input; an invalid curve: its validate()
+// status; max_steps exhausted: limit_exceeded. Cost: O(k log(1/tolerance)) box pairs for k
+// crossings, more near tangencies; resultant O((m n)^2) per piece pair; allocates. Swapped
+// arguments give the same points with parameters exchanged.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/polycurve2.hpp>

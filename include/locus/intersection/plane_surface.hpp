@@ -4,40 +4,27 @@
 // intersection() returns the intersection curves as polylines; row int3.plane-surface, book
 // section 11.7 (figures 11.53-11.58). Plane3 {normal N (any length), constant k}: N.X = k.
 // Result SurfaceCurves<T> (intersection/detail/surface3.hpp): status and curves, each closed (a
-// loop inside the domain; the first point is not repeated) or open (both ends on the domain
-// boundary), with points (3D) and param_b (u, v on the surface; param_a empty, a plane has no
-// parameters). Method: every Bézier span of the surface (to_bezier; NURBS in homogeneous form) is
-// covered by a grid of opt.grid x opt.grid cells (the subpatches of figure 11.56); the sign of
-// N.S(u, v) - k (homogeneous: N.(wP) - k w, same sign as w > 0) is evaluated at the grid nodes,
-// zero counting as positive (a symbolic perturbation of the plane, so every crossing is a
-// transversal sign change and the topology is consistent); on each cell edge with a sign change
-// the root is bisected to full double precision and the point evaluated on the surface; a cell's
-// crossings are joined (a saddle cell by the sign at its centre) and the pieces chained across
-// cells (and across spans) into open branches and closed loops (figures 11.57, 11.58). Every
-// listed point lies on the surface (evaluated) and within a few ulps of the plane (bisection);
-// between points the polyline is a chord of the curve. Hidden features: every cell whose four
-// corners share a sign is checked by subdivision (exact hull rejection, subpatch corners as
-// witnesses, 5 levels): when one hides a sign region (a small loop) the grid is doubled, up to
-// 256 cells per span; if one remains, status is limit_exceeded (the curves found are returned).
-// Not found: two crossings of one cell edge inside a cell with mixed corners, features below
-// 2^-5 of a 256-cell, pieces where the surface lies in the plane (zero counts as positive).
-// Degenerate: zero normal: degenerate_input; NaN/Inf: non_finite_input; invalid surface:
-// validate()'s status. Float input is computed in double. Cost: (grid + 1)^2 surface evaluations
-// per span plus 64 per crossing; allocates.
-// Hermite curves (book section 11.7, figures 11.54-11.57): hermite_curve(plane, surface, curve),
-// for a curve of intersection(plane, surface) (its param_b, or param_a if that is empty), adds
-// the unit tangent at every traced point, T = N x (S_u x S_v) normalised and oriented along the
-// point order, and its (u, v) velocity per unit arc length q = (N.S_v, -N.S_u) / |.| (so that
-// S_u q.x + S_v q.y = T); where S_u x S_v is parallel to N (the surface touches the plane) or
-// degenerate, the chord through the neighbouring points replaces it. point_at(h, i, t)
-// evaluates segment i (P_i to P_i+1, the last one closing a loop) at t in [0, 1] as the cubic
-// Hermite interpolants R(t) (3-space, from the points and L T_i, L T_i+1, L the chord length)
-// and p(t) (parameter space, from the (u, v) and L q). R(t) lies in the plane up to rounding
-// and within O(h^4) of the surface, S(p(t)) lies on the surface and within O(h^4) of the plane,
-// h the segment length (docs/notes/surface_intersection.md). hermite_basis(t) gives the four
-// basis functions. Status: the surface's, non_finite_input, degenerate_input (zero normal),
-// empty_input (no points), invalid_input (points and parameters of different counts); float
-// input is computed in double. Cost: one surface derivative evaluation per point.
+// loop; first point not repeated) or open (both ends on the domain boundary), with points (3D)
+// and param_b (u, v; param_a empty). Method (docs/notes/surface_intersection.md): each Bézier
+// span is covered by an opt.grid x opt.grid grid (figure 11.56); the sign of N.S(u, v) - k at the
+// nodes, zero counting as positive (a symbolic perturbation: consistent topology), decides which
+// cell edges cross; each crossing is bisected to full precision and evaluated on the surface;
+// saddle cells are split by the centre sign, pieces chained across cells and spans. Every point
+// lies on the surface and within a few ulps of the plane. Hidden features: a cell with equal
+// corner signs is checked by subdivision (exact hull rejection, 5 levels); when it hides a sign
+// region the grid is doubled, up to 256 per span, else limit_exceeded (curves found returned).
+// Not found: two crossings of one edge of a mixed cell, features below 2^-5 of a 256-cell, parts
+// where the surface lies in the plane. Degenerate: zero normal: degenerate_input; NaN/Inf:
+// non_finite_input; invalid surface: validate()'s status. Float input is computed in double.
+// Cost: (grid + 1)^2 surface evaluations per span plus 64 per crossing; allocates.
+// Hermite form (figures 11.54-11.57): hermite_curve(plane, surface, curve) adds at every point
+// the unit tangent T = N x (S_u x S_v) (oriented along the curve) and its (u, v) velocity q per
+// unit arc length (S_u q.x + S_v q.y = T); where the plane touches the surface the chord through
+// the neighbours replaces it. point_at(h, i, t), t in [0, 1], evaluates segment i as the cubic
+// Hermite R(t) in 3-space (in the plane, O(h^4) from the surface) and p(t) in (u, v) (S(p(t))
+// O(h^4) from the plane), h the segment length; hermite_basis(t) gives the basis. Status: the
+// surface's, non_finite_input, degenerate_input, empty_input (no points), invalid_input (points
+// and parameters of different counts). Cost: one derivative evaluation per point.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/surface3.hpp>
