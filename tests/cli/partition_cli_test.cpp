@@ -5,39 +5,24 @@
 
 #include <locus/triangulate/convex_partition.hpp>
 
+#include "support/cli_run.hpp"
 #include "support/files.hpp"
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#ifndef LOCUS_CLI_PATH
-#error "LOCUS_CLI_PATH (the locus tool) is not defined"
-#endif
-
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
-
-CliRun run_locus(const fs::path& dir, const std::string& args) {
-  const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
-  const std::string cmd =
-      std::string("'") + LOCUS_CLI_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
-  const int s = std::system(cmd.c_str());
-  return {WIFEXITED(s) ? WEXITSTATUS(s) : -1, locus_test::slurp(out), locus_test::slurp(err)};
-}
+using locus_test::CliRun;
+using locus_test::run_locus;
 
 std::vector<std::vector<std::uint32_t>> rows(const std::string& text) {
   std::vector<std::vector<std::uint32_t>> r;
