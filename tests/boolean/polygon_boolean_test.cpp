@@ -50,22 +50,11 @@ bool op_of(BooleanOp op, bool a, bool b) {
   return false;
 }
 
-/// Winding number of p (not on any edge) around ring r, by exact orient2d.
-template <class T>
-int winding(const std::vector<Vec2<T>>& r, const Vec2<T>& p) {
-  int w = 0;
-  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
-    const Vec2<T>& a = r[i];
-    const Vec2<T>& b = r[(i + 1) % n];
-    if (a.y <= p.y && p.y < b.y && locus::orient2d(a, b, p) == locus::Sign::positive) ++w;
-    if (b.y <= p.y && p.y < a.y && locus::orient2d(a, b, p) == locus::Sign::negative) --w;
-  }
-  return w;
-}
+using locus_test::exact_winding;
 template <class T>
 bool inside_rings(const std::vector<Polygon2<T>>& rings, const Vec2<T>& p, FillRule rule) {
   int w = 0;
-  for (const auto& r : rings) w += winding(r.vertices, p);
+  for (const auto& r : rings) w += exact_winding(r.vertices, p);
   return rule == FillRule::even_odd ? (w & 1) != 0 : (rule == FillRule::non_zero ? w != 0 : w > 0);
 }
 /// A multipolygon operand as rings with orientation signs: inside where the winding with outer
@@ -83,7 +72,7 @@ struct SignedRings {
   }
   bool operator()(const Vec2<T>& p) const {
     int w = 0;
-    for (const auto& r : rings) w += r.second * winding(r.first, p);
+    for (const auto& r : rings) w += r.second * exact_winding(r.first, p);
     return w > 0;
   }
 };
@@ -91,8 +80,8 @@ template <class T>
 bool inside_result(const MultiPolygon2<T>& m, const Vec2<T>& p) {
   int w = 0;
   for (const auto& poly : m) {
-    w += winding(poly.outer.vertices, p);
-    for (const auto& h : poly.holes) w += winding(h.vertices, p);
+    w += exact_winding(poly.outer.vertices, p);
+    for (const auto& h : poly.holes) w += exact_winding(h.vertices, p);
   }
   EXPECT_TRUE(w == 0 || w == 1) << "winding " << w;
   return w == 1;

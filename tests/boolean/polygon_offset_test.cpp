@@ -35,24 +35,13 @@ template <class T>
 class PolygonOffsetTest : public ::testing::Test {};
 TYPED_TEST_SUITE(PolygonOffsetTest, locus_test::RealTypes);
 
-/// Winding number of p around ring r (exact orient2d).
-template <class T>
-int winding(const std::vector<Vec2<T>>& r, const Vec2<T>& p) {
-  int w = 0;
-  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
-    const Vec2<T>& a = r[i];
-    const Vec2<T>& b = r[(i + 1) % n];
-    if (a.y <= p.y && p.y < b.y && locus::orient2d(a, b, p) == locus::Sign::positive) ++w;
-    if (b.y <= p.y && p.y < a.y && locus::orient2d(a, b, p) == locus::Sign::negative) --w;
-  }
-  return w;
-}
+using locus_test::exact_winding;
 template <class T>
 bool inside(const MultiPolygon2<T>& m, const Vec2<T>& p) {
   int w = 0;
   for (const auto& poly : m) {
-    w += winding(poly.outer.vertices, p);
-    for (const auto& h : poly.holes) w += winding(h.vertices, p);
+    w += exact_winding(poly.outer.vertices, p);
+    for (const auto& h : poly.holes) w += exact_winding(h.vertices, p);
   }
   return w > 0;
 }

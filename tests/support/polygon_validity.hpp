@@ -39,6 +39,19 @@ mpq_class exact_twice_area(const std::vector<locus::Vec2<T>>& r) {
 }
 
 /// Strictly inside ring r (even-odd crossing count), q not on r.
+/// Winding number of p (not on any edge) around ring r, by exact orient2d.
+template <class T>
+int exact_winding(const std::vector<locus::Vec2<T>>& r, const locus::Vec2<T>& p) {
+  int w = 0;
+  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+    const locus::Vec2<T>& a = r[i];
+    const locus::Vec2<T>& b = r[(i + 1) % n];
+    if (a.y <= p.y && p.y < b.y && locus::orient2d(a, b, p) == locus::Sign::positive) ++w;
+    if (b.y <= p.y && p.y < a.y && locus::orient2d(a, b, p) == locus::Sign::negative) --w;
+  }
+  return w;
+}
+
 template <class T>
 bool exact_ring_contains(const std::vector<locus::Vec2<T>>& r, const mpq_class& qx,
                          const mpq_class& qy) {
