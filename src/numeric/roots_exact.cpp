@@ -18,7 +18,7 @@
 // Every sign is exact: p(x) for x = M 2^-s is the sign of sum c_i M^i 2^(s(d-i)) (integers).
 #include <locus/numeric/roots.hpp>
 
-#include "../core/big_int.hpp"
+#include "integer_poly.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -35,30 +35,6 @@ namespace locus::detail::roots {
 namespace {
 
 using Z = DynBigInt;
-using ZPoly = std::vector<Z>;  // low to high, trimmed (the last coefficient is non-zero)
-
-void trim(ZPoly& p) {
-  while (!p.empty() && p.back().is_zero()) p.pop_back();
-}
-int degree(const ZPoly& p) { return static_cast<int>(p.size()) - 1; }
-
-ZPoly derivative(const ZPoly& p) {
-  ZPoly d;
-  for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * Z(static_cast<std::int64_t>(i)));
-  trim(d);
-  return d;
-}
-
-/// Divides p by the gcd of its coefficients (a positive number: signs are kept).
-void make_primitive(ZPoly& p) {
-  if (p.empty()) return;
-  Z g = abs(p.back());
-  for (std::size_t i = 0; i + 1 < p.size() && !(g == Z(1)); ++i)
-    if (!p[i].is_zero()) g = gcd(g, p[i]);
-  if (g == Z(1)) return;
-  for (Z& c : p)
-    if (!c.is_zero()) c = divide_exact(c, g);
-}
 
 /// A positive multiple of -(a mod b) (the next member of a Sturm sequence), made primitive.
 ZPoly neg_prem(const ZPoly& a, const ZPoly& b) {
@@ -407,16 +383,21 @@ class Engine {
   std::vector<Root<T>>& out_;
 };
 
+/// floor(log2 |c|) of a non-zero integer.
+int ilogb_of(const Z& c) { return static_cast<int>(c.bit_length()) - 1; }
+
 /// k with every root of a (a[0] != 0 when reversed) below 2^k in magnitude; for reversed,
 /// every root of a is above 2^-k. Fujiwara's bound 2 max |a_i / a_n|^(1 / (n - i)) in exponents.
-int root_bound_exponent(std::span<const double> a_in, bool reversed) {
-  const int n = static_cast<int>(a_in.size()) - 1;
-  const auto a = [&](int i) { return a_in[static_cast<std::size_t>(reversed ? n - i : i)]; };
-  const int en = std::ilogb(a(n));
+int root_bound_exponent(const ZPoly& a_in, bool reversed) {
+  const int n = degree(a_in);
+  const auto a = [&](int i) -> const Z& {
+    return a_in[static_cast<std::size_t>(reversed ? n - i : i)];
+  };
+  const int en = ilogb_of(a(n));
   int k = 0;
   for (int i = 0; i < n; ++i) {
-    if (a(i) == 0.0) continue;
-    const int num = std::ilogb(a(i)) + 1 - en, den = n - i;
+    if (a(i).is_zero()) continue;
+    const int num = ilogb_of(a(i)) + 1 - en, den = n - i;
     const int c = num >= 0 ? (num + den - 1) / den : -((-num) / den);
     k = std::max(k, c + 1);
   }
@@ -426,22 +407,16 @@ int root_bound_exponent(std::span<const double> a_in, bool reversed) {
 }  // namespace
 
 template <Real T>
-Status exact_real_roots(std::span<const double> a, T lo, T hi, const RootOptions& opt,
-                        std::vector<Root<T>>& out) {
+Status exact_real_roots_of_integers(ZPoly p, T lo, T hi, const RootOptions& opt,
+                                    std::vector<Root<T>>& out) {
   using G = Grid<T>;
-  int n = static_cast<int>(a.size()) - 1;
-  while (n >= 0 && a[static_cast<std::size_t>(n)] == 0.0) --n;
+  trim(p);
+  const int n = degree(p);
   if (n <= 0) return Status::ok;
   if (n > opt.max_exact_degree) return Status::limit_exceeded;
-  int z = 0;
-  while (a[static_cast<std::size_t>(z)] == 0.0) ++z;
-  // Integer coefficients of p(x) / x^z, scaled by a power of two.
-  int e_min = std::numeric_limits<int>::max();
-  for (int i = z; i <= n; ++i)
-    if (a[static_cast<std::size_t>(i)] != 0.0)
-      e_min = std::min(e_min, low_exponent(a[static_cast<std::size_t>(i)]));
-  ZPoly p;
-  for (int i = z; i <= n; ++i) p.push_back(Z::from_double(a[static_cast<std::size_t>(i)], -e_min));
+  int z = 0;  // p(x) = x^z q(x), q(0) != 0
+  while (p[static_cast<std::size_t>(z)].is_zero()) ++z;
+  p.erase(p.begin(), p.begin() + z);
   make_primitive(p);
   // chain[k]: the Sturm sequence of the square-free part of p_k (p_0 = p, p_{k+1} =
   // gcd(p_k, p_k')); square-free, so its variations count distinct roots at every point.
@@ -465,8 +440,8 @@ Status exact_real_roots(std::span<const double> a, T lo, T hi, const RootOptions
   const Key khi = hi == std::numeric_limits<T>::infinity() ? G::inf_key() : G::key(hi);
   const Key first_inner = klo + 1;
   const int m = n - z;
-  const int k_high = root_bound_exponent(a.subspan(static_cast<std::size_t>(z)), false);
-  const int k_low = root_bound_exponent(a.subspan(static_cast<std::size_t>(z)), true);
+  const int k_high = root_bound_exponent(p, false);
+  const int k_low = root_bound_exponent(p, true);
   const auto bound_key = [](int k) -> Key {  // key of 2^k, clamped to the range of T
     const double v = std::ldexp(1.0, k);
     if (v > static_cast<double>(std::numeric_limits<T>::max())) return G::inf_key();
@@ -491,6 +466,23 @@ Status exact_real_roots(std::span<const double> a, T lo, T hi, const RootOptions
   return eng.budget_hit() ? Status::limit_exceeded : Status::ok;
 }
 
+template <Real T>
+Status exact_real_roots(std::span<const double> a, T lo, T hi, const RootOptions& opt,
+                        std::vector<Root<T>>& out) {
+  // Integer coefficients: every coefficient times 2^-e_min (the roots are unchanged).
+  int e_min = std::numeric_limits<int>::max();
+  for (const double c : a)
+    if (c != 0.0) e_min = std::min(e_min, low_exponent(c));
+  ZPoly p;
+  if (e_min != std::numeric_limits<int>::max())
+    for (const double c : a) p.push_back(c == 0.0 ? Z(0) : Z::from_double(c, -e_min));
+  return exact_real_roots_of_integers(std::move(p), lo, hi, opt, out);
+}
+
+template Status exact_real_roots_of_integers<float>(ZPoly, float, float, const RootOptions&,
+                                                    std::vector<Root<float>>&);
+template Status exact_real_roots_of_integers<double>(ZPoly, double, double, const RootOptions&,
+                                                     std::vector<Root<double>>&);
 template Status exact_real_roots<float>(std::span<const double>, float, float, const RootOptions&,
                                         std::vector<Root<float>>&);
 template Status exact_real_roots<double>(std::span<const double>, double, double,

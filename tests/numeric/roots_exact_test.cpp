@@ -8,9 +8,11 @@
 // correct rounding of the i-th exact root: that root lies in the value's rounding interval.
 #include <locus/numeric/roots.hpp>
 
+#include "../../src/numeric/integer_poly.hpp"
 #include "numeric/poly_oracle.hpp"
 #include "support/typed.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -84,9 +86,9 @@ Q exact(T v) {
 /// Checks r against the oracle: all roots found, each value the correct rounding of its exact
 /// root, multiplicities exact. Returns the number of distinct exact roots.
 template <class T>
-int check(const std::vector<T>& c, const RealRootsResult<T>& r, const std::string& what) {
+int check_exact(const po::QPoly& exact_poly, const RealRootsResult<T>& r, const std::string& what) {
   SCOPED_TRACE(what);
-  const Oracle o(po::exact_of(c));
+  const Oracle o(exact_poly);
   const int n = o.count(-o.bound, o.bound);
   EXPECT_EQ(r.status, Status::ok);
   EXPECT_EQ(static_cast<int>(r.roots.size()), n);
@@ -112,6 +114,11 @@ int check(const std::vector<T>& c, const RealRootsResult<T>& r, const std::strin
     }
   }
   return n;
+}
+
+template <class T>
+int check(const std::vector<T>& c, const RealRootsResult<T>& r, const std::string& what) {
+  return check_exact(po::exact_of(c), r, what);
 }
 
 template <class T>
@@ -354,4 +361,79 @@ TYPED_TEST(RootsExactTest, NearModeStillBehavesAsDocumented) {
   ASSERT_EQ(sq.count, 1);
   EXPECT_EQ(sq.roots[0].multiplicity, 2);
   EXPECT_EQ(solve_quadratic(t[0], t[1], t[2]).count, 0);
+}
+
+namespace {
+
+/// The exact integer z as core's big integer (through its 32-bit limbs).
+detail::DynBigInt to_big(const mpz_class& z) {
+  std::vector<detail::Limb> limbs(mpz_sizeinbase(z.get_mpz_t(), 2) / 32 + 2, 0);
+  std::size_t count = 0;
+  mpz_export(limbs.data(), &count, -1, sizeof(detail::Limb), 0, 0, z.get_mpz_t());
+  limbs.resize(count);
+  return detail::DynBigInt::from_limbs(limbs, sgn(z) < 0);
+}
+
+}  // namespace
+
+TYPED_TEST(RootsExactTest, IntegerCoefficientsBeyondTheDoubleRange) {
+  // exact_real_roots_of_integers (src/numeric/integer_poly.hpp) on products of factors
+  // (b x - a)^m with 90-bit a, b: coefficients beyond double precision, roots known by
+  // construction; some roots closer to each other than an ulp of T (a/b and a/b + 1/b^2), so
+  // distinct roots share a rounding cell and must still be reported separately.
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const auto big = [&](int bits) {
+    mpz_class z = 0;
+    for (int i = 0; i < bits; i += 30) z = (z << 30) + rng.uniform_int(0, (1 << 30) - 1);
+    return z;
+  };
+  const T inf = std::numeric_limits<T>::infinity();
+  for (int round = 0; round < 12; ++round) {
+    po::QPoly exact_poly{Q(1)};
+    std::vector<std::pair<Q, int>> expected;  // root, multiplicity
+    const mpz_class b = big(90) + 1;
+    const int factors = rng.uniform_int(1, 3);
+    for (int f = 0; f < factors; ++f) {
+      const mpz_class a = big(90) - big(89);
+      const int m = rng.uniform_int(1, 3);
+      for (int k = 0; k < m; ++k) exact_poly = po::mul(exact_poly, {Q(-a), Q(b)});
+      expected.emplace_back(Q(a, b), m);
+      if (rng.uniform_int(0, 1) == 1) {  // a neighbour 1/b^2 away: b^2 x - (a b + 1)
+        const mpz_class num = a * b + 1, den = b * b;
+        exact_poly = po::mul(exact_poly, {Q(mpz_class(-num)), Q(den)});
+        expected.emplace_back(Q(num, den), 1);
+      }
+    }
+    for (auto& e : expected) e.first.canonicalize();
+    std::sort(expected.begin(), expected.end());
+    detail::roots::ZPoly z;
+    for (const Q& c : exact_poly) z.push_back(to_big(c.get_num()));  // integers here
+    std::vector<Root<T>> roots;
+    ASSERT_EQ(detail::roots::exact_real_roots_of_integers<T>(z, -inf, inf, {}, roots), Status::ok);
+    ASSERT_EQ(roots.size(), expected.size()) << "round " << round;
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      const T v = roots[i].value;
+      // Correct rounding: the exact root lies in v's rounding interval.
+      EXPECT_GE(expected[i].first, (exact(std::nextafter(v, -inf)) + exact(v)) / 2) << i;
+      EXPECT_LE(expected[i].first, (exact(v) + exact(std::nextafter(v, inf))) / 2) << i;
+      EXPECT_EQ(roots[i].multiplicity, expected[i].second) << i;
+    }
+  }
+  // The zero polynomial and constants have no roots; x^3 has the root 0 of multiplicity 3.
+  std::vector<Root<T>> none;
+  EXPECT_EQ(detail::roots::exact_real_roots_of_integers<T>({}, T(-1), T(1), {}, none), Status::ok);
+  EXPECT_EQ(
+      detail::roots::exact_real_roots_of_integers<T>({detail::DynBigInt(5)}, T(-1), T(1), {}, none),
+      Status::ok);
+  EXPECT_TRUE(none.empty());
+  std::vector<Root<T>> zero;
+  const detail::roots::ZPoly cube{detail::DynBigInt(0), detail::DynBigInt(0), detail::DynBigInt(0),
+                                  detail::DynBigInt(7)};
+  EXPECT_EQ(detail::roots::exact_real_roots_of_integers<T>(cube, T(-1), T(1), {}, zero),
+            Status::ok);
+  ASSERT_EQ(zero.size(), 1u);
+  EXPECT_EQ(zero[0].value, T(0));
+  EXPECT_EQ(zero[0].multiplicity, 3);
 }
