@@ -85,4 +85,16 @@ template <Real T>
   return offset_polylines(std::span<const Polyline<T, 2>>(paths), delta, options);
 }
 
+namespace detail {
+/// offset() and offset_polylines() with every concave corner's spoke p1 -> v -> p2 kept (the
+/// construction before the spoke shortcut of docs/notes/polygon_offset.md): the tests' oracle.
+template <Real T>
+[[nodiscard]] OffsetResult<T> offset_keeping_spokes(const MultiPolygon2<T>& region, T delta,
+                                                    const OffsetOptions& options);
+template <Real T>
+[[nodiscard]] OffsetResult<T> offset_polylines_keeping_spokes(std::span<const Polyline<T, 2>> paths,
+                                                              T delta,
+                                                              const OffsetOptions& options);
+}  // namespace detail
+
 }  // namespace locus
