@@ -5,6 +5,8 @@
 // 0.05 (about 8 to 800 edge lengths), miter joins with miter limit 2 in every library:
 //   locus     offset(polygon, delta, {miter}) (resolves the ring, builds the raw contour with
 //             the spoke shortcut, one boolean under the positive fill rule);
+//   locus_keeping_spokes  the same without the shortcut (detail::offset_keeping_spokes: the
+//             construction before it);
 //   geos      GEOSBufferWithStyle_r(width delta, 8 quadrant segments, flat caps, mitre joins,
 //             limit 2);
 //   clipper1  ClipperOffset(MiterLimit 2).Execute on integer coordinates below 2^40 (locus's grid).
@@ -52,12 +54,13 @@ const Ring& smooth_ring() {
   return ring;
 }
 
-Multi run_locus(double delta) {
-  static const locus::Polygon2<double> poly{smooth_ring()};
+Multi run_locus(double delta, bool keep_spokes = false) {
+  static const locus::MultiPolygon2<double> poly{{{smooth_ring()}, {}}};
   locus::OffsetOptions o;
   o.join = locus::JoinType::miter;
   o.miter_limit = 2;
-  auto r = locus::offset(poly, delta, o);
+  auto r = keep_spokes ? locus::detail::offset_keeping_spokes(poly, delta, o)
+                       : locus::offset(poly, delta, o);
   if (r.status != locus::Status::ok) throw std::runtime_error(r.message);
   return std::move(r.polygons);
 }
@@ -100,9 +103,10 @@ void measure(benchmark::State& state, double delta, const std::function<Native()
   state.counters["out_vertices"] = static_cast<double>(multi_vertices(m));
 }
 
-void bench_locus(benchmark::State& state, double delta) {
+void bench_locus(benchmark::State& state, double delta, bool keep_spokes) {
   measure<Multi>(
-      state, delta, [delta] { return run_locus(delta); }, [](const Multi& m) { return m; });
+      state, delta, [delta, keep_spokes] { return run_locus(delta, keep_spokes); },
+      [](const Multi& m) { return m; });
 }
 
 #if defined(LOCUS_HAVE_GEOS)
@@ -151,7 +155,8 @@ void register_all() {
           ->Unit(benchmark::kMillisecond)
           ->MeasureProcessCPUTime();
     };
-    add("locus", [delta](benchmark::State& s) { bench_locus(s, delta); });
+    add("locus", [delta](benchmark::State& s) { bench_locus(s, delta, false); });
+    add("locus_keeping_spokes", [delta](benchmark::State& s) { bench_locus(s, delta, true); });
 #if defined(LOCUS_HAVE_GEOS)
     add("geos", [delta](benchmark::State& s) { bench_geos(s, delta); });
 #endif
