@@ -142,7 +142,7 @@ struct Builder {
     // The band of every edge, then the concave corners whose spoke p1 -> v -> p2 can go: the
     // triangle it cuts off lies in both bands (exact tests on the rounded points), where at
     // least two pieces cover every point, so the positive set is unchanged (the notes,
-    // "Dropping spokes").
+    // "Dropping spokes", also for several overlapping triangles).
     std::vector<V> far_a(n), far_b(n);
     std::vector<char> has_band(n), drop(n, 0);
     for (std::size_t i = 0; i < n; ++i)
@@ -156,6 +156,9 @@ struct Builder {
         const V band2[4] = {pts[j], pts[(j + 1) % n], far_b[j], far_a[j]};
         if (in_band(band1, side, far_a[j]) && in_band(band2, side, far_b[i])) drop[j] = 1;
       }
+      // A point in the triangles of k dropped corners lies in the bands of their adjacent
+      // edges, at least k + 1 of them while k < n: keep one spoke if every corner qualifies.
+      if (std::find(drop.begin(), drop.end(), 0) == drop.end()) drop[0] = 0;
     }
     for (std::size_t i = 0; i < n; ++i) {
       const V a = pts[i], b = pts[(i + 1) % n], next = pts[(i + 2) % n];

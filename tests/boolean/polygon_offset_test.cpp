@@ -594,6 +594,17 @@ TYPED_TEST(PolygonOffsetTest, SpokeShortcutEqualityCases) {
       expect_shortcut_exact(MultiPolygon2<T>{{ell, {}}}, d, with_join(j));
       expect_shortcut_exact(MultiPolygon2<T>{{step, {}}}, T(-d), with_join(j));
     }
+  // Holes whose every corner is concave on the offset side (a square, an equilateral-ish
+  // triangle): a point in the triangles of all dropped corners must keep its cover, so one spoke
+  // per ring stays.
+  const Polygon2<T> square_hole{{{1, 1}, {1, 3}, {3, 3}, {3, 1}}};
+  const Polygon2<T> triangle_hole{{{1, 1}, {2, T(2.75)}, {3, 1}}};
+  for (const Polygon2<T>* hole : {&square_hole, &triangle_hole})
+    for (int j = 0; j < 3; ++j)
+      for (const T d : {T(0.3), T(0.5) - eps, T(0.5), T(0.6), T(1) - eps, T(1), T(1) + eps}) {
+        SCOPED_TRACE("hole, join " + std::to_string(j));
+        expect_shortcut_exact(MultiPolygon2<T>{{square(T(4)), {*hole}}}, d, with_join(j));
+      }
   // The areas at d = 1 from the closed form: the L (area 3) with miter joins grows to the
   // 4 x 4 square minus the unit square at its reflex corner: 15.
   OffsetOptions o;
