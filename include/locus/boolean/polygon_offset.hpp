@@ -29,7 +29,9 @@
 // coordinate overflows), invalid_input (miter_limit < 1 or NaN, arc_tolerance < 0 or NaN,
 // grid_bits outside the boolean's range). Cost: a contour of O(n m) edges for n vertices and m
 // chords per round join (m <= ceil(pi / acos(1 - tol/|delta|))), then one boolean (two for a
-// region); slow where |delta| spans many short concave edges (see the notes).
+// region); a concave corner's spoke is dropped when its triangle lies in both adjacent bands
+// (exact test, same region), so dense input is slow only where |delta| exceeds its curvature
+// radius (see the notes).
 
 #include <locus/boolean/polygon_boolean.hpp>
 #include <locus/primitives/polyline.hpp>
