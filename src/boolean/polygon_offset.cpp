@@ -37,7 +37,8 @@ struct Builder {
   double min_cos;     // miter allowed while 1 + cos(theta) >= min_cos
   double chord_step;  // the largest chord angle keeping the gap <= tolerance
   std::vector<Polygon2d> pieces;
-  bool overflow = false;  // a piece coordinate left the double range
+  bool overflow = false;    // a piece coordinate left the double range
+  bool drop_spokes = true;  // false: every concave spoke kept (the test oracle)
 
   V along(V p, V dir, double t) {
     const V q{p.x + t * dir.x, p.y + t * dir.y};
@@ -111,6 +112,14 @@ struct Builder {
     return true;
   }
 
+  /// Is p in the closed band q (a, b, far b, far a; counter-clockwise for side +1, clockwise
+  /// for -1)? Exact.
+  static bool in_band(const V (&q)[4], int side, V p) {
+    for (std::size_t i = 0; i < 4; ++i)
+      if (to_int(orient2d(q[i], q[(i + 1) % 4], p)) * side < 0) return false;
+    return true;
+  }
+
   /// The raw offset contour of a closed chain of distinct consecutive points, on one side
   /// (-1: right, the outside of a counter-clockwise ring; +1: left). As a 1-chain it is the ring
   /// plus (right side; left side: minus) the boundaries of its bands and convex-corner join
@@ -130,15 +139,35 @@ struct Builder {
       }
       c.push_back(q);
     };
+    // The band of every edge, then the concave corners whose spoke p1 -> v -> p2 can go: the
+    // triangle it cuts off lies in both bands (exact tests on the rounded points), where at
+    // least two pieces cover every point, so the positive set is unchanged (the notes,
+    // "Dropping spokes", also for several overlapping triangles).
+    std::vector<V> far_a(n), far_b(n);
+    std::vector<char> has_band(n), drop(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+      has_band[i] = band(pts[i], pts[(i + 1) % n], side, far_a[i], far_b[i]) ? 1 : 0;
+    if (drop_spokes) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = (i + 1) % n;
+        if (!has_band[i] || !has_band[j]) continue;
+        if (to_int(orient2d(pts[i], pts[j], pts[(i + 2) % n])) * side <= 0) continue;
+        const V band1[4] = {pts[i], pts[j], far_b[i], far_a[i]};
+        const V band2[4] = {pts[j], pts[(j + 1) % n], far_b[j], far_a[j]};
+        if (in_band(band1, side, far_a[j]) && in_band(band2, side, far_b[i])) drop[j] = 1;
+      }
+      // A point in the triangles of k dropped corners lies in the bands of their adjacent
+      // edges, at least k + 1 of them while k < n: keep one spoke if every corner qualifies.
+      if (std::find(drop.begin(), drop.end(), 0) == drop.end()) drop[0] = 0;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       const V a = pts[i], b = pts[(i + 1) % n], next = pts[(i + 2) % n];
-      V oa, ob;
-      push(a);
-      if (band(a, b, side, oa, ob)) {
-        push(oa);
-        push(ob);
+      if (!drop[i]) push(a);
+      if (has_band[i]) {
+        push(far_a[i]);
+        push(far_b[i]);
       }
-      push(b);
+      if (!drop[(i + 1) % n]) push(b);
       const int turn = to_int(orient2d(a, b, next));
       const V u1 = unit(a, b), u2 = unit(b, next);
       const bool spike = turn == 0 && u1.x * u2.x + u1.y * u2.y < 0;
@@ -284,13 +313,13 @@ OffsetResult<T> finish(BooleanOp op, const std::vector<Polygon2d>& subject, cons
   return out;
 }
 
-}  // namespace
-
 template <Real T>
-OffsetResult<T> offset(const MultiPolygon2<T>& region, T delta, const OffsetOptions& options) {
+OffsetResult<T> offset_impl(const MultiPolygon2<T>& region, T delta, const OffsetOptions& options,
+                            bool drop_spokes) {
   OffsetResult<T> out;
   Builder b{};
   if (!setup(delta, options, b, out)) return out;
+  b.drop_spokes = drop_spokes;
   if (!finite_rings(region)) {
     out.status = Status::non_finite_input;
     out.message = "a coordinate is NaN or infinite";
@@ -325,11 +354,12 @@ OffsetResult<T> offset(const MultiPolygon2<T>& region, T delta, const OffsetOpti
 }
 
 template <Real T>
-OffsetResult<T> offset_polylines(std::span<const Polyline<T, 2>> paths, T delta,
-                                 const OffsetOptions& options) {
+OffsetResult<T> offset_polylines_impl(std::span<const Polyline<T, 2>> paths, T delta,
+                                      const OffsetOptions& options, bool drop_spokes) {
   OffsetResult<T> out;
   Builder b{};
   if (!setup(delta, options, b, out)) return out;
+  b.drop_spokes = drop_spokes;
   for (const auto& path : paths)
     for (const auto& v : path.vertices)
       if (!std::isfinite(v.x) || !std::isfinite(v.y)) {
@@ -373,10 +403,38 @@ OffsetResult<T> offset_polylines(std::span<const Polyline<T, 2>> paths, T delta,
   return finish<T>(BooleanOp::union_, pieces, b, bits);
 }
 
+}  // namespace
+
+template <Real T>
+OffsetResult<T> offset(const MultiPolygon2<T>& region, T delta, const OffsetOptions& options) {
+  return offset_impl(region, delta, options, true);
+}
+template <Real T>
+OffsetResult<T> offset_polylines(std::span<const Polyline<T, 2>> paths, T delta,
+                                 const OffsetOptions& options) {
+  return offset_polylines_impl(paths, delta, options, true);
+}
+namespace detail {
+template <Real T>
+OffsetResult<T> offset_keeping_spokes(const MultiPolygon2<T>& region, T delta,
+                                      const OffsetOptions& options) {
+  return offset_impl(region, delta, options, false);
+}
+template <Real T>
+OffsetResult<T> offset_polylines_keeping_spokes(std::span<const Polyline<T, 2>> paths, T delta,
+                                                const OffsetOptions& options) {
+  return offset_polylines_impl(paths, delta, options, false);
+}
+}  // namespace detail
+
 #define LOCUS_INSTANTIATE(T)                                                            \
   template OffsetResult<T> offset<T>(const MultiPolygon2<T>&, T, const OffsetOptions&); \
   template OffsetResult<T> offset_polylines<T>(std::span<const Polyline<T, 2>>, T,      \
-                                               const OffsetOptions&);
+                                               const OffsetOptions&);                   \
+  template OffsetResult<T> detail::offset_keeping_spokes<T>(const MultiPolygon2<T>&, T, \
+                                                            const OffsetOptions&);      \
+  template OffsetResult<T> detail::offset_polylines_keeping_spokes<T>(                  \
+      std::span<const Polyline<T, 2>>, T, const OffsetOptions&);
 LOCUS_INSTANTIATE(float)
 LOCUS_INSTANTIATE(double)
 #undef LOCUS_INSTANTIATE

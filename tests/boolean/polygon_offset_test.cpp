@@ -469,4 +469,168 @@ TYPED_TEST(PolygonOffsetTest, PowerOfTwoScaleCovariance) {
     }
 }
 
+// The spoke shortcut (a concave corner's spoke p1 -> v -> p2 replaced by p1 -> p2 when the
+// triangle p1, v, p2 lies in both adjacent bands) keeps the positive-winding set, so the
+// boolean's output must be identical, ring for ring, to the construction keeping every spoke
+// (detail::offset_keeping_spokes; docs/notes/polygon_offset.md, "Dropping spokes").
+template <class T>
+void expect_same_result(const locus::OffsetResult<T>& got, const locus::OffsetResult<T>& want) {
+  ASSERT_EQ(got.status, want.status) << got.message;
+  EXPECT_EQ(locus_test::polygon_validity(got.polygons), "");
+  ASSERT_EQ(got.polygons.size(), want.polygons.size());
+  for (std::size_t i = 0; i < got.polygons.size(); ++i) {
+    const auto &g = got.polygons[i], &w = want.polygons[i];
+    EXPECT_TRUE(g.outer.vertices == w.outer.vertices) << "polygon " << i << " outer ring";
+    ASSERT_EQ(g.holes.size(), w.holes.size()) << "polygon " << i;
+    for (std::size_t k = 0; k < g.holes.size(); ++k)
+      EXPECT_TRUE(g.holes[k].vertices == w.holes[k].vertices) << "polygon " << i << " hole " << k;
+  }
+}
+template <class T>
+void expect_shortcut_exact(const MultiPolygon2<T>& region, T delta, const OffsetOptions& o) {
+  SCOPED_TRACE("delta " + std::to_string(double(delta)));
+  expect_same_result(locus::offset(region, delta, o),
+                     locus::detail::offset_keeping_spokes(region, delta, o));
+}
+template <class T>
+void expect_shortcut_exact(const std::vector<Polyline<T, 2>>& paths, T delta,
+                           const OffsetOptions& o) {
+  SCOPED_TRACE("delta " + std::to_string(double(delta)));
+  expect_same_result(locus::offset_polylines(paths, delta, o),
+                     locus::detail::offset_polylines_keeping_spokes(
+                         std::span<const Polyline<T, 2>>(paths), delta, o));
+}
+OffsetOptions with_join(int k) {
+  OffsetOptions o;
+  o.join = k % 3 == 0 ? JoinType::miter : k % 3 == 1 ? JoinType::square : JoinType::round;
+  o.arc_tolerance = 0.01;
+  return o;
+}
+
+TYPED_TEST(PolygonOffsetTest, SpokeShortcutKeepsRandomRegionsExactly) {
+  // Concave corners with edges longer and shorter than |delta|, on both sides (deflation's
+  // concave corners are the region's convex ones), holes included.
+  using T = TypeParam;
+  Rng rng(locus_test::test_seed() + 6);
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 24; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const MultiPolygon2<T> region = random_region<T>(rng);
+    const T delta = T(std::exp(rng.uniform(std::log(0.005), std::log(0.6))) * (trial % 2 ? -1 : 1));
+    expect_shortcut_exact(region, delta, with_join(trial / 2));
+  }
+}
+
+TYPED_TEST(PolygonOffsetTest, SpokeShortcutKeepsDenseAndSpikyRingsExactly) {
+  using T = TypeParam;
+  Rng rng(locus_test::test_seed() + 7);
+  SCOPED_TRACE(rng.trace());
+  // Edges far shorter than |delta| (the benchmark's ring, 200 vertices: edges about 0.03),
+  // including concave runs of curvature radius below |delta|.
+  Polygon2<T> wavy;
+  for (int i = 0; i < 200; ++i) {
+    const double t = 2 * std::numbers::pi * i / 200, r = 1 + 0.1 * std::sin(7 * t);
+    wavy.vertices.push_back({T(r * std::cos(t)), T(r * std::sin(t))});
+  }
+  for (const T delta : {T(0.004), T(0.03), T(0.3), T(-0.004), T(-0.05)})
+    expect_shortcut_exact(MultiPolygon2<T>{{wavy, {}}}, delta, with_join(0));
+  // Deep narrow notches (spikes into the region) and thin teeth: sharp concave corners whose
+  // edges are long next to short ones.
+  for (int trial = 0; trial < 6; ++trial) {
+    SCOPED_TRACE("star " + std::to_string(trial));
+    const Polygon2<T> star = random_star<T>(rng, 0, 0, 0.05, 1.0, rng.uniform_int(12, 30));
+    const T delta = T(rng.uniform(0.01, 0.2) * (trial % 2 ? -1 : 1));
+    expect_shortcut_exact(MultiPolygon2<T>{{star, {}}}, delta, with_join(trial));
+  }
+  // A square with a notch of width 2^-12 down its middle.
+  const T w = T(std::ldexp(1.0, -13));
+  const Polygon2<T> notched{{{0, 0},
+                             {T(0.5) - w, 0},
+                             {T(0.5) - w, T(0.9)},
+                             {T(0.5) + w, T(0.9)},
+                             {T(0.5) + w, 0},
+                             {1, 0},
+                             {1, 1},
+                             {0, 1}}};
+  int j = 0;
+  for (const T delta : {T(w / 2), T(w), T(0.01), T(-0.01), T(-w)})
+    expect_shortcut_exact(MultiPolygon2<T>{{notched, {}}}, delta, with_join(j++));
+}
+
+TYPED_TEST(PolygonOffsetTest, SpokeShortcutKeepsNearlyStraightConcaveCornersExactly) {
+  // A square whose bottom side bows inward along a circle of radius R through m vertices: turning
+  // angles about 1 / (R m), from 2^-10 down to about 2^-20 radians, with |delta| above and below
+  // the edge length.
+  using T = TypeParam;
+  for (const double radius : {4.0, 64.0, 1024.0})
+    for (const int m : {8, 64}) {
+      SCOPED_TRACE("radius " + std::to_string(radius) + ", " + std::to_string(m) + " edges");
+      Polygon2<T> p;
+      const double half = 0.5, depth = radius - std::sqrt(radius * radius - half * half);
+      for (int i = 0; i <= m; ++i) {
+        const double x = -half + 2 * half * i / m;
+        p.vertices.push_back({T(x), T(std::sqrt(radius * radius - x * x) - radius + depth)});
+      }
+      p.vertices.push_back({T(half), T(1)});
+      p.vertices.push_back({T(-half), T(1)});
+      int j = m;
+      for (const T delta : {T(0.001), T(0.05), T(0.4), T(-0.001), T(-0.05)})
+        expect_shortcut_exact(MultiPolygon2<T>{{p, {}}}, delta, with_join(j++));
+    }
+}
+
+TYPED_TEST(PolygonOffsetTest, SpokeShortcutEqualityCases) {
+  // The exact condition's boundary: at a right-angle concave corner with both edges of length 1,
+  // p2 = v + d n2 lies on band 1's end edge exactly when d = 1 (inside for d < 1, outside for
+  // d > 1). Inflation: the reflex corner (1, 1) of an L. Deflation: the convex corners (4, 0) and
+  // (5, 1) of a stepped rectangle, whose step edges have length 1.
+  using T = TypeParam;
+  const Polygon2<T> ell{{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}};
+  const Polygon2<T> step{{{0, 0}, {4, 0}, {4, 1}, {5, 1}, {5, 4}, {0, 4}}};
+  const T eps = T(std::ldexp(1.0, -20));
+  for (int j = 0; j < 3; ++j)
+    for (const T d : {T(1) - eps, T(1), T(1) + eps, T(0.5), T(2)}) {
+      SCOPED_TRACE("join " + std::to_string(j));
+      expect_shortcut_exact(MultiPolygon2<T>{{ell, {}}}, d, with_join(j));
+      expect_shortcut_exact(MultiPolygon2<T>{{step, {}}}, T(-d), with_join(j));
+    }
+  // Holes whose every corner is concave on the offset side (a square, an equilateral-ish
+  // triangle): a point in the triangles of all dropped corners must keep its cover, so one spoke
+  // per ring stays.
+  const Polygon2<T> square_hole{{{1, 1}, {1, 3}, {3, 3}, {3, 1}}};
+  const Polygon2<T> triangle_hole{{{1, 1}, {2, T(2.75)}, {3, 1}}};
+  for (const Polygon2<T>* hole : {&square_hole, &triangle_hole})
+    for (int j = 0; j < 3; ++j)
+      for (const T d : {T(0.3), T(0.5) - eps, T(0.5), T(0.6), T(1) - eps, T(1), T(1) + eps}) {
+        SCOPED_TRACE("hole, join " + std::to_string(j));
+        expect_shortcut_exact(MultiPolygon2<T>{{square(T(4)), {*hole}}}, d, with_join(j));
+      }
+  // The areas at d = 1 from the closed form: the L (area 3) with miter joins grows to the
+  // 4 x 4 square minus the unit square at its reflex corner: 15.
+  OffsetOptions o;
+  o.join = JoinType::miter;
+  EXPECT_EQ(area(locus::offset(ell, T(1), o)), 15.0);
+}
+
+TYPED_TEST(PolygonOffsetTest, SpokeShortcutKeepsPolylinesExactly) {
+  // Zigzags turn concave on each side in turn; the spikes at open ends and back-tracking
+  // vertices keep their joins.
+  using T = TypeParam;
+  Rng rng(locus_test::test_seed() + 8);
+  SCOPED_TRACE(rng.trace());
+  for (int trial = 0; trial < 18; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    std::vector<Polyline<T, 2>> paths(1 + trial % 2);
+    for (auto& path : paths) {
+      const int n = rng.uniform_int(2, 12);
+      for (int i = 0; i < n; ++i) path.vertices.push_back(rng.vec<T, 2>(T(-0.8), T(0.8)));
+      path.closed = trial % 3 == 2;
+    }
+    if (trial % 5 == 4) paths[0].vertices.push_back(paths[0].vertices[0]);  // a spike back
+    OffsetOptions o = with_join(trial);
+    o.end = trial % 3 == 0 ? EndType::round : trial % 3 == 1 ? EndType::square : EndType::butt;
+    expect_shortcut_exact(paths, T(std::exp(rng.uniform(std::log(0.005), std::log(0.4)))), o);
+  }
+}
+
 }  // namespace

@@ -29,7 +29,9 @@
 // coordinate overflows), invalid_input (miter_limit < 1 or NaN, arc_tolerance < 0 or NaN,
 // grid_bits outside the boolean's range). Cost: a contour of O(n m) edges for n vertices and m
 // chords per round join (m <= ceil(pi / acos(1 - tol/|delta|))), then one boolean (two for a
-// region); slow where |delta| spans many short concave edges (see the notes).
+// region); a concave corner's spoke is dropped when its triangle lies in both adjacent bands
+// (exact test, same region), so dense input is slow only where |delta| exceeds its curvature
+// radius (see the notes).
 
 #include <locus/boolean/polygon_boolean.hpp>
 #include <locus/primitives/polyline.hpp>
@@ -84,5 +86,17 @@ template <Real T>
                                                       T delta, const OffsetOptions& options = {}) {
   return offset_polylines(std::span<const Polyline<T, 2>>(paths), delta, options);
 }
+
+namespace detail {
+/// offset() and offset_polylines() with every concave corner's spoke p1 -> v -> p2 kept (the
+/// construction before the spoke shortcut of docs/notes/polygon_offset.md): the tests' oracle.
+template <Real T>
+[[nodiscard]] OffsetResult<T> offset_keeping_spokes(const MultiPolygon2<T>& region, T delta,
+                                                    const OffsetOptions& options);
+template <Real T>
+[[nodiscard]] OffsetResult<T> offset_polylines_keeping_spokes(std::span<const Polyline<T, 2>> paths,
+                                                              T delta,
+                                                              const OffsetOptions& options);
+}  // namespace detail
 
 }  // namespace locus
