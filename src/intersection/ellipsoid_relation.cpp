@@ -382,7 +382,85 @@ struct SideRoot {
   return Definite::none;
 }
 
-[[nodiscard]] RegionRelation exact_relation(const ZMat& a, const ZMat& b) {
+/// Sign of X^T M X at the point x (doubles): X = (2^s x, 1) times 2^f, f making every 2^f x_k an
+/// integer (a positive factor: the sign is that of the quadric at x).
+[[nodiscard]] int sign_at_point(const ZMat& m, const V& x, int s) {
+  int f = 0;
+  for (int k = 0; k < 3; ++k)
+    if (x[k] != 0.0) f = std::max(f, -low_exponent(x[k]));
+  std::array<Z, 4> h;
+  for (int k = 0; k < 3; ++k)
+    h[static_cast<std::size_t>(k)] = Z::from_double(x[k], f) << static_cast<std::size_t>(s);
+  h[3] = pow2(f);
+  Z sum;
+  for (std::size_t r = 0; r < 4; ++r) {
+    Z row;
+    for (std::size_t q = 0; q < 4; ++q) row += m[r][q] * h[q];
+    sum += row * h[r];
+  }
+  return sum.sign();
+}
+
+/// Cheap certificates, each exact (see the notes): a point in both interiors, one in a's interior
+/// outside b and one in b's interior outside a prove overlapping; a negative mu with p(mu) > 0
+/// proves two negative roots (separated); B - mu A definite at some mu > 0 proves strict
+/// containment. Candidates come from floating point; undecided when none certifies.
+struct Solid {
+  V c;
+  V axis[3];
+  V extent;
+};
+[[nodiscard]] RegionRelation certified_fast(const ZMat& a, const ZMat& b, const Minors& mi,
+                                            const Solid& sa, const Solid& sb, int s) {
+  bool both = false, a_only = false, b_only = false;
+  const auto probe = [&](const V& x) {
+    if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) return;
+    const int in_a = sign_at_point(a, x, s), in_b = sign_at_point(b, x, s);
+    both = both || (in_a < 0 && in_b < 0);
+    a_only = a_only || (in_a < 0 && in_b > 0);
+    b_only = b_only || (in_b < 0 && in_a > 0);
+  };
+  for (const Solid* e : {&sa, &sb}) {
+    probe(e->c);
+    for (int i = 0; i < 3 && !(both && a_only && b_only); ++i) {
+      const double len2 = dot(e->axis[i], e->axis[i]);
+      const V step = (0.99 * e->extent[i] / len2) * e->axis[i];  // near the ends of axis i
+      probe(e->c + step);
+      probe(e->c - step);
+    }
+  }
+  for (double t : {0.25, 0.5, 0.75}) probe(sa.c + t * (sb.c - sa.c));
+  if (both && a_only && b_only) return RegionRelation::overlapping;
+  // Pencil roots estimated in floating point.
+  const ZPoly& p = mi.poly.back();
+  std::size_t bits = 0;
+  for (const Z& c : p) bits = std::max(bits, c.bit_length());
+  const std::size_t drop = bits > 900 ? bits - 900 : 0;  // keep the doubles finite
+  double c[5] = {};
+  for (std::size_t j = 0; j < p.size() && j < 5; ++j) c[j] = (p[j] >> drop).to_double();
+  const RootsResult<double> est = solve_quartic<double>(c[0], c[1], c[2], c[3], c[4]);
+  for (int j = 0; j + 1 < est.count; ++j) {
+    const double m = 0.5 * est.roots[static_cast<std::size_t>(j)].value +
+                     0.5 * est.roots[static_cast<std::size_t>(j + 1)].value;
+    if (!std::isfinite(m) || m == 0.0) continue;
+    AlgebraicRoot r;
+    int e = 0;
+    dyadic(m, r.n, e);
+    r.d = pow2(-e);
+    if (sign_at_rational(p, r.n, r.d) <= 0) continue;
+    if (m < 0.0) {
+      if (!both) return RegionRelation::separated;
+      continue;
+    }
+    const Definite d = definiteness(mi, r, true);
+    if (d == Definite::positive) return RegionRelation::a_contains_b;
+    if (d == Definite::negative) return RegionRelation::b_contains_a;
+  }
+  return RegionRelation::undecided;
+}
+
+[[nodiscard]] RegionRelation exact_relation(const ZMat& a, const ZMat& b, const Solid& sa,
+                                            const Solid& sb, int s, bool certificates) {
   // Equal solids: proportional quadrics (the x-blocks' (0,0) entries are positive).
   bool proportional = true;
   for (std::size_t r = 0; r < 4 && proportional; ++r)
@@ -391,6 +469,10 @@ struct SideRoot {
   if (proportional) return RegionRelation::equal;
   const Minors mi = pencil_minors(a, b);
   const ZPoly& p = mi.poly.back();
+  if (certificates) {
+    const RegionRelation fast = certified_fast(a, b, mi, sa, sb, s);
+    if (fast != RegionRelation::undecided) return fast;
+  }
   // Negative roots exist iff the interiors are disjoint: two simple ones when separated, one
   // double when touching (counted exactly by Sturm's theorem; 0 is not a root).
   const std::vector<ZPoly> seq = roots::sturm_sequence(p);
@@ -403,9 +485,9 @@ struct SideRoot {
   // Interiors meet. Strict containment: B - mu A definite on a gap between consecutive roots.
   // Fast path: sample points between estimated roots, certified by Sturm counts.
   bool covered_all = false;
-  const Definite fast = gaps_from_estimates(mi, seq, positive, covered_all);
-  if (fast == Definite::positive) return RegionRelation::a_contains_b;
-  if (fast == Definite::negative) return RegionRelation::b_contains_a;
+  const Definite sampled = gaps_from_estimates(mi, seq, positive, covered_all);
+  if (sampled == Definite::positive) return RegionRelation::a_contains_b;
+  if (sampled == Definite::negative) return RegionRelation::b_contains_a;
   std::vector<SideRoot> pos;
   const ZPoly rev = reversed(p);  // p(0) = det B != 0: degree 4 too
   if (!covered_all && !side_roots(p, rev, true, pos)) return RegionRelation::undecided;
@@ -504,7 +586,7 @@ void make_primitive(ZMat& m) {
 }  // namespace
 
 RegionRelation ellipsoid_relation(const V& c0, const V (&a0)[3], const V& e0, const V& c1,
-                                  const V (&a1)[3], const V& e1) noexcept {
+                                  const V (&a1)[3], const V& e1, bool certificates) noexcept {
   for (const V* v : {&c0, &e0, &c1, &e1, &a0[0], &a0[1], &a0[2], &a1[0], &a1[1], &a1[2]})
     if (!finite(*v)) return RegionRelation::undecided;
   for (int i = 0; i < 3; ++i)
@@ -530,7 +612,8 @@ RegionRelation ellipsoid_relation(const V& c0, const V (&a0)[3], const V& e0, co
     ZMat& smaller = shift > 0 ? qa : qb;
     for (auto& row : smaller)
       for (Z& x : row) x = x << static_cast<std::size_t>(shift > 0 ? shift : -shift);
-    return exact_relation(qa, qb);
+    return exact_relation(qa, qb, Solid{c0, {a0[0], a0[1], a0[2]}, e0},
+                          Solid{c1, {a1[0], a1[1], a1[2]}, e1}, s, certificates);
   } catch (const std::bad_alloc&) {
     return RegionRelation::undecided;
   }
