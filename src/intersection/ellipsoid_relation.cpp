@@ -7,7 +7,8 @@
 // symmetric integer matrix of e0^2 e1^2 e2^2 (sum_i (U_i.(x - C))^2 / e_i^2 - 1) in the
 // homogeneous coordinates (2^s x, 1), s a shift common to both. The relation follows from the
 // real roots of p(mu) = det(B - mu A) (exact integer coefficients) and the definiteness of
-// B - mu A at rational or quadratic-irrational mu, all decided in integers.
+// B - mu A at rational or quadratic-irrational mu, all decided in integers; cheap exact
+// certificates (points, a sign of p, a definite B - mu A) settle most pairs first.
 
 #include <locus/intersection/detail/quadric_pair3.hpp>
 

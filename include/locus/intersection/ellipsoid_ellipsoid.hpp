@@ -15,13 +15,15 @@
 // separated; one double one, touching (Wang, Wang, Kim 2001). Otherwise b lies strictly inside a
 // iff B - mu A is positive definite on a gap between consecutive roots (a strictly inside b:
 // negative definite), and inside with contact iff B - r A is semidefinite at a multiple root r;
-// else overlapping. Proportional matrices are equal. Roots by numeric/ Sturm chains, definiteness
-// by signs of principal minors at rational or quadratic-irrational points, all in integers.
+// else overlapping. Proportional matrices are equal. Most pairs are settled first by cheap exact
+// certificates (points in both solids and in each alone: overlapping; p(mu) > 0 at some mu < 0:
+// separated; B - mu A definite at some mu > 0: containment). Decided in integers: Sturm counts,
+// definiteness by principal minors at rational or quadratic-irrational mu.
 // Degenerate: non-positive extents, dependent axes (exact determinant zero), NaN/Inf, memory
 // exhausted: undecided (intersects() false). Swapping the arguments swaps the containment
-// relations. Float input is converted exactly to double. Cost: exact integer arithmetic on
-// numbers of about 2000 bits for generic double input (tens of microseconds), more for inputs
-// whose exponents differ widely; allocates.
+// relations. Float input is converted exactly to double. Cost: exact integers of about 1400 bits
+// for full-precision double input: about 0.1-0.3 ms when certified, up to about 15 ms for
+// tangent or nearly tangent pairs; more when the sizes differ by huge powers of two; allocates.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/quadric_pair3.hpp>
