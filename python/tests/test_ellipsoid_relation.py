@@ -43,10 +43,15 @@ def test_balls_against_fractions():
         c0 = rng.integers(-4, 5, 3).astype(float)
         c1 = rng.integers(-4, 5, 3).astype(float)
         r0, r1 = float(rng.integers(1, 7)), float(rng.integers(1, 7))
-        if i % 3 == 0:  # 3-4-5: tangent outside or inside
+        mode = i % 7
+        if mode < 3:  # 3-4-5: tangent outside, or inside either way
             c1 = c0 + np.array([3.0, 0.0, 4.0])
             r0 = float(rng.integers(1, 5))
-            r1 = 5 - r0 if i % 2 == 0 else 5 + r0
+            r1 = 5 - r0 if mode == 0 else 5 + r0
+            if mode == 2:
+                r0, r1 = r1, r0
+        if mode == 3:
+            c1, r1 = c0.copy(), r0
         want = ball_oracle(c0, r0, c1, r1)
         seen.add(want)
         got = rel((c0 / 8, EYE, np.full(3, r0 / 8)), (c1 / 8, EYE, np.full(3, r1 / 8)))
