@@ -94,9 +94,9 @@ TYPED_TEST(EllipsoidRelation, SpheresAgainstRationalOracle) {
   Rng rng(71);
   SCOPED_TRACE(rng.trace());
   int kinds[9] = {};
-  for (int iter = 0; iter < 42; ++iter) {
-    // Small dyadic data so that every relation, tangencies included, occurs; four in seven pairs
-    // are 3-4-5 configurations tangent from outside or inside either way, or equal.
+  for (int iter = 0; iter < 28; ++iter) {
+    // Small dyadic data so that every relation, tangencies included, occurs; five in seven pairs
+    // are 3-4-5 configurations tangent from outside or inside either way, equal, or nested.
     const T sc = T(std::ldexp(1.0, rng.uniform_int(-3, 3)));
     Vec3<T> c0{T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4))};
     Vec3<T> c1{T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4)), T(rng.uniform_int(-4, 4))};
@@ -113,6 +113,13 @@ TYPED_TEST(EllipsoidRelation, SpheresAgainstRationalOracle) {
       c1 = c0;
       r1 = r0;
     }
+    if (mode == 4) {  // strictly nested either way
+      c1 = c0 + Vec3<T>{1, 0, 0};
+      if (iter % 2 == 0)
+        r1 = r0 + T(3);
+      else
+        r0 = r1 + T(3);
+    }
     c0 = sc * c0;
     c1 = sc * c1;
     r0 = sc * r0;
@@ -126,7 +133,8 @@ TYPED_TEST(EllipsoidRelation, SpheresAgainstRationalOracle) {
     ++kinds[int(want)];
     const std::string what = "iter " + std::to_string(iter);
     expect_both_orders(ball(c0, r0), ball(c1, r1), want, what);
-    expect_both_orders(rotated_ball(c0, r0), ball(c1, r1), want, what + " rotated");
+    if (iter % 2 == 1)
+      expect_both_orders(rotated_ball(c0, r0), ball(c1, r1), want, what + " rotated");
   }
   for (R r : {R::separated, R::touching, R::overlapping, R::a_contains_b, R::b_contains_a,
               R::a_contains_b_touching, R::b_contains_a_touching, R::equal})
@@ -252,7 +260,7 @@ void sample(const Ellipsoid3<T>& a, const Ellipsoid3<T>& b, LD& lo, LD& hi) {
     }
   lo = INFINITY;
   hi = -INFINITY;
-  const int n = 32;
+  const int n = 24;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j < 2 * n; ++j) {
       const LD th = LD(M_PI) * j / n, ph = LD(M_PI) * i / n;
@@ -273,7 +281,7 @@ TYPED_TEST(EllipsoidRelation, RandomAgainstSamplingAndNumericMethod) {
   Rng rng(73);
   SCOPED_TRACE(rng.trace());
   int decided = 0, kinds[9] = {};
-  for (int iter = 0; iter < 60; ++iter) {
+  for (int iter = 0; iter < 24; ++iter) {
     const Ellipsoid3<T> a = random_ellipsoid<T>(rng, T(0.3), T(2));
     Ellipsoid3<T> b = random_ellipsoid<T>(rng, T(0.3), T(2));
     if (iter % 4 == 0) {  // containments: a shrunken, moved copy of a
@@ -309,7 +317,7 @@ TYPED_TEST(EllipsoidRelation, RandomAgainstSamplingAndNumericMethod) {
                      vec_cast<double>(b.axis[2])};
     // The root-structure decision without the cheap certificates agrees (every sixth draw: it costs
     // milliseconds).
-    if (iter % 6 == 0) {
+    if (iter % 8 == 0) {
       EXPECT_EQ(full_path(a, b), r) << what;
     }
     EXPECT_EQ(detail::quadric_pair3::ellipsoid_relation_numeric(
@@ -331,7 +339,7 @@ TYPED_TEST(EllipsoidRelation, RandomAgainstSamplingAndNumericMethod) {
       EXPECT_EQ(relation(as, bs), r) << what << " scale " << k;
     }
   }
-  EXPECT_GT(decided, 40);
+  EXPECT_GT(decided, 15);
   for (R r : {R::separated, R::overlapping, R::a_contains_b, R::b_contains_a})
     EXPECT_GT(kinds[int(r)], 0) << int(r);
 }
