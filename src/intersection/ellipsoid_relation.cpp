@@ -425,12 +425,15 @@ struct Solid {
     probe(e->c);
     for (int i = 0; i < 3 && !(both && a_only && b_only); ++i) {
       const double len2 = dot(e->axis[i], e->axis[i]);
-      const V step = (0.99 * e->extent[i] / len2) * e->axis[i];  // near the ends of axis i
-      probe(e->c + step);
-      probe(e->c - step);
+      for (double f : {0.99, 0.6}) {  // along axis i, near its ends and half way
+        const V step = (f * e->extent[i] / len2) * e->axis[i];
+        probe(e->c + step);
+        probe(e->c - step);
+      }
     }
   }
-  for (double t : {0.25, 0.5, 0.75}) probe(sa.c + t * (sb.c - sa.c));
+  for (int j = 1; j < 16 && !(both && a_only && b_only); ++j)
+    probe(sa.c + (j / 16.0) * (sb.c - sa.c));
   if (both && a_only && b_only) return RegionRelation::overlapping;
   // Pencil roots estimated in floating point.
   const ZPoly& p = mi.poly.back();
