@@ -411,8 +411,8 @@ struct Solid {
   V axis[3];
   V extent;
 };
-[[nodiscard]] RegionRelation certified_fast(const ZMat& a, const ZMat& b, const Minors& mi,
-                                            const Solid& sa, const Solid& sb, int s) {
+[[nodiscard]] RegionRelation certified_by_points(const ZMat& a, const ZMat& b, const Solid& sa,
+                                                 const Solid& sb, int s) {
   bool both = false, a_only = false, b_only = false;
   const auto probe = [&](const V& x) {
     if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) return;
@@ -434,7 +434,10 @@ struct Solid {
   }
   for (int j = 1; j < 16 && !(both && a_only && b_only); ++j)
     probe(sa.c + (j / 16.0) * (sb.c - sa.c));
-  if (both && a_only && b_only) return RegionRelation::overlapping;
+  return both && a_only && b_only ? RegionRelation::overlapping : RegionRelation::undecided;
+}
+
+[[nodiscard]] RegionRelation certified_by_pencil(const Minors& mi) {
   // Pencil roots estimated in floating point.
   const ZPoly& p = mi.poly.back();
   std::size_t bits = 0;
@@ -452,10 +455,7 @@ struct Solid {
     dyadic(m, r.n, e);
     r.d = pow2(-e);
     if (sign_at_rational(p, r.n, r.d) <= 0) continue;
-    if (m < 0.0) {
-      if (!both) return RegionRelation::separated;
-      continue;
-    }
+    if (m < 0.0) return RegionRelation::separated;
     const Definite d = definiteness(mi, r, true);
     if (d == Definite::positive) return RegionRelation::a_contains_b;
     if (d == Definite::negative) return RegionRelation::b_contains_a;
@@ -471,11 +471,15 @@ struct Solid {
     for (std::size_t q = r; q < 4 && proportional; ++q)
       proportional = a[r][q] * b[0][0] == b[r][q] * a[0][0];
   if (proportional) return RegionRelation::equal;
+  if (certificates) {
+    const RegionRelation by_points = certified_by_points(a, b, sa, sb, s);
+    if (by_points != RegionRelation::undecided) return by_points;
+  }
   const Minors mi = pencil_minors(a, b);
   const ZPoly& p = mi.poly.back();
   if (certificates) {
-    const RegionRelation fast = certified_fast(a, b, mi, sa, sb, s);
-    if (fast != RegionRelation::undecided) return fast;
+    const RegionRelation by_pencil = certified_by_pencil(mi);
+    if (by_pencil != RegionRelation::undecided) return by_pencil;
   }
   // Negative roots exist iff the interiors are disjoint: two simple ones when separated, one
   // double when touching (counted exactly by Sturm's theorem; 0 is not a root).
