@@ -313,6 +313,14 @@ def sat3_test(a: npt.ArrayLike, b: npt.ArrayLike) -> bool: ...
 def sat3_first_contact(
     a: npt.ArrayLike, va: npt.ArrayLike, b: npt.ArrayLike, vb: npt.ArrayLike, tmax: float
 ) -> Contact3: ...
+def ellipsoid_relation(
+    center_a: npt.ArrayLike,
+    axes_a: npt.ArrayLike,
+    extents_a: npt.ArrayLike,
+    center_b: npt.ArrayLike,
+    axes_b: npt.ArrayLike,
+    extents_b: npt.ArrayLike,
+) -> str: ...
 
 class SvgWriter:
     def __init__(

@@ -17,6 +17,7 @@ void bind_curve_intersection(py::module_& m);  // curve_intersection.cpp
 void bind_boolean(py::module_& m);             // boolean.cpp
 void bind_offset(py::module_& m);              // offset.cpp
 void bind_bsp3(py::module_& m);                // bsp3.cpp
+void bind_ellipsoid_relation(py::module_& m);  // ellipsoid_relation.cpp
 
 namespace {
 
@@ -273,4 +274,5 @@ PYBIND11_MODULE(locus, m) {
   bind_boolean(m);
   bind_offset(m);
   bind_bsp3(m);
+  bind_ellipsoid_relation(m);
 }

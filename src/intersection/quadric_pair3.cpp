@@ -140,8 +140,8 @@ double sphere_extreme(const V& lambda, const V& g, double k, bool lowest) noexce
 
 }  // namespace
 
-RegionRelation ellipsoid_relation(const V& c0, const V (&a0)[3], const V& e0, const V& c1,
-                                  const V (&a1)[3], const V& e1, double rel_tol) noexcept {
+RegionRelation ellipsoid_relation_numeric(const V& c0, const V (&a0)[3], const V& e0, const V& c1,
+                                          const V (&a1)[3], const V& e1, double rel_tol) noexcept {
   for (const V* v : {&c0, &e0, &c1, &e1, &a0[0], &a0[1], &a0[2], &a1[0], &a1[1], &a1[2]})
     if (!finite(*v)) return RegionRelation::undecided;
   for (int i = 0; i < 3; ++i)

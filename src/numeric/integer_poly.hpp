@@ -87,6 +87,11 @@ inline void make_primitive(ZPoly& p) {
     if (!c.is_zero()) c = divide_exact(c, g);
 }
 
+/// The Sturm sequence p, p', -rem, ... of p (made primitive; p of degree >= 1): the number of
+/// distinct real roots in (a, b] is the drop in sign variations from a to b, and the last member
+/// is gcd(p, p') up to a constant (its roots are p's multiple roots).
+[[nodiscard]] std::vector<ZPoly> sturm_sequence(const ZPoly& p);
+
 /// The real roots of p (any integer polynomial; the zero polynomial has none) in [lo, hi]
 /// (either may be infinite), appended to out in increasing order, each correctly rounded to T
 /// with its multiplicity. Returns ok, or limit_exceeded when opt's exact budgets are exceeded

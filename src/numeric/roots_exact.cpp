@@ -406,6 +406,13 @@ int root_bound_exponent(const ZPoly& a_in, bool reversed) {
 
 }  // namespace
 
+std::vector<ZPoly> sturm_sequence(const ZPoly& p) {
+  ZPoly q = p;
+  trim(q);
+  make_primitive(q);
+  return sturm(q);
+}
+
 template <Real T>
 Status exact_real_roots_of_integers(ZPoly p, T lo, T hi, const RootOptions& opt,
                                     std::vector<Root<T>>& out) {

@@ -31,10 +31,17 @@ using V = Vec3<double>;
                                                              double r1) noexcept;
 [[nodiscard]] RegionRelation sphere_relation(const V& c0, double r0, const V& c1,
                                              double r1) noexcept;
-/// Ellipsoids as center, three axes (unit, orthogonal) and extents.
+/// Ellipsoids as center, three axes and extents: the exact relation of the quadrics as stored
+/// (src/intersection/ellipsoid_relation.cpp). certificates false skips the cheap exact
+/// certificates and always runs the root-structure decision (for the tests: both must agree).
 [[nodiscard]] RegionRelation ellipsoid_relation(const V& c0, const V (&a0)[3], const V& e0,
                                                 const V& c1, const V (&a1)[3], const V& e1,
-                                                double rel_tol) noexcept;
+                                                bool certificates = true) noexcept;
+/// The former floating-point method (secular equation, axes normalized, extremes within
+/// rel_tol of zero taken as zero); kept as a second algorithm for the tests.
+[[nodiscard]] RegionRelation ellipsoid_relation_numeric(const V& c0, const V (&a0)[3], const V& e0,
+                                                        const V& c1, const V (&a1)[3], const V& e1,
+                                                        double rel_tol) noexcept;
 
 template <Real T>
 [[nodiscard]] SphereSphereIntersection<T> cast(const SphereSphereIntersection<double>& r) noexcept {
