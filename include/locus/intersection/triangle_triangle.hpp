@@ -276,10 +276,51 @@ struct Interval {
   return iv;
 }
 
-/// sign(dot(D, Y - X)) for X an end of a, Y an end of b (exact).
-[[nodiscard]] inline int compare(const V3 a[3], const End& x, const V3 b[3],
+/// A coordinate plane in which the non-degenerate triangle t projects non-degenerately, and the
+/// orientation there (nonzero).
+struct Projection {
+  int axis = -1, orientation = 0;
+};
+
+[[nodiscard]] inline Projection projection_of(const V3 t[3]) noexcept {
+  for (int k = 2; k >= 0; --k) {
+    if (const int o = to_int(orient2d(drop(t[0], k), drop(t[1], k), drop(t[2], k)))) return {k, o};
+  }
+  return {};
+}
+
+/// orient3d(p, q, r, s) for p, q, r in the plane of the non-degenerate triangle t (projection
+/// pt) and s on side s_side of it (nonzero): (q - p) x (r - p) = lambda n_t, so the sign is
+/// sign(lambda) s_side, and lambda has the sign of its projection's orient2d times t's. The same
+/// exact sign as orient3d, from an orient2d whose exact zero (r on the line pq: a T-junction) is
+/// far cheaper to certify than orient3d's.
+[[nodiscard]] inline int orient3d_in_plane(const V3 t[3], Projection& pt, const V3& p, const V3& q,
+                                           const V3& r, int s_side) noexcept {
+  if (pt.axis < 0) pt = projection_of(t);
+  const int k = pt.axis;
+  return to_int(orient2d(drop(p, k), drop(q, k), drop(r, k))) * pt.orientation * s_side;
+}
+
+/// sign(dot(D, Y - X)) for X an end of a, Y an end of b (exact): orient3d(a_p, a_q, b_p, b_q)
+/// times the ends' e. When one of the four points lies in the other triangle's plane (a sign
+/// zero; at most one per end, since every end has a vertex off the plane) it is evaluated by
+/// orient3d_in_plane (the permutation (a_p, a_q, b_p, b_q) -> (b_p, b_q, a_p, a_q) is even).
+[[nodiscard]] inline int compare(const V3 a[3], const int sa[3], Projection& pa, const End& x,
+                                 const V3 b[3], const int sb[3], Projection& pb,
                                  const End& y) noexcept {
-  return to_int(orient3d(a[x.p], a[x.q], b[y.p], b[y.q])) * x.e * y.e;
+  int o;
+  if (sb[y.p] == 0) {
+    o = orient3d_in_plane(a, pa, a[x.p], a[x.q], b[y.p], sb[y.q]);
+  } else if (sb[y.q] == 0) {
+    o = -orient3d_in_plane(a, pa, a[x.p], a[x.q], b[y.q], sb[y.p]);
+  } else if (sa[x.p] == 0) {
+    o = orient3d_in_plane(b, pb, b[y.p], b[y.q], a[x.p], sa[x.q]);
+  } else if (sa[x.q] == 0) {
+    o = -orient3d_in_plane(b, pb, b[y.p], b[y.q], a[x.q], sa[x.p]);
+  } else {
+    o = to_int(orient3d(a[x.p], a[x.q], b[y.p], b[y.q]));
+  }
+  return o * x.e * y.e;
 }
 
 /// Neither triangle in the other's plane, neither degenerate, each touching or crossing the
@@ -288,7 +329,9 @@ struct Interval {
 [[nodiscard]] inline bool intervals_meet(const V3 a[3], const int sa[3], const V3 b[3],
                                          const int sb[3]) noexcept {
   const Interval ia = interval(sa, 1), ib = interval(sb, -1);
-  return compare(a, ia.lo, b, ib.hi) >= 0 && compare(a, ia.hi, b, ib.lo) <= 0;
+  Projection pa, pb;
+  return compare(a, sa, pa, ia.lo, b, sb, pb, ib.hi) >= 0 &&
+         compare(a, sa, pa, ia.hi, b, sb, pb, ib.lo) <= 0;
 }
 
 /// All three signs nonzero and equal (strictly on one side).
