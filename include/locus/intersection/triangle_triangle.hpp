@@ -241,7 +241,10 @@ struct PlaneFilter {
   if (!finite3(a) || !finite3(b)) return -1;
   if (share_vertex(a, b)) return 1;
   for (int j = 0; j < 3; ++j) {
-    if (s[j] == 2) s[j] = to_int(orient3d(a[0], a[1], a[2], b[j]));
+    // The filter has failed: straight to the adaptive stages (exact), without a second stage A
+    // or the lattice test (it applies only where stage B is exact already; a T-junction off
+    // any small lattice pays for it failing).
+    if (s[j] == 2) s[j] = to_int(detail::orient3d_adaptive(a[0], a[1], a[2], b[j]));
   }
   return 0;
 }
