@@ -4,7 +4,9 @@
 // Intersect::intersect_Triangle, CGAL's do_intersect on Epick) are in
 // triangle_triangle_peers_bench.cpp. Names triangle_triangle/<impl>/<set> (scripts/bench_rounds
 // forms the ratios). Each iteration answers one pair; the answers are summed (counter
-// meet_rate).
+// meet_rate). triangle_triangle/locus_general/<set> times detail::tri3::intersects_general, the
+// general test intersects() used for every pair before (plane rejection, six segment-triangle
+// tests), now its coplanar and degenerate path: the before/after in one run.
 
 #include "intersection/triangle_triangle_inputs.hpp"
 
@@ -33,10 +35,25 @@ void BM_locus(benchmark::State& state, int set) {
   benchmark::DoNotOptimize(meet);
 }
 
+void BM_locus_general(benchmark::State& state, int set) {
+  const auto& p = pairs(set);
+  std::size_t i = 0, meet = 0;
+  for (auto _ : state) {
+    const Pair& q = p[i % p.size()];
+    meet += locus::detail::tri3::intersects_general(q.first, q.second);
+    ++i;
+  }
+  state.counters["meet_rate"] = double(meet) / double(i);
+  state.SetItemsProcessed(static_cast<std::int64_t>(i));
+  benchmark::DoNotOptimize(meet);
+}
+
 const int registered = [] {
   for (int set = 0; set < 3; ++set) {
-    benchmark::RegisterBenchmark((std::string("triangle_triangle/locus/") + kSetNames[set]).c_str(),
-                                 BM_locus, set);
+    const std::string tail = std::string("/") + kSetNames[set];
+    benchmark::RegisterBenchmark(("triangle_triangle/locus" + tail).c_str(), BM_locus, set);
+    benchmark::RegisterBenchmark(("triangle_triangle/locus_general" + tail).c_str(),
+                                 BM_locus_general, set);
   }
   return 0;
 }();

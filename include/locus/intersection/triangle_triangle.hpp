@@ -3,10 +3,13 @@
 // Two triangles in 3D: intersects() (the book's test) and intersection() (find); book section
 // 11.5.4, figures 11.27, 11.28; row int3.plane-triangle. Used by mesh/mesh_checks.hpp.
 // Triangles are closed sets: touching at a vertex, along an edge or in a shared plane counts.
-// intersects: every decision is an exact sign (orient3d, orient2d), no tolerance: a plane
-// rejection, then six exact segment-triangle tests (two closed convex sets whose boundaries are
-// their edges meet iff an edge of one meets the other; docs/notes/mesh.md). Invariant under
-// swapping, reordering vertices and power-of-two scaling. Cost: 6 orient3d usually, <= ~40.
+// intersects: every decision exact, no tolerance (Guigue-Devillers' order): each triangle's
+// vertex signs against the other's plane (stage-A filter sharing the plane's minors; undecided:
+// a shared vertex means true, else exact), rejection when strictly one side; then the overlap of
+// the two intervals on the common line (2 exact signs; docs/notes/intersection3.md). Coplanar or
+// degenerate: six exact segment-triangle tests (docs/notes/mesh.md). Invariant under swapping,
+// reordering vertices and power-of-two scaling. Cost: 3-8 filtered signs; + an adaptive one per
+// vertex exactly in the other's plane (T-junction); coplanar <= ~40 signs.
 // intersection -> TriangleTriangleIntersection<T> (param_a, param_b: (s, t) of point_at(tri, st)
 // on each triangle): empty, point, segment (ordered along cross(normal a, normal b)) or, when
 // coplanar with a common area, polygon (<= 6 vertices in the order of a's vertices, i.e.
