@@ -340,6 +340,11 @@ struct Projection {
          compare(a, sa, pa, ia.hi, b, sb, pb, ib.lo) <= 0;
 }
 
+/// Some sign left undecided by the filter (value 2).
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline bool undecided(const int s[3]) noexcept {
+  return (s[0] == 2) | (s[1] == 2) | (s[2] == 2);
+}
+
 /// All three signs nonzero and equal (strictly on one side).
 [[nodiscard]] LOCUS_ALWAYS_INLINE inline bool one_side(const int s[3]) noexcept {
   return s[0] == s[1] && s[1] == s[2] && s[0] != 0;
@@ -356,13 +361,13 @@ template <Real T>
   // b's vertices against a's plane (Guigue-Devillers' order: reject as early as possible).
   const d::PlaneFilter fa = d::plane_filter(a[0], a[1], a[2]);
   int sb[3] = {d::filtered_side(fa, b[0]), d::filtered_side(fa, b[1]), d::filtered_side(fa, b[2])};
-  if ((sb[0] | sb[1] | sb[2]) & 2) [[unlikely]] {
+  if (d::undecided(sb)) [[unlikely]] {
     if (const int r = d::resolve_sides(a, b, sb)) return r > 0;
   }
   if (d::one_side(sb)) return false;
   const d::PlaneFilter fb = d::plane_filter(b[0], b[1], b[2]);
   int sa[3] = {d::filtered_side(fb, a[0]), d::filtered_side(fb, a[1]), d::filtered_side(fb, a[2])};
-  if ((sa[0] | sa[1] | sa[2]) & 2) [[unlikely]] {
+  if (d::undecided(sa)) [[unlikely]] {
     if (const int r = d::resolve_sides(b, a, sa)) return r > 0;
   }
   if (d::one_side(sa)) return false;
