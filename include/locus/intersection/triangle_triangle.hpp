@@ -188,7 +188,7 @@ using V2 = Vec2<double>;
 /// are computed once. For p the filter evaluates det3_stage_a on the transposed rows
 /// (u.x, v.x, w.x), (u.y, v.y, w.y), (u.z, v.z, w.z), w = p - o, operation for operation (so
 /// the same value and the same stage-A bound, valid for any rows of rounded differences), with
-/// these minors shared: 3 subtractions and 10 flops per point instead of a full orient3d.
+/// these minors shared: 3 subtractions and about 12 other flops per point, not a full orient3d.
 struct PlaneFilter {
   V3 origin, normal, permanent;
 };
