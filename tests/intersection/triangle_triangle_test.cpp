@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -60,7 +61,7 @@ TYPED_TEST(TriangleTriangle, RandomAgainstOracle) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int hits = 0;
-  for (int trial = 0; trial < 1500; ++trial) {
+  for (int trial = 0; trial < 500; ++trial) {
     Triangle3<T> a, b;
     for (int i = 0; i < 3; ++i) {
       a[i] = rng.template vec<T, 3>(T(-1), T(1));
@@ -71,8 +72,8 @@ TYPED_TEST(TriangleTriangle, RandomAgainstOracle) {
     ASSERT_EQ(intersects(a, b), want) << "trial " << trial;
     ASSERT_EQ(intersects(b, a), want) << "trial " << trial;
   }
-  EXPECT_GT(hits, 150);
-  EXPECT_LT(hits, 1350);
+  EXPECT_GT(hits, 50);
+  EXPECT_LT(hits, 450);
 }
 
 // Small integer grids: coplanar pairs, shared and coincident vertices, touching edges and
@@ -83,7 +84,7 @@ TYPED_TEST(TriangleTriangle, IntegerGridDegeneracies) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int hits = 0, coplanar = 0, degenerate = 0;
-  for (int trial = 0; trial < 2500; ++trial) {
+  for (int trial = 0; trial < 1000; ++trial) {
     const int hi = trial % 2 == 0 ? 2 : 4;
     Triangle3<T> a = grid_triangle<T>(rng, 0, hi), b = grid_triangle<T>(rng, 0, hi);
     if (trial % 3 == 0) {  // put both in the plane z = 1
@@ -104,9 +105,9 @@ TYPED_TEST(TriangleTriangle, IntegerGridDegeneracies) {
     expect_all_orders(a, b, want);
     if (::testing::Test::HasFailure()) return;
   }
-  EXPECT_GT(hits, 250);
-  EXPECT_GT(coplanar, 250);
-  EXPECT_GT(degenerate, 30);
+  EXPECT_GT(hits, 100);
+  EXPECT_GT(coplanar, 100);
+  EXPECT_GT(degenerate, 12);
 }
 
 // Touching configurations and their one-ulp perturbations both ways: the exact answer flips
@@ -116,7 +117,7 @@ TYPED_TEST(TriangleTriangle, OneUlpPerturbations) {
   Rng rng;
   SCOPED_TRACE(rng.trace());
   int flips = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  for (int trial = 0; trial < 150; ++trial) {
     Triangle3<T> a, b;
     for (int i = 0; i < 3; ++i) a[i] = rng.template vec<T, 3>(T(-1), T(1));
     // b touches a: one vertex of b is a vertex of a, or b's vertex is the midpoint-ish point of
@@ -149,7 +150,88 @@ TYPED_TEST(TriangleTriangle, OneUlpPerturbations) {
       }
     }
   }
-  EXPECT_GT(flips, 50);
+  EXPECT_GT(flips, 25);
+}
+
+// Vertices exactly in the other's plane without a shared vertex (T-junctions of meshes): b's
+// first vertex is the midpoint of an edge of a, a point inside a, or a point of a's plane
+// outside a (2 a_i - a_j); its second optionally too (then an edge of b lies in a's plane), the
+// rest random. Coordinates are multiples of 2^-k (k = 30 for double, 10 for float) so that those
+// points are exact, yet far from the small lattices the predicates shortcut: the exact zeros go
+// through the adaptive stages. Shared edges and vertices with random coordinates as well.
+TYPED_TEST(TriangleTriangle, VertexOnEdgeAndPlaneAgainstOracle) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  const int bits = std::is_same_v<T, float> ? 10 : 30;
+  const auto coord = [&] {
+    return std::ldexp(std::round(std::ldexp(rng.uniform(-1.0, 1.0), bits)), -bits);
+  };
+  const auto point = [&] { return Vec3<T>{T(coord()), T(coord()), T(coord())}; };
+  int hits = 0, misses = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const Triangle3<T> a{point(), point(), point()};
+    const int i = rng.uniform_int(0, 2), j = (i + 1) % 3, k = (i + 2) % 3;
+    const auto in_plane = [&](int kind) -> Vec3<T> {
+      switch (kind) {
+        case 0:
+          return (a[i] + a[j]) * T(0.5);  // on an edge
+        case 1:
+          return ((a[i] + a[j]) * T(0.5) + a[k]) * T(0.5);  // inside
+        case 2:
+          return a[i] * T(2) - a[j];  // outside, on the edge line
+        default:
+          return (a[i] + a[j]) - a[k];  // outside, beyond the edge
+      }
+    };
+    Triangle3<T> b{in_plane(trial % 4), point(), point()};
+    if (trial % 3 == 1) b.v1 = in_plane((trial / 4) % 4);  // an edge of b in a's plane
+    if (trial % 7 == 3) b.v1 = a[j];                       // a shared vertex
+    if (trial % 11 == 5) b = {a[i], a[j], point()};        // a shared edge
+    const bool want = oracle(a, b);
+    hits += want;
+    misses += !want;
+    SCOPED_TRACE(trial);
+    expect_all_orders(a, b, want);
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_GT(hits, 60);
+  EXPECT_GT(misses, 15);
+}
+
+// The shared-normal plane filter is det3_stage_a on the transposed rows: the same decisions as
+// the stage-A filter, and every decided sign is orient3d's, on generic and nearly coplanar
+// points (one ulp off a's plane, where the filter must give up).
+TEST(TriangleTrianglePlaneFilter, DecidesAsStageAAndAgreesWithOrient3d) {
+  namespace d = detail::tri3;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  int decided = 0, undecided = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    d::V3 a[3], x;
+    for (auto& v : a) v = rng.template vec<double, 3>(-1.0, 1.0);
+    if (trial % 2 == 0) {
+      x = rng.template vec<double, 3>(-1.0, 1.0);
+    } else {
+      x = (a[0] + a[1]) * 0.5;
+      x.x = std::nextafter(x.x, trial % 4 == 1 ? 2.0 : -2.0);
+    }
+    const d::PlaneFilter f = d::plane_filter(a[0], a[1], a[2]);
+    const d::V3 u = a[1] - a[0], v = a[2] - a[0], w = x - a[0];
+    const auto stage_a =
+        detail::det3_stage_a<double>(d::V3{u.x, v.x, w.x}, d::V3{u.y, v.y, w.y},
+                                     d::V3{u.z, v.z, w.z}, [](double t) { return std::abs(t); });
+    const int s = d::filtered_side(f, x);
+    ASSERT_EQ(s != 2, detail::certain(stage_a)) << trial;
+    if (s != 2) {
+      ASSERT_EQ(s, to_int(orient3d(a[0], a[1], a[2], x))) << trial;
+      ++decided;
+    } else {
+      ++undecided;
+    }
+  }
+  EXPECT_GT(decided, 900);
+  EXPECT_GT(undecided, 100);
 }
 
 TYPED_TEST(TriangleTriangle, CoplanarOverlapAndTouch) {
@@ -185,7 +267,7 @@ TYPED_TEST(TriangleTriangle, PowerOfTwoScaleKeepsAnswer) {
   using T = TypeParam;
   Rng rng;
   SCOPED_TRACE(rng.trace());
-  for (int trial = 0; trial < 800; ++trial) {
+  for (int trial = 0; trial < 300; ++trial) {
     Triangle3<T> a = grid_triangle<T>(rng, -3, 3), b = grid_triangle<T>(rng, -3, 3);
     if (trial % 2 == 0) {
       for (int i = 0; i < 3; ++i) b[i] = rng.template vec<T, 3>(T(-3), T(3));

@@ -3,10 +3,13 @@
 // Two triangles in 3D: intersects() (the book's test) and intersection() (find); book section
 // 11.5.4, figures 11.27, 11.28; row int3.plane-triangle. Used by mesh/mesh_checks.hpp.
 // Triangles are closed sets: touching at a vertex, along an edge or in a shared plane counts.
-// intersects: every decision is an exact sign (orient3d, orient2d), no tolerance: a plane
-// rejection, then six exact segment-triangle tests (two closed convex sets whose boundaries are
-// their edges meet iff an edge of one meets the other; docs/notes/mesh.md). Invariant under
-// swapping, reordering vertices and power-of-two scaling. Cost: 6 orient3d usually, <= ~40.
+// intersects: every decision exact, no tolerance (Guigue-Devillers' order): each triangle's
+// vertex signs against the other's plane (stage-A filter sharing the plane's minors; undecided:
+// a shared vertex means true, else exact), rejection when strictly one side; then the overlap of
+// the two intervals on the common line (2 exact signs; docs/notes/intersection3.md). Coplanar or
+// degenerate: six exact segment-triangle tests (docs/notes/mesh.md). Invariant under swapping,
+// reordering vertices and power-of-two scaling. Cost: 3-8 filtered signs; + an adaptive one per
+// vertex exactly in the other's plane (T-junction); coplanar <= ~40 signs.
 // intersection -> TriangleTriangleIntersection<T> (param_a, param_b: (s, t) of point_at(tri, st)
 // on each triangle): empty, point, segment (ordered along cross(normal a, normal b)) or, when
 // coplanar with a common area, polygon (<= 6 vertices in the order of a's vertices, i.e.
@@ -161,40 +164,92 @@ template <Real T>
   return (s0 > 0 && s1 > 0 && s2 > 0) || (s0 < 0 && s1 < 0 && s2 < 0);
 }
 
-}  // namespace detail::tri3
-
-/// Whether two closed triangles in 3D share a point (exact; see the header comment).
+/// The general test for every configuration (coplanar and degenerate triangles included): a
+/// plane rejection, then six exact segment-triangle tests. Out of line: intersects() calls it
+/// only when a triangle lies in the other's plane (or is degenerate).
 template <Real T>
-[[nodiscard]] inline bool intersects(const Triangle3<T>& a, const Triangle3<T>& b) noexcept {
-  if (!detail::tri3::finite(a) || !detail::tri3::finite(b)) return false;
-  if (detail::tri3::separated_by_plane(a, b) || detail::tri3::separated_by_plane(b, a)) {
-    return false;
-  }
+[[nodiscard]] LOCUS_NOINLINE bool intersects_general(const Triangle3<T>& a,
+                                                     const Triangle3<T>& b) noexcept {
+  if (!finite(a) || !finite(b)) return false;
+  if (separated_by_plane(a, b) || separated_by_plane(b, a)) return false;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
-    if (detail::tri3::segment_triangle(a[i], a[j], b.v0, b.v1, b.v2)) return true;
-    if (detail::tri3::segment_triangle(b[i], b[j], a.v0, a.v1, a.v2)) return true;
+    if (segment_triangle(a[i], a[j], b.v0, b.v1, b.v2)) return true;
+    if (segment_triangle(b[i], b[j], a.v0, a.v1, a.v2)) return true;
   }
   return false;
 }
 
-/// The result of intersection(Triangle3, Triangle3): (s, t) on each triangle; up to 6 points.
-template <Real T>
-using TriangleTriangleIntersection = Intersection<T, 3, Vec2<T>, Vec2<T>, 6>;
-
-namespace detail::tri3 {
-
 using V3 = Vec3<double>;
 using V2 = Vec2<double>;
-using FindResult = Intersection<double, 3, V2, V2, 6>;
 
-/// (s, t) of a point x (in or near the plane of the non-degenerate triangle v), rounded.
-[[nodiscard]] inline V2 st_of(const V3 v[3], const V3& x) noexcept {
-  const V3 e1 = v[1] - v[0], e2 = v[2] - v[0], w = x - v[0];
-  const V3 n = cross(e1, e2);
-  const double nn = dot(n, n);
-  if (!(nn > 0.0)) return {0.0, 0.0};
-  return {dot(cross(w, e2), n) / nn, dot(cross(e1, w), n) / nn};
+/// The plane of the triangle (o, o + u, o + v) prepared for the signs orient3d(o, o + u, o + v, p)
+/// of several points p: the 2x2 minors of u, v (the rounded normal u x v) and their permanents
+/// are computed once. For p the filter evaluates det3_stage_a on the transposed rows
+/// (u.x, v.x, w.x), (u.y, v.y, w.y), (u.z, v.z, w.z), w = p - o, operation for operation (so
+/// the same value and the same stage-A bound, valid for any rows of rounded differences), with
+/// these minors shared: 3 subtractions and about 12 other flops per point, not a full orient3d.
+struct PlaneFilter {
+  V3 origin, normal, permanent;
+};
+
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline PlaneFilter plane_filter(const V3& o, const V3& p,
+                                                                  const V3& q) noexcept {
+  const V3 u = p - o, v = q - o;
+  const double yz = u.y * v.z, zy = u.z * v.y;
+  const double zx = u.z * v.x, xz = u.x * v.z;
+  const double xy = u.x * v.y, yx = u.y * v.x;
+  return {o,
+          {yz - zy, zx - xz, xy - yx},
+          {std::abs(yz) + std::abs(zy), std::abs(zx) + std::abs(xz), std::abs(xy) + std::abs(yx)}};
+}
+
+/// The exact sign of orient3d(o, p, q, x) (-1, 0, +1) when the filter decides it, else 2. An
+/// exact zero never passes (its rounded value cannot exceed its error bound), nor does
+/// non-finite input (the bound is then infinite or NaN, the comparison strict).
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline int filtered_side(const PlaneFilter& f,
+                                                           const V3& x) noexcept {
+  const V3 w = x - f.origin;
+  const double det = w.x * f.normal.x + w.y * f.normal.y + w.z * f.normal.z;
+  const double permanent =
+      f.permanent.x * std::abs(w.x) + f.permanent.y * std::abs(w.y) + f.permanent.z * std::abs(w.z);
+  const double bound = orient3d_bound_a * permanent;
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  return 2;
+}
+
+/// Whether a vertex of a equals (exactly) a vertex of b.
+[[nodiscard]] inline bool share_vertex(const V3 a[3], const V3 b[3]) noexcept {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (a[i] == b[j]) return true;
+    }
+  }
+  return false;
+}
+
+[[nodiscard]] inline bool finite3(const V3 v[3]) noexcept {
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(v[i].x) || !std::isfinite(v[i].y) || !std::isfinite(v[i].z)) return false;
+  }
+  return true;
+}
+
+/// The slow path of the plane signs s of b's vertices relative to a's plane (some undecided,
+/// value 2): 1 = the triangles share a vertex (they meet), -1 = non-finite input (false), 0 = the
+/// signs are now exact.
+[[nodiscard]] LOCUS_NOINLINE inline int resolve_sides(const V3 a[3], const V3 b[3],
+                                                      int s[3]) noexcept {
+  if (!finite3(a) || !finite3(b)) return -1;
+  if (share_vertex(a, b)) return 1;
+  for (int j = 0; j < 3; ++j) {
+    // The filter has failed: straight to the adaptive stages (exact), without a second stage A
+    // or the lattice test (it applies only where stage B is exact already; a T-junction off
+    // any small lattice pays for it failing).
+    if (s[j] == 2) s[j] = to_int(detail::orient3d_adaptive(a[0], a[1], a[2], b[j]));
+  }
+  return 0;
 }
 
 /// An end point of one triangle's interval on the common line: the crossing of its edge line
@@ -225,6 +280,119 @@ struct Interval {
   iv.lo = b_first ? eb : ec;
   iv.hi = b_first ? ec : eb;
   return iv;
+}
+
+/// A coordinate plane in which the non-degenerate triangle t projects non-degenerately, and the
+/// orientation there (nonzero).
+struct Projection {
+  int axis = -1, orientation = 0;
+};
+
+[[nodiscard]] inline Projection projection_of(const V3 t[3]) noexcept {
+  for (int k = 2; k >= 0; --k) {
+    if (const int o = to_int(orient2d(drop(t[0], k), drop(t[1], k), drop(t[2], k)))) return {k, o};
+  }
+  return {};
+}
+
+/// orient3d(p, q, r, s) for p, q, r in the plane of the non-degenerate triangle t (projection
+/// pt) and s on side s_side of it (nonzero): (q - p) x (r - p) = lambda n_t, so the sign is
+/// sign(lambda) s_side, and lambda has the sign of its projection's orient2d times t's. The same
+/// exact sign as orient3d, from an orient2d whose exact zero (r on the line pq: a T-junction) is
+/// far cheaper to certify than orient3d's.
+[[nodiscard]] inline int orient3d_in_plane(const V3 t[3], Projection& pt, const V3& p, const V3& q,
+                                           const V3& r, int s_side) noexcept {
+  if (pt.axis < 0) pt = projection_of(t);
+  const int k = pt.axis;
+  return to_int(orient2d(drop(p, k), drop(q, k), drop(r, k))) * pt.orientation * s_side;
+}
+
+/// sign(dot(D, Y - X)) for X an end of a, Y an end of b (exact): orient3d(a_p, a_q, b_p, b_q)
+/// times the ends' e. When one of the four points lies in the other triangle's plane (a sign
+/// zero; at most one per end, since every end has a vertex off the plane) it is evaluated by
+/// orient3d_in_plane (the permutation (a_p, a_q, b_p, b_q) -> (b_p, b_q, a_p, a_q) is even).
+[[nodiscard]] inline int compare(const V3 a[3], const int sa[3], Projection& pa, const End& x,
+                                 const V3 b[3], const int sb[3], Projection& pb,
+                                 const End& y) noexcept {
+  int o;
+  if (sb[y.p] == 0) {
+    o = orient3d_in_plane(a, pa, a[x.p], a[x.q], b[y.p], sb[y.q]);
+  } else if (sb[y.q] == 0) {
+    o = -orient3d_in_plane(a, pa, a[x.p], a[x.q], b[y.q], sb[y.p]);
+  } else if (sa[x.p] == 0) {
+    o = orient3d_in_plane(b, pb, b[y.p], b[y.q], a[x.p], sa[x.q]);
+  } else if (sa[x.q] == 0) {
+    o = -orient3d_in_plane(b, pb, b[y.p], b[y.q], a[x.q], sa[x.p]);
+  } else {
+    o = to_int(orient3d(a[x.p], a[x.q], b[y.p], b[y.q]));
+  }
+  return o * x.e * y.e;
+}
+
+/// Neither triangle in the other's plane, neither degenerate, each touching or crossing the
+/// other's plane (sa: a's sides relative to b's plane, sb: b's relative to a's): the intervals
+/// [lo_a, hi_a], [lo_b, hi_b] of the common line meet iff lo_a <= hi_b and lo_b <= hi_a.
+[[nodiscard]] inline bool intervals_meet(const V3 a[3], const int sa[3], const V3 b[3],
+                                         const int sb[3]) noexcept {
+  const Interval ia = interval(sa, 1), ib = interval(sb, -1);
+  Projection pa, pb;
+  return compare(a, sa, pa, ia.lo, b, sb, pb, ib.hi) >= 0 &&
+         compare(a, sa, pa, ia.hi, b, sb, pb, ib.lo) <= 0;
+}
+
+/// Some sign left undecided by the filter (value 2).
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline bool undecided(const int s[3]) noexcept {
+  return (s[0] == 2) | (s[1] == 2) | (s[2] == 2);
+}
+
+/// All three signs nonzero and equal (strictly on one side).
+[[nodiscard]] LOCUS_ALWAYS_INLINE inline bool one_side(const int s[3]) noexcept {
+  return s[0] == s[1] && s[1] == s[2] && s[0] != 0;
+}
+
+}  // namespace detail::tri3
+
+/// Whether two closed triangles in 3D share a point (exact; see the header comment).
+template <Real T>
+[[nodiscard]] inline bool intersects(const Triangle3<T>& ta, const Triangle3<T>& tb) noexcept {
+  namespace d = detail::tri3;
+  const d::V3 a[3] = {vec_cast<double>(ta.v0), vec_cast<double>(ta.v1), vec_cast<double>(ta.v2)};
+  const d::V3 b[3] = {vec_cast<double>(tb.v0), vec_cast<double>(tb.v1), vec_cast<double>(tb.v2)};
+  // b's vertices against a's plane (Guigue-Devillers' order: reject as early as possible).
+  const d::PlaneFilter fa = d::plane_filter(a[0], a[1], a[2]);
+  int sb[3] = {d::filtered_side(fa, b[0]), d::filtered_side(fa, b[1]), d::filtered_side(fa, b[2])};
+  if (d::undecided(sb)) [[unlikely]] {
+    if (const int r = d::resolve_sides(a, b, sb)) return r > 0;
+  }
+  if (d::one_side(sb)) return false;
+  const d::PlaneFilter fb = d::plane_filter(b[0], b[1], b[2]);
+  int sa[3] = {d::filtered_side(fb, a[0]), d::filtered_side(fb, a[1]), d::filtered_side(fb, a[2])};
+  if (d::undecided(sa)) [[unlikely]] {
+    if (const int r = d::resolve_sides(b, a, sa)) return r > 0;
+  }
+  if (d::one_side(sa)) return false;
+  // A triangle in the other's plane: coplanar, or degenerate (orient3d is then zero for all).
+  if ((sa[0] == 0 && sa[1] == 0 && sa[2] == 0) || (sb[0] == 0 && sb[1] == 0 && sb[2] == 0)) {
+    return d::intersects_general(ta, tb);
+  }
+  return d::intervals_meet(a, sa, b, sb);
+}
+
+/// The result of intersection(Triangle3, Triangle3): (s, t) on each triangle; up to 6 points.
+template <Real T>
+using TriangleTriangleIntersection = Intersection<T, 3, Vec2<T>, Vec2<T>, 6>;
+
+namespace detail::tri3 {
+
+using FindResult = Intersection<double, 3, V2, V2, 6>;
+
+/// (s, t) of a point x (in or near the plane of the non-degenerate triangle v), rounded.
+[[nodiscard]] inline V2 st_of(const V3 v[3], const V3& x) noexcept {
+  const V3 e1 = v[1] - v[0], e2 = v[2] - v[0], w = x - v[0];
+  const V3 n = cross(e1, e2);
+  const double nn = dot(n, n);
+  if (!(nn > 0.0)) return {0.0, 0.0};
+  return {dot(cross(w, e2), n) / nn, dot(cross(e1, w), n) / nn};
 }
 
 /// sign(dot(D, Y - X)) for X an end of a, Y an end of b (exact).
