@@ -51,37 +51,271 @@ BezierPatch<T, 3> flat(T s = T(1)) {
   return {2, 2, {{-2 * s, -2 * s, 0}, {-2 * s, 2 * s, 0}, {2 * s, -2 * s, 0}, {2 * s, 2 * s, 0}}};
 }
 
-TYPED_TEST(SurfaceContact, Probe) {
+/// A random bicubic patch (seeded) near the unit square, coordinates multiples of 1/64: its
+/// de Casteljau halves and degree elevation are exact in float as well.
+template <class T>
+BezierPatch<T, 3> random_patch(locus_test::Rng& rng) {
+  const auto q = [&](double lo, double hi) { return T(std::round(64 * rng.uniform(lo, hi)) / 64); };
+  BezierPatch<T, 3> p{4, 4, {}};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      p.control.push_back(
+          {T(i) * T(0.375) + q(-0.1, 0.1), T(j) * T(0.375) + q(-0.1, 0.1), q(-0.4, 0.4)});
+  return p;
+}
+
+/// The elliptic cylinder x in [0, 1] over the rational quadratic arc (-1, 1/2), (0, -1),
+/// (1, 1/2) with weights 1, 1/2, 1 (times s, mirrored by `side`): its middle point is (x, 0, 0)
+/// (z = (2 h - 2 w k) / (2 + 2 w) = 0) with the horizontal tangent there (symmetry), so it lies on
+/// the plane z = 0 along the x-axis. Every number is exact in float.
+template <class T>
+NurbsSurface<T, 3> cylinder(T side = T(1), T s = T(1)) {
+  const T h = side * s / 2, k = -side * s;
+  return {1,
+          2,
+          2,
+          3,
+          {{0, -s, h}, {0, 0, k}, {0, s, h}, {s, -s, h}, {s, 0, k}, {s, s, h}},
+          {1, T(0.5), 1, 1, T(0.5), 1},
+          {0, 0, 1, 1},
+          {0, 0, 0, 1, 1, 1}};
+}
+
+/// Area of a union of disjoint parameter rectangles, and whether all lie in [lo, hi].
+template <class T>
+double area(const std::vector<ParamRect<T>>& rects) {
+  double sum = 0.0;
+  for (const auto& b : rects) sum += double(b.hi.x - b.lo.x) * double(b.hi.y - b.lo.y);
+  return sum;
+}
+
+TYPED_TEST(SurfaceContact, TouchingParaboloidsMeetAtOnePoint) {
   using T = TypeParam;
-  const auto show = [](const char* name, const auto& r) {
-    std::printf("%s: status %d curves %zu contacts %zu ca %zu cb %zu\n", name, int(r.status),
-                r.curves.size(), r.contacts.size(), r.coincident_a.size(), r.coincident_b.size());
-    for (const auto& c : r.curves)
-      std::printf("  curve n=%zu closed=%d tangent=%d ends %d %d first (%g %g %g) last (%g %g %g)\n",
-                  c.points.size(), c.closed, c.tangent, int(c.first_end), int(c.last_end),
-                  double(c.points.front().x), double(c.points.front().y), double(c.points.front().z),
-                  double(c.points.back().x), double(c.points.back().y), double(c.points.back().z));
-    for (const auto& c : r.contacts)
-      std::printf("  contact (%g %g %g)\n", double(c.point.x), double(c.point.y), double(c.point.z));
-    for (const auto& b : r.coincident_a)
-      std::printf("  ca [%g %g]x[%g %g]\n", double(b.lo.x), double(b.hi.x), double(b.lo.y), double(b.hi.y));
-    for (const auto& b : r.coincident_b)
-      std::printf("  cb [%g %g]x[%g %g]\n", double(b.lo.x), double(b.hi.x), double(b.lo.y), double(b.hi.y));
-  };
-  show("bowls", intersection(paraboloid<T>(1, 0), paraboloid<T>(-1, 0)));
-  show("plane-bump", intersection(flat<T>(), paraboloid<T>(-1, 0)));
-  show("same", intersection(paraboloid<T>(1, 0), paraboloid<T>(1, 0)));
-  show("loop", intersection(paraboloid<T>(-1, T(1) / 256, T(0.125)), flat<T>()));
-  show("loop0", intersection(paraboloid<T>(-1, T(1) / 256), flat<T>()));
+  const double tol = pick<T>(1e-5, 1e-9);
+  for (const T s : {T(1), T(0x1p-6), T(0x1p7)}) {
+    // z = (x - c)^2 + (y - c)^2 and its negative touch at (c, c, 0), c = 5/16 (exact data).
+    const T c = T(5) / T(16);
+    const auto r = intersection(paraboloid<T>(1, 0, c, s), paraboloid<T>(-1, 0, c, s));
+    ASSERT_EQ(r.status, Status::ok);
+    EXPECT_TRUE(r.curves.empty());
+    EXPECT_TRUE(r.coincident_a.empty() && r.coincident_b.empty());
+    ASSERT_EQ(r.contacts.size(), 1u) << s;
+    const auto& k = r.contacts[0];
+    EXPECT_NEAR(double(k.point.x) / double(s), double(c), tol);
+    EXPECT_NEAR(double(k.point.y) / double(s), double(c), tol);
+    EXPECT_NEAR(double(k.point.z) / double(s), 0.0, tol);
+    // x = 2u - 1: u = (c + 1) / 2 on both.
+    for (const auto& uv : {k.param_a, k.param_b}) {
+      EXPECT_NEAR(double(uv.x), (double(c) + 1) / 2, tol);
+      EXPECT_NEAR(double(uv.y), (double(c) + 1) / 2, tol);
+    }
+    // A plane tangent to a bump: the flat patch z = 0 under z = -(x^2 + y^2).
+    const auto q = intersection(flat<T>(s), paraboloid<T>(-1, 0, T(0), s));
+    ASSERT_EQ(q.status, Status::ok);
+    EXPECT_TRUE(q.curves.empty());
+    ASSERT_EQ(q.contacts.size(), 1u);
+    EXPECT_LE(double(max_abs(q.contacts[0].point)) / double(s), tol);
+    EXPECT_NEAR(double(q.contacts[0].param_a.x), 0.5, tol);
+    EXPECT_NEAR(double(q.contacts[0].param_b.y), 0.5, tol);
+    // Lifted apart: no contact, no curve.
+    const auto apart = intersection(paraboloid<T>(1, T(1) / 64, c, s), paraboloid<T>(-1, 0, c, s));
+    EXPECT_EQ(apart.status, Status::ok);
+    EXPECT_TRUE(apart.contacts.empty() && apart.curves.empty());
+  }
+}
+
+TYPED_TEST(SurfaceContact, CylinderTouchesAPlaneAlongALine) {
+  using T = TypeParam;
+  const double tol = pick<T>(1e-5, 1e-9);
+  for (const T s : {T(1), T(0x1p-5), T(0x1p6)}) {
+    const NurbsSurface<T, 3> cyl = cylinder<T>(T(1), s);
+    // On the plane patch, in both argument orders, and on the mirrored cylinder (two cylinders
+    // touching along a generator).
+    const auto check = [&](const SurfaceCurves<T>& r, bool cyl_first) {
+      ASSERT_EQ(r.status, Status::ok);
+      EXPECT_TRUE(r.contacts.empty());
+      ASSERT_EQ(r.curves.size(), 1u) << s;
+      const auto& c = r.curves[0];
+      EXPECT_TRUE(c.tangent);
+      EXPECT_FALSE(c.closed);
+      EXPECT_EQ(c.first_end, SurfaceCurveEnd::boundary);
+      EXPECT_EQ(c.last_end, SurfaceCurveEnd::boundary);
+      double xmin = INFINITY, xmax = -INFINITY;
+      for (std::size_t i = 0; i < c.points.size(); ++i) {
+        const auto& p = c.points[i];
+        EXPECT_LE(std::fabs(double(p.y)) / double(s), tol);
+        EXPECT_LE(std::fabs(double(p.z)) / double(s), tol);
+        xmin = std::min(xmin, double(p.x) / double(s));
+        xmax = std::max(xmax, double(p.x) / double(s));
+        // The cylinder's parameters: v = 1/2 on the contact line, u = x.
+        const Vec2<T> uv = cyl_first ? c.param_a[i] : c.param_b[i];
+        EXPECT_NEAR(double(uv.y), 0.5, tol);
+        EXPECT_NEAR(double(uv.x), double(p.x) / double(s), tol);
+      }
+      EXPECT_NEAR(xmin, 0.0, tol);
+      EXPECT_NEAR(xmax, 1.0, tol);
+      // Consecutive points at most a tracing step apart (the line is sampled, not skipped).
+      for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
+        EXPECT_LE(double(length(c.points[i + 1] - c.points[i])) / double(s), 0.25);
+    };
+    check(intersection(cyl, flat<T>(s)), true);
+    check(intersection(flat<T>(s), cyl), false);
+    check(intersection(cyl, cylinder<T>(T(-1), s)), true);
+  }
+}
+
+TYPED_TEST(SurfaceContact, SaddleBranchesCrossAtAContact) {
+  using T = TypeParam;
+  // z = x^2 - y^2 meets its tangent plane z = 0 in the lines y = +-x, which cross where the
+  // surfaces touch.
   BezierPatch<T, 3> saddle{3, 3, {}};
   const T sq[3] = {1, -1, 1};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) saddle.control.push_back({T(i - 1), T(j - 1), sq[i] - sq[j]});
-  show("saddle", intersection(saddle, flat<T>()));
-  const NurbsSurface<T, 3> cyl{1, 2, 2, 3,
-      {{0, -1, T(0.5)}, {0, 0, -1}, {0, 1, T(0.5)}, {1, -1, T(0.5)}, {1, 0, -1}, {1, 1, T(0.5)}},
-      {1, T(0.5), 1, 1, T(0.5), 1}, {0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}};
-  show("cyl", intersection(cyl, flat<T>()));
+  const auto r = intersection(saddle, flat<T>());
+  ASSERT_EQ(r.status, Status::ok);
+  ASSERT_EQ(r.contacts.size(), 1u);
+  EXPECT_LE(double(max_abs(r.contacts[0].point)), pick<T>(1e-5, 1e-9));
+  ASSERT_FALSE(r.curves.empty());
+  double len = 0.0;
+  for (const auto& c : r.curves) {
+    EXPECT_FALSE(c.tangent);
+    EXPECT_FALSE(c.closed);
+    // Every branch ends on the boundary or at the contact, and says which.
+    for (const auto& [end, p] :
+         {std::pair{c.first_end, c.points.front()}, std::pair{c.last_end, c.points.back()}}) {
+      if (end == SurfaceCurveEnd::boundary)
+        EXPECT_NEAR(double(std::max(std::fabs(p.x), std::fabs(p.y))), 1.0, 1e-6);
+      else
+        EXPECT_EQ(end, SurfaceCurveEnd::tangent_point);
+    }
+    for (std::size_t i = 0; i < c.points.size(); ++i) {
+      const auto& p = c.points[i];
+      EXPECT_NEAR(std::fabs(double(p.x)), std::fabs(double(p.y)), pick<T>(1e-5, 1e-9));
+      EXPECT_NEAR(double(p.z), 0.0, pick<T>(1e-5, 1e-9));
+      if (i + 1 < c.points.size()) len += double(length(c.points[i + 1] - p));
+    }
+  }
+  // The two diagonals, each of length 2 sqrt(2), covered once.
+  EXPECT_NEAR(len, 4 * std::sqrt(2.0), 0.05);
+}
+
+TYPED_TEST(SurfaceContact, CoincidentCopiesAreReportedNotTraced) {
+  using T = TypeParam;
+  locus_test::Rng rng(29);
+  for (int iter = 0; iter < 3; ++iter) {
+    const BezierPatch<T, 3> p = random_patch<T>(rng);
+    // The same patch.
+    const auto same = intersection(p, p);
+    ASSERT_EQ(same.status, Status::ok) << rng.trace();
+    EXPECT_TRUE(same.curves.empty() && same.contacts.empty()) << rng.trace();
+    EXPECT_EQ(area(same.coincident_a), 1.0) << rng.trace();
+    EXPECT_EQ(area(same.coincident_b), 1.0) << rng.trace();
+    // The half u in [0, 1/2] by de Casteljau in long double (the rows are the u direction).
+    BezierPatch<T, 3> half{4, 4, p.control};
+    for (int j = 0; j < 4; ++j) {
+      long double b[4][3];
+      for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 3; ++k) b[i][k] = p.control[static_cast<std::size_t>(i * 4 + j)][k];
+      for (int i = 0; i < 4; ++i) {
+        for (int k = 0; k < 3; ++k)
+          half.control[static_cast<std::size_t>(i * 4 + j)][k] = T(b[0][k]);
+        for (int m = 0; m + 1 < 4 - i; ++m)
+          for (int k = 0; k < 3; ++k) b[m][k] = (b[m][k] + b[m + 1][k]) / 2;
+      }
+    }
+    const auto sub = intersection(half, p);
+    ASSERT_EQ(sub.status, Status::ok) << rng.trace();
+    EXPECT_TRUE(sub.curves.empty() && sub.contacts.empty()) << rng.trace();
+    EXPECT_EQ(area(sub.coincident_a), 1.0) << rng.trace();
+    EXPECT_EQ(area(sub.coincident_b), 0.5) << rng.trace();
+    for (const auto& b : sub.coincident_b) EXPECT_LE(double(b.hi.x), 0.5);
+    // Degree-elevated in u (Q_i = i/4 P_(i-1) + (1 - i/4) P_i), as a NURBS: the same surface.
+    NurbsSurface<T, 3> up{4,
+                          3,
+                          5,
+                          4,
+                          {},
+                          std::vector<T>(20, T(1)),
+                          {0, 0, 0, 0, 0, 1, 1, 1, 1, 1},
+                          {0, 0, 0, 0, 1, 1, 1, 1}};
+    for (int i = 0; i <= 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const long double t = i / 4.0L;
+        Vec3<T> q{};
+        for (int k = 0; k < 3; ++k) {
+          const long double lo =
+              i > 0 ? p.control[static_cast<std::size_t>((i - 1) * 4 + j)][k] : 0;
+          const long double hi = i < 4 ? p.control[static_cast<std::size_t>(i * 4 + j)][k] : 0;
+          q[k] = T(t * lo + (1 - t) * hi);
+        }
+        up.control.push_back(q);
+      }
+    const auto elevated = intersection(p, up);
+    ASSERT_EQ(elevated.status, Status::ok) << rng.trace();
+    EXPECT_TRUE(elevated.curves.empty() && elevated.contacts.empty()) << rng.trace();
+    EXPECT_EQ(area(elevated.coincident_a), 1.0) << rng.trace();
+    EXPECT_EQ(area(elevated.coincident_b), 1.0) << rng.trace();
+  }
+  // Two plane patches sharing the strip 0 <= x <= 2 of z = 0: the halves u >= 1/2 of the
+  // first and u <= 1/2 of the second.
+  const BezierPatch<T, 3> right{2, 2, {{0, -2, 0}, {0, 2, 0}, {4, -2, 0}, {4, 2, 0}}};
+  const auto strip = intersection(flat<T>(), right);
+  ASSERT_EQ(strip.status, Status::ok);
+  EXPECT_TRUE(strip.curves.empty() && strip.contacts.empty());
+  EXPECT_EQ(area(strip.coincident_a), 0.5);
+  EXPECT_EQ(area(strip.coincident_b), 0.5);
+  for (const auto& b : strip.coincident_a) EXPECT_GE(double(b.lo.x), 0.5);
+  for (const auto& b : strip.coincident_b) EXPECT_LE(double(b.hi.x), 0.5);
+}
+
+TYPED_TEST(SurfaceContact, SmallLoopsHaveTheirClosedFormRadius) {
+  using T = TypeParam;
+  // z = delta - (x - c)^2 - (y - c)^2 cuts z = 0 in the circle of radius sqrt(delta) about
+  // (c, c); c = 1/8 puts its centre on the centre of a subdivision leaf (where Gauss-Newton from
+  // the leaf centre stalls: the gradient vanishes there).
+  for (const T s : {T(1), T(0x1p-4), T(0x1p5)})
+    for (const int e : {8, 12, 16}) {
+      const T delta = std::ldexp(T(1), -e), c = T(0.125);
+      const double radius = std::ldexp(1.0, -e / 2);
+      const auto r = intersection(paraboloid<T>(-1, delta, c, s), flat<T>(s));
+      ASSERT_EQ(r.status, Status::ok);
+      ASSERT_EQ(r.curves.size(), 1u) << e << " " << s;
+      const auto& cv = r.curves[0];
+      EXPECT_TRUE(cv.closed);
+      EXPECT_GE(cv.points.size(), 8u);
+      double len = 0.0;
+      for (std::size_t i = 0; i < cv.points.size(); ++i) {
+        const auto& p = cv.points[i];
+        const double rx = double(p.x) / double(s) - double(c),
+                     ry = double(p.y) / double(s) - double(c);
+        EXPECT_NEAR(std::hypot(rx, ry), radius, pick<T>(1e-5, 1e-9) + 1e-6 * radius);
+        EXPECT_NEAR(double(p.z) / double(s), 0.0, pick<T>(1e-5, 1e-9));
+        len += double(length(cv.points[(i + 1) % cv.points.size()] - p)) / double(s);
+      }
+      // An inscribed polygon: shorter than the circle by at most 2%.
+      EXPECT_LE(len, 2 * std::numbers::pi * radius * (1 + 1e-9));
+      EXPECT_GE(len, 2 * std::numbers::pi * radius * 0.98);
+    }
+}
+
+TYPED_TEST(SurfaceContact, NonFiniteAndInvalidInput) {
+  using T = TypeParam;
+  for (const T bad : {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity()}) {
+    BezierPatch<T, 3> p = paraboloid<T>(1, 0);
+    p.control[4].z = bad;
+    EXPECT_EQ(intersection(p, flat<T>()).status, Status::non_finite_input);
+    EXPECT_EQ(intersection(flat<T>(), p).status, Status::non_finite_input);
+    NurbsSurface<T, 3> cyl = cylinder<T>();
+    cyl.weights[1] = bad;
+    const auto r = intersection(cyl, flat<T>());
+    EXPECT_EQ(r.status, Status::non_finite_input);
+    EXPECT_TRUE(r.curves.empty() && r.contacts.empty() && r.coincident_a.empty());
+  }
+  // Swapping the arguments swaps the parameters of contacts and coincident regions.
+  const auto r = swapped(intersection(flat<T>(), paraboloid<T>(-1, 0)));
+  ASSERT_EQ(r.contacts.size(), 1u);
+  EXPECT_NEAR(double(r.contacts[0].param_a.x), 0.5, pick<T>(1e-5, 1e-9));
 }
 
 }  // namespace
