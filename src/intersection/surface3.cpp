@@ -964,7 +964,7 @@ struct Pair {
         if (!inside(predicted, 0.0) && exit_at_bound(predicted, false)) return End::boundary;
         h *= 0.5;
         // Stuck: near a touching point the normals turn parallel (the caller locates it).
-        if (h < h0 * 0x1p-10) return normal_sine(x) <= 0x1p-6 ? End::tangent : End::stalled;
+        if (h < h0 * 0x1p-20) return normal_sine(x) <= 0x1p-6 ? End::tangent : End::stalled;
         --n;
         continue;
       }
@@ -1454,12 +1454,17 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
       contact_starts.push_back(seeds[si]);
     }
   locate_contacts(contact_starts);
+  const double near_contact = 0x1p-14 * scale;
   // Seeds next to a curve of contact belong to it (near it the normals are almost parallel and
   // the transversal tracer would follow a shadow of it).
   for (std::size_t si = 0; si < seeds.size(); ++si) {
     const V p = eval(sa, seeds[si][0], seeds[si][1]).p;
     for (const auto& cc : contact_curves)
       if (polyline_distance(p, cc.points, cc.closed) <= 0.1 * h0 + 0x1p-17 * scale) covered[si] = 1;
+    // Near a touching point (seeds there solve Sa = Sb only to the tolerance, within about its
+    // square root of the point) no transversal curve can be told apart from the contact.
+    for (const auto& k : r.contacts)
+      if (length(p - k.point) <= near_contact) covered[si] = 1;
   }
   std::vector<X> branch_ends;
   for (std::size_t si = 0; si < seeds.size(); ++si) {
@@ -1508,7 +1513,13 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
       }
     }
     covered[si] = 1;
-    if (c.points.size() >= 2) r.curves.push_back(std::move(c));
+    bool shadow = !r.contacts.empty();  // every point next to one contact: its shadow
+    for (const V& p : c.points) {
+      bool near = false;
+      for (const auto& k : r.contacts) near = near || length(p - k.point) <= near_contact;
+      shadow = shadow && near;
+    }
+    if (c.points.size() >= 2 && !shadow) r.curves.push_back(std::move(c));
   }
 
   locate_contacts(branch_ends);
