@@ -1349,6 +1349,47 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
     return false;
   };
 
+  // A seed on the loop around the critical point c of the gap (NaN: none): the signed gap g0
+  // at c and at a point of the first surface eta away give the relative normal curvature k
+  // along that direction; the loop crosses it at the radius sqrt(-2 g0 / k) (g0 k < 0), where
+  // Gauss-Newton starts, in the four parameter directions until one lands near that radius.
+  const auto loop_seed = [&](const X& c, double eta) {
+    const Eval ea = eval(sa, c[0], c[1]), eb = eval(sb, c[2], c[3]);
+    const V nb = cross(eb.su, eb.sv);
+    const double lb = length(nb);
+    X none{NAN, NAN, NAN, NAN};
+    if (!(lb > 0.0)) return none;
+    const double g0 = dot(ea.p - eb.p, nb / lb);
+    for (int d = 0; d < 4; ++d) {
+      const V dir = d < 2 ? ea.su : ea.sv;
+      const double ld = length(dir);
+      if (!(ld > 0.0)) continue;
+      const double sign = d % 2 == 0 ? 1.0 : -1.0;
+      X t = c;
+      t[z(d / 2)] += sign * eta / ld;
+      pr.clamp(t);
+      const V q = eval(sa, t[0], t[1]).p;
+      const double moved = length(q - ea.p);
+      double s = c[2], tt = c[3];
+      V nf{};
+      project_point(sb, q, s, tt, INFINITY, nf);
+      if (nf == V{} || !(moved > 0.0)) continue;
+      const double g1 = dot(q - eval(sb, s, tt).p, dot(nf, nb) < 0.0 ? -nf : nf);
+      const double k = 2.0 * (g1 - g0) / (moved * moved);
+      if (!(g0 * k < 0.0)) continue;
+      const double radius = std::sqrt(-2.0 * g0 / k);
+      for (const double f : {1.0, 0.5, 2.0}) {
+        X w = c;
+        w[z(d / 2)] += sign * f * radius / ld;
+        pr.clamp(w);
+        if (!pr.seed(w) || pr.tangent(w) == V{}) continue;
+        const double rw = length(eval(sa, w[0], w[1]).p - ea.p);
+        if (rw >= 0.5 * radius && rw <= 2.0 * radius) return w;
+      }
+    }
+    return none;
+  };
+
   // Seeds: transversal points from the pair centres; where that fails and the normal cones
   // overlap, a critical point of the distance (a contact, or the centre of a small loop).
   std::vector<X> seeds, contact_starts, searched;
@@ -1378,9 +1419,9 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
       contact_starts.push_back(c);
       continue;
     }
-    if (seeded_here) continue;
     // A critical point with a gap: the centre of a possible small loop (the gap function has
-    // an extremum inside every closed loop). Seeds on rings around it, shrinking.
+    // an extremum inside every closed loop), searched even where this pair seeded another
+    // curve (Gauss-Newton from the centres is drawn to the nearer, larger curve).
     const V pc = eval(sa, c[0], c[1]).p;
     const double diag = std::max(length(x.hi - x.lo), length(y.hi - y.lo));
     if (pr.gap(c) * scale > diag) continue;
@@ -1389,20 +1430,8 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
       seen = seen || length(eval(sa, q[0], q[1]).p - pc) <= 0x1p-17 * scale;
     if (seen) continue;
     searched.push_back(c);
-    bool found = false;
-    for (int level = 1; level <= 24 && !found; ++level) {
-      const double du = std::ldexp(x.u1 - x.u0, -level), dv = std::ldexp(x.v1 - x.v0, -level);
-      for (int d = 0; d < 4 && !found; ++d) {
-        X t = c;
-        t[0] += d == 0 ? du : d == 1 ? -du : 0.0;
-        t[1] += d == 2 ? dv : d == 3 ? -dv : 0.0;
-        pr.clamp(t);
-        if (pr.seed(t) && pr.tangent(t) != V{}) {
-          seeds.push_back(t);
-          found = true;
-        }
-      }
-    }
+    const X loop = loop_seed(c, 0.125 * diag);
+    if (loop[0] == loop[0]) seeds.push_back(loop);
   }
 
   const double h0 = std::clamp(opt.step, 0x1p-12, 0.25) * scale;
