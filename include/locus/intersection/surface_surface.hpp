@@ -2,24 +2,33 @@
 #pragma once
 // Intersection of two parametric surfaces (BezierPatch, BSplineSurface, NurbsSurface, in any
 // combination with the same scalar): intersection() returns the intersection curves as polylines;
-// row int3.surface-surface, book section 11.8 (figures 11.59, 11.60: two B-spline surfaces and
-// the curves in each parameter space). Result SurfaceCurves<T> (intersection/detail/surface3.hpp):
-// status and curves, each closed or open (ends on a domain boundary of either surface), with
-// points (on the first surface), param_a (u, v on the first) and param_b (on the second).
-// Method: seeds by subdivision: every Bézier span of each surface is split into
-// (opt.grid / 2)^2 leaves; for each pair of leaves whose control-net boxes overlap, a
-// minimum-norm Gauss-Newton iteration on S_a(u, v) = S_b(s, t) from the leaf centres gives a point
-// of the curve. Tracing: from the first seed not yet on a traced curve, predictor (a step h along
-// the tangent n_a x n_b, h = opt.step times the box diagonal, halved where the corrector fails or
-// the tangent turns by more than ~25 degrees) and corrector (Newton on the four parameters with
-// S_a = S_b and the plane through the predicted point normal to the tangent), in both directions
-// until a domain boundary (the end point solved on it) or the start (a closed loop). Every point
-// satisfies |S_a - S_b| <= 2^-36 times the size. Not found or cut short: curve components that
-// no leaf pair seeds (tiny loops), branches through points where the surfaces touch (tangent
-// zero: the branch ends there), and branch crossings (traced through or ended). Degenerate:
-// invalid surfaces: validate()'s status; coincident surfaces are not detected (more than 2^14
-// overlapping leaf pairs stop the seeding with limit_exceeded). Float input is computed in double.
-// Cost: O(leaf pairs) seeds plus O(length / h) Newton steps per curve; allocates.
+// row int3.surface-surface, book section 11.8 (figures 11.59, 11.60). Result SurfaceCurves<T>
+// (intersection/detail/surface3.hpp): status; curves (points on the first surface, param_a and
+// param_b; closed, or open with first_end/last_end: boundary, tangent_point or stalled; tangent
+// marks a curve along which the surfaces touch); contacts (isolated touching points); and
+// coincident_a/coincident_b (parameter rectangles where the surfaces share a 2D region).
+// Method: every Bézier span is split into (opt.grid / 2)^2 leaves. Coincidence: a leaf whose
+// 3 x 3 corner/edge/centre samples all project (Gauss-Newton closest point) onto the other
+// surface within 2^-36 times the size, normals parallel to sine 2^-20, is coincident: reported
+// (merged into rectangles) and never traced; a leaf half on the other surface is not (the
+// region is known to within one leaf). Seeds: Gauss-Newton on S_a = S_b from the centres of
+// overlapping leaf pairs; where the leaves' (sampled) normal cones overlap (Sederberg's loop
+// criterion), once per leaf, Newton on the contact system (S_b the foot of S_a, normals
+// parallel): a solution with |S_a - S_b| <= 2^-36 times the size is a contact, isolated (system
+// of rank 4) or on a curve of contact (rank 3: traced along the kernel); one with a gap is the
+// centre of a possible small loop, seeded at the radius sqrt(-2 gap / relative curvature).
+// Tracing: predictor along n_a x n_b, Newton corrector, step h = opt.step times the size,
+// halved (down to 2^-20 h) on failure or turns over ~25 degrees; ends on a domain boundary, at
+// the start (closed), or where the normals turn parallel (tangent_point; the touching point is
+// then located as a contact). Every point satisfies |S_a - S_b| <= 2^-36 times the size.
+// Tolerances decide tangency and coincidence: surfaces closer than 2^-36 of the size count as
+// touching or coincident, so a float-rounded copy (error 2^-24) is not coincident; seeds and
+// curves within 2^-14 of the size of a contact are dropped as its shadow; a loop shallower than
+// 2^-36 of the size is reported as a contact. Limits: loops smaller than about 2^-20 h,
+// features between the 3 x 3 samples, branch crossings (traced through).
+// Invalid surfaces: validate()'s status (non_finite_input, ...); more than 2^14 non-coincident
+// overlapping leaf pairs: limit_exceeded. Float input is computed in double. Cost: O(leaf
+// pairs) seeds plus O(length / h) Newton steps per curve; allocates.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/surface3.hpp>
