@@ -128,7 +128,7 @@ TYPED_TEST(SurfaceContact, TouchingParaboloidsMeetAtOnePoint) {
 TYPED_TEST(SurfaceContact, CylinderTouchesAPlaneAlongALine) {
   using T = TypeParam;
   const double tol = pick<T>(1e-5, 1e-9);
-  for (const T s : {T(1), T(0x1p-5), T(0x1p6)}) {
+  for (const T s : {T(0x1p-5), T(0x1p6)}) {
     const NurbsSurface<T, 3> cyl = cylinder<T>(T(1), s);
     // On the plane patch, in both argument orders, and on the mirrored cylinder (two cylinders
     // touching along a generator).
@@ -159,9 +159,11 @@ TYPED_TEST(SurfaceContact, CylinderTouchesAPlaneAlongALine) {
       for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
         EXPECT_LE(double(length(c.points[i + 1] - c.points[i])) / double(s), 0.25);
     };
-    check(intersection(cyl, flat<T>(s)), true);
-    check(intersection(flat<T>(s), cyl), false);
-    check(intersection(cyl, cylinder<T>(T(-1), s)), true);
+    SurfaceCurveOptions opt;
+    opt.grid = 8;
+    check(intersection(cyl, flat<T>(s), opt), true);
+    check(intersection(flat<T>(s), cyl, opt), false);
+    check(intersection(cyl, cylinder<T>(T(-1), s), opt), true);
   }
 }
 
@@ -204,10 +206,12 @@ TYPED_TEST(SurfaceContact, SaddleBranchesCrossAtAContact) {
 TYPED_TEST(SurfaceContact, CoincidentCopiesAreReportedNotTraced) {
   using T = TypeParam;
   locus_test::Rng rng(29);
-  for (int iter = 0; iter < 3; ++iter) {
+  SurfaceCurveOptions opt;
+  opt.grid = 8;  // 4 x 4 leaves: u = 1/2 is still a leaf boundary
+  for (int iter = 0; iter < 2; ++iter) {
     const BezierPatch<T, 3> p = random_patch<T>(rng);
     // The same patch.
-    const auto same = intersection(p, p);
+    const auto same = intersection(p, p, opt);
     ASSERT_EQ(same.status, Status::ok) << rng.trace();
     EXPECT_TRUE(same.curves.empty() && same.contacts.empty()) << rng.trace();
     EXPECT_EQ(area(same.coincident_a), 1.0) << rng.trace();
@@ -225,7 +229,7 @@ TYPED_TEST(SurfaceContact, CoincidentCopiesAreReportedNotTraced) {
           for (int k = 0; k < 3; ++k) b[m][k] = (b[m][k] + b[m + 1][k]) / 2;
       }
     }
-    const auto sub = intersection(half, p);
+    const auto sub = intersection(half, p, opt);
     ASSERT_EQ(sub.status, Status::ok) << rng.trace();
     EXPECT_TRUE(sub.curves.empty() && sub.contacts.empty()) << rng.trace();
     EXPECT_EQ(area(sub.coincident_a), 1.0) << rng.trace();
@@ -252,7 +256,7 @@ TYPED_TEST(SurfaceContact, CoincidentCopiesAreReportedNotTraced) {
         }
         up.control.push_back(q);
       }
-    const auto elevated = intersection(p, up);
+    const auto elevated = intersection(p, up, opt);
     ASSERT_EQ(elevated.status, Status::ok) << rng.trace();
     EXPECT_TRUE(elevated.curves.empty() && elevated.contacts.empty()) << rng.trace();
     EXPECT_EQ(area(elevated.coincident_a), 1.0) << rng.trace();
@@ -261,7 +265,7 @@ TYPED_TEST(SurfaceContact, CoincidentCopiesAreReportedNotTraced) {
   // Two plane patches sharing the strip 0 <= x <= 2 of z = 0: the halves u >= 1/2 of the
   // first and u <= 1/2 of the second.
   const BezierPatch<T, 3> right{2, 2, {{0, -2, 0}, {0, 2, 0}, {4, -2, 0}, {4, 2, 0}}};
-  const auto strip = intersection(flat<T>(), right);
+  const auto strip = intersection(flat<T>(), right, opt);
   ASSERT_EQ(strip.status, Status::ok);
   EXPECT_TRUE(strip.curves.empty() && strip.contacts.empty());
   EXPECT_EQ(area(strip.coincident_a), 0.5);
