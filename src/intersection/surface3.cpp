@@ -1160,13 +1160,14 @@ struct Pair {
 };
 
 /// Gauss-Newton projection of q onto s from (u, v) (kept in the domain): whether the foot is
-/// within `tol` of q and the unit normal there (zero where undefined).
-bool project_point(const NS& s, const V& q, double& u, double& v, double tol, V& normal) {
+/// within `tol` of q and the unit normal there (zero where undefined); stops within `stop`.
+bool project_point(const NS& s, const V& q, double& u, double& v, double tol, double stop,
+                   V& normal) {
   const ParamDomain<double> du = domain_u(s), dv = domain_v(s);
   for (int it = 0; it < 30; ++it) {
     const Eval e = eval(s, u, v);
     const V g = e.p - q;
-    if (max_abs(g) <= 0x1p-8 * tol) break;
+    if (max_abs(g) <= stop) break;
     const double a11 = dot(e.su, e.su), a12 = dot(e.su, e.sv), a22 = dot(e.sv, e.sv);
     const double mu = 0x1p-40 * (a11 + a22) + 1e-300;
     const double g1 = dot(e.su, g), g2 = dot(e.sv, g);
@@ -1315,7 +1316,7 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
       const V no = cross(e.su, e.sv);
       double s = 0.5 * (start.u0 + start.u1), t = 0.5 * (start.v0 + start.v1);
       V nt{};
-      if (!project_point(other, e.p, s, t, on_tol, nt)) return;
+      if (!project_point(other, e.p, s, t, on_tol, 0x1p-8 * on_tol, nt)) return;
       const double ln = length(no);
       if (nt != V{} && ln > 0.0 && length(cross(no / ln, nt)) > 0x1p-20) return;
       mask |= 1u << k;
@@ -1372,7 +1373,7 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
       const double moved = length(q - ea.p);
       double s = c[2], tt = c[3];
       V nf{};
-      project_point(sb, q, s, tt, INFINITY, nf);
+      project_point(sb, q, s, tt, INFINITY, 0x1p-44 * scale, nf);
       if (nf == V{} || !(moved > 0.0)) continue;
       const double g1 = dot(q - eval(sb, s, tt).p, dot(nf, nb) < 0.0 ? -nf : nf);
       const double k = 2.0 * (g1 - g0) / (moved * moved);
