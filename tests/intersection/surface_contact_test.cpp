@@ -280,8 +280,8 @@ TYPED_TEST(SurfaceContact, SmallLoopsHaveTheirClosedFormRadius) {
   // (c, c), and z = -((x - c)^2 + (y - c)^2) / 2 in the circle of radius sqrt(2 delta) at
   // height -delta; c = 1/8 puts its centre on the centre of a subdivision leaf (where
   // Gauss-Newton from the leaf centre stalls: the gradient vanishes there).
-  for (const T s : {T(1), T(0x1p-4), T(0x1p5)})
-    for (const int e : {8, 14, 20})
+  for (const T s : {T(1), T(0x1p5)})
+    for (const int e : {8, 20})
       for (const bool curved : {false, true}) {
         if (curved && (s != T(1) || e == 20)) continue;  // nearly parallel surfaces: costly
         const T delta = std::ldexp(T(1), -e), c = T(0.125);
