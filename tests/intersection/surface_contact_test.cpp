@@ -235,6 +235,17 @@ TYPED_TEST(SurfaceContact, CoincidentCopiesAreReportedNotTraced) {
     EXPECT_EQ(area(sub.coincident_a), 1.0) << rng.trace();
     EXPECT_EQ(area(sub.coincident_b), 0.5) << rng.trace();
     for (const auto& b : sub.coincident_b) EXPECT_LE(double(b.hi.x), 0.5);
+    // Power-of-two scaling (exact) leaves the parameter rectangles unchanged.
+    for (const T k : {T(0x1p-7), T(0x1p9)}) {
+      BezierPatch<T, 3> hs = half, ps = p;
+      for (auto& c : hs.control) c = k * c;
+      for (auto& c : ps.control) c = k * c;
+      const auto scaled = intersection(hs, ps, opt);
+      ASSERT_EQ(scaled.status, Status::ok);
+      EXPECT_EQ(area(scaled.coincident_a), 1.0) << k;
+      EXPECT_EQ(area(scaled.coincident_b), 0.5) << k;
+      EXPECT_TRUE(scaled.curves.empty() && scaled.contacts.empty());
+    }
     // Degree-elevated in u (Q_i = i/4 P_(i-1) + (1 - i/4) P_i), as a NURBS: the same surface.
     NurbsSurface<T, 3> up{4,
                           3,

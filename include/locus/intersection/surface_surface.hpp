@@ -25,7 +25,8 @@
 // touching or coincident, so a float-rounded copy (error 2^-24) is not coincident; seeds and
 // curves within 2^-14 of the size of a contact are dropped as its shadow; a loop shallower than
 // 2^-36 of the size is reported as a contact. Limits: loops smaller than about 2^-20 h,
-// features between the 3 x 3 samples, branch crossings (traced through).
+// features between the 3 x 3 samples, branch crossings (traced through); nearly coincident
+// surfaces (farther apart than 2^-36, normals within 2^-26) yield no curves there.
 // Invalid surfaces: validate()'s status (non_finite_input, ...); more than 2^14 non-coincident
 // overlapping leaf pairs: limit_exceeded. Float input is computed in double. Cost: O(leaf
 // pairs) seeds plus O(length / h) Newton steps per curve; allocates.
