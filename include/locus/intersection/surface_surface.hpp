@@ -1,35 +1,31 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Intersection of two parametric surfaces (BezierPatch, BSplineSurface, NurbsSurface, in any
-// combination with the same scalar): intersection() returns the intersection curves as polylines;
-// row int3.surface-surface, book section 11.8 (figures 11.59, 11.60). Result SurfaceCurves<T>
-// (intersection/detail/surface3.hpp): status; curves (points on the first surface, param_a and
-// param_b; closed, or open with first_end/last_end: boundary, tangent_point or stalled; tangent
-// marks a curve along which the surfaces touch); contacts (isolated touching points); and
-// coincident_a/coincident_b (parameter rectangles where the surfaces share a 2D region).
-// Method: every Bézier span is split into (opt.grid / 2)^2 leaves. Coincidence: a leaf whose
-// 3 x 3 corner/edge/centre samples all project (Gauss-Newton closest point) onto the other
-// surface within 2^-36 times the size, normals parallel to sine 2^-20, is coincident: reported
-// (merged into rectangles) and never traced; a leaf half on the other surface is not (the
-// region is known to within one leaf). Seeds: Gauss-Newton on S_a = S_b from the centres of
-// overlapping leaf pairs; where the leaves' (sampled) normal cones overlap (Sederberg's loop
-// criterion), once per leaf, Newton on the contact system (S_b the foot of S_a, normals
-// parallel): a solution with |S_a - S_b| <= 2^-36 times the size is a contact, isolated (system
-// of rank 4) or on a curve of contact (rank 3: traced along the kernel); one with a gap is the
-// centre of a possible small loop, seeded at the radius sqrt(-2 gap / relative curvature).
-// Tracing: predictor along n_a x n_b, Newton corrector, step h = opt.step times the size,
-// halved (down to 2^-20 h) on failure or turns over ~25 degrees; ends on a domain boundary, at
-// the start (closed), or where the normals turn parallel (tangent_point; the touching point is
-// then located as a contact). Every point satisfies |S_a - S_b| <= 2^-36 times the size.
-// Tolerances decide tangency and coincidence: surfaces closer than 2^-36 of the size count as
-// touching or coincident, so a float-rounded copy (error 2^-24) is not coincident; seeds and
-// curves within 2^-14 of the size of a contact are dropped as its shadow; a loop shallower than
-// 2^-36 of the size is reported as a contact. Limits: loops smaller than about 2^-20 h,
-// features between the 3 x 3 samples, branch crossings (traced through); nearly coincident
-// surfaces (farther apart than 2^-36, normals within 2^-26) yield no curves there.
-// Invalid surfaces: validate()'s status (non_finite_input, ...); more than 2^14 non-coincident
-// overlapping leaf pairs: limit_exceeded. Float input is computed in double. Cost: O(leaf
-// pairs) seeds plus O(length / h) Newton steps per curve; allocates.
+// combination with the same scalar); row int3.surface-surface, book section 11.8 (figures 11.59,
+// 11.60). Result SurfaceCurves<T> (intersection/detail/surface3.hpp): status; curves as
+// polylines (points on the first surface, param_a, param_b; closed, or open with
+// first_end/last_end = boundary, tangent_point or stalled; `tangent` marks a curve along which
+// the surfaces touch); contacts (isolated touching points); coincident_a/coincident_b
+// (parameter rectangles where the surfaces share a 2D region). Derivation and the exact rules:
+// docs/notes/surface_intersection.md. Method: every Bézier span is cut into (opt.grid / 2)^2
+// leaves. A leaf whose 3 x 3 samples project onto the other surface within 2^-36 of the size
+// (normals parallel to sine 2^-20) is coincident: reported, merged into rectangles (exact to
+// one leaf), never traced. Other overlapping leaf pairs: Gauss-Newton seeds on S_a = S_b from
+// their centres; where their normal cones overlap (Sederberg's loop criterion), Newton on the
+// contact system (S_b the foot of S_a, normals parallel) gives a contact (gap <= 2^-36 of the
+// size; isolated at rank 4, a traced curve of contact at rank 3) or the centre of a possible
+// small loop, seeded at radius sqrt(-2 gap / relative curvature). Tracing: predictor along
+// n_a x n_b, Newton corrector, step h = opt.step times the size, halved down to 2^-20 h; a
+// branch ends on a domain bound, at its start (closed) or where the normals turn parallel
+// (tangent_point, the contact then located). Every point has |S_a - S_b| <= 2^-36 of the size.
+// Tolerance, not exactness, decides tangency and coincidence: surfaces within 2^-36 of the size
+// touch or coincide (a float-rounded copy, 2^-24 off, does not); seeds and curves within 2^-14
+// of the size of a contact are its shadow and dropped. Missed: loops below about 2^-18 h,
+// features between the samples, curves of nearly coincident surfaces (apart by more than 2^-36,
+// normals within 2^-26); branch crossings are traced through. Invalid surfaces: validate()'s
+// status; more than 2^14 non-coincident overlapping leaf pairs: limit_exceeded. Float input is
+// computed in double. Cost: O(leaf pairs) seeds and contact solves plus O(length / h) Newton
+// steps per curve; allocates.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/surface3.hpp>
