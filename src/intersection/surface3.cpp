@@ -1459,6 +1459,11 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
       const End fe = pr.trace_contact(c, 1.0, h0, fwd);
       End be = End::closed;
       if (fe != End::closed) be = pr.trace_contact(c, -1.0, h0, bwd);
+      if (fwd.empty() && bwd.empty()) {
+        // A degenerate touching point (rank 3 without a curve through it: a cusp's tip).
+        r.contacts.push_back({p, {c[0], c[1]}, {c[2], c[3]}});
+        continue;
+      }
       std::vector<X> all(bwd.rbegin(), bwd.rend());
       all.push_back(c);
       all.insert(all.end(), fwd.begin(), fwd.end());

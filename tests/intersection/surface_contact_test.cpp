@@ -203,6 +203,42 @@ TYPED_TEST(SurfaceContact, SaddleBranchesCrossAtAContact) {
   EXPECT_NEAR(len, 4 * std::sqrt(2.0), 0.05);
 }
 
+TYPED_TEST(SurfaceContact, CuspBranchesEndAtTheContact) {
+  using T = TypeParam;
+  // z = y^2 - x^3 (x = 2u - 1: Bernstein coefficients of x, x^3 and y^2) touches z = 0 at the
+  // origin, where its section y^2 = x^3 has a cusp: the two branches y = +-x^(3/2) cannot be
+  // traced through it; each ends there, marked tangent_point, and the touching point is
+  // reported (a degenerate one: the contact system has rank 3 there).
+  BezierPatch<T, 3> p{4, 3, {}};
+  const T xs[4] = {-1, T(-1) / 3, T(1) / 3, 1}, cube[4] = {-1, 1, -1, 1}, sq[3] = {1, -1, 1};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 3; ++j) p.control.push_back({xs[i], T(j - 1), sq[j] - cube[i]});
+  const auto r = intersection(p, flat<T>());
+  ASSERT_EQ(r.status, Status::ok);
+  ASSERT_EQ(r.contacts.size(), 1u);
+  EXPECT_LE(double(max_abs(r.contacts[0].point)), 0x1p-17);
+  ASSERT_EQ(r.curves.size(), 2u);
+  for (const auto& c : r.curves) {
+    EXPECT_FALSE(c.tangent || c.closed);
+    // One end at a corner (1, +-1), the other next to the cusp.
+    const bool cusp_first = c.first_end == SurfaceCurveEnd::tangent_point;
+    EXPECT_EQ(cusp_first ? c.last_end : c.first_end, SurfaceCurveEnd::boundary);
+    if (!cusp_first) {
+      EXPECT_EQ(c.last_end, SurfaceCurveEnd::tangent_point);
+    }
+    const auto& tip = cusp_first ? c.points.front() : c.points.back();
+    const auto& corner = cusp_first ? c.points.back() : c.points.front();
+    EXPECT_LE(double(max_abs(tip)), 0x1p-8);
+    EXPECT_NEAR(double(corner.x), 1.0, pick<T>(1e-5, 1e-9));
+    EXPECT_NEAR(std::fabs(double(corner.y)), 1.0, pick<T>(1e-5, 1e-9));
+    for (const auto& q : c.points) {
+      EXPECT_NEAR(double(q.z), 0.0, pick<T>(1e-5, 1e-9));
+      const long double x = q.x, y = q.y;
+      EXPECT_LE(std::fabs(double(y * y - x * x * x)), pick<T>(1e-5, 1e-9));
+    }
+  }
+}
+
 TYPED_TEST(SurfaceContact, CoincidentCopiesAreReportedNotTraced) {
   using T = TypeParam;
   locus_test::Rng rng(29);
