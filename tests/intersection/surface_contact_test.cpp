@@ -252,6 +252,16 @@ TYPED_TEST(SurfaceContact, CoincidentCopiesAreReportedNotTraced) {
     EXPECT_TRUE(same.curves.empty() && same.contacts.empty()) << rng.trace();
     EXPECT_EQ(area(same.coincident_a), 1.0) << rng.trace();
     EXPECT_EQ(area(same.coincident_b), 1.0) << rng.trace();
+    // Reparametrised: u -> 1 - u (rows reversed; the normals flip).
+    BezierPatch<T, 3> reversed{4, 4, {}};
+    for (int i = 3; i >= 0; --i)
+      for (int j = 0; j < 4; ++j)
+        reversed.control.push_back(p.control[static_cast<std::size_t>(i * 4 + j)]);
+    const auto flipped = intersection(reversed, p, opt);
+    ASSERT_EQ(flipped.status, Status::ok) << rng.trace();
+    EXPECT_TRUE(flipped.curves.empty() && flipped.contacts.empty()) << rng.trace();
+    EXPECT_EQ(area(flipped.coincident_a), 1.0) << rng.trace();
+    EXPECT_EQ(area(flipped.coincident_b), 1.0) << rng.trace();
     // The half u in [0, 1/2] by de Casteljau in long double (the rows are the u direction).
     BezierPatch<T, 3> half{4, 4, p.control};
     for (int j = 0; j < 4; ++j) {
