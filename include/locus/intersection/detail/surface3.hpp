@@ -101,7 +101,8 @@ template <Real T>
 struct SurfaceCurveOptions {
   /// Grid cells per Bézier span in each direction (plane-surface) or subdivision leaves per span
   /// for seeds (surface-surface). Curve components that cross no grid edge (tiny loops) can be
-  /// missed; raise it for finer features.
+  /// missed; raise it for finer features (surface-surface also seeds small loops from the
+  /// critical points of the gap, and reports coincident regions to within one leaf).
   int grid = 16;
   /// Tracing step (surface-surface) relative to the larger surface's control-net box diagonal.
   double step = 1.0 / 64.0;
