@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 // Row int3.surface-surface: tangential contact, coincident surfaces and small loops of two
 // parametric surfaces (intersection/surface_surface.hpp). Oracles are closed forms: paraboloid
-// patches z = +-(x^2 + y^2) touch exactly at the origin; a cylinder (rational quadratic NURBS)
-// on a plane touches it along a known line; a saddle z = x^2 - y^2 meets its tangent plane in
-// the lines y = +-x crossing at the origin; a lowered paraboloid cuts a plane in a circle of
-// known radius; a sub-patch (de Casteljau split, done here in long double) and a degree-elevated
-// copy (Bernstein elevation formula) cover known parameter rectangles. Non-finite input and
-// power-of-two scaling.
+// patches z = +-(x^2 + y^2) touch exactly at one point; a cylinder (rational quadratic NURBS) on a
+// plane, and on its mirror image, touches along a known line; z = 2 (rho^2 - 1/4)^2 rests on a
+// plane along a circle; a saddle meets its tangent plane in y = +-x crossing at the contact; the
+// cusp y^2 = x^3 of z = y^2 - x^3 ends both branches at the contact; lowered paraboloids cut a
+// plane or a flatter paraboloid in circles of known radius, and a quartic bump in a small circle
+// inside a larger one (checked against a long double de Casteljau evaluation); a reversed copy,
+// a sub-patch (de Casteljau) and a degree-elevated copy (Bernstein elevation), exact in float too,
+// cover known parameter rectangles. Non-finite input and power-of-two scaling.
 
 #include <locus/intersection/surface_surface.hpp>
 
@@ -484,5 +486,32 @@ TYPED_TEST(SurfaceContact, SmallLoopInsideALargerRing) {
           << e;
     }
   }
+}
+}  // namespace
+namespace {
+TYPED_TEST(SurfaceContact, ClosedCurveOfContact) {
+  using T = TypeParam;
+  // z = 2 (rho^2 - 1/4)^2 = 1/8 - rho^2 + 2 rho^4 rests on z = 0 along the circle rho = 1/2: a
+  // closed curve of contact (the contact system has rank 3 along it).
+  const auto r = intersection(ring_bump<T>(0.125L, 2, 0), flat<T>(T(1), T(1)));
+  ASSERT_EQ(r.status, Status::ok);
+  // In float the rounded Bernstein coefficients (sixths) lift or sink the surface by ~2^-24,
+  // far beyond the 2^-36 contact tolerance: the data no longer touch; nothing is checked then
+  // beyond the status.
+  if (std::is_same_v<T, float>) return;
+  EXPECT_TRUE(r.contacts.empty());
+  ASSERT_EQ(r.curves.size(), 1u);
+  const auto& c = r.curves[0];
+  EXPECT_TRUE(c.tangent);
+  EXPECT_TRUE(c.closed);
+  double len = 0.0;
+  for (std::size_t i = 0; i < c.points.size(); ++i) {
+    const auto& p = c.points[i];
+    EXPECT_NEAR(std::hypot(double(p.x), double(p.y)), 0.5, 1e-9);
+    EXPECT_NEAR(double(p.z), 0.0, 1e-9);
+    len += double(length(c.points[(i + 1) % c.points.size()] - p));
+  }
+  EXPECT_LE(len, std::numbers::pi * (1 + 1e-9));
+  EXPECT_GE(len, std::numbers::pi * 0.98);
 }
 }  // namespace
