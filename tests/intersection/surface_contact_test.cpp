@@ -493,12 +493,11 @@ TYPED_TEST(SurfaceContact, ClosedCurveOfContact) {
   using T = TypeParam;
   // z = 2 (rho^2 - 1/4)^2 = 1/8 - rho^2 + 2 rho^4 rests on z = 0 along the circle rho = 1/2: a
   // closed curve of contact (the contact system has rank 3 along it).
+  // In float the rounded Bernstein coefficients (sixths) lift or sink the surface by ~2^-24,
+  // far beyond the 2^-36 contact tolerance: the data no longer touch.
+  if (std::is_same_v<T, float>) GTEST_SKIP() << "float data do not touch";
   const auto r = intersection(ring_bump<T>(0.125L, 2, 0), flat<T>(T(1), T(1)));
   ASSERT_EQ(r.status, Status::ok);
-  // In float the rounded Bernstein coefficients (sixths) lift or sink the surface by ~2^-24,
-  // far beyond the 2^-36 contact tolerance: the data no longer touch; nothing is checked then
-  // beyond the status.
-  if (std::is_same_v<T, float>) return;
   EXPECT_TRUE(r.contacts.empty());
   ASSERT_EQ(r.curves.size(), 1u);
   const auto& c = r.curves[0];
