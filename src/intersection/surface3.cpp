@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -470,24 +471,23 @@ bool hidden_in_span(const HP& p, const V& n, double k, int i0, int i1, int j0, i
   return hidden_in_cell(p, n, k, s0, tol, 5);
 }
 
+/// The checks shared by the plane-surface tracer and its Hermite tangents: a finite, nonzero
+/// plane and a valid surface (whose Bézier grid is returned in g); ok or the failure status.
+Status plane_input(const V& normal, double constant, const NS& s, Grid& g) {
+  if (!linear3::finite(normal) || !std::isfinite(constant)) return Status::non_finite_input;
+  if (normal == V{}) return Status::degenerate_input;
+  g = homogeneous_grid(s);
+  return g.status;
+}
+
 }  // namespace
 
 SurfaceCurves<double> plane_curves(const V& normal, double constant, const NS& s,
                                    const SurfaceCurveOptions& opt) {
   SurfaceCurves<double> r;
-  if (!linear3::finite(normal) || !std::isfinite(constant)) {
-    r.status = Status::non_finite_input;
-    return r;
-  }
-  if (normal == V{}) {
-    r.status = Status::degenerate_input;
-    return r;
-  }
-  const Grid g = homogeneous_grid(s);
-  if (g.status != Status::ok) {
-    r.status = g.status;
-    return r;
-  }
+  Grid g;
+  r.status = plane_input(normal, constant, s, g);
+  if (r.status != Status::ok) return r;
   // Scale the plane to a unit-size normal by a power of two (exact).
   const double ns = pow2_inv(max_abs(normal));
   const V nn = ns * normal;
@@ -611,19 +611,9 @@ CurveTangents plane_curve_tangents(const V& normal, const NS& s, const std::vect
     r.status = n == 0 ? Status::empty_input : Status::invalid_input;
     return r;
   }
-  if (!linear3::finite(normal)) {
-    r.status = Status::non_finite_input;
-    return r;
-  }
-  if (normal == V{}) {
-    r.status = Status::degenerate_input;
-    return r;
-  }
-  const Grid g = homogeneous_grid(s);
-  if (g.status != Status::ok) {
-    r.status = g.status;
-    return r;
-  }
+  Grid g;
+  r.status = plane_input(normal, 0.0, s, g);
+  if (r.status != Status::ok) return r;
   const V nn = pow2_inv(max_abs(normal)) * normal;
   // The span of a parameter: the last break <= x (clamped to the spans).
   const auto span = [](const std::vector<double>& br, double x, double& local) {
@@ -693,9 +683,14 @@ Eval eval(const NS& s, double u, double v) noexcept {
 struct Box {
   V lo, hi;
   double u0, u1, v0, v1;
+  V axis;         // unit normal at the leaf centre (zero where undefined)
+  double spread;  // largest angle (radians) from axis to a sampled normal (pi: unknown)
+  int gi, gj;     // position in the surface's global leaf grid
 };
 
-/// Control-net boxes of the leaves of every span split `n` times in each direction.
+/// Control-net boxes of the leaves of every span split `n` times in each direction, with an
+/// estimated normal cone (the normals at the centre and the 3 x 3 grid of corner, edge and
+/// centre points; used only to decide where to look harder, never to reject).
 std::vector<Box> leaf_boxes(const Grid& g, int n) {
   std::vector<Box> out;
   for (int a = 0; a < g.count_u; ++a)
@@ -709,7 +704,16 @@ std::vector<Box> leaf_boxes(const Grid& g, int n) {
           const double va = double(j) / n, vb = double(j + 1) / n;
           const HP cell =
               subdivide_v(subdivide_v(strip, vb).first, vb > 0.0 ? va / vb : 0.0).second;
-          Box bx{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}, 0, 0, 0, 0};
+          Box bx{{INFINITY, INFINITY, INFINITY},
+                 {-INFINITY, -INFINITY, -INFINITY},
+                 0,
+                 0,
+                 0,
+                 0,
+                 V{},
+                 std::numbers::pi,
+                 a * n + i,
+                 b * n + j};
           for (const V4& c : cell.control) {
             const V q = xyz(c) / c.w;
             for (int k = 0; k < 3; ++k) {
@@ -721,11 +725,43 @@ std::vector<Box> leaf_boxes(const Grid& g, int n) {
           bx.u1 = lerp(g.breaks_u[z(a)], g.breaks_u[z(a + 1)], ub);
           bx.v0 = lerp(g.breaks_v[z(b)], g.breaks_v[z(b + 1)], va);
           bx.v1 = lerp(g.breaks_v[z(b)], g.breaks_v[z(b + 1)], vb);
+          const auto normal_at = [&](double su, double sv) {
+            const SurfaceDerivatives<double, 3> d = rational_partials(cell, su, sv);
+            const V nv = cross(d.du, d.dv);
+            const double ln = length(nv);
+            return ln > 0.0 && std::isfinite(ln) ? nv / ln : V{};
+          };
+          const V axis = normal_at(0.5, 0.5);
+          if (axis == V{}) {
+            out.push_back(bx);
+            continue;
+          }
+          double spread = 0.0;
+          for (int si = 0; si <= 2 && spread < std::numbers::pi; ++si)
+            for (int sj = 0; sj <= 2; ++sj) {
+              const V nq = normal_at(0.5 * si, 0.5 * sj);
+              if (nq == V{}) {
+                spread = std::numbers::pi;
+                break;
+              }
+              spread = std::max(spread, std::acos(std::clamp(dot(axis, nq), -1.0, 1.0)));
+            }
+          bx.axis = axis;
+          // Widened: the sampled normals underestimate the cone between the samples.
+          bx.spread = std::min(2.0 * spread + 0x1p-10, std::numbers::pi);
           out.push_back(bx);
         }
       }
     }
   return out;
+}
+
+/// Whether two leaves may hold a pair of parallel normals (Sederberg's loop criterion: without
+/// one, the leaves' intersection has no closed loop and no tangential contact).
+[[nodiscard]] bool cones_overlap(const Box& x, const Box& y) noexcept {
+  if (x.axis == V{} || y.axis == V{}) return true;
+  const double angle = std::acos(std::clamp(std::fabs(dot(x.axis, y.axis)), 0.0, 1.0));
+  return angle <= x.spread + y.spread;
 }
 
 /// Solves the n x n system m x = b by Gaussian elimination with partial pivoting.
@@ -751,6 +787,9 @@ bool solve(std::array<std::array<double, N + 1>, N> m, std::array<double, N>& x)
     if (!std::isfinite(q)) return false;
   return true;
 }
+
+/// How a traced branch ends.
+enum class End { closed, boundary, tangent, stalled };
 
 struct Pair {
   const NS* a;
@@ -854,18 +893,27 @@ struct Pair {
     return normalize(t);
   }
 
-  /// One branch from x along +-tangent; returns true when it closed back onto the start.
-  bool trace(std::array<double, 4> x, double dir, double h0,
-             std::vector<std::array<double, 4>>& out) const {
+  /// The sine of the angle between the normals at x (1 where a normal is undefined).
+  [[nodiscard]] double normal_sine(const std::array<double, 4>& x) const noexcept {
+    const Eval ea = eval(*a, x[0], x[1]), eb = eval(*b, x[2], x[3]);
+    const V na = cross(ea.su, ea.sv), nb = cross(eb.su, eb.sv);
+    const double ln = length(na) * length(nb);
+    if (!(ln > 0.0) || !std::isfinite(ln)) return 1.0;
+    return length(cross(na, nb)) / ln;
+  }
+
+  /// One branch from x along +-tangent (points appended to out) and how it ends.
+  End trace(std::array<double, 4> x, double dir, double h0,
+            std::vector<std::array<double, 4>>& out) const {
     const V start = eval(*a, x[0], x[1]).p;
     V prev_t = dir * tangent(x);
-    if (prev_t == V{}) return false;
+    if (prev_t == V{}) return End::tangent;
     double h = h0;
     const int max_points = 100000;
     for (int n = 0; n < max_points; ++n) {
       const Eval ea = eval(*a, x[0], x[1]), eb = eval(*b, x[2], x[3]);
       V t = tangent(x);
-      if (t == V{}) return false;
+      if (t == V{}) return End::tangent;
       if (dot(t, prev_t) < 0.0) t = -t;
       const V q = ea.p + h * t;
       // Predictor in parameters: least-squares steps on each surface.
@@ -885,44 +933,328 @@ struct Pair {
       y[1] += d1;
       y[2] += d2;
       y[3] += d3;
-      const bool ok = correct(y, t, q, -1, 0.0);
-      const V ty = ok ? tangent(y) : V{};
-      if (!ok || ty == V{} || std::fabs(dot(ty, t)) < 0.9 ||
-          length(eval(*a, y[0], y[1]).p - ea.p) > 2.0 * h) {
-        h *= 0.5;
-        if (h < h0 * 0x1p-10) return false;
-        --n;
-        continue;
-      }
-      if (!inside(y, 0.0)) {
-        // Leaving a domain: the end point on the boundary the step crossed.
+      // The end point on the domain bound that a step to y crosses (false: none crossed).
+      const auto exit_at_bound = [&](const std::array<double, 4>& yo, bool must) {
         int k_out = -1;
         double worst = 0.0;
         for (int k = 0; k < 4; ++k) {
-          const double ex = std::max(lo(k) - y[z(k)], y[z(k)] - hi(k)) / (hi(k) - lo(k));
+          const double ex = std::max(lo(k) - yo[z(k)], yo[z(k)] - hi(k)) / (hi(k) - lo(k));
           if (ex > worst) {
             worst = ex;
             k_out = k;
           }
         }
+        if (k_out < 0) return false;
         std::array<double, 4> e = x;
-        const double bound = y[z(k_out)] < lo(k_out) ? lo(k_out) : hi(k_out);
-        if (correct(e, t, q, k_out, bound)) {
+        const double bound = yo[z(k_out)] < lo(k_out) ? lo(k_out) : hi(k_out);
+        const bool hit =
+            correct(e, t, q, k_out, bound) && length(eval(*a, e[0], e[1]).p - ea.p) <= 2.0 * h;
+        if (hit) {
           clamp(e);
           out.push_back(e);
         }
-        return false;
+        return hit || must;
+      };
+      const std::array<double, 4> predicted = y;
+      const bool ok = correct(y, t, q, -1, 0.0);
+      const V ty = ok ? tangent(y) : V{};
+      if (!ok || ty == V{} || std::fabs(dot(ty, t)) < 0.9 ||
+          length(eval(*a, y[0], y[1]).p - ea.p) > 2.0 * h) {
+        // A corrector failing on a step out of a domain (a corner): end on the bound.
+        if (!inside(predicted, 0.0) && exit_at_bound(predicted, false)) return End::boundary;
+        h *= 0.5;
+        // Stuck: near a touching point the normals turn parallel (the caller locates it).
+        if (h < h0 * 0x1p-20) return normal_sine(x) <= 0x1p-6 ? End::tangent : End::stalled;
+        --n;
+        continue;
       }
+      // Leaving a domain: the end point on the boundary the step crossed.
+      if (!inside(y, 0.0) && exit_at_bound(y, true)) return End::boundary;
       const V py = eval(*a, y[0], y[1]).p;
-      if (out.size() >= 3 && length(py - start) <= h && dot(start - ea.p, t) > 0.0) return true;
+      if (out.size() >= 3 && length(py - start) <= h && dot(start - ea.p, t) > 0.0)
+        return End::closed;
       out.push_back(y);
       prev_t = t;
       x = y;
       h = std::min(h0, 1.5 * h);
     }
-    return false;
+    return End::stalled;
+  }
+
+  // ---- Tangential contact: critical points of |Sa - Sb|^2 with parallel normals. ----
+
+  /// The contact system at x: the projections of Sa - Sb on Sb's unit partials (Sb(s, t) is
+  /// the foot of Sa(u, v)) and of Sa's unit normal on them (parallel normals), in length units.
+  [[nodiscard]] std::array<double, 4> contact_system(const std::array<double, 4>& x) const {
+    const Eval ea = eval(*a, x[0], x[1]), eb = eval(*b, x[2], x[3]);
+    const V na = cross(ea.su, ea.sv);
+    const double ln = length(na), ls = length(eb.su), lt = length(eb.sv);
+    if (!(ln > 0.0) || !(ls > 0.0) || !(lt > 0.0)) return {NAN, NAN, NAN, NAN};
+    const V d = ea.p - eb.p, n = na / ln, es = eb.su / ls, et = eb.sv / lt;
+    return {dot(d, es), dot(d, et), scale * dot(n, es), scale * dot(n, et)};
+  }
+
+  /// The Jacobian of contact_system by central differences (one-sided on a domain bound), its
+  /// columns per unit of the relative parameter (the parameter divided by its domain width).
+  bool contact_jacobian(const std::array<double, 4>& x,
+                        std::array<std::array<double, 4>, 4>& j) const {
+    for (int k = 0; k < 4; ++k) {
+      const double w = hi(k) - lo(k), eta = 0x1p-20 * w;
+      std::array<double, 4> xp = x, xm = x;
+      xp[z(k)] = std::min(x[z(k)] + eta, hi(k));
+      xm[z(k)] = std::max(x[z(k)] - eta, lo(k));
+      const double span = (xp[z(k)] - xm[z(k)]) / w;
+      if (!(span > 0.0)) return false;
+      const std::array<double, 4> gp = contact_system(xp), gm = contact_system(xm);
+      for (int i = 0; i < 4; ++i) j[z(i)][z(k)] = (gp[z(i)] - gm[z(i)]) / span;
+    }
+    for (const auto& row : j)
+      for (double q : row)
+        if (!std::isfinite(q)) return false;
+    return true;
+  }
+
+  /// Minimum-norm Newton on the contact system (it converges onto a curve of contact too, where
+  /// the system has rank 3); coordinate `frozen` (>= 0) is kept. True when it converged.
+  bool contact(std::array<double, 4>& x, int frozen = -1) const {
+    for (int it = 0; it < 40; ++it) {
+      const std::array<double, 4> g = contact_system(x);
+      std::array<std::array<double, 4>, 4> j{};
+      if (!std::isfinite(g[0]) || !contact_jacobian(x, j)) return false;
+      if (frozen >= 0)
+        for (auto& row : j) row[z(frozen)] = 0.0;
+      // (J J^T + mu I) y = g, delta = -J^T y (relative parameters).
+      std::array<std::array<double, 5>, 4> m{};
+      double tr = 0.0;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+          double sum = 0.0;
+          for (int k = 0; k < 4; ++k) sum += j[z(r)][z(k)] * j[z(c)][z(k)];
+          m[z(r)][z(c)] = sum;
+          if (r == c) tr += sum;
+        }
+      for (int r = 0; r < 4; ++r) {
+        m[z(r)][z(r)] += 1e-14 * tr + 1e-300;
+        m[z(r)][4] = g[z(r)];
+      }
+      std::array<double, 4> y{};
+      if (!solve<4>(m, y)) return false;
+      double step = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        double dk = 0.0;
+        for (int r = 0; r < 4; ++r) dk -= j[z(r)][z(k)] * y[z(r)];
+        step = std::max(step, std::fabs(dk));
+        x[z(k)] += dk * (hi(k) - lo(k));
+      }
+      clamp(x);
+      if (step < 0x1p-40) break;
+    }
+    const std::array<double, 4> g = contact_system(x);
+    double worst = 0.0;
+    for (double q : g) worst = std::max(worst, std::fabs(q));
+    return worst <= 0x1p-30 * scale;
+  }
+
+  /// The gap |Sa - Sb| at x relative to the size of the problem.
+  [[nodiscard]] double gap(const std::array<double, 4>& x) const {
+    return max_abs(eval(*a, x[0], x[1]).p - eval(*b, x[2], x[3]).p) / scale;
+  }
+
+  /// The rank (up to 4) of the contact system at x, and for rank 3 the direction of the curve
+  /// of contact (in parameters, unit 3D speed on the first surface).
+  int contact_rank(const std::array<double, 4>& x, std::array<double, 4>& kernel) const {
+    std::array<std::array<double, 4>, 4> m{};
+    if (!contact_jacobian(x, m)) return 0;
+    // Gaussian elimination with complete pivoting.
+    std::array<int, 4> col{0, 1, 2, 3};
+    double first = 0.0;
+    int rank = 0;
+    for (int c = 0; c < 4; ++c) {
+      int pr = c, pc = c;
+      for (int r = c; r < 4; ++r)
+        for (int k = c; k < 4; ++k)
+          if (std::fabs(m[z(r)][z(k)]) > std::fabs(m[z(pr)][z(pc)])) {
+            pr = r;
+            pc = k;
+          }
+      const double pivot = std::fabs(m[z(pr)][z(pc)]);
+      if (c == 0) first = pivot;
+      if (!(pivot > 0x1p-20 * first) || !(first > 0.0)) break;
+      std::swap(m[z(pr)], m[z(c)]);
+      for (auto& row : m) std::swap(row[z(pc)], row[z(c)]);
+      std::swap(col[z(pc)], col[z(c)]);
+      for (int r = c + 1; r < 4; ++r) {
+        const double f = m[z(r)][z(c)] / m[z(c)][z(c)];
+        for (int k = c; k < 4; ++k) m[z(r)][z(k)] -= f * m[z(c)][z(k)];
+      }
+      ++rank;
+    }
+    if (rank != 3) return rank;
+    std::array<double, 4> yv{0.0, 0.0, 0.0, 1.0};
+    for (int c = 2; c >= 0; --c) {
+      double sum = -m[z(c)][3];
+      for (int k = c + 1; k < 3; ++k) sum -= m[z(c)][z(k)] * yv[z(k)];
+      yv[z(c)] = sum / m[z(c)][z(c)];
+    }
+    for (int c = 0; c < 4; ++c) kernel[z(col[z(c)])] = yv[z(c)] * (hi(col[z(c)]) - lo(col[z(c)]));
+    const Eval ea = eval(*a, x[0], x[1]);
+    const double speed = length(kernel[0] * ea.su + kernel[1] * ea.sv);
+    if (!(speed > 0.0) || !std::isfinite(speed)) return 2;
+    for (double& q : kernel) q /= speed;
+    return 3;
+  }
+
+  /// One branch of a curve of contact from x (rank 3) along +-kernel, as trace() does.
+  End trace_contact(std::array<double, 4> x, double dir, double h0,
+                    std::vector<std::array<double, 4>>& out) const {
+    const V start = eval(*a, x[0], x[1]).p;
+    std::array<double, 4> prev{};
+    if (contact_rank(x, prev) != 3) return End::tangent;
+    for (double& q : prev) q *= dir;
+    double h = h0;
+    for (int n = 0; n < 20000; ++n) {
+      std::array<double, 4> k{};
+      if (contact_rank(x, k) != 3) return End::tangent;
+      double along = 0.0;
+      for (int i = 0; i < 4; ++i) along += k[z(i)] * prev[z(i)] / std::pow(hi(i) - lo(i), 2.0);
+      if (along < 0.0)
+        for (double& q : k) q = -q;
+      const V pa = eval(*a, x[0], x[1]).p;
+      std::array<double, 4> y = x;
+      for (int i = 0; i < 4; ++i) y[z(i)] += h * k[z(i)];
+      int k_out = -1;
+      double worst = 0.0;
+      for (int i = 0; i < 4; ++i) {
+        const double ex = std::max(lo(i) - y[z(i)], y[z(i)] - hi(i)) / (hi(i) - lo(i));
+        if (ex > worst) {
+          worst = ex;
+          k_out = i;
+        }
+      }
+      clamp(y);
+      const bool ok = contact(y, k_out) && gap(y) <= accept_residual;
+      const double moved = ok ? length(eval(*a, y[0], y[1]).p - pa) : 0.0;
+      if (!ok || moved > 2.0 * h || moved < 0.25 * h) {
+        if (ok && k_out >= 0 && moved <= 2.0 * h) {
+          out.push_back(y);  // the last, short step onto a domain bound
+          return End::boundary;
+        }
+        h *= 0.5;
+        if (h < h0 * 0x1p-10) return End::stalled;
+        --n;
+        continue;
+      }
+      if (k_out >= 0) {
+        out.push_back(y);
+        return End::boundary;
+      }
+      const V py = eval(*a, y[0], y[1]).p;
+      if (out.size() >= 3 && length(py - start) <= h) return End::closed;
+      out.push_back(y);
+      prev = k;
+      x = y;
+      h = std::min(h0, 1.5 * h);
+    }
+    return End::stalled;
   }
 };
+
+/// Gauss-Newton projection of q onto s from (u, v) (kept in the domain): whether the foot is
+/// within `tol` of q and the unit normal there (zero where undefined); stops within `stop`.
+bool project_point(const NS& s, const V& q, double& u, double& v, double tol, double stop,
+                   V& normal) {
+  const ParamDomain<double> du = domain_u(s), dv = domain_v(s);
+  for (int it = 0; it < 30; ++it) {
+    const Eval e = eval(s, u, v);
+    const V g = e.p - q;
+    if (max_abs(g) <= stop) break;
+    const double a11 = dot(e.su, e.su), a12 = dot(e.su, e.sv), a22 = dot(e.sv, e.sv);
+    const double mu = 0x1p-40 * (a11 + a22) + 1e-300;
+    const double g1 = dot(e.su, g), g2 = dot(e.sv, g);
+    const double b11 = a11 + mu, b22 = a22 + mu, det = b11 * b22 - a12 * a12;
+    if (!(det > 0.0) || !std::isfinite(det)) return false;
+    const double nu = std::clamp(u - (b22 * g1 - a12 * g2) / det, du.min, du.max);
+    const double nv = std::clamp(v - (b11 * g2 - a12 * g1) / det, dv.min, dv.max);
+    if (nu == u && nv == v) break;
+    u = nu;
+    v = nv;
+  }
+  const Eval e = eval(s, u, v);
+  const V nn = cross(e.su, e.sv);
+  const double ln = length(nn);
+  normal = ln > 0.0 && std::isfinite(ln) ? nn / ln : V{};
+  return max_abs(e.p - q) <= tol;
+}
+
+}  // namespace
+
+namespace {
+
+using X = std::array<double, 4>;
+
+/// The distance from p to a polyline (closed: with its closing segment).
+double polyline_distance(const V& p, const std::vector<V>& pts, bool closed,
+                         std::size_t* seg = nullptr, double* at = nullptr) {
+  double best = INFINITY;
+  const std::size_t n = pts.size();
+  if (seg) *seg = 0;
+  if (at) *at = 0.0;
+  if (n == 1) return length(p - pts[0]);
+  for (std::size_t q = 0; q + (closed ? 0 : 1) < n; ++q) {
+    const V& e0 = pts[q];
+    const V& e1 = pts[(q + 1) % n];
+    const V ed = e1 - e0;
+    const double el = dot(ed, ed);
+    const double tt = el > 0.0 ? std::clamp(dot(p - e0, ed) / el, 0.0, 1.0) : 0.0;
+    const double d = length(p - (e0 + tt * ed));
+    if (d < best) {
+      best = d;
+      if (seg) *seg = q;
+      if (at) *at = tt;
+    }
+  }
+  return best;
+}
+
+/// Parameter rectangles covering the flagged cells of a leaf grid (greedy maximal runs).
+std::vector<ParamRect<double>> merge_leaves(const std::vector<Box>& boxes,
+                                            const std::vector<char>& flag) {
+  std::vector<ParamRect<double>> out;
+  int cu = 0, cv = 0;
+  for (const Box& b : boxes) {
+    cu = std::max(cu, b.gi + 1);
+    cv = std::max(cv, b.gj + 1);
+  }
+  std::vector<int> at(z(cu) * z(cv), -1);
+  for (std::size_t k = 0; k < boxes.size(); ++k)
+    if (flag[k]) at[z(boxes[k].gi) * z(cv) + z(boxes[k].gj)] = static_cast<int>(k);
+  std::vector<char> done(at.size(), 0);
+  const auto cell = [&](int i, int j) { return z(i) * z(cv) + z(j); };
+  for (int i = 0; i < cu; ++i)
+    for (int j = 0; j < cv; ++j) {
+      if (at[cell(i, j)] < 0 || done[cell(i, j)]) continue;
+      int j1 = j + 1;
+      while (j1 < cv && at[cell(i, j1)] >= 0 && !done[cell(i, j1)]) ++j1;
+      int i1 = i + 1;
+      for (;; ++i1) {
+        bool full = i1 < cu;
+        for (int jj = j; jj < j1 && full; ++jj) full = at[cell(i1, jj)] >= 0 && !done[cell(i1, jj)];
+        if (!full) break;
+      }
+      for (int ii = i; ii < i1; ++ii)
+        for (int jj = j; jj < j1; ++jj) done[cell(ii, jj)] = 1;
+      const Box& lo = boxes[z(at[cell(i, j)])];
+      const Box& hi = boxes[z(at[cell(i1 - 1, j1 - 1)])];
+      out.push_back({{lo.u0, lo.v0}, {hi.u1, hi.v1}});
+    }
+  return out;
+}
+
+[[nodiscard]] SurfaceCurveEnd end_kind(End e) noexcept {
+  return e == End::tangent   ? SurfaceCurveEnd::tangent_point
+         : e == End::stalled ? SurfaceCurveEnd::stalled
+                             : SurfaceCurveEnd::boundary;
+}
 
 }  // namespace
 
@@ -947,42 +1279,247 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
   const double scale = std::max(length(hi - lo), 1e-300);
   const Pair pr{&sa, &sb, domain_u(sa), domain_v(sa), domain_u(sb), domain_v(sb), scale};
   const double slack = 0x1p-30 * scale;
-  std::vector<std::array<double, 4>> seeds;
-  constexpr std::size_t seed_budget = 1u << 14;
-  std::size_t pairs = 0;
-  for (const Box& x : ba) {
-    if (r.status != Status::ok) break;
-    for (const Box& y : bb) {
+
+  // The overlapping leaf pairs.
+  std::vector<std::pair<int, int>> pairs;
+  constexpr std::size_t pair_budget = 1u << 20;
+  for (std::size_t i = 0; i < ba.size() && r.status == Status::ok; ++i)
+    for (std::size_t j = 0; j < bb.size(); ++j) {
+      const Box& x = ba[i];
+      const Box& y = bb[j];
       bool overlap = true;
       for (int k = 0; k < 3; ++k)
         overlap = overlap && x.lo[k] <= y.hi[k] + slack && y.lo[k] <= x.hi[k] + slack;
       if (!overlap) continue;
-      // Overlapping surfaces (coincident pieces) would seed every pair: a budget.
-      if (++pairs > seed_budget) {
+      if (pairs.size() >= pair_budget) {
         r.status = Status::limit_exceeded;
         break;
       }
-      std::array<double, 4> s{0.5 * (x.u0 + x.u1), 0.5 * (x.v0 + x.v1), 0.5 * (y.u0 + y.u1),
-                              0.5 * (y.v0 + y.v1)};
-      if (pr.seed(s)) seeds.push_back(s);
+      pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
     }
+
+  // Coincidence: a leaf lies on the other surface when each of its 3 x 3 sample points (corners,
+  // edge midpoints, centre) projects onto it within accept_residual * scale with parallel
+  // normals (sine <= 2^-20). A sample is tried from the centre of each overlapping leaf of the
+  // other surface until it succeeds; the first failing sample ends a pair's attempt.
+  const double on_tol = accept_residual * scale;
+  constexpr unsigned full_mask = (1u << 9) - 1u;
+  std::vector<unsigned> mask_a(ba.size(), 0u), mask_b(bb.size(), 0u);
+  const auto cover = [&](const Box& leaf, const NS& own, const NS& other, const Box& start,
+                         unsigned& mask) {
+    while (mask != full_mask) {
+      int k = 0;
+      while (mask & (1u << k)) ++k;
+      const double u = lerp(leaf.u0, leaf.u1, 0.5 * (k / 3)),
+                   v = lerp(leaf.v0, leaf.v1, 0.5 * (k % 3));
+      const Eval e = eval(own, u, v);
+      const V no = cross(e.su, e.sv);
+      double s = 0.5 * (start.u0 + start.u1), t = 0.5 * (start.v0 + start.v1);
+      V nt{};
+      if (!project_point(other, e.p, s, t, on_tol, 0x1p-8 * on_tol, nt)) return;
+      const double ln = length(no);
+      if (nt != V{} && ln > 0.0 && length(cross(no / ln, nt)) > 0x1p-20) return;
+      mask |= 1u << k;
+    }
+  };
+  for (const auto& pq : pairs) {
+    cover(ba[z(pq.first)], sa, sb, bb[z(pq.second)], mask_a[z(pq.first)]);
+    cover(bb[z(pq.second)], sb, sa, ba[z(pq.first)], mask_b[z(pq.second)]);
   }
-  const double h0 = std::clamp(opt.step, 0x1p-12, 0.25) * scale;
-  std::vector<char> covered(seeds.size(), 0);
-  for (std::size_t si = 0; si < seeds.size(); ++si) {
-    if (covered[si]) continue;
-    if (pr.tangent(seeds[si]) == V{}) {
-      covered[si] = 1;
+  std::vector<char> same_a(ba.size()), same_b(bb.size());
+  for (std::size_t i = 0; i < ba.size(); ++i) same_a[i] = mask_a[i] == full_mask;
+  for (std::size_t j = 0; j < bb.size(); ++j) same_b[j] = mask_b[j] == full_mask;
+  r.coincident_a = merge_leaves(ba, same_a);
+  r.coincident_b = merge_leaves(bb, same_b);
+  // Whether x lies in (or next to) a coincident leaf of either surface.
+  const auto in_coincident = [&](const X& x) {
+    for (std::size_t i = 0; i < ba.size(); ++i)
+      if (same_a[i]) {
+        const Box& b = ba[i];
+        const double wu = b.u1 - b.u0, wv = b.v1 - b.v0;
+        if (x[0] >= b.u0 - wu && x[0] <= b.u1 + wu && x[1] >= b.v0 - wv && x[1] <= b.v1 + wv)
+          return true;
+      }
+    for (std::size_t j = 0; j < bb.size(); ++j)
+      if (same_b[j]) {
+        const Box& b = bb[j];
+        const double wu = b.u1 - b.u0, wv = b.v1 - b.v0;
+        if (x[2] >= b.u0 - wu && x[2] <= b.u1 + wu && x[3] >= b.v0 - wv && x[3] <= b.v1 + wv)
+          return true;
+      }
+    return false;
+  };
+
+  // A seed on the loop around the critical point c of the gap (NaN: none): the signed gap g0
+  // at c and at a point of the first surface eta away give the relative normal curvature k
+  // along that direction; the loop crosses it at the radius sqrt(-2 g0 / k) (g0 k < 0), where
+  // Gauss-Newton starts, in the four parameter directions until one lands near that radius.
+  const auto loop_seed = [&](const X& c, double eta) {
+    const Eval ea = eval(sa, c[0], c[1]), eb = eval(sb, c[2], c[3]);
+    const V nb = cross(eb.su, eb.sv);
+    const double lb = length(nb);
+    X none{NAN, NAN, NAN, NAN};
+    if (!(lb > 0.0)) return none;
+    const double g0 = dot(ea.p - eb.p, nb / lb);
+    for (int d = 0; d < 4; ++d) {
+      const V dir = d < 2 ? ea.su : ea.sv;
+      const double ld = length(dir);
+      if (!(ld > 0.0)) continue;
+      const double sign = d % 2 == 0 ? 1.0 : -1.0;
+      X t = c;
+      t[z(d / 2)] += sign * eta / ld;
+      pr.clamp(t);
+      const V q = eval(sa, t[0], t[1]).p;
+      const double moved = length(q - ea.p);
+      double s = c[2], tt = c[3];
+      V nf{};
+      project_point(sb, q, s, tt, INFINITY, 0x1p-44 * scale, nf);
+      if (nf == V{} || !(moved > 0.0)) continue;
+      const double g1 = dot(q - eval(sb, s, tt).p, dot(nf, nb) < 0.0 ? -nf : nf);
+      const double k = 2.0 * (g1 - g0) / (moved * moved);
+      if (!(g0 * k < 0.0)) continue;
+      const double radius = std::sqrt(-2.0 * g0 / k);
+      for (const double f : {1.0, 0.5, 2.0}) {
+        X w = c;
+        w[z(d / 2)] += sign * f * radius / ld;
+        pr.clamp(w);
+        if (!pr.seed(w) || pr.tangent(w) == V{}) continue;
+        const double rw = length(eval(sa, w[0], w[1]).p - ea.p);
+        if (rw >= 0.5 * radius && rw <= 2.0 * radius) return w;
+      }
+    }
+    return none;
+  };
+
+  // Seeds: transversal points from the pair centres; where that fails and the normal cones
+  // overlap, a critical point of the distance (a contact, or the centre of a small loop).
+  std::vector<X> seeds, contact_starts, searched;
+  std::vector<char> explored(ba.size(), 0);
+  constexpr std::size_t seed_budget = 1u << 14;
+  std::size_t seeded = 0;
+  for (const auto& pq : pairs) {
+    if (same_a[z(pq.first)] || same_b[z(pq.second)]) continue;  // inside a coincident region
+    if (++seeded > seed_budget) {
+      r.status = Status::limit_exceeded;
+      break;
+    }
+    const Box& x = ba[z(pq.first)];
+    const Box& y = bb[z(pq.second)];
+    const X centre{0.5 * (x.u0 + x.u1), 0.5 * (x.v0 + x.v1), 0.5 * (y.u0 + y.u1),
+                   0.5 * (y.v0 + y.v1)};
+    X s = centre;
+    const bool seeded_here = pr.seed(s);
+    if (seeded_here) seeds.push_back(s);
+    // Parallel normals possible: a contact, or a small loop around a critical point of the
+    // distance, may hide here (once per leaf of the first surface).
+    if (explored[z(pq.first)] || !cones_overlap(x, y)) continue;
+    explored[z(pq.first)] = 1;
+    X c = centre;
+    if (!pr.contact(c)) continue;
+    if (pr.gap(c) <= accept_residual) {
+      contact_starts.push_back(c);
       continue;
     }
-    std::vector<std::array<double, 4>> fwd, bwd;
-    const bool closed = pr.trace(seeds[si], 1.0, h0, fwd);
-    if (!closed) pr.trace(seeds[si], -1.0, h0, bwd);
-    std::vector<std::array<double, 4>> all(bwd.rbegin(), bwd.rend());
+    // A critical point with a gap: the centre of a possible small loop (the gap function has
+    // an extremum inside every closed loop), searched even where this pair seeded another
+    // curve (Gauss-Newton from the centres is drawn to the nearer, larger curve).
+    const V pc = eval(sa, c[0], c[1]).p;
+    const double diag = std::max(length(x.hi - x.lo), length(y.hi - y.lo));
+    if (pr.gap(c) * scale > diag) continue;
+    bool seen = false;
+    for (const X& q : searched)
+      seen = seen || length(eval(sa, q[0], q[1]).p - pc) <= 0x1p-17 * scale;
+    if (seen) continue;
+    searched.push_back(c);
+    const X loop = loop_seed(c, 0.125 * diag);
+    if (loop[0] == loop[0]) seeds.push_back(loop);
+  }
+
+  const double h0 = std::clamp(opt.step, 0x1p-12, 0.25) * scale;
+  // Contacts: isolated points (contact system of rank 4) and curves of contact (rank 3, traced
+  // along the kernel); rank <= 2 means a coincident piece (reported above).
+  std::vector<SurfaceCurve<double>> contact_curves;
+  const auto locate_contacts = [&](const std::vector<X>& starts) {
+    for (X c : starts) {
+      if (!pr.contact(c) || pr.gap(c) > accept_residual || in_coincident(c)) continue;
+      const V p = eval(sa, c[0], c[1]).p;
+      bool known = false;
+      for (const auto& k : r.contacts) known = known || length(k.point - p) <= 0x1p-17 * scale;
+      for (const auto& cc : contact_curves)
+        known = known || polyline_distance(p, cc.points, cc.closed) <= 0.1 * h0 + 0x1p-17 * scale;
+      if (known) continue;
+      X kernel{};
+      const int rank = pr.contact_rank(c, kernel);
+      if (rank == 4) {
+        r.contacts.push_back({p, {c[0], c[1]}, {c[2], c[3]}});
+        continue;
+      }
+      if (rank != 3) continue;
+      std::vector<X> fwd, bwd;
+      const End fe = pr.trace_contact(c, 1.0, h0, fwd);
+      End be = End::closed;
+      if (fe != End::closed) be = pr.trace_contact(c, -1.0, h0, bwd);
+      if (fwd.empty() && bwd.empty()) {
+        // A degenerate touching point (rank 3 without a curve through it: a cusp's tip).
+        r.contacts.push_back({p, {c[0], c[1]}, {c[2], c[3]}});
+        continue;
+      }
+      std::vector<X> all(bwd.rbegin(), bwd.rend());
+      all.push_back(c);
+      all.insert(all.end(), fwd.begin(), fwd.end());
+      SurfaceCurve<double> cv;
+      cv.tangent = true;
+      cv.closed = fe == End::closed;
+      if (!cv.closed) {
+        cv.first_end = end_kind(be);
+        cv.last_end = end_kind(fe);
+      }
+      for (const auto& x : all) {
+        cv.points.push_back(eval(sa, x[0], x[1]).p);
+        cv.param_a.push_back({x[0], x[1]});
+        cv.param_b.push_back({x[2], x[3]});
+      }
+      contact_curves.push_back(std::move(cv));
+    }
+  };
+  std::vector<char> covered(seeds.size(), 0);
+  for (std::size_t si = 0; si < seeds.size(); ++si)
+    if (pr.tangent(seeds[si]) == V{}) {
+      covered[si] = 1;
+      contact_starts.push_back(seeds[si]);
+    }
+  locate_contacts(contact_starts);
+  const double near_contact = 0x1p-14 * scale;
+  // Seeds next to a curve of contact belong to it (near it the normals are almost parallel and
+  // the transversal tracer would follow a shadow of it).
+  for (std::size_t si = 0; si < seeds.size(); ++si) {
+    const V p = eval(sa, seeds[si][0], seeds[si][1]).p;
+    for (const auto& cc : contact_curves)
+      if (polyline_distance(p, cc.points, cc.closed) <= 0.1 * h0 + 0x1p-17 * scale) covered[si] = 1;
+    // Near a touching point (seeds there solve Sa = Sb only to the tolerance, within about its
+    // square root of the point) no transversal curve can be told apart from the contact.
+    for (const auto& k : r.contacts)
+      if (length(p - k.point) <= near_contact) covered[si] = 1;
+  }
+  std::vector<X> branch_ends;
+  for (std::size_t si = 0; si < seeds.size(); ++si) {
+    if (covered[si]) continue;
+    std::vector<X> fwd, bwd;
+    const End fe = pr.trace(seeds[si], 1.0, h0, fwd);
+    End be = End::closed;
+    if (fe != End::closed) be = pr.trace(seeds[si], -1.0, h0, bwd);
+    std::vector<X> all(bwd.rbegin(), bwd.rend());
     all.push_back(seeds[si]);
     all.insert(all.end(), fwd.begin(), fwd.end());
     SurfaceCurve<double> c;
-    c.closed = closed;
+    c.closed = fe == End::closed;
+    if (!c.closed) {
+      c.first_end = end_kind(be);
+      c.last_end = end_kind(fe);
+      // A branch stopped at a touching point: the contact is located from its last point.
+      if (fe == End::tangent) branch_ends.push_back(all.back());
+      if (be == End::tangent) branch_ends.push_back(all.front());
+    }
     for (const auto& x : all) {
       c.points.push_back(eval(sa, x[0], x[1]).p);
       c.param_a.push_back({x[0], x[1]});
@@ -991,23 +1528,37 @@ SurfaceCurves<double> surface_curves(const NS& sa, const NS& sb, const SurfaceCu
     for (std::size_t sj = 0; sj < seeds.size(); ++sj) {
       if (covered[sj]) continue;
       const V p = eval(sa, seeds[sj][0], seeds[sj][1]).p;
-      for (std::size_t q = 0; q < c.points.size(); ++q) {
-        const V& e0 = c.points[q];
-        const V& e1 = c.points[(q + 1) % c.points.size()];
-        // Distance from the seed to the chord (the seeds lie on the curve).
-        const V ed = e1 - e0;
-        const double el = dot(ed, ed);
-        const double tt = el > 0.0 ? std::clamp(dot(p - e0, ed) / el, 0.0, 1.0) : 0.0;
-        if (length(p - (e0 + tt * ed)) <= 0.05 * h0 + 0x1p-20 * scale) {
+      // The seeds lie on the curve: within a fraction of the step of a chord; or, farther from
+      // a chord (the tracer allows turns of ~25 degrees a step), the curve corrected from the
+      // nearest chord point onto the plane through the seed lands on the seed.
+      std::size_t q = 0;
+      double tt = 0.0;
+      const double d = polyline_distance(p, c.points, c.closed, &q, &tt);
+      if (d <= 0.05 * h0 + 0x1p-20 * scale) {
+        covered[sj] = 1;
+      } else if (d <= 0.25 * h0) {
+        const X& e0 = all[q];
+        const X& e1 = all[(q + 1) % all.size()];
+        X m{};
+        for (int k = 0; k < 4; ++k) m[z(k)] = lerp(e0[z(k)], e1[z(k)], tt);
+        const V ts = pr.tangent(seeds[sj]);
+        if (ts != V{} && pr.correct(m, ts, p, -1, 0.0) &&
+            length(eval(sa, m[0], m[1]).p - p) <= 0x1p-20 * scale)
           covered[sj] = 1;
-          break;
-        }
-        if (!c.closed && q + 2 == c.points.size()) break;
       }
     }
     covered[si] = 1;
-    if (c.points.size() >= 2) r.curves.push_back(std::move(c));
+    bool shadow = !r.contacts.empty();  // every point next to one contact: its shadow
+    for (const V& p : c.points) {
+      bool near = false;
+      for (const auto& k : r.contacts) near = near || length(p - k.point) <= near_contact;
+      shadow = shadow && near;
+    }
+    if (c.points.size() >= 2 && !shadow) r.curves.push_back(std::move(c));
   }
+
+  locate_contacts(branch_ends);
+  for (auto& cv : contact_curves) r.curves.push_back(std::move(cv));
   return r;
 }
 

@@ -525,10 +525,15 @@ TYPED_TEST(SurfaceHits, NurbsSphereMeetsAPlanePatchInACircle) {
 
 TYPED_TEST(SurfaceHits, CoincidentSurfacesTerminate) {
   using T = TypeParam;
-  // No transversal curve exists (the normals agree everywhere): no curve is claimed.
+  // No transversal curve exists (the normals agree everywhere): no curve is claimed, the whole
+  // domain is reported coincident.
   const auto r = intersection(bowl<T>(), bowl<T>());
-  EXPECT_TRUE(r.status == Status::ok || r.status == Status::limit_exceeded);
+  EXPECT_EQ(r.status, Status::ok);
   EXPECT_TRUE(r.curves.empty());
+  EXPECT_TRUE(r.contacts.empty());
+  ASSERT_EQ(r.coincident_a.size(), 1u);
+  EXPECT_EQ(r.coincident_a[0].lo, (Vec2<T>{0, 0}));
+  EXPECT_EQ(r.coincident_a[0].hi, (Vec2<T>{1, 1}));
   // Bad input.
   BezierPatch<T, 3> bad = bowl<T>();
   bad.control.pop_back();

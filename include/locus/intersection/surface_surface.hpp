@@ -1,25 +1,31 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Intersection of two parametric surfaces (BezierPatch, BSplineSurface, NurbsSurface, in any
-// combination with the same scalar): intersection() returns the intersection curves as polylines;
-// row int3.surface-surface, book section 11.8 (figures 11.59, 11.60: two B-spline surfaces and
-// the curves in each parameter space). Result SurfaceCurves<T> (intersection/detail/surface3.hpp):
-// status and curves, each closed or open (ends on a domain boundary of either surface), with
-// points (on the first surface), param_a (u, v on the first) and param_b (on the second).
-// Method: seeds by subdivision: every Bézier span of each surface is split into
-// (opt.grid / 2)^2 leaves; for each pair of leaves whose control-net boxes overlap, a
-// minimum-norm Gauss-Newton iteration on S_a(u, v) = S_b(s, t) from the leaf centres gives a point
-// of the curve. Tracing: from the first seed not yet on a traced curve, predictor (a step h along
-// the tangent n_a x n_b, h = opt.step times the box diagonal, halved where the corrector fails or
-// the tangent turns by more than ~25 degrees) and corrector (Newton on the four parameters with
-// S_a = S_b and the plane through the predicted point normal to the tangent), in both directions
-// until a domain boundary (the end point solved on it) or the start (a closed loop). Every point
-// satisfies |S_a - S_b| <= 2^-36 times the size. Not found or cut short: curve components that
-// no leaf pair seeds (tiny loops), branches through points where the surfaces touch (tangent
-// zero: the branch ends there), and branch crossings (traced through or ended). Degenerate:
-// invalid surfaces: validate()'s status; coincident surfaces are not detected (more than 2^14
-// overlapping leaf pairs stop the seeding with limit_exceeded). Float input is computed in double.
-// Cost: O(leaf pairs) seeds plus O(length / h) Newton steps per curve; allocates.
+// combination with the same scalar); row int3.surface-surface, book section 11.8 (figures 11.59,
+// 11.60). Result SurfaceCurves<T> (intersection/detail/surface3.hpp): status; curves as
+// polylines (points on the first surface, param_a, param_b; closed, or open with
+// first_end/last_end = boundary, tangent_point or stalled; `tangent` marks a curve along which
+// the surfaces touch); contacts (isolated touching points); coincident_a/coincident_b
+// (parameter rectangles where the surfaces share a 2D region). Derivation and the exact rules:
+// docs/notes/surface_intersection.md. Method: every Bézier span is cut into (opt.grid / 2)^2
+// leaves. A leaf whose 3 x 3 samples project onto the other surface within 2^-36 of the size
+// (normals parallel to sine 2^-20) is coincident: reported, merged into rectangles (exact to
+// one leaf), never traced. Other overlapping leaf pairs: Gauss-Newton seeds on S_a = S_b from
+// their centres; where their normal cones overlap (Sederberg's loop criterion), Newton on the
+// contact system (S_b the foot of S_a, normals parallel) gives a contact (gap <= 2^-36 of the
+// size; isolated at rank 4, a traced curve of contact at rank 3) or the centre of a possible
+// small loop, seeded at radius sqrt(-2 gap / relative curvature). Tracing: predictor along
+// n_a x n_b, Newton corrector, step h = opt.step times the size, halved down to 2^-20 h; a
+// branch ends on a domain bound, at its start (closed) or where the normals turn parallel
+// (tangent_point, the contact then located). Every point has |S_a - S_b| <= 2^-36 of the size.
+// Tolerance, not exactness, decides tangency and coincidence: surfaces within 2^-36 of the size
+// touch or coincide (a float-rounded copy, 2^-24 off, does not); seeds and curves within 2^-14
+// of the size of a contact are its shadow and dropped. Missed: loops below about 2^-18 h,
+// features between the samples, curves of nearly coincident surfaces (apart by more than 2^-36,
+// normals within 2^-26); branch crossings are traced through. Invalid surfaces: validate()'s
+// status; more than 2^14 non-coincident overlapping leaf pairs: limit_exceeded. Float input is
+// computed in double. Cost: O(leaf pairs) seeds and contact solves plus O(length / h) Newton
+// steps per curve; allocates.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/surface3.hpp>

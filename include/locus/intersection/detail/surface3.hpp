@@ -40,6 +40,13 @@ struct LinearSurfaceHits {
   bool on_surface = false;  ///< a piece of the component lies on the surface (not listed)
 };
 
+/// How an open surface-surface curve ends at its first or last point.
+enum class SurfaceCurveEnd : unsigned char {
+  boundary,       ///< on a domain boundary of either surface
+  tangent_point,  ///< where the surfaces touch (normals parallel): the branch cannot go on
+  stalled,        ///< the tracer could not continue (step underflow or point budget)
+};
+
 /// One intersection curve as a polyline: points with their parameters on both arguments (a
 /// plane has none: param_a empty). A closed curve does not repeat its first point.
 template <Real T>
@@ -48,6 +55,25 @@ struct SurfaceCurve {
   std::vector<Vec3<T>> points;
   std::vector<Vec2<T>> param_a;  ///< (u, v) on the first argument (empty for a plane)
   std::vector<Vec2<T>> param_b;  ///< (u, v) on the second argument (empty for a plane)
+  /// Surface-surface: the surfaces touch along this curve (normals parallel everywhere on it);
+  /// its points are solutions of the contact system (see surface_surface.hpp).
+  bool tangent = false;
+  SurfaceCurveEnd first_end = SurfaceCurveEnd::boundary;  ///< open curves: end at points[0]
+  SurfaceCurveEnd last_end = SurfaceCurveEnd::boundary;   ///< open curves: end at points.back()
+};
+
+/// An isolated point where two surfaces touch (surface-surface).
+template <Real T>
+struct SurfaceContact {
+  Vec3<T> point{};    ///< on the first surface
+  Vec2<T> param_a{};  ///< (u, v) on the first surface
+  Vec2<T> param_b{};  ///< (u, v) on the second surface
+};
+
+/// A parameter rectangle [lo.x, hi.x] x [lo.y, hi.y].
+template <Real T>
+struct ParamRect {
+  Vec2<T> lo{}, hi{};
 };
 
 /// The intersection curves of a plane or surface with a surface.
@@ -55,12 +81,19 @@ template <Real T>
 struct SurfaceCurves {
   Status status = Status::empty_input;
   std::vector<SurfaceCurve<T>> curves;
+  /// Surface-surface only: isolated points of tangential contact.
+  std::vector<SurfaceContact<T>> contacts;
+  /// Surface-surface only: where the surfaces coincide (share a 2D region), as unions of
+  /// subdivision leaves in the parameters of the first (coincident_a) and second surface.
+  std::vector<ParamRect<T>> coincident_a, coincident_b;
 };
 
 /// Exchanges the roles of the arguments (param_a <-> param_b).
 template <Real T>
 [[nodiscard]] inline SurfaceCurves<T> swapped(SurfaceCurves<T> r) {
   for (auto& c : r.curves) std::swap(c.param_a, c.param_b);
+  for (auto& c : r.contacts) std::swap(c.param_a, c.param_b);
+  std::swap(r.coincident_a, r.coincident_b);
   return r;
 }
 
@@ -68,7 +101,8 @@ template <Real T>
 struct SurfaceCurveOptions {
   /// Grid cells per Bézier span in each direction (plane-surface) or subdivision leaves per span
   /// for seeds (surface-surface). Curve components that cross no grid edge (tiny loops) can be
-  /// missed; raise it for finer features.
+  /// missed; raise it for finer features (surface-surface also seeds small loops from the
+  /// critical points of the gap, and reports coincident regions to within one leaf).
   int grid = 16;
   /// Tracing step (surface-surface) relative to the larger surface's control-net box diagonal.
   double step = 1.0 / 64.0;
@@ -159,8 +193,17 @@ template <Real T>
       for (const auto& p : c.points) d.points.push_back(vec_cast<T>(p));
       for (const auto& p : c.param_a) d.param_a.push_back(vec_cast<T>(p));
       for (const auto& p : c.param_b) d.param_b.push_back(vec_cast<T>(p));
+      d.tangent = c.tangent;
+      d.first_end = c.first_end;
+      d.last_end = c.last_end;
       o.curves.push_back(std::move(d));
     }
+    for (const auto& c : r.contacts)
+      o.contacts.push_back({vec_cast<T>(c.point), vec_cast<T>(c.param_a), vec_cast<T>(c.param_b)});
+    for (const auto& b : r.coincident_a)
+      o.coincident_a.push_back({vec_cast<T>(b.lo), vec_cast<T>(b.hi)});
+    for (const auto& b : r.coincident_b)
+      o.coincident_b.push_back({vec_cast<T>(b.lo), vec_cast<T>(b.hi)});
     return o;
   }
 }
