@@ -283,8 +283,8 @@ TYPED_TEST(IntersectionPlanar3, DiskAgainstExact) {
   EXPECT_GT(hits, 500);
 }
 
-// In the plane of a non-convex polygon the result is the span from the first to the last common
-// point; the pieces come from the 2D query as the pair headers describe (checked here on a U).
+// In the plane of a non-convex polygon intersection() is the span from the first to the last
+// common point; the pieces, from the 2D query by the recipe below, are intersection_pieces()'s.
 TYPED_TEST(IntersectionPlanar3, PolygonInPlanePieces) {
   using T = TypeParam;
   const PlaneFrame3<T> f{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -330,6 +330,17 @@ TYPED_TEST(IntersectionPlanar3, PolygonInPlanePieces) {
   const auto q = pieces(corner);
   ASSERT_EQ(q.size(), 1u);
   EXPECT_EQ(q[0], (std::pair<T, T>{T(0), T(1)}));
+  // intersection_pieces() gives the recipe's pieces.
+  for (const Segment3<T>& s : {across, corner}) {
+    const auto want = pieces(s);
+    const auto got = intersection_pieces(s, u);
+    ASSERT_EQ(got.pieces.size(), want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      EXPECT_EQ(got.pieces[i].kind, Kind::segment);
+      EXPECT_EQ(got.pieces[i].param_a[0], want[i].first);
+      EXPECT_EQ(got.pieces[i].param_a[1], want[i].second);
+    }
+  }
 }
 
 // Near-rim crossings with exact data: a disk in a plane spanned by two orthogonal integer vectors
