@@ -399,7 +399,8 @@ TYPED_TEST(IntersectionPlanar3Pieces, TiltedFramesAgainstOracle) {
             const T s = T(rng.uniform_int(-1, 8)), t = T(rng.uniform_int(-1, 7));
             return origin + vec(rot.u, s) + vec(rot.v, t);
           };
-          const A a = Make<A>::from(g(), g());
+          const Vec3<T> p = g(), q = g();  // in order (not as arguments)
+          const A a = Make<A>::from(p, q);
           pieces += check_pieces<T>(a, poly, "tilted " + std::to_string(pi));
           ++cases;
           if (::testing::Test::HasFailure()) return;
@@ -479,7 +480,9 @@ TYPED_TEST(IntersectionPlanar3Pieces, CrossingComponentsAsIntersection) {
       const auto g = [&](int z) {
         return Vec3<T>{T(rng.uniform_int(-2, 16)) / 2, T(rng.uniform_int(-2, 8)) / 2, T(z)};
       };
-      const A a = Make<A>::from(g(rng.uniform_int(-1, 1)), g(rng.uniform_int(2, 3)));
+      const int z0 = rng.uniform_int(-1, 1), z1 = rng.uniform_int(2, 3);
+      const Vec3<T> p0 = g(z0), p1 = g(z1);  // in order (not as arguments)
+      const A a = Make<A>::from(p0, p1);
       const auto r = intersection(a, comb);
       const auto p = intersection_pieces(a, comb);
       EXPECT_EQ(p.status, Status::ok);
