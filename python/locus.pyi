@@ -178,6 +178,12 @@ class BoxHits(Result):
     t_enter: _Floats
     t_exit: _Floats
 
+class PlanarPieces(Result):
+    kind: npt.NDArray[np.int8]
+    t: _Floats
+    points: _Floats
+    st: _Floats
+
 class ConvexIntersection(Result):
     kind: str
     vertices: _Floats
@@ -283,6 +289,13 @@ def ray_triangle_hits(
 ) -> RayHits: ...
 def ray_box_hits(origins: _Points, directions: _Points, boxes: npt.ArrayLike) -> BoxHits: ...
 def segment_box_hits(segments: npt.ArrayLike, boxes: npt.ArrayLike) -> BoxHits: ...
+def planar_polygon_pieces(
+    polygon: _Points,
+    p: npt.ArrayLike,
+    q: npt.ArrayLike,
+    kind: str = "segment",
+    frame: npt.ArrayLike | None = None,
+) -> PlanarPieces: ...
 def circle_circle(
     c0: npt.ArrayLike, r0: npt.ArrayLike, c1: npt.ArrayLike, r1: npt.ArrayLike
 ) -> CurveIntersections: ...

@@ -18,6 +18,7 @@ void bind_boolean(py::module_& m);             // boolean.cpp
 void bind_offset(py::module_& m);              // offset.cpp
 void bind_bsp3(py::module_& m);                // bsp3.cpp
 void bind_ellipsoid_relation(py::module_& m);  // ellipsoid_relation.cpp
+void bind_planar_pieces(py::module_& m);       // planar_pieces.cpp
 
 namespace {
 
@@ -119,6 +120,8 @@ for _name, _doc in [
     ("BooleanResult", "boolean, offset, offset_polyline: polygons (lists of rings: outer CCW, "
                       "holes CW), grid."),
     ("MeshBooleanResult", "mesh_boolean: vertices (m, 3), triangles (t, 3)."),
+    ("PlanarPieces", "planar_polygon_pieces: kind (1 point, 2 segment), t (k, 2), points "
+                     "(k, 2, 3), st (k, 2, 2)."),
 ]:
     _make(_name, _doc)
 del _name, _doc, _make
@@ -275,4 +278,5 @@ PYBIND11_MODULE(locus, m) {
   bind_offset(m);
   bind_bsp3(m);
   bind_ellipsoid_relation(m);
+  bind_planar_pieces(m);
 }

@@ -283,8 +283,8 @@ TYPED_TEST(IntersectionPlanar3, DiskAgainstExact) {
   EXPECT_GT(hits, 500);
 }
 
-// In the plane of a non-convex polygon the result is the span from the first to the last common
-// point; the pieces come from the 2D query as the pair headers describe (checked here on a U).
+// In the plane of a non-convex polygon intersection() is the span from the first to the last
+// common point; the pieces, from the 2D query by the recipe below, are intersection_pieces()'s.
 TYPED_TEST(IntersectionPlanar3, PolygonInPlanePieces) {
   using T = TypeParam;
   const PlaneFrame3<T> f{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -330,6 +330,17 @@ TYPED_TEST(IntersectionPlanar3, PolygonInPlanePieces) {
   const auto q = pieces(corner);
   ASSERT_EQ(q.size(), 1u);
   EXPECT_EQ(q[0], (std::pair<T, T>{T(0), T(1)}));
+  // intersection_pieces() gives the recipe's pieces.
+  for (const Segment3<T>& s : {across, corner}) {
+    const auto want = pieces(s);
+    const auto got = intersection_pieces(s, u);
+    ASSERT_EQ(got.pieces.size(), want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      EXPECT_EQ(got.pieces[i].kind, Kind::segment);
+      EXPECT_EQ(got.pieces[i].param_a[0], want[i].first);
+      EXPECT_EQ(got.pieces[i].param_a[1], want[i].second);
+    }
+  }
 }
 
 // Near-rim crossings with exact data: a disk in a plane spanned by two orthogonal integer vectors
@@ -452,8 +463,8 @@ TYPED_TEST(IntersectionPlanar3, DiskRimExact) {
 // Components in the disk's plane near tangency, exact data (frames and triples as above): the
 // tangent at a rim point X, moved towards or away from the centre by 1/64 of the radius or with
 // the radius one ulp off; rays and segments starting or ending at X. Oracle (GMP): the nearest
-// point of the component to the centre against r decides empty / point / segment; a chord is
-// reported as a point only when it is below the rounding (r^2 - dist^2 < 64 eps r^2).
+// point of the component to the centre against r decides empty / point / segment, exactly (a
+// chord however short is a segment; its ends are rounded).
 TYPED_TEST(IntersectionPlanar3, DiskInPlaneExact) {
   using T = TypeParam;
   Rng rng;
@@ -462,7 +473,7 @@ TYPED_TEST(IntersectionPlanar3, DiskInPlaneExact) {
       {{1, 0, 0}, {0, 1, 0}}, {{2, 2, -1}, {2, -1, 2}}, {{2, 3, 6}, {6, 2, -3}}};
   constexpr int triples[][2] = {{3, 4}, {5, 12}, {1, 0}};
   const int lens[] = {1, 3, 7}, hyps[] = {5, 13, 1};
-  int kinds[3] = {0, 0, 0};
+  int kinds[3] = {0, 0, 0}, slivers = 0;
   for (int i = 0; i < 60; ++i) {
     const int fi = rng.uniform_int(0, 2), ti = rng.uniform_int(0, 2);
     const int alpha = triples[ti][0], beta = triples[ti][1];
@@ -500,11 +511,12 @@ TYPED_TEST(IntersectionPlanar3, DiskInPlaneExact) {
         ++kinds[1];
       } else {
         const double gap = mpq_class((rr - m) / rr).get_d();
-        if (gap >= 64 * double(eps_v<T>)) {
-          EXPECT_EQ(res.kind, Kind::segment) << i << " " << gap;
+        EXPECT_EQ(res.kind, Kind::segment) << i << " " << gap;
+        if (res.kind == Kind::segment) {
+          EXPECT_LE(res.param_a[0], res.param_a[1]) << i;
         }
-        EXPECT_NE(res.kind, Kind::empty) << i;
         ++kinds[2];
+        slivers += gap < 64 * double(eps_v<T>);
       }
       if (m > rr) ++kinds[0];
     };
@@ -523,6 +535,7 @@ TYPED_TEST(IntersectionPlanar3, DiskInPlaneExact) {
   EXPECT_GT(kinds[0], 20);
   EXPECT_GT(kinds[1], 20);
   EXPECT_GT(kinds[2], 20);
+  EXPECT_GT(slivers, 3);  // chords shorter than the rounding of their ends
 }
 
 // A component in the disk's plane: the chord, its ends on the circle.

@@ -17,18 +17,17 @@
 // a single vertex acts as a point (edge 0); zero-length edges act as points.
 // The swapped overload (Polygon2, Line2) returns swapped(): parameters exchanged, same order.
 // Cost: O(n) for the edges, O(k log k) to order k pieces; allocates the result.
-// 3D (row int3.linear-polygon, book section 11.3, figure 11.3): intersects() / intersection() of
-// a Line3 with a PlanarPolygon3, the FILLED polygon in its frame (LinearPlanarIntersection<T>,
-// detail/planar3.hpp): the side of the plane {dot(normal, X - origin) = 0} is exact; a crossing
-// point is rounded, mapped to frame coordinates (param_b) and tested exactly against the closed
-// polygon. A line in the plane: the 2D problem in frame coordinates (rounded), reported as the
-// segment (or point) between its first and last common points. The result holds one segment:
-// against a non-convex polygon that span may cross gaps outside it. For the pieces, map the
-// line to frame coordinates (st = ((X - origin).u, (X - origin).v) of its points; parameters
-// are kept) and call the 2D intersection(Line2, polygon.polygon) above: its boundary crossings,
-// in order, with the line's own ends, cut it into spans that lie wholly inside or outside;
-// a span is a piece when its midpoint is inside (contains(), containment/point_in_polygon.hpp,
-// even-odd; adjacent pieces join); a crossing between two outside spans is a touching point.
+// 3D (row int3.linear-polygon, book section 11.3, figure 11.3): a Line3 against the FILLED
+// PlanarPolygon3 (closed, even-odd: contains(), containment/point_in_polygon.hpp). intersection()
+// -> LinearPlanarIntersection<T> (detail/planar3.hpp): the crossing point, or for a line in the
+// plane the segment (or point) from its first to its last common point, which may span gaps;
+// intersection_pieces() -> LinearPlanarPieces<T> {status, pieces}: every piece, points and
+// segments by increasing param_a, param_b = frame coordinates (s, t). Exact: the side of the
+// plane {dot(normal, X - origin) = 0}; a crossing X is rounded, its frame point tested exactly.
+// A line in the plane is mapped to st = ((X - origin).u, (X - origin).v) (rounded, within
+// 5 eps |X - origin| |u| (|v|), eps = 2^-53; parameters kept); on that image the pieces, their
+// kinds and touching points are exact. Status: empty_input (no vertex), non_finite_input,
+// degenerate_input (zero normal). Cost O(n log n), allocates. docs/notes/intersection.md.
 
 #include <locus/core/point_range.hpp>
 #include <locus/core/scalar.hpp>
@@ -96,6 +95,21 @@ template <Real T>
 [[nodiscard]] inline Intersection<T, 3, Vec2<T>, T, 2> intersection(const PlanarPolygon3<T>& p,
                                                                     const Line3<T>& a) noexcept {
   return swapped(intersection(a, p));
+}
+
+/// Every piece of the common set of a line and the filled planar polygon, in order along the
+/// line (3D; see the header comment).
+template <Real T>
+[[nodiscard]] inline LinearPlanarPieces<T> intersection_pieces(const Line3<T>& a,
+                                                               const PlanarPolygon3<T>& p) {
+  return detail::planar3::polygon_pieces<T>(detail::linear3::as_lin(a), p);
+}
+
+/// Swapped arguments (3D): swapped(intersection_pieces(a, p)).
+template <Real T>
+[[nodiscard]] inline IntersectionPieces<Intersection<T, 3, Vec2<T>, T, 2>> intersection_pieces(
+    const PlanarPolygon3<T>& p, const Line3<T>& a) {
+  return swapped(intersection_pieces(a, p));
 }
 
 }  // namespace locus

@@ -21,7 +21,8 @@
 //   no kind above describes it (equal circles, ellipses, quadratic curves).
 // Index 0 always refers to the first argument: the swapped-argument overload returns swapped().
 // Unbounded results use vectors and a Status: PolylineIntersection2 (a linear component against
-// a polyline or polygon boundary) lists PolylineCrossing2 pieces, each a point or a segment.
+// a polyline or polygon boundary) lists PolylineCrossing2 pieces, each a point or a segment;
+// IntersectionPieces<Piece> (intersection_pieces()) lists Intersection pieces the same way.
 // Non-finite input gives kind empty unless the pair header says otherwise; no NaN point is ever
 // reported inside count. Cost: an aggregate of Capacity (N + 2) scalars; no allocation.
 
@@ -155,6 +156,24 @@ template <Real T>
 [[nodiscard]] inline PolylineIntersection2<T> swapped(PolylineIntersection2<T> r) noexcept {
   for (PolylineCrossing2<T>& c : r.crossings) std::swap(c.param_a, c.param_b);
   return r;
+}
+
+/// A variable number of pieces of an intersection, each an Intersection of kind point or
+/// segment, in the order the pair header states, with a Status (intersection_pieces()).
+template <class Piece>
+struct IntersectionPieces {
+  Status status = Status::empty_input;
+  std::vector<Piece> pieces;
+};
+
+/// The same answer for the swapped query: each piece swapped(), same order.
+template <class T, int N, class PA, class PB, int C>
+[[nodiscard]] inline IntersectionPieces<Intersection<T, N, PB, PA, C>> swapped(
+    const IntersectionPieces<Intersection<T, N, PA, PB, C>>& r) {
+  IntersectionPieces<Intersection<T, N, PB, PA, C>> s{r.status, {}};
+  s.pieces.reserve(r.pieces.size());
+  for (const Intersection<T, N, PA, PB, C>& p : r.pieces) s.pieces.push_back(swapped(p));
+  return s;
 }
 
 /// The result of intersection() between a curve and a linear component or a curve (circle,

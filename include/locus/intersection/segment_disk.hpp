@@ -14,8 +14,8 @@
 // the angle to the plane is not tiny). In the plane, the contact is exact too (none, a single
 // point such as a tangency, or a chord: the distance from the centre to the carrier and where its
 // foot lies, core/plane_crossing_ball.hpp); a chord's ends solve |o + t d|^2 = r^2 in frame
-// coordinates with the stable quadratic formula (rounded), and a chord shorter than that rounding
-// (r^2 - distance^2 within a few eps of r^2) may be reported as its point nearest the centre.
+// coordinates with the stable quadratic formula (rounded); a chord shorter than that rounding is
+// still a segment whose rounded ends may coincide (at its point nearest the centre if lost).
 // Degenerate: a zero direction (zero-length segment) acts as its point; a zero normal, a negative
 // radius or NaN/Inf input gives empty; radius 0 is the centre point. The swapped overload
 // returns swapped(). Cost: a few exact-sign filters and about 150 flops; near the rim the exact
