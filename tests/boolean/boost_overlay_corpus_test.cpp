@@ -16,6 +16,7 @@
 #include <support/corpus.hpp>
 #include <support/files.hpp>
 #include <support/polygon_validity.hpp>
+#include <support/sanitizer.hpp>
 
 #include <array>
 #include <cmath>
@@ -101,17 +102,7 @@ TEST(PolygonBooleanCorpus, BoostGeometryOverlayCasesAreValidAndConsistent) {
   ASSERT_EQ(cases.size(), 527u);
   ASSERT_EQ(expectations.size(), 512u);
   // The sanitized build runs every 25th case; the optimised run covers every case.
-#if defined(__SANITIZE_ADDRESS__)
-  const std::size_t stride = 25;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  const std::size_t stride = 25;
-#else
-  const std::size_t stride = 1;
-#endif
-#else
-  const std::size_t stride = 1;
-#endif
+  const std::size_t stride = locus_test::kSanitizerBuild ? 25 : 1;
   std::map<std::string, std::array<double, 4>> areas;  // intersection, union, a - b, b - a
   int runs = 0, valid = 0, consistent = 0, pairs = 0;
   std::size_t index = 0;
