@@ -5,6 +5,7 @@
 // unbounded trapezoids are clipped to the view box by trapezoid_map_corners. A figure fails when
 // a step's status is not ok, the clipped trapezoids do not tile the box (area sum), or locate()
 // of a trapezoid's centre does not return that trapezoid.
+#include "ch13_sample.hpp"
 #include "gallery.hpp"
 
 #include <locus/triangulate/trapezoid_map.hpp>
@@ -23,11 +24,10 @@ using namespace locus;
 namespace c = colour;
 using Seg = std::array<std::uint32_t, 2>;
 
-// A polygon with four reflex vertices; its edges in the (random) insertion order s1 .. s9.
-const std::vector<Vec2d> tz_points{{0, 0},     {4, 1.2}, {7, -0.4},  {9, 2.6},  {6.4, 4},
-                                   {8.2, 7.2}, {4, 5.6}, {1.4, 7.6}, {2.2, 3.4}};
-const std::vector<Seg> tz_segments{{2, 3}, {6, 7}, {2, 1}, {4, 5}, {8, 0},
-                                   {0, 1}, {5, 6}, {3, 4}, {7, 8}};
+// The book's sample polygon (13.56, ch13_sample.hpp); its edges in the (random) insertion order
+// s1 .. s9.
+const std::vector<Vec2d>& tz_points = sample_polygon_points;
+const std::vector<Seg>& tz_segments = sample_polygon_edges;
 const Vec2d box_lo{-1.2, -1.4}, box_hi{10.2, 8.6};
 
 // One step of the book's construction: split at endpoint `end` of segment `seg`, or insert it.

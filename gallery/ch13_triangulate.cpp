@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
-// Gallery, chapter 13.9: polygon triangulation. Ear clipping (13.53), the horizontal
-// trapezoidal decomposition (13.56, 13.68), the monotone pieces (13.69) and the triangulation of
-// the monotone pieces (13.70), convex partitions (13.74-13.77). Every figure draws what locus
-// computes: triangulate_ear_clipping, trapezoid_decomposition (+ trapezoid_corners),
-// monotone_decomposition and triangulate_monotone on one sample polygon with a hole; a figure fails
-// when the status is not ok or the pieces' area differs from the polygon's.
+// Gallery, chapter 13.9: polygon triangulation. Ear clipping (13.53, on a polygon with a hole),
+// the book's sample polygon (13.56, shared with the trapezoidal map figures 13.57-13.67 through
+// ch13_sample.hpp), its merged trapezoids (13.68), its monotone pieces (13.69) and an ear cut
+// from one piece (13.70), the monotone walk (13.71-13.73), convex partitions (13.74-13.77).
+// Every figure draws what locus computes: triangulate_ear_clipping, trapezoid_decomposition
+// (+ trapezoid_corners), monotone_decomposition and triangulate_monotone; a figure fails when the
+// status is not ok or the pieces' area differs from the polygon's.
+#include "ch13_sample.hpp"
 #include "gallery.hpp"
 
 #include <locus/containment/point_in_polygon.hpp>
@@ -37,7 +39,7 @@ struct Sample {
   std::vector<std::uint32_t> ends;
 };
 
-// A polygon with split and merge vertices and one hole (the inputs of every figure).
+// A polygon with split and merge vertices and one hole (the input of 13.53).
 const Sample& sample() {
   static const Sample s = {{{0, 0},
                             {4, 1.2},
@@ -68,35 +70,43 @@ double twice_area(std::span<const Vec2d> p) {
   return a;
 }
 
-double polygon_twice_area() {
-  const Sample& s = sample();
+// The book's sample polygon of 13.56-13.70 (ch13_sample.hpp): one ring.
+const Sample& book_sample() {
+  static const Sample s = {sample_polygon_points,
+                           {static_cast<std::uint32_t>(sample_polygon_points.size())}};
+  return s;
+}
+
+// Twice the area: the outer ring's minus the holes'.
+double polygon_twice_area(const Sample& s) {
   const std::span<const Vec2d> pts(s.points);
-  return std::abs(twice_area(pts.subspan(0, 11))) - std::abs(twice_area(pts.subspan(11, 3)));
+  double a = 0;
+  for (std::size_t k = 0, b = 0; k < s.ends.size(); b = s.ends[k++])
+    a += (k == 0 ? 1 : -1) * std::abs(twice_area(pts.subspan(b, s.ends[k] - b)));
+  return a;
 }
 
-bool close_area(double a) { return std::abs(a - polygon_twice_area()) <= 1e-9; }
+bool close_area(const Sample& s, double a) { return std::abs(a - polygon_twice_area(s)) <= 1e-9; }
 
-void draw_polygon(SvgWriter& w, const Vec2d& off) {
-  const Sample& s = sample();
-  std::vector<Vec2d> outer, hole;
-  for (std::uint32_t i = 0; i < 11; ++i) outer.push_back(off + s.points[i]);
-  for (std::uint32_t i = 11; i < 14; ++i) hole.push_back(off + s.points[i]);
-  w.polygon(outer, pen(c::black, 2));
-  w.polygon(hole, pen(c::black, 2));
+void draw_polygon(SvgWriter& w, const Sample& s, const Vec2d& off) {
+  for (std::size_t k = 0, b = 0; k < s.ends.size(); b = s.ends[k++]) {
+    std::vector<Vec2d> ring;
+    for (std::size_t i = b; i < s.ends[k]; ++i) ring.push_back(off + s.points[i]);
+    w.polygon(ring, pen(c::black, 2));
+  }
 }
 
-bool draw_triangles(SvgWriter& w, const PolygonTriangulation& r, const Vec2d& off,
+bool draw_triangles(SvgWriter& w, const Sample& s, const PolygonTriangulation& r, const Vec2d& off,
                     const char* col) {
   if (r.status != Status::ok) return false;
-  const Sample& s = sample();
   double sum = 0;
   for (const auto& t : r.triangles) {
     const std::vector<Vec2d> v{off + s.points[t[0]], off + s.points[t[1]], off + s.points[t[2]]};
     sum += twice_area(std::span<const Vec2d>(v));
     w.polygon(v, filled(col, 0.15, 1));
   }
-  draw_polygon(w, off);
-  return close_area(sum);
+  draw_polygon(w, s, off);
+  return close_area(s, sum);
 }
 
 // 13.53: the diagonals ear clipping finds (each triangle's third side joins mutually visible
@@ -104,7 +114,7 @@ bool draw_triangles(SvgWriter& w, const PolygonTriangulation& r, const Vec2d& of
 bool fig_13_53(SvgWriter& w) {
   const Sample& s = sample();
   const auto r = triangulate_ear_clipping(s.points, s.ends);
-  const bool ok = draw_triangles(w, r, {0, 0}, c::blue);
+  const bool ok = draw_triangles(w, s, r, {0, 0}, c::blue);
   w.text(Vec2d{0, -1.2},
          std::to_string(r.triangles.size()) + " ears cut (triangulate_ear_clipping)",
          text_style(c::black, 0, 0));
@@ -217,19 +227,23 @@ bool fig_13_55(SvgWriter& w) {
   return true;
 }
 
-// 13.56: the sample polygon, its vertices numbered.
+// 13.56: the sample polygon, its edges labelled s1 .. s9 in the (random) order in which the
+// trapezoidal map figures 13.57-13.67 insert them.
 bool fig_13_56(SvgWriter& w) {
-  const Sample& s = sample();
-  draw_polygon(w, {0, 0});
-  for (std::size_t i = 0; i < s.points.size(); ++i)
-    point(w, s.points[i], "V" + std::to_string(i), i < 11 ? c::black : c::red);
-  return true;
+  const Sample& s = book_sample();
+  draw_polygon(w, s, {0, 0});
+  for (std::size_t k = 0; k < sample_polygon_edges.size(); ++k) {
+    const Vec2d a = s.points[sample_polygon_edges[k][0]], b = s.points[sample_polygon_edges[k][1]];
+    label(w, 0.5 * (a + b), "s" + std::to_string(k + 1), c::black, 4, 4);
+  }
+  for (const Vec2d& p : s.points) w.point(p, dot(c::black, 2.6));
+  return polygon_twice_area(s) > 0;
 }
 
-// 13.68: the trapezoids of the horizontal decomposition (one horizontal segment from each
-// vertex to the nearest edges on either side).
+// 13.68: the sample polygon's trapezoids, each as large as it can be (one horizontal segment from
+// each vertex to the nearest edges on either side, inside the polygon).
 bool fig_13_68(SvgWriter& w) {
-  const Sample& s = sample();
+  const Sample& s = book_sample();
   const auto d = trapezoid_decomposition(s.points, s.ends);
   if (d.status != Status::ok) return false;
   const char* cols[] = {c::blue, c::green, c::orange, c::purple};
@@ -240,15 +254,17 @@ bool fig_13_68(SvgWriter& w) {
     sum += twice_area(std::span<const Vec2d>(v));
     w.polygon(v, filled(cols[i % 4], 0.2, 1));
   }
-  draw_polygon(w, {0, 0});
+  draw_polygon(w, s, {0, 0});
   w.text(Vec2d{0, -1.2}, std::to_string(d.trapezoids.size()) + " trapezoids",
          text_style(c::black, 0, 0));
-  return std::abs(sum - polygon_twice_area()) <= 1e-9;
+  return close_area(s, sum);
 }
 
-// 13.69: the monotone pieces (light and dark gray alternate), with the trapezoid sides.
+// 13.69: the sample polygon as a union of monotone pieces in three shades of gray (locus's sweep
+// adds one diagonal per split and merge vertex, red, so this polygon has three pieces where the
+// book's has two), with the trapezoids' horizontal sides (dashed).
 bool fig_13_69(SvgWriter& w) {
-  const Sample& s = sample();
+  const Sample& s = book_sample();
   const auto m = monotone_decomposition(s.points, s.ends);
   const auto d = trapezoid_decomposition(s.points, s.ends);
   if (m.status != Status::ok || d.status != Status::ok) return false;
@@ -259,7 +275,8 @@ bool fig_13_69(SvgWriter& w) {
     for (std::uint32_t i = b; i < m.piece_ends[k]; ++i) v.push_back(s.points[m.vertices[i]]);
     b = m.piece_ends[k];
     sum += twice_area(std::span<const Vec2d>(v));
-    w.polygon(v, filled(k % 2 ? c::gray : c::light, 0.6, 1));
+    const double shade[] = {0.2, 0.65, 0.42};
+    w.polygon(v, filled(c::gray, shade[k % 3], 1));
   }
   for (const auto& t : d.trapezoids) {
     const auto q = trapezoid_corners(std::span<const Vec2d>(s.points), t);
@@ -267,18 +284,68 @@ bool fig_13_69(SvgWriter& w) {
     w.segment(q[3], q[2], dashed(c::blue, 1));
   }
   for (const auto& e : m.diagonals) w.segment(s.points[e[0]], s.points[e[1]], pen(c::red, 2));
-  draw_polygon(w, {0, 0});
-  return close_area(sum);
+  draw_polygon(w, s, {0, 0});
+  w.text(Vec2d{0, -1.2}, std::to_string(m.piece_count()) + " monotone pieces",
+         text_style(c::black, 0, 0));
+  return close_area(s, sum);
 }
 
-// 13.70: the monotone pieces triangulated by the stack walk.
+// 13.70: a monotone piece of 13.69 whose triangle at an extreme vertex (the top, where
+// triangulate_monotone's walk starts, or else the bottom) is an ear: the vertex is convex and the
+// triangle holds no other vertex of the piece (exact orient2d and classify). Cutting it off
+// leaves a polygon that monotone_decomposition again finds monotone (one piece).
 bool fig_13_70(SvgWriter& w) {
-  const Sample& s = sample();
-  const auto r = triangulate_monotone(s.points, s.ends);
-  const bool ok = draw_triangles(w, r, {0, 0}, c::green);
-  w.text(Vec2d{0, -1.2}, std::to_string(r.triangles.size()) + " triangles (triangulate_monotone)",
-         text_style(c::black, 0, 0));
-  return ok;
+  const Sample& s = book_sample();
+  const auto m = monotone_decomposition(s.points, s.ends);
+  if (m.status != Status::ok) return false;
+  const auto above = [&](std::uint32_t a, std::uint32_t b) {  // monotone.hpp's sweep order
+    return s.points[a].y > s.points[b].y ||
+           (s.points[a].y == s.points[b].y && s.points[a].x < s.points[b].x);
+  };
+  for (std::size_t k = 0, b = 0; k < m.piece_ends.size(); b = m.piece_ends[k++]) {
+    const std::vector<std::uint32_t> piece(m.vertices.begin() + std::ptrdiff_t(b),
+                                           m.vertices.begin() + std::ptrdiff_t(m.piece_ends[k]));
+    const std::size_t n = piece.size();
+    if (n < 4) continue;
+    std::size_t top = 0, bottom = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (above(piece[i], piece[top])) top = i;
+      if (above(piece[bottom], piece[i])) bottom = i;
+    }
+    for (const std::size_t x : {top, bottom}) {
+      const Vec2d& v0 = s.points[piece[(x + n - 1) % n]];
+      const Vec2d& v = s.points[piece[x]];
+      const Vec2d& v1 = s.points[piece[(x + 1) % n]];
+      if (orient2d(v0, v, v1) != Sign::positive) continue;
+      const Triangle2<double> ear{v0, v, v1};
+      bool empty = true;
+      for (std::size_t i = 0; i < n; ++i)
+        if (i != x && i != (x + 1) % n && i != (x + n - 1) % n &&
+            classify(s.points[piece[i]], ear) != Side::outside)
+          empty = false;
+      if (!empty) continue;
+      std::vector<Vec2d> rest;
+      for (std::size_t i = 0; i < n; ++i)
+        if (i != x) rest.push_back(s.points[piece[i]]);
+      const std::vector<std::uint32_t> rest_end{static_cast<std::uint32_t>(rest.size())};
+      const auto again = monotone_decomposition(rest, rest_end);
+      if (again.status != Status::ok || again.piece_count() != 1) return false;
+      std::vector<Vec2d> whole;
+      for (const std::uint32_t i : piece) whole.push_back(s.points[i]);
+      w.polygon(s.points, dashed(c::gray, 1));
+      w.polygon(rest, filled(c::light, 0.6, 2));
+      w.polygon(std::vector<Vec2d>{v0, v, v1}, filled(c::red, 0.25, 2));
+      point(w, v, x == top ? "extreme vertex (top)" : "extreme vertex (bottom)", c::red);
+      w.text(Vec2d{0, -1.2},
+             "ear cut: " + std::to_string(n) + " -> " + std::to_string(n - 1) +
+                 " vertices, still monotone",
+             text_style(c::black, 0, 0));
+      return std::abs(twice_area(std::span<const Vec2d>(whole)) -
+                      twice_area(std::span<const Vec2d>(rest)) -
+                      twice_area(std::span<const Vec2d>(std::vector<Vec2d>{v0, v, v1}))) <= 1e-9;
+    }
+  }
+  return false;  // no piece has an ear at an extreme vertex
 }
 
 // ---- 13.9.3 triangulating a monotone polygon: the reflex chain ------------------------------
@@ -558,10 +625,10 @@ std::vector<Figure> chapter13_polytri_figures() {
        "orient2d (reflex), classify(Triangle2), intersects(Segment2), triangulate_ear_clipping",
        fig_13_54},
       {"13.55", "orient2d cone test; classify_polygon next to V", fig_13_55},
-      {"13.56", "the input of the trapezoid and monotone figures", fig_13_56},
+      {"13.56", "the input of the trapezoid and monotone figures (13.57-13.70)", fig_13_56},
       {"13.68", "trapezoid_decomposition, trapezoid_corners", fig_13_68},
       {"13.69", "monotone_decomposition, trapezoid_decomposition", fig_13_69},
-      {"13.70", "triangulate_monotone", fig_13_70},
+      {"13.70", "monotone_decomposition, orient2d, classify(Triangle2)", fig_13_70},
       {"13.71", "monotone_decomposition, triangulate_monotone, classify(Triangle2)", fig_13_71},
       {"13.72", "triangulate_monotone (its walk steps in emission order)", fig_13_72},
       {"13.73", "triangulate_monotone (its walk steps in emission order)", fig_13_73},

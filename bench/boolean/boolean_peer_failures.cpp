@@ -8,10 +8,12 @@
 // |A \ B| + |A n B| = |A|, |A xor B| = |A u B| - |A n B|, within the snap-rounding bound).
 //   Boost.Geometry overlay cases and the JTS XML overlay suites (general TestOverlayAA and
 //   TestNGOverlayA, failure/TestOverlayNGFailure, robust/overlay/*): every case whose two operands
-//   GEOS reads as valid polygons or multipolygons; intersection, union, a \ b and xor, each peer
-//   on its operands as GEOS read them (Boost: counter-clockwise closed polygons; Clipper 1: all
+//   are polygons or multipolygons that GEOS deems valid; intersection, union, a \ b and xor, every
+//   peer on the same coordinates (Boost: counter-clockwise closed polygons; Clipper 1: all
 //   rings, even-odd fill, coordinates scaled by a power of two to integers below 2^40,
 //   StrictlySimple on).
+// The case files are read by the tests' readers (tests/support/corpus.hpp), the WKT texts by
+// locus::parse_wkt; only the WKB hex of a few JTS files is read by GEOS (locus reads no WKB).
 //   Clipper2's Tests/Polygons.txt: raw rings with fill rules, which only Clipper 1 shares (same
 //   clip types and fill rules); locus passes when valid and within Clipper2's own area tolerance
 //   of SOL_AREA (as tests/boolean/clipper2_corpus_test.cpp).
@@ -23,15 +25,15 @@
 #include <locus/boolean/polygon_boolean.hpp>
 
 #include "boolean/boolean_peers.hpp"
+#include "support/corpus.hpp"
+#include "support/files.hpp"
 #include "support/polygon_validity.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,30 +43,35 @@ namespace {
 using namespace locus_bench_bool;
 using locus::BooleanOp;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string geos_error;
-GeosPtr read_geometry(std::string text) {
+
+/// A corpus operand: the polygons as locus reads them and the same polygons as a GEOS geometry
+/// for the GEOS runs (WKB hex, which only GEOS reads, goes the other way).
+struct Operand {
+  Multi polygons;
+  GeosPtr geos;
+};
+
+/// The operand of a WKT or WKB hex text; false unless it is a nonempty polygon or multipolygon
+/// that GEOS deems valid.
+bool read_operand(const std::string& text, Operand& out) {
   const auto b = text.find_first_not_of(" \t\r\n"), e = text.find_last_not_of(" \t\r\n");
-  if (b == std::string::npos) return nullptr;
-  text = text.substr(b, e - b + 1);
-  const bool hex = text.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
-  if (hex) {
+  if (b == std::string::npos) return false;
+  const std::string t = text.substr(b, e - b + 1);
+  if (t.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos) {
     GEOSWKBReader* r = GEOSWKBReader_create_r(geos());
-    GEOSGeometry* g = GEOSWKBReader_readHEX_r(
-        geos(), r, reinterpret_cast<const unsigned char*>(text.data()), text.size());
+    out.geos.reset(GEOSWKBReader_readHEX_r(
+        geos(), r, reinterpret_cast<const unsigned char*>(t.data()), t.size()));
     GEOSWKBReader_destroy_r(geos(), r);
-    return GeosPtr(g);
+    if (!out.geos) return false;
+    const int type = GEOSGeomTypeId_r(geos(), out.geos.get());
+    if (type != GEOS_POLYGON && type != GEOS_MULTIPOLYGON) return false;
+    geos_to_multi(out.geos.get(), out.polygons);
+  } else {
+    if (!locus_test::read_polygonal(t, out.polygons)) return false;
+    out.geos = geos_multi(out.polygons);
   }
-  GEOSWKTReader* r = GEOSWKTReader_create_r(geos());
-  GEOSGeometry* g = GEOSWKTReader_read_r(geos(), r, text.c_str());
-  GEOSWKTReader_destroy_r(geos(), r);
-  return GeosPtr(g);
+  return !out.polygons.empty() && GEOSisValid_r(geos(), out.geos.get()) == 1;
 }
 
 const char* op_name(BooleanOp op) {
@@ -143,11 +150,10 @@ double perimeter(const Multi& m) {
 }
 
 /// Runs locus and the three peers on two valid polygonal operands.
-void run_pair(const std::string& source, const std::string& name, const GEOSGeometry* ga,
-              const GEOSGeometry* gb) {
-  Multi a, b;
-  geos_to_multi(ga, a);
-  geos_to_multi(gb, b);
+void run_pair(const std::string& source, const std::string& name, const Operand& oa,
+              const Operand& ob) {
+  const GEOSGeometry *ga = oa.geos.get(), *gb = ob.geos.get();
+  Multi a = oa.polygons, b = ob.polygons;
   orient(a);
   orient(b);
   if (a.empty() || b.empty()) return;
@@ -277,149 +283,48 @@ void run_pair(const std::string& source, const std::string& name, const GEOSGeom
   }
 }
 
-bool polygonal_valid(const GEOSGeometry* g) {
-  if (!g || GEOSisEmpty_r(geos(), g)) return false;
-  const int t = GEOSGeomTypeId_r(geos(), g);
-  return (t == GEOS_POLYGON || t == GEOS_MULTIPOLYGON) && GEOSisValid_r(geos(), g) == 1;
-}
-
-// ---- Boost.Geometry overlay_cases.json: "name": { ..., "wkt": [ "...", "..." ] } ----
+// ---- Boost.Geometry overlay_cases.json ----
 void boost_cases(const std::string& dir) {
-  std::istringstream in(slurp(dir + "/boost-geometry/overlay_cases.json"));
-  std::string line, name;
-  std::vector<std::string> wkt;
-  bool in_wkt = false;
-  const auto flush = [&] {
-    if (wkt.size() == 2) {
-      GeosPtr a = read_geometry(wkt[0]), b = read_geometry(wkt[1]);
-      if (polygonal_valid(a.get()) && polygonal_valid(b.get()))
-        run_pair("boost", name, a.get(), b.get());
-    }
-    wkt.clear();
-  };
-  while (std::getline(in, line)) {
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos) continue;
-    const std::string t = line.substr(first);
-    if (in_wkt) {
-      if (t[0] == ']') {
-        in_wkt = false;
-        flush();
-        continue;
-      }
-      const auto b = t.find('"'), e = t.rfind('"');
-      wkt.push_back(t.substr(b + 1, e - b - 1));
-    } else if (t.rfind("\"wkt\"", 0) == 0) {
-      in_wkt = t.back() == '[';
-    } else if (t.size() > 3 && t[0] == '"' && t.back() == '{') {
-      name = t.substr(1, t.find('"', 1) - 1);
-    }
+  for (const auto& c : locus_test::read_boost_overlay_cases(
+           locus_test::slurp(dir + "/boost-geometry/overlay_cases.json"))) {
+    Operand a, b;
+    if (c.wkt.size() == 2 && read_operand(c.wkt[0], a) && read_operand(c.wkt[1], b))
+      run_pair("boost", c.name, a, b);
   }
 }
 
 // ---- JTS XML: <case> ... <a> WKT or hex WKB </a> <b> ... </b> ----
-std::string element(const std::string& s, std::size_t from, std::size_t to, const char* tag) {
-  const std::string open = std::string("<") + tag, close = std::string("</") + tag + ">";
-  std::size_t b = s.find(open, from);
-  while (b != std::string::npos && b < to && s[b + open.size()] != '>' && s[b + open.size()] != ' ')
-    b = s.find(open, b + 1);
-  if (b == std::string::npos || b >= to) return "";
-  b = s.find('>', b) + 1;
-  const std::size_t e = s.find(close, b);
-  return e == std::string::npos || e > to ? "" : s.substr(b, e - b);
-}
-
 void jts_file(const std::filesystem::path& path) {
-  const std::string s = slurp(path.string());
-  const auto pm = s.find("<precisionModel");
-  if (pm != std::string::npos) {
-    const std::string tag = s.substr(pm, s.find('>', pm) - pm);
-    if (tag.find("FIXED") != std::string::npos || tag.find("scale") != std::string::npos) return;
-  }
+  const std::string xml = locus_test::slurp(path);
+  if (locus_test::jts_fixed_precision(xml)) return;
   int k = 0;
-  for (std::size_t at = s.find("<case"); at != std::string::npos; at = s.find("<case", at + 1)) {
-    const std::size_t end = s.find("</case>", at);
-    if (end == std::string::npos) break;
-    const std::string ta = element(s, at, end, "a"), tb = element(s, at, end, "b");
+  for (const auto& c : locus_test::read_jts_cases(xml)) {
     const std::string name = path.stem().string() + "-" + std::to_string(k++);
-    if (ta.empty() || tb.empty()) continue;
-    GeosPtr a = read_geometry(ta), b = read_geometry(tb);
-    if (polygonal_valid(a.get()) && polygonal_valid(b.get()))
-      run_pair("jts", name, a.get(), b.get());
+    Operand a, b;
+    if (read_operand(c.a, a) && read_operand(c.b, b)) run_pair("jts", name, a, b);
   }
 }
 
 // ---- Clipper2 Tests/Polygons.txt (Clipper 1 only: raw rings under fill rules) ----
+std::vector<Ring> rings(const std::vector<locus::Polygon2<double>>& polygons) {
+  std::vector<Ring> out;
+  for (const auto& p : polygons) out.push_back(p.vertices);
+  return out;
+}
+
 void clipper2_cases(const std::string& dir) {
-  std::istringstream in(slurp(dir + "/clipper2/tests/Polygons.txt"));
-  struct Case {
-    int id = 0;
-    std::string clip_type, fill_rule;
-    double sol_area = 0;
-    std::vector<Ring> subjects, clips;
-  };
-  std::vector<Case> cases;
-  std::vector<Ring>* target = nullptr;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto value = [&](const char* key) { return line.substr(std::string(key).size()); };
-    if (line.rfind("CAPTION:", 0) == 0) {
-      cases.emplace_back();
-      cases.back().id = std::atoi(value("CAPTION:").c_str());
-      target = nullptr;
-    } else if (cases.empty()) {
-      continue;
-    } else if (line.rfind("CLIPTYPE:", 0) == 0) {
-      std::istringstream(value("CLIPTYPE:")) >> cases.back().clip_type;
-    } else if (line.rfind("FILLRULE:", 0) == 0) {
-      std::istringstream(value("FILLRULE:")) >> cases.back().fill_rule;
-    } else if (line.rfind("SOL_AREA:", 0) == 0) {
-      cases.back().sol_area = std::atof(value("SOL_AREA:").c_str());
-    } else if (line == "SUBJECTS") {
-      target = &cases.back().subjects;
-    } else if (line == "CLIPS") {
-      target = &cases.back().clips;
-    } else if (line.rfind("SUBJECTS_OPEN", 0) == 0) {
-      target = nullptr;
-    } else if (target && !line.empty()) {
-      for (char& c : line)
-        if (c == ',') c = ' ';
-      std::istringstream nums(line);
-      Ring ring;
-      double x = 0, y = 0;
-      while (nums >> x >> y) ring.push_back({x, y});
-      if (!ring.empty()) target->push_back(ring);
-    }
-  }
-  // Clipper2's own per-case area tolerances (TestPolygons.cpp), as the corpus test.
-  const std::map<int, double> loose = {{19, 0.5},   {22, 0.5},   {23, 0.5},  {24, 0.5},  {193, 0.2},
-                                       {63, 0.1},   {16, 0.075}, {26, 0.05}, {15, 0.02}, {52, 0.02},
-                                       {53, 0.02},  {54, 0.02},  {59, 0.02}, {60, 0.02}, {64, 0.02},
-                                       {117, 0.02}, {119, 0.02}, {184, 0.02}};
-  for (const Case& c : cases) {
+  for (const auto& c :
+       locus_test::read_clipper2_cases(locus_test::slurp(dir + "/clipper2/tests/Polygons.txt"))) {
     const std::string name = "case " + std::to_string(c.id);
-    const BooleanOp op = c.clip_type == "UNION"          ? BooleanOp::union_
-                         : c.clip_type == "INTERSECTION" ? BooleanOp::intersection
-                         : c.clip_type == "DIFFERENCE"   ? BooleanOp::difference
-                                                         : BooleanOp::symmetric_difference;
-    std::vector<locus::Polygon2<double>> subjects, clips;
-    for (const Ring& r : c.subjects) subjects.push_back({r});
-    for (const Ring& r : c.clips) clips.push_back({r});
-    locus::FillRule rule = locus::FillRule::even_odd;
-    ClipperLib::PolyFillType pft = ClipperLib::pftEvenOdd;
-    if (c.fill_rule == "NONZERO") rule = locus::FillRule::non_zero, pft = ClipperLib::pftNonZero;
-    if (c.fill_rule == "POSITIVE") rule = locus::FillRule::positive, pft = ClipperLib::pftPositive;
-    if (c.fill_rule == "NEGATIVE") {
-      rule = locus::FillRule::positive;
-      pft = ClipperLib::pftNegative;
-      for (auto* set : {&subjects, &clips})
-        for (auto& r : *set) std::reverse(r.vertices.begin(), r.vertices.end());
-    }
+    const locus_test::Clipper2Boolean job = locus_test::clipper2_boolean(c);
+    const BooleanOp op = job.op;
+    const ClipperLib::PolyFillType pft = c.fill_rule == "NONZERO"    ? ClipperLib::pftNonZero
+                                         : c.fill_rule == "POSITIVE" ? ClipperLib::pftPositive
+                                         : c.fill_rule == "NEGATIVE" ? ClipperLib::pftNegative
+                                                                     : ClipperLib::pftEvenOdd;
     ++locus_cases;
-    const auto res = locus::boolean_op<double>(op, subjects, clips, {rule, 0});
-    const auto it = loose.find(c.id);
-    const double tol = it == loose.end() ? 0.01 : it->second;
+    const auto res = locus::boolean_op<double>(op, job.subjects, job.clips, {job.rule, 0});
+    const double tol = locus_test::clipper2_area_tolerance(c.id);
     std::string why;
     if (res.status != locus::Status::ok) why = res.message;
     if (why.empty()) why = locus_test::polygon_validity(res.polygons);
@@ -436,15 +341,16 @@ void clipper2_cases(const std::string& dir) {
     ++locus_passes;
     double max_abs = 0;
     for (const auto* set : {&c.subjects, &c.clips})
-      for (const Ring& r : *set)
-        for (const auto& q : r) max_abs = std::max({max_abs, std::abs(q.x), std::abs(q.y)});
+      for (const auto& r : *set)
+        for (const auto& q : r.vertices)
+          max_abs = std::max({max_abs, std::abs(q.x), std::abs(q.y)});
     const double scale = clipper_scale(max_abs, 40);
     PeerResult pr;
     try {
       ClipperLib::Clipper cl;
       cl.StrictlySimple(true);
-      cl.AddPaths(clipper_paths(c.subjects, scale), ClipperLib::ptSubject, true);
-      cl.AddPaths(clipper_paths(c.clips, scale), ClipperLib::ptClip, true);
+      cl.AddPaths(clipper_paths(rings(c.subjects), scale), ClipperLib::ptSubject, true);
+      cl.AddPaths(clipper_paths(rings(c.clips), scale), ClipperLib::ptClip, true);
       const ClipperLib::ClipType type = op == BooleanOp::intersection ? ClipperLib::ctIntersection
                                         : op == BooleanOp::union_     ? ClipperLib::ctUnion
                                         : op == BooleanOp::difference ? ClipperLib::ctDifference

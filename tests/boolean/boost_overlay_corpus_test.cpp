@@ -12,11 +12,11 @@
 // leaves) where locus returns the empty set.
 
 #include <locus/boolean/polygon_boolean.hpp>
-#include <locus/io/geometry.hpp>
-#include <locus/io/wkt.hpp>
 
+#include <support/corpus.hpp>
 #include <support/files.hpp>
 #include <support/polygon_validity.hpp>
+#include <support/sanitizer.hpp>
 
 #include <array>
 #include <cmath>
@@ -24,49 +24,13 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
 
 using locus::BooleanOp;
 using locus::MultiPolygon2;
-
-/// The value of a JSON string line `"...",` (no escapes occur in these files but \").
-std::string json_string_value(const std::string& line) {
-  const auto b = line.find('"'), e = line.rfind('"');
-  std::string s = line.substr(b + 1, e - b - 1);
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s[i] == '\\' && i + 1 < s.size()) ++i;
-    out += s[i];
-  }
-  return out;
-}
-
-std::map<std::string, std::vector<std::string>> read_cases(const std::string& text) {
-  std::map<std::string, std::vector<std::string>> cases;
-  std::istringstream in(text);
-  std::string line, name;
-  bool in_wkt = false;
-  while (std::getline(in, line)) {
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos) continue;
-    const std::string t = line.substr(first);
-    if (in_wkt) {
-      if (t[0] == ']') {
-        in_wkt = false;
-        continue;
-      }
-      cases[name].push_back(json_string_value(t));
-    } else if (t.rfind("\"wkt\"", 0) == 0) {
-      in_wkt = t.back() == '[';  // "wkt": [] is a case without data
-      cases[name];
-    } else if (t.size() > 3 && t[0] == '"' && t.back() == '{') {
-      name = t.substr(1, t.find('"', 1) - 1);
-    }
-  }
-  return cases;
-}
 
 struct Expectation {
   std::string op, macro, name;
@@ -83,11 +47,11 @@ std::vector<Expectation> read_expectations(const std::string& text) {
     if (first == std::string::npos) continue;
     const std::string t = line.substr(first);
     const auto field = [&](const char* key) { return t.rfind(key, 0) == 0; };
-    if (field("\"op\"")) cur.op = json_string_value(t.substr(t.find(':') + 1));
-    if (field("\"macro\"")) cur.macro = json_string_value(t.substr(t.find(':') + 1));
-    if (field("\"case\"")) cur.name = json_string_value(t.substr(t.find(':') + 1));
+    if (field("\"op\"")) cur.op = locus_test::json_string_value(t.substr(t.find(':') + 1));
+    if (field("\"macro\"")) cur.macro = locus_test::json_string_value(t.substr(t.find(':') + 1));
+    if (field("\"case\"")) cur.name = locus_test::json_string_value(t.substr(t.find(':') + 1));
     if (field("\"args\"")) {
-      std::string a = json_string_value(t.substr(t.find(':') + 1));
+      std::string a = locus_test::json_string_value(t.substr(t.find(':') + 1));
       cur.args.clear();
       std::string item;
       int depth = 0;
@@ -115,16 +79,6 @@ double number(const std::string& s) {
   return (end && *end == '\0' && end != s.c_str()) ? v : std::nan("");
 }
 
-bool to_multipolygon(const std::string& wkt, MultiPolygon2<double>& m) {
-  const auto r = locus::parse_wkt<double>(wkt);
-  if (r.status != locus::Status::ok || r.geometries.size() != 1) return false;
-  const auto& g = r.geometries[0];
-  if (g.type != locus::GeometryType::polygon && g.type != locus::GeometryType::multi_polygon)
-    return false;
-  for (const auto& p : g.polygons) m.push_back(locus::to_polygon_with_holes(p));
-  return true;
-}
-
 double perimeter(const MultiPolygon2<double>& m) {
   double s = 0;
   for (const auto& p : m)
@@ -138,30 +92,24 @@ double perimeter(const MultiPolygon2<double>& m) {
 
 TEST(PolygonBooleanCorpus, BoostGeometryOverlayCasesAreValidAndConsistent) {
   const std::string dir = std::string(LOCUS_SHARED_DIR) + "/corpus/boost-geometry/";
-  const auto cases = read_cases(locus_test::slurp(dir + "overlay_cases.json"));
+  // By name, as the expectations refer to them (and in the order the test has always run them).
+  std::map<std::string, std::vector<std::string>> cases;
+  for (auto& c :
+       locus_test::read_boost_overlay_cases(locus_test::slurp(dir + "overlay_cases.json")))
+    cases[c.name] = std::move(c.wkt);
   const auto expectations =
       read_expectations(locus_test::slurp(dir + "set_operation_expectations.json"));
   ASSERT_EQ(cases.size(), 527u);
   ASSERT_EQ(expectations.size(), 512u);
   // The sanitized build runs every 25th case; the optimised run covers every case.
-#if defined(__SANITIZE_ADDRESS__)
-  const std::size_t stride = 25;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  const std::size_t stride = 25;
-#else
-  const std::size_t stride = 1;
-#endif
-#else
-  const std::size_t stride = 1;
-#endif
+  const std::size_t stride = locus_test::kSanitizerBuild ? 25 : 1;
   std::map<std::string, std::array<double, 4>> areas;  // intersection, union, a - b, b - a
   int runs = 0, valid = 0, consistent = 0, pairs = 0;
   std::size_t index = 0;
   for (const auto& [name, wkt] : cases) {
     if (index++ % stride != 0 || wkt.size() != 2) continue;
     MultiPolygon2<double> a, b;
-    if (!to_multipolygon(wkt[0], a) || !to_multipolygon(wkt[1], b)) continue;
+    if (!locus_test::read_polygonal(wkt[0], a) || !locus_test::read_polygonal(wkt[1], b)) continue;
     ++pairs;
     SCOPED_TRACE(name);
     mpq_class area[5];

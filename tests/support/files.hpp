@@ -4,15 +4,19 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <sstream>
 #include <string>
 
 namespace locus_test {
 
-/// The bytes of a file (empty when it cannot be read).
+/// The bytes of a file (empty when it cannot be read). One bulk copy through the stream buffer:
+/// an istreambuf_iterator loop takes 20 times longer in the -O0 sanitizer build (1.2 s for the
+/// 3 MB of JTS test files).
 inline std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::ostringstream out;
+  if (in) out << in.rdbuf();
+  return out.str();
 }
 
 }  // namespace locus_test
