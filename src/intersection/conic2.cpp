@@ -9,12 +9,19 @@
 #include <locus/intersection/detail/conic2.hpp>
 #include <locus/numeric/roots.hpp>
 
+#include "../core/big_int.hpp"
+#include "../numeric/integer_poly.hpp"
+
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <initializer_list>
 #include <limits>
+#include <new>
 #include <span>
+#include <vector>
 
 namespace locus::detail::conic2 {
 namespace {
@@ -979,6 +986,518 @@ R4 general_pair(const Conic& ka, const Conic& kb) noexcept {
 
 }  // namespace
 
+// ---------------------------------------------------------------------------------------------
+// Exact conic pairs (docs/notes/intersection.md, "Conic pairs: exact combinatorics").
+
+namespace {
+
+using Z = DynBigInt;
+using roots::ZPoly;
+
+/// The implicit coefficients a, b, c, d, e, f of a conic as integers: the curve exactly as
+/// stored (an ellipse as sum_i (u_i . (X - C))^2 / e_i^2 = 1 with u_i as given), times a power
+/// of two.
+struct ZConic {
+  std::array<Z, 6> q;
+};
+
+/// A shift s with x 2^s an integer for every x (s >= 0).
+int common_shift(std::initializer_list<double> xs) noexcept {
+  int s = 0;
+  for (const double x : xs) {
+    if (x == 0.0) continue;
+    const DoubleParts p = decompose(x);
+    s = std::max(s, -(p.exponent + std::countr_zero(p.mantissa)));
+  }
+  return s;
+}
+
+Z zd(double x, int s) { return Z::from_double(x, s); }
+Z pow2(int bits) { return Z(1) << static_cast<std::size_t>(bits); }
+
+ZConic exact_conic(const Conic& k) {
+  ZConic z;
+  switch (k.form) {
+    case Form::general: {
+      const int s = common_shift({k.q[0], k.q[1], k.q[2], k.q[3], k.q[4], k.q[5]});
+      for (std::size_t i = 0; i < 6; ++i) z.q[i] = zd(k.q[i], s);
+      break;
+    }
+    case Form::circle: {
+      // (x^2 + y^2 - 2 cx x - 2 cy y + cx^2 + cy^2 - r^2) 2^(2s).
+      const int s = common_shift({k.c.x, k.c.y, k.r});
+      const Z cx = zd(k.c.x, s), cy = zd(k.c.y, s), r = zd(k.r, s);
+      z.q = {pow2(2 * s),
+             Z(0),
+             pow2(2 * s),
+             -(cx << (static_cast<std::size_t>(s) + 1)),
+             -(cy << (static_cast<std::size_t>(s) + 1)),
+             cx * cx + cy * cy - r * r};
+      break;
+    }
+    case Form::ellipse: {
+      // sum_i e_(1-i)^2 (u_i . X - u_i . C)^2 - e0^2 e1^2, times 2^(6s); term degrees in the
+      // doubles: 4 (quadratic part), 5 (linear), 6 and 4 (constant).
+      const int s = common_shift({k.c.x, k.c.y, k.u0.x, k.u0.y, k.u1.x, k.u1.y, k.e0, k.e1});
+      const auto us = static_cast<std::size_t>(s);
+      const Z ux[2] = {zd(k.u0.x, s), zd(k.u1.x, s)}, uy[2] = {zd(k.u0.y, s), zd(k.u1.y, s)};
+      const Z cx = zd(k.c.x, s), cy = zd(k.c.y, s);
+      const Z w[2] = {zd(k.e1, s) * zd(k.e1, s), zd(k.e0, s) * zd(k.e0, s)};
+      Z a(0), b(0), c(0), d(0), e(0), f(0);
+      for (int i = 0; i < 2; ++i) {
+        const auto j = static_cast<std::size_t>(i);
+        const Z p = ux[j] * cx + uy[j] * cy;
+        a += w[j] * ux[j] * ux[j];
+        b += w[j] * ux[j] * uy[j];
+        c += w[j] * uy[j] * uy[j];
+        d -= w[j] * ux[j] * p;
+        e -= w[j] * uy[j] * p;
+        f += w[j] * p * p;
+      }
+      f -= (w[0] * w[1]) << (2 * us);
+      z.q = {a << (2 * us), b << (2 * us + 1), c << (2 * us), d << (us + 1), e << (us + 1), f};
+      break;
+    }
+  }
+  return z;
+}
+
+/// A conic as a polynomial in y over Z[x'] after the shear x' = x + k y:
+/// y2 y^2 + y1(x') y + y0(x'); deg the degree in y (2, or 1 for a line, 0 for a constant).
+struct InY {
+  ZPoly y2, y1, y0;
+  int deg;
+};
+
+ZPoly zp(std::initializer_list<Z> c) {
+  ZPoly p(c);
+  roots::trim(p);
+  return p;
+}
+
+InY sheared(const ZConic& z, const Z& k) {
+  const Z &a = z.q[0], &b = z.q[1], &c = z.q[2], &d = z.q[3], &e = z.q[4], &f = z.q[5];
+  // x = x' - k y.
+  InY r;
+  r.y2 = zp({a * k * k - b * k + c});
+  r.y1 = zp({e - d * k, b - (a * k << 1)});
+  r.y0 = zp({f, d, a});
+  r.deg = !r.y2.empty() ? 2 : !r.y1.empty() ? 1 : 0;
+  return r;
+}
+
+using roots::add;
+using roots::mul;
+using roots::sub;
+
+/// The resultant in y of two polynomials of degree 1 or 2 in y (Sylvester, up to sign).
+ZPoly resultant_y(const InY& p, const InY& q) {
+  if (p.deg == 2 && q.deg == 2) {
+    const ZPoly s = sub(mul(p.y2, q.y0), mul(p.y0, q.y2));
+    return sub(mul(s, s),
+               mul(sub(mul(p.y2, q.y1), mul(p.y1, q.y2)), sub(mul(p.y1, q.y0), mul(p.y0, q.y1))));
+  }
+  if (p.deg == 1 && q.deg == 1) return sub(mul(p.y1, q.y0), mul(p.y0, q.y1));
+  const InY& l = p.deg == 1 ? p : q;
+  const InY& m = p.deg == 1 ? q : p;
+  // m2 l0^2 - m1 l0 l1 + m0 l1^2.
+  return add(sub(mul(m.y2, mul(l.y0, l.y0)), mul(m.y1, mul(l.y0, l.y1))),
+             mul(m.y0, mul(l.y1, l.y1)));
+}
+
+/// A rounded n / d (d != 0), a few ulps, for integers of any size.
+double ratio(const Z& n, const Z& d) {
+  if (n.is_zero()) return 0.0;
+  const auto bn = static_cast<long>(n.bit_length()), bd = static_cast<long>(d.bit_length());
+  const long sn = std::max(0L, bn - 900), sd = std::max(0L, bd - 900);
+  const double x = (n >> static_cast<std::size_t>(sn)).to_double();
+  const double y = (d >> static_cast<std::size_t>(sd)).to_double();
+  return std::ldexp(x / y, static_cast<int>(std::clamp(sn - sd, -4000L, 4000L)));
+}
+
+/// The conic's coefficients rounded to double and scaled by one power of two (for residuals).
+std::array<double, 6> rounded(const ZConic& z) {
+  std::size_t bits = 0;
+  for (const Z& c : z.q) bits = std::max(bits, c.bit_length());
+  const std::size_t sh = bits > 900 ? bits - 900 : 0;
+  std::array<double, 6> r{};
+  for (std::size_t i = 0; i < 6; ++i) r[i] = (z.q[i] >> sh).to_double();
+  return r;
+}
+
+double eval(const std::array<double, 6>& q, double x, double y, double& mag) noexcept {
+  const double t[6] = {q[0] * x * x, q[1] * x * y, q[2] * y * y, q[3] * x, q[4] * y, q[5]};
+  mag = 0.0;
+  double v = 0.0;
+  for (const double ti : t) {
+    v += ti;
+    mag += std::abs(ti);
+  }
+  return v;
+}
+
+/// The y of the common point above the (rounded) abscissa x' = x + k y: a root of one
+/// conic's quadratic in y, the candidate with the smaller relative residual on both.
+V point_above(const std::array<double, 6>& qa, const std::array<double, 6>& qb, double k,
+              double xs) noexcept {
+  double best = std::numeric_limits<double>::infinity();
+  V out{xs, 0.0};
+  const auto score = [&](double y) {
+    const double x = xs - k * y;
+    double ma = 0.0, mb = 0.0;
+    const double va = eval(qa, x, y, ma), vb = eval(qb, x, y, mb);
+    const double sc = (ma > 0.0 ? std::abs(va) / ma : std::abs(va)) +
+                      (mb > 0.0 ? std::abs(vb) / mb : std::abs(vb));
+    if (sc < best) {
+      best = sc;
+      out = {x, y};
+    }
+  };
+  for (const auto* q : {&qa, &qb}) {
+    const double a = (*q)[0], b = (*q)[1], c = (*q)[2], d = (*q)[3], e = (*q)[4], f = (*q)[5];
+    const double y2 = a * k * k - b * k + c, y1 = (b - 2.0 * a * k) * xs + (e - d * k),
+                 y0 = (a * xs + d) * xs + f;
+    if (y2 != 0.0) {
+      const double disc = std::max(y1 * y1 - 4.0 * y2 * y0, 0.0);
+      const double qq = -0.5 * (y1 + std::copysign(std::sqrt(disc), y1));
+      if (qq != 0.0) {
+        score(qq / y2);
+        score(y0 / qq);
+      } else {
+        score(-y1 / (2.0 * y2));
+      }
+    } else if (y1 != 0.0) {
+      score(-y0 / y1);
+    }
+  }
+  return out;
+}
+
+/// Newton steps on both conics from p (a transversal point): kept while the residual drops.
+V polish(const std::array<double, 6>& qa, const std::array<double, 6>& qb, V p) noexcept {
+  const auto res = [&](const V& x) {
+    double ma = 0.0, mb = 0.0;
+    const double va = eval(qa, x.x, x.y, ma), vb = eval(qb, x.x, x.y, mb);
+    return (ma > 0.0 ? std::abs(va) / ma : 0.0) + (mb > 0.0 ? std::abs(vb) / mb : 0.0);
+  };
+  double r = res(p);
+  for (int it = 0; it < 3 && r > 0.0; ++it) {
+    double ma = 0.0, mb = 0.0;
+    const double va = eval(qa, p.x, p.y, ma), vb = eval(qb, p.x, p.y, mb);
+    const V ga{2.0 * qa[0] * p.x + qa[1] * p.y + qa[3], qa[1] * p.x + 2.0 * qa[2] * p.y + qa[4]};
+    const V gb{2.0 * qb[0] * p.x + qb[1] * p.y + qb[3], qb[1] * p.x + 2.0 * qb[2] * p.y + qb[4]};
+    const double det = ga.x * gb.y - ga.y * gb.x;
+    if (!(det != 0.0) || !std::isfinite(det)) break;
+    const V q{p.x - (va * gb.y - vb * ga.y) / det, p.y - (ga.x * vb - gb.x * va) / det};
+    const double rq = res(q);
+    if (!(rq < r) || !finite(q)) break;
+    p = q;
+    r = rq;
+  }
+  return p;
+}
+
+/// A line gx x + gy y + g0 = 0 with integer coefficients.
+struct ZLine {
+  Z x, y, c;
+};
+
+/// The common line of two conics with an identically vanishing resultant (not proportional),
+/// in the sheared coordinates (x', y); false when the structure is not the expected one.
+bool common_line(const InY& p, const InY& q, ZLine& g) {
+  if (p.deg == 1 || q.deg == 1) {
+    const InY& l = p.deg == 1 ? p : q;
+    const auto at = [](const ZPoly& v, std::size_t i) { return i < v.size() ? v[i] : Z(0); };
+    g = {at(l.y0, 1), at(l.y1, 0), at(l.y0, 0)};
+    return l.y1.size() == 1 && l.y0.size() <= 2;
+  }
+  // S = q2 p - p2 q = L1(x') y + L0(x') = h(x') G.
+  const ZPoly l1 = sub(mul(q.y2, p.y1), mul(p.y2, q.y1));
+  const ZPoly l0 = sub(mul(q.y2, p.y0), mul(p.y2, q.y0));
+  const auto at = [](const ZPoly& v, std::size_t i) { return i < v.size() ? v[i] : Z(0); };
+  if (l1.size() == 1) {
+    if (l0.size() > 2) return false;
+    g = {at(l0, 1), l1[0], at(l0, 0)};
+    return true;
+  }
+  if (l1.size() != 2) return false;
+  const Z &al = l1[1], &be = l1[0];
+  g = {al * at(l0, 2), al * al, al * at(l0, 1) - at(l0, 2) * be};
+  return true;
+}
+
+/// The conic divided by the line g (gy != 0), times gy: a line in (x', y).
+ZLine cofactor(const InY& p, const ZLine& g) {
+  const auto at = [](const ZPoly& v, std::size_t i) { return i < v.size() ? v[i] : Z(0); };
+  const Z& a2 = p.y2[0];
+  return {g.y * at(p.y1, 1) - a2 * g.x, a2 * g.y, g.y * at(p.y1, 0) - a2 * g.c};
+}
+
+void make_primitive(ZLine& l) {
+  ZPoly v{l.x, l.y, l.c};
+  roots::make_primitive(v);  // trims: pad back
+  v.resize(3, Z(0));
+  l = {v[0], v[1], v[2]};
+}
+
+/// The cheap certified path: when the rounded coefficients decide (with rigorous running error
+/// bounds, Fd) that res is square-free and how many real roots it has, and each root is bracketed
+/// by certified sign changes, the roots (all simple) to within a few ulps; false when undecided.
+bool filtered_roots(const ZPoly& res, std::vector<double>& out) {
+  out.clear();
+  const int n = roots::degree(res);
+  if (n < 1 || n > 4) return n == 0;
+  std::size_t bits = 0;
+  for (const Z& c : res) bits = std::max(bits, c.bit_length());
+  const std::size_t sh = bits > 1000 ? bits - 1000 : 0;
+  const int scale = -static_cast<int>(bits - sh);
+  std::array<Fd, 5> c{};
+  std::array<double, 5> v{};
+  for (std::size_t i = 0; i < res.size(); ++i) {
+    const double x = std::ldexp((res[i] >> sh).to_double(), scale);
+    v[i] = x;
+    // Rounding to double, truncation by the shift (below one unit), underflow.
+    c[i] = {x, u * std::abs(x) + (sh > 0 ? std::ldexp(1.0, scale) : 0.0) + 0x1p-1070};
+  }
+  int count = 0;
+  if (n == 1) {
+    count = 1;
+  } else if (n == 2) {
+    const int d = (c[1] * c[1] - (c[2] * c[0]).times_pow2(2)).sign();
+    if (d == 2 || d == 0) return false;
+    count = d > 0 ? 2 : 0;
+  } else if (n == 3) {
+    const Fd &a = c[3], &b = c[2], &cc = c[1], &d = c[0];
+    const Fd k18{18.0, 0.0}, k4{4.0, 0.0}, k27{27.0, 0.0};
+    const int s = (k18 * a * b * cc * d - k4 * b * b * b * d + b * b * cc * cc -
+                   k4 * a * cc * cc * cc - k27 * a * a * d * d)
+                      .sign();
+    if (s == 2 || s == 0) return false;
+    count = s > 0 ? 3 : 1;
+  } else {
+    const Fd &a = c[4], &b = c[3], &cc = c[2], &d = c[1], &e = c[0];
+    const auto k = [](double x) { return Fd{x, 0.0}; };
+    const Fd disc = k(256) * a * a * a * e * e * e - k(192) * a * a * b * d * e * e -
+                    k(128) * a * a * cc * cc * e * e + k(144) * a * a * cc * d * d * e -
+                    k(27) * a * a * d * d * d * d + k(144) * a * b * b * cc * e * e -
+                    k(6) * a * b * b * d * d * e - k(80) * a * b * cc * cc * d * e +
+                    k(18) * a * b * cc * d * d * d + k(16) * a * cc * cc * cc * cc * e -
+                    k(4) * a * cc * cc * cc * d * d - k(27) * b * b * b * b * e * e +
+                    k(18) * b * b * b * cc * d * e - k(4) * b * b * b * d * d * d -
+                    k(4) * b * b * cc * cc * cc * e + b * b * cc * cc * d * d;
+    const int s = disc.sign();
+    if (s == 2 || s == 0) return false;
+    if (s < 0) {
+      count = 2;
+    } else {
+      const int p = (k(8) * a * cc - k(3) * b * b).sign();
+      const int q = (k(64) * a * a * a * e - k(16) * a * a * cc * cc + k(16) * a * b * b * cc -
+                     k(16) * a * a * b * d - k(3) * b * b * b * b)
+                        .sign();
+      if (p == 2 || q == 2) return false;
+      count = (p < 0 && q < 0) ? 4 : 0;
+    }
+  }
+  if (count == 0) return true;
+  RootsResult<double> rr;
+  if (n == 1) rr = solve_linear(v[0], v[1]);
+  if (n == 2) rr = solve_quadratic(v[0], v[1], v[2]);
+  if (n == 3) rr = solve_cubic(v[0], v[1], v[2], v[3]);
+  if (n == 4) rr = solve_quartic(v[0], v[1], v[2], v[3], v[4]);
+  if (rr.status != Status::ok || rr.count != count) return false;
+  const auto sign_at = [&](double x) {
+    Fd acc = c[z(n)];
+    const Fd xv = Fd::var(x);
+    for (int i = n - 1; i >= 0; --i) acc = acc * xv + c[z(i)];
+    return acc.sign();
+  };
+  double m = 0.0;
+  for (int i = 0; i < rr.count; ++i) m = std::max(m, std::abs(rr.roots[z(i)].value));
+  double prev_hi = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < rr.count; ++i) {
+    if (rr.roots[z(i)].multiplicity != 1) return false;
+    const double r = rr.roots[z(i)].value;
+    const double mag = std::max({std::abs(r), 0x1p-10 * m, 0x1p-1000});
+    double lo = 0.0, hi = 0.0;
+    int slo = 2, shi = 2;
+    for (const double rel : {0x1p-50, 0x1p-44, 0x1p-38}) {
+      lo = r - rel * mag;
+      hi = r + rel * mag;
+      slo = sign_at(lo);
+      shi = sign_at(hi);
+      if (slo != 2 && shi != 2 && slo * shi < 0) break;
+    }
+    if (slo == 2 || shi == 2 || slo * shi >= 0 || !(lo > prev_hi)) return false;
+    // Bisect while the sign is certified.
+    for (int it = 0; it < 64; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      if (!(mid > lo && mid < hi)) break;
+      const int sm = sign_at(mid);
+      if (sm == 2) break;
+      if (sm == 0) {
+        lo = hi = mid;
+        break;
+      }
+      (sm == slo ? lo : hi) = mid;
+    }
+    if (hi - lo > 0x1p-42 * mag) return false;
+    prev_hi = hi;
+    out.push_back(0.5 * (lo + hi));
+  }
+  return true;
+}
+
+enum class ExactOutcome : std::uint8_t { done, fallback };
+
+void order_points(R4& r, const Conic& a, const Conic& b) noexcept {
+  const bool by_a = a.form != Form::general, by_b = !by_a && b.form != Form::general;
+  // Entries before `first` describe a line and stay in place.
+  const int first = r.kind == Kind::line ? 2 : 0;
+  const auto less = [&](int i, int j) {
+    if (by_a) return r.param_a[z(i)] < r.param_a[z(j)];
+    if (by_b) return r.param_b[z(i)] < r.param_b[z(j)];
+    const V p = r.point[z(i)], q = r.point[z(j)];
+    return p.x < q.x || (p.x == q.x && p.y < q.y);
+  };
+  for (int i = first + 1; i < r.count; ++i)
+    for (int j = i; j > first && less(j, j - 1); --j) {
+      std::swap(r.point[z(j)], r.point[z(j - 1)]);
+      std::swap(r.param_a[z(j)], r.param_a[z(j - 1)]);
+      std::swap(r.param_b[z(j)], r.param_b[z(j - 1)]);
+      std::swap(r.multiplicity[z(j)], r.multiplicity[z(j - 1)]);
+    }
+}
+
+ExactOutcome exact_pair(const Conic& ka, const Conic& kb, R4& r) {
+  const ZConic za = exact_conic(ka), zb = exact_conic(kb);
+  // Proportional coefficients (exact): the same curve.
+  bool proportional = true;
+  for (std::size_t i = 0; i < 6 && proportional; ++i)
+    for (std::size_t j = i + 1; j < 6 && proportional; ++j)
+      proportional = za.q[i] * zb.q[j] == za.q[j] * zb.q[i];
+  if (proportional) {
+    r.kind = Kind::coincident;
+    return ExactOutcome::done;
+  }
+  // A constant "conic": f = 0 (never: it is proportional to everything) or f != 0 (empty set).
+  for (const ZConic* zc : {&za, &zb})
+    if (zc->q[0].is_zero() && zc->q[1].is_zero() && zc->q[2].is_zero() && zc->q[3].is_zero() &&
+        zc->q[4].is_zero())
+      return ExactOutcome::done;
+  // The shear: the first k (of 12 candidates) whose resultant is square-free, else the one with
+  // the most distinct roots (at most 10 candidates are bad: 6 directions joining two of at most
+  // four common points, 2 + 2 asymptotic directions).
+  static constexpr int candidates[12] = {0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6};
+  int best_k = 0, best_distinct = -1;
+  ZPoly best_res;
+  InY best_pa, best_pb;
+  for (const int kc : candidates) {
+    const Z k(kc);
+    InY pa = sheared(za, k), pb = sheared(zb, k);
+    // Leading coefficients in y must be non-zero constants (no common point at infinity in the
+    // projection direction; the degree in y is the conic's degree).
+    const bool quad_a = !(za.q[0].is_zero() && za.q[1].is_zero() && za.q[2].is_zero());
+    const bool quad_b = !(zb.q[0].is_zero() && zb.q[1].is_zero() && zb.q[2].is_zero());
+    if (pa.deg != (quad_a ? 2 : 1) || pb.deg != (quad_b ? 2 : 1)) continue;
+    if (pa.deg == 1 && pa.y1.size() != 1) continue;
+    if (pb.deg == 1 && pb.y1.size() != 1) continue;
+    ZPoly res = resultant_y(pa, pb);
+    if (res.empty()) {
+      // A shared component (not the whole curves: they are not proportional).
+      ZLine g;
+      if (!common_line(pa, pb, g) || g.y.is_zero()) return ExactOutcome::fallback;
+      // The isolated common point of the other components, when not on the line.
+      r.kind = Kind::line;
+      r.count = 2;
+      // Back to (x, y): x' = x + k y.
+      ZLine l{g.x, g.x * k + g.y, g.c};
+      make_primitive(l);
+      const Z n2 = l.x * l.x + l.y * l.y;
+      const V p0{ratio(-(l.c * l.x), n2), ratio(-(l.c * l.y), n2)};
+      const double dx = l.x.to_double(), dy = l.y.to_double();
+      const double big = std::max(std::abs(dx), std::abs(dy));
+      const V dir = V{-dy / big, dx / big};
+      const double step = std::max(1.0, max_abs(p0));
+      r.point[0] = p0;
+      r.point[1] = p0 + step * dir;
+      for (int i = 0; i < 2; ++i) {
+        r.param_a[z(i)] = curve_param(ka, r.point[z(i)]);
+        r.param_b[z(i)] = curve_param(kb, r.point[z(i)]);
+        r.multiplicity[z(i)] = 0;
+      }
+      if (pa.deg == 2 && pb.deg == 2) {
+        const ZLine la = cofactor(pa, g), lb = cofactor(pb, g);
+        const Z det = la.x * lb.y - lb.x * la.y;
+        if (!det.is_zero()) {
+          const Z nx = la.y * lb.c - lb.y * la.c, ny = la.c * lb.x - lb.c * la.x;
+          if (!(g.x * nx + g.y * ny + g.c * det).is_zero()) {
+            const Z x = nx - k * ny;
+            const V p{ratio(x, det), ratio(ny, det)};
+            r.point[2] = p;
+            r.param_a[2] = curve_param(ka, p);
+            r.param_b[2] = curve_param(kb, p);
+            r.multiplicity[2] = 1;
+            r.count = 3;
+          }
+        }
+      }
+      return ExactOutcome::done;
+    }
+    if (best_distinct < 0) {
+      // The first admissible shear: the cheap certified path when it decides.
+      std::vector<double> simple;
+      if (filtered_roots(res, simple)) {
+        const std::array<double, 6> qa = rounded(za), qb = rounded(zb);
+        for (const double xs : simple) {
+          if (r.count == 4) break;
+          const V p = polish(qa, qb, point_above(qa, qb, double(kc), xs));
+          const auto j = z(r.count++);
+          r.point[j] = p;
+          r.param_a[j] = curve_param(ka, p);
+          r.param_b[j] = curve_param(kb, p);
+          r.multiplicity[j] = 1;
+        }
+        r.kind = r.count == 0 ? Kind::empty : r.count == 1 ? Kind::point : Kind::points;
+        order_points(r, ka, kb);
+        return ExactOutcome::done;
+      }
+    }
+    const ZPoly g = roots::gcd(res, roots::derivative(res));
+    const int distinct = roots::degree(res) - roots::degree(g);
+    if (distinct > best_distinct) {
+      best_distinct = distinct;
+      best_k = kc;
+      best_res = std::move(res);
+      best_pa = std::move(pa);
+      best_pb = std::move(pb);
+    }
+    if (roots::degree(g) == 0 || best_distinct == 4) break;
+  }
+  if (best_distinct < 0) return ExactOutcome::fallback;
+  std::vector<Root<double>> found;
+  const double inf = std::numeric_limits<double>::infinity();
+  if (roots::exact_real_roots_of_integers<double>(best_res, -inf, inf, RootOptions{}, found) !=
+      Status::ok)
+    return ExactOutcome::fallback;
+  const std::array<double, 6> qa = rounded(za), qb = rounded(zb);
+  const double k = best_k;
+  for (const Root<double>& rt : found) {
+    if (r.count == 4) break;
+    V p = point_above(qa, qb, k, rt.value);
+    if (rt.multiplicity == 1) p = polish(qa, qb, p);
+    const auto j = z(r.count++);
+    r.point[j] = p;
+    r.param_a[j] = curve_param(ka, p);
+    r.param_b[j] = curve_param(kb, p);
+    r.multiplicity[j] = rt.multiplicity;
+  }
+  r.kind = r.count == 0 ? Kind::empty : r.count == 1 ? Kind::point : Kind::points;
+  order_points(r, ka, kb);
+  return ExactOutcome::done;
+}
+
+}  // namespace
+
 R4 conic_conic(const Conic& a, const Conic& b) noexcept {
   R4 r;
   if (!valid_conic(a) || !valid_conic(b)) return r;
@@ -1001,6 +1520,13 @@ R4 conic_conic(const Conic& a, const Conic& b) noexcept {
       return r;
     }
   }
+  // The exact decision; the rounded quartic only when the exact engine gives up (memory, or
+  // roots closer than its bisection budget: not reached by double input).
+  try {
+    R4 e;
+    if (exact_pair(a, b, e) == ExactOutcome::done) return e;
+  } catch (const std::bad_alloc&) {
+  }
   Frame f;
   if (frame_of(a, f)) return frame_conic(a, f, b);
   if (frame_of(b, f)) {
@@ -1022,29 +1548,31 @@ RegionRelation ellipse_relation(const Conic& a, const Conic& b) noexcept {
     if (r.multiplicity[z(i)] % 2 == 1) return RegionRelation::overlapping;
     touching = true;
   }
-  // No crossing: a boundary point of one, away from the tangencies, lies strictly inside the
-  // other or not.
-  const auto probe = [&](const Frame& f, bool use_b) {
-    double best = -1.0, th = 0.0;
-    for (int i = 0; i < 8; ++i) {
-      const double c = i * (pi / 4.0);
-      double near = two_pi;
-      for (int j = 0; j < r.count; ++j) {
-        const double pj = use_b ? r.param_b[z(j)] : r.param_a[z(j)];
-        near = std::min(near, std::abs(normalise_angle(c - pj)));
-      }
-      if (near > best) {
-        best = near;
-        th = c;
-      }
+  // No crossing: the regions are nested or have disjoint interiors. A centre strictly inside
+  // the other region means nested, and then the larger area contains (both exact).
+  const bool b_centre_in_a = value_sign(a, b.c) < 0, a_centre_in_b = value_sign(b, a.c) < 0;
+  if (!b_centre_in_a && !a_centre_in_b)
+    return touching ? RegionRelation::touching : RegionRelation::separated;
+  // Area pi e0 e1 / |u0 x u1| (the implicit ellipse as stored); a circle: pi r^2.
+  const auto area_parts = [](const Conic& k, P& num, P& den) {
+    if (k.form == Form::circle) {
+      num = P::var(k.r) * P::var(k.r);
+      den = P::var(1.0);
+    } else {
+      num = P::var(k.e0) * P::var(k.e1);
+      den = P::var(k.u0.x) * P::var(k.u1.y) - P::var(k.u0.y) * P::var(k.u1.x);
+      if (den.sign() < 0) den = P::var(0.0) - den;
     }
-    return f.c + std::cos(th) * f.e0v + std::sin(th) * f.e1v;
   };
-  if (value_sign(a, probe(fb, true)) < 0)
+  P na, da, nb, db;
+  area_parts(a, na, da);
+  area_parts(b, nb, db);
+  const int cmp = (na * db - nb * da).sign();
+  if (cmp > 0)
     return touching ? RegionRelation::a_contains_b_touching : RegionRelation::a_contains_b;
-  if (value_sign(b, probe(fa, false)) < 0)
+  if (cmp < 0)
     return touching ? RegionRelation::b_contains_a_touching : RegionRelation::b_contains_a;
-  return touching ? RegionRelation::touching : RegionRelation::separated;
+  return RegionRelation::equal;
 }
 
 }  // namespace locus::detail::conic2

@@ -87,6 +87,10 @@ inline void make_primitive(ZPoly& p) {
     if (!c.is_zero()) c = divide_exact(c, g);
 }
 
+/// The greatest common divisor of a and b in Z[x], primitive with a positive leading coefficient
+/// (empty when both are zero); by primitive pseudo-remainders.
+[[nodiscard]] ZPoly gcd(const ZPoly& a, const ZPoly& b);
+
 /// The real roots of p (any integer polynomial; the zero polynomial has none) in [lo, hi]
 /// (either may be infinite), appended to out in increasing order, each correctly rounded to T
 /// with its multiplicity. Returns ok, or limit_exceeded when opt's exact budgets are exceeded

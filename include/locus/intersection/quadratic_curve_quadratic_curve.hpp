@@ -41,14 +41,7 @@ template <Real T>
       !is_finite(a.f) || !is_finite(b.a) || !is_finite(b.b) || !is_finite(b.c) || !is_finite(b.d) ||
       !is_finite(b.e) || !is_finite(b.f))
     return {};
-  // Equal or proportional curves first (exact), then an ellipse as the frame when there is one.
-  const auto general = c::conic_conic(ka, kb);
-  if (general.kind == Kind::coincident) return c::cast<T>(general);
-  if (const std::optional<Ellipse2<T>> ea = to_ellipse(a))
-    return c::cast<T>(c::conic_conic(c::as_conic(*ea), kb));
-  if (const std::optional<Ellipse2<T>> eb = to_ellipse(b))
-    return swapped(c::cast<T>(c::conic_conic(c::as_conic(*eb), ka)));
-  return c::cast<T>(general);
+  return c::cast<T>(c::conic_conic(ka, kb));
 }
 
 /// Whether two quadratic curves have a common point.
