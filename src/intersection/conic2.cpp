@@ -1187,7 +1187,8 @@ V polish(const std::array<double, 6>& qa, const std::array<double, 6>& qb, V p) 
     const V ga{2.0 * qa[0] * p.x + qa[1] * p.y + qa[3], qa[1] * p.x + 2.0 * qa[2] * p.y + qa[4]};
     const V gb{2.0 * qb[0] * p.x + qb[1] * p.y + qb[3], qb[1] * p.x + 2.0 * qb[2] * p.y + qb[4]};
     const double det = ga.x * gb.y - ga.y * gb.x;
-    if (!(det != 0.0) || !std::isfinite(det)) break;
+    // Nearly parallel normals (a near-tangency): Newton would amplify the residual's rounding.
+    if (!(std::abs(det) > 0x1p-6 * length(ga) * length(gb)) || !std::isfinite(det)) break;
     const V q{p.x - (va * gb.y - vb * ga.y) / det, p.y - (ga.x * vb - gb.x * va) / det};
     const double rq = res(q);
     if (!(rq < r) || !finite(q)) break;
@@ -1368,6 +1369,51 @@ void order_points(R4& r, const Conic& a, const Conic& b) noexcept {
     }
 }
 
+/// Two conics with an identically vanishing resultant (not proportional): their common line, and
+/// the isolated common point of the other components when there is one.
+ExactOutcome shared_component(const Conic& ka, const Conic& kb, const InY& pa, const InY& pb,
+                              const Z& k, R4& r) {
+  // A shared component (not the whole curves: they are not proportional).
+  ZLine g;
+  if (!common_line(pa, pb, g) || g.y.is_zero()) return ExactOutcome::fallback;
+  // The isolated common point of the other components, when not on the line.
+  r.kind = Kind::line;
+  r.count = 2;
+  // Back to (x, y): x' = x + k y.
+  ZLine l{g.x, g.x * k + g.y, g.c};
+  make_primitive(l);
+  const Z n2 = l.x * l.x + l.y * l.y;
+  const V p0{ratio(-(l.c * l.x), n2), ratio(-(l.c * l.y), n2)};
+  const double dx = l.x.to_double(), dy = l.y.to_double();
+  const double big = std::max(std::abs(dx), std::abs(dy));
+  const V dir = V{-dy / big, dx / big};
+  const double step = std::max(1.0, max_abs(p0));
+  r.point[0] = p0;
+  r.point[1] = p0 + step * dir;
+  for (int i = 0; i < 2; ++i) {
+    r.param_a[z(i)] = curve_param(ka, r.point[z(i)]);
+    r.param_b[z(i)] = curve_param(kb, r.point[z(i)]);
+    r.multiplicity[z(i)] = 0;
+  }
+  if (pa.deg == 2 && pb.deg == 2) {
+    const ZLine la = cofactor(pa, g), lb = cofactor(pb, g);
+    const Z det = la.x * lb.y - lb.x * la.y;
+    if (!det.is_zero()) {
+      const Z nx = la.y * lb.c - lb.y * la.c, ny = la.c * lb.x - lb.c * la.x;
+      if (!(g.x * nx + g.y * ny + g.c * det).is_zero()) {
+        const Z x = nx - k * ny;
+        const V p{ratio(x, det), ratio(ny, det)};
+        r.point[2] = p;
+        r.param_a[2] = curve_param(ka, p);
+        r.param_b[2] = curve_param(kb, p);
+        r.multiplicity[2] = 1;
+        r.count = 3;
+      }
+    }
+  }
+  return ExactOutcome::done;
+}
+
 ExactOutcome exact_pair(const Conic& ka, const Conic& kb, R4& r) {
   const ZConic za = exact_conic(ka), zb = exact_conic(kb);
   // Proportional coefficients (exact): the same curve.
@@ -1384,115 +1430,120 @@ ExactOutcome exact_pair(const Conic& ka, const Conic& kb, R4& r) {
     if (zc->q[0].is_zero() && zc->q[1].is_zero() && zc->q[2].is_zero() && zc->q[3].is_zero() &&
         zc->q[4].is_zero())
       return ExactOutcome::done;
-  // The shear: the first k (of 12 candidates) whose resultant is square-free, else the one with
-  // the most distinct roots (at most 10 candidates are bad: 6 directions joining two of at most
-  // four common points, 2 + 2 asymptotic directions).
+  // The shear: a k (of 12 candidates) whose resultant has the most distinct roots: then no two
+  // common points share x' (at most 10 candidates are bad: 6 directions joining two of at most
+  // four common points, 2 + 2 asymptotic directions), and a square-free resultant is good at
+  // once. Among good shears, the first whose points are well conditioned (the projection
+  // direction transversal to a curve at every point) gives the coordinates.
   static constexpr int candidates[12] = {0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6};
-  int best_k = 0, best_distinct = -1;
-  ZPoly best_res;
-  InY best_pa, best_pb;
+  const bool quad_a = !(za.q[0].is_zero() && za.q[1].is_zero() && za.q[2].is_zero());
+  const bool quad_b = !(zb.q[0].is_zero() && zb.q[1].is_zero() && zb.q[2].is_zero());
+  const std::array<double, 6> qa = rounded(za), qb = rounded(zb);
+  struct Cand {
+    int k;
+    ZPoly res;
+    int distinct;
+    bool square_free;
+  };
+  std::vector<Cand> cands;
+  int max_distinct = -1;
+  bool have_fallback = false;
+  R4 fallback;
+  // Points of a good shear from its real roots; false when ill conditioned.
+  const auto build = [&](int kc, const std::vector<double>& xs, const std::vector<int>& mult,
+                         R4& out) {
+    out = R4{};
+    bool good = true;
+    const double k = kc, dn = std::sqrt(1.0 + k * k);
+    for (std::size_t i = 0; i < xs.size() && out.count < 4; ++i) {
+      V p = point_above(qa, qb, k, xs[i]);
+      if (mult[i] == 1) p = polish(qa, qb, p);
+      double cond = 0.0;
+      for (const auto* q : {&qa, &qb}) {
+        const V g{2.0 * (*q)[0] * p.x + (*q)[1] * p.y + (*q)[3],
+                  (*q)[1] * p.x + 2.0 * (*q)[2] * p.y + (*q)[4]};
+        const double gl = length(g);
+        if (gl > 0.0) cond = std::max(cond, std::abs(g.y - k * g.x) / (gl * dn));
+      }
+      good = good && cond >= 0x1p-6;
+      const auto j = z(out.count++);
+      out.point[j] = p;
+      out.param_a[j] = curve_param(ka, p);
+      out.param_b[j] = curve_param(kb, p);
+      out.multiplicity[j] = mult[i];
+    }
+    out.kind = out.count == 0 ? Kind::empty : out.count == 1 ? Kind::point : Kind::points;
+    order_points(out, ka, kb);
+    return good;
+  };
+  // The exact real roots of a good shear's resultant, then its points.
+  const auto exact_points = [&](const Cand& c, R4& out, bool& ok) {
+    std::vector<Root<double>> found;
+    const double inf = std::numeric_limits<double>::infinity();
+    ok = roots::exact_real_roots_of_integers<double>(c.res, -inf, inf, RootOptions{}, found) ==
+         Status::ok;
+    std::vector<double> xs;
+    std::vector<int> mult;
+    for (const Root<double>& rt : found) {
+      xs.push_back(rt.value);
+      mult.push_back(rt.multiplicity);
+    }
+    return ok && build(c.k, xs, mult, out);
+  };
+  const auto consider = [&](const R4& got, bool good) {
+    if (good) {
+      r = got;
+      return true;
+    }
+    if (!have_fallback) {
+      fallback = got;
+      have_fallback = true;
+    }
+    return false;
+  };
   for (const int kc : candidates) {
     const Z k(kc);
-    InY pa = sheared(za, k), pb = sheared(zb, k);
+    const InY pa = sheared(za, k), pb = sheared(zb, k);
     // Leading coefficients in y must be non-zero constants (no common point at infinity in the
     // projection direction; the degree in y is the conic's degree).
-    const bool quad_a = !(za.q[0].is_zero() && za.q[1].is_zero() && za.q[2].is_zero());
-    const bool quad_b = !(zb.q[0].is_zero() && zb.q[1].is_zero() && zb.q[2].is_zero());
     if (pa.deg != (quad_a ? 2 : 1) || pb.deg != (quad_b ? 2 : 1)) continue;
     if (pa.deg == 1 && pa.y1.size() != 1) continue;
     if (pb.deg == 1 && pb.y1.size() != 1) continue;
     ZPoly res = resultant_y(pa, pb);
-    if (res.empty()) {
-      // A shared component (not the whole curves: they are not proportional).
-      ZLine g;
-      if (!common_line(pa, pb, g) || g.y.is_zero()) return ExactOutcome::fallback;
-      // The isolated common point of the other components, when not on the line.
-      r.kind = Kind::line;
-      r.count = 2;
-      // Back to (x, y): x' = x + k y.
-      ZLine l{g.x, g.x * k + g.y, g.c};
-      make_primitive(l);
-      const Z n2 = l.x * l.x + l.y * l.y;
-      const V p0{ratio(-(l.c * l.x), n2), ratio(-(l.c * l.y), n2)};
-      const double dx = l.x.to_double(), dy = l.y.to_double();
-      const double big = std::max(std::abs(dx), std::abs(dy));
-      const V dir = V{-dy / big, dx / big};
-      const double step = std::max(1.0, max_abs(p0));
-      r.point[0] = p0;
-      r.point[1] = p0 + step * dir;
-      for (int i = 0; i < 2; ++i) {
-        r.param_a[z(i)] = curve_param(ka, r.point[z(i)]);
-        r.param_b[z(i)] = curve_param(kb, r.point[z(i)]);
-        r.multiplicity[z(i)] = 0;
-      }
-      if (pa.deg == 2 && pb.deg == 2) {
-        const ZLine la = cofactor(pa, g), lb = cofactor(pb, g);
-        const Z det = la.x * lb.y - lb.x * la.y;
-        if (!det.is_zero()) {
-          const Z nx = la.y * lb.c - lb.y * la.c, ny = la.c * lb.x - lb.c * la.x;
-          if (!(g.x * nx + g.y * ny + g.c * det).is_zero()) {
-            const Z x = nx - k * ny;
-            const V p{ratio(x, det), ratio(ny, det)};
-            r.point[2] = p;
-            r.param_a[2] = curve_param(ka, p);
-            r.param_b[2] = curve_param(kb, p);
-            r.multiplicity[2] = 1;
-            r.count = 3;
-          }
-        }
-      }
-      return ExactOutcome::done;
-    }
-    if (best_distinct < 0) {
+    if (res.empty()) return shared_component(ka, kb, pa, pb, k, r);
+    bool filtered = false;
+    if (cands.empty()) {
       // The first admissible shear: the cheap certified path when it decides.
       std::vector<double> simple;
-      if (filtered_roots(res, simple)) {
-        const std::array<double, 6> qa = rounded(za), qb = rounded(zb);
-        for (const double xs : simple) {
-          if (r.count == 4) break;
-          const V p = polish(qa, qb, point_above(qa, qb, double(kc), xs));
-          const auto j = z(r.count++);
-          r.point[j] = p;
-          r.param_a[j] = curve_param(ka, p);
-          r.param_b[j] = curve_param(kb, p);
-          r.multiplicity[j] = 1;
-        }
-        r.kind = r.count == 0 ? Kind::empty : r.count == 1 ? Kind::point : Kind::points;
-        order_points(r, ka, kb);
-        return ExactOutcome::done;
+      if ((filtered = filtered_roots(res, simple))) {
+        R4 got;
+        const bool good = build(kc, simple, std::vector<int>(simple.size(), 1), got);
+        if (consider(got, good)) return ExactOutcome::done;
       }
     }
     const ZPoly g = roots::gcd(res, roots::derivative(res));
     const int distinct = roots::degree(res) - roots::degree(g);
-    if (distinct > best_distinct) {
-      best_distinct = distinct;
-      best_k = kc;
-      best_res = std::move(res);
-      best_pa = std::move(pa);
-      best_pb = std::move(pb);
+    max_distinct = std::max(max_distinct, distinct);
+    cands.push_back({kc, std::move(res), distinct, roots::degree(g) <= 0});
+    if (cands.back().square_free && !filtered) {
+      R4 got;
+      bool ok = false;
+      const bool good = exact_points(cands.back(), got, ok);
+      if (!ok) return ExactOutcome::fallback;
+      if (consider(got, good)) return ExactOutcome::done;
     }
-    if (roots::degree(g) == 0 || best_distinct == 4) break;
   }
-  if (best_distinct < 0) return ExactOutcome::fallback;
-  std::vector<Root<double>> found;
-  const double inf = std::numeric_limits<double>::infinity();
-  if (roots::exact_real_roots_of_integers<double>(best_res, -inf, inf, RootOptions{}, found) !=
-      Status::ok)
-    return ExactOutcome::fallback;
-  const std::array<double, 6> qa = rounded(za), qb = rounded(zb);
-  const double k = best_k;
-  for (const Root<double>& rt : found) {
-    if (r.count == 4) break;
-    V p = point_above(qa, qb, k, rt.value);
-    if (rt.multiplicity == 1) p = polish(qa, qb, p);
-    const auto j = z(r.count++);
-    r.point[j] = p;
-    r.param_a[j] = curve_param(ka, p);
-    r.param_b[j] = curve_param(kb, p);
-    r.multiplicity[j] = rt.multiplicity;
+  if (max_distinct < 0) return ExactOutcome::fallback;
+  for (const Cand& c : cands) {
+    if (c.distinct != max_distinct || c.square_free) continue;  // bad, or already tried
+    R4 got;
+    bool ok = false;
+    const bool good = exact_points(c, got, ok);
+    if (!ok) return ExactOutcome::fallback;
+    if (consider(got, good)) return ExactOutcome::done;
   }
-  r.kind = r.count == 0 ? Kind::empty : r.count == 1 ? Kind::point : Kind::points;
-  order_points(r, ka, kb);
+  if (!have_fallback) return ExactOutcome::fallback;
+  r = fallback;
   return ExactOutcome::done;
 }
 
