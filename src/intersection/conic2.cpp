@@ -1241,9 +1241,33 @@ void make_primitive(ZLine& l) {
   l = {v[0], v[1], v[2]};
 }
 
+/// The exact sign of the integer polynomial p at the double x: with x = m 2^e (e < 0),
+/// sum p_i m^i 2^(-e (n - i)) by Horner's rule.
+int exact_sign_at(const ZPoly& p, double x) {
+  if (p.empty()) return 0;
+  const DoubleParts d = decompose(x);
+  Z m = Z::from_double(x == 0.0 ? 0.0 : std::copysign(double(d.mantissa), x));
+  std::size_t step = 0;
+  if (d.exponent >= 0)
+    m = m << static_cast<std::size_t>(d.exponent);
+  else
+    step = static_cast<std::size_t>(-d.exponent);
+  Z acc = p.back();
+  for (std::size_t i = p.size() - 1; i-- > 0;)
+    acc = acc * m + (p[i] << (step * (p.size() - 1 - i)));
+  return acc.sign();
+}
+
 /// The cheap certified path: when the rounded coefficients decide (with rigorous running error
-/// bounds, Fd) that res is square-free and how many real roots it has, and each root is bracketed
-/// by certified sign changes, the roots (all simple) to within a few ulps; false when undecided.
+/// bounds, Fd) that res is square-free and how many real roots it has, and the near-mode roots are
+/// bracketed by sign changes, the roots (all simple) bisected to adjacent doubles (signs filtered,
+/// exact when undecided); false when undecided.
+/// The core of the filter on coefficients c[0..n] (rigorous error bounds, leading one certified
+/// non-zero); res, when given, is the exact polynomial for signs the filter cannot tell (else
+/// bisection stops there, and roots must be bracketed within 2^-42 of their scale).
+bool filtered_core(const std::array<Fd, 5>& c, int n, const ZPoly* res, double width,
+                   std::vector<double>& out);
+
 bool filtered_roots(const ZPoly& res, std::vector<double>& out) {
   out.clear();
   const int n = roots::degree(res);
@@ -1253,13 +1277,19 @@ bool filtered_roots(const ZPoly& res, std::vector<double>& out) {
   const std::size_t sh = bits > 1000 ? bits - 1000 : 0;
   const int scale = -static_cast<int>(bits - sh);
   std::array<Fd, 5> c{};
-  std::array<double, 5> v{};
   for (std::size_t i = 0; i < res.size(); ++i) {
     const double x = std::ldexp((res[i] >> sh).to_double(), scale);
-    v[i] = x;
     // Rounding to double, truncation by the shift (below one unit), underflow.
     c[i] = {x, u * std::abs(x) + (sh > 0 ? std::ldexp(1.0, scale) : 0.0) + 0x1p-1070};
   }
+  return filtered_core(c, n, &res, 0x1p-42, out);
+}
+
+bool filtered_core(const std::array<Fd, 5>& c, int n, const ZPoly* res, double width,
+                   std::vector<double>& out) {
+  out.clear();
+  std::array<double, 5> v{};
+  for (std::size_t i = 0; i < 5; ++i) v[i] = c[i].v;
   int count = 0;
   if (n == 1) {
     count = 1;
@@ -1306,11 +1336,13 @@ bool filtered_roots(const ZPoly& res, std::vector<double>& out) {
   if (n == 3) rr = solve_cubic(v[0], v[1], v[2], v[3]);
   if (n == 4) rr = solve_quartic(v[0], v[1], v[2], v[3], v[4]);
   if (rr.status != Status::ok || rr.count != count) return false;
+  // The sign of res at x: filtered, exact when the filter cannot tell.
   const auto sign_at = [&](double x) {
     Fd acc = c[z(n)];
     const Fd xv = Fd::var(x);
     for (int i = n - 1; i >= 0; --i) acc = acc * xv + c[z(i)];
-    return acc.sign();
+    const int fs = acc.sign();
+    return fs != 2 || res == nullptr ? fs : exact_sign_at(*res, x);
   };
   double m = 0.0;
   for (int i = 0; i < rr.count; ++i) m = std::max(m, std::abs(rr.roots[z(i)].value));
@@ -1321,7 +1353,7 @@ bool filtered_roots(const ZPoly& res, std::vector<double>& out) {
     const double mag = std::max({std::abs(r), 0x1p-10 * m, 0x1p-1000});
     double lo = 0.0, hi = 0.0;
     int slo = 2, shi = 2;
-    for (const double rel : {0x1p-50, 0x1p-44, 0x1p-38}) {
+    for (const double rel : {0x1p-50, 0x1p-44, 0x1p-38, 0x1p-30, 0x1p-20}) {
       lo = r - rel * mag;
       hi = r + rel * mag;
       slo = sign_at(lo);
@@ -1329,9 +1361,9 @@ bool filtered_roots(const ZPoly& res, std::vector<double>& out) {
       if (slo != 2 && shi != 2 && slo * shi < 0) break;
     }
     if (slo == 2 || shi == 2 || slo * shi >= 0 || !(lo > prev_hi)) return false;
-    // Bisect while the sign is certified.
-    for (int it = 0; it < 64; ++it) {
-      const double mid = 0.5 * (lo + hi);
+    // Bisect down to adjacent doubles (every sign decided, exactly when needed).
+    for (int it = 0; it < 2100; ++it) {
+      const double mid = lo + 0.5 * (hi - lo);
       if (!(mid > lo && mid < hi)) break;
       const int sm = sign_at(mid);
       if (sm == 2) break;
@@ -1341,7 +1373,7 @@ bool filtered_roots(const ZPoly& res, std::vector<double>& out) {
       }
       (sm == slo ? lo : hi) = mid;
     }
-    if (hi - lo > 0x1p-42 * mag) return false;
+    if (hi - lo > width * mag) return false;
     prev_hi = hi;
     out.push_back(0.5 * (lo + hi));
   }
@@ -1412,6 +1444,107 @@ ExactOutcome shared_component(const Conic& ka, const Conic& kb, const InY& pa, c
     }
   }
   return ExactOutcome::done;
+}
+
+/// The implicit coefficients in Fd (rounded, with error bounds), unscaled.
+std::array<Fd, 6> fd_conic(const Conic& k) noexcept {
+  const auto neg = [](const Fd& x) { return Fd{0.0, 0.0} - x; };
+  std::array<Fd, 6> q{};
+  switch (k.form) {
+    case Form::general:
+      for (std::size_t i = 0; i < 6; ++i) q[i] = Fd::var(k.q[i]);
+      break;
+    case Form::circle: {
+      const Fd cx = Fd::var(k.c.x), cy = Fd::var(k.c.y), r = Fd::var(k.r);
+      q = {Fd{1.0, 0.0},          Fd{},
+           Fd{1.0, 0.0},          neg(cx.times_pow2(1)),
+           neg(cy.times_pow2(1)), cx * cx + cy * cy - r * r};
+      break;
+    }
+    case Form::ellipse: {
+      const Fd ux[2] = {Fd::var(k.u0.x), Fd::var(k.u1.x)},
+               uy[2] = {Fd::var(k.u0.y), Fd::var(k.u1.y)};
+      const Fd cx = Fd::var(k.c.x), cy = Fd::var(k.c.y);
+      const Fd w[2] = {Fd::var(k.e1) * Fd::var(k.e1), Fd::var(k.e0) * Fd::var(k.e0)};
+      for (std::size_t j = 0; j < 2; ++j) {
+        const Fd p = ux[j] * cx + uy[j] * cy;
+        q[0] = q[0] + w[j] * ux[j] * ux[j];
+        q[1] = q[1] + (w[j] * ux[j] * uy[j]).times_pow2(1);
+        q[2] = q[2] + w[j] * uy[j] * uy[j];
+        q[3] = q[3] - (w[j] * ux[j] * p).times_pow2(1);
+        q[4] = q[4] - (w[j] * uy[j] * p).times_pow2(1);
+        q[5] = q[5] + w[j] * p * p;
+      }
+      q[5] = q[5] - w[0] * w[1];
+      break;
+    }
+  }
+  return q;
+}
+
+/// The fast path: the resultant for k = 0 (leading coefficients in y certified non-zero) in Fd,
+/// its coefficients enclosing the exact ones, decided by the filter without big integers; false
+/// when anything is undecided (then the exact path).
+bool fast_pair(const Conic& ka, const Conic& kb, R4& r) {
+  const std::array<Fd, 6> a = fd_conic(ka), b = fd_conic(kb);
+  if (a[2].sign() == 2 || a[2].sign() == 0 || b[2].sign() == 2 || b[2].sign() == 0) return false;
+  using FP = std::array<Fd, 5>;
+  const auto mul = [](const FP& x, int dx, const FP& y, int dy) {
+    FP o{};
+    for (int i = 0; i <= dx; ++i)
+      for (int j = 0; j <= dy; ++j) o[z(i + j)] = o[z(i + j)] + x[z(i)] * y[z(j)];
+    return o;
+  };
+  const auto sub = [](const FP& x, const FP& y) {
+    FP o{};
+    for (std::size_t i = 0; i < 5; ++i) o[i] = x[i] - y[i];
+    return o;
+  };
+  const FP a2{a[2]}, a1{a[4], a[1]}, a0{a[5], a[3], a[0]};
+  const FP b2{b[2]}, b1{b[4], b[1]}, b0{b[5], b[3], b[0]};
+  const FP s = sub(mul(a2, 0, b0, 2), mul(a0, 2, b2, 0));
+  const FP res = sub(mul(s, 2, s, 2), mul(sub(mul(a2, 0, b1, 1), mul(a1, 1, b2, 0)), 1,
+                                          sub(mul(a1, 1, b0, 2), mul(a0, 2, b1, 1)), 3));
+  double m = 0.0;
+  for (const Fd& c : res) m = std::max(m, std::abs(c.v) + c.e);
+  if (!(m > 0.0) || !std::isfinite(m)) return false;
+  const int sc = -std::ilogb(m);
+  FP c{};
+  for (std::size_t i = 0; i < 5; ++i) c[i] = res[i].times_pow2(sc);
+  int n = 4;
+  while (n >= 0 && c[z(n)].sign() == 0) --n;
+  if (n < 0 || c[z(n)].sign() == 2) return false;
+  std::vector<double> xs;
+  // Brackets within 2^-28, then Newton steps (required to apply: well-separated normals).
+  if (!filtered_core(c, n, nullptr, 0x1p-28, xs)) return false;
+  const std::array<double, 6> qa = {a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].v};
+  const std::array<double, 6> qb = {b[0].v, b[1].v, b[2].v, b[3].v, b[4].v, b[5].v};
+  R4 out;
+  for (const double x : xs) {
+    if (out.count == 4) break;
+    const V p = polish(qa, qb, point_above(qa, qb, 0.0, x));
+    // The projection (vertical) must be transversal to a curve at the point.
+    double cond = 0.0;
+    for (const auto* q : {&qa, &qb}) {
+      const V g{2.0 * (*q)[0] * p.x + (*q)[1] * p.y + (*q)[3],
+                (*q)[1] * p.x + 2.0 * (*q)[2] * p.y + (*q)[4]};
+      const double gl = length(g);
+      if (gl > 0.0) cond = std::max(cond, std::abs(g.y) / gl);
+    }
+    if (!(cond >= 0x1p-6) || !finite(p)) return false;
+    const V ga{2.0 * qa[0] * p.x + qa[1] * p.y + qa[3], qa[1] * p.x + 2.0 * qa[2] * p.y + qa[4]};
+    const V gb{2.0 * qb[0] * p.x + qb[1] * p.y + qb[3], qb[1] * p.x + 2.0 * qb[2] * p.y + qb[4]};
+    if (!(std::abs(ga.x * gb.y - ga.y * gb.x) > 0x1p-6 * length(ga) * length(gb))) return false;
+    const auto j = z(out.count++);
+    out.point[j] = p;
+    out.param_a[j] = curve_param(ka, p);
+    out.param_b[j] = curve_param(kb, p);
+    out.multiplicity[j] = 1;
+  }
+  out.kind = out.count == 0 ? Kind::empty : out.count == 1 ? Kind::point : Kind::points;
+  order_points(out, ka, kb);
+  r = out;
+  return true;
 }
 
 ExactOutcome exact_pair(const Conic& ka, const Conic& kb, R4& r) {
@@ -1575,6 +1708,7 @@ R4 conic_conic(const Conic& a, const Conic& b) noexcept {
   // roots closer than its bisection budget: not reached by double input).
   try {
     R4 e;
+    if (fast_pair(a, b, e)) return e;
     if (exact_pair(a, b, e) == ExactOutcome::done) return e;
   } catch (const std::bad_alloc&) {
   }

@@ -13,9 +13,9 @@
 // discriminant, certified sign changes around each root) settles simple roots in microseconds;
 // otherwise the gcd chain and Sturm sequences of numeric/roots.hpp's exact engine. Distinct points
 // are never merged (points closer than an ulp may share a value, still listed separately).
-// Coordinates: x' correctly rounded (exact path) or bracketed within 2^-42 of the points' scale
-// (filter), y from a curve's quadratic at x', simple points polished by Newton steps on both
-// curves; k is also chosen so that the projection direction is transversal to a curve at every
+// Coordinates: x' correctly rounded (exact path) or bracketed by the filter (to 2^-42 of the
+// points' scale, or 2^-28 where Newton steps on both curves then apply), y from a curve's
+// quadratic at x'; k is also chosen so that the projection is transversal to a curve at every
 // point. Bound: points within about 2^-40 of the coordinates' magnitude, a few ulps typically.
 // Parameters: the angle on a circle or ellipse (point_at), 0 on a general quadratic curve.
 // Result (CurvePairIntersection2<T>): empty, point, points (by increasing param_a), each with its
