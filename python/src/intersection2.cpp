@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // 2D curve intersections over arrays: circle_circle (intersection/circle_circle.hpp: the count
 // decided exactly, points constructed), segment_circle, circle_ellipse and ellipse_ellipse
-// (intersection/ circle_ellipse.hpp, ellipse_ellipse.hpp: the quartic of book section 7.5.2, up to
-// 4 points, multiplicities exact), quadratic_curves (general conic pairs, shared lines), circle_arc
+// (intersection/ circle_ellipse.hpp, ellipse_ellipse.hpp: book section 7.5, up to 4 points,
+// multiplicities exact), quadratic_curves (general conic pairs, shared lines), circle_arc
 // and arc_arc (up to 2 points or 2 overlap arcs). Inputs are converted to float64 (read in place
 // when they already are C-contiguous float64); NaN, infinite or negative radii raise ValueError.
 #include "common.hpp"
@@ -180,12 +180,12 @@ points ((n, 2, 2), NaN where unused), multiplicity (1 crossing, 2 tangency).)doc
 of each ellipse's first axis from the x axis, half-axis lengths e0, e1 (n, 2) > 0 (along the
 first axis and the second, counter-clockwise from it).
 
-Book section 7.5.2 (intersection/ellipse_ellipse.hpp): a quartic in the half-angle parameter
-of the first ellipse; crossings away from tangency are counted as for the exact curves,
-near-tangencies closer than about sqrt(eps) merge into one tangency. CurveIntersections: kind
+Book section 7.5 (intersection/ellipse_ellipse.hpp): the number of distinct real common
+points and each one's multiplicity are decided exactly (an integer resultant after a shear,
+a certified floating-point filter first); distinct points are never merged. CurveIntersections: kind
 (0 empty, 1 point, 2 points, 11 coincident), count (0..4), points ((n, 4, 2), by increasing
-angle on the first ellipse, NaN where unused), multiplicity ((n, 4): 1 crossing, 2 tangency, 0
-unused).)doc");
+angle on the first ellipse, NaN where unused), multiplicity ((n, 4): 1 crossing, 2 tangency, 3 or 4
+higher contact, 0 unused).)doc");
 
   m.def(
       "circle_ellipse",
