@@ -163,6 +163,7 @@ std::vector<int> oracle_multiplicities(const QConic& p, const QConic& q) {
       best_distinct = distinct;
       best = res;
     }
+    if (distinct == static_cast<int>(res.size()) - 1) break;  // square-free: a good shear
   }
   // Gcd chain: p_j has the roots of multiplicity > j with multiplicity reduced by j.
   std::vector<int> count_at_least;
@@ -225,7 +226,7 @@ TYPED_TEST(QuadraticExact, EllipsePairsAgainstGmpOracle) {
   SCOPED_TRACE(rng.trace());
   const double tol = std::is_same_v<T, float> ? 1e-5 : 1e-12;
   int with_points = 0;
-  for (int it = 0; it < 24; ++it) {
+  for (int it = 0; it < 60; ++it) {
     const Ellipse2<T> a = random_ellipse<T>(rng), b = random_ellipse<T>(rng);
     const auto r = intersection(a, b);
     const QConic qa = q_of(a), qb = q_of(b);
@@ -239,7 +240,38 @@ TYPED_TEST(QuadraticExact, EllipsePairsAgainstGmpOracle) {
     const auto s = intersection(b, a);
     EXPECT_EQ(multiplicities(s), multiplicities(r));
   }
-  EXPECT_GT(with_points, 4);
+  EXPECT_GT(with_points, 10);
+}
+
+TYPED_TEST(QuadraticExact, RandomTangenciesAndNearTangenciesAgainstGmpOracle) {
+  using T = TypeParam;
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  // An axis-aligned ellipse (half-axes a, b) and a circle of radius r centred at (a + r, 0)
+  // touch at (a, 0) (both translated by a dyadic offset); r +- 64 eps gives two close crossings
+  // or none. The exact path decides these.
+  for (int it = 0; it < 12; ++it) {
+    const auto dy = [&](int lo, int hi, int bits) {
+      return static_cast<T>(std::ldexp(double(rng.uniform_int(lo, hi)), -bits));
+    };
+    const T a = dy(8, 40, 3), b = dy(8, 40, 3), r = dy(4, 40, 3), ox = dy(-64, 64, 4),
+            oy = dy(-64, 64, 4);
+    const T dr = it % 3 == 0 ? T(0) : (it % 3 == 1 ? T(64) : T(-64)) * eps_v<T>;
+    const Ellipse2<T> e = axis_ellipse<T>(ox, oy, a, b);
+    const Ellipse2<T> c = axis_ellipse<T>(ox + a + r, oy, r + dr, r + dr);
+    const auto res = intersection(e, c);
+    const auto want = oracle_multiplicities(q_of(e), q_of(c));
+    ASSERT_EQ(multiplicities(res), want) << it;
+    if (dr == T(0)) {
+      EXPECT_EQ(want, (std::vector<int>{2})) << it;
+      EXPECT_EQ(res.point[0], (Vec2<T>{ox + a, oy})) << it;
+      EXPECT_EQ(relation(e, c), RegionRelation::touching) << it;
+    } else {
+      EXPECT_EQ(relation(e, c), dr > T(0) ? RegionRelation::overlapping : RegionRelation::separated)
+          << it;
+    }
+    EXPECT_EQ(multiplicities(intersection(c, e)), want) << it;
+  }
 }
 
 TYPED_TEST(QuadraticExact, ConstructedTangencies) {
