@@ -1705,11 +1705,24 @@ R4 conic_conic(const Conic& a, const Conic& b) noexcept {
     }
   }
   // The exact decision; the rounded quartic only when the exact engine gives up (memory, or
-  // roots closer than its bisection budget: not reached by double input).
+  // roots closer than its bisection budget: not reached by double input). The pair is taken in
+  // a canonical order so that swapping the arguments gives bit-identical points.
   try {
+    const auto key = [](const Conic& k) {
+      return std::array<double, 16>{double(k.form), k.c.x,  k.c.y,  k.r,   k.u0.x, k.u0.y,
+                                    k.u1.x,         k.u1.y, k.e0,   k.e1,  k.q[0], k.q[1],
+                                    k.q[2],         k.q[3], k.q[4], k.q[5]};
+    };
+    const bool flip = key(b) < key(a);
+    const Conic& p = flip ? b : a;
+    const Conic& q = flip ? a : b;
     R4 e;
-    if (fast_pair(a, b, e)) return e;
-    if (exact_pair(a, b, e) == ExactOutcome::done) return e;
+    if (fast_pair(p, q, e) || exact_pair(p, q, e) == ExactOutcome::done) {
+      if (!flip) return e;
+      R4 s = swapped(e);
+      order_points(s, a, b);
+      return s;
+    }
   } catch (const std::bad_alloc&) {
   }
   Frame f;
