@@ -31,7 +31,6 @@
 #include <locus/intersection/result.hpp>
 #include <locus/primitives/quadratic_curve.hpp>
 
-#include <optional>
 
 namespace locus {
 
