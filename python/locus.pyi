@@ -317,6 +317,25 @@ def ellipse_ellipse(
     angle1: npt.ArrayLike,
     e1: npt.ArrayLike,
 ) -> CurveIntersections: ...
+def quadratic_curves(q0: npt.ArrayLike, q1: npt.ArrayLike) -> CurveIntersections: ...
+def circle_arc(
+    centers: npt.ArrayLike,
+    radii: npt.ArrayLike,
+    c1: npt.ArrayLike,
+    r1: npt.ArrayLike,
+    start1: npt.ArrayLike,
+    sweep1: npt.ArrayLike,
+) -> CurveIntersections: ...
+def arc_arc(
+    c0: npt.ArrayLike,
+    r0: npt.ArrayLike,
+    start0: npt.ArrayLike,
+    sweep0: npt.ArrayLike,
+    c1: npt.ArrayLike,
+    r1: npt.ArrayLike,
+    start1: npt.ArrayLike,
+    sweep1: npt.ArrayLike,
+) -> CurveIntersections: ...
 def convex_polygons_intersect(a: npt.ArrayLike, b: npt.ArrayLike) -> bool: ...
 def convex_polygon_intersection(a: npt.ArrayLike, b: npt.ArrayLike) -> ConvexIntersection: ...
 def first_contact(

@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: BSL-1.0
 // 2D curve intersections over arrays: circle_circle (intersection/circle_circle.hpp: the count
 // decided exactly, points constructed), segment_circle, circle_ellipse and ellipse_ellipse
-// (intersection/ circle_ellipse.hpp, ellipse_ellipse.hpp: the quartic of book section 7.5.2, up to
-// 4 points). Inputs are converted to float64 (read in place when they already are C-contiguous
-// float64); NaN, infinite or negative radii raise ValueError.
+// (intersection/ circle_ellipse.hpp, ellipse_ellipse.hpp: book section 7.5, up to 4 points,
+// multiplicities exact), quadratic_curves (general conic pairs, shared lines), circle_arc
+// and arc_arc (up to 2 points or 2 overlap arcs). Inputs are converted to float64 (read in place
+// when they already are C-contiguous float64); NaN, infinite or negative radii raise ValueError.
 #include "common.hpp"
 
+#include <locus/intersection/arc_arc.hpp>
+#include <locus/intersection/circle_arc.hpp>
 #include <locus/intersection/circle_circle.hpp>
 #include <locus/intersection/circle_ellipse.hpp>
 #include <locus/intersection/ellipse_ellipse.hpp>
+#include <locus/intersection/quadratic_curve_quadratic_curve.hpp>
 #include <locus/intersection/segment_circle.hpp>
 
 #include <limits>
@@ -33,6 +37,15 @@ py::array_t<double> f64(py::handle obj, const char* fn, const char* name, int nd
   check_finite(out.data(), static_cast<std::size_t>(out.size()), fn, name);
   return out;
 }
+
+/// Arcs (circle (n, 2) centres, radii, starts, sweeps) checked and read.
+struct ArcsIn {
+  py::array_t<double> c, r, start, sweep;
+  [[nodiscard]] Arc2<double> at(std::size_t i) const {
+    return {
+        {{c.data()[2 * i], c.data()[2 * i + 1]}, r.data()[i]}, start.data()[i], sweep.data()[i]};
+  }
+};
 
 /// CurveIntersections of n queries q(i) (an intersection() result with kind, count, point,
 /// multiplicity).
@@ -167,12 +180,12 @@ points ((n, 2, 2), NaN where unused), multiplicity (1 crossing, 2 tangency).)doc
 of each ellipse's first axis from the x axis, half-axis lengths e0, e1 (n, 2) > 0 (along the
 first axis and the second, counter-clockwise from it).
 
-Book section 7.5.2 (intersection/ellipse_ellipse.hpp): a quartic in the half-angle parameter
-of the first ellipse; crossings away from tangency are counted as for the exact curves,
-near-tangencies closer than about sqrt(eps) merge into one tangency. CurveIntersections: kind
+Book section 7.5 (intersection/ellipse_ellipse.hpp): the number of distinct real common
+points and each one's multiplicity are decided exactly (an integer resultant after a shear,
+a certified floating-point filter first); distinct points are never merged. CurveIntersections: kind
 (0 empty, 1 point, 2 points, 11 coincident), count (0..4), points ((n, 4, 2), by increasing
-angle on the first ellipse, NaN where unused), multiplicity ((n, 4): 1 crossing, 2 tangency, 0
-unused).)doc");
+angle on the first ellipse, NaN where unused), multiplicity ((n, 4): 1 crossing, 2 tangency, 3 or 4
+higher contact, 0 unused).)doc");
 
   m.def(
       "circle_ellipse",
@@ -205,6 +218,99 @@ unused).)doc");
 angle1 (n,) of the first axis, half-axes e1 (n, 2) > 0), as ellipse_ellipse
 (intersection/circle_ellipse.hpp): CurveIntersections with points (n, 4, 2) by increasing angle
 on the circle, multiplicity (n, 4) (1 crossing, 2 tangency), kind, count.)doc");
+
+  m.def(
+      "quadratic_curves",
+      [](py::handle q0, py::handle q1) -> py::object {
+        const char* fn = "quadratic_curves";
+        const auto a = f64(q0, fn, "q0", 2, 6), b = f64(q1, fn, "q1", 2, 6);
+        const py::ssize_t n = a.shape(0);
+        if (b.shape(0) != n) fail(fn, "q0 and q1 must have the same length n");
+        return curve_results<4>(static_cast<std::size_t>(n), [&](std::size_t i) {
+          const double* x = a.data() + 6 * i;
+          const double* y = b.data() + 6 * i;
+          return intersection(QuadraticCurve2<double>{x[0], x[1], x[2], x[3], x[4], x[5]},
+                              QuadraticCurve2<double>{y[0], y[1], y[2], y[3], y[4], y[5]});
+        });
+      },
+      py::arg("q0"), py::arg("q1"),
+      R"doc(Common points of n pairs of quadratic curves a x^2 + b xy + c y^2 + d x + e y + f = 0,
+coefficients q0, q1 (n, 6) in that order.
+
+Book section 7.5 (intersection/quadratic_curve_quadratic_curve.hpp): the number of distinct real
+common points and each one's intersection multiplicity are decided exactly for the curves as
+given (an integer resultant after a shear). CurveIntersections: kind (0 empty, 1 point,
+2 points, 5 line: a line shared by two line pairs, points 0 and 1 on it and point 2 the isolated
+common point of the other components when count is 3; 11 coincident: proportional
+coefficients), count (0..4), points ((n, 4, 2), by increasing x then y, NaN where unused),
+multiplicity ((n, 4): 1 crossing, 2 tangency, 3 or 4 higher contact, 0 for the line's points).)doc");
+
+  const auto arcs = [](const char* fn, py::handle c, py::handle r, py::handle st, py::handle sw,
+                       const char* names, py::ssize_t n) {
+    ArcsIn in{f64(c, fn, "centers", 2, 2), f64(r, fn, "radii", 1, 0), f64(st, fn, "starts", 1, 0),
+              f64(sw, fn, "sweeps", 1, 0)};
+    if (in.c.shape(0) != n || in.r.shape(0) != n || in.start.shape(0) != n ||
+        in.sweep.shape(0) != n)
+      fail(fn, std::string(names) + " must have the same length n");
+    for (py::ssize_t i = 0; i < n; ++i) {
+      if (in.r.data()[i] < 0)
+        fail(fn, "invalid_input: negative radius at entry " + std::to_string(i));
+      if (in.sweep.data()[i] < 0)
+        fail(fn, "invalid_input: negative sweep at entry " + std::to_string(i));
+    }
+    return in;
+  };
+
+  m.def(
+      "circle_arc",
+      [arcs](py::handle centers, py::handle radii, py::handle c1, py::handle r1, py::handle start1,
+             py::handle sweep1) -> py::object {
+        const char* fn = "circle_arc";
+        const auto pc = f64(centers, fn, "centers", 2, 2), pr = f64(radii, fn, "radii", 1, 0);
+        const py::ssize_t n = pc.shape(0);
+        if (pr.shape(0) != n) fail(fn, "centers and radii must have the same length n");
+        for (py::ssize_t i = 0; i < n; ++i)
+          if (pr.data()[i] < 0)
+            fail(fn, "invalid_input: negative radius at entry " + std::to_string(i));
+        const ArcsIn b =
+            arcs(fn, c1, r1, start1, sweep1, "centers, radii, c1, r1, start1, sweep1", n);
+        return curve_results<6>(static_cast<std::size_t>(n), [&](std::size_t i) {
+          return intersection(
+              Circle2<double>{{pc.data()[2 * i], pc.data()[2 * i + 1]}, pr.data()[i]}, b.at(i));
+        });
+      },
+      py::arg("centers"), py::arg("radii"), py::arg("c1"), py::arg("r1"), py::arg("start1"),
+      py::arg("sweep1"),
+      R"doc(Common points of n circles (centers (n, 2), radii (n,) >= 0) and arcs (circle c1 (n, 2),
+r1 (n,), start angle start1 (n,), counter-clockwise sweep1 (n,) >= 0, radians; >= 2 pi the whole
+circle).
+
+intersection/circle_arc.hpp: the circle-circle count decided exactly, then each point's angle
+tested against the arc (a point within a few ulps of an arc end may fall either way).
+CurveIntersections with points (n, 6, 2): kind 0 empty, 1 point, 2 points (multiplicity 1
+crossing, 2 tangency), 9 arc (the arc lies on the circle: start, middle, end, multiplicity 0),
+11 coincident (both whole circles).)doc");
+
+  m.def(
+      "arc_arc",
+      [arcs](py::handle c0, py::handle r0, py::handle start0, py::handle sweep0, py::handle c1,
+             py::handle r1, py::handle start1, py::handle sweep1) -> py::object {
+        const char* fn = "arc_arc";
+        const auto n = f64(c0, fn, "c0", 2, 2).shape(0);
+        const char* names = "c0, r0, start0, sweep0, c1, r1, start1, sweep1";
+        const ArcsIn a = arcs(fn, c0, r0, start0, sweep0, names, n);
+        const ArcsIn b = arcs(fn, c1, r1, start1, sweep1, names, n);
+        return curve_results<6>(static_cast<std::size_t>(n),
+                                [&](std::size_t i) { return intersection(a.at(i), b.at(i)); });
+      },
+      py::arg("c0"), py::arg("r0"), py::arg("start0"), py::arg("sweep0"), py::arg("c1"),
+      py::arg("r1"), py::arg("start1"), py::arg("sweep1"),
+      R"doc(Common points of n pairs of arcs (centre (n, 2), radius (n,), start angle (n,),
+counter-clockwise sweep (n,) >= 0 each, radians).
+
+intersection/arc_arc.hpp: as circle_arc; on a common circle the overlap is one or two arcs
+(kind 9 arc, three points each: start, middle, end; count 3 or 6). CurveIntersections with
+points (n, 6, 2), multiplicity (n, 6).)doc");
 }
 
 }  // namespace locus::python

@@ -9,12 +9,19 @@
 #include <locus/intersection/detail/conic2.hpp>
 #include <locus/numeric/roots.hpp>
 
+#include "../core/big_int.hpp"
+#include "../numeric/integer_poly.hpp"
+
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <initializer_list>
 #include <limits>
+#include <new>
 #include <span>
+#include <vector>
 
 namespace locus::detail::conic2 {
 namespace {
@@ -979,6 +986,702 @@ R4 general_pair(const Conic& ka, const Conic& kb) noexcept {
 
 }  // namespace
 
+// ---------------------------------------------------------------------------------------------
+// Exact conic pairs (docs/notes/intersection.md, "Conic pairs: exact combinatorics").
+
+namespace {
+
+using Z = DynBigInt;
+using roots::ZPoly;
+
+/// The implicit coefficients a, b, c, d, e, f of a conic as integers: the curve exactly as
+/// stored (an ellipse as sum_i (u_i . (X - C))^2 / e_i^2 = 1 with u_i as given), times a power
+/// of two.
+struct ZConic {
+  std::array<Z, 6> q;
+};
+
+/// A shift s with x 2^s an integer for every x (s >= 0).
+int common_shift(std::initializer_list<double> xs) noexcept {
+  int s = 0;
+  for (const double x : xs) {
+    if (x == 0.0) continue;
+    const DoubleParts p = decompose(x);
+    s = std::max(s, -(p.exponent + std::countr_zero(p.mantissa)));
+  }
+  return s;
+}
+
+Z zd(double x, int s) { return Z::from_double(x, s); }
+Z pow2(int bits) { return Z(1) << static_cast<std::size_t>(bits); }
+
+ZConic exact_conic(const Conic& k) {
+  ZConic z;
+  switch (k.form) {
+    case Form::general: {
+      const int s = common_shift({k.q[0], k.q[1], k.q[2], k.q[3], k.q[4], k.q[5]});
+      for (std::size_t i = 0; i < 6; ++i) z.q[i] = zd(k.q[i], s);
+      break;
+    }
+    case Form::circle: {
+      // (x^2 + y^2 - 2 cx x - 2 cy y + cx^2 + cy^2 - r^2) 2^(2s).
+      const int s = common_shift({k.c.x, k.c.y, k.r});
+      const Z cx = zd(k.c.x, s), cy = zd(k.c.y, s), r = zd(k.r, s);
+      z.q = {pow2(2 * s),
+             Z(0),
+             pow2(2 * s),
+             -(cx << (static_cast<std::size_t>(s) + 1)),
+             -(cy << (static_cast<std::size_t>(s) + 1)),
+             cx * cx + cy * cy - r * r};
+      break;
+    }
+    case Form::ellipse: {
+      // sum_i e_(1-i)^2 (u_i . X - u_i . C)^2 - e0^2 e1^2, times 2^(6s); term degrees in the
+      // doubles: 4 (quadratic part), 5 (linear), 6 and 4 (constant).
+      const int s = common_shift({k.c.x, k.c.y, k.u0.x, k.u0.y, k.u1.x, k.u1.y, k.e0, k.e1});
+      const auto us = static_cast<std::size_t>(s);
+      const Z ux[2] = {zd(k.u0.x, s), zd(k.u1.x, s)}, uy[2] = {zd(k.u0.y, s), zd(k.u1.y, s)};
+      const Z cx = zd(k.c.x, s), cy = zd(k.c.y, s);
+      const Z w[2] = {zd(k.e1, s) * zd(k.e1, s), zd(k.e0, s) * zd(k.e0, s)};
+      Z a(0), b(0), c(0), d(0), e(0), f(0);
+      for (int i = 0; i < 2; ++i) {
+        const auto j = static_cast<std::size_t>(i);
+        const Z p = ux[j] * cx + uy[j] * cy;
+        a += w[j] * ux[j] * ux[j];
+        b += w[j] * ux[j] * uy[j];
+        c += w[j] * uy[j] * uy[j];
+        d -= w[j] * ux[j] * p;
+        e -= w[j] * uy[j] * p;
+        f += w[j] * p * p;
+      }
+      f -= (w[0] * w[1]) << (2 * us);
+      z.q = {a << (2 * us), b << (2 * us + 1), c << (2 * us), d << (us + 1), e << (us + 1), f};
+      break;
+    }
+  }
+  return z;
+}
+
+/// A conic as a polynomial in y over Z[x'] after the shear x' = x + k y:
+/// y2 y^2 + y1(x') y + y0(x'); deg the degree in y (2, or 1 for a line, 0 for a constant).
+struct InY {
+  ZPoly y2, y1, y0;
+  int deg;
+};
+
+ZPoly zp(std::initializer_list<Z> c) {
+  ZPoly p(c);
+  roots::trim(p);
+  return p;
+}
+
+InY sheared(const ZConic& z, const Z& k) {
+  const Z &a = z.q[0], &b = z.q[1], &c = z.q[2], &d = z.q[3], &e = z.q[4], &f = z.q[5];
+  // x = x' - k y.
+  InY r;
+  r.y2 = zp({a * k * k - b * k + c});
+  r.y1 = zp({e - d * k, b - (a * k << 1)});
+  r.y0 = zp({f, d, a});
+  r.deg = !r.y2.empty() ? 2 : !r.y1.empty() ? 1 : 0;
+  return r;
+}
+
+using roots::add;
+using roots::mul;
+using roots::sub;
+
+/// The resultant in y of two polynomials of degree 1 or 2 in y (Sylvester, up to sign).
+ZPoly resultant_y(const InY& p, const InY& q) {
+  if (p.deg == 2 && q.deg == 2) {
+    const ZPoly s = sub(mul(p.y2, q.y0), mul(p.y0, q.y2));
+    return sub(mul(s, s),
+               mul(sub(mul(p.y2, q.y1), mul(p.y1, q.y2)), sub(mul(p.y1, q.y0), mul(p.y0, q.y1))));
+  }
+  if (p.deg == 1 && q.deg == 1) return sub(mul(p.y1, q.y0), mul(p.y0, q.y1));
+  const InY& l = p.deg == 1 ? p : q;
+  const InY& m = p.deg == 1 ? q : p;
+  // m2 l0^2 - m1 l0 l1 + m0 l1^2.
+  return add(sub(mul(m.y2, mul(l.y0, l.y0)), mul(m.y1, mul(l.y0, l.y1))),
+             mul(m.y0, mul(l.y1, l.y1)));
+}
+
+/// A rounded n / d (d != 0), a few ulps, for integers of any size.
+double ratio(const Z& n, const Z& d) {
+  if (n.is_zero()) return 0.0;
+  const auto bn = static_cast<long>(n.bit_length()), bd = static_cast<long>(d.bit_length());
+  const long sn = std::max(0L, bn - 900), sd = std::max(0L, bd - 900);
+  const double x = (n >> static_cast<std::size_t>(sn)).to_double();
+  const double y = (d >> static_cast<std::size_t>(sd)).to_double();
+  return std::ldexp(x / y, static_cast<int>(std::clamp(sn - sd, -4000L, 4000L)));
+}
+
+/// The conic's coefficients rounded to double and scaled by one power of two (for residuals).
+std::array<double, 6> rounded(const ZConic& z) {
+  std::size_t bits = 0;
+  for (const Z& c : z.q) bits = std::max(bits, c.bit_length());
+  const std::size_t sh = bits > 900 ? bits - 900 : 0;
+  std::array<double, 6> r{};
+  for (std::size_t i = 0; i < 6; ++i) r[i] = (z.q[i] >> sh).to_double();
+  return r;
+}
+
+double eval(const std::array<double, 6>& q, double x, double y, double& mag) noexcept {
+  const double t[6] = {q[0] * x * x, q[1] * x * y, q[2] * y * y, q[3] * x, q[4] * y, q[5]};
+  mag = 0.0;
+  double v = 0.0;
+  for (const double ti : t) {
+    v += ti;
+    mag += std::abs(ti);
+  }
+  return v;
+}
+
+/// The y of the common point above the (rounded) abscissa x' = x + k y: a root of one
+/// conic's quadratic in y, the candidate with the smaller relative residual on both.
+V point_above(const std::array<double, 6>& qa, const std::array<double, 6>& qb, double k,
+              double xs) noexcept {
+  double best = std::numeric_limits<double>::infinity();
+  V out{xs, 0.0};
+  const auto score = [&](double y) {
+    const double x = xs - k * y;
+    double ma = 0.0, mb = 0.0;
+    const double va = eval(qa, x, y, ma), vb = eval(qb, x, y, mb);
+    const double sc = (ma > 0.0 ? std::abs(va) / ma : std::abs(va)) +
+                      (mb > 0.0 ? std::abs(vb) / mb : std::abs(vb));
+    if (sc < best) {
+      best = sc;
+      out = {x, y};
+    }
+  };
+  for (const auto* q : {&qa, &qb}) {
+    const double a = (*q)[0], b = (*q)[1], c = (*q)[2], d = (*q)[3], e = (*q)[4], f = (*q)[5];
+    const double y2 = a * k * k - b * k + c, y1 = (b - 2.0 * a * k) * xs + (e - d * k),
+                 y0 = (a * xs + d) * xs + f;
+    if (y2 != 0.0) {
+      const double disc = std::max(y1 * y1 - 4.0 * y2 * y0, 0.0);
+      const double qq = -0.5 * (y1 + std::copysign(std::sqrt(disc), y1));
+      if (qq != 0.0) {
+        score(qq / y2);
+        score(y0 / qq);
+      } else {
+        score(-y1 / (2.0 * y2));
+      }
+    } else if (y1 != 0.0) {
+      score(-y0 / y1);
+    }
+  }
+  return out;
+}
+
+/// Newton steps on both conics from p (a transversal point): kept while the residual drops.
+V polish(const std::array<double, 6>& qa, const std::array<double, 6>& qb, V p) noexcept {
+  const auto res = [&](const V& x) {
+    double ma = 0.0, mb = 0.0;
+    const double va = eval(qa, x.x, x.y, ma), vb = eval(qb, x.x, x.y, mb);
+    return (ma > 0.0 ? std::abs(va) / ma : 0.0) + (mb > 0.0 ? std::abs(vb) / mb : 0.0);
+  };
+  double r = res(p);
+  for (int it = 0; it < 3 && r > 0.0; ++it) {
+    double ma = 0.0, mb = 0.0;
+    const double va = eval(qa, p.x, p.y, ma), vb = eval(qb, p.x, p.y, mb);
+    const V ga{2.0 * qa[0] * p.x + qa[1] * p.y + qa[3], qa[1] * p.x + 2.0 * qa[2] * p.y + qa[4]};
+    const V gb{2.0 * qb[0] * p.x + qb[1] * p.y + qb[3], qb[1] * p.x + 2.0 * qb[2] * p.y + qb[4]};
+    const double det = ga.x * gb.y - ga.y * gb.x;
+    // Nearly parallel normals (a near-tangency): Newton would amplify the residual's rounding.
+    if (!(std::abs(det) > 0x1p-6 * length(ga) * length(gb)) || !std::isfinite(det)) break;
+    const V q{p.x - (va * gb.y - vb * ga.y) / det, p.y - (ga.x * vb - gb.x * va) / det};
+    const double rq = res(q);
+    if (!(rq < r) || !finite(q)) break;
+    p = q;
+    r = rq;
+  }
+  return p;
+}
+
+/// A line gx x + gy y + g0 = 0 with integer coefficients.
+struct ZLine {
+  Z x, y, c;
+};
+
+/// The common line of two conics with an identically vanishing resultant (not proportional),
+/// in the sheared coordinates (x', y); false when the structure is not the expected one.
+bool common_line(const InY& p, const InY& q, ZLine& g) {
+  if (p.deg == 1 || q.deg == 1) {
+    const InY& l = p.deg == 1 ? p : q;
+    const auto at = [](const ZPoly& v, std::size_t i) { return i < v.size() ? v[i] : Z(0); };
+    g = {at(l.y0, 1), at(l.y1, 0), at(l.y0, 0)};
+    return l.y1.size() == 1 && l.y0.size() <= 2;
+  }
+  // S = q2 p - p2 q = L1(x') y + L0(x') = h(x') G.
+  const ZPoly l1 = sub(mul(q.y2, p.y1), mul(p.y2, q.y1));
+  const ZPoly l0 = sub(mul(q.y2, p.y0), mul(p.y2, q.y0));
+  const auto at = [](const ZPoly& v, std::size_t i) { return i < v.size() ? v[i] : Z(0); };
+  if (l1.size() == 1) {
+    if (l0.size() > 2) return false;
+    g = {at(l0, 1), l1[0], at(l0, 0)};
+    return true;
+  }
+  if (l1.size() != 2) return false;
+  const Z &al = l1[1], &be = l1[0];
+  g = {al * at(l0, 2), al * al, al * at(l0, 1) - at(l0, 2) * be};
+  return true;
+}
+
+/// The conic divided by the line g (gy != 0), times gy: a line in (x', y).
+ZLine cofactor(const InY& p, const ZLine& g) {
+  const auto at = [](const ZPoly& v, std::size_t i) { return i < v.size() ? v[i] : Z(0); };
+  const Z& a2 = p.y2[0];
+  return {g.y * at(p.y1, 1) - a2 * g.x, a2 * g.y, g.y * at(p.y1, 0) - a2 * g.c};
+}
+
+void make_primitive(ZLine& l) {
+  ZPoly v{l.x, l.y, l.c};
+  roots::make_primitive(v);  // trims: pad back
+  v.resize(3, Z(0));
+  l = {v[0], v[1], v[2]};
+}
+
+/// The exact sign of the integer polynomial p at the double x: with x = m 2^e (e < 0),
+/// sum p_i m^i 2^(-e (n - i)) by Horner's rule.
+int exact_sign_at(const ZPoly& p, double x) {
+  if (p.empty()) return 0;
+  const DoubleParts d = decompose(x);
+  Z m = Z::from_double(x == 0.0 ? 0.0 : std::copysign(double(d.mantissa), x));
+  std::size_t step = 0;
+  if (d.exponent >= 0)
+    m = m << static_cast<std::size_t>(d.exponent);
+  else
+    step = static_cast<std::size_t>(-d.exponent);
+  Z acc = p.back();
+  for (std::size_t i = p.size() - 1; i-- > 0;)
+    acc = acc * m + (p[i] << (step * (p.size() - 1 - i)));
+  return acc.sign();
+}
+
+/// The cheap certified path: when the rounded coefficients decide (with rigorous running error
+/// bounds, Fd) that res is square-free and how many real roots it has, and the near-mode roots are
+/// bracketed by sign changes, the roots (all simple) bisected to adjacent doubles (signs filtered,
+/// exact when undecided); false when undecided.
+/// The core of the filter on coefficients c[0..n] (rigorous error bounds, leading one certified
+/// non-zero); res, when given, is the exact polynomial for signs the filter cannot tell (else
+/// bisection stops there, and roots must be bracketed within 2^-42 of their scale).
+bool filtered_core(const std::array<Fd, 5>& c, int n, const ZPoly* res, double width,
+                   std::vector<double>& out);
+
+bool filtered_roots(const ZPoly& res, std::vector<double>& out) {
+  out.clear();
+  const int n = roots::degree(res);
+  if (n < 1 || n > 4) return n == 0;
+  std::size_t bits = 0;
+  for (const Z& c : res) bits = std::max(bits, c.bit_length());
+  const std::size_t sh = bits > 1000 ? bits - 1000 : 0;
+  const int scale = -static_cast<int>(bits - sh);
+  std::array<Fd, 5> c{};
+  for (std::size_t i = 0; i < res.size(); ++i) {
+    const double x = std::ldexp((res[i] >> sh).to_double(), scale);
+    // Rounding to double, truncation by the shift (below one unit), underflow.
+    c[i] = {x, u * std::abs(x) + (sh > 0 ? std::ldexp(1.0, scale) : 0.0) + 0x1p-1070};
+  }
+  return filtered_core(c, n, &res, 0x1p-42, out);
+}
+
+bool filtered_core(const std::array<Fd, 5>& c, int n, const ZPoly* res, double width,
+                   std::vector<double>& out) {
+  out.clear();
+  std::array<double, 5> v{};
+  for (std::size_t i = 0; i < 5; ++i) v[i] = c[i].v;
+  int count = 0;
+  if (n == 1) {
+    count = 1;
+  } else if (n == 2) {
+    const int d = (c[1] * c[1] - (c[2] * c[0]).times_pow2(2)).sign();
+    if (d == 2 || d == 0) return false;
+    count = d > 0 ? 2 : 0;
+  } else if (n == 3) {
+    const Fd &a = c[3], &b = c[2], &cc = c[1], &d = c[0];
+    const Fd k18{18.0, 0.0}, k4{4.0, 0.0}, k27{27.0, 0.0};
+    const int s = (k18 * a * b * cc * d - k4 * b * b * b * d + b * b * cc * cc -
+                   k4 * a * cc * cc * cc - k27 * a * a * d * d)
+                      .sign();
+    if (s == 2 || s == 0) return false;
+    count = s > 0 ? 3 : 1;
+  } else {
+    const Fd &a = c[4], &b = c[3], &cc = c[2], &d = c[1], &e = c[0];
+    const auto k = [](double x) { return Fd{x, 0.0}; };
+    const Fd disc = k(256) * a * a * a * e * e * e - k(192) * a * a * b * d * e * e -
+                    k(128) * a * a * cc * cc * e * e + k(144) * a * a * cc * d * d * e -
+                    k(27) * a * a * d * d * d * d + k(144) * a * b * b * cc * e * e -
+                    k(6) * a * b * b * d * d * e - k(80) * a * b * cc * cc * d * e +
+                    k(18) * a * b * cc * d * d * d + k(16) * a * cc * cc * cc * cc * e -
+                    k(4) * a * cc * cc * cc * d * d - k(27) * b * b * b * b * e * e +
+                    k(18) * b * b * b * cc * d * e - k(4) * b * b * b * d * d * d -
+                    k(4) * b * b * cc * cc * cc * e + b * b * cc * cc * d * d;
+    const int s = disc.sign();
+    if (s == 2 || s == 0) return false;
+    if (s < 0) {
+      count = 2;
+    } else {
+      const int p = (k(8) * a * cc - k(3) * b * b).sign();
+      const int q = (k(64) * a * a * a * e - k(16) * a * a * cc * cc + k(16) * a * b * b * cc -
+                     k(16) * a * a * b * d - k(3) * b * b * b * b)
+                        .sign();
+      if (p == 2 || q == 2) return false;
+      count = (p < 0 && q < 0) ? 4 : 0;
+    }
+  }
+  if (count == 0) return true;
+  RootsResult<double> rr;
+  if (n == 1) rr = solve_linear(v[0], v[1]);
+  if (n == 2) rr = solve_quadratic(v[0], v[1], v[2]);
+  if (n == 3) rr = solve_cubic(v[0], v[1], v[2], v[3]);
+  if (n == 4) rr = solve_quartic(v[0], v[1], v[2], v[3], v[4]);
+  if (rr.status != Status::ok || rr.count != count) return false;
+  // The sign of res at x: filtered, exact when the filter cannot tell.
+  const auto sign_at = [&](double x) {
+    Fd acc = c[z(n)];
+    const Fd xv = Fd::var(x);
+    for (int i = n - 1; i >= 0; --i) acc = acc * xv + c[z(i)];
+    const int fs = acc.sign();
+    return fs != 2 || res == nullptr ? fs : exact_sign_at(*res, x);
+  };
+  double m = 0.0;
+  for (int i = 0; i < rr.count; ++i) m = std::max(m, std::abs(rr.roots[z(i)].value));
+  double prev_hi = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < rr.count; ++i) {
+    if (rr.roots[z(i)].multiplicity != 1) return false;
+    const double r = rr.roots[z(i)].value;
+    const double mag = std::max({std::abs(r), 0x1p-10 * m, 0x1p-1000});
+    double lo = 0.0, hi = 0.0;
+    int slo = 2, shi = 2;
+    for (const double rel : {0x1p-50, 0x1p-44, 0x1p-38, 0x1p-30, 0x1p-20}) {
+      lo = r - rel * mag;
+      hi = r + rel * mag;
+      slo = sign_at(lo);
+      shi = sign_at(hi);
+      if (slo != 2 && shi != 2 && slo * shi < 0) break;
+    }
+    if (slo == 2 || shi == 2 || slo * shi >= 0 || !(lo > prev_hi)) return false;
+    // Bisect down to adjacent doubles (every sign decided, exactly when needed).
+    for (int it = 0; it < 2100; ++it) {
+      const double mid = lo + 0.5 * (hi - lo);
+      if (!(mid > lo && mid < hi)) break;
+      const int sm = sign_at(mid);
+      if (sm == 2) break;
+      if (sm == 0) {
+        lo = hi = mid;
+        break;
+      }
+      (sm == slo ? lo : hi) = mid;
+    }
+    if (hi - lo > width * mag) return false;
+    prev_hi = hi;
+    out.push_back(0.5 * (lo + hi));
+  }
+  return true;
+}
+
+enum class ExactOutcome : std::uint8_t { done, fallback };
+
+void order_points(R4& r, const Conic& a, const Conic& b) noexcept {
+  const bool by_a = a.form != Form::general, by_b = !by_a && b.form != Form::general;
+  // Entries before `first` describe a line and stay in place.
+  const int first = r.kind == Kind::line ? 2 : 0;
+  const auto less = [&](int i, int j) {
+    if (by_a) return r.param_a[z(i)] < r.param_a[z(j)];
+    if (by_b) return r.param_b[z(i)] < r.param_b[z(j)];
+    const V p = r.point[z(i)], q = r.point[z(j)];
+    return p.x < q.x || (p.x == q.x && p.y < q.y);
+  };
+  for (int i = first + 1; i < r.count; ++i)
+    for (int j = i; j > first && less(j, j - 1); --j) {
+      std::swap(r.point[z(j)], r.point[z(j - 1)]);
+      std::swap(r.param_a[z(j)], r.param_a[z(j - 1)]);
+      std::swap(r.param_b[z(j)], r.param_b[z(j - 1)]);
+      std::swap(r.multiplicity[z(j)], r.multiplicity[z(j - 1)]);
+    }
+}
+
+/// Two conics with an identically vanishing resultant (not proportional): their common line, and
+/// the isolated common point of the other components when there is one.
+ExactOutcome shared_component(const Conic& ka, const Conic& kb, const InY& pa, const InY& pb,
+                              const Z& k, R4& r) {
+  // A shared component (not the whole curves: they are not proportional).
+  ZLine g;
+  if (!common_line(pa, pb, g) || g.y.is_zero()) return ExactOutcome::fallback;
+  // The isolated common point of the other components, when not on the line.
+  r.kind = Kind::line;
+  r.count = 2;
+  // Back to (x, y): x' = x + k y.
+  ZLine l{g.x, g.x * k + g.y, g.c};
+  make_primitive(l);
+  const Z n2 = l.x * l.x + l.y * l.y;
+  const V p0{ratio(-(l.c * l.x), n2), ratio(-(l.c * l.y), n2)};
+  const double dx = l.x.to_double(), dy = l.y.to_double();
+  const double big = std::max(std::abs(dx), std::abs(dy));
+  const V dir = V{-dy / big, dx / big};
+  const double step = std::max(1.0, max_abs(p0));
+  r.point[0] = p0;
+  r.point[1] = p0 + step * dir;
+  for (int i = 0; i < 2; ++i) {
+    r.param_a[z(i)] = curve_param(ka, r.point[z(i)]);
+    r.param_b[z(i)] = curve_param(kb, r.point[z(i)]);
+    r.multiplicity[z(i)] = 0;
+  }
+  if (pa.deg == 2 && pb.deg == 2) {
+    const ZLine la = cofactor(pa, g), lb = cofactor(pb, g);
+    const Z det = la.x * lb.y - lb.x * la.y;
+    if (!det.is_zero()) {
+      const Z nx = la.y * lb.c - lb.y * la.c, ny = la.c * lb.x - lb.c * la.x;
+      if (!(g.x * nx + g.y * ny + g.c * det).is_zero()) {
+        const Z x = nx - k * ny;
+        const V p{ratio(x, det), ratio(ny, det)};
+        r.point[2] = p;
+        r.param_a[2] = curve_param(ka, p);
+        r.param_b[2] = curve_param(kb, p);
+        r.multiplicity[2] = 1;
+        r.count = 3;
+      }
+    }
+  }
+  return ExactOutcome::done;
+}
+
+/// The implicit coefficients in Fd (rounded, with error bounds), unscaled.
+std::array<Fd, 6> fd_conic(const Conic& k) noexcept {
+  const auto neg = [](const Fd& x) { return Fd{0.0, 0.0} - x; };
+  std::array<Fd, 6> q{};
+  switch (k.form) {
+    case Form::general:
+      for (std::size_t i = 0; i < 6; ++i) q[i] = Fd::var(k.q[i]);
+      break;
+    case Form::circle: {
+      const Fd cx = Fd::var(k.c.x), cy = Fd::var(k.c.y), r = Fd::var(k.r);
+      q = {Fd{1.0, 0.0},          Fd{},
+           Fd{1.0, 0.0},          neg(cx.times_pow2(1)),
+           neg(cy.times_pow2(1)), cx * cx + cy * cy - r * r};
+      break;
+    }
+    case Form::ellipse: {
+      const Fd ux[2] = {Fd::var(k.u0.x), Fd::var(k.u1.x)},
+               uy[2] = {Fd::var(k.u0.y), Fd::var(k.u1.y)};
+      const Fd cx = Fd::var(k.c.x), cy = Fd::var(k.c.y);
+      const Fd w[2] = {Fd::var(k.e1) * Fd::var(k.e1), Fd::var(k.e0) * Fd::var(k.e0)};
+      for (std::size_t j = 0; j < 2; ++j) {
+        const Fd p = ux[j] * cx + uy[j] * cy;
+        q[0] = q[0] + w[j] * ux[j] * ux[j];
+        q[1] = q[1] + (w[j] * ux[j] * uy[j]).times_pow2(1);
+        q[2] = q[2] + w[j] * uy[j] * uy[j];
+        q[3] = q[3] - (w[j] * ux[j] * p).times_pow2(1);
+        q[4] = q[4] - (w[j] * uy[j] * p).times_pow2(1);
+        q[5] = q[5] + w[j] * p * p;
+      }
+      q[5] = q[5] - w[0] * w[1];
+      break;
+    }
+  }
+  return q;
+}
+
+/// The fast path: the resultant for k = 0 (leading coefficients in y certified non-zero) in Fd,
+/// its coefficients enclosing the exact ones, decided by the filter without big integers; false
+/// when anything is undecided (then the exact path).
+bool fast_pair(const Conic& ka, const Conic& kb, R4& r) {
+  const std::array<Fd, 6> a = fd_conic(ka), b = fd_conic(kb);
+  if (a[2].sign() == 2 || a[2].sign() == 0 || b[2].sign() == 2 || b[2].sign() == 0) return false;
+  using FP = std::array<Fd, 5>;
+  const auto mul = [](const FP& x, int dx, const FP& y, int dy) {
+    FP o{};
+    for (int i = 0; i <= dx; ++i)
+      for (int j = 0; j <= dy; ++j) o[z(i + j)] = o[z(i + j)] + x[z(i)] * y[z(j)];
+    return o;
+  };
+  const auto sub = [](const FP& x, const FP& y) {
+    FP o{};
+    for (std::size_t i = 0; i < 5; ++i) o[i] = x[i] - y[i];
+    return o;
+  };
+  const FP a2{a[2]}, a1{a[4], a[1]}, a0{a[5], a[3], a[0]};
+  const FP b2{b[2]}, b1{b[4], b[1]}, b0{b[5], b[3], b[0]};
+  const FP s = sub(mul(a2, 0, b0, 2), mul(a0, 2, b2, 0));
+  const FP res = sub(mul(s, 2, s, 2), mul(sub(mul(a2, 0, b1, 1), mul(a1, 1, b2, 0)), 1,
+                                          sub(mul(a1, 1, b0, 2), mul(a0, 2, b1, 1)), 3));
+  double m = 0.0;
+  for (const Fd& c : res) m = std::max(m, std::abs(c.v) + c.e);
+  if (!(m > 0.0) || !std::isfinite(m)) return false;
+  const int sc = -std::ilogb(m);
+  FP c{};
+  for (std::size_t i = 0; i < 5; ++i) c[i] = res[i].times_pow2(sc);
+  int n = 4;
+  while (n >= 0 && c[z(n)].sign() == 0) --n;
+  if (n < 0 || c[z(n)].sign() == 2) return false;
+  std::vector<double> xs;
+  // Brackets within 2^-28, then Newton steps (required to apply: well-separated normals).
+  if (!filtered_core(c, n, nullptr, 0x1p-28, xs)) return false;
+  const std::array<double, 6> qa = {a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].v};
+  const std::array<double, 6> qb = {b[0].v, b[1].v, b[2].v, b[3].v, b[4].v, b[5].v};
+  R4 out;
+  for (const double x : xs) {
+    if (out.count == 4) break;
+    const V p = polish(qa, qb, point_above(qa, qb, 0.0, x));
+    // The projection (vertical) must be transversal to a curve at the point.
+    double cond = 0.0;
+    for (const auto* q : {&qa, &qb}) {
+      const V g{2.0 * (*q)[0] * p.x + (*q)[1] * p.y + (*q)[3],
+                (*q)[1] * p.x + 2.0 * (*q)[2] * p.y + (*q)[4]};
+      const double gl = length(g);
+      if (gl > 0.0) cond = std::max(cond, std::abs(g.y) / gl);
+    }
+    if (!(cond >= 0x1p-6) || !finite(p)) return false;
+    const V ga{2.0 * qa[0] * p.x + qa[1] * p.y + qa[3], qa[1] * p.x + 2.0 * qa[2] * p.y + qa[4]};
+    const V gb{2.0 * qb[0] * p.x + qb[1] * p.y + qb[3], qb[1] * p.x + 2.0 * qb[2] * p.y + qb[4]};
+    if (!(std::abs(ga.x * gb.y - ga.y * gb.x) > 0x1p-6 * length(ga) * length(gb))) return false;
+    const auto j = z(out.count++);
+    out.point[j] = p;
+    out.param_a[j] = curve_param(ka, p);
+    out.param_b[j] = curve_param(kb, p);
+    out.multiplicity[j] = 1;
+  }
+  out.kind = out.count == 0 ? Kind::empty : out.count == 1 ? Kind::point : Kind::points;
+  order_points(out, ka, kb);
+  r = out;
+  return true;
+}
+
+ExactOutcome exact_pair(const Conic& ka, const Conic& kb, R4& r) {
+  const ZConic za = exact_conic(ka), zb = exact_conic(kb);
+  // Proportional coefficients (exact): the same curve.
+  bool proportional = true;
+  for (std::size_t i = 0; i < 6 && proportional; ++i)
+    for (std::size_t j = i + 1; j < 6 && proportional; ++j)
+      proportional = za.q[i] * zb.q[j] == za.q[j] * zb.q[i];
+  if (proportional) {
+    r.kind = Kind::coincident;
+    return ExactOutcome::done;
+  }
+  // A constant "conic": f = 0 (never: it is proportional to everything) or f != 0 (empty set).
+  for (const ZConic* zc : {&za, &zb})
+    if (zc->q[0].is_zero() && zc->q[1].is_zero() && zc->q[2].is_zero() && zc->q[3].is_zero() &&
+        zc->q[4].is_zero())
+      return ExactOutcome::done;
+  // The shear: a k (of 12 candidates) whose resultant has the most distinct roots: then no two
+  // common points share x' (at most 10 candidates are bad: 6 directions joining two of at most
+  // four common points, 2 + 2 asymptotic directions), and a square-free resultant is good at
+  // once. Among good shears, the first whose points are well conditioned (the projection
+  // direction transversal to a curve at every point) gives the coordinates.
+  static constexpr int candidates[12] = {0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6};
+  const bool quad_a = !(za.q[0].is_zero() && za.q[1].is_zero() && za.q[2].is_zero());
+  const bool quad_b = !(zb.q[0].is_zero() && zb.q[1].is_zero() && zb.q[2].is_zero());
+  const std::array<double, 6> qa = rounded(za), qb = rounded(zb);
+  struct Cand {
+    int k;
+    ZPoly res;
+    int distinct;
+    bool square_free;
+  };
+  std::vector<Cand> cands;
+  int max_distinct = -1;
+  bool have_fallback = false;
+  R4 fallback;
+  // Points of a good shear from its real roots; false when ill conditioned.
+  const auto build = [&](int kc, const std::vector<double>& xs, const std::vector<int>& mult,
+                         R4& out) {
+    out = R4{};
+    bool good = true;
+    const double k = kc, dn = std::sqrt(1.0 + k * k);
+    for (std::size_t i = 0; i < xs.size() && out.count < 4; ++i) {
+      V p = point_above(qa, qb, k, xs[i]);
+      if (mult[i] == 1) p = polish(qa, qb, p);
+      double cond = 0.0;
+      for (const auto* q : {&qa, &qb}) {
+        const V g{2.0 * (*q)[0] * p.x + (*q)[1] * p.y + (*q)[3],
+                  (*q)[1] * p.x + 2.0 * (*q)[2] * p.y + (*q)[4]};
+        const double gl = length(g);
+        if (gl > 0.0) cond = std::max(cond, std::abs(g.y - k * g.x) / (gl * dn));
+      }
+      good = good && cond >= 0x1p-6;
+      const auto j = z(out.count++);
+      out.point[j] = p;
+      out.param_a[j] = curve_param(ka, p);
+      out.param_b[j] = curve_param(kb, p);
+      out.multiplicity[j] = mult[i];
+    }
+    out.kind = out.count == 0 ? Kind::empty : out.count == 1 ? Kind::point : Kind::points;
+    order_points(out, ka, kb);
+    return good;
+  };
+  // The exact real roots of a good shear's resultant, then its points.
+  const auto exact_points = [&](const Cand& c, R4& out, bool& ok) {
+    std::vector<Root<double>> found;
+    const double inf = std::numeric_limits<double>::infinity();
+    ok = roots::exact_real_roots_of_integers<double>(c.res, -inf, inf, RootOptions{}, found) ==
+         Status::ok;
+    std::vector<double> xs;
+    std::vector<int> mult;
+    for (const Root<double>& rt : found) {
+      xs.push_back(rt.value);
+      mult.push_back(rt.multiplicity);
+    }
+    return ok && build(c.k, xs, mult, out);
+  };
+  const auto consider = [&](const R4& got, bool good) {
+    if (good) {
+      r = got;
+      return true;
+    }
+    if (!have_fallback) {
+      fallback = got;
+      have_fallback = true;
+    }
+    return false;
+  };
+  for (const int kc : candidates) {
+    const Z k(kc);
+    const InY pa = sheared(za, k), pb = sheared(zb, k);
+    // Leading coefficients in y must be non-zero constants (no common point at infinity in the
+    // projection direction; the degree in y is the conic's degree).
+    if (pa.deg != (quad_a ? 2 : 1) || pb.deg != (quad_b ? 2 : 1)) continue;
+    if (pa.deg == 1 && pa.y1.size() != 1) continue;
+    if (pb.deg == 1 && pb.y1.size() != 1) continue;
+    ZPoly res = resultant_y(pa, pb);
+    if (res.empty()) return shared_component(ka, kb, pa, pb, k, r);
+    bool filtered = false;
+    if (cands.empty()) {
+      // The first admissible shear: the cheap certified path when it decides.
+      std::vector<double> simple;
+      if ((filtered = filtered_roots(res, simple))) {
+        R4 got;
+        const bool good = build(kc, simple, std::vector<int>(simple.size(), 1), got);
+        if (consider(got, good)) return ExactOutcome::done;
+      }
+    }
+    const ZPoly g = roots::gcd(res, roots::derivative(res));
+    const int distinct = roots::degree(res) - roots::degree(g);
+    max_distinct = std::max(max_distinct, distinct);
+    cands.push_back({kc, std::move(res), distinct, roots::degree(g) <= 0});
+    if (cands.back().square_free && !filtered) {
+      R4 got;
+      bool ok = false;
+      const bool good = exact_points(cands.back(), got, ok);
+      if (!ok) return ExactOutcome::fallback;
+      if (consider(got, good)) return ExactOutcome::done;
+    }
+  }
+  if (max_distinct < 0) return ExactOutcome::fallback;
+  for (const Cand& c : cands) {
+    if (c.distinct != max_distinct || c.square_free) continue;  // bad, or already tried
+    R4 got;
+    bool ok = false;
+    const bool good = exact_points(c, got, ok);
+    if (!ok) return ExactOutcome::fallback;
+    if (consider(got, good)) return ExactOutcome::done;
+  }
+  if (!have_fallback) return ExactOutcome::fallback;
+  r = fallback;
+  return ExactOutcome::done;
+}
+
+}  // namespace
+
 R4 conic_conic(const Conic& a, const Conic& b) noexcept {
   R4 r;
   if (!valid_conic(a) || !valid_conic(b)) return r;
@@ -1001,6 +1704,27 @@ R4 conic_conic(const Conic& a, const Conic& b) noexcept {
       return r;
     }
   }
+  // The exact decision; the rounded quartic only when the exact engine gives up (memory, or
+  // roots closer than its bisection budget: not reached by double input). The pair is taken in
+  // a canonical order so that swapping the arguments gives bit-identical points.
+  try {
+    const auto key = [](const Conic& k) {
+      return std::array<double, 16>{double(k.form), k.c.x,  k.c.y,  k.r,   k.u0.x, k.u0.y,
+                                    k.u1.x,         k.u1.y, k.e0,   k.e1,  k.q[0], k.q[1],
+                                    k.q[2],         k.q[3], k.q[4], k.q[5]};
+    };
+    const bool flip = key(b) < key(a);
+    const Conic& p = flip ? b : a;
+    const Conic& q = flip ? a : b;
+    R4 e;
+    if (fast_pair(p, q, e) || exact_pair(p, q, e) == ExactOutcome::done) {
+      if (!flip) return e;
+      R4 s = swapped(e);
+      order_points(s, a, b);
+      return s;
+    }
+  } catch (const std::bad_alloc&) {
+  }
   Frame f;
   if (frame_of(a, f)) return frame_conic(a, f, b);
   if (frame_of(b, f)) {
@@ -1022,29 +1746,31 @@ RegionRelation ellipse_relation(const Conic& a, const Conic& b) noexcept {
     if (r.multiplicity[z(i)] % 2 == 1) return RegionRelation::overlapping;
     touching = true;
   }
-  // No crossing: a boundary point of one, away from the tangencies, lies strictly inside the
-  // other or not.
-  const auto probe = [&](const Frame& f, bool use_b) {
-    double best = -1.0, th = 0.0;
-    for (int i = 0; i < 8; ++i) {
-      const double c = i * (pi / 4.0);
-      double near = two_pi;
-      for (int j = 0; j < r.count; ++j) {
-        const double pj = use_b ? r.param_b[z(j)] : r.param_a[z(j)];
-        near = std::min(near, std::abs(normalise_angle(c - pj)));
-      }
-      if (near > best) {
-        best = near;
-        th = c;
-      }
+  // No crossing: the regions are nested or have disjoint interiors. A centre strictly inside
+  // the other region means nested, and then the larger area contains (both exact).
+  const bool b_centre_in_a = value_sign(a, b.c) < 0, a_centre_in_b = value_sign(b, a.c) < 0;
+  if (!b_centre_in_a && !a_centre_in_b)
+    return touching ? RegionRelation::touching : RegionRelation::separated;
+  // Area pi e0 e1 / |u0 x u1| (the implicit ellipse as stored); a circle: pi r^2.
+  const auto area_parts = [](const Conic& k, P& num, P& den) {
+    if (k.form == Form::circle) {
+      num = P::var(k.r) * P::var(k.r);
+      den = P::var(1.0);
+    } else {
+      num = P::var(k.e0) * P::var(k.e1);
+      den = P::var(k.u0.x) * P::var(k.u1.y) - P::var(k.u0.y) * P::var(k.u1.x);
+      if (den.sign() < 0) den = P::var(0.0) - den;
     }
-    return f.c + std::cos(th) * f.e0v + std::sin(th) * f.e1v;
   };
-  if (value_sign(a, probe(fb, true)) < 0)
+  P na, da, nb, db;
+  area_parts(a, na, da);
+  area_parts(b, nb, db);
+  const int cmp = (na * db - nb * da).sign();
+  if (cmp > 0)
     return touching ? RegionRelation::a_contains_b_touching : RegionRelation::a_contains_b;
-  if (value_sign(b, probe(fa, false)) < 0)
+  if (cmp < 0)
     return touching ? RegionRelation::b_contains_a_touching : RegionRelation::b_contains_a;
-  return touching ? RegionRelation::touching : RegionRelation::separated;
+  return RegionRelation::equal;
 }
 
 }  // namespace locus::detail::conic2

@@ -91,6 +91,9 @@ inline void make_primitive(ZPoly& p) {
 /// distinct real roots in (a, b] is the drop in sign variations from a to b, and the last member
 /// is gcd(p, p') up to a constant (its roots are p's multiple roots).
 [[nodiscard]] std::vector<ZPoly> sturm_sequence(const ZPoly& p);
+/// The greatest common divisor of a and b in Z[x], primitive with a positive leading coefficient
+/// (empty when both are zero); by primitive pseudo-remainders.
+[[nodiscard]] ZPoly gcd(const ZPoly& a, const ZPoly& b);
 
 /// The real roots of p (any integer polynomial; the zero polynomial has none) in [lo, hi]
 /// (either may be infinite), appended to out in increasing order, each correctly rounded to T

@@ -486,6 +486,22 @@ Status exact_real_roots(std::span<const double> a, T lo, T hi, const RootOptions
   return exact_real_roots_of_integers(std::move(p), lo, hi, opt, out);
 }
 
+ZPoly gcd(const ZPoly& a, const ZPoly& b) {
+  ZPoly x = a, y = b;
+  trim(x);
+  trim(y);
+  if (degree(x) < degree(y)) std::swap(x, y);
+  while (!y.empty()) {
+    ZPoly r = neg_prem(x, y);
+    x = std::move(y);
+    y = std::move(r);
+  }
+  make_primitive(x);
+  if (!x.empty() && x.back().sign() < 0)
+    for (Z& c : x) c = -c;
+  return x;
+}
+
 template Status exact_real_roots_of_integers<float>(ZPoly, float, float, const RootOptions&,
                                                     std::vector<Root<float>>&);
 template Status exact_real_roots_of_integers<double>(ZPoly, double, double, const RootOptions&,

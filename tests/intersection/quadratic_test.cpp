@@ -562,14 +562,14 @@ TYPED_TEST(Quadratic, GeneralQuadraticPairs) {
   ASSERT_EQ(tang.count, 2);
   EXPECT_EQ(tang.multiplicity[0], 2);
   EXPECT_EQ(tang.multiplicity[1], 2);
-  // Proportional coefficients: the same curve. Two line pairs sharing the line y = x: a
-  // shared component (coincident, documented).
+  // Proportional coefficients: the same curve. Two line pairs sharing the line y = x: that
+  // line (the other lines meet on it, so no isolated point).
   EXPECT_EQ(intersection(hyp, QuadraticCurve2<T>{T(-2), T(0), T(2), T(0), T(0), T(2)}).kind,
             Kind::coincident);
-  EXPECT_EQ(intersection(QuadraticCurve2<T>{T(1), T(0), T(-1), T(0), T(0), T(0)},
-                         QuadraticCurve2<T>{T(0), T(1), T(-1), T(0), T(0), T(0)})
-                .kind,
-            Kind::coincident);
+  const auto shared = intersection(QuadraticCurve2<T>{T(1), T(0), T(-1), T(0), T(0), T(0)},
+                                   QuadraticCurve2<T>{T(0), T(1), T(-1), T(0), T(0), T(0)});
+  EXPECT_EQ(shared.kind, Kind::line);
+  EXPECT_EQ(shared.count, 2);
   // An ellipse given as a general curve uses the ellipse frame.
   const auto ell = intersection(QuadraticCurve2<T>{T(1), T(0), T(4), T(0), T(0), T(-16)}, par);
   EXPECT_EQ(ell.count, 4);

@@ -1,26 +1,29 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Intersection of two ellipses in the plane: intersects() (the book's test, on the curves) and
-// intersection() (find), relation() (the regions); row int2.quadratic.
-// Method (book section 7.5.2, figure 7.10, and 7.5 for the general conic of figure 7.5): the
-// first ellipse is mapped onto the unit circle; the other curve, written in that frame, is
-// restricted to it by the half-angle substitution x = (1 - s^2)/(1 + s^2), y = 2s/(1 + s^2): a
-// quartic in s whose real roots are the common points one to one (the parametrisation's missing
-// point is rotated to where the other curve is farthest from zero) and whose multiplicities are the
-// contact orders: the resultant of the book in a form with no spurious roots. Roots: numeric/
-// roots.hpp near mode, with the quartic's coefficient rounding bound (64 eps of its terms) as
-// coefficient_error: a tangency is reported (multiplicity 2) when the quartic's turning point is
-// within that bound of zero, so exact tangencies are found and near-tangencies closer than about
-// sqrt(eps) merge into one tangency; crossings far from tangency are counted exactly as for the
-// exact curves. Not exact: the quartic's coefficients are rounded (degree-4 polynomials of the
-// inputs through a frame change; exact evaluation would need the resultant's degree-16 terms).
+// Intersection of two ellipses in the plane: intersects() (the book's test, on the curves),
+// intersection() (find) and relation() (the regions, figures 7.7-7.9); row int2.quadratic.
+// Method (book section 7.5, figures 7.5 and 7.10; derivation: docs/notes/intersection.md, "Conic
+// pairs: exact combinatorics"): each curve's implicit equation exactly as stored (a circle
+// |X - C|^2 = r^2, an ellipse sum_i (axis[i] . (X - C))^2 / extent[i]^2 = 1 with the axes as
+// given) times a power of two has integer coefficients. After an integer shear x' = x + k y, the
+// resultant eliminating y is an integer polynomial R(x') of degree <= 4; for the k whose R has
+// the most distinct roots, its real roots are the real common points one to one and its root
+// multiplicities are the intersection multiplicities (1 a crossing, 2 a tangency, 3 or 4 a higher
+// contact). Decided exactly: a floating-point filter with rigorous error bounds (the sign of R's
+// discriminant, certified sign changes around each root) settles simple roots in microseconds;
+// otherwise the gcd chain and Sturm sequences of numeric/roots.hpp's exact engine. Distinct points
+// are never merged (points closer than an ulp may share a value, still listed separately).
+// Coordinates: x' correctly rounded (exact path) or bracketed by the filter (to 2^-42 of the
+// points' scale, or 2^-28 where Newton steps on both curves then apply), y from a curve's
+// quadratic at x'; k is also chosen so that the projection is transversal to a curve at every
+// point. Bound: points within about 2^-40 of the coordinates' magnitude, a few ulps typically.
 // Parameters: the angle on a circle or ellipse (point_at), 0 on a general quadratic curve.
 // Result (CurvePairIntersection2<T>): empty, point, points (by increasing param_a), each with its
-// multiplicity; coincident when the quartic vanishes within its bound (equal curves).
-// Bound: points lie on the first ellipse within 8 eps m and on the other within 64 eps m relative
-// to its scale away from tangency, about sqrt(eps) m along the curves near tangency. Degenerate: a
+// multiplicity; coincident for the same curve (proportional coefficients, exact). Degenerate: a
 // non-positive extent or radius (radius 0: the point, exactly tested), parallel axes, any NaN/Inf:
-// empty. Swapping the arguments gives the same set. Cost: a few microseconds.
+// empty. The swapped overload returns swapped(). Cost: a few microseconds when the filter decides;
+// tangencies and near-tangencies use big integers (tens to hundreds of microseconds, allocating;
+// std::bad_alloc falls back to the rounded half-angle quartic of section 7.5.2).
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/conic2.hpp>
@@ -29,7 +32,7 @@
 
 namespace locus {
 
-/// The common points of two ellipses and  (see the header comment).
+/// The common points of two ellipses (see the header comment).
 template <Real T>
 [[nodiscard]] inline CurvePairIntersection2<T> intersection(const Ellipse2<T>& a,
                                                             const Ellipse2<T>& b) noexcept {
@@ -42,9 +45,9 @@ template <Real T>
   return intersection(a, b).kind != Kind::empty;
 }
 
-/// How the two regions lie relative to each other (figures 7.7-7.9): from intersection() (a
-/// point of odd multiplicity means overlapping), then a boundary point of each, away from the
-/// tangencies, tested exactly against the other region.
+/// How the two regions lie relative to each other (figures 7.7-7.9), exactly: a common point of
+/// odd multiplicity means overlapping; otherwise a centre strictly inside the other region means
+/// nested, the larger area containing; any common point gives the touching variant.
 template <Real T>
 [[nodiscard]] inline RegionRelation relation(const Ellipse2<T>& a, const Ellipse2<T>& b) noexcept {
   namespace c = detail::conic2;

@@ -2,32 +2,35 @@
 #pragma once
 // Intersection of two general quadratic curves (conics) in the plane: intersects() (the book's
 // test) and intersection() (find); row int2.quadratic, book section 7.5 (figure 7.5).
-// Method: the class of each curve is exact (classify_conic, primitives/quadratic_curve.hpp).
-// When one is an ellipse or circle it becomes the frame of ellipse_ellipse.hpp's half-angle
-// quartic (to_ellipse, rounded), with that header's root treatment and bound. Otherwise (both
-// hyperbolas, parabolas or degenerate): the frame is rotated (one of eight angles) so that both
-// y^2 coefficients are large, y is eliminated by the resultant of the two quadratics in y,
-// R(x) = (a2 b0 - a0 b2)^2 - (a2 b1 - a1 b2)(a1 b0 - a0 b1), degree <= 4 (the book's approach),
-// solved in numeric/roots.hpp near mode with R's rounding bound (64 eps of its terms) as the
-// coefficient error; each root x takes the y of the first curve's quadratic at which the second
-// is nearer zero. Multiplicities are R's: a tangency is 2 — but two common points with the same
-// abscissa in the rotated frame (non-generic) also give a double root and are reported once.
-// Parameters: 0 on a general curve; the angle on the ellipse when converted.
-// Result (CurvePairIntersection2<T>): empty, point, points (by increasing param_a when one curve
-// is an ellipse, else by x in the rotated frame), each with its multiplicity; coincident when
-// the coefficients are exactly proportional (the same curve), and also when R vanishes within
-// its bound: the curves then share a component (a common line of two line pairs, or equal
-// curves up to rounding), whose points are not listed.
-// Bound: transversal points within about 64 eps of the curves' scale (relative residual);
-// about sqrt(eps) near tangency. Degenerate: any NaN/Inf coefficient: empty.
-// The swapped overload gives the same set. Cost: a few microseconds; no allocation.
+// Method (book section 7.5, figures 7.5 and 7.10; derivation: docs/notes/intersection.md, "Conic
+// pairs: exact combinatorics"): each curve's implicit equation exactly as stored (a circle
+// |X - C|^2 = r^2, an ellipse sum_i (axis[i] . (X - C))^2 / extent[i]^2 = 1 with the axes as
+// given) times a power of two has integer coefficients. After an integer shear x' = x + k y, the
+// resultant eliminating y is an integer polynomial R(x') of degree <= 4; for the k whose R has
+// the most distinct roots, its real roots are the real common points one to one and its root
+// multiplicities are the intersection multiplicities (1 a crossing, 2 a tangency, 3 or 4 a higher
+// contact). Decided exactly: a floating-point filter with rigorous error bounds (the sign of R's
+// discriminant, certified sign changes around each root) settles simple roots in microseconds;
+// otherwise the gcd chain and Sturm sequences of numeric/roots.hpp's exact engine. Distinct points
+// are never merged (points closer than an ulp may share a value, still listed separately).
+// Coordinates: x' correctly rounded (exact path) or bracketed by the filter (to 2^-42 of the
+// points' scale, or 2^-28 where Newton steps on both curves then apply), y from a curve's
+// quadratic at x'; k is also chosen so that the projection is transversal to a curve at every
+// point. Bound: points within about 2^-40 of the coordinates' magnitude, a few ulps typically.
+// Result (CurvePairIntersection2<T>): empty, point, points (by increasing x, then y), each with
+// its multiplicity, parameters 0; coincident for proportional coefficients (the same curve,
+// exact; also the zero curve, the whole plane). A shared component (R vanishes identically, exact)
+// of two line pairs or double lines is a rational line: kind line, point[0] and point[1] two of
+// its points (multiplicity 0), and when the other components meet off that line, point[2] that
+// isolated common point (multiplicity 1, count 3). A curve with a = b = c = 0 is the line
+// d x + e y + f = 0 (a non-zero constant: no point). Degenerate: any NaN/Inf coefficient: empty.
+// The swapped overload gives the same set. Cost: as ellipse_ellipse.hpp.
 
 #include <locus/core/scalar.hpp>
 #include <locus/intersection/detail/conic2.hpp>
 #include <locus/intersection/result.hpp>
 #include <locus/primitives/quadratic_curve.hpp>
 
-#include <optional>
 
 namespace locus {
 
@@ -41,14 +44,7 @@ template <Real T>
       !is_finite(a.f) || !is_finite(b.a) || !is_finite(b.b) || !is_finite(b.c) || !is_finite(b.d) ||
       !is_finite(b.e) || !is_finite(b.f))
     return {};
-  // Equal or proportional curves first (exact), then an ellipse as the frame when there is one.
-  const auto general = c::conic_conic(ka, kb);
-  if (general.kind == Kind::coincident) return c::cast<T>(general);
-  if (const std::optional<Ellipse2<T>> ea = to_ellipse(a))
-    return c::cast<T>(c::conic_conic(c::as_conic(*ea), kb));
-  if (const std::optional<Ellipse2<T>> eb = to_ellipse(b))
-    return swapped(c::cast<T>(c::conic_conic(c::as_conic(*eb), ka)));
-  return c::cast<T>(general);
+  return c::cast<T>(c::conic_conic(ka, kb));
 }
 
 /// Whether two quadratic curves have a common point.

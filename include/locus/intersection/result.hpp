@@ -181,7 +181,9 @@ template <class T, int N, class PA, class PB, int C>
 /// plus the multiplicity of each isolated point (1 a crossing, 2 a tangency, 3 or 4 a higher
 /// contact; 0 for the points describing a segment, ray, line or arc). Parameters are T: the
 /// linear parameter, the angle on a circle or arc, the angle parameter on an ellipse, 0 on a
-/// general quadratic curve (it has no parametrisation).
+/// general quadratic curve (it has no parametrisation). Two conics sharing a line (line pairs,
+/// double lines): kind line, entries 0 and 1 the line (multiplicity 0), and entry 2 (count 3,
+/// multiplicity 1) the isolated common point of the other components when there is one.
 template <Real T, int Capacity>
 struct CurveIntersection2 : Intersection<T, 2, T, T, Capacity> {
   std::array<int, Capacity> multiplicity{};  ///< of point[i] (see above)
