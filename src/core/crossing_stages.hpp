@@ -12,7 +12,8 @@
 // and batch sources): the error-free transformations need each operation rounded on its own.
 //
 // An Ops type names the value type S, the mask type M (what a comparison of S gives), and
-// abs(x), max(a, b) (a < b ? b : a), two_sum(a, b, s, e) and product_error(a, b, p).
+// abs(x), max(a, b) (a < b ? b : a), both(m1, m2) (and), two_sum(a, b, s, e) and product_error(a,
+// b, p).
 
 #include <locus/config.hpp>
 #include <locus/core/error_free.hpp>
@@ -32,6 +33,7 @@ struct ScalarOps {
   using M = bool;
   LOCUS_ALWAYS_INLINE static S abs(S x) { return std::abs(x); }
   LOCUS_ALWAYS_INLINE static S max(S a, S b) { return a < b ? b : a; }
+  LOCUS_ALWAYS_INLINE static M both(M a, M b) { return a && b; }
   LOCUS_ALWAYS_INLINE static void two_sum(S a, S b, S& s, S& e) { locus::two_sum(a, b, s, e); }
   LOCUS_ALWAYS_INLINE static S product_error(S a, S b, S p) {
     if constexpr (kFma)
@@ -50,6 +52,7 @@ struct LaneOps {
   using M = lanes::M<T>;
   LOCUS_ALWAYS_INLINE static S abs(S x) { return lanes::abs<T>(x); }
   LOCUS_ALWAYS_INLINE static S max(S a, S b) { return lanes::sel<T>(a < b, b, a); }
+  LOCUS_ALWAYS_INLINE static M both(M a, M b) { return a & b; }
   LOCUS_ALWAYS_INLINE static void two_sum(S a, S b, S& s, S& e) { lanes::two_sum<T>(a, b, s, e); }
   LOCUS_ALWAYS_INLINE static S product_error(S a, S b, S p) {
     return lanes::product_error_dekker<T>(a, b, p);
@@ -106,8 +109,7 @@ LOCUS_ALWAYS_INLINE inline Value<Ops> double_double(const Split<Ops>& d, const L
                  (d.l1 * d.l2 - d.l3 * d.l4);
   const S v = f.s + tail;
   const S av = Ops::abs(v);
-  using M = typename Ops::M;
-  return {v, static_cast<M>((av >= 0x1p-47 * f.perm) & (f.perm > 0x1p-900) & (f.perm < 0x1p1000))};
+  return {v, Ops::both(Ops::both(av >= 0x1p-47 * f.perm, f.perm > 0x1p-900), f.perm < 0x1p1000)};
 }
 
 /// The cross products of the triple-length stage, exact: c1 + c1e = h1 l2, c2 + c2e = l1 h2,
@@ -158,9 +160,8 @@ LOCUS_ALWAYS_INLINE inline Value<Ops> triple(const Split<Ops>& d, const Leading<
   Ops::two_sum(f.s, g, t, te);
   const S v = t + (te + second);
   const S av = Ops::abs(v);
-  using M = typename Ops::M;
-  return {v, static_cast<M>((av >= 0x1p-90 * f.perm) & (f.perm >= 0x1p-800) & (f.perm <= 0x1p900) &
-                            (hmax < 0x1p990))};
+  return {v, Ops::both(Ops::both(av >= 0x1p-90 * f.perm, f.perm >= 0x1p-800),
+                       Ops::both(f.perm <= 0x1p900, hmax < 0x1p990))};
 }
 
 }  // namespace locus::detail::crossing_stages
