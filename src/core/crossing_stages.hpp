@@ -59,6 +59,13 @@ struct LaneOps {
   }
 };
 
+/// p + e = a b exactly, p = fl(a b) (core/error_free.hpp's two_product, in Ops).
+template <class Ops, class S = typename Ops::S>
+LOCUS_ALWAYS_INLINE inline void two_product(S a, S b, S& p, S& e) {
+  p = a * b;
+  e = Ops::product_error(a, b, p);
+}
+
 /// The differences split exactly: b.x - a.x = h1 + l1, d.y - c.y = h2 + l2, b.y - a.y = h3 + l3,
 /// d.x - c.x = h4 + l4 (two_sum), so det = (h1 + l1)(h2 + l2) - (h3 + l3)(h4 + l4).
 template <class Ops>
@@ -83,10 +90,8 @@ struct Leading {
 template <class Ops>
 LOCUS_ALWAYS_INLINE inline Leading<Ops> leading(const Split<Ops>& d) {
   Leading<Ops> r;
-  r.p = d.h1 * d.h2;
-  r.q = d.h3 * d.h4;
-  r.pe = Ops::product_error(d.h1, d.h2, r.p);
-  r.qe = Ops::product_error(d.h3, d.h4, r.q);
+  two_product<Ops>(d.h1, d.h2, r.p, r.pe);
+  two_product<Ops>(d.h3, d.h4, r.q, r.qe);
   Ops::two_sum(r.p, -r.q, r.s, r.se);
   r.perm = Ops::abs(r.p) + Ops::abs(r.q);
   return r;
@@ -121,14 +126,10 @@ struct Cross {
 template <class Ops>
 LOCUS_ALWAYS_INLINE inline Cross<Ops> cross(const Split<Ops>& d) {
   Cross<Ops> r;
-  r.c1 = d.h1 * d.l2;
-  r.c2 = d.l1 * d.h2;
-  r.c3 = d.h3 * d.l4;
-  r.c4 = d.l3 * d.h4;
-  r.c1e = Ops::product_error(d.h1, d.l2, r.c1);
-  r.c2e = Ops::product_error(d.l1, d.h2, r.c2);
-  r.c3e = Ops::product_error(d.h3, d.l4, r.c3);
-  r.c4e = Ops::product_error(d.l3, d.h4, r.c4);
+  two_product<Ops>(d.h1, d.l2, r.c1, r.c1e);
+  two_product<Ops>(d.l1, d.h2, r.c2, r.c2e);
+  two_product<Ops>(d.h3, d.l4, r.c3, r.c3e);
+  two_product<Ops>(d.l3, d.h4, r.c4, r.c4e);
   return r;
 }
 
