@@ -2,6 +2,7 @@
 // boolean(op, a, b, fill_rule, grid_bits): polygon booleans (boolean/polygon_boolean.hpp). Each
 // operand is an (n, 2) ring or a list of (k, 2) rings, raw (self-intersections allowed), read
 // under the fill rule; float32 runs the float instantiation only when every array is float32.
+#include "boolean_result.hpp"
 #include "common.hpp"
 
 #include <locus/boolean/polygon_boolean.hpp>
@@ -55,7 +56,30 @@ py::array ring_out(const Polygon2<T>& p) {
   return a;
 }
 
+template <class T>
+py::object result_out(const BooleanResult<T>& r, const char* fn) {
+  check_status(r.status, fn, false);
+  py::object out = new_result("BooleanResult", r.status);
+  py::list polygons;
+  for (const auto& p : r.polygons) {
+    py::list rings;
+    rings.append(ring_out(p.outer));
+    for (const auto& h : p.holes) rings.append(ring_out(h));
+    polygons.append(rings);
+  }
+  out.attr("polygons") = polygons;
+  out.attr("grid") = py::float_(r.grid);
+  return out;
+}
+
 }  // namespace
+
+py::object boolean_result_out(const BooleanResult<float>& r, const char* fn) {
+  return result_out(r, fn);
+}
+py::object boolean_result_out(const BooleanResult<double>& r, const char* fn) {
+  return result_out(r, fn);
+}
 
 void bind_boolean(py::module_& m) {
   m.def(
@@ -92,18 +116,7 @@ void bind_boolean(py::module_& m) {
             py::gil_scoped_release nogil;
             r = boolean_op<T>(op, ra, rb, {rule, grid_bits});
           }
-          check_status(r.status, fn, false);
-          py::object out = new_result("BooleanResult", r.status);
-          py::list polygons;
-          for (const auto& p : r.polygons) {
-            py::list rings;
-            rings.append(ring_out(p.outer));
-            for (const auto& h : p.holes) rings.append(ring_out(h));
-            polygons.append(rings);
-          }
-          out.attr("polygons") = polygons;
-          out.attr("grid") = py::float_(r.grid);
-          return out;
+          return boolean_result_out(r, fn);
         };
         return all_float && !(va.empty() && vb.empty()) ? run.template operator()<float>()
                                                         : run.template operator()<double>();

@@ -3,6 +3,7 @@
 // polyline buffering (boolean/polygon_offset.hpp). A region is an (n, 2) ring, a list of rings
 // (outer then holes) or a list of such lists (a multipolygon, as BooleanResult.polygons); float32
 // runs the float instantiation only when every array is float32.
+#include "boolean_result.hpp"
 #include "common.hpp"
 
 #include <locus/boolean/polygon_offset.hpp>
@@ -76,33 +77,6 @@ std::vector<Vec2<T>> points_of(const ArrayView& v) {
   return pts;
 }
 
-template <class T>
-py::array ring_out(const Polygon2<T>& p) {
-  py::array_t<T> a(std::vector<py::ssize_t>{static_cast<py::ssize_t>(p.vertices.size()), 2});
-  T* d = a.mutable_data();
-  for (std::size_t i = 0; i < p.vertices.size(); ++i) {
-    d[2 * i] = p.vertices[i].x;
-    d[2 * i + 1] = p.vertices[i].y;
-  }
-  return a;
-}
-
-template <class T>
-py::object result_out(const OffsetResult<T>& r, const char* fn) {
-  check_status(r.status, fn, false);
-  py::object out = new_result("BooleanResult", r.status);
-  py::list polygons;
-  for (const auto& p : r.polygons) {
-    py::list rings;
-    rings.append(ring_out(p.outer));
-    for (const auto& h : p.holes) rings.append(ring_out(h));
-    polygons.append(rings);
-  }
-  out.attr("polygons") = polygons;
-  out.attr("grid") = py::float_(r.grid);
-  return out;
-}
-
 OffsetOptions options_of(const char* fn, const std::string& join, const std::string& end,
                          double miter_limit, double arc_tolerance, int grid_bits) {
   OffsetOptions o;
@@ -150,7 +124,7 @@ void bind_offset(py::module_& m) {
             py::gil_scoped_release nogil;
             r = offset(mp, static_cast<T>(delta), o);
           }
-          return result_out(r, fn);
+          return boolean_result_out(r, fn);
         };
         return all_float ? run.template operator()<float>() : run.template operator()<double>();
       },
@@ -183,7 +157,7 @@ Raises ValueError for NaN/Inf, miter_limit < 1, arc_tolerance < 0 or a bad grid_
             py::gil_scoped_release nogil;
             r = offset_polylines(lines, static_cast<T>(delta), o);
           }
-          return result_out(r, fn);
+          return boolean_result_out(r, fn);
         };
         return all_float ? run.template operator()<float>() : run.template operator()<double>();
       },

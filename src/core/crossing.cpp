@@ -23,7 +23,9 @@
 //    each minor exact as an expansion of at most four components (two products and their errors),
 //    summed exactly, compressed, and rounded once by summing from the smallest component up.
 //
-// The first stage is compiled twice: with fused multiply-adds for processors that have them
+// Stage 1 and the double-double tier before it are written once, over the scalar or SIMD lane
+// type, in crossing_stages.hpp (the batched segment intersection runs them in lanes).
+// They are compiled twice: with fused multiply-adds for processors that have them
 // (x86-64-v4, or AVX2 with FMA; chosen at run time by detail::batch_isa() of
 // core/detail/batch_isa.hpp, the lane code's selector), where a product's error is one instruction,
 // and with Dekker's product elsewhere (builds have no -march). Must be compiled with
@@ -40,57 +42,11 @@
 
 #include <cmath>
 
+#include "crossing_stages.hpp"
 #include "expansion.hpp"
 
 namespace locus::detail {
 namespace {
-
-template <bool kFma>
-LOCUS_ALWAYS_INLINE inline void product(double a, double b, double& p, double& e) noexcept {
-  p = a * b;
-  if constexpr (kFma)
-    e = __builtin_fma(a, b, -p);
-  else
-    e = product_error(a, b, p);
-}
-
-/// Stage 1 of the file comment: true and v when accepted.
-template <bool kFma>
-LOCUS_ALWAYS_INLINE inline bool turn2d_value_triple(const Vec2<double>& a, const Vec2<double>& b,
-                                                    const Vec2<double>& c, const Vec2<double>& d,
-                                                    double& v) noexcept {
-  double h1, l1, h2, l2, h3, l3, h4, l4;
-  two_sum(b.x, -a.x, h1, l1);
-  two_sum(d.y, -c.y, h2, l2);
-  two_sum(b.y, -a.y, h3, l3);
-  two_sum(d.x, -c.x, h4, l4);
-  double p, pe, q, qe, c1, c1e, c2, c2e, c3, c3e, c4, c4e;
-  product<kFma>(h1, h2, p, pe);
-  product<kFma>(h3, h4, q, qe);
-  product<kFma>(h1, l2, c1, c1e);
-  product<kFma>(l1, h2, c2, c2e);
-  product<kFma>(h3, l4, c3, c3e);
-  product<kFma>(l3, h4, c4, c4e);
-  double s, se;
-  two_sum(p, -q, s, se);
-  // First order: se + pe - qe + c1 + c2 - c3 - c4, the cascade's errors kept.
-  double f = se, e1, e2, e3, e4, e5, e6;
-  two_sum(f, pe, f, e1);
-  two_sum(f, -qe, f, e2);
-  two_sum(f, c1, f, e3);
-  two_sum(f, c2, f, e4);
-  two_sum(f, -c3, f, e5);
-  two_sum(f, -c4, f, e6);
-  const double second =
-      ((c1e + c2e) - (c3e + c4e)) + (l1 * l2 - l3 * l4) + (((e1 + e2) + (e3 + e4)) + (e5 + e6));
-  double t, te;
-  two_sum(s, f, t, te);
-  v = t + (te + second);
-  const double perm = std::abs(p) + std::abs(q);
-  const double hmax =
-      std::max(std::max(std::abs(h1), std::abs(h2)), std::max(std::abs(h3), std::abs(h4)));
-  return std::abs(v) >= 0x1p-90 * perm && perm >= 0x1p-800 && perm <= 0x1p900 && hmax < 0x1p990;
-}
 
 double turn2d_value_expansion(const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c,
                               const Vec2<double>& d) noexcept {
@@ -111,37 +67,21 @@ double turn2d_value_expansion(const Vec2<double>& a, const Vec2<double>& b, cons
   return ex::estimate(n, s);
 }
 
-/// The double-double tier of turn2d_value_dd (include/locus/core/crossing.hpp), same bound and
-/// acceptance: true and v when accepted.
-template <bool kFma>
-LOCUS_ALWAYS_INLINE inline bool turn2d_value_double(const Vec2<double>& a, const Vec2<double>& b,
-                                                    const Vec2<double>& c, const Vec2<double>& d,
-                                                    double& v) noexcept {
-  double h1, l1, h2, l2, h3, l3, h4, l4;
-  two_sum(b.x, -a.x, h1, l1);
-  two_sum(d.y, -c.y, h2, l2);
-  two_sum(b.y, -a.y, h3, l3);
-  two_sum(d.x, -c.x, h4, l4);
-  double p, pe, q, qe;
-  product<kFma>(h1, h2, p, pe);
-  product<kFma>(h3, h4, q, qe);
-  double s, se;
-  two_sum(p, -q, s, se);
-  const double tail =
-      (se + (pe - qe)) + ((h1 * l2 + l1 * h2) - (h3 * l4 + l3 * h4)) + (l1 * l2 - l3 * l4);
-  v = s + tail;
-  const double perm = std::abs(p) + std::abs(q);
-  return std::abs(v) >= 0x1p-47 * perm && perm > 0x1p-900 && perm < 0x1p1000;
-}
-
+/// The double-double tier of turn2d_value_dd (include/locus/core/crossing.hpp, same bound and
+/// acceptance), then stage 1, then stage 2 (crossing_stages.hpp holds the first two).
 template <bool kFma>
 LOCUS_ALWAYS_INLINE inline double accurate(const Vec2<double>& a, const Vec2<double>& b,
                                            const Vec2<double>& c, const Vec2<double>& d) noexcept {
-  double v;
-  if (turn2d_value_double<kFma>(a, b, c, d, v)) [[likely]]
-    return v;
-  if (turn2d_value_triple<kFma>(a, b, c, d, v)) [[likely]]
-    return v;
+  namespace st = crossing_stages;
+  using Ops = st::ScalarOps<kFma>;
+  const st::Split<Ops> h = st::split<Ops>(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
+  const st::Leading<Ops> lead = st::leading(h);
+  const st::Value<Ops> dd = st::double_double(h, lead);
+  if (dd.ok) [[likely]]
+    return dd.v;
+  const st::Value<Ops> tl = st::triple(h, lead, st::cross(h), st::largest_difference(h));
+  if (tl.ok) [[likely]]
+    return tl.v;
   return turn2d_value_expansion(a, b, c, d);
 }
 

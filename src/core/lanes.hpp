@@ -147,6 +147,28 @@ LOCUS_ALWAYS_INLINE inline bool all(M<T> m) {
   return true;
 }
 
+/// Lane-wise two_sum (core/error_free.hpp): s + e = a + b exactly, the same operations.
+template <Real T>
+LOCUS_ALWAYS_INLINE inline void two_sum(V<T> a, V<T> b, V<T>& s, V<T>& e) {
+  s = a + b;
+  const V<T> b_virtual = s - a;
+  const V<T> a_virtual = s - b_virtual;
+  e = (a - a_virtual) + (b - b_virtual);
+}
+
+/// Lane-wise product_error of core/error_free.hpp without FMA (Dekker's product with Veltkamp's
+/// split), for double: a b - p exactly in the range that header states, where it equals the
+/// FMA's error.
+template <class T = double>
+LOCUS_ALWAYS_INLINE inline V<T> product_error_dekker(V<T> a, V<T> b, V<T> p) {
+  static_assert(std::is_same_v<T, double>, "the splitting constant is double's");
+  constexpr T splitter = 0x1p27 + 1.0;
+  const V<T> ta = splitter * a, tb = splitter * b;
+  const V<T> ah = ta - (ta - a), al = a - ah;
+  const V<T> bh = tb - (tb - b), bl = b - bh;
+  return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
 /// A 3D vector per lane, with the scalar Vec3 operations in the same evaluation order as
 /// core/vec.hpp (dot = (x x' + y y') + z z').
 template <Real T>

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 
+#include "../core/crossing_stages.hpp"
 #include "../core/lanes.hpp"
 
 namespace locus {
@@ -48,73 +49,27 @@ LOCUS_ALWAYS_INLINE inline MD param_accurate(const DetL& f0, const DetL& f1, dou
   const VD e0 = (cp * f0.perm + cv * a0) * inv, e1 = (cp * f1.perm + cv * a1) * inv;
   return (r0 * e1 + r1 * e0 + 2.0 * u * e0 * e1 <= 2.99 * (1.0 - u * (e0 + e1))) & (dd >= 0x1p-900);
 }
-/// Lane-wise two_sum (core/error_free.hpp).
-LOCUS_ALWAYS_INLINE inline void two_sum(VD a, VD b, VD& s, VD& e) {
-  s = a + b;
-  const VD b_virtual = s - a;
-  const VD a_virtual = s - b_virtual;
-  e = (a - a_virtual) + (b - b_virtual);
-}
-/// Lane-wise product_error (core/error_free.hpp without FMA: Dekker's product with Veltkamp's
-/// split). Equal to the FMA's error wherever both are exact, which the callers' acceptance tests
-/// ensure (no product near underflow, no factor near overflow).
-LOCUS_ALWAYS_INLINE inline VD product_error(VD a, VD b, VD p) {
-  constexpr double splitter = 0x1p27 + 1.0;
-  const VD ta = splitter * a, tb = splitter * b;
-  const VD ah = ta - (ta - a), al = a - ah;
-  const VD bh = tb - (tb - b), bl = b - bh;
-  return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-}
 /// The value of detail::turn2d_value_accurate(q0, q1, q0, p) per lane, as src/core/crossing.cpp
-/// computes it (double-double, else triple length), and ok where that value is accepted by the
-/// tier that gives it and every error-free product is exact with Dekker's product as with the
-/// FMA (products above 2^-900 or zero, factors below 2^990); elsewhere the per-pair function.
+/// computes it (its double-double, else triple-length stage: core/crossing_stages.hpp), and ok
+/// where that value is accepted by the stage that gives it and every error-free product is exact
+/// with Dekker's product as with the FMA (products above 2^-900 or zero, factors below 2^990);
+/// elsewhere the per-pair function.
 LOCUS_ALWAYS_INLINE inline VD exact_side(VD q0x, VD q0y, VD q1x, VD q1y, VD px, VD py, MD& ok) {
-  VD h1, l1, h2, l2, h3, l3, h4, l4;
-  two_sum(q1x, -q0x, h1, l1);
-  two_sum(py, -q0y, h2, l2);
-  two_sum(q1y, -q0y, h3, l3);
-  two_sum(px, -q0x, h4, l4);
-  const VD p = h1 * h2, q = h3 * h4;
-  const VD pe = product_error(h1, h2, p), qe = product_error(h3, h4, q);
-  const VD c1 = h1 * l2, c2 = l1 * h2, c3 = h3 * l4, c4 = l3 * h4;
-  const VD c1e = product_error(h1, l2, c1), c2e = product_error(l1, h2, c2);
-  const VD c3e = product_error(h3, l4, c3), c4e = product_error(l3, h4, c4);
-  VD s, se;
-  two_sum(p, -q, s, se);
-  // Double-double (turn2d_value_double).
-  const VD tail =
-      (se + (pe - qe)) + ((h1 * l2 + l1 * h2) - (h3 * l4 + l3 * h4)) + (l1 * l2 - l3 * l4);
-  const VD vd = s + tail;
-  const VD perm = lanes::abs<double>(p) + lanes::abs<double>(q);
-  const MD dd_ok =
-      (lanes::abs<double>(vd) >= 0x1p-47 * perm) & (perm > 0x1p-900) & (perm < 0x1p1000);
-  // Triple length (turn2d_value_triple).
-  VD f = se, e1, e2, e3, e4, e5, e6;
-  two_sum(f, pe, f, e1);
-  two_sum(f, -qe, f, e2);
-  two_sum(f, c1, f, e3);
-  two_sum(f, c2, f, e4);
-  two_sum(f, -c3, f, e5);
-  two_sum(f, -c4, f, e6);
-  const VD second =
-      ((c1e + c2e) - (c3e + c4e)) + (l1 * l2 - l3 * l4) + (((e1 + e2) + (e3 + e4)) + (e5 + e6));
-  VD t, te;
-  two_sum(s, f, t, te);
-  const VD vt = t + (te + second);
-  const VD a1 = lanes::abs<double>(h1), a2 = lanes::abs<double>(h2);
-  const VD a3 = lanes::abs<double>(h3), a4 = lanes::abs<double>(h4);
-  const VD m12 = lanes::sel<double>(a1 < a2, a2, a1), m34 = lanes::sel<double>(a3 < a4, a4, a3);
-  const VD hmax = lanes::sel<double>(m12 < m34, m34, m12);
-  const MD triple_ok = (lanes::abs<double>(vt) >= 0x1p-90 * perm) & (perm >= 0x1p-800) &
-                       (perm <= 0x1p900) & (hmax < 0x1p990);
+  namespace st = detail::crossing_stages;
+  using Ops = st::LaneOps<double>;
+  const st::Split<Ops> h = st::split<Ops>(q0x, q0y, q1x, q1y, q0x, q0y, px, py);
+  const st::Leading<Ops> lead = st::leading(h);
+  const st::Cross<Ops> c = st::cross(h);
+  const VD hmax = st::largest_difference(h);
+  const st::Value<Ops> dd = st::double_double(h, lead);
+  const st::Value<Ops> tl = st::triple(h, lead, c, hmax);
   const auto exact = [](VD x) LOCUS_ALWAYS_INLINE_LAMBDA {
     const VD ax = lanes::abs<double>(x);
     return (ax > 0x1p-900) | (ax == 0.0);
   };
-  ok = exact(p) & exact(q) & exact(c1) & exact(c2) & exact(c3) & exact(c4) & (hmax < 0x1p990) &
-       (dd_ok | triple_ok);
-  return lanes::sel<double>(dd_ok, vd, vt);
+  ok = exact(lead.p) & exact(lead.q) & exact(c.c1) & exact(c.c2) & exact(c.c3) & exact(c.c4) &
+       (hmax < 0x1p990) & (dd.ok | tl.ok);
+  return lanes::sel<double>(dd.ok, dd.v, tl.v);
 }
 
 /// One end point side det[q1 - q0; p - q0] with exact differences (dx, dy = q1 - q0 split):
@@ -126,8 +81,8 @@ struct SideSplit {
 LOCUS_ALWAYS_INLINE inline SideSplit side_split(VD dxh, VD dxl, VD dyh, VD dyl, VD px, VD py,
                                                 VD q0x, VD q0y) {
   SideSplit t;
-  two_sum(px, -q0x, t.exh, t.exl);
-  two_sum(py, -q0y, t.eyh, t.eyl);
+  lanes::two_sum<double>(px, -q0x, t.exh, t.exl);
+  lanes::two_sum<double>(py, -q0y, t.eyh, t.eyl);
   t.l = dxh * t.eyh, t.r = dyh * t.exh;
   t.tail = (dxh * t.eyl + dxl * t.eyh) - (dyh * t.exl + dyl * t.exh);
   t.g = {(t.l - t.r) + t.tail, lanes::abs<double>(t.l) + lanes::abs<double>(t.r)};
@@ -144,8 +99,8 @@ LOCUS_ALWAYS_INLINE inline MD accurate_sides(MD need, const DetL& f0, const DetL
   if (!lanes::any<double>(need & ~naive)) [[likely]]
     return naive;
   VD dxh, dxl, dyh, dyl;
-  two_sum(q1x, -q0x, dxh, dxl);
-  two_sum(q1y, -q0y, dyh, dyl);
+  lanes::two_sum<double>(q1x, -q0x, dxh, dxl);
+  lanes::two_sum<double>(q1y, -q0y, dyh, dyl);
   const SideSplit t0 = side_split(dxh, dxl, dyh, dyl, p0x, p0y, q0x, q0y);
   const SideSplit t1 = side_split(dxh, dxl, dyh, dyl, p1x, p1y, q0x, q0y);
   const MD tails = ~naive & param_accurate(t0.g, t1.g, 1.01, 2.01);

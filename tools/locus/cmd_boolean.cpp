@@ -7,9 +7,9 @@
 
 #include <locus/boolean/polygon_boolean.hpp>
 #include <locus/io/geometry.hpp>
-#include <locus/io/wkt.hpp>
 
 #include <memory>
+#include <utility>
 
 namespace locus_cli {
 
@@ -39,17 +39,8 @@ void run_boolean(const BooleanOptions& o) {
                                                      : locus::BooleanOp::union_;
   const auto r = locus::boolean_op(op, as_multipolygon(a), as_multipolygon(b), o.grid_bits);
   require_ok(r.status, o.c.input + " " + o.op + " " + o.clip);
-  locus::Geometry2<double> g;
-  g.type = locus::GeometryType::multi_polygon;
   locus::SvgWriter svg;
-  std::size_t rings = 0;
-  for (const auto& p : r.polygons) {
-    g.polygons.push_back(locus::to_ring_polygon(p));
-    rings += 1 + p.holes.size();
-    std::vector<std::vector<Vec2d>> holes;
-    for (const auto& h : p.holes) holes.push_back(h.vertices);
-    svg.polygon(p.outer.vertices, holes, fill_style());
-  }
+  draw_polygons(svg, r.polygons);
   for (const auto* in : {&a, &b})
     for (const PolygonInput& p : *in) {
       std::uint32_t begin = 0;
@@ -59,17 +50,9 @@ void run_boolean(const BooleanOptions& o) {
         begin = end;
       }
     }
-  if (!o.c.svg.empty()) save_svg(o.c, svg);
-  const auto text = locus::write_wkt_string(g);
-  require_ok(text.status, "writing the result");
   JsonObject j;
-  j.str("command", "boolean")
-      .str("op", o.op)
-      .integer("polygons", static_cast<std::int64_t>(r.polygons.size()))
-      .integer("rings", static_cast<std::int64_t>(rings))
-      .number("grid", r.grid)
-      .str("wkt", text.data);
-  emit(o.c, text.data + "\n", j);
+  j.str("command", "boolean").str("op", o.op);
+  emit_polygons(o.c, r.polygons, r.grid, svg, std::move(j));
 }
 
 }  // namespace

@@ -110,35 +110,16 @@ void run_offset(const OffsetCliOptions& o) {
       require_ok(r.status, o.c.input + " offset");
     }
   }
-  locus::Geometry2<double> g;
-  g.type = locus::GeometryType::multi_polygon;
   locus::SvgWriter svg;
-  std::size_t rings = 0;
-  for (const auto& p : r.polygons) {
-    g.polygons.push_back(locus::to_ring_polygon(p));
-    rings += 1 + p.holes.size();
-    std::vector<std::vector<Vec2d>> holes;
-    for (const auto& h : p.holes) holes.push_back(h.vertices);
-    svg.polygon(p.outer.vertices, holes, fill_style());
-  }
+  draw_polygons(svg, r.polygons);
   for (const auto& p : region) {
     svg.polyline(p.outer.vertices, input_style(), true);
     for (const auto& h : p.holes) svg.polyline(h.vertices, input_style(), true);
   }
   for (const auto& p : paths) svg.polyline(p.vertices, input_style(), p.closed);
-  if (!o.c.svg.empty()) save_svg(o.c, svg);
-  const auto text = locus::write_wkt_string(g);
-  require_ok(text.status, "writing the result");
   JsonObject j;
-  j.str("command", "offset")
-      .number("delta", o.delta)
-      .str("join", o.join)
-      .str("end", o.end)
-      .integer("polygons", static_cast<std::int64_t>(r.polygons.size()))
-      .integer("rings", static_cast<std::int64_t>(rings))
-      .number("grid", r.grid)
-      .str("wkt", text.data);
-  emit(o.c, text.data + "\n", j);
+  j.str("command", "offset").number("delta", o.delta).str("join", o.join).str("end", o.end);
+  emit_polygons(o.c, r.polygons, r.grid, svg, std::move(j));
 }
 
 }  // namespace

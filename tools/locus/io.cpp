@@ -292,6 +292,34 @@ void save_svg(const Common& c, const locus::SvgWriter& svg) {
     throw InputError(c.svg + ": cannot write the file");
 }
 
+void draw_polygons(locus::SvgWriter& svg,
+                   std::span<const locus::PolygonWithHoles2<double>> polygons) {
+  for (const auto& p : polygons) {
+    std::vector<std::vector<Vec2d>> holes;
+    for (const auto& h : p.holes) holes.push_back(h.vertices);
+    svg.polygon(p.outer.vertices, holes, fill_style());
+  }
+}
+
+void emit_polygons(const Common& c, std::span<const locus::PolygonWithHoles2<double>> polygons,
+                   double grid, const locus::SvgWriter& svg, JsonObject json) {
+  locus::Geometry2<double> g;
+  g.type = locus::GeometryType::multi_polygon;
+  std::size_t rings = 0;
+  for (const auto& p : polygons) {
+    g.polygons.push_back(locus::to_ring_polygon(p));
+    rings += 1 + p.holes.size();
+  }
+  save_svg(c, svg);
+  const auto text = locus::write_wkt_string(g);
+  require_ok(text.status, "writing the result");
+  json.integer("polygons", static_cast<std::int64_t>(polygons.size()))
+      .integer("rings", static_cast<std::int64_t>(rings))
+      .number("grid", grid)
+      .str("wkt", text.data);
+  emit(c, text.data + "\n", json);
+}
+
 locus::SvgStyle input_style() {
   locus::SvgStyle s;
   s.stroke = "none";

@@ -148,6 +148,16 @@ void save_svg(const Common& c, const locus::SvgWriter& svg);
 [[nodiscard]] locus::SvgStyle result_style();
 [[nodiscard]] locus::SvgStyle fill_style();
 
+/// The first layer of the drawing of a polygon boolean's or offset's result: each polygon filled
+/// (fill_style), its holes cut out.
+void draw_polygons(locus::SvgWriter& svg,
+                   std::span<const locus::PolygonWithHoles2<double>> polygons);
+/// Writes a polygon boolean's or offset's result (boolean, offset): the drawing when --svg was
+/// given, then the polygons as one WKT MULTIPOLYGON line, or with --json the command's fields in
+/// json followed by "polygons", "rings" (outer rings and holes), "grid" and "wkt".
+void emit_polygons(const Common& c, std::span<const locus::PolygonWithHoles2<double>> polygons,
+                   double grid, const locus::SvgWriter& svg, JsonObject json);
+
 /// A mesh of the given points (z = 0 for 2D) and triangles, keeping only the used vertices.
 [[nodiscard]] locus::PolygonMesh<double> triangle_mesh(
     std::span<const Vec3d> points, std::span<const std::array<std::uint32_t, 3>> triangles);
