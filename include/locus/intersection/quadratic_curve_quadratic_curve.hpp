@@ -31,7 +31,6 @@
 #include <locus/intersection/result.hpp>
 #include <locus/primitives/quadratic_curve.hpp>
 
-
 namespace locus {
 
 /// The common points of two quadratic curves (see the header comment).
