@@ -16,22 +16,19 @@
 //   miter: the offset edges extended to meet, when the miter point is at most miter_limit |delta|
 //     from the corner (miter_limit >= 1, default 2); beyond it the square join.
 //   square: cut perpendicular to the corner's bisector at distance |delta| from the corner.
-// End types (open paths): round (half disc), square (extended by |delta|), butt (flat at the
-// end points: where a segment shorter than |delta| meets a turn, GEOS's curve tracing differs).
+// End types (open paths): round (half disc), square (extended by |delta|), butt (flat).
 // Result: the region united with (deflate: minus) a band of width |delta| on the offset side of
-// every edge (paths: both sides) and a join piece at every convex corner, computed as one raw
-// offset contour per ring resolved by boolean_op under the positive fill rule (derivation:
-// docs/notes/polygon_offset.md). Output is valid as boolean output is (outer CCW, holes CW).
+// every edge (paths: both sides) and a join at every convex corner, as one raw contour per ring
+// resolved by boolean_op under the positive fill rule (docs/notes/polygon_offset.md); output
+// valid as boolean output is (outer rings counter-clockwise, holes clockwise).
 // Degenerate: delta 0 returns the resolved region (empty for a polyline); empty input or a
 // region that vanishes returns no polygons, status ok; zero-length edges, repeated points and
 // collinear runs are dropped; a single-point path gives a disc (round), a square (square cap)
 // or nothing (butt). Status: non_finite_input (NaN/Inf coordinate or delta, or an offset
 // coordinate overflows), invalid_input (miter_limit < 1 or NaN, arc_tolerance < 0 or NaN,
-// grid_bits outside the boolean's range). Cost: a contour of O(n m) edges for n vertices and m
-// chords per round join (m <= ceil(pi / acos(1 - tol/|delta|))), then one boolean (two for a
-// region); a concave corner's spoke is dropped when its triangle lies in both adjacent bands
-// (exact test, same region), so dense input is slow only where |delta| exceeds its curvature
-// radius (see the notes).
+// grid_bits outside the boolean's range). Cost: O(n m) contour edges (m chords per round join),
+// then one boolean (two for a region); concave spokes covered by both bands are dropped (exact
+// test), so dense input is slow only where |delta| exceeds its curvature radius (see the notes).
 
 #include <locus/boolean/polygon_boolean.hpp>
 #include <locus/primitives/polyline.hpp>
