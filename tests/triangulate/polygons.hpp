@@ -10,6 +10,7 @@
 
 #include "support/typed.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -56,6 +57,10 @@ T snap(double v) {
 /// optional square holes of half-size h on a ring of radius rh (all inside the kernel disc).
 template <class T>
 Polygon<T> star_polygon(Rng& rng, int n, double r0, double r1, int holes = 0) {
+  // The holes reach 0.5 r0 + 0.2 sqrt(2) r0 < 0.79 r0 from c; an edge between vertices at
+  // radius >= r0 whose angles differ by at most 3.8 pi / n stays beyond r0 cos(1.9 pi / n), which
+  // is above 0.82 r0 for n >= 10: with fewer vertices a hole could cross the outer ring.
+  if (holes > 0) n = std::max(n, 10);
   Polygon<T> p;
   std::vector<locus::Vec2<T>> ring;
   for (int i = 0; i < n; ++i) {
