@@ -1,0 +1,517 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The generic intersection-query harness of rows int2.* and int3.* (harness2_test.cpp,
+// harness3_test.cpp), the counterpart of tests/distance/harness.hpp.
+//
+// check_intersection_pairs<T, A, B>(gen, opt, oracle) draws opt.cases pairs (a, b) from gen(rng)
+// and checks, for r = intersection(a, b) (any Intersection-shaped result: kind, count, point,
+// param_a, param_b):
+//   1. every reported point lies on both objects: its distance to each (the library's
+//      distance(point, object) in double, or an implicit residual: plane, sphere) is at most
+//      opt.residual eps m, m the largest |coordinate| or radius of the inputs, eps of T;
+//      and each parameter lies in its domain and maps (the primitive's point_at) to within
+//      opt.param m of its point (opt.param defaults to opt.residual eps);
+//   2. intersection(b, a) == swapped(r) bit for bit (kind, count, points, parameters) when the
+//      pair has a swapped overload (opt.exact_swap); for a same-type pair the same kind, count
+//      and point set (within opt.position m) with the parameters exchanged;
+//   3. intersects(a, b) == (r.kind != empty), in both argument orders, where intersects exists;
+//   4. scaling both inputs by 2^k (exact; k = +-20 float, +-100 double unless opt.scale_exp)
+//      gives the same kind and count, points on both scaled objects (check 1) and, for kinds
+//      point, points and segment, the points scaled (f p within opt.position f m);
+//   5. an exact rigid motion (a signed permutation of the axes, i.e. the reflections and 90 degree
+//      rotations, and, when opt.translate, a translation by multiples of 2^-4, exact for the
+//      grid inputs of the generators) gives the same kind and count, points on both moved objects
+//      and (point, points, segment) the moved points within opt.position m;
+//   6. an optional oracle (exact GMP: linear_oracle.hpp, conic_oracle.hpp, linear3_oracle.hpp
+//      or an exact test of the pair) gives the same kind and count.
+// Side<P> describes how the harness sees a primitive: the residual of a point, its size m, its
+// parameter map and domain, the rigid motion and the scaling. Failures print the seed, the case
+// and the inputs in hexadecimal floating point.
+
+#include <locus/distance/point_circle.hpp>
+#include <locus/distance/point_ellipse.hpp>
+#include <locus/distance/point_line.hpp>
+#include <locus/distance/point_ray.hpp>
+#include <locus/distance/point_segment.hpp>
+#include <locus/distance/point_triangle.hpp>
+#include <locus/intersection/result.hpp>
+#include <locus/primitives/circle.hpp>
+#include <locus/primitives/ellipse.hpp>
+#include <locus/primitives/line.hpp>
+#include <locus/primitives/plane.hpp>
+#include <locus/primitives/ray.hpp>
+#include <locus/primitives/segment.hpp>
+#include <locus/primitives/sphere.hpp>
+#include <locus/primitives/triangle.hpp>
+
+#include "support/typed.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace locus_test::ix {
+
+using locus::Kind;
+using locus::NoParam;
+using locus::Vec;
+
+/// An exact rigid motion: x -> (sign[i] x[perm[i]])_i + shift.
+template <class T, int N>
+struct Motion {
+  std::array<int, N> perm{};
+  std::array<T, N> sign{};
+  Vec<T, N> shift{};
+  Vec<T, N> operator()(const Vec<T, N>& x) const { return rot(x) + shift; }
+  Vec<T, N> rot(const Vec<T, N>& x) const {
+    Vec<T, N> y{};
+    for (int i = 0; i < N; ++i) y[i] = sign[std::size_t(i)] * x[perm[std::size_t(i)]];
+    return y;
+  }
+};
+
+template <class T, int N>
+Motion<T, N> random_motion(Rng& rng, bool translate) {
+  Motion<T, N> m;
+  for (int i = 0; i < N; ++i) m.perm[std::size_t(i)] = i;
+  for (int i = N - 1; i > 0; --i)
+    std::swap(m.perm[std::size_t(i)], m.perm[std::size_t(rng.uniform_int(0, i))]);
+  for (int i = 0; i < N; ++i) {
+    m.sign[std::size_t(i)] = rng.uniform_int(0, 1) ? T(1) : T(-1);
+    m.shift[i] = translate ? T(rng.uniform_int(-64, 64)) / T(16) : T(0);
+  }
+  return m;
+}
+
+inline std::string hex(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%a", x);
+  return buf;
+}
+template <class T, int N>
+std::string hex(const Vec<T, N>& v) {
+  std::string s = "(";
+  for (int i = 0; i < N; ++i) s += (i ? ", " : "") + hex(double(v[i]));
+  return s + ")";
+}
+template <class T, int N>
+Vec<double, N> vd(const Vec<T, N>& v) {
+  return locus::vec_cast<double>(v);
+}
+template <class T, int N>
+double inf_norm(const Vec<T, N>& v) {
+  double m = 0;
+  for (int i = 0; i < N; ++i) m = std::max(m, std::abs(double(v[i])));
+  return m;
+}
+
+template <class P>
+struct Side;
+
+// ---- linear components --------------------------------------------------------------------
+template <class T, int N>
+struct Side<locus::Segment<T, N>> {
+  using P = locus::Segment<T, N>;
+  static double residual(const P& s, const Vec<T, N>& x) {
+    return double(locus::distance(vd(x), locus::Segment<double, N>{vd(s.p0), vd(s.p1)}).distance);
+  }
+  static double size(const P& s) { return std::max(inf_norm(s.p0), inf_norm(s.p1)); }
+  static Vec<double, N> at(const P& s, T t) { return vd(s.p0) + double(t) * (vd(s.p1) - vd(s.p0)); }
+  static bool param_ok(const P&, T t) { return t >= T(0) && t <= T(1); }
+  static P moved(const P& s, const Motion<T, N>& m) { return {m(s.p0), m(s.p1)}; }
+  static P scaled(const P& s, T f) { return {f * s.p0, f * s.p1}; }
+  static std::string str(const P& s) { return "segment " + hex(s.p0) + " " + hex(s.p1); }
+};
+
+template <class T, int N>
+struct Side<locus::Ray<T, N>> {
+  using P = locus::Ray<T, N>;
+  static double residual(const P& r, const Vec<T, N>& x) {
+    return double(
+        locus::distance(vd(x), locus::Ray<double, N>{vd(r.origin), vd(r.direction)}).distance);
+  }
+  static double size(const P& r) { return std::max(inf_norm(r.origin), inf_norm(r.direction)); }
+  static Vec<double, N> at(const P& r, T t) { return vd(r.origin) + double(t) * vd(r.direction); }
+  static bool param_ok(const P&, T t) { return t >= T(0) && std::isfinite(double(t)); }
+  static P moved(const P& r, const Motion<T, N>& m) { return {m(r.origin), m.rot(r.direction)}; }
+  static P scaled(const P& r, T f) { return {f * r.origin, f * r.direction}; }
+  static std::string str(const P& r) { return "ray " + hex(r.origin) + " " + hex(r.direction); }
+};
+
+template <class T, int N>
+struct Side<locus::Line<T, N>> {
+  using P = locus::Line<T, N>;
+  static double residual(const P& l, const Vec<T, N>& x) {
+    return double(
+        locus::distance(vd(x), locus::Line<double, N>{vd(l.origin), vd(l.direction)}).distance);
+  }
+  static double size(const P& l) { return std::max(inf_norm(l.origin), inf_norm(l.direction)); }
+  static Vec<double, N> at(const P& l, T t) { return vd(l.origin) + double(t) * vd(l.direction); }
+  static bool param_ok(const P&, T t) { return std::isfinite(double(t)); }
+  static P moved(const P& l, const Motion<T, N>& m) { return {m(l.origin), m.rot(l.direction)}; }
+  static P scaled(const P& l, T f) { return {f * l.origin, f * l.direction}; }
+  static std::string str(const P& l) { return "line " + hex(l.origin) + " " + hex(l.direction); }
+};
+
+// ---- curves -------------------------------------------------------------------------------
+template <class T>
+struct Side<locus::Circle2<T>> {
+  using P = locus::Circle2<T>;
+  static double residual(const P& c, const Vec<T, 2>& x) {
+    return std::abs(locus::length(vd(x) - vd(c.center)) - double(c.radius));
+  }
+  static double size(const P& c) { return std::max(inf_norm(c.center), double(c.radius)); }
+  static Vec<double, 2> at(const P& c, T a) {
+    return vd(c.center) +
+           double(c.radius) * Vec<double, 2>{std::cos(double(a)), std::sin(double(a))};
+  }
+  static bool param_ok(const P&, T a) { return std::isfinite(double(a)); }
+  static P moved(const P& c, const Motion<T, 2>& m) { return {m(c.center), c.radius}; }
+  static P scaled(const P& c, T f) { return {f * c.center, f * c.radius}; }
+  static std::string str(const P& c) { return "circle " + hex(c.center) + " r " + hex(c.radius); }
+};
+
+template <class T>
+struct Side<locus::Ellipse2<T>> {
+  using P = locus::Ellipse2<T>;
+  static double residual(const P& e, const Vec<T, 2>& x) {
+    locus::Ellipse2<double> d;
+    d.center = vd(e.center);
+    for (int i = 0; i < 2; ++i) {
+      d.axis[i] = vd(e.axis[i]);
+      d.extent[i] = double(e.extent[i]);
+    }
+    return double(locus::distance(vd(x), d).distance);
+  }
+  static double size(const P& e) {
+    return std::max({inf_norm(e.center), double(e.extent[0]), double(e.extent[1])});
+  }
+  static Vec<double, 2> at(const P& e, T a) {
+    return vd(e.center) + double(e.extent[0]) * std::cos(double(a)) * vd(e.axis[0]) +
+           double(e.extent[1]) * std::sin(double(a)) * vd(e.axis[1]);
+  }
+  static bool param_ok(const P&, T a) { return std::isfinite(double(a)); }
+  static P moved(const P& e, const Motion<T, 2>& m) {
+    P o = e;
+    o.center = m(e.center);
+    for (int i = 0; i < 2; ++i) o.axis[i] = m.rot(e.axis[i]);
+    return o;
+  }
+  static P scaled(const P& e, T f) {
+    P o = e;
+    o.center = f * e.center;
+    for (int i = 0; i < 2; ++i) o.extent[i] = f * e.extent[i];
+    return o;
+  }
+  static std::string str(const P& e) {
+    return "ellipse " + hex(e.center) + " axes " + hex(e.axis[0]) + " " + hex(e.axis[1]) +
+           " extents " + hex(double(e.extent[0])) + " " + hex(double(e.extent[1]));
+  }
+};
+
+// ---- 3D surfaces ----------------------------------------------------------------------------
+template <class T>
+struct Side<locus::Plane3<T>> {
+  using P = locus::Plane3<T>;
+  static double residual(const P& p, const Vec<T, 3>& x) {
+    const Vec<double, 3> n = vd(p.normal);
+    return std::abs(locus::dot(n, vd(x)) - double(p.constant)) / locus::length(n);
+  }
+  // The plane's points of interest lie near the inputs of the other object; its own size is
+  // that of a point of it nearest the origin.
+  static double size(const P& p) {
+    return std::abs(double(p.constant)) / locus::length(vd(p.normal));
+  }
+  static P moved(const P& p, const Motion<T, 3>& m) {
+    const Vec<T, 3> n = m.rot(p.normal);
+    return {n, p.constant + locus::dot(n, m.shift)};
+  }
+  static P scaled(const P& p, T f) { return {p.normal, f * p.constant}; }
+  static std::string str(const P& p) {
+    return "plane " + hex(p.normal) + " c " + hex(double(p.constant));
+  }
+};
+
+template <class T>
+struct Side<locus::Triangle<T, 3>> {
+  using P = locus::Triangle<T, 3>;
+  static double residual(const P& t, const Vec<T, 3>& x) {
+    return double(
+        locus::distance(vd(x), locus::Triangle<double, 3>{vd(t.v0), vd(t.v1), vd(t.v2)}).distance);
+  }
+  static double size(const P& t) {
+    return std::max({inf_norm(t.v0), inf_norm(t.v1), inf_norm(t.v2)});
+  }
+  static Vec<double, 3> at(const P& t, const Vec<T, 2>& st) {
+    return vd(t.v0) + double(st.x) * (vd(t.v1) - vd(t.v0)) + double(st.y) * (vd(t.v2) - vd(t.v0));
+  }
+  static bool param_ok(const P&, const Vec<T, 2>& st) {
+    return st.x >= T(0) && st.y >= T(0) && double(st.x) + double(st.y) <= 1.0 + 1e-15;
+  }
+  static P moved(const P& t, const Motion<T, 3>& m) { return {m(t.v0), m(t.v1), m(t.v2)}; }
+  static P scaled(const P& t, T f) { return {f * t.v0, f * t.v1, f * t.v2}; }
+  static std::string str(const P& t) {
+    return "triangle " + hex(t.v0) + " " + hex(t.v1) + " " + hex(t.v2);
+  }
+};
+
+template <class T>
+struct Side<locus::Sphere<T, 3>> {
+  using P = locus::Sphere<T, 3>;
+  static double residual(const P& s, const Vec<T, 3>& x) {
+    return std::abs(locus::length(vd(x) - vd(s.center)) - double(s.radius));
+  }
+  static double size(const P& s) { return std::max(inf_norm(s.center), double(s.radius)); }
+  static Vec<double, 3> at(const P& s, const Vec<T, 2>& tp) {
+    const locus::Sphere<double, 3> d{vd(s.center), double(s.radius)};
+    return locus::point_at(d, Vec<double, 2>{double(tp.x), double(tp.y)});
+  }
+  static bool param_ok(const P&, const Vec<T, 2>& tp) {
+    return std::isfinite(double(tp.x)) && std::isfinite(double(tp.y));
+  }
+  static P moved(const P& s, const Motion<T, 3>& m) { return {m(s.center), s.radius}; }
+  static P scaled(const P& s, T f) { return {f * s.center, f * s.radius}; }
+  static std::string str(const P& s) { return "sphere " + hex(s.center) + " r " + hex(s.radius); }
+};
+
+// ---- the harness ----------------------------------------------------------------------------
+struct Options {
+  int cases = 150;
+  double residual = 16;    ///< check 1: points within residual eps m of both objects
+  double param = 0;        ///< check 1: |point_at(param) - point| <= param m (0: residual eps)
+  double position = 0;     ///< checks 2, 4, 5: point agreement, relative to m (0: residual eps)
+  int scale_exp = 0;       ///< check 4: 2^+-scale_exp (0: 20 float, 100 double)
+  bool exact_swap = true;  ///< check 2: bit for bit (a swapped overload exists)
+  bool translate = true;   ///< check 5: translations too (the generator's inputs are on a grid)
+};
+
+/// The oracle's answer: kind and count.
+struct Expected {
+  Kind kind;
+  int count;
+};
+
+inline const char* kind_name(Kind k) {
+  static const char* names[] = {"empty",    "point",   "points", "segment", "ray",   "line",
+                                "polyline", "polygon", "circle", "arc",     "plane", "coincident"};
+  return names[static_cast<int>(k)];
+}
+
+template <class Par>
+bool same_param(const Par& x, const Par& y) {
+  if constexpr (std::is_same_v<Par, NoParam>) {
+    return true;
+  } else if constexpr (std::is_arithmetic_v<Par>) {
+    return x == y || (std::isnan(double(x)) && std::isnan(double(y)));
+  } else {
+    return x == y;
+  }
+}
+
+template <class T, class A, class B>
+class PairChecker {
+ public:
+  PairChecker(const Options& opt, Rng& rng) : opt_(opt), rng_(rng) {}
+
+  using R = decltype(intersection(std::declval<const A&>(), std::declval<const B&>()));
+  static constexpr int N = R::dimension;
+
+  void run(const A& a, const B& b, int icase,
+           const std::function<std::optional<Expected>(const A&, const B&)>& oracle) {
+    what_ = "case " + std::to_string(icase) + ": " + Side<A>::str(a) + " / " + Side<B>::str(b);
+    const double m = std::max(Side<A>::size(a), Side<B>::size(b));
+    const R r = intersection(a, b);
+    ++kinds_[static_cast<std::size_t>(r.kind)];
+    on_both(a, b, r, m, "");
+    check_swap(a, b, r, m);
+    if constexpr (requires { intersects(a, b); }) {
+      if (intersects(a, b) != (r.kind != Kind::empty))
+        fail("intersects(a, b) disagrees with kind " + std::string(kind_name(r.kind)));
+    }
+    if constexpr (requires { intersects(b, a); }) {
+      if (intersects(b, a) != (r.kind != Kind::empty))
+        fail("intersects(b, a) disagrees with kind " + std::string(kind_name(r.kind)));
+    }
+    if (oracle) {
+      if (const std::optional<Expected> e = oracle(a, b)) {
+        if (e->kind != r.kind || e->count != r.count)
+          fail(std::string("oracle says ") + kind_name(e->kind) + " count " +
+               std::to_string(e->count) + ", got " + kind_name(r.kind) + " count " +
+               std::to_string(r.count));
+      }
+    }
+    // 4. power-of-two scaling.
+    const int kmax = opt_.scale_exp ? opt_.scale_exp : (std::is_same_v<T, float> ? 20 : 100);
+    for (int k : {kmax, -kmax}) {
+      const T f = std::ldexp(T(1), k);
+      const A fa = Side<A>::scaled(a, f);
+      const B fb = Side<B>::scaled(b, f);
+      const R s = intersection(fa, fb);
+      const std::string tag = " (scaled 2^" + std::to_string(k) + ")";
+      if (!same_shape(r, s, tag)) continue;
+      on_both(fa, fb, s, double(f) * m, tag);
+      compare_points(
+          r, s, [f](const Vec<T, N>& p) { return f * p; }, double(f) * m, tag);
+    }
+    // 5. exact rigid motion.
+    const Motion<T, N> mo = random_motion<T, N>(rng_, opt_.translate);
+    const A ma = Side<A>::moved(a, mo);
+    const B mb = Side<B>::moved(b, mo);
+    const R s = intersection(ma, mb);
+    const double mm = std::max(Side<A>::size(ma), Side<B>::size(mb));
+    if (same_shape(r, s, " (moved)")) {
+      on_both(ma, mb, s, mm, " (moved)");
+      compare_points(r, s, mo, std::max(m, mm), " (moved)");
+    }
+  }
+
+  int failures() const { return failures_; }
+  /// How many cases gave each kind (printed with LOCUS_HARNESS_KINDS set: the draw's coverage).
+  std::string kind_tally() const {
+    std::string s;
+    for (std::size_t k = 0; k < kinds_.size(); ++k)
+      if (kinds_[k]) s += std::string(kind_name(Kind(k))) + " " + std::to_string(kinds_[k]) + "  ";
+    return s;
+  }
+
+ private:
+  double eps() const { return double(std::numeric_limits<T>::epsilon()); }
+  double pos_tol(double m) const {
+    return (opt_.position > 0 ? opt_.position : opt_.residual * eps()) * m;
+  }
+
+  void fail(const std::string& msg) {
+    ++failures_;
+    if (failures_ <= 5) ADD_FAILURE() << what_ << "\n  " << msg;
+  }
+
+  template <class X, class Y, class S>
+  void on_both(const X& a, const Y& b, const S& r, double m, const std::string& tag) {
+    if (r.count < 0 || r.count > S::capacity) {
+      fail("count " + std::to_string(r.count) + tag);
+      return;
+    }
+    const double tol = opt_.residual * eps() * m;
+    const double ptol = (opt_.param > 0 ? opt_.param : opt_.residual * eps()) * m;
+    for (int i = 0; i < r.count; ++i) {
+      const std::size_t j = std::size_t(i);
+      const Vec<T, N>& p = r.point[j];
+      const double ra = Side<X>::residual(a, p), rb = Side<Y>::residual(b, p);
+      if (!(ra <= tol) || !(rb <= tol))
+        fail("point " + std::to_string(i) + " " + hex(p) + " residuals " + std::to_string(ra) +
+             ", " + std::to_string(rb) + " > " + std::to_string(tol) + " (kind " +
+             kind_name(r.kind) + ")" + tag);
+      check_param<X>(a, r.param_a[j], p, ptol, "param_a", i, tag);
+      check_param<Y>(b, r.param_b[j], p, ptol, "param_b", i, tag);
+    }
+  }
+
+  template <class X, class Par>
+  void check_param(const X& x, const Par& par, const Vec<T, N>& p, double ptol, const char* name,
+                   int i, const std::string& tag) {
+    if constexpr (!std::is_same_v<Par, NoParam>) {
+      if (!Side<X>::param_ok(x, par)) {
+        fail(std::string(name) + "[" + std::to_string(i) + "] outside its domain" + tag);
+        return;
+      }
+      const double d = inf_norm(Side<X>::at(x, par) - vd(p));
+      if (!(d <= ptol))
+        fail(std::string(name) + "[" + std::to_string(i) + "] maps " + std::to_string(d) +
+             " from its point > " + std::to_string(ptol) + tag);
+    }
+  }
+
+  bool same_shape(const R& r, const R& s, const std::string& tag) {
+    if (r.kind == s.kind && r.count == s.count) return true;
+    fail(std::string("kind ") + kind_name(r.kind) + " count " + std::to_string(r.count) +
+         " becomes " + kind_name(s.kind) + " count " + std::to_string(s.count) + tag);
+    return false;
+  }
+
+  /// Every point of s is the image of a point of r and back (kinds whose points are canonical).
+  template <class S, class F>
+  void compare_points(const R& r, const S& s, const F& image, double m, const std::string& tag) {
+    if (r.kind != Kind::point && r.kind != Kind::points && r.kind != Kind::segment) return;
+    const double tol = pos_tol(m);
+    for (int i = 0; i < r.count; ++i) {
+      const Vec<T, N> q = image(r.point[std::size_t(i)]);
+      double best = std::numeric_limits<double>::infinity();
+      for (int j = 0; j < s.count; ++j)
+        best = std::min(best, inf_norm(vd(q) - vd(s.point[std::size_t(j)])));
+      if (!(best <= tol))
+        fail("point " + hex(r.point[std::size_t(i)]) + " has no counterpart (off by " +
+             std::to_string(best) + " > " + std::to_string(tol) + ")" + tag);
+    }
+  }
+
+  void check_swap(const A& a, const B& b, const R& r, double m) {
+    const auto t = intersection(b, a);
+    if (t.kind != r.kind || t.count != r.count) {
+      fail(std::string("swapped: kind ") + kind_name(t.kind) + " count " + std::to_string(t.count) +
+           " vs " + kind_name(r.kind) + " count " + std::to_string(r.count));
+      return;
+    }
+    if (opt_.exact_swap) {
+      const auto w = swapped(r);
+      for (int i = 0; i < r.count; ++i) {
+        const std::size_t j = std::size_t(i);
+        if (!(t.point[j] == w.point[j]) || !same_param(t.param_a[j], w.param_a[j]) ||
+            !same_param(t.param_b[j], w.param_b[j]))
+          fail("intersection(b, a) != swapped(intersection(a, b)) at entry " + std::to_string(i));
+      }
+      if constexpr (requires { r.multiplicity; }) {
+        if (t.multiplicity != w.multiplicity) fail("swapped: multiplicities differ");
+      }
+    } else {
+      compare_points(
+          r, t, [](const Vec<T, N>& p) { return p; }, m, " (swapped)");
+    }
+  }
+
+  const Options& opt_;
+  Rng& rng_;
+  std::string what_;
+  int failures_ = 0;
+  std::array<int, 12> kinds_{};
+};
+
+/// Runs checks 1-6 (header comment) on opt.cases pairs drawn from gen(rng) (a std::pair<A, B>).
+template <class T, class Gen, class A = typename std::invoke_result_t<Gen&, Rng&>::first_type,
+          class B = typename std::invoke_result_t<Gen&, Rng&>::second_type>
+void check_intersection_pairs(
+    Gen gen, const Options& opt = {},
+    std::type_identity_t<std::function<std::optional<Expected>(const A&, const B&)>> oracle = {}) {
+  Rng rng;
+  SCOPED_TRACE(rng.trace());
+  PairChecker<T, A, B> checker(opt, rng);
+  for (int i = 0; i < opt.cases; ++i) {
+    const std::pair<A, B> ab = gen(rng);
+    checker.run(ab.first, ab.second, i, oracle);
+  }
+  if (std::getenv("LOCUS_HARNESS_KINDS"))
+    std::printf("  kinds: %s\n", checker.kind_tally().c_str());
+  if (checker.failures() > 5) ADD_FAILURE() << checker.failures() << " failures in all";
+}
+
+/// A coordinate on the grid 2^-10 in [lo, hi]: sums, 2^k multiples and the motions stay exact.
+template <class T>
+T grid(Rng& rng, double lo, double hi) {
+  return T(std::round(rng.uniform<double>(lo, hi) * 1024.0) / 1024.0);
+}
+template <class T, int N>
+Vec<T, N> grid_vec(Rng& rng, double lo, double hi) {
+  Vec<T, N> v{};
+  for (int i = 0; i < N; ++i) v[i] = grid<T>(rng, lo, hi);
+  return v;
+}
+
+}  // namespace locus_test::ix
