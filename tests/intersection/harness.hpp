@@ -10,7 +10,8 @@
 //      distance(point, object) in double, or an implicit residual: plane, sphere) is at most
 //      opt.residual eps m, m the largest |coordinate| or radius of the inputs, eps of T;
 //      and each parameter lies in its domain and maps (the primitive's point_at) to within
-//      opt.param m of its point (opt.param defaults to opt.residual eps);
+//      opt.param m of its point (opt.param defaults to opt.residual eps; a triangle's (s, t)
+//      may leave its domain by opt.domain_slack eps, default 4: two separately rounded parameters);
 //   2. intersection(b, a) == swapped(r) bit for bit (kind, count, points, parameters) when the
 //      pair has a swapped overload (opt.exact_swap); for a same-type pair the same kind, count
 //      and point set (within opt.position m) with the parameters exchanged;
@@ -28,6 +29,7 @@
 // parameter map and domain, the rigid motion and the scaling. Failures print the seed, the case
 // and the inputs in hexadecimal floating point.
 
+#include <locus/distance/point_aligned_box.hpp>
 #include <locus/distance/point_circle.hpp>
 #include <locus/distance/point_ellipse.hpp>
 #include <locus/distance/point_line.hpp>
@@ -35,6 +37,7 @@
 #include <locus/distance/point_segment.hpp>
 #include <locus/distance/point_triangle.hpp>
 #include <locus/intersection/result.hpp>
+#include <locus/primitives/aligned_box.hpp>
 #include <locus/primitives/circle.hpp>
 #include <locus/primitives/ellipse.hpp>
 #include <locus/primitives/line.hpp>
@@ -97,6 +100,11 @@ inline std::string hex(double x) {
   std::snprintf(buf, sizeof buf, "%a", x);
   return buf;
 }
+inline std::string num(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
 template <class T, int N>
 std::string hex(const Vec<T, N>& v) {
   std::string s = "(";
@@ -126,7 +134,7 @@ struct Side<locus::Segment<T, N>> {
   }
   static double size(const P& s) { return std::max(inf_norm(s.p0), inf_norm(s.p1)); }
   static Vec<double, N> at(const P& s, T t) { return vd(s.p0) + double(t) * (vd(s.p1) - vd(s.p0)); }
-  static bool param_ok(const P&, T t) { return t >= T(0) && t <= T(1); }
+  static bool param_ok(const P&, T t, double) { return t >= T(0) && t <= T(1); }
   static P moved(const P& s, const Motion<T, N>& m) { return {m(s.p0), m(s.p1)}; }
   static P scaled(const P& s, T f) { return {f * s.p0, f * s.p1}; }
   static std::string str(const P& s) { return "segment " + hex(s.p0) + " " + hex(s.p1); }
@@ -141,7 +149,7 @@ struct Side<locus::Ray<T, N>> {
   }
   static double size(const P& r) { return std::max(inf_norm(r.origin), inf_norm(r.direction)); }
   static Vec<double, N> at(const P& r, T t) { return vd(r.origin) + double(t) * vd(r.direction); }
-  static bool param_ok(const P&, T t) { return t >= T(0) && std::isfinite(double(t)); }
+  static bool param_ok(const P&, T t, double) { return t >= T(0) && std::isfinite(double(t)); }
   static P moved(const P& r, const Motion<T, N>& m) { return {m(r.origin), m.rot(r.direction)}; }
   static P scaled(const P& r, T f) { return {f * r.origin, f * r.direction}; }
   static std::string str(const P& r) { return "ray " + hex(r.origin) + " " + hex(r.direction); }
@@ -156,7 +164,7 @@ struct Side<locus::Line<T, N>> {
   }
   static double size(const P& l) { return std::max(inf_norm(l.origin), inf_norm(l.direction)); }
   static Vec<double, N> at(const P& l, T t) { return vd(l.origin) + double(t) * vd(l.direction); }
-  static bool param_ok(const P&, T t) { return std::isfinite(double(t)); }
+  static bool param_ok(const P&, T t, double) { return std::isfinite(double(t)); }
   static P moved(const P& l, const Motion<T, N>& m) { return {m(l.origin), m.rot(l.direction)}; }
   static P scaled(const P& l, T f) { return {f * l.origin, f * l.direction}; }
   static std::string str(const P& l) { return "line " + hex(l.origin) + " " + hex(l.direction); }
@@ -174,7 +182,7 @@ struct Side<locus::Circle2<T>> {
     return vd(c.center) +
            double(c.radius) * Vec<double, 2>{std::cos(double(a)), std::sin(double(a))};
   }
-  static bool param_ok(const P&, T a) { return std::isfinite(double(a)); }
+  static bool param_ok(const P&, T a, double) { return std::isfinite(double(a)); }
   static P moved(const P& c, const Motion<T, 2>& m) { return {m(c.center), c.radius}; }
   static P scaled(const P& c, T f) { return {f * c.center, f * c.radius}; }
   static std::string str(const P& c) { return "circle " + hex(c.center) + " r " + hex(c.radius); }
@@ -199,7 +207,7 @@ struct Side<locus::Ellipse2<T>> {
     return vd(e.center) + double(e.extent[0]) * std::cos(double(a)) * vd(e.axis[0]) +
            double(e.extent[1]) * std::sin(double(a)) * vd(e.axis[1]);
   }
-  static bool param_ok(const P&, T a) { return std::isfinite(double(a)); }
+  static bool param_ok(const P&, T a, double) { return std::isfinite(double(a)); }
   static P moved(const P& e, const Motion<T, 2>& m) {
     P o = e;
     o.center = m(e.center);
@@ -254,14 +262,38 @@ struct Side<locus::Triangle<T, 3>> {
   static Vec<double, 3> at(const P& t, const Vec<T, 2>& st) {
     return vd(t.v0) + double(st.x) * (vd(t.v1) - vd(t.v0)) + double(st.y) * (vd(t.v2) - vd(t.v0));
   }
-  static bool param_ok(const P&, const Vec<T, 2>& st) {
-    return st.x >= T(0) && st.y >= T(0) && double(st.x) + double(st.y) <= 1.0 + 1e-15;
+  // Rounding s and t separately can leave the domain by an ulp (s + t = 1 on an edge): slack
+  // eps of T times opt.domain_slack.
+  static bool param_ok(const P&, const Vec<T, 2>& st, double slack) {
+    const double tol = slack * double(std::numeric_limits<T>::epsilon());
+    return st.x >= -tol && st.y >= -tol && double(st.x) + double(st.y) <= 1.0 + tol;
   }
   static P moved(const P& t, const Motion<T, 3>& m) { return {m(t.v0), m(t.v1), m(t.v2)}; }
   static P scaled(const P& t, T f) { return {f * t.v0, f * t.v1, f * t.v2}; }
   static std::string str(const P& t) {
     return "triangle " + hex(t.v0) + " " + hex(t.v1) + " " + hex(t.v2);
   }
+};
+
+template <class T>
+struct Side<locus::AlignedBox<T, 3>> {
+  using P = locus::AlignedBox<T, 3>;
+  static double residual(const P& b, const Vec<T, 3>& x) {
+    return std::sqrt(
+        double(locus::sqr_distance(vd(x), locus::AlignedBox<double, 3>{vd(b.min), vd(b.max)})));
+  }
+  static double size(const P& b) { return std::max(inf_norm(b.min), inf_norm(b.max)); }
+  static P moved(const P& b, const Motion<T, 3>& m) {
+    const Vec<T, 3> p = m(b.min), q = m(b.max);
+    P o;
+    for (int i = 0; i < 3; ++i) {
+      o.min[i] = std::min(p[i], q[i]);
+      o.max[i] = std::max(p[i], q[i]);
+    }
+    return o;
+  }
+  static P scaled(const P& b, T f) { return {f * b.min, f * b.max}; }
+  static std::string str(const P& b) { return "box " + hex(b.min) + " " + hex(b.max); }
 };
 
 template <class T>
@@ -275,7 +307,7 @@ struct Side<locus::Sphere<T, 3>> {
     const locus::Sphere<double, 3> d{vd(s.center), double(s.radius)};
     return locus::point_at(d, Vec<double, 2>{double(tp.x), double(tp.y)});
   }
-  static bool param_ok(const P&, const Vec<T, 2>& tp) {
+  static bool param_ok(const P&, const Vec<T, 2>& tp, double) {
     return std::isfinite(double(tp.x)) && std::isfinite(double(tp.y));
   }
   static P moved(const P& s, const Motion<T, 3>& m) { return {m(s.center), s.radius}; }
@@ -286,12 +318,13 @@ struct Side<locus::Sphere<T, 3>> {
 // ---- the harness ----------------------------------------------------------------------------
 struct Options {
   int cases = 150;
-  double residual = 16;    ///< check 1: points within residual eps m of both objects
-  double param = 0;        ///< check 1: |point_at(param) - point| <= param m (0: residual eps)
-  double position = 0;     ///< checks 2, 4, 5: point agreement, relative to m (0: residual eps)
-  int scale_exp = 0;       ///< check 4: 2^+-scale_exp (0: 20 float, 100 double)
-  bool exact_swap = true;  ///< check 2: bit for bit (a swapped overload exists)
-  bool translate = true;   ///< check 5: translations too (the generator's inputs are on a grid)
+  double residual = 16;     ///< check 1: points within residual eps m of both objects
+  double param = 0;         ///< check 1: |point_at(param) - point| <= param m (0: residual eps)
+  double position = 0;      ///< checks 2, 4, 5: point agreement, relative to m (0: residual eps)
+  int scale_exp = 0;        ///< check 4: 2^+-scale_exp (0: 20 float, 100 double)
+  bool exact_swap = true;   ///< check 2: bit for bit (a swapped overload exists)
+  bool translate = true;    ///< check 5: translations too (the generator's inputs are on a grid)
+  double domain_slack = 4;  ///< check 1: a triangle's (s, t) may leave its domain by this many eps
 };
 
 /// The oracle's answer: kind and count.
@@ -304,6 +337,15 @@ inline const char* kind_name(Kind k) {
   static const char* names[] = {"empty",    "point",   "points", "segment", "ray",   "line",
                                 "polyline", "polygon", "circle", "arc",     "plane", "coincident"};
   return names[static_cast<int>(k)];
+}
+
+template <class Par>
+std::string param_str(const Par& x) {
+  if constexpr (std::is_arithmetic_v<Par>) {
+    return hex(double(x));
+  } else {
+    return hex(x);
+  }
 }
 
 template <class Par>
@@ -400,16 +442,17 @@ class PairChecker {
       fail("count " + std::to_string(r.count) + tag);
       return;
     }
-    const double tol = opt_.residual * eps() * m;
-    const double ptol = (opt_.param > 0 ? opt_.param : opt_.residual * eps()) * m;
     for (int i = 0; i < r.count; ++i) {
       const std::size_t j = std::size_t(i);
       const Vec<T, N>& p = r.point[j];
+      // The pair headers bound residuals by eps max(|X|inf, m).
+      const double mp = std::max(m, inf_norm(p));
+      const double tol = opt_.residual * eps() * mp;
+      const double ptol = (opt_.param > 0 ? opt_.param : opt_.residual * eps()) * mp;
       const double ra = Side<X>::residual(a, p), rb = Side<Y>::residual(b, p);
       if (!(ra <= tol) || !(rb <= tol))
-        fail("point " + std::to_string(i) + " " + hex(p) + " residuals " + std::to_string(ra) +
-             ", " + std::to_string(rb) + " > " + std::to_string(tol) + " (kind " +
-             kind_name(r.kind) + ")" + tag);
+        fail("point " + std::to_string(i) + " " + hex(p) + " residuals " + num(ra) + ", " +
+             num(rb) + " > " + num(tol) + " (kind " + kind_name(r.kind) + ")" + tag);
       check_param<X>(a, r.param_a[j], p, ptol, "param_a", i, tag);
       check_param<Y>(b, r.param_b[j], p, ptol, "param_b", i, tag);
     }
@@ -419,14 +462,15 @@ class PairChecker {
   void check_param(const X& x, const Par& par, const Vec<T, N>& p, double ptol, const char* name,
                    int i, const std::string& tag) {
     if constexpr (!std::is_same_v<Par, NoParam>) {
-      if (!Side<X>::param_ok(x, par)) {
-        fail(std::string(name) + "[" + std::to_string(i) + "] outside its domain" + tag);
+      if (!Side<X>::param_ok(x, par, opt_.domain_slack)) {
+        fail(std::string(name) + "[" + std::to_string(i) + "] = " + param_str(par) +
+             " outside its domain" + tag);
         return;
       }
       const double d = inf_norm(Side<X>::at(x, par) - vd(p));
       if (!(d <= ptol))
-        fail(std::string(name) + "[" + std::to_string(i) + "] maps " + std::to_string(d) +
-             " from its point > " + std::to_string(ptol) + tag);
+        fail(std::string(name) + "[" + std::to_string(i) + "] maps " + num(d) +
+             " from its point > " + num(ptol) + tag);
     }
   }
 
@@ -448,8 +492,8 @@ class PairChecker {
       for (int j = 0; j < s.count; ++j)
         best = std::min(best, inf_norm(vd(q) - vd(s.point[std::size_t(j)])));
       if (!(best <= tol))
-        fail("point " + hex(r.point[std::size_t(i)]) + " has no counterpart (off by " +
-             std::to_string(best) + " > " + std::to_string(tol) + ")" + tag);
+        fail("point " + hex(r.point[std::size_t(i)]) + " has no counterpart (off by " + num(best) +
+             " > " + num(tol) + ")" + tag);
     }
   }
 

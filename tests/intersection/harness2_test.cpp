@@ -190,6 +190,8 @@ TYPED_TEST(IntersectionHarness2, SegmentCircle) {
         const co::Q2 o = co::q(a.p0), e = co::q(a.p1);
         const co::QLin l{o, {e.x - o.x, e.y - o.y}, true, true};
         const co::LinAnswer ans = co::solve_linear_conic(co::conic_fun(c), l);
+        // A zero-length segment is a point: "whole" when it lies on the circle.
+        if (ans.whole) return Expected{Kind::point, 1};
         if (ans.count == 0) return Expected{Kind::empty, 0};
         return Expected{ans.count == 1 ? Kind::point : Kind::points, ans.count};
       });
