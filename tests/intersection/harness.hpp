@@ -485,9 +485,9 @@ class PairChecker {
   template <class S, class F>
   void compare_points(const R& r, const S& s, const F& image, double m, const std::string& tag) {
     if (r.kind != Kind::point && r.kind != Kind::points && r.kind != Kind::segment) return;
-    const double tol = pos_tol(m);
     for (int i = 0; i < r.count; ++i) {
       const Vec<T, N> q = image(r.point[std::size_t(i)]);
+      const double tol = pos_tol(std::max(m, inf_norm(q)));  // bounds are eps max(|X|inf, m)
       double best = std::numeric_limits<double>::infinity();
       for (int j = 0; j < s.count; ++j)
         best = std::min(best, inf_norm(vd(q) - vd(s.point[std::size_t(j)])));
