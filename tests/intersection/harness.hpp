@@ -249,17 +249,35 @@ struct Side<locus::Plane3<T>> {
   }
 };
 
-template <class T>
-struct Side<locus::Triangle<T, 3>> {
-  using P = locus::Triangle<T, 3>;
-  static double residual(const P& t, const Vec<T, 3>& x) {
-    return double(
-        locus::distance(vd(x), locus::Triangle<double, 3>{vd(t.v0), vd(t.v1), vd(t.v2)}).distance);
+template <class T, int N>
+struct Side<locus::Triangle<T, N>> {
+  using P = locus::Triangle<T, N>;
+  static double residual(const P& t, const Vec<T, N>& x) {
+    if constexpr (N == 2) {
+      // distance(Vec2, Triangle2) solves for barycentrics, 20 eps off for a point on an edge
+      // (seen: 4.7e-15 for one 0.1 eps from it); here 0 inside (rounded signs: a misjudged
+      // point is that close to an edge), else the nearest edge (point-segment, accurate).
+      const Vec<double, 2> p = vd(x), v[3] = {vd(t.v0), vd(t.v1), vd(t.v2)};
+      double side[3], best = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < 3; ++i) {
+        const Vec<double, 2> a = v[i], b = v[(i + 1) % 3];
+        side[i] = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+        best = std::min(best, double(locus::distance(p, locus::Segment<double, 2>{a, b}).distance));
+      }
+      const bool inside = (side[0] >= 0 && side[1] >= 0 && side[2] >= 0) ||
+                          (side[0] <= 0 && side[1] <= 0 && side[2] <= 0);
+      const double area =
+          (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+      return inside && area != 0.0 ? 0.0 : best;  // a flat triangle is its edges
+    } else {
+      return double(locus::distance(vd(x), locus::Triangle<double, N>{vd(t.v0), vd(t.v1), vd(t.v2)})
+                        .distance);
+    }
   }
   static double size(const P& t) {
     return std::max({inf_norm(t.v0), inf_norm(t.v1), inf_norm(t.v2)});
   }
-  static Vec<double, 3> at(const P& t, const Vec<T, 2>& st) {
+  static Vec<double, N> at(const P& t, const Vec<T, 2>& st) {
     return vd(t.v0) + double(st.x) * (vd(t.v1) - vd(t.v0)) + double(st.y) * (vd(t.v2) - vd(t.v0));
   }
   // Rounding s and t separately can leave the domain by an ulp (s + t = 1 on an edge): slack
@@ -268,7 +286,7 @@ struct Side<locus::Triangle<T, 3>> {
     const double tol = slack * double(std::numeric_limits<T>::epsilon());
     return st.x >= -tol && st.y >= -tol && double(st.x) + double(st.y) <= 1.0 + tol;
   }
-  static P moved(const P& t, const Motion<T, 3>& m) { return {m(t.v0), m(t.v1), m(t.v2)}; }
+  static P moved(const P& t, const Motion<T, N>& m) { return {m(t.v0), m(t.v1), m(t.v2)}; }
   static P scaled(const P& t, T f) { return {f * t.v0, f * t.v1, f * t.v2}; }
   static std::string str(const P& t) {
     return "triangle " + hex(t.v0) + " " + hex(t.v1) + " " + hex(t.v2);

@@ -6,6 +6,8 @@
 // conic_oracle.hpp, and an exact circle-circle classification.
 
 #include <locus/intersection/circle_circle.hpp>
+#include <locus/intersection/convex_polygon2.hpp>
+#include <locus/intersection/ellipse_ellipse.hpp>
 #include <locus/intersection/line_segment.hpp>
 #include <locus/intersection/ray_ray.hpp>
 #include <locus/intersection/segment_circle.hpp>
@@ -24,10 +26,12 @@
 namespace {
 
 using locus::Circle2;
+using locus::Ellipse2;
 using locus::Kind;
 using locus::Line2;
 using locus::Ray2;
 using locus::Segment2;
+using locus::Triangle2;
 using locus::Vec2;
 using locus_test::Rng;
 using locus_test::ix::check_intersection_pairs;
@@ -240,6 +244,101 @@ TYPED_TEST(IntersectionHarness2, CircleCircle) {
         if (d2 == sum || d2 == dif) return Expected{Kind::point, 1};
         return Expected{Kind::points, 2};
       });
+}
+
+/// An axis-aligned ellipse (axes a signed permutation of the unit axes, so the motions keep
+/// them exact) with grid centre and extents k / 64.
+template <class T>
+Ellipse2<T> grid_ellipse(Rng& rng) {
+  Ellipse2<T> e;
+  e.center = grid_vec<T, 2>(rng, -1, 1);
+  const T sx = rng.uniform_int(0, 1) ? T(1) : T(-1), sy = rng.uniform_int(0, 1) ? T(1) : T(-1);
+  e.axis[0] = {sx, T(0)};
+  e.axis[1] = {T(0), sy};
+  if (rng.uniform_int(0, 1)) std::swap(e.axis[0], e.axis[1]);
+  e.extent[0] = T(rng.uniform_int(4, 64)) / T(64);
+  e.extent[1] = T(rng.uniform_int(4, 64)) / T(64);
+  return e;
+}
+
+TYPED_TEST(IntersectionHarness2, EllipseEllipse) {
+  using T = TypeParam;
+  Options opt;
+  // Points within about 2^-40 of the coordinates' magnitude (ellipse_ellipse.hpp): 4096 eps in
+  // double; float results are that double answer rounded once.
+  opt.residual = std::is_same_v<T, float> ? 16 : 4096;
+  opt.exact_swap = false;
+  // A tangent point's angle is only sqrt of the residual accurate.
+  opt.param = opt.position = std::is_same_v<T, float> ? 2e-3 : 1e-5;
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const Ellipse2<T> a = grid_ellipse<T>(rng);
+        Ellipse2<T> b = grid_ellipse<T>(rng);
+        // a's extents along x and y.
+        const bool ax = a.axis[0].x != T(0);
+        const T ex = ax ? a.extent[0] : a.extent[1], ey = ax ? a.extent[1] : a.extent[0];
+        const bool bx = b.axis[0].x != T(0);
+        const T fx = bx ? b.extent[0] : b.extent[1];
+        switch (rng.uniform_int(0, 5)) {
+          case 0:
+            b.center = {a.center.x + ex + fx, a.center.y};
+            break;  // outer tangency
+          case 1:   // the same curve
+            b.center = a.center;
+            b.axis[0] = a.axis[1];
+            b.axis[1] = a.axis[0];
+            b.extent[0] = a.extent[1];
+            b.extent[1] = a.extent[0];
+            break;
+          case 2:
+            b.center = a.center;
+            break;  // concentric: 0, 4 or a whole curve
+          case 3:   // inner tangency at a's right-most point
+            if (fx < ex) b.center = {a.center.x + ex - fx, a.center.y};
+            break;
+          case 4:
+            b.center = {a.center.x, a.center.y + ey};
+            break;  // through a's top point
+          default:
+            break;
+        }
+        return std::pair{a, b};
+      },
+      opt);
+}
+
+TYPED_TEST(IntersectionHarness2, TriangleTriangleSat) {
+  using T = TypeParam;
+  Options opt;
+  opt.residual = 9;  // overlap vertices within 6 eps (convex_polygon2.hpp), inf-norm: 6 sqrt(2)
+  opt.exact_swap = false;
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const Triangle2<T> a{grid_vec<T, 2>(rng, -1, 1), grid_vec<T, 2>(rng, -1, 1),
+                             grid_vec<T, 2>(rng, -1, 1)};
+        Triangle2<T> b{grid_vec<T, 2>(rng, -1, 1), grid_vec<T, 2>(rng, -1, 1),
+                       grid_vec<T, 2>(rng, -1, 1)};
+        const Vec2<T> e1 = a.v1 - a.v0, e2 = a.v2 - a.v0;
+        switch (rng.uniform_int(0, 4)) {
+          case 0:
+            b.v0 = a.v0;
+            break;  // a shared vertex
+          case 1:   // a shared edge, b on the other side or the same
+            b.v0 = a.v1;
+            b.v1 = a.v0;
+            break;
+          case 2:
+            b.v0 = a.v0 + e1 / T(2);
+            break;  // a vertex on an edge
+          case 3:
+            b = {a.v0 + e1 / T(4) + e2 / T(4), a.v1, a.v2};
+            break;  // nested
+          default:
+            break;
+        }
+        return std::pair{a, b};
+      },
+      opt);
 }
 
 }  // namespace
