@@ -377,36 +377,55 @@ bool same_param(const Par& x, const Par& y) {
   }
 }
 
+/// A result as a list of Intersection pieces: an Intersection-shaped result is one piece (of
+/// any kind, empty included); a PolylineIntersection2 lists its crossings (none when empty).
+template <class R>
+requires requires(const R& r) {
+  r.kind;
+  r.point;
+}
+std::vector<R> pieces(const R& r) { return {r}; }
+template <class T>
+std::vector<locus::Intersection<T, 2, T, T, 2>> pieces(const locus::PolylineIntersection2<T>& r) {
+  std::vector<locus::Intersection<T, 2, T, T, 2>> out;
+  for (const locus::PolylineCrossing2<T>& c : r.crossings)
+    out.push_back({c.kind, c.count, c.point, c.param_a, c.param_b});
+  return out;
+}
+
 template <class T, class A, class B>
 class PairChecker {
  public:
   PairChecker(const Options& opt, Rng& rng) : opt_(opt), rng_(rng) {}
 
-  using R = decltype(intersection(std::declval<const A&>(), std::declval<const B&>()));
+  using Raw = decltype(intersection(std::declval<const A&>(), std::declval<const B&>()));
+  using R = typename decltype(pieces(std::declval<const Raw&>()))::value_type;
+  using L = std::vector<R>;
   static constexpr int N = R::dimension;
 
   void run(const A& a, const B& b, int icase,
            const std::function<std::optional<Expected>(const A&, const B&)>& oracle) {
     what_ = "case " + std::to_string(icase) + ": " + Side<A>::str(a) + " / " + Side<B>::str(b);
     const double m = std::max(Side<A>::size(a), Side<B>::size(b));
-    const R r = intersection(a, b);
-    ++kinds_[static_cast<std::size_t>(r.kind)];
+    const L r = pieces(intersection(a, b));
+    if (r.empty()) ++kinds_[0];
+    for (const R& x : r) ++kinds_[static_cast<std::size_t>(x.kind)];
     on_both(a, b, r, m, "");
     check_swap(a, b, r, m);
+    const bool meet =
+        std::any_of(r.begin(), r.end(), [](const R& x) { return x.kind != Kind::empty; });
     if constexpr (requires { intersects(a, b); }) {
-      if (intersects(a, b) != (r.kind != Kind::empty))
-        fail("intersects(a, b) disagrees with kind " + std::string(kind_name(r.kind)));
+      if (intersects(a, b) != meet) fail("intersects(a, b) disagrees with the intersection");
     }
     if constexpr (requires { intersects(b, a); }) {
-      if (intersects(b, a) != (r.kind != Kind::empty))
-        fail("intersects(b, a) disagrees with kind " + std::string(kind_name(r.kind)));
+      if (intersects(b, a) != meet) fail("intersects(b, a) disagrees with the intersection");
     }
-    if (oracle) {
+    if (oracle && r.size() == 1) {
       if (const std::optional<Expected> e = oracle(a, b)) {
-        if (e->kind != r.kind || e->count != r.count)
+        if (e->kind != r[0].kind || e->count != r[0].count)
           fail(std::string("oracle says ") + kind_name(e->kind) + " count " +
-               std::to_string(e->count) + ", got " + kind_name(r.kind) + " count " +
-               std::to_string(r.count));
+               std::to_string(e->count) + ", got " + kind_name(r[0].kind) + " count " +
+               std::to_string(r[0].count));
       }
     }
     // 4. power-of-two scaling.
@@ -415,7 +434,7 @@ class PairChecker {
       const T f = std::ldexp(T(1), k);
       const A fa = Side<A>::scaled(a, f);
       const B fb = Side<B>::scaled(b, f);
-      const R s = intersection(fa, fb);
+      const L s = pieces(intersection(fa, fb));
       const std::string tag = " (scaled 2^" + std::to_string(k) + ")";
       if (!same_shape(r, s, tag)) continue;
       on_both(fa, fb, s, double(f) * m, tag);
@@ -426,7 +445,7 @@ class PairChecker {
     const Motion<T, N> mo = random_motion<T, N>(rng_, opt_.translate);
     const A ma = Side<A>::moved(a, mo);
     const B mb = Side<B>::moved(b, mo);
-    const R s = intersection(ma, mb);
+    const L s = pieces(intersection(ma, mb));
     const double mm = std::max(Side<A>::size(ma), Side<B>::size(mb));
     if (same_shape(r, s, " (moved)")) {
       on_both(ma, mb, s, mm, " (moved)");
@@ -455,7 +474,12 @@ class PairChecker {
   }
 
   template <class X, class Y, class S>
-  void on_both(const X& a, const Y& b, const S& r, double m, const std::string& tag) {
+  void on_both(const X& a, const Y& b, const std::vector<S>& rs, double m, const std::string& tag) {
+    for (const S& r : rs) on_both(a, b, r, m, tag);
+  }
+  template <class X, class Y, class S>
+  requires(!std::is_same_v<S, std::vector<R>>) void on_both(const X& a, const Y& b, const S& r,
+                                                            double m, const std::string& tag) {
     if (r.count < 0 || r.count > S::capacity) {
       fail("count " + std::to_string(r.count) + tag);
       return;
@@ -492,16 +516,34 @@ class PairChecker {
     }
   }
 
-  bool same_shape(const R& r, const R& s, const std::string& tag) {
-    if (r.kind == s.kind && r.count == s.count) return true;
-    fail(std::string("kind ") + kind_name(r.kind) + " count " + std::to_string(r.count) +
-         " becomes " + kind_name(s.kind) + " count " + std::to_string(s.count) + tag);
+  template <class S>
+  bool same_shape(const L& r, const std::vector<S>& s, const std::string& tag) {
+    bool same = r.size() == s.size();
+    for (std::size_t i = 0; same && i < r.size(); ++i)
+      same = r[i].kind == s[i].kind && r[i].count == s[i].count;
+    if (same) return true;
+    fail("shape " + shape(r) + " becomes " + shape(s) + tag);
     return false;
+  }
+  template <class S>
+  static std::string shape(const std::vector<S>& v) {
+    std::string out = v.empty() ? "no pieces" : "";
+    for (const S& x : v)
+      out += std::string(out.empty() ? "" : ", ") + kind_name(x.kind) + " count " +
+             std::to_string(x.count);
+    return out;
   }
 
   /// Every point of s is the image of a point of r and back (kinds whose points are canonical).
   template <class S, class F>
-  void compare_points(const R& r, const S& s, const F& image, double m, const std::string& tag) {
+  void compare_points(const L& r, const std::vector<S>& s, const F& image, double m,
+                      const std::string& tag) {
+    for (std::size_t i = 0; i < r.size() && i < s.size(); ++i)
+      compare_points(r[i], s[i], image, m, tag);
+  }
+  template <class S, class F>
+  requires(!std::is_same_v<S, L>) void compare_points(const R& r, const S& s, const F& image,
+                                                      double m, const std::string& tag) {
     if (r.kind != Kind::point && r.kind != Kind::points && r.kind != Kind::segment) return;
     for (int i = 0; i < r.count; ++i) {
       const Vec<T, N> q = image(r.point[std::size_t(i)]);
@@ -515,27 +557,25 @@ class PairChecker {
     }
   }
 
-  void check_swap(const A& a, const B& b, const R& r, double m) {
-    const auto t = intersection(b, a);
-    if (t.kind != r.kind || t.count != r.count) {
-      fail(std::string("swapped: kind ") + kind_name(t.kind) + " count " + std::to_string(t.count) +
-           " vs " + kind_name(r.kind) + " count " + std::to_string(r.count));
-      return;
-    }
-    if (opt_.exact_swap) {
-      const auto w = swapped(r);
-      for (int i = 0; i < r.count; ++i) {
-        const std::size_t j = std::size_t(i);
-        if (!(t.point[j] == w.point[j]) || !same_param(t.param_a[j], w.param_a[j]) ||
-            !same_param(t.param_b[j], w.param_b[j]))
-          fail("intersection(b, a) != swapped(intersection(a, b)) at entry " + std::to_string(i));
+  void check_swap(const A& a, const B& b, const L& r, double m) {
+    const auto t = pieces(intersection(b, a));
+    if (!same_shape(r, t, " (swapped)")) return;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      if (opt_.exact_swap) {
+        const auto w = swapped(r[i]);
+        for (std::size_t j = 0; j < std::size_t(w.count); ++j) {
+          if (!(t[i].point[j] == w.point[j]) || !same_param(t[i].param_a[j], w.param_a[j]) ||
+              !same_param(t[i].param_b[j], w.param_b[j]))
+            fail("intersection(b, a) != swapped(intersection(a, b)) at piece " + std::to_string(i) +
+                 " entry " + std::to_string(j));
+        }
+        if constexpr (requires { w.multiplicity; }) {
+          if (t[i].multiplicity != w.multiplicity) fail("swapped: multiplicities differ");
+        }
+      } else {
+        compare_points(
+            r[i], t[i], [](const Vec<T, N>& p) { return p; }, m, " (swapped)");
       }
-      if constexpr (requires { r.multiplicity; }) {
-        if (t.multiplicity != w.multiplicity) fail("swapped: multiplicities differ");
-      }
-    } else {
-      compare_points(
-          r, t, [](const Vec<T, N>& p) { return p; }, m, " (swapped)");
     }
   }
 
