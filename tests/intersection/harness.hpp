@@ -33,6 +33,7 @@
 #include <locus/distance/point_circle.hpp>
 #include <locus/distance/point_ellipse.hpp>
 #include <locus/distance/point_line.hpp>
+#include <locus/distance/point_polyline.hpp>
 #include <locus/distance/point_ray.hpp>
 #include <locus/distance/point_segment.hpp>
 #include <locus/distance/point_triangle.hpp>
@@ -42,6 +43,7 @@
 #include <locus/primitives/ellipse.hpp>
 #include <locus/primitives/line.hpp>
 #include <locus/primitives/plane.hpp>
+#include <locus/primitives/polyline.hpp>
 #include <locus/primitives/ray.hpp>
 #include <locus/primitives/segment.hpp>
 #include <locus/primitives/sphere.hpp>
@@ -168,6 +170,44 @@ struct Side<locus::Line<T, N>> {
   static P moved(const P& l, const Motion<T, N>& m) { return {m(l.origin), m.rot(l.direction)}; }
   static P scaled(const P& l, T f) { return {f * l.origin, f * l.direction}; }
   static std::string str(const P& l) { return "line " + hex(l.origin) + " " + hex(l.direction); }
+};
+
+template <class T, int N>
+struct Side<locus::Polyline<T, N>> {
+  using P = locus::Polyline<T, N>;
+  static locus::Polyline<double, N> to_d(const P& p) {
+    locus::Polyline<double, N> d;
+    d.closed = p.closed;
+    for (const Vec<T, N>& v : p.vertices) d.vertices.push_back(vd(v));
+    return d;
+  }
+  static double residual(const P& p, const Vec<T, N>& x) {
+    return double(locus::distance(vd(x), to_d(p)).distance);
+  }
+  static double size(const P& p) {
+    double m = 0;
+    for (const Vec<T, N>& v : p.vertices) m = std::max(m, inf_norm(v));
+    return m;
+  }
+  static Vec<double, N> at(const P& p, T t) { return locus::point_at(to_d(p), double(t)); }
+  static bool param_ok(const P& p, T t, double) {
+    return t >= T(0) && double(t) <= double(locus::segment_count(p));
+  }
+  static P moved(const P& p, const Motion<T, N>& m) {
+    P o = p;
+    for (Vec<T, N>& v : o.vertices) v = m(v);
+    return o;
+  }
+  static P scaled(const P& p, T f) {
+    P o = p;
+    for (Vec<T, N>& v : o.vertices) v = f * v;
+    return o;
+  }
+  static std::string str(const P& p) {
+    std::string out = p.closed ? "closed polyline" : "polyline";
+    for (const Vec<T, N>& v : p.vertices) out += " " + hex(v);
+    return out;
+  }
 };
 
 // ---- curves -------------------------------------------------------------------------------

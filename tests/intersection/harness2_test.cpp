@@ -11,6 +11,7 @@
 #include <locus/intersection/line_segment.hpp>
 #include <locus/intersection/ray_ray.hpp>
 #include <locus/intersection/segment_circle.hpp>
+#include <locus/intersection/segment_polyline.hpp>
 #include <locus/intersection/segment_segment.hpp>
 
 #include <gmpxx.h>
@@ -29,6 +30,7 @@ using locus::Circle2;
 using locus::Ellipse2;
 using locus::Kind;
 using locus::Line2;
+using locus::Polyline2;
 using locus::Ray2;
 using locus::Segment2;
 using locus::Triangle2;
@@ -337,6 +339,41 @@ TYPED_TEST(IntersectionHarness2, TriangleTriangleSat) {
             break;
         }
         return std::pair{a, b};
+      },
+      opt);
+}
+
+TYPED_TEST(IntersectionHarness2, SegmentPolyline) {
+  using T = TypeParam;
+  Options opt;
+  opt.residual = 8;  // points within 6 eps max(|X|inf, m) (segment_polyline.hpp)
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        Polyline2<T> p;
+        p.closed = rng.uniform_int(0, 2) == 0;
+        const int n = rng.uniform_int(1, 6);
+        for (int i = 0; i < n; ++i) p.vertices.push_back(grid_vec<T, 2>(rng, -1, 1));
+        const Vec2<T> v = p.vertices[std::size_t(rng.uniform_int(0, n - 1))];
+        const Vec2<T> w = p.vertices[std::size_t(rng.uniform_int(0, n - 1))];
+        Vec2<T> p0 = grid_vec<T, 2>(rng, -1, 1), p1 = grid_vec<T, 2>(rng, -1, 1);
+        switch (rng.uniform_int(0, 4)) {
+          case 0:
+            p0 = v;
+            break;  // from a vertex
+          case 1:   // through a vertex
+            p1 = v + (v - p0);
+            break;
+          case 2:  // along an edge (or a chord between two vertices), overhanging
+            p0 = v + (v - w) / T(4);
+            p1 = w + (w - v) / T(4);
+            break;
+          case 3:
+            p0 = (v + w) / T(2);
+            break;  // from a point of a chord
+          default:
+            break;
+        }
+        return std::pair{Segment2<T>{p0, p1}, p};
       },
       opt);
 }
