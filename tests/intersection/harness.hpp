@@ -2,32 +2,30 @@
 #pragma once
 // The generic intersection-query harness of rows int2.* and int3.* (harness2_test.cpp,
 // harness3_test.cpp), the counterpart of tests/distance/harness.hpp.
-//
-// check_intersection_pairs<T, A, B>(gen, opt, oracle) draws opt.cases pairs (a, b) from gen(rng)
-// and checks, for r = intersection(a, b) (any Intersection-shaped result: kind, count, point,
-// param_a, param_b):
-//   1. every reported point lies on both objects: its distance to each (the library's
-//      distance(point, object) in double, or an implicit residual: plane, sphere) is at most
-//      opt.residual eps m, m the largest |coordinate| or radius of the inputs, eps of T;
-//      and each parameter lies in its domain and maps (the primitive's point_at) to within
-//      opt.param m of its point (opt.param defaults to opt.residual eps; a triangle's (s, t)
-//      may leave its domain by opt.domain_slack eps, default 4: two separately rounded parameters);
-//   2. intersection(b, a) == swapped(r) bit for bit (kind, count, points, parameters) when the
-//      pair has a swapped overload (opt.exact_swap); for a same-type pair the same kind, count
-//      and point set (within opt.position m) with the parameters exchanged;
-//   3. intersects(a, b) == (r.kind != empty), in both argument orders, where intersects exists;
-//   4. scaling both inputs by 2^k (exact; k = +-20 float, +-100 double unless opt.scale_exp)
-//      gives the same kind and count, points on both scaled objects (check 1) and, for kinds
-//      point, points and segment, the points scaled (f p within opt.position f m);
-//   5. an exact rigid motion (a signed permutation of the axes, i.e. the reflections and 90 degree
-//      rotations, and, when opt.translate, a translation by multiples of 2^-4, exact for the
-//      grid inputs of the generators) gives the same kind and count, points on both moved objects
-//      and (point, points, segment) the moved points within opt.position m;
-//   6. an optional oracle (exact GMP: linear_oracle.hpp, conic_oracle.hpp, linear3_oracle.hpp
-//      or an exact test of the pair) gives the same kind and count.
-// Side<P> describes how the harness sees a primitive: the residual of a point, its size m, its
-// parameter map and domain, the rigid motion and the scaling. Failures print the seed, the case
-// and the inputs in hexadecimal floating point.
+// check_intersection_pairs<T>(gen, opt, oracle) draws opt.cases pairs (a, b) from gen(rng) and
+// checks r = intersection(a, b), seen as a list of pieces (an Intersection-shaped result is one
+// piece; a PolylineIntersection2 lists its crossings), each with kind, count, point, params:
+//   1. every point lies on both objects: its distance to each (the library's distance(point,
+//      object) in double; an implicit residual for plane and sphere; edges for a 2D triangle) is
+//      <= opt.residual eps max(m, |X|inf), m the largest |coordinate| or radius of the inputs,
+//      eps of T; each parameter is in its domain and point_at maps it to within opt.param of the
+//      point (default opt.residual eps, same scale; a triangle's (s, t) may leave its domain by
+//      opt.domain_slack eps, default 4, two parameters rounded separately);
+//   2. intersection(b, a) == swapped(r) bit for bit (points, parameters, multiplicities) when the
+//      pair has a swapped overload (opt.exact_swap); else (a same-type pair) the same kinds and
+//      counts and the same point set within opt.position max(m, |X|inf);
+//   3. intersects(a, b) and intersects(b, a) == (some piece is not empty), where they exist;
+//   4. scaling both inputs by 2^+-k (exact; k = 20 float, 100 double, or opt.scale_exp) keeps
+//      the kinds and counts, check 1 on the scaled pair, and (point, points, segment) the points
+//      scaled within opt.position;
+//   5. an exact rigid motion (a signed axis permutation: reflections and 90 degree rotations;
+//      with opt.translate a shift by multiples of 2^-4, exact on the generators' 2^-10 grid)
+//      keeps the kinds and counts, check 1 on the moved pair, and the moved points (as in 4);
+//   6. an optional exact oracle (GMP: linear_oracle.hpp, conic_oracle.hpp, linear3_oracle.hpp,
+//      or one written in the test) gives the same kind and count.
+// Side<P> says how the harness sees a primitive: residual of a point, size m, parameter map and
+// domain, rigid motion, scaling. Failures print the seed (LOCUS_TEST_SEED), the case and the
+// inputs in hexadecimal floating point; LOCUS_HARNESS_KINDS=1 prints the kinds each draw hit.
 
 #include <locus/distance/point_aligned_box.hpp>
 #include <locus/distance/point_circle.hpp>
