@@ -5,7 +5,8 @@
 // triangle, through a vertex or an edge midpoint, in the triangle's plane, tangent to the
 // sphere, on a box face, parallel and coincident planes, triangles sharing a vertex or an edge
 // or coplanar), with the exact GMP oracle of linear3_oracle.hpp and exact classifications of
-// line-sphere (the sign of the discriminant) and plane-plane (ranks) written here.
+// line-sphere (the sign of the discriminant), ray-box (slab clipping) and plane-plane (ranks)
+// written here.
 
 #include <locus/intersection/line_sphere.hpp>
 #include <locus/intersection/plane_plane.hpp>
@@ -238,7 +239,28 @@ TYPED_TEST(IntersectionHarness3, RayAlignedBox) {
         }
         return std::pair{Ray3<T>{o, d}, b};
       },
-      opt);
+      opt,
+      [](const Ray3<T>& r, const AlignedBox<T, 3>& b) -> std::optional<Expected> {
+        // Slab clipping of t >= 0 in rationals.
+        mpq_class lo = 0, hi = 0;
+        bool bounded = false;
+        for (int k = 0; k < 3; ++k) {
+          const mpq_class o(double(r.origin[k])), d(double(r.direction[k]));
+          const mpq_class mn(double(b.min[k])), mx(double(b.max[k]));
+          if (d == 0) {
+            if (o < mn || o > mx) return Expected{Kind::empty, 0};
+            continue;
+          }
+          mpq_class t1 = (mn - o) / d, t2 = (mx - o) / d;
+          if (t1 > t2) std::swap(t1, t2);
+          if (t1 > lo) lo = t1;
+          if (!bounded || t2 < hi) hi = t2;
+          bounded = true;
+        }
+        if (!bounded) return Expected{Kind::point, 1};  // a zero direction inside the box
+        if (lo > hi) return Expected{Kind::empty, 0};
+        return lo == hi ? Expected{Kind::point, 1} : Expected{Kind::segment, 2};
+      });
 }
 
 TYPED_TEST(IntersectionHarness3, PlanePlane) {
