@@ -14,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 namespace {
@@ -434,7 +435,7 @@ TYPED_TEST(MinBox, CertifiedVsRefinedOracle) {
   using T = TypeParam;
   Rng rng;
   SCOPED_TRACE(rng.trace());
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
   const int trials = 4, samples = 400;
 #else
   const int trials = 16, samples = 1500;
@@ -549,7 +550,7 @@ TYPED_TEST(MinBox, EllipsoidCloudCertified) {
   const auto r = locus::min_box<T>(pts);
   check_box(pts, r, 10.0);
   EXPECT_TRUE(r.certified);
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
   const int samples = 300;
 #else
   const int samples = 1500;
@@ -585,7 +586,7 @@ TYPED_TEST(MinBox, RegionSearchCertifiedLikeArcs) {
   using T = TypeParam;
   Rng rng;
   SCOPED_TRACE(rng.trace());
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
   const int n = 60, samples = 200, shape_count = 1;
 #else
   const int n = 400, samples = 1500, shape_count = 3;
@@ -631,7 +632,7 @@ TYPED_TEST(MinBox, RegionSearchStopsWhenHopeless) {
   using T = TypeParam;
   Rng rng;
   SCOPED_TRACE(rng.trace());
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
   const int n = 400;
 #else
   const int n = 3000;
@@ -639,7 +640,7 @@ TYPED_TEST(MinBox, RegionSearchStopsWhenHopeless) {
   const std::vector<Vec3<T>> pts = ellipsoid_surface<T>(rng, n, 1.0, 1.0, 1.0);
   locus::MinBoxOptions o;
   o.max_work = 2000000;
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
   o.search = locus::MinBoxSearch::regions;
 #endif
   // (Without the sanitizer: chosen automatically, the facet pass of 6000 facets would take

@@ -21,6 +21,7 @@
 #include <set>
 #include <vector>
 
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 namespace {
@@ -32,7 +33,7 @@ using locus::Sign;
 using locus::Status;
 using locus::Vec3;
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kScale = 4;  // the sanitizer run uses smaller inputs
 #else
 constexpr int kScale = 1;

@@ -11,6 +11,7 @@
 
 #include "distance/harness.hpp"
 #include "distance/linear_oracle.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <cmath>
@@ -27,7 +28,7 @@ TYPED_TEST_SUITE(Circle3PairsTest, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCaseScale = 4;
 #else
 constexpr int kCaseScale = 1;

@@ -16,6 +16,7 @@
 #include <locus/hull/hull2.hpp>
 #include <locus/hull/hull3.hpp>
 
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -29,7 +30,7 @@ namespace {
 using namespace locus;
 using locus_test::Rng;
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kScale = 4;  // fewer random cases under the sanitizers
 #else
 constexpr int kScale = 1;

@@ -18,6 +18,7 @@
 #include "distance/harness.hpp"
 #include "distance/linear_oracle.hpp"
 #include "distance/side_curved.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -39,7 +40,7 @@ TYPED_TEST_SUITE(LinearCurveTest, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCaseScale = 6;
 #else
 constexpr int kCaseScale = 1;

@@ -9,6 +9,7 @@
 #include "distance/harness.hpp"
 #include "distance/linear_oracle.hpp"
 #include "distance/side_curved.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <cmath>
@@ -25,7 +26,7 @@ TYPED_TEST_SUITE(LinearEllipseTest, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCaseScale = 4;
 #else
 constexpr int kCaseScale = 1;

@@ -13,6 +13,7 @@
 #include <locus/distance/line_plane.hpp>
 
 #include "distance/harness.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <cmath>
@@ -29,7 +30,7 @@ TYPED_TEST_SUITE(LinearPlaneDiskTest, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCaseScale = 4;
 #else
 constexpr int kCaseScale = 1;

@@ -9,6 +9,7 @@
 #include "distance/exact_planar.hpp"
 #include "distance/harness.hpp"
 #include "distance/side_solids.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -28,7 +29,7 @@ TYPED_TEST_SUITE(LinearTetrahedronTest, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCases = 40;
 #else
 constexpr int kCases = 80;

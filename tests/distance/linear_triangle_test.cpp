@@ -8,6 +8,7 @@
 #include "distance/exact.hpp"
 #include "distance/exact_planar.hpp"
 #include "distance/harness.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -29,7 +30,7 @@ TYPED_TEST_SUITE(LinearTriangleTest, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCases = 60;
 #else
 constexpr int kCases = 100;

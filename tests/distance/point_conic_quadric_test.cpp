@@ -11,6 +11,7 @@
 #include <locus/distance/point_quadric.hpp>
 
 #include "distance/harness.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -31,7 +32,7 @@ TYPED_TEST_SUITE(PointConicTest, locus_test::RealTypes);
 namespace {
 
 // Fewer cases under the sanitizers (the CI runs every test binary there at -O1 too).
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCaseScale = 3;
 #else
 constexpr int kCaseScale = 1;

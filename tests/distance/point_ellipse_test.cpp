@@ -9,6 +9,7 @@
 
 #include "distance/harness.hpp"
 #include "distance/side_curved.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -29,7 +30,7 @@ TYPED_TEST_SUITE(PointEllipseTest, locus_test::RealTypes);
 namespace {
 
 // Fewer cases under the sanitizers (the CI runs every test binary there at -O1 too).
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCaseScale = 3;
 #else
 constexpr int kCaseScale = 1;

@@ -10,6 +10,7 @@
 
 #include "distance/harness.hpp"
 #include "distance/side_boxes_meshes.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <array>
@@ -30,7 +31,7 @@ TYPED_TEST_SUITE(PointMeshTest, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kScale = 4;  // fewer cases under the sanitizers
 #else
 constexpr int kScale = 1;

@@ -7,6 +7,7 @@
 #include "distance/exact.hpp"
 #include "distance/harness.hpp"
 #include "distance/side_solids.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -27,7 +28,7 @@ TYPED_TEST_SUITE(PointPolygon3Test, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCases = 60;
 #else
 constexpr int kCases = 120;

@@ -13,6 +13,7 @@
 
 #include "distance/harness.hpp"
 #include "distance/side_curved.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -110,7 +111,7 @@ TYPED_TEST_SUITE(PointSurfaceTest, locus_test::RealTypes);
 namespace {
 
 // Fewer cases and a coarser oracle grid under the sanitizers (CI runs this binary at -O0 there).
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCaseScale = 4;
 constexpr int kGrid = 48;
 #else

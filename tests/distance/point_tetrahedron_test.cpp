@@ -7,6 +7,7 @@
 #include "distance/exact_planar.hpp"
 #include "distance/harness.hpp"
 #include "distance/side_solids.hpp"
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ TYPED_TEST_SUITE(PointTetrahedronTest, locus_test::RealTypes);
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 constexpr int kCases = 60;
 #else
 constexpr int kCases = 120;

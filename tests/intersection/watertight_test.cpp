@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/sanitizer.hpp"
 #include "support/typed.hpp"
 
 namespace {
@@ -31,7 +32,7 @@ namespace {
 using namespace locus;
 using locus_test::Rng;
 
-#if defined(__SANITIZE_ADDRESS__)
+#if LOCUS_TEST_SANITIZED
 [[maybe_unused]] constexpr bool sanitized = true;
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)

@@ -5,18 +5,21 @@
 // -O0, some 20-40 times slower: a test may run a smaller, equally covering selection there when
 // the optimised run checks the full one (say which, and why the selection covers the same code).
 
-namespace locus_test {
-
+// LOCUS_TEST_SANITIZED is 1 in that build, else 0, for #if; kSanitizerBuild is the same as a
+// constant.
 #if defined(__SANITIZE_ADDRESS__)
-inline constexpr bool kSanitizerBuild = true;
+#define LOCUS_TEST_SANITIZED 1
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-inline constexpr bool kSanitizerBuild = true;
-#else
-inline constexpr bool kSanitizerBuild = false;
+#define LOCUS_TEST_SANITIZED 1
 #endif
-#else
-inline constexpr bool kSanitizerBuild = false;
 #endif
+#ifndef LOCUS_TEST_SANITIZED
+#define LOCUS_TEST_SANITIZED 0
+#endif
+
+namespace locus_test {
+
+inline constexpr bool kSanitizerBuild = LOCUS_TEST_SANITIZED != 0;
 
 }  // namespace locus_test
