@@ -7,7 +7,7 @@
 // piece; a PolylineIntersection2 lists its crossings), each with kind, count, point, params:
 //   1. every point lies on both objects: its distance to each (the library's distance(point,
 //      object) in double; an implicit residual for plane and sphere; edges for a 2D triangle) is
-//      <= opt.residual eps max(m, |X|inf), m the largest |coordinate| or radius of the inputs,
+//      <= opt.residual eps max(m, |X|inf), m the largest |coordinate|, radius or extent,
 //      eps of T; each parameter is in its domain and point_at maps it to within opt.param of the
 //      point (default opt.residual eps, same scale; a triangle's (s, t) may leave its domain by
 //      opt.domain_slack eps, default 4, two parameters rounded separately);
@@ -31,6 +31,7 @@
 #include <locus/distance/point_circle.hpp>
 #include <locus/distance/point_ellipse.hpp>
 #include <locus/distance/point_line.hpp>
+#include <locus/distance/point_oriented_box.hpp>
 #include <locus/distance/point_polyline.hpp>
 #include <locus/distance/point_ray.hpp>
 #include <locus/distance/point_segment.hpp>
@@ -40,6 +41,7 @@
 #include <locus/primitives/circle.hpp>
 #include <locus/primitives/ellipse.hpp>
 #include <locus/primitives/line.hpp>
+#include <locus/primitives/oriented_box.hpp>
 #include <locus/primitives/plane.hpp>
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/ray.hpp>
@@ -350,6 +352,27 @@ struct Side<locus::AlignedBox<T, 3>> {
   }
   static P scaled(const P& b, T f) { return {f * b.min, f * b.max}; }
   static std::string str(const P& b) { return "box " + hex(b.min) + " " + hex(b.max); }
+};
+
+template <class T>
+struct Side<locus::OrientedBox<T, 3>> {
+  using P = locus::OrientedBox<T, 3>;
+  static double residual(const P& b, const Vec<T, 3>& x) {
+    const locus::OrientedBox<double, 3> d{
+        vd(b.center), {vd(b.axis[0]), vd(b.axis[1]), vd(b.axis[2])}, vd(b.extent)};
+    return std::sqrt(double(locus::sqr_distance(vd(x), d)));
+  }
+  static double size(const P& b) { return std::max(inf_norm(b.center), inf_norm(b.extent)); }
+  static P moved(const P& b, const Motion<T, 3>& m) {
+    return {m(b.center), {m.rot(b.axis[0]), m.rot(b.axis[1]), m.rot(b.axis[2])}, b.extent};
+  }
+  static P scaled(const P& b, T f) {
+    return {f * b.center, {b.axis[0], b.axis[1], b.axis[2]}, f * b.extent};
+  }
+  static std::string str(const P& b) {
+    return "obox " + hex(b.center) + " axes " + hex(b.axis[0]) + " " + hex(b.axis[1]) + " " +
+           hex(b.axis[2]) + " extent " + hex(b.extent);
+  }
 };
 
 template <class T>

@@ -3,15 +3,18 @@
 // int3.linear-triangle, int3.linear-quadric, int3.boxes, int3.planes, int3.plane-triangle):
 // seeded grid inputs leaning to the degenerate (an end point or origin in the plane or on the
 // triangle, through a vertex or an edge midpoint, in the triangle's plane, tangent to the
-// sphere, on a box face, parallel and coincident planes, triangles sharing a vertex or an edge
-// or coplanar), with the exact GMP oracle of linear3_oracle.hpp and exact classifications of
-// line-sphere (the sign of the discriminant), ray-box (slab clipping) and plane-plane (ranks)
-// written here.
+// sphere, on a box face, through an oriented box's corner or grazing its face, parallel and
+// coincident planes, triangles sharing a vertex or an edge or coplanar), with the exact GMP
+// oracle of linear3_oracle.hpp and exact classifications of line-sphere (the sign of the
+// discriminant), ray/segment-box (slab clipping; oriented boxes with signed-permutation axes)
+// and plane-plane (ranks) written here.
 
 #include <locus/intersection/line_sphere.hpp>
 #include <locus/intersection/plane_plane.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
+#include <locus/intersection/ray_oriented_box.hpp>
 #include <locus/intersection/ray_triangle.hpp>
+#include <locus/intersection/segment_oriented_box.hpp>
 #include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/segment_triangle.hpp>
 #include <locus/intersection/triangle_triangle.hpp>
@@ -30,6 +33,7 @@ namespace {
 using locus::AlignedBox;
 using locus::Kind;
 using locus::Line3;
+using locus::OrientedBox3;
 using locus::Plane3;
 using locus::Ray3;
 using locus::Segment3;
@@ -260,6 +264,137 @@ TYPED_TEST(IntersectionHarness3, RayAlignedBox) {
         if (!bounded) return Expected{Kind::point, 1};  // a zero direction inside the box
         if (lo > hi) return Expected{Kind::empty, 0};
         return lo == hi ? Expected{Kind::point, 1} : Expected{Kind::segment, 2};
+      });
+}
+
+/// A grid box whose axes are a signed permutation of the coordinate axes (exact), or, with
+/// `rotated`, turned about z by cos = 3/5, sin = 4/5 rounded (not exactly orthonormal).
+template <class T>
+OrientedBox3<T> grid_oriented_box(Rng& rng, bool rotated) {
+  OrientedBox3<T> b;
+  b.center = grid_vec<T, 3>(rng, -1, 1);
+  for (int i = 0; i < 3; ++i) b.extent[i] = T(rng.uniform_int(0, 64)) / T(64);
+  std::array<int, 3> perm{0, 1, 2};
+  for (int i = 2; i > 0; --i)
+    std::swap(perm[std::size_t(i)], perm[std::size_t(rng.uniform_int(0, i))]);
+  for (int i = 0; i < 3; ++i) {
+    b.axis[i] = Vec3<T>{};
+    b.axis[i][perm[std::size_t(i)]] = rng.uniform_int(0, 1) ? T(1) : T(-1);
+  }
+  if (rotated) {
+    const T c = T(3) / T(5), s = T(4) / T(5);
+    b.axis[0] = {c, s, T(0)};
+    b.axis[1] = {-s, c, T(0)};
+    b.axis[2] = {T(0), T(0), T(1)};
+  }
+  return b;
+}
+
+/// An origin and a direction aimed at the box, often degenerately: through a corner, from the
+/// centre, from a corner, grazing a face (parallel to it, in its plane), through a face centre.
+/// A rotated (rounded) box gets only generic draws, through its centre or random: within a few
+/// eps of its surface the library's rounded frame change decides (ray_oriented_box.hpp), so a
+/// degenerate draw may rightly change kind under the harness's motions.
+template <class T>
+std::array<Vec3<T>, 2> aimed_at_box(Rng& rng, const OrientedBox3<T>& b, bool rotated) {
+  Vec3<T> o = grid_vec<T, 3>(rng, -2, 2), d = grid_vec<T, 3>(rng, -1, 1);
+  const Vec3<T> a0 = b.extent[0] * b.axis[0], a1 = b.extent[1] * b.axis[1],
+                a2 = b.extent[2] * b.axis[2];
+  const int draw = rng.uniform_int(0, 5);
+  if (rotated) {
+    if (draw < 3) d = b.center - o;
+    return {o, d};
+  }
+  switch (draw) {
+    case 0:
+      d = b.center + a0 + a1 + a2 - o;
+      break;  // through a corner
+    case 1:
+      o = b.center;
+      break;  // from the centre
+    case 2:
+      o = b.center - a0 - a1 - a2;
+      break;  // from a corner
+    case 3:   // grazing a face: in the plane of face +axis2, moving parallel to it
+      o = b.center + a2 + T(rng.uniform_int(-8, 8)) / T(4) * a0;
+      d = T(rng.uniform_int(-4, 4)) * b.axis[0] + T(rng.uniform_int(-4, 4)) * b.axis[1];
+      break;
+    case 4:
+      d = b.center + a0 - o;
+      break;  // through a face centre
+    default:
+      break;
+  }
+  return {o, d};
+}
+
+/// Slab clipping of origin + t direction, t >= 0 (and t <= 1 for a segment), against a box
+/// whose axes are a signed permutation (so the frame change is exact), in rationals.
+template <class T>
+std::optional<Expected> exact_obox_slabs(const Vec3<T>& o, const Vec3<T>& d,
+                                         const OrientedBox3<T>& b, bool segment) {
+  namespace ex = locus_test::exact3;
+  for (int k = 0; k < 3; ++k)  // a rounded (rotated) frame: no oracle
+    if (ex::qdot(ex::q(b.axis[k]), ex::q(b.axis[k])) != 1) return std::nullopt;
+  mpq_class lo = 0, hi = 1;
+  bool bounded = segment;  // a segment: t <= 1
+  bool moving = false;
+  const ex::Q3 w = ex::q(o) - ex::q(b.center), dd = ex::q(d);
+  for (int k = 0; k < 3; ++k) {
+    const ex::Q3 axis = ex::q(b.axis[k]);
+    const mpq_class ok = ex::qdot(w, axis), dk = ex::qdot(dd, axis), e(double(b.extent[k]));
+    if (dk == 0) {
+      if (ok < -e || ok > e) return Expected{Kind::empty, 0};
+      continue;
+    }
+    moving = true;
+    mpq_class t1 = (-e - ok) / dk, t2 = (e - ok) / dk;
+    if (t1 > t2) std::swap(t1, t2);
+    if (t1 > lo) lo = t1;
+    if (!bounded || t2 < hi) hi = t2;
+    bounded = true;
+  }
+  if (!moving) return Expected{Kind::point, 1};  // a zero direction inside the box
+  if (lo > hi) return Expected{Kind::empty, 0};
+  return lo == hi ? Expected{Kind::point, 1} : Expected{Kind::segment, 2};
+}
+
+TYPED_TEST(IntersectionHarness3, RayOrientedBox) {
+  using T = TypeParam;
+  Options opt;
+  opt.cases = 100;
+  opt.residual = 16;
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const bool rotated = rng.uniform_int(0, 3) == 0;
+        const OrientedBox3<T> b = grid_oriented_box<T>(rng, rotated);
+        const std::array<Vec3<T>, 2> od = aimed_at_box<T>(rng, b, rotated);
+        return std::pair{Ray3<T>{od[0], od[1]}, b};
+      },
+      opt,
+      [](const Ray3<T>& r, const OrientedBox3<T>& b) {
+        return exact_obox_slabs<T>(r.origin, r.direction, b, false);
+      });
+}
+
+TYPED_TEST(IntersectionHarness3, SegmentOrientedBox) {
+  using T = TypeParam;
+  Options opt;
+  opt.cases = 100;
+  opt.residual = 16;
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const bool rotated = rng.uniform_int(0, 3) == 0;
+        const OrientedBox3<T> b = grid_oriented_box<T>(rng, rotated);
+        const std::array<Vec3<T>, 2> od = aimed_at_box<T>(rng, b, rotated);
+        // Ends at 1/2, 1 or 2 of the direction: short of the box, on it, or through it.
+        const int k = rng.uniform_int(0, 2);
+        const T f = k == 0 ? T(0.5) : T(k);
+        return std::pair{Segment3<T>{od[0], od[0] + f * od[1]}, b};
+      },
+      opt,
+      [](const Segment3<T>& s, const OrientedBox3<T>& b) {
+        return exact_obox_slabs<T>(s.p0, s.p1 - s.p0, b, true);
       });
 }
 
