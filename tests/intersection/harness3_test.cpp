@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 // The generic intersection harness (harness.hpp) on 3D pairs (rows int3.linear-plane,
-// int3.linear-triangle, int3.linear-quadric, int3.boxes, int3.planes, int3.plane-triangle):
-// seeded grid inputs leaning to the degenerate (an end point or origin in the plane or on the
-// triangle, through a vertex or an edge midpoint, in the triangle's plane, tangent to the
-// sphere, on a box face, through an oriented box's corner or grazing its face, parallel and
+// int3.linear-triangle, int3.linear-quadric, int3.boxes, int3.planes, int3.plane-triangle,
+// int3.surface-surface): seeded grid inputs leaning to the degenerate (an end point or origin in
+// the plane or on the triangle, through a vertex or an edge midpoint, in the triangle's plane,
+// tangent to the sphere, on a box face, through an oriented box's corner or grazing its face,
+// spheres tangent outside or inside, coincident, concentric or a point sphere, parallel and
 // coincident planes, triangles sharing a vertex or an edge or coplanar), with the exact GMP
 // oracle of linear3_oracle.hpp and exact classifications of line-sphere (the sign of the
-// discriminant), ray/segment-box (slab clipping; oriented boxes with signed-permutation axes)
-// and plane-plane (ranks) written here.
+// discriminant), ray/segment-box (slab clipping; oriented boxes with signed-permutation axes),
+// sphere-sphere (signs of |u|^2 - (r0 +- r1)^2) and plane-plane (ranks) written here.
 
 #include <locus/intersection/line_sphere.hpp>
 #include <locus/intersection/plane_plane.hpp>
@@ -17,6 +18,7 @@
 #include <locus/intersection/segment_oriented_box.hpp>
 #include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/segment_triangle.hpp>
+#include <locus/intersection/sphere_sphere.hpp>
 #include <locus/intersection/triangle_triangle.hpp>
 
 #include <gmpxx.h>
@@ -395,6 +397,69 @@ TYPED_TEST(IntersectionHarness3, SegmentOrientedBox) {
       opt,
       [](const Segment3<T>& s, const OrientedBox3<T>& b) {
         return exact_obox_slabs<T>(s.p0, s.p1 - s.p0, b, true);
+      });
+}
+
+/// A signed coordinate axis (exact).
+template <class T>
+Vec3<T> grid_axis(Rng& rng) {
+  Vec3<T> e{};
+  e[rng.uniform_int(0, 2)] = rng.uniform_int(0, 1) ? T(1) : T(-1);
+  return e;
+}
+
+TYPED_TEST(IntersectionHarness3, SphereSphere) {
+  using T = TypeParam;
+  Options opt;
+  opt.cases = 100;
+  opt.residual = 16;
+  opt.exact_swap = false;  // a same-type pair: the circle's normal reverses
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        Sphere<T, 3> a{grid_vec<T, 3>(rng, -1, 1), T(rng.uniform_int(1, 64)) / T(64)};
+        Sphere<T, 3> b{grid_vec<T, 3>(rng, -1, 1), T(rng.uniform_int(1, 64)) / T(64)};
+        switch (rng.uniform_int(0, 8)) {
+          case 0:
+            b.center = a.center + (a.radius + b.radius) * grid_axis<T>(rng);
+            break;  // tangent outside, along an axis
+          case 1:
+            b.center = a.center + (a.radius - b.radius) * grid_axis<T>(rng);
+            break;   // tangent inside (or coincident), along an axis
+          case 2: {  // tangent outside along (3, 4, 0) / 5: |u| = 5 j / 64 = r0 + r1
+            const int j = rng.uniform_int(1, 8);
+            a.radius = T(rng.uniform_int(1, 5 * j - 1)) / T(64);
+            b.radius = T(5 * j) / T(64) - a.radius;
+            Vec3<T> u{};
+            u[rng.uniform_int(0, 2)] = T(3 * j) / T(64);
+            u[u.x != T(0) ? 1 : 0] += T(4 * j) / T(64);
+            b.center = a.center + u;
+            break;
+          }
+          case 3:
+            b = a;
+            break;  // coincident
+          case 4:
+            b.center = a.center;
+            break;  // concentric
+          case 5:   // a point sphere on a
+            b = {a.center + a.radius * grid_axis<T>(rng), T(0)};
+            break;
+          default:  // near each other: mostly a circle
+            b.center = a.center + grid_vec<T, 3>(rng, -0.5, 0.5);
+            break;
+        }
+        return std::pair{a, b};
+      },
+      opt,
+      [](const Sphere<T, 3>& a, const Sphere<T, 3>& b) -> std::optional<Expected> {
+        namespace ex = locus_test::exact3;
+        const ex::Q3 u = ex::q(b.center) - ex::q(a.center);
+        const mpq_class r0(double(a.radius)), r1(double(b.radius)), uu = ex::qdot(u, u);
+        const mpq_class outer = uu - (r0 + r1) * (r0 + r1), inner = uu - (r0 - r1) * (r0 - r1);
+        if (uu == 0 && r0 == r1 && r0 > 0) return Expected{Kind::coincident, 0};
+        if (outer > 0 || inner < 0) return Expected{Kind::empty, 0};
+        if (outer == 0 || inner == 0) return Expected{Kind::point, 1};
+        return Expected{Kind::circle, 3};
       });
 }
 
