@@ -4,14 +4,17 @@
 // int3.surface-surface): seeded grid inputs leaning to the degenerate (an end point or origin in
 // the plane or on the triangle, through a vertex or an edge midpoint, in the triangle's plane,
 // tangent to the sphere, on a box face, through an oriented box's corner or grazing its face,
-// spheres tangent outside or inside, coincident, concentric or a point sphere, parallel and
-// coincident planes, triangles sharing a vertex or an edge or coplanar), with the exact GMP
-// oracle of linear3_oracle.hpp and exact classifications of line-sphere (the sign of the
-// discriminant), ray/segment-box (slab clipping; oriented boxes with signed-permutation axes),
-// sphere-sphere (signs of |u|^2 - (r0 +- r1)^2) and plane-plane (ranks) written here.
+// spheres tangent outside or inside, coincident, concentric or a point sphere, a triangle with
+// a vertex, an edge or all of it in the plane (collinear too), parallel and coincident planes,
+// triangles sharing a vertex or an edge or coplanar), with the exact GMP oracle of
+// linear3_oracle.hpp and exact classifications of line-sphere (the sign of the discriminant),
+// ray/segment-box (slab clipping; oriented boxes with signed-permutation axes), sphere-sphere
+// (signs of |u|^2 - (r0 +- r1)^2), triangle-plane (vertex sides) and plane-plane (ranks) written
+// here.
 
 #include <locus/intersection/line_sphere.hpp>
 #include <locus/intersection/plane_plane.hpp>
+#include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
 #include <locus/intersection/ray_oriented_box.hpp>
 #include <locus/intersection/ray_triangle.hpp>
@@ -494,6 +497,77 @@ TYPED_TEST(IntersectionHarness3, PlanePlane) {
         const bool same = ex::is_zero(
             ex::Q3{na.x * cb - nb.x * ca, na.y * cb - nb.y * ca, na.z * cb - nb.z * ca});
         return same ? Expected{Kind::plane, 3} : Expected{Kind::empty, 0};
+      });
+}
+
+TYPED_TEST(IntersectionHarness3, TrianglePlane) {
+  using T = TypeParam;
+  Options opt;
+  opt.cases = 100;
+  opt.residual = 16;
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const std::pair<Plane3<T>, Vec3<T>> pq = grid_plane<T>(rng);
+        const Vec3<T> n = pq.first.normal, q = pq.second;
+        // In-plane points q + cross(n, w): coordinates on the grid 2^-20 below 4 (exact).
+        const auto in_plane = [&]() { return q + locus::cross(n, grid_vec<T, 3>(rng, -1, 1)); };
+        Triangle3<T> t{grid_vec<T, 3>(rng, -1, 1), grid_vec<T, 3>(rng, -1, 1),
+                       grid_vec<T, 3>(rng, -1, 1)};
+        switch (rng.uniform_int(0, 7)) {
+          case 0:
+            t.v0 = in_plane();
+            break;  // a vertex in the plane
+          case 1:   // an edge in the plane
+            t.v0 = in_plane();
+            t.v1 = in_plane();
+            break;
+          case 2:  // the whole triangle in the plane
+            t = {in_plane(), in_plane(), in_plane()};
+            break;
+          case 3: {  // in the plane and collinear
+            const Vec3<T> a = in_plane(), b = in_plane();
+            t = {a, b, T(2) * b - a};
+            break;
+          }
+          case 4: {  // a vertex in the plane, the others on opposite sides
+            const Vec3<T> a = in_plane();
+            t = {a, a + n + grid_vec<T, 3>(rng, -0.25, 0.25), a - n};
+            break;
+          }
+          case 5: {  // degenerate, collinear across the plane through a vertex on it
+            const Vec3<T> a = in_plane();
+            t = {a + n, a, a - n};
+            break;
+          }
+          default:
+            break;
+        }
+        return std::pair{t, pq.first};
+      },
+      opt,
+      [](const Triangle3<T>& t, const Plane3<T>& p) -> std::optional<Expected> {
+        namespace ex = locus_test::exact3;
+        const ex::Q3 n = ex::q(p.normal), v[3] = {ex::q(t.v0), ex::q(t.v1), ex::q(t.v2)};
+        const mpq_class c(double(p.constant));
+        int pos = 0, neg = 0, zero = 0;
+        for (const ex::Q3& x : v) {
+          const int side = sgn(ex::qdot(n, x) - c);
+          pos += side > 0;
+          neg += side < 0;
+          zero += side == 0;
+        }
+        const bool flat = ex::is_zero(ex::qcross(v[1] - v[0], v[2] - v[0]));
+        if (flat) {  // the segment between the extreme vertices
+          if (zero == 3) {
+            const bool one_point = ex::is_zero(v[1] - v[0]) && ex::is_zero(v[2] - v[0]);
+            return one_point ? Expected{Kind::point, 1} : Expected{Kind::segment, 2};
+          }
+          return pos == 3 || neg == 3 ? Expected{Kind::empty, 0} : Expected{Kind::point, 1};
+        }
+        if (zero == 3) return Expected{Kind::polygon, 3};
+        if (pos == 3 || neg == 3) return Expected{Kind::empty, 0};
+        if (zero == 1 && (pos == 2 || neg == 2)) return Expected{Kind::point, 1};
+        return Expected{Kind::segment, 2};
       });
 }
 
