@@ -3,15 +3,16 @@
 // int3.linear-triangle, int3.linear-quadric, int3.boxes, int3.planes, int3.plane-triangle,
 // int3.surface-surface): seeded grid inputs leaning to the degenerate (an end point or origin in
 // the plane or on the triangle, through a vertex or an edge midpoint, in the triangle's plane,
-// tangent to the sphere, on a box face, through an oriented box's corner or grazing its face,
-// spheres tangent outside or inside, coincident, concentric or a point sphere, a triangle with
-// a vertex, an edge or all of it in the plane (collinear too), parallel and coincident planes,
-// triangles sharing a vertex or an edge or coplanar), with the exact GMP oracle of
-// linear3_oracle.hpp and exact classifications of line-sphere (the sign of the discriminant),
-// ray/segment-box (slab clipping; oriented boxes with signed-permutation axes), sphere-sphere
-// (signs of |u|^2 - (r0 +- r1)^2), triangle-plane (vertex sides) and plane-plane (ranks) written
-// here.
+// tangent to the sphere or the cylinder, on a cylinder parallel to its axis, on a box face, through
+// an oriented box's corner or grazing its face, spheres tangent outside or inside, coincident,
+// concentric or a point sphere, a triangle with a vertex, an edge or all of it in the plane
+// (collinear too), parallel and coincident planes, triangles sharing a vertex or an edge or
+// coplanar), with the exact GMP oracle of linear3_oracle.hpp and exact classifications of
+// line-sphere and line-(infinite) cylinder (the sign of the discriminant), ray/segment-box (slab
+// clipping; oriented boxes with signed-permutation axes), sphere-sphere (the signs of
+// |u|^2 - (r0 +- r1)^2), triangle-plane (vertex sides) and plane-plane (ranks) written here.
 
+#include <locus/intersection/line_cylinder.hpp>
 #include <locus/intersection/line_sphere.hpp>
 #include <locus/intersection/plane_plane.hpp>
 #include <locus/intersection/plane_triangle.hpp>
@@ -463,6 +464,65 @@ TYPED_TEST(IntersectionHarness3, SphereSphere) {
         if (outer > 0 || inner < 0) return Expected{Kind::empty, 0};
         if (outer == 0 || inner == 0) return Expected{Kind::point, 1};
         return Expected{Kind::circle, 3};
+      });
+}
+
+TYPED_TEST(IntersectionHarness3, LineInfiniteCylinder) {
+  using T = TypeParam;
+  Options opt;
+  opt.cases = 100;
+  opt.residual = 16;
+  // Near tangency a point's position along the line is only sqrt(eps) accurate.
+  opt.param = opt.position = std::is_same_v<T, float> ? 2e-3 : 1e-7;
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const Vec3<T> axis = grid_axis<T>(rng);
+        const locus::Cylinder3<T> c{{grid_vec<T, 3>(rng, -1, 1), axis},
+                                    T(rng.uniform_int(1, 64)) / T(64),
+                                    std::numeric_limits<T>::infinity()};
+        // A radial direction, perpendicular to the axis: a signed axis other than the cylinder's.
+        Vec3<T> radial = grid_axis<T>(rng);
+        if (locus::dot(radial, axis) != T(0)) radial = Vec3<T>{axis.z, axis.x, axis.y};
+        const Vec3<T> tangent = locus::cross(axis, radial);
+        Vec3<T> o = grid_vec<T, 3>(rng, -2, 2), d = grid_vec<T, 3>(rng, -1, 1);
+        switch (rng.uniform_int(0, 5)) {
+          case 0:  // tangent: through a surface point along the tangent plane
+            o = c.axis.origin + c.radius * radial;
+            d = T(rng.uniform_int(1, 4)) * tangent + T(rng.uniform_int(-4, 4)) * axis;
+            break;
+          case 1:  // on the surface, along the axis
+            o = c.axis.origin + c.radius * radial;
+            d = axis;
+            break;
+          case 2:  // parallel to the axis, inside or outside
+            d = T(rng.uniform_int(1, 3)) * axis;
+            break;
+          case 3:
+            o = c.axis.origin;
+            break;  // through the axis
+          default:
+            break;
+        }
+        if (d == Vec3<T>{}) d = radial;
+        return std::pair{Line3<T>{o, d}, c};
+      },
+      opt,
+      [](const Line3<T>& l, const locus::Cylinder3<T>& c) -> std::optional<Expected> {
+        // With a unit axis a: the disc r^2 |a x d|^2 - [a, d, o - C]^2 (line_cylinder.hpp).
+        namespace ex = locus_test::exact3;
+        const ex::Q3 a = ex::q(c.axis.direction), d = ex::q(l.direction);
+        const ex::Q3 w = ex::q(l.origin) - ex::q(c.axis.origin);
+        const mpq_class r(double(c.radius));
+        const ex::Q3 axd = ex::qcross(a, d);
+        if (ex::is_zero(axd)) {  // parallel to the axis: on the surface or not
+          const ex::Q3 axw = ex::qcross(a, w);
+          const int on = sgn(ex::qdot(axw, axw) - r * r);
+          return on == 0 ? Expected{Kind::line, 2} : Expected{Kind::empty, 0};
+        }
+        const mpq_class triple = ex::qdot(axd, w);
+        const int disc = sgn(r * r * ex::qdot(axd, axd) - triple * triple);
+        if (disc < 0) return Expected{Kind::empty, 0};
+        return disc == 0 ? Expected{Kind::point, 1} : Expected{Kind::points, 2};
       });
 }
 
