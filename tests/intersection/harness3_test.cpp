@@ -17,8 +17,10 @@
 #include <locus/intersection/plane_plane.hpp>
 #include <locus/intersection/plane_triangle.hpp>
 #include <locus/intersection/ray_aligned_box.hpp>
+#include <locus/intersection/ray_cylinder.hpp>
 #include <locus/intersection/ray_oriented_box.hpp>
 #include <locus/intersection/ray_triangle.hpp>
+#include <locus/intersection/segment_cylinder.hpp>
 #include <locus/intersection/segment_oriented_box.hpp>
 #include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/segment_triangle.hpp>
@@ -467,6 +469,41 @@ TYPED_TEST(IntersectionHarness3, SphereSphere) {
       });
 }
 
+/// An infinite cylinder on a signed coordinate axis and a component (origin, direction) aimed at
+/// it, often degenerately: tangent, on the surface along the axis, parallel, through the axis.
+template <class T>
+std::pair<locus::Cylinder3<T>, std::array<Vec3<T>, 2>> cylinder_and_component(Rng& rng) {
+  const Vec3<T> axis = grid_axis<T>(rng);
+  const locus::Cylinder3<T> c{{grid_vec<T, 3>(rng, -1, 1), axis},
+                              T(rng.uniform_int(1, 64)) / T(64),
+                              std::numeric_limits<T>::infinity()};
+  // A radial direction, perpendicular to the axis: a signed axis other than the cylinder's.
+  Vec3<T> radial = grid_axis<T>(rng);
+  if (locus::dot(radial, axis) != T(0)) radial = Vec3<T>{axis.z, axis.x, axis.y};
+  const Vec3<T> tangent = locus::cross(axis, radial);
+  Vec3<T> o = grid_vec<T, 3>(rng, -2, 2), d = grid_vec<T, 3>(rng, -1, 1);
+  switch (rng.uniform_int(0, 5)) {
+    case 0:  // tangent: through a surface point along the tangent plane
+      o = c.axis.origin + c.radius * radial;
+      d = T(rng.uniform_int(1, 4)) * tangent + T(rng.uniform_int(-4, 4)) * axis;
+      break;
+    case 1:  // on the surface, along the axis
+      o = c.axis.origin + c.radius * radial;
+      d = axis;
+      break;
+    case 2:  // parallel to the axis, inside or outside
+      d = T(rng.uniform_int(1, 3)) * axis;
+      break;
+    case 3:
+      o = c.axis.origin;
+      break;  // through the axis
+    default:
+      break;
+  }
+  if (d == Vec3<T>{}) d = radial;
+  return {c, {o, d}};
+}
+
 TYPED_TEST(IntersectionHarness3, LineInfiniteCylinder) {
   using T = TypeParam;
   Options opt;
@@ -476,35 +513,8 @@ TYPED_TEST(IntersectionHarness3, LineInfiniteCylinder) {
   opt.param = opt.position = std::is_same_v<T, float> ? 2e-3 : 1e-7;
   check_intersection_pairs<T>(
       [](Rng& rng) {
-        const Vec3<T> axis = grid_axis<T>(rng);
-        const locus::Cylinder3<T> c{{grid_vec<T, 3>(rng, -1, 1), axis},
-                                    T(rng.uniform_int(1, 64)) / T(64),
-                                    std::numeric_limits<T>::infinity()};
-        // A radial direction, perpendicular to the axis: a signed axis other than the cylinder's.
-        Vec3<T> radial = grid_axis<T>(rng);
-        if (locus::dot(radial, axis) != T(0)) radial = Vec3<T>{axis.z, axis.x, axis.y};
-        const Vec3<T> tangent = locus::cross(axis, radial);
-        Vec3<T> o = grid_vec<T, 3>(rng, -2, 2), d = grid_vec<T, 3>(rng, -1, 1);
-        switch (rng.uniform_int(0, 5)) {
-          case 0:  // tangent: through a surface point along the tangent plane
-            o = c.axis.origin + c.radius * radial;
-            d = T(rng.uniform_int(1, 4)) * tangent + T(rng.uniform_int(-4, 4)) * axis;
-            break;
-          case 1:  // on the surface, along the axis
-            o = c.axis.origin + c.radius * radial;
-            d = axis;
-            break;
-          case 2:  // parallel to the axis, inside or outside
-            d = T(rng.uniform_int(1, 3)) * axis;
-            break;
-          case 3:
-            o = c.axis.origin;
-            break;  // through the axis
-          default:
-            break;
-        }
-        if (d == Vec3<T>{}) d = radial;
-        return std::pair{Line3<T>{o, d}, c};
+        const auto cc = cylinder_and_component<T>(rng);
+        return std::pair{Line3<T>{cc.second[0], cc.second[1]}, cc.first};
       },
       opt,
       [](const Line3<T>& l, const locus::Cylinder3<T>& c) -> std::optional<Expected> {
@@ -524,6 +534,37 @@ TYPED_TEST(IntersectionHarness3, LineInfiniteCylinder) {
         if (disc < 0) return Expected{Kind::empty, 0};
         return disc == 0 ? Expected{Kind::point, 1} : Expected{Kind::points, 2};
       });
+}
+
+// Rays and segments on the same draws, checked without an oracle (residuals on both objects,
+// swap, scaling and motions).
+TYPED_TEST(IntersectionHarness3, RayInfiniteCylinder) {
+  using T = TypeParam;
+  Options opt;
+  opt.cases = 100;
+  opt.residual = 16;
+  opt.param = opt.position = std::is_same_v<T, float> ? 2e-3 : 1e-7;
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const auto cc = cylinder_and_component<T>(rng);
+        return std::pair{Ray3<T>{cc.second[0], cc.second[1]}, cc.first};
+      },
+      opt);
+}
+
+TYPED_TEST(IntersectionHarness3, SegmentInfiniteCylinder) {
+  using T = TypeParam;
+  Options opt;
+  opt.cases = 100;
+  opt.residual = 16;
+  opt.param = opt.position = std::is_same_v<T, float> ? 2e-3 : 1e-7;
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const auto cc = cylinder_and_component<T>(rng);
+        const T k = rng.uniform_int(0, 1) ? T(2) : T(0.5);
+        return std::pair{Segment3<T>{cc.second[0], cc.second[0] + k * cc.second[1]}, cc.first};
+      },
+      opt);
 }
 
 TYPED_TEST(IntersectionHarness3, PlanePlane) {
