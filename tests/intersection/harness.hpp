@@ -6,7 +6,7 @@
 // checks r = intersection(a, b), seen as a list of pieces (an Intersection-shaped result is one
 // piece; a PolylineIntersection2 lists its crossings), each with kind, count, point, params:
 //   1. every point lies on both objects: its distance to each (the library's distance(point,
-//      object) in double; implicit residuals for plane, sphere, cylinder; 2D triangle: edges) is
+//      object) in double; direct ones for plane, sphere, cylinder, disk; 2D triangle: edges) is
 //      <= opt.residual eps max(m, |X|inf), m the largest |coordinate|, radius or extent,
 //      eps of T; each parameter is in its domain and point_at maps it to within opt.param of the
 //      point (default opt.residual eps, same scale; a triangle's (s, t) may leave its domain by
@@ -412,6 +412,33 @@ struct Side<locus::Cylinder3<T>> {
   static std::string str(const P& c) {
     return "cylinder " + hex(c.axis.origin) + " axis " + hex(c.axis.direction) + " r " +
            hex(c.radius) + " h " + hex(c.height);
+  }
+};
+
+/// A closed disk in 3D (normal of any length); residual: the distance to the disk.
+template <class T>
+struct Side<locus::Disk3<T>> {
+  using P = locus::Disk3<T>;
+  static double residual(const P& c, const Vec<T, 3>& x) {
+    const Vec<double, 3> w = vd(x) - vd(c.center), n = locus::normalize(vd(c.normal));
+    const double z = locus::dot(w, n), rho = locus::length(w - z * n);
+    return std::hypot(z, std::max(rho - double(c.radius), 0.0));
+  }
+  static double size(const P& c) { return std::max(inf_norm(c.center), double(c.radius)); }
+  static Vec<double, 3> at(const P& c, const Vec<T, 2>& st) {
+    const locus::Disk3<double> d{vd(c.center), vd(c.normal), double(c.radius)};
+    return locus::point_at(d, Vec<double, 2>{double(st.x), double(st.y)});
+  }
+  static bool param_ok(const P& c, const Vec<T, 2>& st, double slack) {
+    const double eps = double(std::numeric_limits<T>::epsilon());
+    return std::hypot(double(st.x), double(st.y)) <= double(c.radius) + slack * eps * size(c);
+  }
+  static P moved(const P& c, const Motion<T, 3>& m) {
+    return {m(c.center), m.rot(c.normal), c.radius};
+  }
+  static P scaled(const P& c, T f) { return {f * c.center, c.normal, f * c.radius}; }
+  static std::string str(const P& c) {
+    return "disk " + hex(c.center) + " normal " + hex(c.normal) + " r " + hex(c.radius);
   }
 };
 

@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: BSL-1.0
 // The generic intersection harness (harness.hpp) on 3D pairs (rows int3.linear-plane,
 // int3.linear-triangle, int3.linear-quadric, int3.boxes, int3.planes, int3.plane-triangle,
-// int3.surface-surface): seeded grid inputs leaning to the degenerate (an end point or origin in
-// the plane or on the triangle, through a vertex or an edge midpoint, in the triangle's plane,
-// tangent to the sphere or the cylinder, on a cylinder parallel to its axis, on a box face, through
-// an oriented box's corner or grazing its face, spheres tangent outside or inside, coincident,
-// concentric or a point sphere, a triangle with a vertex, an edge or all of it in the plane
-// (collinear too), parallel and coincident planes, triangles sharing a vertex or an edge or
-// coplanar), with the exact GMP oracle of linear3_oracle.hpp and exact classifications of
-// line-sphere and line-(infinite) cylinder (the sign of the discriminant), ray/segment-box (slab
-// clipping; oriented boxes with signed-permutation axes), sphere-sphere (the signs of
-// |u|^2 - (r0 +- r1)^2), triangle-plane (vertex sides) and plane-plane (ranks) written here.
+// int3.surface-surface, int3.linear-polygon): seeded grid inputs leaning to the degenerate (an end
+// point or origin in the plane or on the triangle, through a vertex or an edge midpoint, in the
+// triangle's plane, tangent to the sphere, the cylinder or a disk's rim, through a disk's rim, on a
+// cylinder parallel to its axis, on a box face, through an oriented box's corner or grazing its
+// face, spheres tangent outside or inside, coincident, concentric or a point sphere, a triangle
+// with a vertex, an edge or all of it in the plane (collinear too), parallel and coincident planes,
+// triangles sharing a vertex or an edge or coplanar), with the exact GMP oracle of
+// linear3_oracle.hpp and exact classifications of line-sphere and line-(infinite) cylinder (the
+// sign of the discriminant), ray/segment-box (slab clipping; oriented boxes with signed-permutation
+// axes), sphere-sphere (the signs of |u|^2 - (r0 +- r1)^2), triangle-plane (vertex sides) and
+// plane-plane (ranks) written here; ray/segment-cylinder and segment-disk run without an oracle.
 
 #include <locus/intersection/line_cylinder.hpp>
 #include <locus/intersection/line_sphere.hpp>
@@ -21,6 +22,7 @@
 #include <locus/intersection/ray_oriented_box.hpp>
 #include <locus/intersection/ray_triangle.hpp>
 #include <locus/intersection/segment_cylinder.hpp>
+#include <locus/intersection/segment_disk.hpp>
 #include <locus/intersection/segment_oriented_box.hpp>
 #include <locus/intersection/segment_plane.hpp>
 #include <locus/intersection/segment_triangle.hpp>
@@ -563,6 +565,53 @@ TYPED_TEST(IntersectionHarness3, SegmentInfiniteCylinder) {
         const auto cc = cylinder_and_component<T>(rng);
         const T k = rng.uniform_int(0, 1) ? T(2) : T(0.5);
         return std::pair{Segment3<T>{cc.second[0], cc.second[0] + k * cc.second[1]}, cc.first};
+      },
+      opt);
+}
+
+// A segment and a disk, checked without an oracle: through a rim point, an end point on the
+// disk, in the disk's plane (a chord, or tangent to the rim), through the centre, random.
+TYPED_TEST(IntersectionHarness3, SegmentDisk) {
+  using T = TypeParam;
+  Options opt;
+  opt.cases = 100;
+  opt.residual = 16;
+  opt.param = opt.position = std::is_same_v<T, float> ? 2e-3 : 1e-7;  // chords near tangency
+  check_intersection_pairs<T>(
+      [](Rng& rng) {
+        const Vec3<T> axis = grid_axis<T>(rng);
+        Vec3<T> radial = grid_axis<T>(rng);
+        if (locus::dot(radial, axis) != T(0)) radial = Vec3<T>{axis.z, axis.x, axis.y};
+        const Vec3<T> tangent = locus::cross(axis, radial);
+        locus::Disk3<T> k{grid_vec<T, 3>(rng, -1, 1), axis, T(rng.uniform_int(1, 64)) / T(64)};
+        Vec3<T> p0 = grid_vec<T, 3>(rng, -2, 2), p1 = grid_vec<T, 3>(rng, -2, 2);
+        const Vec3<T> w = grid_vec<T, 3>(rng, -0.5, 0.5);
+        switch (rng.uniform_int(0, 5)) {
+          case 0: {  // crossing at a rim point (the segment's midpoint)
+            const Vec3<T> rim = k.center + k.radius * radial;
+            p0 = rim + axis / T(2) + w;
+            p1 = rim - axis / T(2) - w;
+            break;
+          }
+          case 1:
+            p0 = k.center + k.radius / T(2) * radial;
+            break;   // an end point on the disk
+          case 2: {  // in the plane: a chord, tangent to the rim at j = +-4
+            const Vec3<T> off = k.center + T(rng.uniform_int(-5, 5)) / T(4) * k.radius * tangent;
+            p0 = off - T(2) * k.radius * radial;
+            p1 = off + T(2) * k.radius * radial;
+            break;
+          }
+          case 3:
+            p0 = k.center + axis;
+            p1 = k.center - axis;
+            break;  // through the centre
+          default:
+            k.normal = grid_vec<T, 3>(rng, -1, 1);
+            if (k.normal == Vec3<T>{}) k.normal = axis;
+            break;
+        }
+        return std::pair{Segment3<T>{p0, p1}, k};
       },
       opt);
 }
