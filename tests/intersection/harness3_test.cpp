@@ -327,7 +327,10 @@ std::array<Vec3<T>, 2> aimed_at_box(Rng& rng, const OrientedBox3<T>& b, bool rot
       break;  // from a corner
     case 3:   // grazing a face: in the plane of face +axis2, moving parallel to it
       o = b.center + a2 + T(rng.uniform_int(-8, 8)) / T(4) * a0;
-      d = T(rng.uniform_int(-4, 4)) * b.axis[0] + T(rng.uniform_int(-4, 4)) * b.axis[1];
+      {
+        const T k0 = T(rng.uniform_int(-4, 4)), k1 = T(rng.uniform_int(-4, 4));  // sequenced
+        d = k0 * b.axis[0] + k1 * b.axis[1];
+      }
       break;
     case 4:
       d = b.center + a0 - o;
@@ -487,7 +490,10 @@ std::pair<locus::Cylinder3<T>, std::array<Vec3<T>, 2>> cylinder_and_component(Rn
   switch (rng.uniform_int(0, 5)) {
     case 0:  // tangent: through a surface point along the tangent plane
       o = c.axis.origin + c.radius * radial;
-      d = T(rng.uniform_int(1, 4)) * tangent + T(rng.uniform_int(-4, 4)) * axis;
+      {
+        const T k0 = T(rng.uniform_int(1, 4)), k1 = T(rng.uniform_int(-4, 4));  // sequenced
+        d = k0 * tangent + k1 * axis;
+      }
       break;
     case 1:  // on the surface, along the axis
       o = c.axis.origin + c.radius * radial;
