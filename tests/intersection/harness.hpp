@@ -6,8 +6,8 @@
 // checks r = intersection(a, b), seen as a list of pieces (an Intersection-shaped result is one
 // piece; a PolylineIntersection2 lists its crossings), each with kind, count, point, params:
 //   1. every point lies on both objects: its distance to each (the library's distance(point,
-//      object) in double; an implicit residual for plane and sphere; edges for a 2D triangle) is
-//      <= opt.residual eps max(m, |X|inf), m the largest |coordinate| or radius of the inputs,
+//      object) in double; direct ones for plane, sphere, cylinder, disk; 2D triangle: edges) is
+//      <= opt.residual eps max(m, |X|inf), m the largest |coordinate|, radius or extent,
 //      eps of T; each parameter is in its domain and point_at maps it to within opt.param of the
 //      point (default opt.residual eps, same scale; a triangle's (s, t) may leave its domain by
 //      opt.domain_slack eps, default 4, two parameters rounded separately);
@@ -31,6 +31,7 @@
 #include <locus/distance/point_circle.hpp>
 #include <locus/distance/point_ellipse.hpp>
 #include <locus/distance/point_line.hpp>
+#include <locus/distance/point_oriented_box.hpp>
 #include <locus/distance/point_polyline.hpp>
 #include <locus/distance/point_ray.hpp>
 #include <locus/distance/point_segment.hpp>
@@ -38,8 +39,10 @@
 #include <locus/intersection/result.hpp>
 #include <locus/primitives/aligned_box.hpp>
 #include <locus/primitives/circle.hpp>
+#include <locus/primitives/cylinder.hpp>
 #include <locus/primitives/ellipse.hpp>
 #include <locus/primitives/line.hpp>
+#include <locus/primitives/oriented_box.hpp>
 #include <locus/primitives/plane.hpp>
 #include <locus/primitives/polyline.hpp>
 #include <locus/primitives/ray.hpp>
@@ -350,6 +353,93 @@ struct Side<locus::AlignedBox<T, 3>> {
   }
   static P scaled(const P& b, T f) { return {f * b.min, f * b.max}; }
   static std::string str(const P& b) { return "box " + hex(b.min) + " " + hex(b.max); }
+};
+
+template <class T>
+struct Side<locus::OrientedBox<T, 3>> {
+  using P = locus::OrientedBox<T, 3>;
+  static double residual(const P& b, const Vec<T, 3>& x) {
+    const locus::OrientedBox<double, 3> d{
+        vd(b.center), {vd(b.axis[0]), vd(b.axis[1]), vd(b.axis[2])}, vd(b.extent)};
+    return std::sqrt(double(locus::sqr_distance(vd(x), d)));
+  }
+  static double size(const P& b) { return std::max(inf_norm(b.center), inf_norm(b.extent)); }
+  static P moved(const P& b, const Motion<T, 3>& m) {
+    return {m(b.center), {m.rot(b.axis[0]), m.rot(b.axis[1]), m.rot(b.axis[2])}, b.extent};
+  }
+  static P scaled(const P& b, T f) {
+    return {f * b.center, {b.axis[0], b.axis[1], b.axis[2]}, f * b.extent};
+  }
+  static std::string str(const P& b) {
+    return "obox " + hex(b.center) + " axes " + hex(b.axis[0]) + " " + hex(b.axis[1]) + " " +
+           hex(b.axis[2]) + " extent " + hex(b.extent);
+  }
+};
+
+/// A right circular cylinder with a unit axis direction (the generators use signed coordinate
+/// axes, so motions keep it exact); residual: the distance to the infinite lateral surface, or
+/// to the boundary of the finite closed solid (side and caps).
+template <class T>
+struct Side<locus::Cylinder3<T>> {
+  using P = locus::Cylinder3<T>;
+  static double residual(const P& c, const Vec<T, 3>& x) {
+    const Vec<double, 3> w = vd(x) - vd(c.axis.origin), a = vd(c.axis.direction);
+    const double z = locus::dot(a, w), rho = locus::length(w - z * a), r = double(c.radius);
+    if (locus::is_infinite(c)) return std::abs(rho - r);
+    const double h = double(c.height) / 2, out_r = rho - r, out_z = std::abs(z) - h;
+    if (out_r <= 0 && out_z <= 0) return std::min(-out_r, -out_z);
+    return std::hypot(std::max(out_r, 0.0), std::max(out_z, 0.0));
+  }
+  static double size(const P& c) {
+    const double h = locus::is_infinite(c) ? 0.0 : double(c.height) / 2;
+    return std::max({inf_norm(c.axis.origin), double(c.radius), h});
+  }
+  static Vec<double, 3> at(const P& c, const Vec<T, 2>& tt) {
+    const locus::Cylinder3<double> d{
+        {vd(c.axis.origin), vd(c.axis.direction)}, double(c.radius), double(c.height)};
+    return locus::point_at(d, Vec<double, 2>{double(tt.x), double(tt.y)});
+  }
+  static bool param_ok(const P& c, const Vec<T, 2>& tt, double) {
+    return std::isfinite(double(tt.x)) && std::isfinite(double(tt.y)) &&
+           std::abs(double(tt.y)) <= double(c.height) / 2;
+  }
+  static P moved(const P& c, const Motion<T, 3>& m) {
+    return {{m(c.axis.origin), m.rot(c.axis.direction)}, c.radius, c.height};
+  }
+  static P scaled(const P& c, T f) {
+    return {{f * c.axis.origin, c.axis.direction}, f * c.radius, f * c.height};
+  }
+  static std::string str(const P& c) {
+    return "cylinder " + hex(c.axis.origin) + " axis " + hex(c.axis.direction) + " r " +
+           hex(c.radius) + " h " + hex(c.height);
+  }
+};
+
+/// A closed disk in 3D (normal of any length); residual: the distance to the disk.
+template <class T>
+struct Side<locus::Disk3<T>> {
+  using P = locus::Disk3<T>;
+  static double residual(const P& c, const Vec<T, 3>& x) {
+    const Vec<double, 3> w = vd(x) - vd(c.center), n = locus::normalize(vd(c.normal));
+    const double z = locus::dot(w, n), rho = locus::length(w - z * n);
+    return std::hypot(z, std::max(rho - double(c.radius), 0.0));
+  }
+  static double size(const P& c) { return std::max(inf_norm(c.center), double(c.radius)); }
+  static Vec<double, 3> at(const P& c, const Vec<T, 2>& st) {
+    const locus::Disk3<double> d{vd(c.center), vd(c.normal), double(c.radius)};
+    return locus::point_at(d, Vec<double, 2>{double(st.x), double(st.y)});
+  }
+  static bool param_ok(const P& c, const Vec<T, 2>& st, double slack) {
+    const double eps = double(std::numeric_limits<T>::epsilon());
+    return std::hypot(double(st.x), double(st.y)) <= double(c.radius) + slack * eps * size(c);
+  }
+  static P moved(const P& c, const Motion<T, 3>& m) {
+    return {m(c.center), m.rot(c.normal), c.radius};
+  }
+  static P scaled(const P& c, T f) { return {f * c.center, c.normal, f * c.radius}; }
+  static std::string str(const P& c) {
+    return "disk " + hex(c.center) + " normal " + hex(c.normal) + " r " + hex(c.radius);
+  }
 };
 
 template <class T>
